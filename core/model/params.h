@@ -1,0 +1,79 @@
+// Parameters of the HATPIC haptic model (model.md § 1), as plain value types.
+//
+// Plain C++20, no Qt: firmware can compile this folder unchanged.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hatpic {
+
+//! Parameters the device renders. Field order is the protocol's ParamBlock order.
+struct DeviceParams
+{
+    double D_adm = 1.0e-4; //!< virtual inertia of the admittance filter [kg·m²]
+    double M_adm = 1.0e-2; //!< virtual damping of the admittance filter [N·m·s/rad]
+    double K_min = 0.15;   //!< minimum re-centering stiffness [N·m/rad]
+    double K_max = 0.40;   //!< maximum (notch) re-centering stiffness [N·m/rad]
+    double N = 0.10;       //!< half-width of the notch band [rad]
+    double Q_dz = 0.02;    //!< half-width of the dead zone [rad]
+    double theta0 = 0.0;   //!< center (idle) angle [rad]
+
+    static constexpr int kFieldCount = 7;
+
+    //! Field by ParamBlock index 0…6; out-of-range indices give NaN.
+    double field(int index) const;
+    //! Sets a field by ParamBlock index; out-of-range indices are ignored.
+    void setField(int index, double value);
+
+    friend bool operator==(const DeviceParams &, const DeviceParams &) = default;
+};
+
+//! Names of the device fields in ParamBlock order ("D_adm", …, "theta0").
+std::string_view deviceFieldName(int index);
+//! ParamBlock index of a device field name, or -1.
+int deviceFieldIndex(std::string_view name);
+
+enum class ReferenceMode {
+    Translation, //!< v_ref in m/s, p_ref in m
+    Rotation,    //!< v_ref in rad/s, p_ref in rad
+};
+
+std::string_view referenceModeName(ReferenceMode mode);
+
+//! Settings of the host-side reference model; never sent to the device.
+struct HostParams
+{
+    double v_max = 1.0;                             //!< maximum reference velocity [m/s or rad/s]
+    ReferenceMode mode = ReferenceMode::Translation; //!< unit family of v_ref and p_ref
+    bool ref_deadzone = true;                        //!< hold v_ref at 0 while |θ−θ0| < Q_dz
+    double tau_limit = 0.44;                         //!< actuator torque limit [N·m]
+
+    friend bool operator==(const HostParams &, const HostParams &) = default;
+};
+
+//! One broken rule: which field, which rule, which value.
+struct Violation
+{
+    std::string field; //!< e.g. "K_min"
+    int index = -1;    //!< ParamBlock index for device fields, -1 for host fields
+    std::string rule;  //!< e.g. "must be ≤ K_max (0.4)"
+    double value = 0;  //!< the offending value
+
+    //! "K_min: must be ≤ K_max (0.4), got 0.9"
+    std::string message() const;
+};
+
+//! Every violated rule of model.md § 1, in table order. Empty means valid.
+std::vector<Violation> validate(const DeviceParams &params);
+std::vector<Violation> validate(const HostParams &params);
+
+//! Index of the first violating device field (the device's reject reply), or -1 when valid.
+int firstViolatingField(const DeviceParams &params);
+
+//! Shortest decimal text that reads back as the same double ("0.4", "1e-06", "nan").
+std::string formatNumber(double value);
+
+} // namespace hatpic

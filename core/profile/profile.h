@@ -1,0 +1,52 @@
+// Profile files: one complete tuning as JSON (profile.md).
+#pragma once
+
+#include "model/params.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace hatpic {
+
+struct Profile
+{
+    QString name;
+    QString notes;
+    DeviceParams device;
+    HostParams host;
+
+    friend bool operator==(const Profile &, const Profile &) = default;
+};
+
+//! Outcome of reading a profile: the profile, or every error; warnings either way.
+struct ProfileReadResult
+{
+    std::optional<Profile> profile; //!< set only when errors is empty
+    QStringList errors;             //!< e.g. "device.K_min: must be ≤ K_max (0.4), got 0.9"
+    QStringList warnings;           //!< e.g. "unknown key \"colour\" ignored"
+
+    bool ok() const { return profile.has_value(); }
+};
+
+constexpr int kProfileVersion = 1;
+constexpr qint64 kMaxProfileBytes = 1024 * 1024;
+
+//! Parses profile JSON. Never throws; a refused document yields errors and no profile.
+ProfileReadResult parseProfile(const QByteArray &json);
+//! Reads a file (refusing files larger than kMaxProfileBytes) and parses it.
+ProfileReadResult readProfile(const QString &path);
+
+//! The JSON text of a profile (key order of profile.md, two-space indent, exact doubles).
+QByteArray serializeProfile(const Profile &profile);
+//! Writes atomically with QSaveFile. Returns an empty string on success, else the error.
+QString writeProfile(const Profile &profile, const QString &path);
+
+//! Built-in presets from the resource system (":/presets/…"): "Default", "Soft", "Notchy".
+QStringList presetNames();
+//! A preset by name; std::nullopt for an unknown name.
+std::optional<Profile> preset(const QString &name);
+
+} // namespace hatpic
