@@ -1,0 +1,43 @@
+// The operator's hand on the simulated knob: a torque [N·m] as a function of time and state.
+#pragma once
+
+#include <QMetaType>
+#include <QString>
+
+#include <optional>
+
+namespace hatpic {
+
+//! Parsed form of a hand SPEC (docs/cli.md): `idle`, `const:T`, `step:T[:T0]`, `sine:A:F`,
+//! `chirp:A:F0:F1`, `hand:ANGLE`. Torques are the operator's torque τ_op on the knob; positive
+//! pushes θ positive (so the measured τ is its negative).
+struct HandInput
+{
+    enum class Kind { Idle, Constant, Step, Sine, Chirp, VirtualHand };
+
+    Kind kind = Kind::Idle;
+    double amplitude = 0;  //!< T for const/step, A for sine/chirp [N·m]
+    double offset = 0;     //!< T0 of step: torque before the step [N·m]
+    double frequency = 0;  //!< F of sine, F0 of chirp [Hz]
+    double frequency1 = 0; //!< F1 of chirp [Hz]
+    double angle = 0;      //!< target of the virtual hand [rad]
+
+    static constexpr double kStepTime = 0.1;     //!< when a step happens [s]
+    static constexpr double kChirpPeriod = 10.0; //!< one linear F0→F1 sweep, then repeats [s]
+    static constexpr double kHandStiffness = 2.0; //!< virtual hand spring [N·m/rad]
+    static constexpr double kHandDamping = 0.05;  //!< virtual hand damper [N·m·s/rad]
+
+    //! τ_op at time t since the input started, for knob angle θ [rad] and rate ω [rad/s].
+    double torque(double t, double theta, double omega) const;
+
+    //! Parses SPEC; on failure returns nullopt and sets `error` to one clear sentence.
+    static std::optional<HandInput> parse(const QString &spec, QString *error = nullptr);
+    //! The SPEC text that parses back to this input.
+    QString toSpec() const;
+
+    friend bool operator==(const HandInput &, const HandInput &) = default;
+};
+
+} // namespace hatpic
+
+Q_DECLARE_METATYPE(hatpic::HandInput)

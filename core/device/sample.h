@@ -1,0 +1,35 @@
+// One complete sample as the session emits it: device telemetry plus the host's reference model.
+#pragma once
+
+#include <QList>
+#include <QMetaType>
+#include <QtGlobal>
+
+namespace hatpic {
+
+//! Host-side flag bits, above the device's 8 telemetry flag bits (v2::kFlag*).
+constexpr quint16 kFlagModelEstimated = 0x0100; //!< τ_rec etc. computed by the host (legacy)
+constexpr quint16 kFlagReferenceGap = 0x0200;   //!< p_ref held across a gap before this sample
+
+//! Quantities are SI. Values a protocol does not carry are NaN (legacy has no ω or τ).
+struct Sample
+{
+    double t_s = 0;       //!< session time: device clock where it has one, monotonic [s]
+    quint32 t_us = 0;     //!< raw device timestamp (legacy: host clock) [µs, wraps]
+    double theta = 0;     //!< knob angle, absolute [rad]
+    double omega = 0;     //!< knob rate [rad/s]
+    double tau = 0;       //!< interaction torque of eq. (1); operator torque is −tau [N·m]
+    double tau_rec = 0;   //!< re-centering torque [N·m]
+    double tau_ext = 0;   //!< external feedback torque [N·m]
+    double tau_total = 0; //!< τ_rec + τ_ext as rendered, clamped to tau_limit [N·m]
+    double v_ref = 0;     //!< reference velocity [m/s or rad/s]
+    double p_ref = 0;     //!< reference position [m or rad]
+    quint16 flags = 0;    //!< device flags (low byte) | host flags (kFlag*)
+};
+
+using SampleBatch = QList<Sample>;
+
+} // namespace hatpic
+
+Q_DECLARE_METATYPE(hatpic::Sample)
+Q_DECLARE_METATYPE(hatpic::SampleBatch)
