@@ -20,15 +20,17 @@ struct Frame
 
 constexpr int kFieldLimit = 99999; //!< |field| larger than this is malformed
 
-//! Whole frame as ASCII, no terminator: "ia1000b0c0d0o".
+//! Whole frame as ASCII, no terminator: "ia1000b0c0d0o". Fields beyond ±kFieldLimit are
+//! clamped so that the frame is always one a receiver accepts.
 QByteArray encodeFrame(const Frame &frame);
 
 struct DecoderStats
 {
     quint64 bytes = 0;
-    quint64 frames = 0;     //!< valid frames
-    quint64 malformed = 0;  //!< started with 'i' but broke a rule
-    quint64 textLines = 0;  //!< non-frame text lines (boot messages)
+    quint64 frames = 0;    //!< valid frames
+    quint64 malformed = 0; //!< started with 'i' but broke a rule
+    quint64 textLines = 0; //!< non-frame text lines (boot messages)
+    quint64 longLines = 0; //!< text lines cut at kMaxLineBytes (each piece is a text line)
     friend bool operator==(const DecoderStats &, const DecoderStats &) = default;
 };
 
@@ -37,25 +39,54 @@ struct DecoderStats
 //! Frames are recognised by `i` … `o` wherever they stand (the device ends them with CRLF,
 //! the host does not). Bytes outside frames form text lines, split at '\n' with '\r'
 //! stripped. Memory is bounded: an over-long frame or text line is cut and counted.
+//!
+//! Boot text may contain "ia" ("serial", "Initializing"), so a candidate frame only counts
+//! as a frame once "ia" is followed by a digit or sign; before that a failing candidate is
+//! given back to the text. A committed candidate that breaks a rule is counted as malformed
+//! and dropped; decoding resumes at the first byte that cannot belong to the broken frame
+//! (an 'i' starts a new candidate, a newline ends the text line). docs/protocol.md has the
+//! full rules.
 class Decoder
 {
 public:
-    static constexpr int kMaxFrameBytes = 64;  //!< longest plausible frame
-    static constexpr int kMaxLineBytes = 256;  //!< longest text line kept
+    static constexpr int kMaxFrameBytes = 64; //!< longest plausible frame
+    static constexpr int kMaxLineBytes = 256; //!< longest text line kept
+    static constexpr int kMaxDigits = 6;      //!< more digits in one field is "over-long"
 
     //! Appends complete frames to `frames` and complete text lines to `text` (may be null).
     void feed(QByteArrayView bytes, QList<Frame> &frames, QStringList *text = nullptr);
 
     const DecoderStats &stats() const { return m_stats; }
+    void resetStats() { m_stats = {}; }
+    //! Forgets a partial frame and a partial text line (e.g. after reopening a port).
     void clear();
+    //! Bytes of an unfinished frame and text line held right now (bounded).
+    qsizetype pendingBytes() const { return m_frame.size() + m_line.size(); }
 
 private:
-    enum class State { Text, Frame };
-    void endFrame(QList<Frame> &frames);
+    enum class State {
+        Text,  //!< outside frames
+        Frame, //!< inside a candidate frame that is still a valid prefix
+        Skip,  //!< after a malformed frame, discarding the rest of its frame characters
+    };
+    enum class Step { More, Done, Fail };
+
+    Step stepFrame(char c);
+    void startFrame();
+    void textByte(char c, QStringList *text);
+    void appendText(char c, QStringList *text);
+    void endLine(QStringList *text);
 
     State m_state = State::Text;
-    QByteArray m_frame;
-    QByteArray m_line;
+    QByteArray m_frame;          //!< raw bytes of the candidate frame
+    QByteArray m_line;           //!< text line so far, '\r' removed
+    bool m_lineConsumed = false; //!< a frame or a cut piece came from this line already
+    int m_field = 0;             //!< field being read: 0 = A … 3 = D
+    int m_digits = 0;            //!< digits read in this field
+    bool m_signed = false;       //!< sign read in this field
+    bool m_negative = false;
+    int m_value = 0; //!< magnitude read so far
+    Frame m_current;
     DecoderStats m_stats;
 };
 
@@ -64,15 +95,22 @@ struct Conversion
 {
     static constexpr int kTicksPerRev = 4096;
 
-    int centerTicks = 1000;   //!< tick that maps to θ = 0
-    int feedbackClamp = 350;  //!< |load offset| sent at most [load units, ±1000 = 100 %]
-    double tauLimit = 0.44;   //!< torque that 1000 load units stand for [N·m]
+    int centerTicks = 1000;  //!< tick that maps to θ = 0
+    int feedbackClamp = 350; //!< |load offset| sent at most [load units, ±1000 = 100 %]
+    double tauLimit = 0.44;  //!< torque that 1000 load units stand for [N·m]
 
+    static constexpr int kFeedbackZero = 1000; //!< field A for zero feedback
+
+    //! θ [rad] of a position reading.
     double ticksToRad(int ticks) const;
-    int radToTicks(double theta) const; //!< rounded to the nearest tick
-    //! Host frame field A for a feedback torque: 1000 + round(1000·τ_ext/tau_limit), clamped.
+    //! Position reading for θ, rounded to the nearest tick (half away from zero), not wrapped,
+    //! limited to ±kFieldLimit; NaN gives centerTicks.
+    int radToTicks(double theta) const;
+    //! Host frame field A for a feedback torque: 1000 + round(1000·τ_ext/tau_limit), the offset
+    //! clamped to ±feedbackClamp. NaN (or a tau_limit that is not a positive number) gives 1000,
+    //! i.e. no force.
     int feedbackToField(double tauExt) const;
-    //! τ_ext that a received field A stands for (device side).
+    //! τ_ext that a received field A stands for (device side), not clamped [N·m].
     double fieldToFeedback(int a) const;
 };
 

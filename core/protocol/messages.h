@@ -3,8 +3,8 @@
 
 #include "model/params.h"
 
-#include <QtGlobal>
 #include <QString>
+#include <QtGlobal>
 
 #include <variant>
 
@@ -95,8 +95,8 @@ struct HelloReply
     quint8 protocolVersion = kProtocolVersion;
     quint16 maxStreamHz = 0; //!< highest telemetry rate the device produces [Hz]
     quint32 deviceId = 0;
-    float tauLimit = 0;      //!< actuator torque limit [N·m]
-    QString firmware;        //!< at most 16 UTF-8 bytes on the wire
+    float tauLimit = 0; //!< actuator torque limit [N·m]
+    QString firmware;   //!< at most 16 UTF-8 bytes on the wire
     friend bool operator==(const HelloReply &, const HelloReply &) = default;
 };
 struct Params
@@ -118,13 +118,13 @@ struct Pong
 };
 struct Telemetry
 {
-    quint32 t_us = 0;    //!< device clock, wraps at 2³² [µs]
-    float theta = 0;     //!< absolute knob angle [rad]
-    float omega = 0;     //!< knob rate [rad/s]
-    float tau = 0;       //!< interaction torque of eq. (1); operator torque is −tau [N·m]
-    float tau_rec = 0;   //!< re-centering torque rendered this cycle [N·m]
-    float tau_ext = 0;   //!< external feedback rendered this cycle [N·m]
-    quint8 flags = 0;    //!< kFlag* bits
+    quint32 t_us = 0;  //!< device clock, wraps at 2³² [µs]
+    float theta = 0;   //!< absolute knob angle [rad]
+    float omega = 0;   //!< knob rate [rad/s]
+    float tau = 0;     //!< interaction torque of eq. (1); operator torque is −tau [N·m]
+    float tau_rec = 0; //!< re-centering torque rendered this cycle [N·m]
+    float tau_ext = 0; //!< external feedback rendered this cycle [N·m]
+    quint8 flags = 0;  //!< kFlag* bits
     friend bool operator==(const Telemetry &, const Telemetry &) = default;
 };
 struct Log
@@ -143,8 +143,8 @@ struct Refused
     friend bool operator==(const Refused &, const Refused &) = default;
 };
 
-using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback, SaveParams,
-                             Ping, Zero, HelloReply, Params, Ack, Pong, Telemetry, Log, Refused>;
+using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback, SaveParams, Ping,
+                             Zero, HelloReply, Params, Ack, Pong, Telemetry, Log, Refused>;
 
 //! The wire type of a message (Refused gives its original type).
 quint8 messageType(const Message &message);

@@ -72,6 +72,8 @@ public:
     void resetStats() { m_stats = {}; }
     //! Forgets a partial frame (e.g. after reopening a port).
     void clear();
+    //! Bytes of an unfinished frame held right now; never more than kMaxFrameBytes.
+    qsizetype pendingBytes() const { return m_buffer.size(); }
 
 private:
     void finishFrame(QList<Frame> &out);

@@ -1,0 +1,78 @@
+#include "messages.h"
+
+#include <type_traits>
+
+namespace hatpic::v2 {
+
+QString ackStatusName(AckStatus status)
+{
+    switch (status) {
+    case AckStatus::Ok:
+        return QStringLiteral("OK");
+    case AckStatus::BadLength:
+        return QStringLiteral("BAD_LENGTH");
+    case AckStatus::OutOfRange:
+        return QStringLiteral("OUT_OF_RANGE");
+    case AckStatus::UnknownType:
+        return QStringLiteral("UNKNOWN_TYPE");
+    case AckStatus::StorageError:
+        return QStringLiteral("STORAGE_ERROR");
+    case AckStatus::Unsupported:
+        return QStringLiteral("UNSUPPORTED");
+    }
+    // A newer device may send a status this host does not know; name it by its number.
+    return QStringLiteral("STATUS_%1").arg(static_cast<int>(status));
+}
+
+namespace {
+
+template<typename T> constexpr MessageType typeOf()
+{
+    if constexpr (std::is_same_v<T, Hello>)
+        return MessageType::Hello;
+    else if constexpr (std::is_same_v<T, GetParams>)
+        return MessageType::GetParams;
+    else if constexpr (std::is_same_v<T, SetParams>)
+        return MessageType::SetParams;
+    else if constexpr (std::is_same_v<T, SetStream>)
+        return MessageType::SetStream;
+    else if constexpr (std::is_same_v<T, SetFeedback>)
+        return MessageType::SetFeedback;
+    else if constexpr (std::is_same_v<T, SaveParams>)
+        return MessageType::SaveParams;
+    else if constexpr (std::is_same_v<T, Ping>)
+        return MessageType::Ping;
+    else if constexpr (std::is_same_v<T, Zero>)
+        return MessageType::Zero;
+    else if constexpr (std::is_same_v<T, HelloReply>)
+        return MessageType::HelloReply;
+    else if constexpr (std::is_same_v<T, Params>)
+        return MessageType::Params;
+    else if constexpr (std::is_same_v<T, Ack>)
+        return MessageType::Ack;
+    else if constexpr (std::is_same_v<T, Pong>)
+        return MessageType::Pong;
+    else if constexpr (std::is_same_v<T, Telemetry>)
+        return MessageType::Telemetry;
+    else {
+        static_assert(std::is_same_v<T, Log>, "every message type needs a wire type");
+        return MessageType::Log;
+    }
+}
+
+} // namespace
+
+quint8 messageType(const Message &message)
+{
+    return std::visit(
+        [](const auto &m) -> quint8 {
+            using T = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<T, Refused>)
+                return m.type;
+            else
+                return static_cast<quint8>(typeOf<T>());
+        },
+        message);
+}
+
+} // namespace hatpic::v2
