@@ -30,29 +30,29 @@ public:
     {
         WireProtocol protocol = WireProtocol::V2;
         double controlRateHz = 1000; //!< control loop rate [Hz]
-        qint32 baud = 0;             //!< emulated link; 0 = the protocol's default (921600 / 115200)
-        bool throttle = true;        //!< limit output to the link's byte rate
-        bool ideal = false;          //!< no servo lag, quantisation or noise: model.md alone
-        double noise = 0;            //!< std-dev of load-reading noise [N·m]; 0 = none
-        quint64 seed = 1;            //!< noise seed
-        QString stateFile;           //!< SAVE_PARAMS persists here (a profile file) if set
-        HandInput hand;              //!< operator input at start
+        qint32 baud = 0;      //!< emulated link; 0 = the protocol's default (921600 / 115200)
+        bool throttle = true; //!< limit output to the link's byte rate
+        bool ideal = false;   //!< no servo lag, quantisation or noise: model.md alone
+        double noise = 0;     //!< std-dev of load-reading noise [N·m]; 0 = none
+        quint64 seed = 1;     //!< noise seed
+        QString stateFile;    //!< SAVE_PARAMS persists here (a profile file) if set
+        HandInput hand;       //!< operator input at start
         quint32 deviceId = 0x53494D31; //!< "SIM1"
-        double tauLimit = 0.44;      //!< actuator torque limit [N·m]
-        DeviceParams params;         //!< power-up parameters (a valid stateFile overrides)
+        double tauLimit = 0.44;        //!< actuator torque limit [N·m]
+        DeviceParams params;           //!< power-up parameters (a valid stateFile overrides)
     };
 
     //! One control cycle as the device saw it (what TELEMETRY reports).
     struct Cycle
     {
-        double t = 0;       //!< simulated time at the cycle [s]
-        double theta = 0;   //!< measured knob angle used this cycle [rad]
-        double omega = 0;   //!< knob rate [rad/s]
-        double tau = 0;     //!< measured interaction torque [N·m]
-        double tau_rec = 0; //!< [N·m]
-        double tau_ext = 0; //!< [N·m]
+        double t = 0;         //!< simulated time at the cycle [s]
+        double theta = 0;     //!< measured knob angle used this cycle [rad]
+        double omega = 0;     //!< knob rate [rad/s]
+        double tau = 0;       //!< measured interaction torque [N·m]
+        double tau_rec = 0;   //!< [N·m]
+        double tau_ext = 0;   //!< [N·m]
         double tau_total = 0; //!< clamped to tau_limit [N·m]
-        quint8 flags = 0;   //!< v2::kFlag* bits
+        quint8 flags = 0;     //!< v2::kFlag* bits
     };
 
     explicit SimulatedDevice(const Config &config);
@@ -80,6 +80,10 @@ public:
     bool feedbackStale() const;
     //! Highest telemetry rate the link can carry at this baud [Hz].
     quint16 linkLimitedRate() const;
+    //! Telemetry frames dropped because the output queue was full (seen as seq gaps).
+    quint64 telemetryDropped() const;
+    //! Why the state file (or config.params) was not used at power-up; empty when fine.
+    QString stateWarning() const;
 
 private:
     class Private;

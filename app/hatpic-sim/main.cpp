@@ -1,0 +1,240 @@
+// hatpic-sim: a simulated HATPIC joystick on a pseudo-terminal, in real time.
+//
+// Prints the slave path as the first stdout line, then runs until SIGINT/SIGTERM (exit 0).
+// Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
+#include "device/handinput.h"
+#include "device/simulateddevice.h"
+#include "device/simulatorhost.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QSocketNotifier>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <optional>
+
+using namespace hatpic;
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitBadOptions = 4;
+constexpr double kMaxRateHz = 20000;  //!< highest --rate accepted [Hz]
+constexpr double kLoadNoise = 0.0005; //!< std-dev of the load-reading noise [N·m]
+
+int g_signalPipe[2] = {-1, -1};
+
+// Async-signal-safe: only write() to the self-pipe; the event loop does the rest.
+void onSignal(int)
+{
+    const int saved = errno;
+    const char byte = 1;
+    [[maybe_unused]] const ssize_t n = ::write(g_signalPipe[1], &byte, 1);
+    errno = saved;
+}
+
+void printError(const QString &sentence)
+{
+    std::fprintf(stderr, "hatpic-sim: %s\n", qPrintable(sentence));
+}
+
+struct Options
+{
+    SimulatedDevice::Config config;
+    QString link;
+};
+
+// Parses the command line; prints the sentence and returns nullopt on a bad option.
+std::optional<Options> parseOptions(const QCoreApplication &app)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Simulated HATPIC joystick on a pseudo-terminal. Prints the terminal's path as the "
+        "first line, then runs until SIGINT or SIGTERM."));
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption protocolOption(QStringLiteral("protocol"),
+                                            QStringLiteral("Wire protocol: v2 or legacy."),
+                                            QStringLiteral("v2|legacy"), QStringLiteral("v2"));
+    const QCommandLineOption rateOption(QStringLiteral("rate"),
+                                        QStringLiteral("Control rate [Hz] (default 1000)."),
+                                        QStringLiteral("HZ"), QStringLiteral("1000"));
+    const QCommandLineOption baudOption(
+        QStringLiteral("baud"),
+        QStringLiteral("Emulated link baud rate (default 921600 for v2, 115200 for legacy)."),
+        QStringLiteral("N"));
+    const QCommandLineOption noThrottleOption(
+        QStringLiteral("no-throttle"), QStringLiteral("Do not limit output to the baud rate."));
+    const QCommandLineOption handOption(
+        QStringLiteral("hand"),
+        QStringLiteral("Operator input: idle, const:T, step:T[:T0], sine:A:F, chirp:A:F0:F1 "
+                       "or hand:ANGLE (N·m, Hz, rad)."),
+        QStringLiteral("SPEC"), QStringLiteral("idle"));
+    const QCommandLineOption seedOption(QStringLiteral("seed"),
+                                        QStringLiteral("Seed of the load-reading noise."),
+                                        QStringLiteral("N"), QStringLiteral("1"));
+    const QCommandLineOption stateOption(
+        QStringLiteral("state"),
+        QStringLiteral("Profile file that SAVE_PARAMS writes and power-up reads."),
+        QStringLiteral("FILE"));
+    const QCommandLineOption linkOption(
+        QStringLiteral("link"),
+        QStringLiteral("Symlink to create to the terminal (removed on "
+                       "exit)."),
+        QStringLiteral("PATH"));
+    parser.addOptions({protocolOption, rateOption, baudOption, noThrottleOption, handOption,
+                       seedOption, stateOption, linkOption});
+
+    if (!parser.parse(app.arguments())) {
+        QString text = parser.errorText();
+        if (!text.endsWith(QLatin1Char('.')))
+            text += QLatin1Char('.');
+        printError(text);
+        return std::nullopt;
+    }
+    if (parser.isSet(helpOption))
+        parser.showHelp(kExitOk); // exits
+    if (!parser.positionalArguments().isEmpty()) {
+        printError(QStringLiteral("Unexpected argument \"%1\"; hatpic-sim takes only options.")
+                       .arg(parser.positionalArguments().first()));
+        return std::nullopt;
+    }
+
+    Options options;
+    SimulatedDevice::Config &config = options.config;
+    const QString protocol = parser.value(protocolOption);
+    if (protocol == QLatin1String("v2")) {
+        config.protocol = WireProtocol::V2;
+    } else if (protocol == QLatin1String("legacy")) {
+        config.protocol = WireProtocol::Legacy;
+    } else {
+        printError(QStringLiteral("Unknown protocol \"%1\"; use v2 or legacy.").arg(protocol));
+        return std::nullopt;
+    }
+
+    bool ok = false;
+    const double rate = parser.value(rateOption).toDouble(&ok);
+    if (!ok || !(rate >= 1 && rate <= kMaxRateHz)) {
+        printError(QStringLiteral("The control rate \"%1\" must be a number of Hz from 1 to %2.")
+                       .arg(parser.value(rateOption))
+                       .arg(kMaxRateHz));
+        return std::nullopt;
+    }
+    config.controlRateHz = rate;
+
+    if (parser.isSet(baudOption)) {
+        const qint32 baud = parser.value(baudOption).toInt(&ok);
+        if (!ok || baud < 300) {
+            printError(QStringLiteral("The baud rate \"%1\" must be a whole number of at least "
+                                      "300.")
+                           .arg(parser.value(baudOption)));
+            return std::nullopt;
+        }
+        config.baud = baud;
+    }
+    config.throttle = !parser.isSet(noThrottleOption);
+
+    QString handError;
+    const std::optional<HandInput> hand = HandInput::parse(parser.value(handOption), &handError);
+    if (!hand) {
+        printError(handError);
+        return std::nullopt;
+    }
+    config.hand = *hand;
+
+    const quint64 seed = parser.value(seedOption).toULongLong(&ok);
+    if (!ok) {
+        printError(QStringLiteral("The seed \"%1\" must be a non-negative whole number.")
+                       .arg(parser.value(seedOption)));
+        return std::nullopt;
+    }
+    config.seed = seed;
+    config.noise = kLoadNoise;
+
+    if (parser.isSet(stateOption)) {
+        config.stateFile = parser.value(stateOption);
+        if (config.stateFile.isEmpty()) {
+            printError(QStringLiteral("The state file name is empty."));
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(linkOption)) {
+        options.link = parser.value(linkOption);
+        if (options.link.isEmpty()) {
+            printError(QStringLiteral("The link path is empty."));
+            return std::nullopt;
+        }
+    }
+    return options;
+}
+
+bool installSignalHandlers()
+{
+    if (::pipe2(g_signalPipe, O_CLOEXEC | O_NONBLOCK) != 0)
+        return false;
+    struct sigaction action = {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("hatpic-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral("0.1"));
+
+    const std::optional<Options> options = parseOptions(app);
+    if (!options)
+        return kExitBadOptions;
+
+    if (!installSignalHandlers()) {
+        printError(QStringLiteral("Cannot set up signal handling."));
+        return kExitFailure;
+    }
+    QSocketNotifier signalNotifier{qintptr(g_signalPipe[0]), QSocketNotifier::Read};
+    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [] {
+        char bytes[16];
+        while (::read(g_signalPipe[0], bytes, sizeof bytes) > 0) {
+        }
+        QCoreApplication::quit();
+    });
+
+    SimulatorHost host(options->config);
+    if (!host.device().stateWarning().isEmpty())
+        printError(host.device().stateWarning());
+    const QString error = host.start();
+    if (!error.isEmpty()) {
+        printError(error);
+        return kExitFailure;
+    }
+    if (!options->link.isEmpty()) {
+        const QString linkError = host.createLink(options->link);
+        if (!linkError.isEmpty()) {
+            printError(linkError);
+            return kExitFailure;
+        }
+    }
+
+    std::fprintf(stdout, "%s\n", qPrintable(host.slavePath()));
+    std::fflush(stdout);
+    std::fprintf(stderr, "hatpic-sim: %s protocol, %g Hz control, %d baud%s\n",
+                 qPrintable(wireProtocolName(options->config.protocol)),
+                 options->config.controlRateHz, host.device().baud(),
+                 options->config.throttle ? "" : " (not throttled)");
+
+    const int code = app.exec();
+    host.stop();
+    return code == 0 ? kExitOk : kExitFailure;
+}

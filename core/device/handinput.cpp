@@ -1,0 +1,197 @@
+#include "handinput.h"
+
+#include "model/params.h"
+
+#include <QStringList>
+
+#include <cmath>
+#include <numbers>
+
+namespace hatpic {
+
+namespace {
+
+struct KindInfo
+{
+    HandInput::Kind kind;
+    QLatin1String name;
+    QLatin1String usage; //!< the SPEC form, for error messages
+    int minValues;
+    int maxValues;
+};
+
+const KindInfo kKinds[] = {
+    {HandInput::Kind::Idle, QLatin1String("idle"), QLatin1String("idle"), 0, 0},
+    {HandInput::Kind::Constant, QLatin1String("const"), QLatin1String("const:T"), 1, 1},
+    {HandInput::Kind::Step, QLatin1String("step"), QLatin1String("step:T[:T0]"), 1, 2},
+    {HandInput::Kind::Sine, QLatin1String("sine"), QLatin1String("sine:A:F"), 2, 2},
+    {HandInput::Kind::Chirp, QLatin1String("chirp"), QLatin1String("chirp:A:F0:F1"), 3, 3},
+    {HandInput::Kind::VirtualHand, QLatin1String("hand"), QLatin1String("hand:ANGLE"), 1, 1},
+};
+
+const KindInfo &infoOf(HandInput::Kind kind)
+{
+    for (const KindInfo &info : kKinds) {
+        if (info.kind == kind)
+            return info;
+    }
+    return kKinds[0];
+}
+
+QString number(double value)
+{
+    return QString::fromStdString(formatNumber(value));
+}
+
+QString valueCount(int n)
+{
+    return n == 1 ? QStringLiteral("1 value") : QStringLiteral("%1 values").arg(n);
+}
+
+void setError(QString *error, const QString &text)
+{
+    if (error)
+        *error = text;
+}
+
+} // namespace
+
+double HandInput::torque(double t, double theta, double omega) const
+{
+    switch (kind) {
+    case Kind::Idle:
+        return 0.0;
+    case Kind::Constant:
+        return amplitude;
+    case Kind::Step:
+        return t < kStepTime ? offset : amplitude;
+    case Kind::Sine:
+        return amplitude * std::sin(2.0 * std::numbers::pi * frequency * t);
+    case Kind::Chirp: {
+        // Linear sweep: the instantaneous frequency goes from F0 to F1 over one period, then
+        // the sweep starts again (phase restarts at 0, so each sweep is identical).
+        const double tau = std::fmod(std::max(t, 0.0), kChirpPeriod);
+        const double rate = (frequency1 - frequency) / kChirpPeriod; // [Hz/s]
+        const double phase = 2.0 * std::numbers::pi * (frequency * tau + 0.5 * rate * tau * tau);
+        return amplitude * std::sin(phase);
+    }
+    case Kind::VirtualHand:
+        return kHandStiffness * (angle - theta) - kHandDamping * omega;
+    }
+    return 0.0;
+}
+
+std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
+{
+    const QString text = spec.trimmed();
+    if (text.isEmpty()) {
+        setError(error, QStringLiteral("The hand input is empty; expected idle, const:T, "
+                                       "step:T[:T0], sine:A:F, chirp:A:F0:F1 or hand:ANGLE."));
+        return std::nullopt;
+    }
+    const QStringList parts = text.split(QLatin1Char(':'));
+    const QString kindName = parts.first().trimmed().toLower();
+    const KindInfo *info = nullptr;
+    for (const KindInfo &candidate : kKinds) {
+        if (kindName == candidate.name)
+            info = &candidate;
+    }
+    if (!info) {
+        setError(error, QStringLiteral("Unknown hand input kind \"%1\" in \"%2\"; expected idle, "
+                                       "const, step, sine, chirp or hand.")
+                            .arg(parts.first(), text));
+        return std::nullopt;
+    }
+    const int count = int(parts.size()) - 1;
+    if (count < info->minValues || count > info->maxValues) {
+        const QString expected =
+            info->minValues == info->maxValues
+                ? valueCount(info->minValues)
+                : QStringLiteral("%1 or %2 values").arg(info->minValues).arg(info->maxValues);
+        setError(error, QStringLiteral("Hand input \"%1\" has %2 but %3 takes %4 (%5).")
+                            .arg(text, valueCount(count), QString(info->name), expected,
+                                 QString(info->usage)));
+        return std::nullopt;
+    }
+
+    QList<double> values;
+    for (int i = 1; i < parts.size(); ++i) {
+        const QString field = parts.at(i).trimmed();
+        bool ok = false;
+        const double value = field.toDouble(&ok);
+        if (!ok || field.isEmpty()) {
+            setError(error, QStringLiteral("Hand input value \"%1\" in \"%2\" is not a number.")
+                                .arg(parts.at(i), text));
+            return std::nullopt;
+        }
+        if (!std::isfinite(value)) {
+            setError(error, QStringLiteral("Hand input value \"%1\" in \"%2\" is not finite.")
+                                .arg(parts.at(i), text));
+            return std::nullopt;
+        }
+        values.append(value);
+    }
+
+    HandInput hand;
+    hand.kind = info->kind;
+    auto checkFrequency = [&](double f) {
+        if (f >= 0)
+            return true;
+        setError(error, QStringLiteral("Hand input frequency %1 Hz in \"%2\" must not be negative.")
+                            .arg(number(f), text));
+        return false;
+    };
+    switch (hand.kind) {
+    case Kind::Idle:
+        break;
+    case Kind::Constant:
+        hand.amplitude = values.at(0);
+        break;
+    case Kind::Step:
+        hand.amplitude = values.at(0);
+        hand.offset = values.size() > 1 ? values.at(1) : 0.0;
+        break;
+    case Kind::Sine:
+        hand.amplitude = values.at(0);
+        hand.frequency = values.at(1);
+        if (!checkFrequency(hand.frequency))
+            return std::nullopt;
+        break;
+    case Kind::Chirp:
+        hand.amplitude = values.at(0);
+        hand.frequency = values.at(1);
+        hand.frequency1 = values.at(2);
+        if (!checkFrequency(hand.frequency) || !checkFrequency(hand.frequency1))
+            return std::nullopt;
+        break;
+    case Kind::VirtualHand:
+        hand.angle = values.at(0);
+        break;
+    }
+    return hand;
+}
+
+QString HandInput::toSpec() const
+{
+    const QString name = QString(infoOf(kind).name);
+    switch (kind) {
+    case Kind::Idle:
+        return name;
+    case Kind::Constant:
+        return name % QLatin1Char(':') % number(amplitude);
+    case Kind::Step:
+        if (offset == 0.0)
+            return name % QLatin1Char(':') % number(amplitude);
+        return name % QLatin1Char(':') % number(amplitude) % QLatin1Char(':') % number(offset);
+    case Kind::Sine:
+        return name % QLatin1Char(':') % number(amplitude) % QLatin1Char(':') % number(frequency);
+    case Kind::Chirp:
+        return name % QLatin1Char(':') % number(amplitude) % QLatin1Char(':') % number(frequency) %
+               QLatin1Char(':') % number(frequency1);
+    case Kind::VirtualHand:
+        return name % QLatin1Char(':') % number(angle);
+    }
+    return name;
+}
+
+} // namespace hatpic
