@@ -2,7 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <utility>
 
 namespace hatpic {
 
@@ -17,8 +19,7 @@ class Checker
 public:
     Checker(std::vector<Violation> &out, std::string_view field, int index, double value)
         : m_out(out), m_field(field), m_index(index), m_value(value)
-    {
-    }
+    {}
 
     // Returns false (and records "must be finite") for NaN/Inf so later rules are skipped.
     bool finite()
@@ -46,35 +47,61 @@ private:
     double m_value;
 };
 
-std::string numberText(double v) { return formatNumber(v); }
+std::string numberText(double v)
+{
+    return formatNumber(v);
+}
 
 } // namespace
 
 double DeviceParams::field(int index) const
 {
     switch (index) {
-    case 0: return D_adm;
-    case 1: return M_adm;
-    case 2: return K_min;
-    case 3: return K_max;
-    case 4: return N;
-    case 5: return Q_dz;
-    case 6: return theta0;
-    default: return std::nan("");
+    case 0:
+        return D_adm;
+    case 1:
+        return M_adm;
+    case 2:
+        return K_min;
+    case 3:
+        return K_max;
+    case 4:
+        return N;
+    case 5:
+        return Q_dz;
+    case 6:
+        return theta0;
+    default:
+        return std::nan("");
     }
 }
 
 void DeviceParams::setField(int index, double value)
 {
     switch (index) {
-    case 0: D_adm = value; break;
-    case 1: M_adm = value; break;
-    case 2: K_min = value; break;
-    case 3: K_max = value; break;
-    case 4: N = value; break;
-    case 5: Q_dz = value; break;
-    case 6: theta0 = value; break;
-    default: break;
+    case 0:
+        D_adm = value;
+        break;
+    case 1:
+        M_adm = value;
+        break;
+    case 2:
+        K_min = value;
+        break;
+    case 3:
+        K_max = value;
+        break;
+    case 4:
+        N = value;
+        break;
+    case 5:
+        Q_dz = value;
+        break;
+    case 6:
+        theta0 = value;
+        break;
+    default:
+        break;
     }
 }
 
@@ -162,6 +189,38 @@ int firstViolatingField(const DeviceParams &params)
 {
     const auto violations = validate(params);
     return violations.empty() ? -1 : violations.front().index;
+}
+
+DeviceParams roundedForWire(const DeviceParams &params)
+{
+    // Single-field bounds [low, high] per ParamBlock index; cross-field rules are left alone.
+    constexpr double pi = std::numbers::pi;
+    constexpr std::array<std::pair<double, double>, DeviceParams::kFieldCount> bounds = {{
+        {1e-6, 1.0},
+        {0.0, 10.0},
+        {0.0, 50.0},
+        {0.0, 50.0},
+        {0.0, pi / 2},
+        {0.0, pi / 2},
+        {-pi, pi},
+    }};
+    DeviceParams out;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        const double v = params.field(i);
+        const auto [low, high] = bounds[static_cast<std::size_t>(i)];
+        float f = static_cast<float>(v);
+        if (std::isfinite(v)) {
+            if (v >= low && f < low)
+                f = std::nextafter(f, std::numeric_limits<float>::infinity());
+            if (v <= high && f > high)
+                f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+            // M_adm is the one exclusive lower bound that rounding can reach (> 0).
+            if (i == 1 && v > 0.0 && f <= 0.0f)
+                f = std::numeric_limits<float>::denorm_min();
+        }
+        out.setField(i, f);
+    }
+    return out;
 }
 
 std::string formatNumber(double value)

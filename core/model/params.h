@@ -46,7 +46,7 @@ std::string_view referenceModeName(ReferenceMode mode);
 //! Settings of the host-side reference model; never sent to the device.
 struct HostParams
 {
-    double v_max = 1.0;                             //!< maximum reference velocity [m/s or rad/s]
+    double v_max = 1.0;                              //!< maximum reference velocity [m/s or rad/s]
     ReferenceMode mode = ReferenceMode::Translation; //!< unit family of v_ref and p_ref
     bool ref_deadzone = true;                        //!< hold v_ref at 0 while |θ−θ0| < Q_dz
     double tau_limit = 0.44;                         //!< actuator torque limit [N·m]
@@ -72,6 +72,12 @@ std::vector<Violation> validate(const HostParams &params);
 
 //! Index of the first violating device field (the device's reject reply), or -1 when valid.
 int firstViolatingField(const DeviceParams &params);
+
+//! The set as it travels in a v2 ParamBlock: every field rounded to the nearest float32, except
+//! that a value which satisfied a single-field bound and left it by rounding (1e-6, π/2, ±π are
+//! not floats) is moved one float toward the inside. Values already outside are kept as they are,
+//! so the device still refuses them. Cross-field rules are not adjusted.
+DeviceParams roundedForWire(const DeviceParams &params);
 
 //! Shortest decimal text that reads back as the same double ("0.4", "1e-06", "nan").
 std::string formatNumber(double value);

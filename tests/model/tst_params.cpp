@@ -61,6 +61,9 @@ private Q_SLOTS:
     void violationCarriesFieldIndexRuleValue();
     void formatNumberShortestExact_data();
     void formatNumberShortestExact();
+    void roundedForWireKeepsBounds_data();
+    void roundedForWireKeepsBounds();
+    void roundedForWireKeepsInvalidInvalid();
 };
 
 void TestParams::defaultsMatchSpec()
@@ -410,6 +413,54 @@ void TestParams::formatNumberShortestExact()
     QCOMPARE(QString::fromStdString(s), text);
     if (std::isfinite(value))
         QCOMPARE(std::strtod(s.c_str(), nullptr), value);
+}
+
+void TestParams::roundedForWireKeepsBounds_data()
+{
+    QTest::addColumn<int>("index");
+    QTest::addColumn<double>("value");
+    constexpr double pi = std::numbers::pi;
+    QTest::newRow("D_adm = 1e-6 (float rounds below)") << 0 << 1e-6;
+    QTest::newRow("D_adm = 1 (exact)") << 0 << 1.0;
+    QTest::newRow("M_adm = 1e-300 (float rounds to 0)") << 1 << 1e-300;
+    QTest::newRow("N = pi/2 (float rounds above)") << 4 << pi / 2;
+    QTest::newRow("theta0 = pi") << 6 << pi;
+    QTest::newRow("theta0 = -pi") << 6 << -pi;
+    QTest::newRow("K_max = 0.4 (ordinary value)") << 3 << 0.4;
+}
+
+void TestParams::roundedForWireKeepsBounds()
+{
+    QFETCH(int, index);
+    QFETCH(double, value);
+    hatpic::DeviceParams p;
+    if (index == 4)
+        p.Q_dz = 0.02;
+    p.setField(index, value);
+    QVERIFY(hatpic::validate(p).empty());
+
+    const hatpic::DeviceParams wire = hatpic::roundedForWire(p);
+    // Every field is a float, the set is still valid, and no field moved more than one float.
+    for (int i = 0; i < hatpic::DeviceParams::kFieldCount; ++i) {
+        const float f = static_cast<float>(wire.field(i));
+        QCOMPARE(static_cast<double>(f), wire.field(i));
+        const float nearest = static_cast<float>(p.field(i));
+        QVERIFY2(f == nearest || std::nextafter(nearest, f) == f || (i == 1 && nearest == 0.0f),
+                 qPrintable(QString::number(i)));
+    }
+    const auto violations = hatpic::validate(wire);
+    QVERIFY2(violations.empty(), violations.empty() ? "" : violations.front().message().c_str());
+}
+
+void TestParams::roundedForWireKeepsInvalidInvalid()
+{
+    hatpic::DeviceParams p;
+    p.K_max = 60; // outside: must stay outside so the device refuses it
+    p.Q_dz = p.N; // cross-field violation stays
+    const auto violations = hatpic::validate(hatpic::roundedForWire(p));
+    QCOMPARE(violations.size(), std::size_t(2));
+    QCOMPARE(violations[0].field, std::string("K_max"));
+    QCOMPARE(violations[1].field, std::string("Q_dz"));
 }
 
 QTEST_GUILESS_MAIN(TestParams)
