@@ -30,12 +30,14 @@ public:
     quint64 saveParams();                           //!< SAVE_PARAMS
     quint64 setStreamRate(quint16 hz);              //!< SET_STREAM
 
-    void setFeedback(double tauExt);                //!< τ_ext streamed to the device [N·m]
-    void setHostParams(const HostParams &host);     //!< reference model settings
-    void resetReference();                          //!< p_ref := 0
-    void setSimulatedHand(const HandInput &hand);   //!< only for the simulated device
+    void setFeedback(double tauExt);              //!< τ_ext streamed to the device [N·m]
+    void setHostParams(const HostParams &host);   //!< reference model settings
+    void resetReference();                        //!< p_ref := 0
+    void setSimulatedHand(const HandInput &hand); //!< only for the simulated device
 
-    void startRecording(const QString &csvPath);
+    //! Records to `csvPath` (+ NAME.json); `source` names the program in the metadata.
+    void startRecording(const QString &csvPath,
+                        const QString &source = QStringLiteral("hatpic-tuner"));
     void stopRecording();
 
     // Last values seen on this thread (updated before the matching signal is emitted).

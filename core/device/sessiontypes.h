@@ -22,18 +22,21 @@ enum class ProtocolChoice { Auto, V2, Legacy };
 
 struct ConnectOptions
 {
-    QString port;                 //!< device path ("/dev/ttyUSB0", a pty) or "sim"
-    qint32 baud = 0;              //!< 0 = default (921600 for v2/auto, 115200 for legacy)
+    QString port;    //!< device path ("/dev/ttyUSB0", a pty) or "sim"
+    qint32 baud = 0; //!< 0 = default (921600 for v2/auto, 115200 for legacy)
     ProtocolChoice protocol = ProtocolChoice::Auto;
-    quint16 streamRateHz = 1000;  //!< requested telemetry rate (v2); the device may clamp it
-    double feedbackRateHz = 100;  //!< SET_FEEDBACK / legacy feedback frames per second [Hz]
-    bool autoReconnect = true;    //!< reopen the same port after it vanished
-    legacy::Conversion legacy;    //!< tick and load-unit conversion for legacy devices
-    SimulatedDevice::Config sim;  //!< used when port == "sim"
+    quint16 streamRateHz = 1000; //!< requested telemetry rate (v2); the device may clamp it
+    double feedbackRateHz = 100; //!< feedback frames per second; ≤ 0 = none [Hz]
+    bool autoReconnect = true;   //!< reopen the same port after it vanished
+    legacy::Conversion legacy;   //!< tick and load-unit conversion for legacy devices
+    SimulatedDevice::Config sim; //!< used when port == "sim"
 };
 
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
 QString sessionStateName(SessionState state); //!< "disconnected", "opening", …
+
+//! Registers every type above with Qt's meta-type system (queued signals); idempotent.
+void registerSessionMetaTypes();
 
 struct DeviceInfo
 {
@@ -53,17 +56,19 @@ struct DeviceInfo
 struct CommandResult
 {
     enum class Status {
-        Ok,          //!< ACK OK (or PARAMS for GET_PARAMS)
-        Rejected,    //!< device answered with a non-OK ACK: see ackStatus / field
-        Timeout,     //!< no answer after the retries
+        Ok,       //!< ACK OK (or PARAMS for GET_PARAMS)
+        Rejected, //!< device answered with a non-OK ACK: see ackStatus / field
+        Timeout,  //!< no answer after the retries
         NotConnected,
         Unsupported, //!< the protocol cannot carry it (legacy)
         Invalid,     //!< refused by host-side validation before sending
     };
     Status status = Status::Ok;
     v2::AckStatus ackStatus = v2::AckStatus::Ok;
-    int field = -1;   //!< ParamBlock index the device named, or -1
-    QString message;  //!< one clear sentence for a person
+    int field = -1;               //!< ParamBlock index the device named, or -1
+    QString message;              //!< one clear sentence for a person
+    bool readBack = false;        //!< a GET_PARAMS read-back followed (SET_PARAMS, ZERO)
+    bool readBackMatches = false; //!< SET_PARAMS: the read-back equals what was sent (float32)
     bool ok() const { return status == Status::Ok; }
 };
 
@@ -76,22 +81,22 @@ struct LinkStats
     quint64 seqDrops = 0;       //!< telemetry frames missing by seq gaps
     std::array<quint64, v2::kDropReasonCount> decoderDrops{}; //!< v2 drops by reason
     quint64 legacyMalformed = 0;
-    double rttLastMs = -1;      //!< -1 = none measured yet [ms]
+    double rttLastMs = -1; //!< -1 = none measured yet [ms]
     double rttMedianMs = -1;
     double rttMaxMs = -1;
-    quint64 referenceGaps = 0;  //!< gaps the reference held across
-    quint64 retries = 0;        //!< command frames sent again
+    quint64 referenceGaps = 0; //!< gaps the reference held across
+    quint64 retries = 0;       //!< command frames sent again
     quint64 totalDecoderDrops() const;
 };
 
 struct RecordingStatus
 {
     bool active = false;
-    QString path;        //!< the CSV file
-    double seconds = 0;  //!< recorded duration [s]
+    QString path;       //!< the CSV file
+    double seconds = 0; //!< recorded duration [s]
     quint64 samples = 0;
-    qint64 bytes = 0;    //!< bytes written to the CSV so far
-    QString error;       //!< why the recording stopped, if it failed
+    qint64 bytes = 0; //!< bytes written to the CSV so far
+    QString error;    //!< why the recording stopped, if it failed
 };
 
 } // namespace hatpic

@@ -191,7 +191,7 @@ int firstViolatingField(const DeviceParams &params)
     return violations.empty() ? -1 : violations.front().index;
 }
 
-DeviceParams roundedForWire(const DeviceParams &params)
+double roundedForWire(int index, double value)
 {
     // Single-field bounds [low, high] per ParamBlock index; cross-field rules are left alone.
     constexpr double pi = std::numbers::pi;
@@ -204,23 +204,31 @@ DeviceParams roundedForWire(const DeviceParams &params)
         {0.0, pi / 2},
         {-pi, pi},
     }};
+    float f = static_cast<float>(value);
+    if (index < 0 || index >= DeviceParams::kFieldCount || !std::isfinite(value))
+        return f;
+    const auto [low, high] = bounds[static_cast<std::size_t>(index)];
+    if (value >= low && f < low)
+        f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    if (value <= high && f > high)
+        f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    // M_adm is the one exclusive lower bound that rounding can reach (> 0).
+    if (index == 1 && value > 0.0 && f <= 0.0f)
+        f = std::numeric_limits<float>::denorm_min();
+    return f;
+}
+
+DeviceParams roundedForWire(const DeviceParams &params)
+{
     DeviceParams out;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const double v = params.field(i);
-        const auto [low, high] = bounds[static_cast<std::size_t>(i)];
-        float f = static_cast<float>(v);
-        if (std::isfinite(v)) {
-            if (v >= low && f < low)
-                f = std::nextafter(f, std::numeric_limits<float>::infinity());
-            if (v <= high && f > high)
-                f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-            // M_adm is the one exclusive lower bound that rounding can reach (> 0).
-            if (i == 1 && v > 0.0 && f <= 0.0f)
-                f = std::numeric_limits<float>::denorm_min();
-        }
-        out.setField(i, f);
-    }
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        out.setField(i, roundedForWire(i, params.field(i)));
     return out;
+}
+
+bool sameOnWire(const DeviceParams &a, const DeviceParams &b)
+{
+    return roundedForWire(a) == roundedForWire(b);
 }
 
 std::string formatNumber(double value)

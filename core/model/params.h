@@ -78,6 +78,10 @@ int firstViolatingField(const DeviceParams &params);
 //! not floats) is moved one float toward the inside. Values already outside are kept as they are,
 //! so the device still refuses them. Cross-field rules are not adjusted.
 DeviceParams roundedForWire(const DeviceParams &params);
+//! One field of roundedForWire(): `value` at ParamBlock `index`, as the wire carries it.
+double roundedForWire(int index, double value);
+//! True when both sets travel as the same ParamBlock (what "in sync" means).
+bool sameOnWire(const DeviceParams &a, const DeviceParams &b);
 
 //! Shortest decimal text that reads back as the same double ("0.4", "1e-06", "nan").
 std::string formatNumber(double value);

@@ -1,0 +1,7 @@
+#include "bytelink.h"
+
+namespace hatpic {
+
+ByteLink::~ByteLink() = default;
+
+} // namespace hatpic

@@ -1,0 +1,138 @@
+#include "deviceclient.h"
+
+#include "device/devicesession.h"
+
+#include <QThread>
+
+namespace hatpic {
+
+DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThread(this))
+{
+    registerSessionMetaTypes();
+    m_thread->setObjectName(QStringLiteral("hatpic-session"));
+    m_session = new DeviceSession; // no parent: it moves to the session thread
+    m_session->moveToThread(m_thread);
+    connect(m_thread, &QThread::finished, m_session, &QObject::deleteLater);
+
+    // Every connection below crosses threads, so it is queued: the slot runs on this
+    // object's thread with a copy of the values, and the cache is updated before re-emitting.
+    connect(m_session, &DeviceSession::stateChanged, this,
+            [this](SessionState state, const QString &detail) {
+                m_state = state;
+                Q_EMIT stateChanged(state, detail);
+            });
+    connect(m_session, &DeviceSession::deviceInfoChanged, this, [this](const DeviceInfo &info) {
+        m_info = info;
+        Q_EMIT deviceInfoChanged(info);
+    });
+    connect(m_session, &DeviceSession::deviceParamsChanged, this,
+            [this](const DeviceParams &params) {
+                m_params = params;
+                m_hasParams = true;
+                Q_EMIT deviceParamsChanged(params);
+            });
+    connect(m_session, &DeviceSession::samplesReady, this, &DeviceClient::samplesReady);
+    connect(m_session, &DeviceSession::commandFinished, this, &DeviceClient::commandFinished);
+    connect(m_session, &DeviceSession::statsUpdated, this, [this](const LinkStats &stats) {
+        m_stats = stats;
+        Q_EMIT statsUpdated(stats);
+    });
+    connect(m_session, &DeviceSession::recordingChanged, this,
+            [this](const RecordingStatus &status) {
+                m_recording = status;
+                Q_EMIT recordingChanged(status);
+            });
+    connect(m_session, &DeviceSession::deviceLog, this, &DeviceClient::deviceLog);
+
+    m_thread->start(QThread::HighestPriority);
+}
+
+DeviceClient::~DeviceClient()
+{
+    // Close the port and the recording on the session thread, then let the thread end;
+    // the session deletes itself there when the thread finishes.
+    QMetaObject::invokeMethod(
+        m_session, [s = m_session] { s->shutdown(); }, Qt::BlockingQueuedConnection);
+    m_thread->quit();
+    m_thread->wait();
+}
+
+void DeviceClient::connectDevice(const ConnectOptions &options)
+{
+    m_hasParams = false;
+    QMetaObject::invokeMethod(m_session, [s = m_session, options] { s->connectDevice(options); });
+}
+
+void DeviceClient::disconnectDevice()
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session] { s->disconnectDevice(); });
+}
+
+quint64 DeviceClient::pushParams(const DeviceParams &params)
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session,
+                              [s = m_session, id, params] { s->pushParams(id, params); });
+    return id;
+}
+
+quint64 DeviceClient::readParams()
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->readParams(id); });
+    return id;
+}
+
+quint64 DeviceClient::zero()
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->zero(id); });
+    return id;
+}
+
+quint64 DeviceClient::saveParams()
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->saveParams(id); });
+    return id;
+}
+
+quint64 DeviceClient::setStreamRate(quint16 hz)
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id, hz] { s->setStreamRate(id, hz); });
+    return id;
+}
+
+void DeviceClient::setFeedback(double tauExt)
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session, tauExt] { s->setFeedback(tauExt); });
+}
+
+void DeviceClient::setHostParams(const HostParams &host)
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session, host] { s->setHostParams(host); });
+}
+
+void DeviceClient::resetReference()
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session] { s->resetReference(); });
+}
+
+void DeviceClient::setSimulatedHand(const HandInput &hand)
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session, hand] { s->setSimulatedHand(hand); });
+}
+
+void DeviceClient::startRecording(const QString &csvPath, const QString &source)
+{
+    QMetaObject::invokeMethod(
+        m_session, [s = m_session, csvPath, source] { s->startRecording(csvPath, source); });
+}
+
+void DeviceClient::stopRecording()
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session] { s->stopRecording(); });
+}
+
+} // namespace hatpic

@@ -1,0 +1,100 @@
+#include "samplebuilder.h"
+
+#include "model/stiffness.h"
+#include "protocol/messages.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hatpic {
+
+void SampleBuilder::clear()
+{
+    m_reference.clear();
+    m_started = false;
+    m_discontinuity = false;
+    m_lastDeviceUs = 0;
+    m_lastHostUs = 0;
+    m_sessionUs = 0;
+}
+
+void SampleBuilder::advanceClock(quint32 deviceUs, qint64 hostUs)
+{
+    if (m_started) {
+        // Unsigned subtraction is the modulo-2³² step of the device clock.
+        const quint32 deviceStep = deviceUs - m_lastDeviceUs;
+        if (!m_discontinuity && deviceStep * 1e-6 <= kMaxDeviceStep)
+            m_sessionUs += deviceStep;
+        else
+            m_sessionUs += static_cast<quint64>(std::max<qint64>(1, hostUs - m_lastHostUs));
+    }
+    m_started = true;
+    m_discontinuity = false;
+    m_lastDeviceUs = deviceUs;
+    m_lastHostUs = hostUs;
+}
+
+void SampleBuilder::addReference(Sample &sample)
+{
+    // The reference integrates over the session clock: device deltas within a connection,
+    // host time across gaps, so p_ref holds (and counts a gap) wherever t_s jumped.
+    const auto out =
+        m_reference.update(static_cast<std::uint32_t>(m_sessionUs), m_host, m_device, sample.theta);
+    sample.v_ref = out.v_ref;
+    sample.p_ref = out.p_ref;
+    if (out.gap)
+        sample.flags |= kFlagReferenceGap;
+}
+
+Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostUs)
+{
+    advanceClock(telemetry.t_us, hostUs);
+    Sample s;
+    s.t_s = sessionTime();
+    s.t_us = telemetry.t_us;
+    s.theta = telemetry.theta;
+    s.omega = telemetry.omega;
+    s.tau = telemetry.tau;
+    s.tau_rec = telemetry.tau_rec;
+    s.tau_ext = telemetry.tau_ext;
+    s.tau_total = std::clamp(s.tau_rec + s.tau_ext, -m_tauLimit, m_tauLimit);
+    s.flags = telemetry.flags;
+    addReference(s);
+    return s;
+}
+
+Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conversion &conversion,
+                                 double tauExt, qint64 hostUs)
+{
+    const auto hostClock = static_cast<quint32>(hostUs);
+    advanceClock(hostClock, hostUs);
+    Sample s;
+    s.t_s = sessionTime();
+    s.t_us = hostClock;
+    s.theta = conversion.ticksToRad(frame.a);
+    s.omega = std::numeric_limits<double>::quiet_NaN();
+    s.tau = std::numeric_limits<double>::quiet_NaN();
+    s.tau_rec = recenteringTorque(m_device, s.theta);
+    s.tau_ext = tauExt;
+    const double total = s.tau_rec + s.tau_ext;
+    s.tau_total = std::clamp(total, -m_tauLimit, m_tauLimit);
+    quint16 flags = kFlagModelEstimated;
+    switch (stiffnessZone(m_device, s.theta)) {
+    case StiffnessZone::DeadZone:
+        flags |= v2::kFlagDeadZone;
+        break;
+    case StiffnessZone::Notch:
+        flags |= v2::kFlagNotch;
+        break;
+    case StiffnessZone::Outer:
+        break;
+    }
+    if (std::abs(total) > m_tauLimit)
+        flags |= v2::kFlagSaturated;
+    s.flags = flags;
+    addReference(s);
+    return s;
+}
+
+} // namespace hatpic
