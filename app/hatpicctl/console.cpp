@@ -1,0 +1,56 @@
+#include "console.h"
+
+#include "model/params.h"
+
+#include <cstdio>
+
+namespace hatpic::cli {
+
+void writeOut(const QByteArray &bytes)
+{
+    std::fwrite(bytes.constData(), 1, static_cast<size_t>(bytes.size()), stdout);
+}
+
+void writeOut(const QString &text)
+{
+    writeOut(text.toUtf8());
+}
+
+bool flushOut()
+{
+    return std::fflush(stdout) == 0 && !std::ferror(stdout);
+}
+
+void printError(const QString &sentence)
+{
+    const QByteArray line = "hatpicctl: " + sentence.toUtf8() + '\n';
+    std::fflush(stdout);
+    std::fwrite(line.constData(), 1, static_cast<size_t>(line.size()), stderr);
+}
+
+void printNote(const QString &text)
+{
+    QByteArray bytes = text.toUtf8();
+    if (!bytes.endsWith('\n'))
+        bytes += '\n';
+    std::fwrite(bytes.constData(), 1, static_cast<size_t>(bytes.size()), stderr);
+}
+
+QString numberText(double value)
+{
+    // −0 (e.g. τ = −τ_op with no hand) reads as 0: the sign of a zero carries nothing here.
+    if (value == 0.0)
+        return QStringLiteral("0");
+    return QString::fromStdString(formatNumber(value));
+}
+
+QString asSentence(const QString &text)
+{
+    const QString trimmed = text.trimmed();
+    if (trimmed.isEmpty() || trimmed.endsWith(u'.') || trimmed.endsWith(u'!') ||
+        trimmed.endsWith(u'?'))
+        return trimmed;
+    return trimmed + u'.';
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,239 @@
+#include "devicerunner.h"
+
+#include "console.h"
+#include "exitcode.h"
+
+#include "model/params.h"
+
+#include <QEventLoop>
+#include <QTimer>
+
+#include <cmath>
+#include <optional>
+
+namespace hatpic::cli {
+
+namespace {
+
+constexpr int kPollMs = 50;
+
+QString portText(const QString &port)
+{
+    return port == QStringView(kSimPortName) ? QStringLiteral("the simulated joystick") : port;
+}
+
+QString secondsText(double seconds)
+{
+    return numberText(seconds) +
+           (seconds == 1.0 ? QStringLiteral(" second") : QStringLiteral(" seconds"));
+}
+
+} // namespace
+
+DeviceRunner::DeviceRunner(const DeviceOptions &options) : m_options(options)
+{
+    QObject::connect(
+        &m_client, &DeviceClient::stateChanged, &m_context,
+        [this](SessionState state, const QString &detail) { onStateChanged(state, detail); });
+}
+
+DeviceRunner::~DeviceRunner()
+{
+    m_closing = true;
+    if (m_started)
+        m_client.disconnectDevice();
+}
+
+void DeviceRunner::onStateChanged(SessionState state, const QString &detail)
+{
+    if (!m_started || m_closing)
+        return;
+    const bool gone = state == SessionState::Lost || state == SessionState::Disconnected;
+    if (gone && !m_lost) {
+        m_lost = true;
+        m_lostDetail = detail;
+    }
+}
+
+DeviceRunner::Wait DeviceRunner::wait(const std::function<bool()> &done, double seconds)
+{
+    if (m_lost)
+        return Wait::Lost;
+    if (done())
+        return Wait::Done;
+
+    QEventLoop loop;
+    Wait outcome = Wait::TimedOut;
+    const auto check = [&] {
+        if (m_lost) {
+            outcome = Wait::Lost;
+            loop.quit();
+        } else if (done()) {
+            outcome = Wait::Done;
+            loop.quit();
+        }
+    };
+    QObject::connect(&m_client, &DeviceClient::stateChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::deviceInfoChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::deviceParamsChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::commandFinished, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::recordingChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::statsUpdated, &loop, check);
+
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, check);
+    poll.start(kPollMs);
+
+    QTimer deadline;
+    deadline.setSingleShot(true);
+    deadline.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&deadline, &QTimer::timeout, &loop, [&] {
+        outcome = Wait::TimedOut;
+        loop.quit();
+    });
+    if (seconds > 0)
+        deadline.start(static_cast<int>(std::ceil(seconds * 1000.0)));
+
+    loop.exec();
+    return outcome;
+}
+
+int DeviceRunner::reportLoss() const
+{
+    const QString port = portText(m_options.connect.port);
+    if (!m_lostDetail.trimmed().isEmpty())
+        printError(asSentence(m_lostDetail));
+    else
+        printError(u"The connection to " + port + u" was lost.");
+    return ExitNoDevice;
+}
+
+int DeviceRunner::connect()
+{
+    m_started = true;
+    m_client.connectDevice(m_options.connect);
+    const Wait outcome =
+        wait([this] { return m_client.state() == SessionState::Connected; }, m_options.timeoutS);
+    switch (outcome) {
+    case Wait::Done:
+        break;
+    case Wait::Lost:
+        return reportLoss();
+    case Wait::TimedOut:
+        printError(u"No HATPIC answered on " + portText(m_options.connect.port) + u" within " +
+                   secondsText(m_options.timeoutS) + u'.');
+        return ExitNoDevice;
+    }
+    if (m_client.deviceInfo().protocol != WireProtocol::Legacy)
+        return ExitSuccess;
+
+    // A forced legacy connection has no handshake: only a frame shows that a device is there.
+    bool heard = false;
+    QObject context;
+    QObject::connect(&m_client, &DeviceClient::samplesReady, &context,
+                     [&heard](const SampleBatch &batch) { heard = heard || !batch.isEmpty(); });
+    switch (wait([&heard] { return heard; }, m_options.timeoutS)) {
+    case Wait::Done:
+        return ExitSuccess;
+    case Wait::Lost:
+        return reportLoss();
+    case Wait::TimedOut:
+        break;
+    }
+    printError(u"No legacy HATPIC frame arrived on " + portText(m_options.connect.port) +
+               u" within " + secondsText(m_options.timeoutS) + u'.');
+    return ExitNoDevice;
+}
+
+int DeviceRunner::runCommand(const std::function<quint64(DeviceClient &)> &issue,
+                             CommandResult *result)
+{
+    quint64 id = 0;
+    std::optional<CommandResult> finished;
+    const QMetaObject::Connection connection =
+        QObject::connect(&m_client, &DeviceClient::commandFinished, &m_context,
+                         [&](quint64 finishedId, const CommandResult &r) {
+                             if (id != 0 && finishedId == id)
+                                 finished = r;
+                         });
+    id = issue(m_client);
+    const Wait outcome = wait([&] { return finished.has_value(); }, m_options.timeoutS);
+    QObject::disconnect(connection);
+
+    switch (outcome) {
+    case Wait::Done:
+        if (result)
+            *result = *finished;
+        return ExitSuccess;
+    case Wait::Lost:
+        return reportLoss();
+    case Wait::TimedOut:
+        break;
+    }
+    printError(u"The device did not answer within " + secondsText(m_options.timeoutS) + u'.');
+    return ExitNoDevice;
+}
+
+int DeviceRunner::runFor(double seconds, const std::function<bool()> &stop)
+{
+    switch (wait(stop, seconds)) {
+    case Wait::Done:
+    case Wait::TimedOut:
+        return ExitSuccess;
+    case Wait::Lost:
+        break;
+    }
+    return ExitNoDevice;
+}
+
+int DeviceRunner::reportResult(const CommandResult &result, const QString &what)
+{
+    using Status = CommandResult::Status;
+    if (result.status == Status::Ok)
+        return ExitSuccess;
+
+    QString sentence = result.message.trimmed();
+    if (sentence.isEmpty()) {
+        switch (result.status) {
+        case Status::Ok:
+            break;
+        case Status::Rejected: {
+            sentence =
+                u"The device rejected " + what + u" with " + v2::ackStatusName(result.ackStatus);
+            const auto field = deviceFieldName(result.field);
+            if (!field.empty())
+                sentence += u" for " + QString::fromUtf8(field.data(), field.size());
+            break;
+        }
+        case Status::Timeout:
+            sentence = u"The device did not answer " + what + u" after the retries";
+            break;
+        case Status::NotConnected:
+            sentence = QStringLiteral("The device is not connected");
+            break;
+        case Status::Unsupported:
+            sentence = u"The device's protocol cannot carry " + what;
+            break;
+        case Status::Invalid:
+            sentence = QStringLiteral("The parameters are not valid; nothing was sent");
+            break;
+        }
+    }
+    printError(asSentence(sentence));
+
+    switch (result.status) {
+    case Status::Ok:
+        return ExitSuccess;
+    case Status::Rejected:
+    case Status::Unsupported:
+        return ExitRejected;
+    case Status::Timeout:
+    case Status::NotConnected:
+        return ExitNoDevice;
+    case Status::Invalid:
+        return ExitBadUsage;
+    }
+    return ExitRejected;
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,60 @@
+// Runs a DeviceClient from a command-line program: connect, issue one command and wait for its
+// result, or let the link run for a while — each with a deadline, on a local event loop.
+//
+// Lives on the main thread. Every failure is printed as one sentence on stderr and returned
+// as an ExitCode, so a subcommand can simply `return` what these functions give.
+#pragma once
+
+#include "deviceoptions.h"
+
+#include "device/deviceclient.h"
+
+#include <QObject>
+
+#include <functional>
+
+namespace hatpic::cli {
+
+class DeviceRunner
+{
+public:
+    explicit DeviceRunner(const DeviceOptions &options);
+    ~DeviceRunner(); //!< closes the link
+    DeviceRunner(const DeviceRunner &) = delete;
+    DeviceRunner &operator=(const DeviceRunner &) = delete;
+
+    DeviceClient &client() { return m_client; }
+    const DeviceOptions &options() const { return m_options; }
+
+    //! Opens the port and waits until the session reports Connected.
+    int connect();
+    //! Issues one command (`issue` returns its request id) and waits for commandFinished.
+    //! The result is stored in `*result` when given, whatever its status.
+    int runCommand(const std::function<quint64(DeviceClient &)> &issue,
+                   CommandResult *result = nullptr);
+    //! Lets the link run for `seconds` (≤ 0: no limit) or until `stop()` returns true; `stop`
+    //! is checked whenever the client reports something and at least every 50 ms. A lost link
+    //! gives ExitNoDevice *without* printing, so the caller can report first; then it calls
+    //! reportLoss().
+    int runFor(double seconds, const std::function<bool()> &stop);
+    //! Prints why the link went away; returns ExitNoDevice.
+    int reportLoss() const;
+
+    //! Exit code for a command outcome (0, 2, 3 or 4); prints its sentence unless Ok.
+    static int reportResult(const CommandResult &result, const QString &what);
+
+private:
+    enum class Wait { Done, TimedOut, Lost };
+    Wait wait(const std::function<bool()> &done, double seconds);
+    void onStateChanged(SessionState state, const QString &detail);
+
+    DeviceOptions m_options;
+    DeviceClient m_client;
+    QObject m_context;      //!< receiver of the runner's own connections
+    bool m_started = false; //!< connectDevice() was called
+    bool m_closing = false; //!< we asked to disconnect; a Disconnected state is expected
+    bool m_lost = false;    //!< the link went away (or never came up)
+    QString m_lostDetail;   //!< the session's reason
+};
+
+} // namespace hatpic::cli

@@ -1,0 +1,63 @@
+// hatpicctl get: the parameters the device renders now (GET_PARAMS).
+#include "commands.h"
+#include "console.h"
+#include "devicecommand.h"
+#include "devicerunner.h"
+#include "exitcode.h"
+#include "paramtext.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+
+namespace hatpic::cli {
+
+namespace {
+
+class GetCommand final : public DeviceCommand
+{
+public:
+    QString name() const override { return QStringLiteral("get"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Print the device's current parameters (text or JSON).");
+    }
+    QString synopsis() const override { return QStringLiteral("get --port PORT [--json]"); }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Reads the parameters with GET_PARAMS. The text form has one line per\n"
+                   "parameter: name, value, unit, meaning. --json prints a complete profile\n"
+                   "that 'hatpicctl set --profile' accepts (host settings are defaults, with\n"
+                   "the device's tau_limit). The device holds 32-bit floats; each is shown\n"
+                   "as the shortest decimal that gives back that float.\n\n") +
+               portHelp();
+    }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
+                                            QStringLiteral("Print a profile (JSON).")));
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        CommandResult result;
+        if (const int code = runner.runCommand(&DeviceClient::readParams, &result); code)
+            return code;
+        if (const int code = DeviceRunner::reportResult(result, QStringLiteral("GET_PARAMS")); code)
+            return code;
+        writeOut(parameterOutput(runner.client().deviceParams(), runner.client().deviceInfo(),
+                                 parser.isSet(QStringLiteral("json"))));
+        return ExitSuccess;
+    }
+};
+
+} // namespace
+
+std::unique_ptr<Command> makeGetCommand()
+{
+    return std::make_unique<GetCommand>();
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,103 @@
+#include "paramtext.h"
+
+#include "console.h"
+
+#include "profile/profile.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+namespace hatpic::cli {
+
+namespace {
+
+struct FieldText
+{
+    const char16_t *unit;
+    const char16_t *meaning;
+};
+
+constexpr std::array<FieldText, DeviceParams::kFieldCount> kFields = {{
+    {u"kg·m²", u"virtual inertia of the admittance filter"},
+    {u"N·m·s/rad", u"virtual damping of the admittance filter"},
+    {u"N·m/rad", u"minimum re-centering stiffness"},
+    {u"N·m/rad", u"maximum (notch) re-centering stiffness"},
+    {u"rad", u"half-width of the notch band"},
+    {u"rad", u"half-width of the dead zone"},
+    {u"rad", u"center (idle) angle"},
+}};
+
+QString fieldName(int index)
+{
+    const auto name = deviceFieldName(index);
+    return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+} // namespace
+
+QString deviceValueText(double value)
+{
+    const auto single = static_cast<float>(value);
+    if (!std::isfinite(value) || static_cast<double>(single) != value)
+        return numberText(value);
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, single);
+    return QString::fromLatin1(buffer, result.ptr - buffer);
+}
+
+DeviceParams tidyDeviceParams(const DeviceParams &params)
+{
+    DeviceParams tidy = params;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        bool ok = false;
+        const double value = deviceValueText(params.field(i)).toDouble(&ok);
+        if (ok)
+            tidy.setField(i, value);
+    }
+    return tidy;
+}
+
+QString fieldUnit(int index)
+{
+    if (index < 0 || index >= DeviceParams::kFieldCount)
+        return {};
+    return QString::fromUtf16(kFields[static_cast<std::size_t>(index)].unit);
+}
+
+QString fieldMeaning(int index)
+{
+    if (index < 0 || index >= DeviceParams::kFieldCount)
+        return {};
+    return QString::fromUtf16(kFields[static_cast<std::size_t>(index)].meaning);
+}
+
+QString parameterTable(const DeviceParams &params)
+{
+    QString text;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        text += fieldName(i).leftJustified(8) + deviceValueText(params.field(i)).leftJustified(14) +
+                u' ' + fieldUnit(i).leftJustified(11) + fieldMeaning(i) + u'\n';
+    }
+    return text;
+}
+
+QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info)
+{
+    Profile profile;
+    profile.name = QStringLiteral("Read from device");
+    profile.notes = u"Device parameters read from " + info.port + u" (device id 0x" +
+                    QString::number(info.deviceId, 16).rightJustified(8, u'0') +
+                    u"); host settings are defaults.";
+    profile.device = tidyDeviceParams(params);
+    if (std::isfinite(info.tauLimit) && info.tauLimit > 0 && info.tauLimit <= 10)
+        profile.host.tau_limit = deviceValueText(info.tauLimit).toDouble();
+    return serializeProfile(profile);
+}
+
+QByteArray parameterOutput(const DeviceParams &params, const DeviceInfo &info, bool json)
+{
+    return json ? parameterProfile(params, info) : parameterTable(params).toUtf8();
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,33 @@
+// How device parameters are shown: a text table and a profile document.
+#pragma once
+
+#include "device/sessiontypes.h"
+#include "model/params.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace hatpic::cli {
+
+//! A value the device holds as a 32-bit float, as the shortest decimal that identifies that
+//! float ("0.1" rather than "0.10000000149011612"). Other values: shortest double text.
+QString deviceValueText(double value);
+
+//! Each field replaced by the double nearest to deviceValueText(field): sending it back gives
+//! the device the identical floats, and a profile written from it reads like a person wrote it.
+DeviceParams tidyDeviceParams(const DeviceParams &params);
+
+QString fieldUnit(int index);    //!< "kg·m²"
+QString fieldMeaning(int index); //!< "virtual inertia of the admittance filter"
+
+//! One line per field: name, value, unit, meaning — columns separated by spaces.
+QString parameterTable(const DeviceParams &params);
+
+//! A complete profile (profile.md) holding `params`, with default host settings except
+//! tau_limit, which is the device's.
+QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info);
+
+//! parameterProfile() when `json`, else parameterTable() — what get, set and zero print.
+QByteArray parameterOutput(const DeviceParams &params, const DeviceInfo &info, bool json);
+
+} // namespace hatpic::cli

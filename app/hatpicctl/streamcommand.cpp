@@ -1,0 +1,255 @@
+// hatpicctl stream: telemetry to stdout or to a recording, then the link statistics.
+#include "commands.h"
+#include "console.h"
+#include "devicecommand.h"
+#include "devicerunner.h"
+#include "exitcode.h"
+#include "samplecsv.h"
+
+#include "device/recorder.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QDateTime>
+#include <QElapsedTimer>
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+
+namespace hatpic::cli {
+
+namespace {
+
+std::atomic<bool> g_interrupted{false}; // set by SIGINT / SIGTERM
+
+void onInterrupt(int)
+{
+    g_interrupted.store(true);
+}
+
+constexpr int kDefaultRateHz = 1000;
+
+QString milliseconds(double ms)
+{
+    return ms < 0 ? QStringLiteral("–") : QString::number(ms, 'f', 3) + u" ms";
+}
+
+class StreamCommand final : public DeviceCommand
+{
+public:
+    QString name() const override { return QStringLiteral("stream"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Stream telemetry (CSV to stdout, or a recording); link stats.");
+    }
+    QString synopsis() const override
+    {
+        return QStringLiteral("stream --port PORT [--rate HZ] [--duration S] [--csv FILE]");
+    }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Streams telemetry for --duration seconds (default: until Ctrl+C).\n"
+                   "Without --csv every sample goes to stdout as CSV with the header\n"
+                   "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags.\n"
+                   "With --csv FILE the samples are recorded to FILE (the tuner's recording\n"
+                   "format, metadata in FILE's .json sibling) and stdout stays empty.\n"
+                   "At the end the link statistics go to stderr: frames/s, frames, frames\n"
+                   "missing by sequence number, decoder drops by reason, round-trip time.\n\n") +
+               portHelp();
+    }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        parser.addOption(QCommandLineOption(
+            QStringList{QStringLiteral("rate")},
+            QStringLiteral("Telemetry rate to request (default: 1000); the device may clamp "
+                           "it."),
+            QStringLiteral("HZ"), QString::number(kDefaultRateHz)));
+        parser.addOption(QCommandLineOption(
+            QStringList{QStringLiteral("duration")},
+            QStringLiteral("How long to stream, in seconds (default: until interrupted)."),
+            QStringLiteral("S")));
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("csv")},
+                                            QStringLiteral("Record to FILE instead of stdout."),
+                                            QStringLiteral("FILE")));
+    }
+
+    int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
+    {
+        bool ok = false;
+        const int rate = parser.value(QStringLiteral("rate")).toInt(&ok);
+        if (!ok || rate < 1 || rate > 65535) {
+            printError(u"--rate must be a whole number of Hz from 1 to 65535, got '" +
+                       parser.value(QStringLiteral("rate")) + u"'.");
+            return ExitBadUsage;
+        }
+        options.connect.streamRateHz = static_cast<quint16>(rate);
+        m_duration = 0;
+        if (parser.isSet(QStringLiteral("duration"))) {
+            m_duration = parser.value(QStringLiteral("duration")).toDouble(&ok);
+            if (!ok || !std::isfinite(m_duration) || m_duration <= 0 || m_duration > 1e6) {
+                printError(u"--duration must be a number of seconds above 0, got '" +
+                           parser.value(QStringLiteral("duration")) + u"'.");
+                return ExitBadUsage;
+            }
+        }
+        m_csvPath = parser.value(QStringLiteral("csv"));
+        return ExitSuccess;
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        Q_UNUSED(parser);
+        DeviceClient &client = runner.client();
+        const DeviceInfo info = client.deviceInfo();
+
+        HostParams host;
+        if (std::isfinite(info.tauLimit) && info.tauLimit > 0 && info.tauLimit <= 10)
+            host.tau_limit = info.tauLimit;
+        client.setHostParams(host);
+
+        // The parameters in force, for the recording's metadata (legacy cannot tell).
+        DeviceParams params = client.deviceParams();
+        if (info.canSetParams()) {
+            CommandResult read;
+            if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
+                return code;
+            if (const int code = DeviceRunner::reportResult(read, QStringLiteral("GET_PARAMS"));
+                code)
+                return code;
+            params = client.deviceParams();
+        }
+
+        Recorder recorder;
+        if (!m_csvPath.isEmpty()) {
+            RecordingMetadata metadata;
+            metadata.start = QDateTime::currentDateTimeUtc();
+            metadata.device = info;
+            metadata.params = params;
+            metadata.host = host;
+            metadata.source = QStringLiteral("hatpicctl stream");
+            if (!recorder.open(m_csvPath, metadata)) {
+                printError(u"Cannot write the recording " + m_csvPath + u": " +
+                           asSentence(recorder.error()));
+                return ExitBadUsage;
+            }
+        } else {
+            writeOut(sampleCsvHeader());
+        }
+
+        quint64 samples = 0;
+        bool recordingFailed = false;
+        QObject context;
+        QObject::connect(&client, &DeviceClient::samplesReady, &context,
+                         [&](const SampleBatch &batch) {
+                             samples += static_cast<quint64>(batch.size());
+                             if (recorder.isOpen()) {
+                                 if (!recorder.append(batch))
+                                     recordingFailed = true;
+                             } else if (m_csvPath.isEmpty()) {
+                                 QByteArray rows;
+                                 for (const Sample &sample : batch)
+                                     rows += sampleCsvRow(sample);
+                                 writeOut(rows);
+                             }
+                         });
+        QObject::connect(&client, &DeviceClient::statsUpdated, &context,
+                         [&](const LinkStats &) { ++m_statsUpdates; });
+
+        g_interrupted.store(false);
+        const auto previousInt = std::signal(SIGINT, onInterrupt);
+        const auto previousTerm = std::signal(SIGTERM, onInterrupt);
+        QElapsedTimer elapsed;
+        elapsed.start();
+        const int code =
+            runner.runFor(m_duration, [&] { return g_interrupted.load() || recordingFailed; });
+        const double seconds = elapsed.nsecsElapsed() * 1e-9;
+        QObject::disconnect(&client, &DeviceClient::samplesReady, &context, nullptr);
+        std::signal(SIGINT, previousInt);
+        std::signal(SIGTERM, previousTerm);
+
+        // The statistics arrive periodically; wait for one more report (bounded) so the
+        // figures cover the whole run.
+        if (code == ExitSuccess) {
+            const quint64 before = m_statsUpdates;
+            runner.runFor(kStatsWaitS, [&] { return m_statsUpdates > before; });
+        }
+
+        RecordingStatus recorded;
+        if (recorder.isOpen()) {
+            recorder.flush();
+            recorded = recorder.status();
+            recorder.close();
+        }
+        flushOut();
+        printStatistics(client, seconds, samples, recorded);
+
+        if (code == ExitNoDevice)
+            return runner.reportLoss();
+        if (recordingFailed || !recorder.error().isEmpty()) {
+            printError(u"The recording stopped: " + asSentence(recorder.error()));
+            return ExitBadUsage;
+        }
+        return code;
+    }
+
+private:
+    static constexpr double kStatsWaitS = 1.5;
+
+    void printStatistics(const DeviceClient &client, double seconds, quint64 samples,
+                         const RecordingStatus &recorded) const
+    {
+        const LinkStats stats = client.stats();
+        const DeviceInfo info = client.deviceInfo();
+        const auto line = [](const char16_t *key, const QString &value) -> QString {
+            return QString::fromUtf16(key).leftJustified(14) + value + u'\n';
+        };
+        QString text;
+        text += line(u"link", info.port + u", " + wireProtocolName(info.protocol) + u", " +
+                                  QString::number(info.baud) + u" baud");
+        text += line(u"duration", QString::number(seconds, 'f', 3) + u" s");
+        text += line(u"samples", QString::number(samples) + u" (" +
+                                     QString::number(seconds > 0 ? samples / seconds : 0, 'f', 1) +
+                                     u" per second)");
+        text += line(u"frames/s",
+                     QString::number(stats.framesPerSecond, 'f', 1) + u" over the last second");
+        text += line(u"frames", QString::number(stats.frames) + u" received, " +
+                                    QString::number(stats.seqDrops) +
+                                    u" missing by seq (since connecting)");
+        QStringList reasons;
+        for (int r = 0; r < v2::kDropReasonCount; ++r) {
+            reasons << v2::dropReasonName(static_cast<v2::DropReason>(r)) + u' ' +
+                           QString::number(stats.decoderDrops[static_cast<std::size_t>(r)]);
+        }
+        QString drops = QString::number(stats.totalDecoderDrops()) + u" (" +
+                        reasons.join(QStringLiteral(", ")) + u')';
+        if (info.protocol == WireProtocol::Legacy)
+            drops += u", legacy malformed " + QString::number(stats.legacyMalformed);
+        text += line(u"decoder drops", drops);
+        text += line(u"rtt", u"last " + milliseconds(stats.rttLastMs) + u", median " +
+                                 milliseconds(stats.rttMedianMs) + u", max " +
+                                 milliseconds(stats.rttMaxMs));
+        if (!m_csvPath.isEmpty()) {
+            text +=
+                line(u"recording", m_csvPath + u", " + QString::number(recorded.samples) +
+                                       u" samples, " + QString::number(recorded.bytes) + u" bytes");
+        }
+        printNote(text);
+    }
+
+    double m_duration = 0; //!< [s]; 0 = until interrupted
+    QString m_csvPath;
+    quint64 m_statsUpdates = 0;
+};
+
+} // namespace
+
+std::unique_ptr<Command> makeStreamCommand()
+{
+    return std::make_unique<StreamCommand>();
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,62 @@
+// hatpicctl zero: make the knob's current angle the new center (ZERO).
+#include "commands.h"
+#include "console.h"
+#include "devicecommand.h"
+#include "devicerunner.h"
+#include "exitcode.h"
+#include "paramtext.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+
+namespace hatpic::cli {
+
+namespace {
+
+class ZeroCommand final : public DeviceCommand
+{
+public:
+    QString name() const override { return QStringLiteral("zero"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Make the current knob angle the center (theta0).");
+    }
+    QString synopsis() const override { return QStringLiteral("zero --port PORT [--json]"); }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Sends ZERO, then prints the parameters read back (as 'get' does), whose\n"
+                   "theta0 is the new center. Not saved across power-up until 'save'.\n\n") +
+               portHelp();
+    }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
+                                            QStringLiteral("Print a profile (JSON).")));
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        CommandResult result;
+        if (const int code = runner.runCommand(&DeviceClient::zero, &result); code)
+            return code;
+        if (const int code = DeviceRunner::reportResult(result, QStringLiteral("ZERO")); code)
+            return code;
+        const DeviceParams params = runner.client().deviceParams();
+        printNote(u"The center is now theta0 = " + deviceValueText(params.theta0) + u" rad.");
+        writeOut(parameterOutput(params, runner.client().deviceInfo(),
+                                 parser.isSet(QStringLiteral("json"))));
+        return ExitSuccess;
+    }
+};
+
+} // namespace
+
+std::unique_ptr<Command> makeZeroCommand()
+{
+    return std::make_unique<ZeroCommand>();
+}
+
+} // namespace hatpic::cli
