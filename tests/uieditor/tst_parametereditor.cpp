@@ -1,0 +1,649 @@
+// ParameterEditor with real widgets: validation at the fields, push/sync states, undo/redo,
+// diff markers, live push limits, derived figures.
+#include "editor/derivedfiguresview.h"
+#include "editor/parametereditor.h"
+#include "editor/parameterfield.h"
+#include "editor/scientificspinbox.h"
+#include "model/derived.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <cmath>
+#include <numbers>
+
+using namespace hatpic;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+ScientificSpinBox *spin(const ParameterEditor &editor, const QString &key)
+{
+    return editor.field(key)->spinBox();
+}
+
+QLabel *label(const ParameterEditor &editor, const QString &name)
+{
+    return editor.findChild<QLabel *>(name);
+}
+
+//! What a device echoes: every field rounded to float32 on the wire.
+DeviceParams asFloat(const DeviceParams &p)
+{
+    DeviceParams out;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        out.setField(i, static_cast<float>(p.field(i)));
+    return out;
+}
+
+CommandResult ok()
+{
+    return {};
+}
+
+} // namespace
+
+class TestParameterEditor : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void defaultsShown();
+    void invalidValueBlocksPush_data();
+    void invalidValueBlocksPush();
+    void nanCannotBeTyped();
+    void pushEmitsExactValues();
+    void ctrlReturnPushes();
+    void inSyncAfterAckAndReadback_data();
+    void inSyncAfterAckAndReadback();
+    void mismatchingReadbackIsNotInSync();
+    void rejectionShowsReasonAndKeepsValues();
+    void timeoutShown();
+    void undoRedoRestoresValues();
+    void editsOfOneGestureMerge();
+    void sliderDragIsOneUndoStep();
+    void setParamsIsOneUndoStep();
+    void diffMarkersFollowDevice();
+    void revertLoadsDeviceValues();
+    void livePushOneInFlightLastValueSent();
+    void livePushRateLimited();
+    void derivedFiguresWarn_data();
+    void derivedFiguresWarn();
+    void degreesChangeOnlyTheDisplay();
+    void hostFieldsEdit();
+    void tauLimitFromDevice();
+    void relativeStepsForSmallValues();
+};
+
+void TestParameterEditor::defaultsShown()
+{
+    ParameterEditor editor;
+    const DeviceParams defaults;
+    QCOMPARE(editor.params(), defaults);
+    QCOMPARE(editor.hostParams(), HostParams{});
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        const QString key = QString::fromLatin1(deviceFieldName(i));
+        QCOMPARE(spin(editor, key)->value(), defaults.field(i));
+        QVERIFY2(editor.field(key)->problem().isEmpty(), qPrintable(key));
+    }
+    // 1e-4 must be readable, not "0.00" as with a two-decimal spin box.
+    QCOMPARE(spin(editor, u"D_adm"_s)->text(), u"0.0001"_s);
+    QCOMPARE(spin(editor, u"v_max"_s)->value(), HostParams{}.v_max);
+    QCOMPARE(spin(editor, u"tau_limit"_s)->value(), HostParams{}.tau_limit);
+    QVERIFY(editor.isValid());
+    QCOMPARE(editor.syncState(), SyncState::NotConnected);
+    QCOMPARE(editor.syncText(), u"not connected"_s);
+    QVERIFY(!editor.pushAction()->isEnabled()); // nothing to push to
+    QCOMPARE(editor.undoStack()->count(), 0);
+    // D_adm is the inertia and M_adm the damping: the labels say so.
+    QVERIFY(label(editor, u"label_D_adm"_s)->text().contains(u"inertia"_s));
+    QVERIFY(label(editor, u"label_M_adm"_s)->text().contains(u"damping"_s));
+    QCOMPARE(label(editor, u"unit_D_adm"_s)->text(), u"kg·m²"_s);
+    QCOMPARE(label(editor, u"unit_M_adm"_s)->text(), u"N·m·s/rad"_s);
+}
+
+void TestParameterEditor::invalidValueBlocksPush_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("rule");
+
+    QTest::newRow("K_min above K_max") << u"K_min"_s << 0.5 << u"K_min: must be ≤ K_max (0.4)"_s;
+    QTest::newRow("K_max below K_min") << u"K_max"_s << 0.1 << u"K_min: must be ≤ K_max (0.1)"_s;
+    QTest::newRow("Q_dz equal to N") << u"Q_dz"_s << 0.1 << u"Q_dz: must be < N (0.1)"_s;
+    QTest::newRow("Q_dz above N") << u"Q_dz"_s << 0.3 << u"Q_dz: must be < N (0.1)"_s;
+    QTest::newRow("N below Q_dz") << u"N"_s << 0.01 << u"Q_dz: must be < N (0.01)"_s;
+    QTest::newRow("M_adm zero") << u"M_adm"_s << 0.0 << u"M_adm: must be > 0"_s;
+    QTest::newRow("N zero") << u"N"_s << 0.0 << u"N: must be > 0"_s;
+    QTest::newRow("v_max zero") << u"v_max"_s << 0.0 << u"v_max: must be > 0"_s;
+    QTest::newRow("tau_limit zero") << u"tau_limit"_s << 0.0 << u"tau_limit: must be > 0"_s;
+}
+
+void TestParameterEditor::invalidValueBlocksPush()
+{
+    QFETCH(QString, key);
+    QFETCH(double, value);
+    QFETCH(QString, rule);
+    // The field that owns the broken rule (cross-field rules belong to K_min and Q_dz).
+    const QString owner = rule.section(u':', 0, 0);
+
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    QVERIFY(editor.pushAction()->isEnabled());
+    QSignalSpy validity(&editor, &ParameterEditor::validityChanged);
+
+    spin(editor, key)->setValue(value);
+
+    QVERIFY(!editor.isValid());
+    QCOMPARE(validity.count(), 1);
+    QCOMPARE(validity.at(0).at(0).toBool(), false);
+    QVERIFY(!editor.pushAction()->isEnabled());
+    QVERIFY2(editor.field(owner)->problem().contains(rule),
+             qPrintable(editor.field(owner)->problem()));
+    QLabel *message = label(editor, u"error_"_s + owner);
+    QVERIFY(!message->isHidden());
+    QVERIFY(message->text().contains(rule));
+    QVERIFY(spin(editor, owner)->property("invalid").toBool());
+    QVERIFY(spin(editor, owner)->toolTip().contains(rule));
+    QVERIFY(editor.problems().join(u'\n').contains(rule));
+    QVERIFY(!editor.derivedFiguresView()->isShowingSaturation());
+
+    // Triggering the disabled action does not push.
+    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    editor.pushAction()->trigger();
+    QCOMPARE(pushes.count(), 0);
+
+    editor.undoStack()->undo();
+    QVERIFY(editor.isValid());
+    QCOMPARE(validity.count(), 2);
+    QVERIFY(editor.pushAction()->isEnabled());
+    QVERIFY(message->isHidden());
+    QVERIFY(!spin(editor, owner)->property("invalid").toBool());
+}
+
+void TestParameterEditor::nanCannotBeTyped()
+{
+    ParameterEditor editor;
+    ScientificSpinBox *box = spin(editor, u"K_max"_s);
+    for (QString text : {u"nan"_s, u"inf"_s, u"1e999"_s, u"abc"_s}) {
+        int pos = 0;
+        QVERIFY2(box->validate(text, pos) != QValidator::Acceptable, qPrintable(text));
+    }
+    box->selectAll();
+    QTest::keyClicks(box, u"nan"_s);
+    QTest::keyClick(box, Qt::Key_Enter);
+    QCOMPARE(editor.params().K_max, DeviceParams{}.K_max);
+    QVERIFY(std::isfinite(editor.params().K_max));
+
+    // Scientific input is accepted.
+    box->selectAll();
+    QTest::keyClicks(box, u"1.5e-1"_s);
+    QTest::keyClick(box, Qt::Key_Enter);
+    QCOMPARE(editor.params().K_max, 0.15);
+}
+
+void TestParameterEditor::pushEmitsExactValues()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    spin(editor, u"K_max"_s)->setValue(0.55);
+    spin(editor, u"D_adm"_s)->setValue(2.5e-5);
+    spin(editor, u"theta0"_s)->setValue(-0.125);
+    QCOMPARE(editor.syncState(), SyncState::NotRead);
+
+    editor.pushAction()->trigger();
+    QCOMPARE(pushes.count(), 1);
+    const auto pushed = pushes.at(0).at(0).value<DeviceParams>();
+    DeviceParams expected;
+    expected.K_max = 0.55;
+    expected.D_adm = 2.5e-5;
+    expected.theta0 = -0.125;
+    QCOMPARE(pushed, expected);
+    QCOMPARE(editor.syncState(), SyncState::Pushing);
+    QCOMPARE(editor.syncText(), u"pushing…"_s);
+    QVERIFY(!editor.pushAction()->isEnabled()); // one push at a time
+}
+
+void TestParameterEditor::ctrlReturnPushes()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    editor.show();
+    editor.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&editor));
+    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    spin(editor, u"K_max"_s)->setFocus();
+    QTest::keyClick(spin(editor, u"K_max"_s), Qt::Key_Return, Qt::ControlModifier);
+    QCOMPARE(pushes.count(), 1);
+    QCOMPARE(editor.pushAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Return));
+}
+
+void TestParameterEditor::inSyncAfterAckAndReadback_data()
+{
+    QTest::addColumn<bool>("readbackFirst");
+    QTest::newRow("read-back before the ACK result") << true;
+    QTest::newRow("read-back after the ACK result") << false;
+}
+
+void TestParameterEditor::inSyncAfterAckAndReadback()
+{
+    QFETCH(bool, readbackFirst);
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    editor.setDeviceParams(DeviceParams{});
+    QCOMPARE(editor.syncState(), SyncState::InSync);
+
+    spin(editor, u"K_max"_s)->setValue(0.4123457);
+    spin(editor, u"N"_s)->setValue(0.3);
+    QCOMPARE(editor.syncState(), SyncState::Edited);
+    QCOMPARE(editor.syncText(), u"edited — not pushed"_s);
+    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    editor.pushAction()->trigger();
+    QCOMPARE(pushes.count(), 1);
+    const DeviceParams echo = asFloat(editor.params());
+    QVERIFY(echo != editor.params()); // the comparison has to allow float32 rounding
+
+    if (readbackFirst) {
+        editor.setDeviceParams(echo);
+        QCOMPARE(editor.syncState(), SyncState::Pushing); // no ACK yet: not in sync
+        editor.pushFinished(ok());
+    } else {
+        editor.pushFinished(ok());
+        QCOMPARE(editor.syncState(), SyncState::AwaitingReadback); // ACK alone is not enough
+        editor.setDeviceParams(echo);
+    }
+    QCOMPARE(editor.syncState(), SyncState::InSync);
+    QCOMPARE(editor.syncText(), u"in sync"_s);
+    QVERIFY(editor.pushAction()->isEnabled());
+    QVERIFY(!editor.revertAction()->isEnabled()); // nothing differs
+}
+
+void TestParameterEditor::mismatchingReadbackIsNotInSync()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    editor.setDeviceParams(DeviceParams{});
+    spin(editor, u"K_max"_s)->setValue(0.8);
+    editor.pushAction()->trigger();
+    editor.pushFinished(ok());
+    DeviceParams other = asFloat(editor.params());
+    other.K_max = 0.75f; // the device stored something else
+    editor.setDeviceParams(other);
+    QCOMPARE(editor.syncState(), SyncState::ReadbackDiffers);
+    QVERIFY(editor.syncText().startsWith(u"not in sync"_s));
+    QVERIFY(editor.field(u"K_max"_s)->differsFromDevice());
+    QVERIFY(!editor.field(u"N"_s)->differsFromDevice());
+}
+
+void TestParameterEditor::rejectionShowsReasonAndKeepsValues()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    editor.setDeviceParams(DeviceParams{});
+    spin(editor, u"K_max"_s)->setValue(3.0);
+    const DeviceParams edited = editor.params();
+    editor.pushAction()->trigger();
+
+    CommandResult rejected;
+    rejected.status = CommandResult::Status::Rejected;
+    rejected.ackStatus = v2::AckStatus::OutOfRange;
+    rejected.field = 3;
+    rejected.message = u"value out of range"_s;
+    editor.pushFinished(rejected);
+
+    QCOMPARE(editor.syncState(), SyncState::Rejected);
+    QCOMPARE(editor.syncText(), u"device rejected: value out of range (K_max)"_s);
+    QCOMPARE(editor.params(), edited); // left for the user to fix
+    QVERIFY(editor.field(u"K_max"_s)->problem().contains(u"refused"_s));
+    QVERIFY(editor.pushAction()->isEnabled()); // the user may try again
+
+    // Editing starts over: the rejection was about the old value.
+    spin(editor, u"K_max"_s)->setValue(2.0);
+    QCOMPARE(editor.syncState(), SyncState::Edited);
+    QVERIFY(editor.field(u"K_max"_s)->problem().isEmpty());
+}
+
+void TestParameterEditor::timeoutShown()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    editor.setDeviceParams(DeviceParams{});
+    spin(editor, u"K_max"_s)->setValue(0.6);
+    editor.pushAction()->trigger();
+    CommandResult timeout;
+    timeout.status = CommandResult::Status::Timeout;
+    editor.pushFinished(timeout);
+    QCOMPARE(editor.syncState(), SyncState::Timeout);
+    QVERIFY(editor.syncText().startsWith(u"timeout"_s));
+    QCOMPARE(editor.params().K_max, 0.6);
+
+    // A late answer after a disconnect changes nothing.
+    editor.clearDeviceParams();
+    editor.setCanPush(false);
+    editor.pushFinished(ok());
+    QCOMPARE(editor.syncState(), SyncState::NotConnected);
+}
+
+void TestParameterEditor::undoRedoRestoresValues()
+{
+    ParameterEditor editor;
+    QSignalSpy edited(&editor, &ParameterEditor::paramsEdited);
+    spin(editor, u"K_max"_s)->setValue(0.5);
+    spin(editor, u"K_min"_s)->setValue(0.2);
+    QCOMPARE(editor.undoStack()->count(), 2);
+    QCOMPARE(edited.count(), 2);
+
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params().K_min, DeviceParams{}.K_min);
+    QCOMPARE(spin(editor, u"K_min"_s)->value(), DeviceParams{}.K_min);
+    QCOMPARE(editor.params().K_max, 0.5);
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params(), DeviceParams{});
+    QCOMPARE(spin(editor, u"K_max"_s)->value(), DeviceParams{}.K_max);
+    QCOMPARE(edited.count(), 4);
+
+    editor.undoStack()->redo();
+    QCOMPARE(editor.params().K_max, 0.5);
+    QCOMPARE(spin(editor, u"K_max"_s)->value(), 0.5);
+    editor.redoAction()->trigger();
+    QCOMPARE(editor.params().K_min, 0.2);
+}
+
+void TestParameterEditor::editsOfOneGestureMerge()
+{
+    ParameterEditor editor;
+    ScientificSpinBox *box = spin(editor, u"K_max"_s);
+    box->setFocus();
+    // Arrow steps while the field has focus are one gesture.
+    QTest::keyClick(box, Qt::Key_Up);
+    QTest::keyClick(box, Qt::Key_Up);
+    QTest::keyClick(box, Qt::Key_Up);
+    QCOMPARE(editor.params().K_max, 0.43);
+    QCOMPARE(editor.undoStack()->count(), 1);
+
+    // Enter ends the gesture; the next edit of the same field is a new step.
+    QTest::keyClick(box, Qt::Key_Enter);
+    QTest::keyClick(box, Qt::Key_Down);
+    QCOMPARE(editor.undoStack()->count(), 2);
+    // Another field never merges.
+    spin(editor, u"K_min"_s)->setValue(0.1);
+    QCOMPARE(editor.undoStack()->count(), 3);
+
+    editor.undoStack()->undo();
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params().K_max, 0.43);
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params().K_max, 0.4);
+}
+
+void TestParameterEditor::sliderDragIsOneUndoStep()
+{
+    ParameterEditor editor;
+    QSlider *slider = editor.field(u"K_max"_s)->slider();
+    slider->setSliderDown(true);
+    for (int pos : {100, 150, 200, 260})
+        slider->setValue(pos);
+    slider->setSliderDown(false); // emits sliderReleased
+    QCOMPARE(editor.undoStack()->count(), 1);
+    const double dragged = editor.params().K_max;
+    QVERIFY(std::abs(dragged - 5.0 * 260 / ParameterField::kSliderTicks) < 1e-12);
+    QCOMPARE(spin(editor, u"K_max"_s)->value(), dragged);
+
+    slider->setValue(300); // a new gesture
+    QCOMPARE(editor.undoStack()->count(), 2);
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params().K_max, dragged);
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params().K_max, DeviceParams{}.K_max);
+}
+
+void TestParameterEditor::setParamsIsOneUndoStep()
+{
+    ParameterEditor editor;
+    DeviceParams d;
+    d.K_max = 1.5;
+    d.Q_dz = 0.04;
+    HostParams h;
+    h.mode = ReferenceMode::Rotation;
+    QSignalSpy host(&editor, &ParameterEditor::hostParamsChanged);
+    editor.setParams(d, h, u"Load preset"_s);
+    QCOMPARE(editor.params(), d);
+    QCOMPARE(editor.hostParams(), h);
+    QCOMPARE(host.count(), 1);
+    QCOMPARE(editor.undoStack()->count(), 1);
+    QCOMPARE(editor.undoStack()->undoText(), u"Load preset"_s);
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params(), DeviceParams{});
+    QCOMPARE(editor.hostParams(), HostParams{});
+}
+
+void TestParameterEditor::diffMarkersFollowDevice()
+{
+    ParameterEditor editor;
+    QLabel *marker = label(editor, u"diff_K_max"_s);
+    QVERIFY(marker->isHidden());
+
+    DeviceParams device;
+    device.N = static_cast<float>(0.1); // float32 echo of the same value: no difference
+    editor.setDeviceParams(device);
+    QVERIFY(marker->isHidden());
+    QVERIFY(label(editor, u"diff_N"_s)->isHidden());
+
+    spin(editor, u"K_max"_s)->setValue(0.7);
+    QVERIFY(!marker->isHidden());
+    QCOMPARE(marker->toolTip(), u"device: 0.4 N·m/rad"_s);
+    QVERIFY(editor.revertAction()->isEnabled());
+
+    spin(editor, u"K_max"_s)->setValue(0.4);
+    QVERIFY(marker->isHidden());
+
+    spin(editor, u"K_max"_s)->setValue(0.7);
+    editor.clearDeviceParams();
+    QVERIFY(marker->isHidden());
+    QVERIFY(!editor.revertAction()->isEnabled());
+}
+
+void TestParameterEditor::revertLoadsDeviceValues()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    DeviceParams device;
+    device.K_max = static_cast<float>(0.8); // as it comes off the wire
+    device.theta0 = static_cast<float>(0.05);
+    editor.setDeviceParams(device);
+    QVERIFY(editor.revertAction()->isEnabled());
+    editor.revertAction()->trigger();
+    // The shortest decimal of the float, not 0.800000011920929.
+    QCOMPARE(editor.params().K_max, 0.8);
+    QCOMPARE(editor.params().theta0, 0.05);
+    QCOMPARE(editor.syncState(), SyncState::InSync);
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params(), DeviceParams{});
+
+    QSignalSpy reads(&editor, &ParameterEditor::readRequested);
+    editor.readAction()->trigger();
+    QCOMPARE(reads.count(), 1);
+}
+
+void TestParameterEditor::livePushOneInFlightLastValueSent()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    editor.setLivePushInterval(20);
+    editor.setLivePush(true);
+    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+
+    for (int i = 1; i <= 30; ++i)
+        spin(editor, u"K_max"_s)->setValue(0.4 + 0.01 * i);
+    QCOMPARE(pushes.count(), 1); // the first edit went out; the rest wait for its answer
+    QCOMPARE(pushes.at(0).at(0).value<DeviceParams>().K_max, 0.41);
+
+    // No answer yet: still one in flight, however long the event loop runs.
+    QTest::qWait(60);
+    QCOMPARE(pushes.count(), 1);
+
+    editor.pushFinished(ok());
+    QTRY_COMPARE(pushes.count(), 2);
+    QCOMPARE(pushes.at(1).at(0).value<DeviceParams>().K_max, 0.4 + 0.01 * 30);
+    editor.pushFinished(ok());
+    QTest::qWait(60);
+    QCOMPARE(pushes.count(), 2); // nothing new to send
+
+    // Invalid values are not live-pushed.
+    spin(editor, u"K_min"_s)->setValue(5.0);
+    QTest::qWait(60);
+    QCOMPARE(pushes.count(), 2);
+}
+
+void TestParameterEditor::livePushRateLimited()
+{
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    const int interval = 40;
+    editor.setLivePushInterval(interval);
+    editor.setLivePush(true);
+
+    QList<qint64> times; // [ns] when each push was requested
+    QElapsedTimer clock;
+    clock.start();
+    bool overlapped = false;
+    bool inFlight = false;
+    double lastPushed = 0;
+    connect(&editor, &ParameterEditor::pushRequested, &editor, [&](const DeviceParams &p) {
+        overlapped = overlapped || inFlight;
+        inFlight = true;
+        lastPushed = p.K_max;
+        times << clock.nsecsElapsed();
+        // The device answers at once (on the next event loop turn).
+        QTimer::singleShot(0, &editor, [&] {
+            inFlight = false;
+            editor.pushFinished(ok());
+        });
+    });
+
+    // Drag for a bounded time, editing on every event loop turn.
+    double value = 0.4;
+    int edits = 0;
+    while (clock.elapsed() < 8 * interval) {
+        value += 1e-4;
+        spin(editor, u"K_max"_s)->setValue(value);
+        ++edits;
+        QCoreApplication::processEvents();
+    }
+    // The last value is always sent, once the interval allows it.
+    QTRY_COMPARE(lastPushed, value);
+    QTRY_VERIFY(!inFlight);
+    QVERIFY(!overlapped);
+    QVERIFY(times.size() >= 2);
+    QVERIFY2(times.size() < edits, "live push must not send every edit");
+    for (int i = 1; i < times.size(); ++i) {
+        const qint64 gapMs = (times[i] - times[i - 1]) / 1000000;
+        QVERIFY2(gapMs >= interval - 1, qPrintable(u"gap %1 ms"_s.arg(gapMs)));
+    }
+}
+
+void TestParameterEditor::derivedFiguresWarn_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<bool>("saturates");
+    QTest::addColumn<bool>("rings");
+
+    QTest::newRow("defaults: neither") << u"K_max"_s << 0.4 << false << false;
+    QTest::newRow("stiff notch saturates") << u"K_max"_s << 5.0 << true << true;
+    QTest::newRow("little damping rings") << u"M_adm"_s << 1e-3 << false << true;
+    QTest::newRow("heavy damping neither") << u"M_adm"_s << 0.1 << false << false;
+}
+
+void TestParameterEditor::derivedFiguresWarn()
+{
+    QFETCH(QString, key);
+    QFETCH(double, value);
+    QFETCH(bool, saturates);
+    QFETCH(bool, rings);
+
+    ParameterEditor editor;
+    spin(editor, key)->setValue(value);
+    const DerivedFigures expected = deriveFigures(editor.params(), editor.hostParams());
+    const DerivedFigures &shown = editor.derivedFiguresView()->figures();
+    QCOMPARE(shown.omega_n, expected.omega_n);
+    QCOMPARE(shown.zeta, expected.zeta);
+    QCOMPARE(shown.timeConstant, expected.timeConstant);
+    QCOMPARE(shown.peakTauRec, expected.peakTauRec);
+    QCOMPARE(expected.saturates(), saturates);
+    QCOMPARE(expected.rings(), rings);
+    QCOMPARE(editor.derivedFiguresView()->isShowingSaturation(), saturates);
+    QCOMPARE(editor.derivedFiguresView()->isShowingRinging(), rings);
+    if (rings)
+        QVERIFY(editor.derivedFiguresView()->warningText().contains(u"ζ"_s));
+}
+
+void TestParameterEditor::degreesChangeOnlyTheDisplay()
+{
+    ParameterEditor editor;
+    DeviceParams d;
+    d.theta0 = 0.5;
+    editor.setParams(d, HostParams{}, u"set"_s);
+    editor.setAngleInDegrees(true);
+    QCOMPARE(editor.params().theta0, 0.5); // data stays SI, untouched
+    QVERIFY(std::abs(spin(editor, u"theta0"_s)->value() - 0.5 * 180 / std::numbers::pi) < 1e-9);
+    QCOMPARE(label(editor, u"unit_theta0"_s)->text(), u"°"_s);
+    QCOMPARE(label(editor, u"unit_K_max"_s)->text(), u"N·m/rad"_s); // not an angle
+
+    spin(editor, u"theta0"_s)->setValue(90.0);
+    QVERIFY(std::abs(editor.params().theta0 - std::numbers::pi / 2) < 1e-12);
+    editor.setAngleInDegrees(false);
+    QVERIFY(std::abs(spin(editor, u"theta0"_s)->value() - std::numbers::pi / 2) < 1e-12);
+    QCOMPARE(label(editor, u"unit_theta0"_s)->text(), u"rad"_s);
+}
+
+void TestParameterEditor::hostFieldsEdit()
+{
+    ParameterEditor editor;
+    QSignalSpy host(&editor, &ParameterEditor::hostParamsChanged);
+    auto *mode = editor.findChild<QComboBox *>(u"combo_mode"_s);
+    mode->setCurrentIndex(mode->findData(int(ReferenceMode::Rotation)));
+    QCOMPARE(host.count(), 1);
+    QCOMPARE(host.at(0).at(0).value<HostParams>().mode, ReferenceMode::Rotation);
+    QCOMPARE(label(editor, u"unit_v_max"_s)->text(), u"rad/s"_s);
+    spin(editor, u"v_max"_s)->setValue(2.5);
+    QCOMPARE(editor.hostParams().v_max, 2.5);
+    QCOMPARE(editor.undoStack()->count(), 2);
+    editor.undoStack()->undo();
+    editor.undoStack()->undo();
+    QCOMPARE(editor.hostParams(), HostParams{});
+    QCOMPARE(label(editor, u"unit_v_max"_s)->text(), u"m/s"_s);
+}
+
+void TestParameterEditor::tauLimitFromDevice()
+{
+    ParameterEditor editor;
+    editor.setTauLimit(HostParams{}.tau_limit);
+    QCOMPARE(editor.undoStack()->count(), 0); // same value: no edit
+    editor.setTauLimit(0.3);
+    QCOMPARE(editor.hostParams().tau_limit, 0.3);
+    QCOMPARE(editor.derivedFiguresView()->figures().tauLimit, 0.3);
+    QCOMPARE(editor.undoStack()->count(), 1);
+}
+
+void TestParameterEditor::relativeStepsForSmallValues()
+{
+    ParameterEditor editor;
+    ScientificSpinBox *box = spin(editor, u"D_adm"_s);
+    box->stepBy(1);
+    QCOMPARE(editor.params().D_adm, 1.1e-4);
+    box->stepBy(-2);
+    QCOMPARE(editor.params().D_adm, 9.9e-5);
+    QCOMPARE(box->text(), u"9.9e-05"_s);
+}
+
+QTEST_MAIN(TestParameterEditor)
+#include "tst_parametereditor.moc"

@@ -1,0 +1,176 @@
+#include "editor/derivedfiguresview.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace hatpic {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+QString num(double v, int digits = 3)
+{
+    if (std::isinf(v))
+        return QStringLiteral("∞");
+    return QString::number(v, 'g', digits);
+}
+
+QLabel *valueLabel(QWidget *parent, const QString &name, const QString &tip)
+{
+    auto *label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    label->setToolTip(tip);
+    return label;
+}
+
+QLabel *warningLabel(QWidget *parent, const QString &name)
+{
+    auto *label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    label->setStyleSheet(
+        QStringLiteral("QLabel { background: #fff3e0; color: #8a4b00; border: 1px solid #f57c00;"
+                       " border-radius: 4px; padding: 4px; }"));
+    label->hide();
+    return label;
+}
+
+} // namespace
+
+DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
+{
+    auto *form = new QFormLayout;
+    form->setLabelAlignment(Qt::AlignRight);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+
+    m_omega = valueLabel(this, u"figure_omega_n"_s,
+                         tr("Natural frequency √(K_max / D_adm) of the admittance filter with the "
+                            "notch stiffness: how fast the knob springs back."));
+    m_zeta = valueLabel(this, u"figure_zeta"_s,
+                        tr("Damping ratio M_adm / (2·√(K_max·D_adm)). Below 0.3 the knob "
+                           "overshoots and rings when released."));
+    m_timeConstant = valueLabel(this, u"figure_time_constant"_s,
+                                tr("Time constant D_adm / M_adm of the admittance filter: how "
+                                   "quickly the knob's velocity follows a torque."));
+    m_peak = valueLabel(this, u"figure_peak_tau"_s,
+                        tr("Largest |τ_rec| over |θ−θ0| ≤ π/2, compared with the actuator's "
+                           "torque limit tau_limit."));
+    m_peakBar = new QProgressBar(this);
+    m_peakBar->setObjectName(u"figure_peak_bar"_s);
+    m_peakBar->setRange(0, 100);
+    m_peakBar->setTextVisible(true);
+    m_peakBar->setMaximumHeight(14);
+    m_peakBar->setToolTip(m_peak->toolTip());
+
+    form->addRow(tr("natural frequency ω_n"), m_omega);
+    form->addRow(tr("damping ratio ζ"), m_zeta);
+    form->addRow(tr("time constant D_adm/M_adm"), m_timeConstant);
+    form->addRow(tr("peak |τ_rec|"), m_peak);
+    form->addRow(QString(), m_peakBar);
+
+    m_saturation = warningLabel(this, u"warning_saturation"_s);
+    m_ringing = warningLabel(this, u"warning_ringing"_s);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(form);
+    layout->addWidget(m_saturation);
+    layout->addWidget(m_ringing);
+    refresh();
+}
+
+void DerivedFiguresView::setFigures(const DerivedFigures &figures, bool valid)
+{
+    m_figures = figures;
+    m_valid = valid;
+    refresh();
+}
+
+void DerivedFiguresView::setAngleInDegrees(bool degrees)
+{
+    m_degrees = degrees;
+    refresh();
+}
+
+bool DerivedFiguresView::isShowingSaturation() const
+{
+    return !m_saturation->isHidden();
+}
+
+bool DerivedFiguresView::isShowingRinging() const
+{
+    return !m_ringing->isHidden();
+}
+
+QString DerivedFiguresView::warningText() const
+{
+    QStringList lines;
+    if (isShowingSaturation())
+        lines << m_saturation->text();
+    if (isShowingRinging())
+        lines << m_ringing->text();
+    return lines.join(u'\n');
+}
+
+void DerivedFiguresView::refresh()
+{
+    const DerivedFigures &f = m_figures;
+    if (!m_valid) {
+        const QString dash = QStringLiteral("—");
+        m_omega->setText(dash);
+        m_zeta->setText(dash);
+        m_timeConstant->setText(dash);
+        m_peak->setText(tr("— (parameters invalid)"));
+        m_peakBar->setValue(0);
+        m_peakBar->setFormat(QString());
+        m_saturation->hide();
+        m_ringing->hide();
+        return;
+    }
+
+    m_omega->setText(
+        tr("%1 rad/s  (%2 Hz)").arg(num(f.omega_n), num(f.omega_n / (2.0 * std::numbers::pi))));
+    const QString zeta = num(f.zeta);
+    m_zeta->setText(f.rings() ? tr("<span style=\"color:#d32f2f\"><b>%1</b></span>"
+                                   "&nbsp;&nbsp;(&lt; %2: rings)")
+                                    .arg(zeta, num(DerivedFigures::kRingingZeta))
+                              : zeta);
+    m_timeConstant->setText(f.timeConstant < 1.0 ? tr("%1 ms").arg(num(f.timeConstant * 1e3))
+                                                 : tr("%1 s").arg(num(f.timeConstant)));
+
+    const QString angle = m_degrees ? tr("%1°").arg(num(f.peakAngle * 180.0 / std::numbers::pi))
+                                    : tr("%1 rad").arg(num(f.peakAngle));
+    m_peak->setText(tr("%1 N·m at |θ−θ0| = %2   (limit %3 N·m)")
+                        .arg(num(f.peakTauRec), angle, num(f.tauLimit)));
+    const double ratio = f.tauLimit > 0 ? f.peakTauRec / f.tauLimit : 0.0;
+    m_peakBar->setValue(static_cast<int>(std::lround(std::clamp(ratio, 0.0, 1.0) * 100)));
+    m_peakBar->setFormat(tr("%1 % of tau_limit").arg(std::lround(ratio * 100)));
+    m_peakBar->setStyleSheet(f.saturates()
+                                 ? QStringLiteral("QProgressBar::chunk { background: #d32f2f; }")
+                                 : QStringLiteral("QProgressBar::chunk { background: #43a047; }"));
+
+    m_saturation->setVisible(f.saturates());
+    if (f.saturates()) {
+        m_saturation->setText(tr("⚠ Saturates: the re-centering torque reaches %1 N·m, above the "
+                                 "actuator limit of %2 N·m. The device will clip it, so the "
+                                 "curve you tune is not what the hand feels there.")
+                                  .arg(num(f.peakTauRec), num(f.tauLimit)));
+    }
+    m_ringing->setVisible(f.rings());
+    if (f.rings()) {
+        m_ringing->setText(tr("⚠ Rings: ζ = %1 is below %2, so the knob will overshoot and "
+                              "oscillate around center when released. Raise M_adm (damping), or "
+                              "lower D_adm (inertia) or K_max.")
+                               .arg(num(f.zeta), num(DerivedFigures::kRingingZeta)));
+    }
+}
+
+} // namespace hatpic

@@ -1,0 +1,44 @@
+// Figures that follow from the edited parameters (model.md § 3): ω_n, ζ, time constant and
+// the peak re-centering torque against the actuator limit, with saturation/ringing warnings.
+#pragma once
+
+#include "model/derived.h"
+
+#include <QWidget>
+
+class QLabel;
+class QProgressBar;
+
+namespace hatpic {
+
+class DerivedFiguresView : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit DerivedFiguresView(QWidget *parent = nullptr);
+
+    //! Shows the figures; `valid` false shows dashes (figures of an invalid set mean nothing).
+    void setFigures(const DerivedFigures &figures, bool valid);
+    void setAngleInDegrees(bool degrees);
+
+    const DerivedFigures &figures() const { return m_figures; }
+    bool isShowingSaturation() const; //!< the saturation warning is visible
+    bool isShowingRinging() const;    //!< the ringing warning is visible
+    QString warningText() const;      //!< all warnings shown, one per line
+
+private:
+    void refresh();
+
+    DerivedFigures m_figures;
+    bool m_valid = false;
+    bool m_degrees = false;
+    QLabel *m_omega = nullptr;
+    QLabel *m_zeta = nullptr;
+    QLabel *m_timeConstant = nullptr;
+    QLabel *m_peak = nullptr;
+    QProgressBar *m_peakBar = nullptr;
+    QLabel *m_saturation = nullptr;
+    QLabel *m_ringing = nullptr;
+};
+
+} // namespace hatpic

@@ -1,0 +1,528 @@
+#include "editor/parametereditor.h"
+
+#include "editor/derivedfiguresview.h"
+#include "editor/parametereditcommand.h"
+#include "editor/parameterfield.h"
+#include "editor/parameterspecs.h"
+#include "editor/scientificspinbox.h"
+#include "editor/undobutton.h"
+#include "model/derived.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QTimer>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <charconv>
+
+namespace hatpic {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// A float32 read-back as the shortest decimal that gives the same float (0.4f → 0.4, not
+// 0.4000000059604645), so reverting to device values does not litter profiles with noise.
+double tidyFloat(double value)
+{
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, static_cast<float>(value)).ptr;
+    double out = value;
+    std::from_chars(buffer, end, out);
+    return out;
+}
+
+QToolButton *actionButton(QAction *action, QWidget *parent)
+{
+    auto *button = new QToolButton(parent);
+    button->setDefaultAction(action);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    return button;
+}
+
+} // namespace
+
+ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
+{
+    m_undo = new QUndoStack(this);
+    m_liveTimer = new QTimer(this);
+    m_liveTimer->setSingleShot(true);
+    connect(m_liveTimer, &QTimer::timeout, this, &ParameterEditor::scheduleLivePush);
+
+    m_pushAction = new QAction(tr("Push"), this);
+    m_pushAction->setObjectName(u"action_push"_s);
+    m_pushAction->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::Key_Return), QKeySequence(Qt::CTRL | Qt::Key_Enter)});
+    m_pushAction->setToolTip(tr("Send the edited parameters to the device (Ctrl+Return)"));
+    connect(m_pushAction, &QAction::triggered, this, [this] {
+        if (m_valid && m_sync.canPush() && !m_sync.isPushing()) {
+            m_livePending = false;
+            startPush();
+        }
+    });
+    m_readAction = new QAction(tr("Read"), this);
+    m_readAction->setObjectName(u"action_read"_s);
+    m_readAction->setToolTip(tr("Read from device: ask the device for its current parameters"));
+    connect(m_readAction, &QAction::triggered, this, &ParameterEditor::readRequested);
+    m_revertAction = new QAction(tr("Revert"), this);
+    m_revertAction->setObjectName(u"action_revert"_s);
+    m_revertAction->setToolTip(tr("Revert to device values (undoable)"));
+    connect(m_revertAction, &QAction::triggered, this, [this] {
+        if (!m_sync.device())
+            return;
+        DeviceParams d;
+        for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+            d.setField(i, tidyFloat(m_sync.device()->field(i)));
+        setParams(d, m_host, tr("Revert to device values"));
+    });
+    m_undoAction = m_undo->createUndoAction(this, tr("Undo"));
+    m_redoAction = m_undo->createRedoAction(this, tr("Redo"));
+    addAction(m_pushAction);
+
+    buildUi();
+    applyParams(DeviceParams{}, HostParams{});
+    m_undo->clear();
+    refreshSync();
+    refreshActions();
+}
+
+ParameterEditor::~ParameterEditor() = default;
+
+void ParameterEditor::buildUi()
+{
+    auto *content = new QWidget;
+    auto *column = new QVBoxLayout(content);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(10);
+    column->addWidget(buildDeviceGroups());
+    column->addWidget(buildHostGroup());
+    auto *derivedBox = new QGroupBox(tr("Derived figures (K = K_max)"), content);
+    auto *derivedLayout = new QVBoxLayout(derivedBox);
+    m_derived = new DerivedFiguresView(derivedBox);
+    derivedLayout->addWidget(m_derived);
+    column->addWidget(derivedBox);
+    column->addStretch(1);
+
+    // One column width for names and units across the groups, so the spin boxes line up.
+    ParameterField::alignColumns(m_fields.values(),
+                                 content->findChildren<QLabel *>(u"label_mode"_s));
+
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 6, 6, 6);
+    layout->setSpacing(8);
+    layout->addWidget(buildSyncBar());
+    layout->addWidget(scroll, 1);
+}
+
+QWidget *ParameterEditor::buildSyncBar()
+{
+    auto *bar = new QWidget(this);
+    auto *grid = new QGridLayout(bar);
+    grid->setContentsMargins(0, 0, 0, 0);
+
+    m_syncLabel = new QLabel(bar);
+    m_syncLabel->setObjectName(u"sync_state"_s);
+    m_syncLabel->setWordWrap(true);
+    m_syncLabel->setToolTip(tr("Whether the device renders what the editor shows"));
+    grid->addWidget(m_syncLabel, 0, 0);
+
+    auto *buttons = new QHBoxLayout;
+    buttons->setSpacing(4);
+    buttons->addWidget(new UndoButton(m_undo, UndoButton::Direction::Undo, bar));
+    buttons->addWidget(new UndoButton(m_undo, UndoButton::Direction::Redo, bar));
+    buttons->addSpacing(8);
+    buttons->addWidget(actionButton(m_readAction, bar));
+    buttons->addWidget(actionButton(m_revertAction, bar));
+    auto *push = actionButton(m_pushAction, bar);
+    push->setObjectName(u"button_push"_s);
+    push->setStyleSheet(QStringLiteral("QToolButton:enabled { font-weight: bold; }"));
+    buttons->addWidget(push);
+    grid->addLayout(buttons, 0, 1, Qt::AlignRight);
+
+    auto *options = new QHBoxLayout;
+    m_liveCheck = new QCheckBox(tr("Live push while editing"), bar);
+    m_liveCheck->setObjectName(u"check_live_push"_s);
+    m_liveCheck->setToolTip(tr("Push every change as you drag or type (at most 10 pushes per "
+                               "second, one at a time; the last value is always sent)"));
+    connect(m_liveCheck, &QCheckBox::toggled, this, &ParameterEditor::setLivePush);
+    m_degreesCheck = new QCheckBox(tr("Angles in degrees"), bar);
+    m_degreesCheck->setObjectName(u"check_degrees"_s);
+    m_degreesCheck->setToolTip(tr("Show θ0, N and Q_dz in degrees; files and the device stay "
+                                  "in radians"));
+    connect(m_degreesCheck, &QCheckBox::toggled, this, &ParameterEditor::setAngleInDegrees);
+    options->addWidget(m_liveCheck);
+    options->addWidget(m_degreesCheck);
+    options->addStretch(1);
+    grid->addLayout(options, 1, 0, 1, 2);
+    grid->setColumnStretch(0, 1);
+    return bar;
+}
+
+QWidget *ParameterEditor::buildDeviceGroups()
+{
+    auto *box = new QWidget;
+    auto *column = new QVBoxLayout(box);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(10);
+
+    const QList<ParameterField::Spec> specs = deviceFieldSpecs();
+    const struct
+    {
+        QString title;
+        int first;
+        int last;
+    } groups[] = {{tr("Admittance filter — device"), 0, 1},
+                  {tr("Re-centering stiffness — device"), 2, 6}};
+    for (const auto &g : groups) {
+        auto *group = new QGroupBox(g.title, box);
+        auto *grid = new QGridLayout(group);
+        grid->setHorizontalSpacing(8);
+        grid->setVerticalSpacing(2);
+        grid->setColumnStretch(4, 1);
+        for (int i = g.first; i <= g.last; ++i) {
+            auto *field = new ParameterField(specs[i], group, this);
+            field->addToGrid(grid, 2 * (i - g.first));
+            m_fields.insert(specs[i].key, field);
+            const QString key = specs[i].key;
+            connect(field, &ParameterField::edited, this,
+                    [this, key](double v) { onFieldEdited(key, v); });
+            connect(field, &ParameterField::editFinished, this, [this] { ++m_gesture; });
+        }
+        column->addWidget(group);
+    }
+    return box;
+}
+
+QWidget *ParameterEditor::buildHostGroup()
+{
+    auto *group = new QGroupBox(tr("Reference model — host only, not sent to the device"));
+    auto *grid = new QGridLayout(group);
+    grid->setHorizontalSpacing(8);
+    grid->setVerticalSpacing(2);
+    grid->setColumnStretch(4, 1);
+
+    auto *modeLabel = new QLabel(tr("<b>mode</b>&nbsp;&nbsp;<span style=\"color:gray\">unit "
+                                    "family of v_ref, p_ref</span>"),
+                                 group);
+    modeLabel->setObjectName(u"label_mode"_s);
+    m_mode = new QComboBox(group);
+    m_mode->setObjectName(u"combo_mode"_s);
+    m_mode->addItem(tr("translation (m, m/s)"), int(ReferenceMode::Translation));
+    m_mode->addItem(tr("rotation (rad, rad/s)"), int(ReferenceMode::Rotation));
+    m_mode->setToolTip(tr("Translation: v_ref in m/s and p_ref in m; rotation: ω_ref in rad/s "
+                          "and yaw_ref in rad"));
+    modeLabel->setBuddy(m_mode);
+    grid->addWidget(modeLabel, 0, 1);
+    grid->addWidget(m_mode, 0, 2, 1, 3, Qt::AlignLeft);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, [this](int index) {
+        HostParams h = m_host;
+        h.mode = static_cast<ReferenceMode>(m_mode->itemData(index).toInt());
+        pushEdit(m_params, h, tr("Change mode"), u"mode"_s);
+        ++m_gesture;
+    });
+
+    const ParameterField::Spec specs[] = {vMaxSpec(), tauLimitSpec()};
+    int row = 1;
+    for (const auto &spec : specs) {
+        auto *field = new ParameterField(spec, group, this);
+        field->addToGrid(grid, row);
+        row += 2;
+        m_fields.insert(spec.key, field);
+        const QString key = spec.key;
+        connect(field, &ParameterField::edited, this,
+                [this, key](double v) { onFieldEdited(key, v); });
+        connect(field, &ParameterField::editFinished, this, [this] { ++m_gesture; });
+    }
+
+    m_refDeadzone =
+        new QCheckBox(tr("Hold v_ref at 0 inside the dead zone (|θ−θ0| < Q_dz)"), group);
+    m_refDeadzone->setObjectName(u"check_ref_deadzone"_s);
+    m_refDeadzone->setToolTip(tr("ref_deadzone: the robot does not drift while the stick rests"));
+    grid->addWidget(m_refDeadzone, row, 1, 1, 4);
+    connect(m_refDeadzone, &QCheckBox::toggled, this, [this](bool on) {
+        HostParams h = m_host;
+        h.ref_deadzone = on;
+        pushEdit(m_params, h, tr("Change dead-zone hold"), u"ref_deadzone"_s);
+        ++m_gesture;
+    });
+    return group;
+}
+
+void ParameterEditor::onFieldEdited(const QString &key, double value)
+{
+    DeviceParams d = m_params;
+    HostParams h = m_host;
+    const int index = deviceFieldIndex(key.toStdString());
+    if (index >= 0)
+        d.setField(index, value);
+    else if (key == u"v_max")
+        h.v_max = value;
+    else if (key == u"tau_limit")
+        h.tau_limit = value;
+    pushEdit(d, h, tr("Change %1 to %2").arg(key, QString::number(value, 'g', 6)), key);
+}
+
+void ParameterEditor::pushEdit(const DeviceParams &device, const HostParams &host,
+                               const QString &text, const QString &field)
+{
+    if (device == m_params && host == m_host)
+        return;
+    m_undo->push(
+        new ParameterEditCommand(this, m_params, m_host, device, host, text, field, m_gesture));
+}
+
+void ParameterEditor::setParams(const DeviceParams &device, const HostParams &host,
+                                const QString &undoText)
+{
+    ++m_gesture;
+    pushEdit(device, host, undoText, QString());
+    ++m_gesture;
+}
+
+void ParameterEditor::applyParams(const DeviceParams &device, const HostParams &host)
+{
+    const bool deviceChanged = device != m_params;
+    const bool hostChanged = host != m_host;
+    m_params = device;
+    m_host = host;
+
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        ParameterField *f = m_fields.value(QString::fromLatin1(deviceFieldName(i)));
+        if (f->value() != device.field(i))
+            f->setValue(device.field(i));
+    }
+    if (m_fields.value(u"v_max"_s)->value() != host.v_max)
+        m_fields.value(u"v_max"_s)->setValue(host.v_max);
+    if (m_fields.value(u"tau_limit"_s)->value() != host.tau_limit)
+        m_fields.value(u"tau_limit"_s)->setValue(host.tau_limit);
+    m_fields.value(u"v_max"_s)
+        ->setUnit(host.mode == ReferenceMode::Rotation ? u"rad/s"_s : u"m/s"_s);
+    {
+        const QSignalBlocker b1(m_mode);
+        const QSignalBlocker b2(m_refDeadzone);
+        m_mode->setCurrentIndex(m_mode->findData(int(host.mode)));
+        m_refDeadzone->setChecked(host.ref_deadzone);
+    }
+
+    if (deviceChanged || hostChanged)
+        m_sync.edited();
+    revalidate();
+    refreshDiff();
+    refreshDerived();
+    refreshSync();
+    refreshActions();
+    if (hostChanged)
+        Q_EMIT hostParamsChanged(m_host);
+    if (deviceChanged || hostChanged)
+        Q_EMIT paramsEdited();
+    if (deviceChanged && m_livePush) {
+        m_livePending = true;
+        scheduleLivePush();
+    }
+}
+
+void ParameterEditor::setDeviceParams(const DeviceParams &device)
+{
+    m_sync.setDevice(device);
+    refreshDiff();
+    refreshSync();
+    refreshActions();
+}
+
+void ParameterEditor::clearDeviceParams()
+{
+    m_sync.setDevice(std::nullopt);
+    revalidate();
+    refreshDiff();
+    refreshSync();
+    refreshActions();
+}
+
+void ParameterEditor::setCanPush(bool deviceAcceptsParams, const QString &reason)
+{
+    m_sync.setCanPush(deviceAcceptsParams, reason);
+    if (!deviceAcceptsParams) {
+        m_livePending = false;
+        m_liveTimer->stop();
+    }
+    refreshSync();
+    refreshActions();
+}
+
+void ParameterEditor::setTauLimit(double tauLimit)
+{
+    if (tauLimit == m_host.tau_limit)
+        return;
+    HostParams h = m_host;
+    h.tau_limit = tauLimit;
+    setParams(m_params, h,
+              tr("Use the device's torque limit (%1 N·m)").arg(QString::number(tauLimit, 'g', 6)));
+}
+
+void ParameterEditor::pushFinished(const CommandResult &result)
+{
+    if (!m_sync.pushFinished(result))
+        return;   // a late answer after a disconnect
+    revalidate(); // shows or clears the field the device named
+    refreshSync();
+    refreshActions();
+    scheduleLivePush();
+}
+
+void ParameterEditor::startPush()
+{
+    m_sync.pushStarted(m_params);
+    m_sinceLastPush.start();
+    revalidate();
+    refreshSync();
+    refreshActions();
+    Q_EMIT pushRequested(m_params);
+}
+
+void ParameterEditor::scheduleLivePush()
+{
+    if (!m_livePush || !m_livePending || !m_valid || !m_sync.canPush() || m_sync.isPushing())
+        return; // retried on the next edit or when the push in flight finishes
+    if (m_sinceLastPush.isValid() && m_sinceLastPush.elapsed() < m_liveInterval) {
+        if (!m_liveTimer->isActive())
+            m_liveTimer->start(int(m_liveInterval - m_sinceLastPush.elapsed()));
+        return;
+    }
+    m_livePending = false;
+    startPush();
+}
+
+void ParameterEditor::setLivePush(bool enabled)
+{
+    m_livePush = enabled;
+    const QSignalBlocker block(m_liveCheck);
+    m_liveCheck->setChecked(enabled);
+    if (!enabled) {
+        m_livePending = false;
+        m_liveTimer->stop();
+    }
+}
+
+void ParameterEditor::setLivePushInterval(int milliseconds)
+{
+    m_liveInterval = std::max(0, milliseconds);
+}
+
+void ParameterEditor::setAngleInDegrees(bool degrees)
+{
+    if (degrees == m_degrees)
+        return;
+    m_degrees = degrees;
+    {
+        const QSignalBlocker block(m_degreesCheck);
+        m_degreesCheck->setChecked(degrees);
+    }
+    for (ParameterField *f : std::as_const(m_fields))
+        f->setAngleInDegrees(degrees);
+    m_derived->setAngleInDegrees(degrees);
+    Q_EMIT angleInDegreesChanged(degrees);
+}
+
+void ParameterEditor::revalidate()
+{
+    QHash<QString, QStringList> perField;
+    QStringList all;
+    std::vector<Violation> violations = validate(m_params);
+    for (Violation &v : validate(m_host))
+        violations.push_back(std::move(v));
+    for (const Violation &v : violations) {
+        const QString text = QString::fromStdString(v.message());
+        perField[QString::fromStdString(v.field)] << text;
+        all << text;
+    }
+    const QString rejected = QString::fromLatin1(deviceFieldName(m_sync.rejectedField()));
+    if (!rejected.isEmpty() && !perField.contains(rejected))
+        perField[rejected] << tr("%1: the device refused this value").arg(rejected);
+    for (auto it = m_fields.cbegin(); it != m_fields.cend(); ++it)
+        it.value()->setProblem(perField.value(it.key()).join(u'\n'));
+
+    m_problems = all;
+    const bool valid = all.isEmpty();
+    if (valid != m_valid) {
+        m_valid = valid;
+        Q_EMIT validityChanged(valid);
+    }
+}
+
+void ParameterEditor::refreshDiff()
+{
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        ParameterField *f = m_fields.value(QString::fromLatin1(deviceFieldName(i)));
+        const auto &device = m_sync.device();
+        f->setDeviceValue(device ? std::optional<double>(device->field(i)) : std::nullopt);
+    }
+}
+
+void ParameterEditor::refreshDerived()
+{
+    m_derived->setFigures(deriveFigures(m_params, m_host), m_valid);
+}
+
+void ParameterEditor::refreshSync()
+{
+    const SyncState state = m_sync.state(m_params);
+    const QString text = m_sync.text(m_params);
+    QString colour = u"#757575"_s;
+    switch (state) {
+    case SyncState::InSync:
+        colour = u"#2e7d32"_s;
+        break;
+    case SyncState::Edited:
+        colour = u"#ef6c00"_s;
+        break;
+    case SyncState::Pushing:
+    case SyncState::AwaitingReadback:
+        colour = u"#1565c0"_s;
+        break;
+    case SyncState::ReadbackDiffers:
+    case SyncState::Rejected:
+    case SyncState::Timeout:
+    case SyncState::Failed:
+        colour = u"#c62828"_s;
+        break;
+    case SyncState::NotConnected:
+    case SyncState::NotRead:
+        break;
+    }
+    m_syncLabel->setText(u"<span style=\"color:"_s + colour + u"\">●</span> <b>"_s +
+                         text.toHtmlEscaped() + u"</b>"_s);
+
+    if (state != m_syncState || text != m_syncText) {
+        m_syncState = state;
+        m_syncText = text;
+        Q_EMIT syncStateChanged(state, text);
+    }
+}
+
+void ParameterEditor::refreshActions()
+{
+    const bool pushing = m_sync.isPushing();
+    m_pushAction->setEnabled(m_valid && m_sync.canPush() && !pushing);
+    m_pushAction->setToolTip(
+        m_valid ? tr("Send the edited parameters to the device (Ctrl+Return)")
+                : tr("Fix the invalid fields first:\n%1").arg(m_problems.join(u'\n')));
+    m_readAction->setEnabled(m_sync.canPush() && !pushing);
+    const auto &device = m_sync.device();
+    m_revertAction->setEnabled(device && !pushing && !SyncTracker::sameAsFloat(m_params, *device));
+}
+
+} // namespace hatpic

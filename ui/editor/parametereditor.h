@@ -1,0 +1,149 @@
+// The parameter editor: every device and host parameter with its meaning, unit and valid range,
+// whole-set validation at the fields, undo/redo, diff markers against the device, push/read
+// with a visible sync state, optional rate-limited live push, and the derived figures.
+#pragma once
+
+#include "device/sessiontypes.h"
+#include "editor/synctracker.h"
+#include "model/params.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QWidget>
+
+#include <optional>
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QTimer;
+class QUndoStack;
+
+namespace hatpic {
+
+class DerivedFiguresView;
+class ParameterField;
+
+class ParameterEditor : public QWidget
+{
+    Q_OBJECT
+public:
+    using SyncState = hatpic::SyncState;
+
+    static constexpr int kDefaultLivePushIntervalMs = 100; //!< ≤ 10 live pushes per second
+
+    explicit ParameterEditor(QWidget *parent = nullptr);
+    ~ParameterEditor() override;
+
+    DeviceParams params() const { return m_params; }
+    HostParams hostParams() const { return m_host; }
+
+    //! Replaces the whole set as one undo step named `undoText`.
+    void setParams(const DeviceParams &device, const HostParams &host, const QString &undoText);
+    //! Shows a set without touching the undo stack (used by undo commands and A/B switching).
+    void applyParams(const DeviceParams &device, const HostParams &host);
+
+    //! The device's read-back: drives the diff markers and the sync state.
+    void setDeviceParams(const DeviceParams &device);
+    //! Disconnected: no diff markers, no sync state.
+    void clearDeviceParams();
+    std::optional<DeviceParams> deviceParams() const { return m_sync.device(); }
+
+    //! False while disconnected or for a legacy device; `reason` replaces "not connected".
+    void setCanPush(bool deviceAcceptsParams, const QString &reason = {});
+    bool canPush() const { return m_sync.canPush(); }
+    //! The connected device's actuator limit: sets tau_limit as an undoable edit when it differs.
+    void setTauLimit(double tauLimit);
+
+    bool isValid() const { return m_valid; }
+    //! Every violated rule of the edited set ("K_min: must be ≤ K_max (0.4), got 0.9").
+    QStringList problems() const { return m_problems; }
+
+    QUndoStack *undoStack() const { return m_undo; }
+
+    //! The main window forwards the result of DeviceClient::pushParams here.
+    void pushFinished(const hatpic::CommandResult &result);
+
+    QAction *pushAction() const { return m_pushAction; }     //!< Ctrl+Return
+    QAction *readAction() const { return m_readAction; }     //!< "Read from device"
+    QAction *revertAction() const { return m_revertAction; } //!< "Revert to device values"
+    QAction *undoAction() const { return m_undoAction; }     //!< no shortcut of its own
+    QAction *redoAction() const { return m_redoAction; }     //!< no shortcut of its own
+
+    SyncState syncState() const { return m_syncState; }
+    QString syncText() const { return m_syncText; }
+
+    //! Push on every edit while valid, at most one in flight and one per interval; the last
+    //! value is always sent.
+    void setLivePush(bool enabled);
+    bool livePush() const { return m_livePush; }
+    void setLivePushInterval(int milliseconds);
+    int livePushInterval() const { return m_liveInterval; }
+
+    //! Display only: θ0, N and Q_dz in degrees; params() stays in rad.
+    void setAngleInDegrees(bool degrees);
+    bool angleInDegrees() const { return m_degrees; }
+
+    //! The row of a numeric field by model name ("K_max", "v_max", …), or nullptr.
+    ParameterField *field(const QString &key) const { return m_fields.value(key); }
+    DerivedFiguresView *derivedFiguresView() const { return m_derived; }
+
+Q_SIGNALS:
+    void paramsEdited(); //!< the edited set changed (edit, undo/redo, setParams)
+    void hostParamsChanged(const hatpic::HostParams &host);
+    void pushRequested(const hatpic::DeviceParams &params); //!< Push or a live-push tick
+    void readRequested();
+    void validityChanged(bool valid);
+    void syncStateChanged(hatpic::SyncState state, const QString &text);
+    void angleInDegreesChanged(bool degrees);
+
+private:
+    void buildUi();
+    QWidget *buildSyncBar();
+    QWidget *buildDeviceGroups();
+    QWidget *buildHostGroup();
+    void onFieldEdited(const QString &key, double value);
+    void pushEdit(const DeviceParams &device, const HostParams &host, const QString &text,
+                  const QString &field);
+    void startPush();
+    void scheduleLivePush();
+    void revalidate();
+    void refreshDiff();
+    void refreshDerived();
+    void refreshSync();
+    void refreshActions();
+
+    DeviceParams m_params;
+    HostParams m_host;
+    SyncTracker m_sync;
+    bool m_valid = true;
+    QStringList m_problems;
+    SyncState m_syncState = SyncState::NotConnected;
+    QString m_syncText;
+
+    bool m_livePush = false;
+    bool m_livePending = false;
+    int m_liveInterval = kDefaultLivePushIntervalMs;
+    QElapsedTimer m_sinceLastPush;
+    QTimer *m_liveTimer = nullptr;
+
+    bool m_degrees = false;
+    quint64 m_gesture = 0; //!< edits merge into one undo step only within one gesture
+
+    QUndoStack *m_undo = nullptr;
+    QHash<QString, ParameterField *> m_fields;
+    QComboBox *m_mode = nullptr;
+    QCheckBox *m_refDeadzone = nullptr;
+    QCheckBox *m_liveCheck = nullptr;
+    QCheckBox *m_degreesCheck = nullptr;
+    QLabel *m_syncLabel = nullptr;
+    DerivedFiguresView *m_derived = nullptr;
+    QAction *m_pushAction = nullptr;
+    QAction *m_readAction = nullptr;
+    QAction *m_revertAction = nullptr;
+    QAction *m_undoAction = nullptr;
+    QAction *m_redoAction = nullptr;
+};
+
+} // namespace hatpic

@@ -1,0 +1,256 @@
+#include "editor/parameterfield.h"
+
+#include "editor/scientificspinbox.h"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace hatpic {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+
+// Slider positions give values rounded to 4 significant digits, so dragging does not produce
+// 0.12566370614359174-style numbers in profiles.
+double roundSignificant(double value, int digits)
+{
+    return QString::number(value, 'g', digits).toDouble();
+}
+
+const QString kInvalidStyle = QStringLiteral(
+    "QAbstractSpinBox { border: 2px solid #d32f2f; border-radius: 3px; padding: 1px; }");
+
+} // namespace
+
+ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject *parent)
+    : QObject(parent), m_spec(spec)
+{
+    const QString tip = u"<b>"_s + spec.symbol + u"</b> — "_s + spec.meaning + u" ["_s + spec.unit +
+                        u"]<br>"_s + spec.toolTip;
+
+    m_marker = new QLabel(parentWidget);
+    m_marker->setObjectName(u"diff_"_s + spec.key);
+    m_marker->setText(QStringLiteral("●"));
+    m_marker->setStyleSheet(QStringLiteral("color: #f57c00;"));
+    QSizePolicy keep = m_marker->sizePolicy();
+    keep.setRetainSizeWhenHidden(true);
+    m_marker->setSizePolicy(keep);
+    m_marker->hide();
+
+    m_label = new QLabel(parentWidget);
+    m_label->setObjectName(u"label_"_s + spec.key);
+    m_label->setText(u"<b>"_s + spec.symbol + u"</b>&nbsp;&nbsp;<span style=\"color:gray\">"_s +
+                     spec.meaning + u"</span>"_s);
+    m_label->setToolTip(tip);
+
+    m_spin = new ScientificSpinBox(parentWidget);
+    m_spin->setObjectName(u"spin_"_s + spec.key);
+    m_spin->setStepMode(spec.relativeStep ? ScientificSpinBox::StepMode::Relative
+                                          : ScientificSpinBox::StepMode::Fixed);
+    m_spin->setMinimumWidth(m_spin->fontMetrics().horizontalAdvance(u"-0.0000000"_s) + 30);
+    m_spin->setToolTip(tip);
+    m_label->setBuddy(m_spin);
+
+    m_unit = new QLabel(spec.unit, parentWidget);
+    m_unit->setObjectName(u"unit_"_s + spec.key);
+
+    m_slider = new QSlider(Qt::Horizontal, parentWidget);
+    m_slider->setObjectName(u"slider_"_s + spec.key);
+    m_slider->setRange(0, kSliderTicks);
+    m_slider->setMinimumWidth(120);
+    m_slider->setToolTip(tip);
+
+    m_message = new QLabel(parentWidget);
+    m_message->setObjectName(u"error_"_s + spec.key);
+    m_message->setStyleSheet(QStringLiteral("color: #d32f2f;"));
+    m_message->setWordWrap(true);
+    m_message->hide();
+
+    updateSpinRange();
+    setValue(spec.minimum);
+
+    connect(m_spin, &QDoubleSpinBox::valueChanged, this, [this](double shown) {
+        const double v = shown / displayScale();
+        if (v == m_value)
+            return;
+        m_value = v;
+        updateSlider();
+        updateMarker();
+        Q_EMIT edited(v);
+    });
+    connect(m_spin, &QAbstractSpinBox::editingFinished, this, &ParameterField::editFinished);
+    connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
+        const double v = sliderToValue(position);
+        if (v == m_value)
+            return;
+        m_value = v;
+        {
+            const QSignalBlocker block(m_spin);
+            m_spin->setValue(v * displayScale());
+        }
+        updateMarker();
+        Q_EMIT edited(v);
+    });
+    connect(m_slider, &QSlider::sliderReleased, this, &ParameterField::editFinished);
+}
+
+void ParameterField::alignColumns(const QList<ParameterField *> &fields,
+                                  const QList<QLabel *> &extraNames)
+{
+    QList<QLabel *> names = extraNames;
+    QList<QLabel *> units;
+    for (const ParameterField *f : fields) {
+        names << f->m_label;
+        units << f->m_unit;
+    }
+    for (const QList<QLabel *> &column : {names, units}) {
+        int width = 0;
+        for (const QLabel *l : column)
+            width = std::max(width, l->sizeHint().width());
+        for (QLabel *l : column)
+            l->setMinimumWidth(width);
+    }
+}
+
+void ParameterField::addToGrid(QGridLayout *grid, int row)
+{
+    grid->addWidget(m_marker, row, 0);
+    grid->addWidget(m_label, row, 1);
+    grid->addWidget(m_spin, row, 2);
+    grid->addWidget(m_unit, row, 3);
+    grid->addWidget(m_slider, row, 4);
+    grid->addWidget(m_message, row + 1, 1, 1, 4);
+}
+
+double ParameterField::displayScale() const
+{
+    return m_spec.angle && m_degrees ? kDegreesPerRadian : 1.0;
+}
+
+double ParameterField::sliderToValue(int position) const
+{
+    const double t = static_cast<double>(position) / kSliderTicks;
+    if (m_spec.logSlider) {
+        const double lo = std::log10(m_spec.sliderMin);
+        const double hi = std::log10(m_spec.sliderMax);
+        return roundSignificant(std::pow(10.0, lo + t * (hi - lo)), 3);
+    }
+    const double v = m_spec.sliderMin + t * (m_spec.sliderMax - m_spec.sliderMin);
+    // Values next to zero would otherwise show as 1e-17-style noise.
+    const double resolution = (m_spec.sliderMax - m_spec.sliderMin) / kSliderTicks;
+    return std::abs(v) < resolution / 2 ? 0.0 : roundSignificant(v, 4);
+}
+
+int ParameterField::valueToSlider(double value) const
+{
+    double t = 0;
+    if (m_spec.logSlider) {
+        const double lo = std::log10(m_spec.sliderMin);
+        const double hi = std::log10(m_spec.sliderMax);
+        t = value > 0 ? (std::log10(value) - lo) / (hi - lo) : 0.0;
+    } else {
+        t = (value - m_spec.sliderMin) / (m_spec.sliderMax - m_spec.sliderMin);
+    }
+    if (!std::isfinite(t))
+        t = 0;
+    return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * kSliderTicks));
+}
+
+void ParameterField::setValue(double value)
+{
+    m_value = value;
+    {
+        const QSignalBlocker block(m_spin);
+        m_spin->setValue(value * displayScale());
+    }
+    updateSlider();
+    updateMarker();
+}
+
+void ParameterField::updateSlider()
+{
+    // While the user drags, the handle already stands for this value: leave it alone so the
+    // rounding of the slider mapping cannot make it jitter.
+    if (sliderToValue(m_slider->value()) == m_value)
+        return;
+    const QSignalBlocker block(m_slider);
+    m_slider->setValue(valueToSlider(m_value));
+}
+
+void ParameterField::updateSpinRange()
+{
+    const double scale = displayScale();
+    const QSignalBlocker block(m_spin);
+    m_spin->setRange(m_spec.minimum * scale, m_spec.maximum * scale);
+    m_spin->setSingleStep(m_spec.step * scale);
+    m_spin->setValue(m_value * scale);
+}
+
+void ParameterField::setAngleInDegrees(bool degrees)
+{
+    if (!m_spec.angle || degrees == m_degrees)
+        return;
+    m_degrees = degrees;
+    m_unit->setText(degrees ? QStringLiteral("°") : m_spec.unit);
+    updateSpinRange();
+    updateMarker();
+}
+
+void ParameterField::setUnit(const QString &unit)
+{
+    m_spec.unit = unit;
+    if (!(m_spec.angle && m_degrees))
+        m_unit->setText(unit);
+}
+
+void ParameterField::setProblem(const QString &problem)
+{
+    if (problem == m_problem)
+        return;
+    m_problem = problem;
+    m_spin->setProperty("invalid", !problem.isEmpty());
+    m_spin->setStyleSheet(problem.isEmpty() ? QString() : kInvalidStyle);
+    m_message->setText(problem);
+    m_message->setVisible(!problem.isEmpty());
+    const QString tip = u"<b>"_s + m_spec.symbol + u"</b> — "_s + m_spec.meaning + u" ["_s +
+                        m_spec.unit + u"]<br>"_s + m_spec.toolTip;
+    m_spin->setToolTip(problem.isEmpty() ? tip
+                                         : tip + u"<br><span style=\"color:#d32f2f\">"_s + problem +
+                                               u"</span>"_s);
+}
+
+void ParameterField::setDeviceValue(std::optional<double> deviceValue)
+{
+    m_device = deviceValue;
+    updateMarker();
+}
+
+bool ParameterField::differsFromDevice() const
+{
+    return m_device && static_cast<float>(*m_device) != static_cast<float>(m_value);
+}
+
+QString ParameterField::numberText(double value) const
+{
+    const double scale = displayScale();
+    const QString unit = m_spec.angle && m_degrees ? QStringLiteral("°") : u" "_s + m_spec.unit;
+    return QString::number(value * scale, 'g', 6) + unit;
+}
+
+void ParameterField::updateMarker()
+{
+    const bool differs = differsFromDevice();
+    m_marker->setVisible(differs);
+    m_marker->setToolTip(differs ? u"device: "_s + numberText(*m_device) : QString());
+}
+
+} // namespace hatpic

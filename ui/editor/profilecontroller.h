@@ -1,0 +1,115 @@
+// Profile files for the editor: Open, Save, Save As, recent files, built-in presets, and two
+// slots (A/B) to compare tunings with one key. Owns no widgets except its menus.
+#pragma once
+
+#include "profile/profile.h"
+
+#include <QMessageBox>
+#include <QObject>
+#include <QStringList>
+
+#include <array>
+#include <functional>
+#include <memory>
+
+class QAction;
+class QMenu;
+class QWidget;
+
+namespace hatpic {
+
+class ParameterEditor;
+
+class ProfileController : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kMaxRecentFiles = 8;
+    static constexpr int kSlotCount = 2; //!< A and B
+    //! QSettings key of the recent-file list (most recent first).
+    static constexpr char16_t kRecentKey[] = u"profiles/recent";
+    static constexpr char16_t kLastDirKey[] = u"profiles/lastDir";
+
+    //! Answers "save changes to X?" with Save, Discard or Cancel. Replaceable for tests.
+    using Question = std::function<QMessageBox::StandardButton(const QString &text)>;
+
+    ProfileController(ParameterEditor *editor, QWidget *dialogParent, QObject *parent = nullptr);
+    ~ProfileController() override;
+
+    QAction *openAction() const { return m_openAction; }     //!< Ctrl+O
+    QAction *saveAction() const { return m_saveAction; }     //!< Ctrl+S
+    QAction *saveAsAction() const { return m_saveAsAction; } //!< Ctrl+Shift+S
+    QAction *abToggleAction() const { return m_abAction; }   //!< Ctrl+B
+    QMenu *recentMenu() const { return m_recentMenu.get(); }
+    QMenu *presetsMenu() const { return m_presetsMenu.get(); }
+
+    //! Loads a profile into the active slot (one undo step). A refused file changes nothing;
+    //! its errors (all of them, as the core reports them) go to `error`, or to a message box
+    //! when `error` is null.
+    bool openFile(const QString &path, QString *error = nullptr);
+    //! Saves the active slot to `path` (atomically). Refuses an invalid parameter set.
+    bool saveTo(const QString &path, QString *error = nullptr);
+    bool save();   //!< to the slot's file, or asks for one
+    bool saveAs(); //!< asks for a file
+    //! Loads a built-in preset into the active slot.
+    bool loadPreset(const QString &name);
+    //! Asks for every slot with unsaved changes: Save / Discard / Cancel. False on cancel.
+    bool maybeSave();
+
+    bool isModified() const; //!< the active slot differs from its file (or preset)
+    bool isModified(int slot) const;
+    QString profileName() const;
+    QString filePath() const;
+    int activeSlot() const { return m_active; }
+    static QString slotName(int slot); //!< "A" or "B"
+    //! "Notchy* [A] — HATPIC Tuner": name, '*' when modified, active slot.
+    QString windowTitle() const;
+    QStringList recentFiles() const;
+
+    //! Switches A ↔ B as one undo step. The first switch to B starts B as a copy of A.
+    void toggleSlot();
+    //! Makes `slot` active without an undo step (used by the undo command).
+    void activateSlot(int slot);
+
+    void setQuestion(Question question) { m_question = std::move(question); }
+
+Q_SIGNALS:
+    void titleChanged(const QString &title);
+    void statusMessage(const QString &message);
+    void activeSlotChanged(int slot);
+
+private:
+    struct Slot
+    {
+        Profile saved;   //!< as last opened/saved (or the preset); the '*' compares against it
+        Profile working; //!< the values while the slot is not in the editor
+        QString path;    //!< empty: never saved
+        bool used = false;
+    };
+
+    Profile currentProfile(int slot) const;
+    bool saveSlot(int slot, const QString &path, QString *error);
+    bool saveSlotInteractive(int slot, bool askPath);
+    bool maybeSaveSlot(int slot);
+    void load(const Profile &profile, const QString &path, const QString &undoText);
+    void addRecent(const QString &path);
+    void rebuildRecentMenu();
+    void rebuildPresetsMenu();
+    void updateTitle();
+
+    ParameterEditor *m_editor;
+    QWidget *m_dialogParent;
+    std::array<Slot, kSlotCount> m_slots;
+    int m_active = 0;
+    QString m_title;
+    Question m_question;
+
+    QAction *m_openAction = nullptr;
+    QAction *m_saveAction = nullptr;
+    QAction *m_saveAsAction = nullptr;
+    QAction *m_abAction = nullptr;
+    std::unique_ptr<QMenu> m_recentMenu;
+    std::unique_ptr<QMenu> m_presetsMenu;
+};
+
+} // namespace hatpic

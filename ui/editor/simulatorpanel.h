@@ -1,0 +1,55 @@
+// The operator's hand on the simulated joystick: choose an input (idle, constant, step, sine,
+// chirp, virtual hand) and its parameters; every change emits the new HandInput.
+#pragma once
+
+#include "device/handinput.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QSlider;
+
+namespace hatpic {
+
+class SimulatorPanel : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr double kMaxTorque = 2.0;   //!< spin box range ±, [N·m]
+    static constexpr double kMaxFrequency = 50; //!< [Hz]
+    static constexpr int kAngleTicksPerRad = 1000;
+
+    explicit SimulatorPanel(QWidget *parent = nullptr);
+
+    //! The current input; fields the kind does not use are 0.
+    HandInput hand() const;
+    //! Shows an input without emitting handChanged().
+    void setHand(const HandInput &hand);
+
+Q_SIGNALS:
+    void handChanged(const hatpic::HandInput &hand);
+
+private:
+    void updateVisibility();
+    void emitIfChanged();
+
+    HandInput m_last;
+    QComboBox *m_kind = nullptr;
+    QLabel *m_description = nullptr;
+    QLabel *m_amplitudeLabel = nullptr;
+    QDoubleSpinBox *m_amplitude = nullptr;
+    QLabel *m_offsetLabel = nullptr;
+    QDoubleSpinBox *m_offset = nullptr;
+    QLabel *m_frequencyLabel = nullptr;
+    QDoubleSpinBox *m_frequency = nullptr;
+    QLabel *m_frequency1Label = nullptr;
+    QDoubleSpinBox *m_frequency1 = nullptr;
+    QLabel *m_angleLabel = nullptr;
+    QDoubleSpinBox *m_angle = nullptr;
+    QSlider *m_angleSlider = nullptr;
+    QLabel *m_angleDegrees = nullptr;
+};
+
+} // namespace hatpic

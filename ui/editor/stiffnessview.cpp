@@ -1,0 +1,311 @@
+#include "editor/stiffnessview.h"
+
+#include "model/stiffness.h"
+
+#include "plots/qcp.h"
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace hatpic {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+const QColor kEditedColour(0x15, 0x65, 0xc0);
+const QColor kDeviceColour(0xef, 0x6c, 0x00);
+const QColor kPointColour(0xc6, 0x28, 0x28);
+
+QCPItemStraightLine *straightLine(QCustomPlot *plot, QCPAxisRect *rect, const QPen &pen)
+{
+    auto *line = new QCPItemStraightLine(plot);
+    line->setClipAxisRect(rect);
+    line->setClipToAxisRect(true);
+    for (QCPItemPosition *p : {line->point1, line->point2})
+        p->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    line->setPen(pen);
+    return line;
+}
+
+} // namespace
+
+StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
+{
+    m_plot = new QCustomPlot(this);
+    m_plot->setObjectName(u"stiffness_plot"_s);
+    m_plot->setMinimumSize(320, 280);
+    m_plot->plotLayout()->clear();
+    m_torqueRect = new QCPAxisRect(m_plot);
+    m_stiffnessRect = new QCPAxisRect(m_plot);
+    m_plot->plotLayout()->addElement(0, 0, m_torqueRect);
+    m_plot->plotLayout()->addElement(1, 0, m_stiffnessRect);
+    auto *margins = new QCPMarginGroup(m_plot);
+    m_torqueRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+    m_stiffnessRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+    m_torqueRect->axis(QCPAxis::atLeft)->setLabel(tr("τ_rec [N·m]"));
+    m_stiffnessRect->axis(QCPAxis::atLeft)->setLabel(tr("K_rec [N·m/rad]"));
+
+    auto graph = [this](QCPAxisRect *rect, const QPen &pen, const QString &name) {
+        QCPGraph *g = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        g->setPen(pen);
+        g->setName(name);
+        return g;
+    };
+    QPen edited(kEditedColour, 2.0);
+    QPen device(kDeviceColour, 1.5, Qt::DashLine);
+    m_deviceTorque = graph(m_torqueRect, device, tr("device"));
+    m_deviceStiffness = graph(m_stiffnessRect, device, tr("device"));
+    m_torque = graph(m_torqueRect, edited, tr("edited"));
+    m_stiffness = graph(m_stiffnessRect, edited, tr("edited"));
+    m_point = graph(m_torqueRect, QPen(kPointColour), tr("live (θ, measured τ_rec)"));
+    m_point->setLineStyle(QCPGraph::lsNone);
+    m_point->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssDisc, kPointColour, kPointColour, 9));
+
+    auto *legend = new QCPLegend;
+    m_torqueRect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    legend->setLayer(u"legend"_s);
+    legend->setFont(font());
+    legend->setBrush(QColor(255, 255, 255, 210));
+    for (QCPGraph *g : {m_torque, m_deviceTorque, m_point})
+        g->addToLegend(legend);
+
+    QPen limitPen(QColor(0xd3, 0x2f, 0x2f), 1.0, Qt::DotLine);
+    m_limitHigh = straightLine(m_plot, m_torqueRect, limitPen);
+    m_limitLow = straightLine(m_plot, m_torqueRect, limitPen);
+    m_cursor = straightLine(m_plot, m_stiffnessRect, QPen(kPointColour, 1.0, Qt::DotLine));
+    m_cursor->setVisible(false);
+
+    const QColor shades[] = {QColor(0x15, 0x65, 0xc0, 22), QColor(0x60, 0x60, 0x60, 40)};
+    for (int i = 0; i < 4; ++i) {
+        QCPAxisRect *rect = i < 2 ? m_torqueRect : m_stiffnessRect;
+        auto *r = new QCPItemRect(m_plot);
+        r->setLayer(u"grid"_s);
+        r->setClipAxisRect(rect);
+        r->setPen(Qt::NoPen);
+        r->setBrush(shades[i % 2]);
+        for (QCPItemPosition *p : {r->topLeft, r->bottomRight}) {
+            p->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+            p->setAxisRect(rect);
+            p->setTypeX(QCPItemPosition::ptPlotCoords);
+            p->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        }
+        r->topLeft->setCoords(0, 0);
+        r->bottomRight->setCoords(0, 1);
+        m_shades[i] = r;
+    }
+
+    m_replotTimer = new QTimer(this);
+    m_replotTimer->setSingleShot(true);
+    m_replotTimer->setInterval(kRepaintIntervalMs);
+    connect(m_replotTimer, &QTimer::timeout, this, [this] { m_plot->replot(); });
+
+    m_plot->setToolTip(tr("Solid: the edited parameters. Dashed: the device's. Shaded: dead zone "
+                          "(grey) and notch band (blue). Dotted red: ±tau_limit. The dot is the "
+                          "live knob angle and the measured re-centering torque."));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_plot);
+    rebuild();
+}
+
+double StiffnessView::halfRange(const DeviceParams &params)
+{
+    const double r = std::max(2.5 * params.N, 0.5);
+    return std::isfinite(r) ? std::min(r, kPi / 2) : kPi / 2;
+}
+
+QVector<double> StiffnessView::sampleAngles(const DeviceParams &p, double center, double halfWidth)
+{
+    QVector<double> x;
+    x.reserve(kUniformSamples + 16);
+    const double lo = center - halfWidth;
+    const double hi = center + halfWidth;
+    for (int i = 0; i + 1 < kUniformSamples; ++i)
+        x << lo + (hi - lo) * i / (kUniformSamples - 1);
+    x << hi; // exactly, not lo + (hi − lo)
+    auto add = [&](double theta) {
+        if (std::isfinite(theta) && theta >= lo && theta <= hi)
+            x << theta;
+    };
+    for (double sign : {-1.0, 1.0}) {
+        add(p.theta0 + sign * p.Q_dz);
+        if (p.Q_dz > 0 && std::isfinite(p.Q_dz)) {
+            // The jump at the dead-zone edge: the first angle in the notch band and the last
+            // one in the dead zone, adjacent doubles, so the jump is drawn vertical. (θ0 ± Q_dz
+            // itself may round to either side.)
+            const double outward = sign * std::numeric_limits<double>::infinity();
+            double notch = p.theta0 + sign * p.Q_dz;
+            for (int i = 0; i < 8 && stiffnessZone(p, notch) == StiffnessZone::DeadZone; ++i)
+                notch = std::nextafter(notch, outward);
+            double inside = std::nextafter(notch, p.theta0);
+            for (int i = 0; i < 8 && stiffnessZone(p, inside) != StiffnessZone::DeadZone; ++i)
+                inside = std::nextafter(inside, p.theta0);
+            add(notch);
+            add(inside);
+        }
+        add(p.theta0 + sign * p.N);
+        add(p.theta0 + sign * 2.0 * p.N);
+    }
+    add(p.theta0);
+    std::sort(x.begin(), x.end());
+    x.erase(std::unique(x.begin(), x.end()), x.end());
+    return x;
+}
+
+void StiffnessView::setEditedParams(const DeviceParams &params)
+{
+    m_edited = params;
+    rebuild();
+}
+
+void StiffnessView::setDeviceParams(const std::optional<DeviceParams> &params)
+{
+    m_device = params;
+    rebuild();
+}
+
+void StiffnessView::setOperatingPoint(double theta, double tauRec)
+{
+    m_operatingPoint = std::make_pair(theta, tauRec);
+    updateOperatingPoint();
+    requestReplot();
+}
+
+void StiffnessView::clearOperatingPoint()
+{
+    m_operatingPoint.reset();
+    updateOperatingPoint();
+    requestReplot();
+}
+
+void StiffnessView::setAngleInDegrees(bool degrees)
+{
+    if (degrees == m_degrees)
+        return;
+    m_degrees = degrees;
+    rebuild();
+}
+
+void StiffnessView::setTauLimit(double tauLimit)
+{
+    m_tauLimit = tauLimit;
+    rebuild();
+}
+
+double StiffnessView::scale() const
+{
+    return m_degrees ? 180.0 / kPi : 1.0;
+}
+
+void StiffnessView::fillCurves(const DeviceParams &params, QCPGraph *torque, QCPGraph *stiffness,
+                               double center, double halfWidth)
+{
+    const QVector<double> angles = sampleAngles(params, center, halfWidth);
+    QVector<double> keys, tau, k;
+    keys.reserve(angles.size());
+    tau.reserve(angles.size());
+    k.reserve(angles.size());
+    for (double theta : angles) {
+        keys << theta * scale();
+        tau << recenteringTorque(params, theta);
+        k << recenteringStiffness(params, theta);
+    }
+    torque->setData(keys, tau, true);
+    stiffness->setData(keys, k, true);
+}
+
+void StiffnessView::rebuild()
+{
+    const double center = m_edited.theta0;
+    const double half = halfRange(m_edited);
+    fillCurves(m_edited, m_torque, m_stiffness, center, half);
+    if (m_device) {
+        fillCurves(*m_device, m_deviceTorque, m_deviceStiffness, center, half);
+    } else {
+        m_deviceTorque->data()->clear();
+        m_deviceStiffness->data()->clear();
+    }
+    m_deviceTorque->setVisible(m_device.has_value());
+    m_deviceStiffness->setVisible(m_device.has_value());
+
+    const QString unit = m_degrees ? tr("θ [°]") : tr("θ [rad]");
+    for (QCPAxisRect *rect : {m_torqueRect, m_stiffnessRect}) {
+        rect->axis(QCPAxis::atBottom)
+            ->setRange((center - half) * scale(), (center + half) * scale());
+        rect->axis(QCPAxis::atBottom)->setLabel(unit);
+    }
+
+    // Symmetric torque range; ±tau_limit shows when it is within reach of the curves.
+    double tauMax = 0;
+    double kMax = 0;
+    for (QCPGraph *g : {m_torque, m_deviceTorque}) {
+        for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) {
+            if (std::isfinite(it->value))
+                tauMax = std::max(tauMax, std::abs(it->value));
+        }
+    }
+    for (QCPGraph *g : {m_stiffness, m_deviceStiffness}) {
+        for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) {
+            if (std::isfinite(it->value))
+                kMax = std::max(kMax, it->value);
+        }
+    }
+    if (m_tauLimit > 0 && m_tauLimit < 2.0 * tauMax)
+        tauMax = std::max(tauMax, m_tauLimit);
+    tauMax = std::max(tauMax, 1e-3) * 1.15;
+    m_torqueRect->axis(QCPAxis::atLeft)->setRange(-tauMax, tauMax);
+    m_stiffnessRect->axis(QCPAxis::atLeft)->setRange(0, std::max(kMax, 1e-3) * 1.15);
+
+    m_limitHigh->point1->setCoords(0, m_tauLimit);
+    m_limitHigh->point2->setCoords(1, m_tauLimit);
+    m_limitLow->point1->setCoords(0, -m_tauLimit);
+    m_limitLow->point2->setCoords(1, -m_tauLimit);
+    m_limitHigh->setVisible(m_tauLimit > 0);
+    m_limitLow->setVisible(m_tauLimit > 0);
+
+    updateShading();
+    updateOperatingPoint();
+    requestReplot();
+}
+
+void StiffnessView::updateShading()
+{
+    const double c = m_edited.theta0;
+    const double bands[] = {m_edited.N, m_edited.Q_dz}; // notch band below the dead zone
+    for (int i = 0; i < 4; ++i) {
+        const double w = bands[i % 2];
+        m_shades[i]->topLeft->setCoords((c - w) * scale(), 0);
+        m_shades[i]->bottomRight->setCoords((c + w) * scale(), 1);
+        m_shades[i]->setVisible(std::isfinite(w) && w > 0);
+    }
+}
+
+void StiffnessView::updateOperatingPoint()
+{
+    if (!m_operatingPoint) {
+        m_point->data()->clear();
+        m_cursor->setVisible(false);
+        return;
+    }
+    const double x = m_operatingPoint->first * scale();
+    m_point->setData(QVector<double>{x}, QVector<double>{m_operatingPoint->second}, true);
+    m_cursor->point1->setCoords(x, 0);
+    m_cursor->point2->setCoords(x, 1);
+    m_cursor->setVisible(true);
+}
+
+void StiffnessView::requestReplot()
+{
+    if (!m_replotTimer->isActive())
+        m_replotTimer->start();
+}
+
+} // namespace hatpic

@@ -1,0 +1,87 @@
+// τ_rec(θ) and K_rec(θ) of the edited parameters (solid) and of the device (dashed), with the
+// live operating point (θ, measured τ_rec): the dead zone, the notch and the slopes being tuned.
+#pragma once
+
+#include "model/params.h"
+
+#include <QVector>
+#include <QWidget>
+
+#include <optional>
+
+class QCPAxisRect;
+class QCPGraph;
+class QCPItemRect;
+class QCPItemStraightLine;
+class QCustomPlot;
+class QTimer;
+
+namespace hatpic {
+
+class StiffnessView : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr int kUniformSamples = 601;   //!< evenly spaced samples per curve
+    static constexpr int kRepaintIntervalMs = 33; //!< the live point repaints at ≤ 30 Hz
+
+    explicit StiffnessView(QWidget *parent = nullptr);
+
+    void setEditedParams(const DeviceParams &params);
+    //! The device's parameters, drawn dashed; nullopt hides them.
+    void setDeviceParams(const std::optional<DeviceParams> &params);
+    //! Live operating point: knob angle [rad] and measured re-centering torque [N·m].
+    void setOperatingPoint(double theta, double tauRec);
+    void clearOperatingPoint();
+    //! Display only: the θ axis in degrees; the inputs stay SI.
+    void setAngleInDegrees(bool degrees);
+    bool angleInDegrees() const { return m_degrees; }
+    //! Draws ±tau_limit on the torque plot [N·m].
+    void setTauLimit(double tauLimit);
+
+    //! Half-width of the shown θ range around θ0: max(2.5·N, 0.5) rad, at most π/2 [rad].
+    static double halfRange(const DeviceParams &params);
+    //! Sorted sample angles [rad] over center ± halfWidth: an even grid plus every breakpoint
+    //! of `params` (θ0 ± Q_dz, ± N, ± 2N) and, at ±Q_dz, the last angle inside the dead zone,
+    //! so the jump to K_max is drawn vertical.
+    static QVector<double> sampleAngles(const DeviceParams &params, double center,
+                                        double halfWidth);
+
+    QCustomPlot *plot() const { return m_plot; }
+    QCPGraph *torqueGraph() const { return m_torque; }
+    QCPGraph *stiffnessGraph() const { return m_stiffness; }
+    QCPGraph *deviceTorqueGraph() const { return m_deviceTorque; }
+    QCPGraph *deviceStiffnessGraph() const { return m_deviceStiffness; }
+    QCPGraph *operatingPointGraph() const { return m_point; }
+
+private:
+    void rebuild();
+    void fillCurves(const DeviceParams &params, QCPGraph *torque, QCPGraph *stiffness,
+                    double center, double halfWidth);
+    void updateShading();
+    void updateOperatingPoint();
+    void requestReplot();
+    double scale() const;
+
+    DeviceParams m_edited;
+    std::optional<DeviceParams> m_device;
+    std::optional<std::pair<double, double>> m_operatingPoint; //!< θ [rad], τ_rec [N·m]
+    double m_tauLimit = 0.44;
+    bool m_degrees = false;
+
+    QCustomPlot *m_plot = nullptr;
+    QCPAxisRect *m_torqueRect = nullptr;
+    QCPAxisRect *m_stiffnessRect = nullptr;
+    QCPGraph *m_torque = nullptr;
+    QCPGraph *m_stiffness = nullptr;
+    QCPGraph *m_deviceTorque = nullptr;
+    QCPGraph *m_deviceStiffness = nullptr;
+    QCPGraph *m_point = nullptr;
+    QCPItemStraightLine *m_cursor = nullptr;
+    QCPItemStraightLine *m_limitHigh = nullptr;
+    QCPItemStraightLine *m_limitLow = nullptr;
+    QCPItemRect *m_shades[4] = {}; //!< notch and dead zone, in each of the two plots
+    QTimer *m_replotTimer = nullptr;
+};
+
+} // namespace hatpic
