@@ -1,6 +1,7 @@
 #include "editor/parameterfield.h"
 
 #include "editor/scientificspinbox.h"
+#include "model/params.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -236,7 +237,10 @@ void ParameterField::setDeviceValue(std::optional<double> deviceValue)
 
 bool ParameterField::differsFromDevice() const
 {
-    return m_device && static_cast<float>(*m_device) != static_cast<float>(m_value);
+    // Device fields compare as they travel (float32, kept inside inclusive bounds); the host
+    // fields (v_max, tau_limit) never travel and compare the same way for consistency.
+    const int index = deviceFieldIndex(m_spec.key.toStdString());
+    return m_device && roundedForWire(index, *m_device) != roundedForWire(index, m_value);
 }
 
 QString ParameterField::numberText(double value) const

@@ -17,11 +17,7 @@ QString tr(const char *text)
 
 bool SyncTracker::sameAsFloat(const DeviceParams &a, const DeviceParams &b)
 {
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        if (static_cast<float>(a.field(i)) != static_cast<float>(b.field(i)))
-            return false;
-    }
-    return true;
+    return sameOnWire(a, b);
 }
 
 void SyncTracker::setCanPush(bool canPush, const QString &reason)
