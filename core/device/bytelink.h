@@ -26,6 +26,12 @@ public:
     virtual QString errorString() const = 0;
     //! Effective baud rate of the link [bit/s].
     virtual qint32 baud() const = 0;
+    //! Changes the baud rate of an open link; links without a rate (the simulator) ignore it.
+    virtual bool setBaud(qint32 baud)
+    {
+        Q_UNUSED(baud);
+        return true;
+    }
 
 Q_SIGNALS:
     void bytesReceived(const QByteArray &bytes);

@@ -171,7 +171,14 @@ qint32 DeviceSession::requestedBaud() const
 {
     if (m_options.baud > 0)
         return m_options.baud;
-    return m_options.protocol == ProtocolChoice::Legacy ? kDefaultLegacyBaud : kDefaultV2Baud;
+    // Auto with no baud given listens at the published firmware's rate first, then asks for
+    // HELLO at v2's rate (see onListenTimeout), so both kinds of device are found unaided.
+    return m_options.protocol == ProtocolChoice::V2 ? kDefaultV2Baud : kDefaultLegacyBaud;
+}
+
+bool DeviceSession::detectsAtTwoRates() const
+{
+    return m_options.protocol == ProtocolChoice::Auto && m_options.baud <= 0;
 }
 
 void DeviceSession::openLink()
@@ -273,6 +280,11 @@ void DeviceSession::onListenTimeout()
         return;
     }
     // Step 2: HELLO with a seq whose frame holds no 'i', so a legacy device is never upset.
+    if (detectsAtTwoRates() && !m_link->setBaud(kDefaultV2Baud)) {
+        failDetection(u"Cannot switch " % m_options.port % u" to " %
+                      QString::number(kDefaultV2Baud) % u" baud: " % m_link->errorString());
+        return;
+    }
     setState(SessionState::Detecting, u"Sending HELLO on " % portDescription());
     m_phase = Phase::Hello;
     m_helloSeq = safeHelloSeq(m_seq);
@@ -284,8 +296,10 @@ void DeviceSession::onListenTimeout()
 
 void DeviceSession::onHelloTimeout()
 {
+    const QString listenBaud =
+        detectsAtTwoRates() ? u" at " % QString::number(kDefaultLegacyBaud) % u" baud" : QString();
     failDetection(u"No HATPIC answered on " % portDescription() % u": listened " %
-                  QString::number(kListenMs) % u" ms for legacy frames (got " %
+                  QString::number(kListenMs) % u" ms" % listenBaud % u" for legacy frames (got " %
                   QString::number(m_detectLegacyFrames) % u" valid, " %
                   QString::number(kLegacyFramesNeeded) % u" needed), then sent HELLO and got no " %
                   u"HELLO_REPLY within " % QString::number(kHelloWaitMs) % u" ms.");

@@ -128,6 +128,7 @@ private:
     void tryReconnect();
     QString portDescription() const;
     qint32 requestedBaud() const;
+    bool detectsAtTwoRates() const;
 
     // bytes in
     void onBytes(const QByteArray &bytes);

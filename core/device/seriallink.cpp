@@ -41,6 +41,15 @@ bool SerialLink::open()
     return true;
 }
 
+bool SerialLink::setBaud(qint32 baud)
+{
+    m_baud = baud;
+    if (!m_port.isOpen() || m_port.setBaudRate(baud))
+        return true;
+    m_error = m_port.errorString();
+    return false;
+}
+
 void SerialLink::close()
 {
     if (m_port.isOpen())

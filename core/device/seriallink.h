@@ -20,6 +20,7 @@ public:
     void write(const QByteArray &bytes) override;
     QString errorString() const override;
     qint32 baud() const override { return m_baud; }
+    bool setBaud(qint32 baud) override;
 
 private:
     void onError(QSerialPort::SerialPortError error);

@@ -18,9 +18,11 @@
 #include <cmath>
 #include <fcntl.h>
 #include <pty.h>
+#include <termios.h>
 #include <unistd.h>
 
 using namespace hatpic;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -126,6 +128,12 @@ public:
     bool isValid() const { return m_master >= 0; }
     QString path() const { return m_path; }
     QByteArray received() const { return m_received; }
+    //! Baud rate the client side has set (a pty's two ends share one termios) [bit/s].
+    speed_t baud() const
+    {
+        termios t{};
+        return ::tcgetattr(m_master, &t) == 0 ? ::cfgetospeed(&t) : B0;
+    }
 
 private:
     int m_master = -1;
@@ -175,6 +183,7 @@ private Q_SLOTS:
     void silentLinkIsLostAndReconnects();
     void detectionFailsOnSilentPty();
     void helloOnPtyHasNoLetterI();
+    void autoDetectionListensAtLegacyRateThenAsksAtV2Rate();
     void detectsOverPty_data();
     void detectsOverPty();
     void openFailureNamesThePort();
@@ -711,6 +720,32 @@ void TestDeviceSession::helloOnPtyHasNoLetterI()
     QCOMPARE(frames.size(), 2);
     for (const v2::Frame &f : frames)
         QVERIFY(std::holds_alternative<v2::Hello>(f.message));
+}
+
+void TestDeviceSession::autoDetectionListensAtLegacyRateThenAsksAtV2Rate()
+{
+    // With no baud given, a published-firmware device (115200) and a v2 device (921600) must
+    // both be found: listen at 115200, then switch to 921600 before sending HELLO.
+    PtyPeer peer;
+    QVERIFY(peer.isValid());
+    Harness h;
+    QList<QPair<QString, speed_t>> seen;
+    QObject::connect(&h.session, &DeviceSession::stateChanged,
+                     [&](SessionState s, const QString &detail) {
+                         if (s == SessionState::Detecting)
+                             seen.append({detail, peer.baud()});
+                     });
+    ConnectOptions o;
+    o.port = peer.path();
+    h.session.connectDevice(o);
+    QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Disconnected, kConnectTimeoutMs);
+    QCOMPARE(seen.size(), 2);
+    QVERIFY2(seen[0].first.startsWith(u"Listening"_s), qPrintable(seen[0].first));
+    QCOMPARE(seen[0].second, speed_t(B115200));
+    QVERIFY2(seen[1].first.startsWith(u"Sending HELLO"_s), qPrintable(seen[1].first));
+    QCOMPARE(seen[1].second, speed_t(B921600));
+    const QString failure = h.detailOf(SessionState::Disconnected);
+    QVERIFY2(failure.contains(u"115200"_s) && failure.contains(u"921600"_s), qPrintable(failure));
 }
 
 void TestDeviceSession::detectsOverPty_data()
