@@ -1,0 +1,137 @@
+// hatpic-tuner [--port PATH|sim] [--baud N] [--protocol auto|v2|legacy] [--profile FILE]
+//              [--hand SPEC] [RECORDING.csv]
+#include "editor/profilecontroller.h"
+#include "plots/mainwindow.h"
+#include "plots/plotpanel.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTimer>
+
+#include <cstdio>
+
+using namespace hatpic;
+
+namespace {
+
+void fail(const QString &message)
+{
+    std::fprintf(stderr, "hatpic-tuner: %s\n", qPrintable(message));
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("HATPIC"));
+    QApplication::setApplicationName(QStringLiteral("hatpic-tuner"));
+    QApplication::setApplicationVersion(QStringLiteral(HATPIC_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("hatpic-tuner"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Tune, plot and record the HATPIC single-axis haptic joystick."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption port(
+        {QStringLiteral("p"), QStringLiteral("port")},
+        QStringLiteral("Connect at once to PATH (a serial port or pty), or \"sim\" for the "
+                       "built-in simulated joystick."),
+        QStringLiteral("PATH|sim"));
+    const QCommandLineOption baud({QStringLiteral("b"), QStringLiteral("baud")},
+                                  QStringLiteral("Baud rate (default: 921600 for v2 and auto, "
+                                                 "115200 for legacy)."),
+                                  QStringLiteral("N"));
+    const QCommandLineOption protocol(QStringLiteral("protocol"),
+                                      QStringLiteral("auto (default), v2 or legacy."),
+                                      QStringLiteral("NAME"), QStringLiteral("auto"));
+    const QCommandLineOption profile(QStringLiteral("profile"),
+                                     QStringLiteral("Open this profile (JSON) in the editor."),
+                                     QStringLiteral("FILE"));
+    const QCommandLineOption hand(QStringLiteral("hand"),
+                                  QStringLiteral("Simulated operator input (docs/cli.md), e.g. "
+                                                 "sine:0.06:0.2 or hand:0.3; default for --port "
+                                                 "sim: a gentle sine."),
+                                  QStringLiteral("SPEC"));
+    const QCommandLineOption repaint(QStringLiteral("repaint-rate"),
+                                     QStringLiteral("Plot repaint rate in Hz (default 30)."),
+                                     QStringLiteral("HZ"));
+    const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
+                                       QStringLiteral("Close the window after SECONDS (for "
+                                                      "scripted screenshots and measurements)."),
+                                       QStringLiteral("SECONDS"));
+    parser.addOptions({port, baud, protocol, profile, hand, repaint, quitAfter});
+    parser.addPositionalArgument(QStringLiteral("recording"),
+                                 QStringLiteral("A recording (CSV) to open in replay."),
+                                 QStringLiteral("[RECORDING.csv]"));
+    parser.process(app);
+
+    ConnectOptions options;
+    options.port = parser.value(port);
+    if (parser.isSet(baud)) {
+        bool ok = false;
+        options.baud = parser.value(baud).toInt(&ok);
+        if (!ok || options.baud <= 0) {
+            fail(QStringLiteral("--baud: \"%1\" is not a positive number").arg(parser.value(baud)));
+            return 2;
+        }
+    }
+    const QString protocolName = parser.value(protocol).toLower();
+    if (protocolName == u"auto") {
+        options.protocol = ProtocolChoice::Auto;
+    } else if (protocolName == u"v2") {
+        options.protocol = ProtocolChoice::V2;
+    } else if (protocolName == u"legacy") {
+        options.protocol = ProtocolChoice::Legacy;
+    } else {
+        fail(QStringLiteral("--protocol: expected auto, v2 or legacy, got \"%1\"")
+                 .arg(parser.value(protocol)));
+        return 2;
+    }
+    std::optional<HandInput> handInput;
+    if (parser.isSet(hand)) {
+        QString error;
+        handInput = HandInput::parse(parser.value(hand), &error);
+        if (!handInput) {
+            fail(QStringLiteral("--hand: %1").arg(error));
+            return 2;
+        }
+    }
+    double repaintHz = PlotPanel::kDefaultRepaintHz;
+    if (parser.isSet(repaint)) {
+        bool ok = false;
+        repaintHz = parser.value(repaint).toDouble(&ok);
+        if (!ok || repaintHz < 1 || repaintHz > 240) {
+            fail(QStringLiteral("--repaint-rate: expected 1 to 240 Hz"));
+            return 2;
+        }
+    }
+    if (parser.positionalArguments().size() > 1) {
+        fail(QStringLiteral("at most one recording can be opened"));
+        return 2;
+    }
+
+    MainWindow window;
+    window.plotPanel()->setRepaintRate(repaintHz);
+    if (parser.isSet(profile)) {
+        QString error;
+        if (!window.profileController()->openFile(parser.value(profile), &error))
+            fail(QStringLiteral("--profile: %1").arg(error));
+    }
+    if (handInput)
+        window.setSimulatedHand(*handInput);
+    window.show();
+    if (!options.port.isEmpty())
+        window.connectTo(options);
+    if (!parser.positionalArguments().isEmpty()) {
+        QString error;
+        if (!window.openRecording(parser.positionalArguments().constFirst(), &error))
+            fail(error);
+    }
+    if (parser.isSet(quitAfter)) {
+        const double seconds = parser.value(quitAfter).toDouble();
+        QTimer::singleShot(static_cast<int>(seconds * 1000), &window, &QWidget::close);
+    }
+    return app.exec();
+}

@@ -1,0 +1,56 @@
+// tuner_screenshot OUT.png — makes docs/screenshot.png: the real main window, connected to the
+// built-in simulator with its gentle hand, K_max pushed from 0.4 to 0.6 after a few seconds
+// (a marker on the time axis, the device curve on the stiffness view), the cursor readout on,
+// then a grab of the window at 1400×900. Run it under Xvfb (see docs/performance.md):
+//   xvfb-run -a -s "-screen 0 1400x900x24" build/bench/tuner_screenshot docs/screenshot.png
+#include "editor/parametereditor.h"
+#include "plots/mainwindow.h"
+#include "plots/plotpanel.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QStandardPaths>
+#include <QTimer>
+
+#include <cstdio>
+
+using namespace hatpic;
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: tuner_screenshot OUT.png\n");
+        return 2;
+    }
+    const QString out = QString::fromLocal8Bit(argv[1]);
+    QStandardPaths::setTestModeEnabled(true); // leave the user's settings alone
+    QApplication::setOrganizationName(QStringLiteral("hatpic-screenshot"));
+    QApplication::setApplicationName(QStringLiteral("hatpic-tuner"));
+
+    MainWindow window;
+    window.resize(1400, 900);
+    window.show();
+    ConnectOptions options;
+    options.port = QStringLiteral("sim");
+    window.connectTo(options);
+
+    QTimer::singleShot(6500, &window, [&window] {
+        ParameterEditor *editor = window.parameterEditor();
+        DeviceParams params = editor->params();
+        params.K_max = 0.6;
+        editor->setParams(params, editor->hostParams(), QStringLiteral("K_max"));
+        editor->pushAction()->trigger();
+    });
+    QTimer::singleShot(13800, &window, [&window] {
+        PlotPanel *plots = window.plotPanel();
+        plots->setCursorTime(plots->viewEnd() - 1.6);
+        plots->repaintNow();
+    });
+    QTimer::singleShot(14200, &window, [&window, out] {
+        const bool ok = window.grab().save(out);
+        std::fprintf(stderr, "%s %s\n", ok ? "wrote" : "could not write", qPrintable(out));
+        QApplication::exit(ok ? 0 : 1);
+    });
+    return app.exec();
+}

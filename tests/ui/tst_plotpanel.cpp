@@ -1,0 +1,346 @@
+// PlotPanel: samples reach the graphs, repaint only on change, pause, units, legends, cursor,
+// bands, events and exports.
+#include "plots/plotpanel.h"
+#include "plots/qcp.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace hatpic;
+
+namespace {
+
+void fill(SampleBuffer &buffer, double from, double to, double rateHz = 1000)
+{
+    const int n = int(std::lround((to - from) * rateHz));
+    for (int i = 0; i < n; ++i) {
+        Sample s;
+        s.t_s = from + i / rateHz;
+        s.theta = 0.3 * std::sin(2 * std::numbers::pi * 0.5 * s.t_s);
+        s.tau = -0.1 * std::sin(s.t_s);
+        s.tau_rec = -0.4 * s.theta;
+        s.tau_total = s.tau_rec;
+        s.v_ref = 0.5 * s.theta;
+        s.p_ref = s.t_s * 0.01;
+        buffer.append(s);
+    }
+}
+
+QPoint legendItemCenter(PlotPanel &panel, PlotPanel::Plot plot, Channel channel)
+{
+    QCPLegend *legend = panel.legend(plot);
+    QCPAbstractLegendItem *item = legend->itemWithPlottable(panel.graph(channel));
+    return item ? item->rect().center() : QPoint();
+}
+
+} // namespace
+
+class TestPlotPanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void drawsSamplesAndFollowsLatest();
+    void decimatesLongWindow();
+    void repaintsOnlyWhenSomethingChanged();
+    void pauseFreezesViewWhileSourceFills();
+    void windowLength_data();
+    void windowLength();
+    void degreesConvertOnlyForDisplay();
+    void legendClickTogglesSeries();
+    void cursorReadsValuesAtTime();
+    void mouseMoveSetsCursor();
+    void bandsFollowDeviceParams();
+    void eventsAreMarked();
+    void autoscaleFitsAndFixedStays();
+    void exportsImage_data();
+    void exportsImage();
+    void exportsVisibleCsv();
+
+private:
+    PlotPanel *m_panel = nullptr;
+    SampleBuffer *m_buffer = nullptr;
+};
+
+void TestPlotPanel::init()
+{
+    m_buffer = new SampleBuffer;
+    m_panel = new PlotPanel;
+    m_panel->resize(1000, 700);
+    m_panel->setSource(m_buffer);
+    m_panel->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_panel));
+}
+
+void TestPlotPanel::cleanup()
+{
+    delete m_panel;
+    delete m_buffer;
+}
+
+void TestPlotPanel::drawsSamplesAndFollowsLatest()
+{
+    QCOMPARE(m_panel->pointCount(Channel::Theta), 0);
+    fill(*m_buffer, 0, 3);
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->pointCount(Channel::Theta) > 0, 5000); // the timer did it
+    // Less data than the window: the window starts at the first sample.
+    QCOMPARE(m_panel->viewStart(), m_buffer->firstTime());
+    QCOMPARE(m_panel->viewEnd() - m_panel->viewStart(), m_panel->windowLength());
+    // More: it ends at the newest sample.
+    fill(*m_buffer, 3, 15);
+    m_panel->repaintIfNeeded();
+    QCOMPARE(m_panel->viewEnd(), m_buffer->lastTime());
+    QCOMPARE(m_panel->viewEnd() - m_panel->viewStart(), m_panel->windowLength());
+    QVERIFY(m_panel->pointCount(Channel::TauRec) > 0);
+    QVERIFY(m_panel->pointCount(Channel::PRef) > 0);
+    QCOMPARE(m_panel->pointCount(Channel::Omega), 0); // hidden by default
+    const QCPGraphData last = *(m_panel->graph(Channel::Theta)->data()->constEnd() - 1);
+    QCOMPARE(last.key, m_buffer->lastTime());
+}
+
+void TestPlotPanel::decimatesLongWindow()
+{
+    m_panel->setWindowLength(60);
+    fill(*m_buffer, 0, 60);
+    m_panel->repaintNow(); // lays the plots out at this size
+    m_panel->repaintNow();
+    const int width = m_panel->axisRect(PlotPanel::Plot::Angle)->width();
+    QVERIFY(width > 100);
+    QVERIFY2(m_panel->pointCount(Channel::Theta) <= 2 * width + 4,
+             qPrintable(QString::number(m_panel->pointCount(Channel::Theta))));
+    QVERIFY(m_panel->pointCount(Channel::Theta) > width / 2);
+}
+
+void TestPlotPanel::repaintsOnlyWhenSomethingChanged()
+{
+    fill(*m_buffer, 0, 1);
+    m_panel->repaintIfNeeded();
+    const quint64 before = m_panel->repaintStats().replots;
+    m_panel->repaintIfNeeded();
+    m_panel->repaintIfNeeded();
+    QCOMPARE(m_panel->repaintStats().replots, before);
+    fill(*m_buffer, 1, 1.01);
+    m_panel->repaintIfNeeded();
+    QCOMPARE(m_panel->repaintStats().replots, before + 1);
+}
+
+void TestPlotPanel::pauseFreezesViewWhileSourceFills()
+{
+    QSignalSpy paused(m_panel, &PlotPanel::pausedChanged);
+    m_panel->setWindowLength(1);
+    fill(*m_buffer, 0, 2);
+    m_panel->repaintNow();
+    const double end = m_panel->viewEnd();
+    m_panel->setPaused(true);
+    QCOMPARE(paused.size(), 1);
+    fill(*m_buffer, 2, 4); // the link keeps delivering
+    m_panel->repaintNow();
+    QCOMPARE(m_panel->viewEnd(), end);
+    QCOMPARE(m_buffer->lastTime(), 4 - 0.001);
+    const QCPGraphData last = *(m_panel->graph(Channel::Theta)->data()->constEnd() - 1);
+    QVERIFY(last.key <= end);
+    m_panel->setPaused(false);
+    m_panel->repaintNow();
+    QCOMPARE(m_panel->viewEnd(), m_buffer->lastTime());
+}
+
+void TestPlotPanel::windowLength_data()
+{
+    QTest::addColumn<double>("seconds");
+    QTest::newRow("5 s") << 5.0;
+    QTest::newRow("10 s") << 10.0;
+    QTest::newRow("30 s") << 30.0;
+    QTest::newRow("60 s") << 60.0;
+}
+
+void TestPlotPanel::windowLength()
+{
+    QFETCH(double, seconds);
+    fill(*m_buffer, 0, 70, 200);
+    m_panel->setWindowLength(seconds);
+    m_panel->repaintNow();
+    QCOMPARE(m_panel->viewEnd() - m_panel->viewStart(), seconds);
+    const QCPGraphData first = *m_panel->graph(Channel::Theta)->data()->constBegin();
+    QVERIFY(first.key >= m_panel->viewStart() - 0.01); // at most one neighbour before
+}
+
+void TestPlotPanel::degreesConvertOnlyForDisplay()
+{
+    fill(*m_buffer, 0, 1);
+    m_panel->repaintNow();
+    const double radians = (m_panel->graph(Channel::Theta)->data()->constEnd() - 1)->value;
+    QVERIFY(m_panel->axisRect(PlotPanel::Plot::Angle)
+                ->axis(QCPAxis::atLeft)
+                ->label()
+                .contains(QStringLiteral("rad")));
+    m_panel->setAngleInDegrees(true);
+    m_panel->repaintNow();
+    const double degrees = (m_panel->graph(Channel::Theta)->data()->constEnd() - 1)->value;
+    QCOMPARE(degrees, radians * 180 / std::numbers::pi);
+    QVERIFY(m_panel->axisRect(PlotPanel::Plot::Angle)
+                ->axis(QCPAxis::atLeft)
+                ->label()
+                .contains(QStringLiteral("°")));
+    QCOMPARE(m_buffer->value(Channel::Theta, m_buffer->size() - 1), radians); // data stay SI
+    // Torques are not angles.
+    QVERIFY(m_panel->readout().contains(QStringLiteral("N·m")));
+}
+
+void TestPlotPanel::legendClickTogglesSeries()
+{
+    fill(*m_buffer, 0, 1);
+    m_panel->repaintNow();
+    QSignalSpy spy(m_panel, &PlotPanel::channelVisibilityChanged);
+    const QPoint center = legendItemCenter(*m_panel, PlotPanel::Plot::Torque, Channel::TauExt);
+    QVERIFY(!center.isNull());
+    QTest::mouseClick(m_panel->customPlot(), Qt::LeftButton, {}, center);
+    QCOMPARE(spy.size(), 1);
+    QCOMPARE(spy.at(0).at(0).value<Channel>(), Channel::TauExt);
+    QCOMPARE(spy.at(0).at(1).toBool(), false);
+    QVERIFY(!m_panel->isChannelVisible(Channel::TauExt));
+    m_panel->repaintNow();
+    QCOMPARE(m_panel->pointCount(Channel::TauExt), 0);
+    QTest::mouseClick(m_panel->customPlot(), Qt::LeftButton, {}, center);
+    QVERIFY(m_panel->isChannelVisible(Channel::TauExt));
+}
+
+void TestPlotPanel::cursorReadsValuesAtTime()
+{
+    fill(*m_buffer, 0, 2);
+    m_panel->repaintNow();
+    const qsizetype index = 700;
+    m_panel->setCursorTime(m_buffer->time(index) + 0.0002);
+    const QString text = m_panel->readout();
+    QVERIFY2(text.startsWith(QStringLiteral("t = 0.700 s")), qPrintable(text));
+    const QString theta =
+        QString::number(m_buffer->value(Channel::Theta, index), 'f', 4).replace(u'-', u'−');
+    QVERIFY2(text.contains(QStringLiteral("θ = ") + theta), qPrintable(text));
+    QVERIFY(m_panel->graph(Channel::Theta)->name().contains(theta));
+    m_panel->setCursorTime(std::nullopt);
+    QVERIFY(m_panel->readout().startsWith(QStringLiteral("t = 1.999 s")));
+}
+
+void TestPlotPanel::mouseMoveSetsCursor()
+{
+    fill(*m_buffer, 0, 12);
+    m_panel->repaintNow();
+    QCPAxisRect *rect = m_panel->axisRect(PlotPanel::Plot::Torque);
+    const QPoint at = rect->rect().center();
+    QTest::mouseMove(m_panel->customPlot(), at);
+    QTRY_VERIFY(m_panel->cursorTime().has_value());
+    const double expected = rect->axis(QCPAxis::atBottom)->pixelToCoord(at.x());
+    QVERIFY(std::abs(*m_panel->cursorTime() - expected) < 0.05);
+}
+
+void TestPlotPanel::bandsFollowDeviceParams()
+{
+    DeviceParams params;
+    params.theta0 = 0.05;
+    params.Q_dz = 0.02;
+    params.N = 0.1;
+    m_panel->setDeviceParams(params);
+    fill(*m_buffer, 0, 1);
+    m_panel->repaintNow();
+    // The angle axis keeps the notch band in view.
+    const QCPRange range =
+        m_panel->axisRect(PlotPanel::Plot::Angle)->axis(QCPAxis::atLeft)->range();
+    QVERIFY(range.contains(params.theta0 + params.N));
+    QVERIFY(range.contains(params.theta0 - params.N));
+    QVERIFY(m_panel->bandsVisible());
+    QSignalSpy spy(m_panel, &PlotPanel::bandsVisibilityChanged);
+    m_panel->setBandsVisible(false);
+    QCOMPARE(spy.size(), 1);
+    m_panel->setDeviceParams(std::nullopt);
+    m_panel->repaintNow();
+}
+
+void TestPlotPanel::eventsAreMarked()
+{
+    const int before = m_panel->customPlot()->itemCount();
+    m_panel->setEvents(
+        {{0.5, QStringLiteral("K_max 0.4 → 0.6")}, {1.5, QStringLiteral("N 0.1 → 0.2")}});
+    const int perEvent = PlotPanel::kPlotCount + 1; // a line per plot and a label
+    QCOMPARE(m_panel->customPlot()->itemCount(), before + 2 * perEvent);
+    m_panel->addEvent({2.0, QStringLiteral("push")});
+    QCOMPARE(m_panel->customPlot()->itemCount(), before + 3 * perEvent);
+    QCOMPARE(m_panel->events().size(), 3);
+    m_panel->setEvents({});
+    QCOMPARE(m_panel->customPlot()->itemCount(), before);
+}
+
+void TestPlotPanel::autoscaleFitsAndFixedStays()
+{
+    fill(*m_buffer, 0, 2);
+    m_panel->repaintNow();
+    QCPAxis *torque = m_panel->axisRect(PlotPanel::Plot::Torque)->axis(QCPAxis::atLeft);
+    for (qsizetype i = m_buffer->lowerBound(m_panel->viewStart()); i < m_buffer->size(); ++i)
+        QVERIFY(torque->range().contains(m_buffer->value(Channel::TauRec, i)));
+    QSignalSpy spy(m_panel, &PlotPanel::autoscaleChanged);
+    m_panel->setAutoscale(false);
+    QCOMPARE(spy.size(), 1);
+    const QCPRange fixed = torque->range();
+    Sample big;
+    big.t_s = 2.5;
+    big.tau_rec = 5.0;
+    m_buffer->append(big);
+    m_panel->repaintNow();
+    QCOMPARE(torque->range(), fixed);
+    m_panel->setAutoscale(true);
+    m_panel->repaintNow();
+    QVERIFY(torque->range().contains(5.0));
+}
+
+void TestPlotPanel::exportsImage_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("magic");
+    QTest::newRow("png") << QStringLiteral("view.png") << QByteArray("\x89PNG");
+    QTest::newRow("pdf") << QStringLiteral("view.pdf") << QByteArray("%PDF");
+}
+
+void TestPlotPanel::exportsImage()
+{
+    QFETCH(QString, name);
+    QFETCH(QByteArray, magic);
+    QTemporaryDir dir;
+    fill(*m_buffer, 0, 2);
+    const QString path = dir.filePath(name);
+    QString error;
+    QVERIFY2(m_panel->exportImage(path, &error), qPrintable(error));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.read(magic.size()) == magic);
+    QVERIFY(file.size() > 1000);
+}
+
+void TestPlotPanel::exportsVisibleCsv()
+{
+    QTemporaryDir dir;
+    fill(*m_buffer, 0, 20);
+    m_panel->setWindowLength(5);
+    m_panel->repaintNow();
+    const QString path = dir.filePath(QStringLiteral("view.csv"));
+    QString error;
+    const qsizetype rows = m_panel->exportCsv(path, &error);
+    QVERIFY2(rows > 0, qPrintable(error));
+    const qsizetype expected =
+        m_buffer->upperBound(m_panel->viewEnd()) - m_buffer->lowerBound(m_panel->viewStart());
+    QCOMPARE(rows, expected);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QList<QByteArray> lines = file.readAll().split('\n');
+    QCOMPARE(lines.first(),
+             QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,event"));
+    QCOMPARE(lines.size(), rows + 2); // header, rows, empty after the last newline
+    const QList<QByteArray> firstRow = lines.at(1).split(',');
+    QCOMPARE(firstRow.size(), 11);
+    QVERIFY(firstRow.at(0).toDouble() >= m_panel->viewStart());
+}
+
+QTEST_MAIN(TestPlotPanel)
+#include "tst_plotpanel.moc"

@@ -1,0 +1,38 @@
+// The plotted quantities of a Sample, by name, so buffers and plots can address them as columns.
+#pragma once
+
+#include "device/sample.h"
+
+#include <QString>
+
+#include <array>
+
+namespace hatpic {
+
+enum class Channel { Theta, Omega, Tau, TauRec, TauExt, TauTotal, VRef, PRef };
+
+inline constexpr int kChannelCount = 8;
+
+inline constexpr std::array<Channel, kChannelCount> kAllChannels{
+    Channel::Theta,  Channel::Omega,    Channel::Tau,  Channel::TauRec,
+    Channel::TauExt, Channel::TauTotal, Channel::VRef, Channel::PRef};
+
+//! Column of a channel, 0…kChannelCount−1.
+constexpr int channelIndex(Channel channel)
+{
+    return static_cast<int>(channel);
+}
+
+//! The channel's value in a sample (SI; NaN where the protocol does not carry it).
+double channelValue(const Sample &sample, Channel channel);
+
+//! Recording column name: "theta", "omega", "tau", "tau_rec", …
+QString channelKey(Channel channel);
+
+//! Name a person reads in a legend: "θ", "τ_rec", "p_ref", …
+QString channelLabel(Channel channel);
+
+//! True for the channels measured in radians (θ) or rad/s (ω).
+bool isAngleChannel(Channel channel);
+
+} // namespace hatpic

@@ -1,0 +1,48 @@
+// The replay strip shown above the plots in replay mode: what is replayed, play/pause, speed,
+// a scrub slider, the playhead time, and one button back to live.
+#pragma once
+
+#include <QFrame>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSlider;
+class QToolButton;
+
+namespace hatpic {
+
+class ReplayController;
+
+class ReplayBar : public QFrame
+{
+    Q_OBJECT
+public:
+    static constexpr int kSliderStepsPerSecond = 1000;
+
+    explicit ReplayBar(ReplayController *controller, QWidget *parent = nullptr);
+
+    QSlider *slider() const { return m_slider; }
+    QComboBox *speedBox() const { return m_speed; }
+    QPushButton *liveButton() const { return m_live; }
+    QToolButton *playButton() const { return m_play; }
+    QString positionText() const;
+
+Q_SIGNALS:
+    void backToLiveRequested();
+
+private:
+    void onActiveChanged(bool active);
+    void onPositionChanged(double t);
+    void onPlayingChanged(bool playing);
+
+    ReplayController *m_controller;
+    QLabel *m_title = nullptr;
+    QToolButton *m_play = nullptr;
+    QComboBox *m_speed = nullptr;
+    QSlider *m_slider = nullptr;
+    QLabel *m_time = nullptr;
+    QPushButton *m_live = nullptr;
+};
+
+} // namespace hatpic

@@ -1,0 +1,134 @@
+#include "plots/samplebuffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hatpic {
+
+SampleBuffer::SampleBuffer(qsizetype capacity) : m_capacity(std::max<qsizetype>(capacity, 1))
+{
+    const auto n = static_cast<std::size_t>(m_capacity);
+    m_time.resize(n);
+    for (auto &column : m_values)
+        column.resize(n);
+    m_flags.resize(n);
+}
+
+void SampleBuffer::append(const Sample &sample)
+{
+    double t = sample.t_s;
+    if (!std::isfinite(t))
+        return; // no place on a time axis
+    if (m_hasInput && t < m_lastInput && m_size > 0) {
+        // The source clock went backwards: keep the axis monotonic, leave a visible gap.
+        m_shift = lastTime() + kRestartGap - t;
+        ++m_restarts;
+    }
+    m_hasInput = true;
+    m_lastInput = t;
+    t += m_shift;
+    if (m_size > 0 && t < lastTime())
+        t = lastTime(); // cannot happen unless the shift was rounded; keep order anyway
+
+    qsizetype s;
+    if (m_size < m_capacity) {
+        s = slot(m_size);
+        ++m_size;
+    } else {
+        s = m_head;
+        m_head = m_head + 1 == m_capacity ? 0 : m_head + 1;
+        ++m_overwritten;
+    }
+    const auto u = static_cast<std::size_t>(s);
+    m_time[u] = t;
+    for (Channel channel : kAllChannels)
+        m_values[channelIndex(channel)][u] = channelValue(sample, channel);
+    m_flags[u] = sample.flags;
+    ++m_appended;
+    ++m_generation;
+}
+
+void SampleBuffer::append(const SampleBatch &batch)
+{
+    for (const Sample &sample : batch)
+        append(sample);
+}
+
+void SampleBuffer::clear()
+{
+    m_head = 0;
+    m_size = 0;
+    m_shift = 0;
+    m_lastInput = 0;
+    m_hasInput = false;
+    ++m_generation;
+}
+
+Sample SampleBuffer::sample(qsizetype index) const
+{
+    Sample s;
+    s.t_s = time(index);
+    s.t_us = static_cast<quint32>(std::llround(std::fmod(s.t_s * 1e6, 4294967296.0)));
+    s.theta = value(Channel::Theta, index);
+    s.omega = value(Channel::Omega, index);
+    s.tau = value(Channel::Tau, index);
+    s.tau_rec = value(Channel::TauRec, index);
+    s.tau_ext = value(Channel::TauExt, index);
+    s.tau_total = value(Channel::TauTotal, index);
+    s.v_ref = value(Channel::VRef, index);
+    s.p_ref = value(Channel::PRef, index);
+    s.flags = flags(index);
+    return s;
+}
+
+double SampleBuffer::firstTime() const
+{
+    return m_size > 0 ? time(0) : 0.0;
+}
+
+double SampleBuffer::lastTime() const
+{
+    return m_size > 0 ? time(m_size - 1) : 0.0;
+}
+
+qsizetype SampleBuffer::lowerBound(double t) const
+{
+    qsizetype lo = 0;
+    qsizetype hi = m_size;
+    while (lo < hi) {
+        const qsizetype mid = lo + (hi - lo) / 2;
+        if (time(mid) < t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+qsizetype SampleBuffer::upperBound(double t) const
+{
+    qsizetype lo = 0;
+    qsizetype hi = m_size;
+    while (lo < hi) {
+        const qsizetype mid = lo + (hi - lo) / 2;
+        if (time(mid) <= t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+qsizetype SampleBuffer::nearest(double t) const
+{
+    if (m_size == 0)
+        return -1;
+    const qsizetype i = lowerBound(t);
+    if (i == 0)
+        return 0;
+    if (i == m_size)
+        return m_size - 1;
+    return (t - time(i - 1) <= time(i) - t) ? i - 1 : i;
+}
+
+} // namespace hatpic

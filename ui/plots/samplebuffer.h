@@ -1,0 +1,77 @@
+// A bounded, preallocated ring of samples stored column by column, for the live plots.
+//
+// Owned and used by one thread (the GUI thread). Appending never allocates: when the ring is
+// full the oldest sample is overwritten. Times are kept non-decreasing so that lookups by time
+// can bisect: a sample whose time goes backwards (a new session restarting its clock) is moved
+// to kRestartGap after the newest one, and every later sample of that run keeps the same shift.
+#pragma once
+
+#include "device/sample.h"
+#include "plots/channel.h"
+
+#include <array>
+#include <vector>
+
+namespace hatpic {
+
+class SampleBuffer
+{
+public:
+    static constexpr qsizetype kDefaultCapacity = 120'000; //!< 120 s at 1 kHz [samples]
+    static constexpr double kRestartGap = 0.5;             //!< spacing after a clock restart [s]
+
+    explicit SampleBuffer(qsizetype capacity = kDefaultCapacity);
+
+    void append(const Sample &sample);
+    void append(const SampleBatch &batch);
+    void clear();
+
+    qsizetype size() const { return m_size; }
+    qsizetype capacity() const { return m_capacity; }
+    bool isEmpty() const { return m_size == 0; }
+
+    //! Index 0 is the oldest sample kept, size()−1 the newest. Indices are not checked.
+    double time(qsizetype index) const { return m_time[slot(index)]; } //!< [s]
+    double value(Channel channel, qsizetype index) const               //!< SI
+    {
+        return m_values[channelIndex(channel)][slot(index)];
+    }
+    quint16 flags(qsizetype index) const { return m_flags[slot(index)]; }
+    Sample sample(qsizetype index) const; //!< t_s is the buffer's (possibly shifted) time
+
+    double firstTime() const; //!< 0 when empty [s]
+    double lastTime() const;  //!< 0 when empty [s]
+
+    qsizetype lowerBound(double t) const; //!< first index with time ≥ t; size() if none
+    qsizetype upperBound(double t) const; //!< first index with time > t; size() if none
+    qsizetype nearest(double t) const;    //!< index closest in time to t; −1 when empty
+
+    //! Changes whenever the content changes, so a reader can tell it needs to redraw.
+    quint64 generation() const { return m_generation; }
+    quint64 appendedCount() const { return m_appended; }       //!< samples ever appended
+    quint64 overwrittenCount() const { return m_overwritten; } //!< oldest samples dropped
+    quint64 restartCount() const { return m_restarts; }        //!< clock restarts shifted
+
+private:
+    qsizetype slot(qsizetype index) const
+    {
+        const qsizetype s = m_head + index;
+        return s >= m_capacity ? s - m_capacity : s;
+    }
+
+    qsizetype m_capacity = 0;
+    qsizetype m_head = 0; //!< slot of the oldest sample
+    qsizetype m_size = 0;
+    std::vector<double> m_time;
+    std::array<std::vector<double>, kChannelCount> m_values;
+    std::vector<quint16> m_flags;
+    double m_shift = 0;     //!< added to incoming t_s after a clock restart [s]
+    double m_lastInput = 0; //!< last t_s received, before the shift [s]
+    bool m_hasInput = false;
+    quint64 m_generation = 0;
+    quint64 m_appended = 0;
+    quint64 m_overwritten = 0;
+    quint64 m_restarts = 0;
+};
+
+} // namespace hatpic
