@@ -123,17 +123,18 @@ protected:
             params = client.deviceParams();
         }
 
-        Recorder recorder;
+        // The recording is the session's own (the tuner's too): written on the link's thread,
+        // flushed every 0.5 s, with parameter events, closed cleanly if the port vanishes.
+        QObject context;
         if (!m_csvPath.isEmpty()) {
-            RecordingMetadata metadata;
-            metadata.start = QDateTime::currentDateTimeUtc();
-            metadata.device = info;
-            metadata.params = params;
-            metadata.host = host;
-            metadata.source = QStringLiteral("hatpicctl stream");
-            if (!recorder.open(m_csvPath, metadata)) {
+            client.startRecording(m_csvPath, QStringLiteral("hatpicctl stream"));
+            runner.runFor(kRecordingStartWaitS, [&] {
+                const RecordingStatus status = client.recordingStatus();
+                return status.active || !status.error.isEmpty();
+            });
+            if (!client.recordingStatus().active) {
                 printError(u"Cannot write the recording " + m_csvPath + u": " +
-                           asSentence(recorder.error()));
+                           asSentence(client.recordingStatus().error));
                 return ExitBadUsage;
             }
         } else {
@@ -142,14 +143,15 @@ protected:
 
         quint64 samples = 0;
         bool recordingFailed = false;
-        QObject context;
+        QObject::connect(&client, &DeviceClient::recordingChanged, &context,
+                         [&](const RecordingStatus &status) {
+                             if (!status.active && !status.error.isEmpty())
+                                 recordingFailed = true;
+                         });
         QObject::connect(&client, &DeviceClient::samplesReady, &context,
                          [&](const SampleBatch &batch) {
                              samples += static_cast<quint64>(batch.size());
-                             if (recorder.isOpen()) {
-                                 if (!recorder.append(batch))
-                                     recordingFailed = true;
-                             } else if (m_csvPath.isEmpty()) {
+                             if (m_csvPath.isEmpty()) {
                                  QByteArray rows;
                                  for (const Sample &sample : batch)
                                      rows += sampleCsvRow(sample);
@@ -171,6 +173,14 @@ protected:
         std::signal(SIGINT, previousInt);
         std::signal(SIGTERM, previousTerm);
 
+        // The recording covers the requested duration, not the wait for statistics below.
+        RecordingStatus recorded = client.recordingStatus();
+        if (recorded.active) {
+            client.stopRecording();
+            runner.runFor(kRecordingStartWaitS, [&] { return !client.recordingStatus().active; });
+            recorded = client.recordingStatus();
+        }
+
         // The statistics arrive periodically; wait for one more report (bounded) so the
         // figures cover the whole run.
         if (code == ExitSuccess) {
@@ -178,19 +188,13 @@ protected:
             runner.runFor(kStatsWaitS, [&] { return m_statsUpdates > before; });
         }
 
-        RecordingStatus recorded;
-        if (recorder.isOpen()) {
-            recorder.flush();
-            recorded = recorder.status();
-            recorder.close();
-        }
         flushOut();
         printStatistics(client, seconds, samples, recorded);
 
         if (code == ExitNoDevice)
             return runner.reportLoss();
-        if (recordingFailed || !recorder.error().isEmpty()) {
-            printError(u"The recording stopped: " + asSentence(recorder.error()));
+        if (recordingFailed) {
+            printError(u"The recording stopped: " + asSentence(recorded.error));
             return ExitBadUsage;
         }
         return code;
@@ -198,6 +202,7 @@ protected:
 
 private:
     static constexpr double kStatsWaitS = 1.5;
+    static constexpr double kRecordingStartWaitS = 2.0; //!< bound on opening/closing the files [s]
 
     void printStatistics(const DeviceClient &client, double seconds, quint64 samples,
                          const RecordingStatus &recorded) const

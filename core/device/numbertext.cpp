@@ -11,6 +11,8 @@ QByteArray compactNumber(double value)
         return QByteArrayLiteral("nan");
     if (std::isinf(value))
         return value > 0 ? QByteArrayLiteral("inf") : QByteArrayLiteral("-inf");
+    if (value == 0.0)
+        return QByteArrayLiteral("0"); // also −0 (e.g. −K_rec·0), which reads as noise in a table
     char buffer[32];
     std::to_chars_result result;
     const auto asFloat = static_cast<float>(value);
