@@ -67,7 +67,7 @@ ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject 
     m_slider = new QSlider(Qt::Horizontal, parentWidget);
     m_slider->setObjectName(u"slider_"_s + spec.key);
     m_slider->setRange(0, kSliderTicks);
-    m_slider->setMinimumWidth(120);
+    m_slider->setMinimumWidth(60);
     m_slider->setToolTip(tip);
 
     m_message = new QLabel(parentWidget);

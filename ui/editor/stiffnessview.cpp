@@ -68,11 +68,17 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_point->setScatterStyle(
         QCPScatterStyle(QCPScatterStyle::ssDisc, kPointColour, kPointColour, 9));
 
+    // One compact row above the plots, so it never hides the curve or the live point.
     auto *legend = new QCPLegend;
-    m_torqueRect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    m_plot->plotLayout()->insertRow(0);
+    m_plot->plotLayout()->addElement(0, 0, legend);
+    m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     legend->setLayer(u"legend"_s);
     legend->setFont(font());
-    legend->setBrush(QColor(255, 255, 255, 210));
+    legend->setBorderPen(Qt::NoPen);
+    legend->setBrush(Qt::NoBrush);
+    legend->setMargins(QMargins(4, 2, 4, 0));
     for (QCPGraph *g : {m_torque, m_deviceTorque, m_point})
         g->addToLegend(legend);
 
