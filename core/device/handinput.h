@@ -22,8 +22,8 @@ struct HandInput
     double frequency1 = 0; //!< F1 of chirp [Hz]
     double angle = 0;      //!< target of the virtual hand [rad]
 
-    static constexpr double kStepTime = 0.1;     //!< when a step happens [s]
-    static constexpr double kChirpPeriod = 10.0; //!< one linear F0→F1 sweep, then repeats [s]
+    static constexpr double kStepTime = 0.1;      //!< when a step happens [s]
+    static constexpr double kChirpPeriod = 10.0;  //!< one linear F0→F1 sweep, then repeats [s]
     static constexpr double kHandStiffness = 2.0; //!< virtual hand spring [N·m/rad]
     static constexpr double kHandDamping = 0.05;  //!< virtual hand damper [N·m·s/rad]
 

@@ -17,21 +17,22 @@
 namespace hatpic {
 
 //! Header of the CSV, in column order.
-QStringList recordingColumns(); // t_s, theta, omega, tau, tau_rec, tau_ext, tau_total, v_ref, p_ref, flags, event
+QStringList recordingColumns(); // t_s, theta, omega, tau, tau_rec, tau_ext, tau_total, v_ref,
+                                // p_ref, flags, event
 
 struct RecordingMetadata
 {
-    QDateTime start;        //!< wall-clock start (UTC)
+    QDateTime start; //!< wall-clock start (UTC)
     DeviceInfo device;
-    DeviceParams params;    //!< parameters at start
+    DeviceParams params; //!< parameters at start
     HostParams host;
-    QString source;         //!< "hatpic-tuner", "hatpicctl stream", …
+    QString source; //!< "hatpic-tuner", "hatpicctl stream", …
 };
 
 struct RecordingEvent
 {
-    double t_s = 0;  //!< sample time the event is attached to [s]
-    QString text;    //!< e.g. "K_max 0.4 → 0.6"
+    double t_s = 0; //!< sample time the event is attached to [s]
+    QString text;   //!< e.g. "K_max 0.4 → 0.6"
 };
 
 class Recorder
@@ -68,16 +69,16 @@ private:
 //! A recording read back for replay (written by the tuner or by hatpicctl stream).
 struct Recording
 {
-    RecordingMetadata metadata;         //!< defaults when the .json is missing
+    RecordingMetadata metadata; //!< defaults when the .json is missing
     bool hasMetadata = false;
     QList<Sample> samples;
-    QList<RecordingEvent> events;       //!< from the event column (and the .json)
+    QList<RecordingEvent> events; //!< from the event column (and the .json)
 };
 
 struct RecordingReadResult
 {
     std::optional<Recording> recording;
-    QString error;                      //!< "line 12: …" when the file is refused
+    QString error; //!< "line 12: …" when the file is refused
     QStringList warnings;
 };
 

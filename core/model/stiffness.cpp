@@ -18,9 +18,12 @@ StiffnessZone stiffnessZone(const DeviceParams &p, double theta)
 double recenteringStiffness(const DeviceParams &p, double theta)
 {
     switch (stiffnessZone(p, theta)) {
-    case StiffnessZone::DeadZone: return 0.0;
-    case StiffnessZone::Notch: return p.K_max;
-    case StiffnessZone::Outer: break;
+    case StiffnessZone::DeadZone:
+        return 0.0;
+    case StiffnessZone::Notch:
+        return p.K_max;
+    case StiffnessZone::Outer:
+        break;
     }
     const double a = std::abs(theta - p.theta0);
     const double kT = p.K_min + (p.K_max - p.K_min) * (1.0 - (a - p.N) / p.N);
