@@ -2,6 +2,8 @@
 
 #include "console.h"
 
+#include <cmath>
+
 namespace hatpic::cli {
 
 QByteArray sampleCsvHeader()
@@ -15,7 +17,8 @@ QByteArray sampleCsvRow(const Sample &s)
     row.reserve(220);
     for (const double value :
          {s.t_s, s.theta, s.omega, s.tau, s.tau_rec, s.tau_ext, s.tau_total, s.v_ref, s.p_ref}) {
-        row += numberText(value).toLatin1();
+        if (!std::isnan(value)) // a quantity the protocol does not carry: empty, as in recordings
+            row += numberText(value).toLatin1();
         row += ',';
     }
     row += QByteArray::number(s.flags);

@@ -968,6 +968,17 @@ void TestHatpicCtl::ptyLegacySimulator()
              qPrintable(QString::number(read.recording->samples.size())));
     QVERIFY(std::isnan(read.recording->samples.first().omega));
 
+    // To stdout, the uncarried ω and τ are empty fields too, so both CSV forms read the same.
+    const Run out = runCtl(
+        {u"stream"_s, u"--port"_s, path, u"--protocol"_s, u"legacy"_s, u"--duration"_s, u"0.7"_s});
+    QVERIFY2(out.code == 0, qPrintable(describe(out)));
+    const QList<QByteArray> lines = out.out.trimmed().split('\n');
+    QVERIFY2(lines.size() >= 2, qPrintable(describe(out)));
+    const QList<QByteArray> fields = lines[1].split(',');
+    QCOMPARE(fields.size(), 10);
+    QVERIFY2(fields[2].isEmpty() && fields[3].isEmpty(), lines[1].constData());
+    QVERIFY(!fields[1].isEmpty());
+
     sim.terminate();
     QVERIFY(sim.waitForFinished(10000));
 #endif
