@@ -40,8 +40,9 @@ int main(int argc, char *argv[])
                        "built-in simulated joystick."),
         QStringLiteral("PATH|sim"));
     const QCommandLineOption baud({QStringLiteral("b"), QStringLiteral("baud")},
-                                  QStringLiteral("Baud rate (default: 921600 for v2 and auto, "
-                                                 "115200 for legacy)."),
+                                  QStringLiteral("Baud rate (default: 921600 for v2, 115200 for "
+                                                 "legacy; auto listens at 115200, then "
+                                                 "asks at 921600)."),
                                   QStringLiteral("N"));
     const QCommandLineOption protocol(QStringLiteral("protocol"),
                                       QStringLiteral("auto (default), v2 or legacy."),

@@ -18,7 +18,8 @@ void addDeviceOptions(QCommandLineParser &parser)
         QStringLiteral("PORT")));
     parser.addOption(QCommandLineOption(
         QStringList{QStringLiteral("baud")},
-        QStringLiteral("Baud rate (default: 921600 for v2 and auto, 115200 for legacy)."),
+        QStringLiteral("Baud rate (default: 921600 for v2, 115200 for legacy; auto listens at "
+                       "115200, then asks at 921600)."),
         QStringLiteral("N")));
     parser.addOption(
         QCommandLineOption(QStringList{QStringLiteral("protocol")},

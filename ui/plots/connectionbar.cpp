@@ -35,7 +35,8 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_baud->addItem(tr("default"), 0);
     for (int rate : {921600, 1000000, 460800, 230400, 115200})
         m_baud->addItem(QString::number(rate), rate);
-    m_baud->setToolTip(tr("Baud rate; default is 921600 for v2 and auto, 115200 for legacy."));
+    m_baud->setToolTip(tr("Baud rate; default is 921600 for v2 and 115200 for legacy. Auto listens "
+                          "for the published firmware at 115200, then asks for v2 at 921600."));
 
     m_protocol = new QComboBox(this);
     m_protocol->setObjectName(QStringLiteral("protocol"));
