@@ -4,6 +4,8 @@
 
 #include <QThread>
 
+#include <limits>
+
 namespace hatpic {
 
 DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThread(this))
@@ -31,19 +33,45 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
                 m_hasParams = true;
                 Q_EMIT deviceParamsChanged(params);
             });
-    connect(m_session, &DeviceSession::samplesReady, this, &DeviceClient::samplesReady);
+    // The streams below are forwarded from the session thread (direct connections) and
+    // posted here only while few of their kind wait, so a frozen thread's queue stays bounded.
+    connect(
+        m_session, &DeviceSession::samplesReady, this,
+        [this](const SampleBatch &batch) {
+            if (!post(m_pendingBatches, kMaxPendingBatches,
+                      [this, batch] { Q_EMIT samplesReady(batch); }))
+                ++m_droppedBatches;
+        },
+        Qt::DirectConnection);
     connect(m_session, &DeviceSession::commandFinished, this, &DeviceClient::commandFinished);
-    connect(m_session, &DeviceSession::statsUpdated, this, [this](const LinkStats &stats) {
-        m_stats = stats;
-        Q_EMIT statsUpdated(stats);
-    });
-    connect(m_session, &DeviceSession::recordingChanged, this,
-            [this](const RecordingStatus &status) {
+    connect(
+        m_session, &DeviceSession::statsUpdated, this,
+        [this](const LinkStats &stats) {
+            post(m_pendingStats, kMaxPendingStats, [this, stats] {
+                m_stats = stats;
+                Q_EMIT statsUpdated(stats);
+            });
+        },
+        Qt::DirectConnection);
+    connect(
+        m_session, &DeviceSession::recordingChanged, this,
+        [this](const RecordingStatus &status) {
+            auto deliver = [this, status] {
                 m_recording = status;
                 Q_EMIT recordingChanged(status);
-            });
-    connect(m_session, &DeviceSession::deviceLog, this, &DeviceClient::deviceLog);
-
+            };
+            // Progress of a running recording may be skipped; a start, stop or error never.
+            const bool progress = status.active && status.error.isEmpty();
+            post(m_pendingRecording, progress ? kMaxPendingStats : std::numeric_limits<int>::max(),
+                 deliver);
+        },
+        Qt::DirectConnection);
+    connect(
+        m_session, &DeviceSession::deviceLog, this,
+        [this](const QString &line) {
+            post(m_pendingLogLines, kMaxPendingLogLines, [this, line] { Q_EMIT deviceLog(line); });
+        },
+        Qt::DirectConnection);
     m_thread->start(QThread::HighestPriority);
 }
 
@@ -55,6 +83,22 @@ DeviceClient::~DeviceClient()
         m_session, [s = m_session] { s->shutdown(); }, Qt::BlockingQueuedConnection);
     m_thread->quit();
     m_thread->wait();
+}
+
+template<typename Deliver>
+bool DeviceClient::post(std::atomic<int> &pending, int cap, Deliver deliver)
+{
+    if (pending.load() >= cap)
+        return false;
+    ++pending;
+    QMetaObject::invokeMethod(
+        this,
+        [&pending, deliver = std::move(deliver)] {
+            --pending;
+            deliver();
+        },
+        Qt::QueuedConnection);
+    return true;
 }
 
 void DeviceClient::connectDevice(const ConnectOptions &options)

@@ -7,6 +7,8 @@
 
 #include <QObject>
 
+#include <atomic>
+
 class QThread;
 
 namespace hatpic {
@@ -17,6 +19,12 @@ class DeviceClient : public QObject
 {
     Q_OBJECT
 public:
+    //! Deliveries that may wait on this object's thread at once; beyond that the session
+    //! drops the newest, so a frozen GUI thread never makes the event queue grow unbounded.
+    static constexpr int kMaxPendingBatches = 100;  //!< samplesReady (≥ 2 s of samples)
+    static constexpr int kMaxPendingStats = 4;      //!< statsUpdated, recording progress
+    static constexpr int kMaxPendingLogLines = 256; //!< deviceLog
+
     explicit DeviceClient(QObject *parent = nullptr);
     ~DeviceClient() override; //!< closes the session and joins its thread
 
@@ -47,6 +55,9 @@ public:
     bool hasDeviceParams() const { return m_hasParams; }
     LinkStats stats() const { return m_stats; }
     RecordingStatus recordingStatus() const { return m_recording; }
+    //! Sample batches never delivered because kMaxPendingBatches were already waiting (the
+    //! recording still has them).
+    quint64 droppedSampleBatches() const { return m_droppedBatches.load(); }
 
 Q_SIGNALS:
     void stateChanged(hatpic::SessionState state, const QString &detail);
@@ -60,6 +71,9 @@ Q_SIGNALS:
 
 private:
     quint64 nextId() { return ++m_lastId; }
+    //! Session thread: posts `deliver` to this object's thread unless `cap` deliveries counted
+    //! by `pending` already wait there. False when dropped.
+    template<typename Deliver> bool post(std::atomic<int> &pending, int cap, Deliver deliver);
 
     QThread *m_thread = nullptr;
     DeviceSession *m_session = nullptr; //!< lives on m_thread
@@ -70,6 +84,12 @@ private:
     bool m_hasParams = false;
     LinkStats m_stats;
     RecordingStatus m_recording;
+    // Shared with the session thread: only these atomics are touched from both threads.
+    std::atomic<int> m_pendingBatches{0};
+    std::atomic<int> m_pendingStats{0};
+    std::atomic<int> m_pendingRecording{0};
+    std::atomic<int> m_pendingLogLines{0};
+    std::atomic<quint64> m_droppedBatches{0};
 };
 
 } // namespace hatpic

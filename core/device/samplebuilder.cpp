@@ -17,6 +17,7 @@ void SampleBuilder::clear()
     m_lastDeviceUs = 0;
     m_lastHostUs = 0;
     m_sessionUs = 0;
+    m_referenceUs = 0;
 }
 
 void SampleBuilder::advanceClock(quint32 deviceUs, qint64 hostUs)
@@ -24,10 +25,15 @@ void SampleBuilder::advanceClock(quint32 deviceUs, qint64 hostUs)
     if (m_started) {
         // Unsigned subtraction is the modulo-2³² step of the device clock.
         const quint32 deviceStep = deviceUs - m_lastDeviceUs;
-        if (!m_discontinuity && deviceStep * 1e-6 <= kMaxDeviceStep)
+        if (!m_discontinuity && deviceStep * 1e-6 <= kMaxDeviceStep) {
             m_sessionUs += deviceStep;
-        else
+            m_referenceUs += deviceStep;
+        } else {
             m_sessionUs += static_cast<quint64>(std::max<qint64>(1, hostUs - m_lastHostUs));
+            // Not integrated across even when the host saw the samples close together
+            // (a device clock that jumped, a quick reconnect): model.md § 4 holds p_ref.
+            m_referenceUs += static_cast<quint32>(std::lround(kMaxDeviceStep * 1e6)) + 1;
+        }
     }
     m_started = true;
     m_discontinuity = false;
@@ -37,10 +43,9 @@ void SampleBuilder::advanceClock(quint32 deviceUs, qint64 hostUs)
 
 void SampleBuilder::addReference(Sample &sample)
 {
-    // The reference integrates over the session clock: device deltas within a connection,
-    // host time across gaps, so p_ref holds (and counts a gap) wherever t_s jumped.
-    const auto out =
-        m_reference.update(static_cast<std::uint32_t>(m_sessionUs), m_host, m_device, sample.theta);
+    // The reference integrates over device deltas within a connection and holds (counting a
+    // gap) wherever t_s did not follow the device clock.
+    const auto out = m_reference.update(m_referenceUs, m_host, m_device, sample.theta);
     sample.v_ref = out.v_ref;
     sample.p_ref = out.p_ref;
     if (out.gap)

@@ -61,6 +61,9 @@ private:
     quint32 m_lastDeviceUs = 0;
     qint64 m_lastHostUs = 0;
     quint64 m_sessionUs = 0; //!< session clock [µs]
+    //! Clock the reference integrates over: the device steps it follows, and a step longer
+    //! than kMaxGap wherever it did not, so p_ref holds there whatever the host time [µs]
+    quint32 m_referenceUs = 0;
 };
 
 } // namespace hatpic

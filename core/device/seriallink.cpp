@@ -63,8 +63,13 @@ bool SerialLink::isOpen() const
 
 void SerialLink::write(const QByteArray &bytes)
 {
-    if (m_port.isOpen())
-        m_port.write(bytes);
+    if (!m_port.isOpen())
+        return;
+    if (m_port.bytesToWrite() + bytes.size() > kMaxPendingWriteBytes) {
+        ++m_droppedWrites;
+        return;
+    }
+    m_port.write(bytes);
 }
 
 QString SerialLink::errorString() const

@@ -93,6 +93,7 @@ private Q_SLOTS:
     void cacheIsUpdatedBeforeSignals();
     void commandIdsComeBack();
     void frozenMainThreadDoesNotStarveTheLink();
+    void frozenMainThreadKeepsTheQueueBounded();
     void destructorClosesRecordingAndJoins();
     void disconnectReportsState();
 };
@@ -215,6 +216,38 @@ void TestDeviceClient::frozenMainThreadDoesNotStarveTheLink()
     QCOMPARE(client.stats().seqDrops, dropsBefore);
     // PINGs kept going: the round trip stayed that of a live session thread.
     QVERIFY2(client.stats().rttMaxMs < 100, qPrintable(QString::number(client.stats().rttMaxMs)));
+}
+
+void TestDeviceClient::frozenMainThreadKeepsTheQueueBounded()
+{
+    DeviceClient client;
+    int batches = 0;
+    int statsUpdates = 0;
+    connect(&client, &DeviceClient::samplesReady, this, [&](const SampleBatch &) { ++batches; });
+    connect(&client, &DeviceClient::statsUpdated, this, [&](const LinkStats &) { ++statsUpdates; });
+    client.connectDevice(simOptions());
+    QTRY_VERIFY_WITH_TIMEOUT(batches > 5, kConnectTimeoutMs);
+    QCOMPARE(client.droppedSampleBatches(), quint64(0));
+
+    // Frozen until the session had to give up on delivering: without a bound it never does,
+    // and every batch and statistics update would wait in this thread's queue.
+    QElapsedTimer frozen;
+    frozen.start();
+    while (client.droppedSampleBatches() < 10 && frozen.elapsed() < 30'000)
+        freezeThisThread(10);
+    QVERIFY2(client.droppedSampleBatches() >= 10, "no batch was dropped while frozen");
+
+    batches = 0;
+    statsUpdates = 0;
+    QCoreApplication::processEvents(); // everything that waited while frozen
+    // A few more may arrive while this runs; far fewer than the seconds frozen would give.
+    QVERIFY2(batches <= DeviceClient::kMaxPendingBatches + 10,
+             qPrintable(QString::number(batches)));
+    QVERIFY2(statsUpdates <= DeviceClient::kMaxPendingStats + 2,
+             qPrintable(QString::number(statsUpdates)));
+    // Delivery resumes once the thread runs again.
+    batches = 0;
+    QTRY_VERIFY_WITH_TIMEOUT(batches > 5, kConnectTimeoutMs);
 }
 
 void TestDeviceClient::destructorClosesRecordingAndJoins()

@@ -2,6 +2,7 @@
 // and against real pseudo-terminals (openpty + QSerialPort).
 #include "device/devicesession.h"
 #include "device/recorder.h"
+#include "device/seriallink.h"
 #include "device/simlink.h"
 #include "device/simulateddevice.h"
 #include "device/simulatorhost.h"
@@ -187,6 +188,7 @@ private Q_SLOTS:
     void detectsOverPty_data();
     void detectsOverPty();
     void openFailureNamesThePort();
+    void stalledPortKeepsWriteBufferBounded();
 };
 
 void TestDeviceSession::detectsProtocol_data()
@@ -789,6 +791,23 @@ void TestDeviceSession::openFailureNamesThePort()
     const QString error = h.detailOf(SessionState::Disconnected);
     QVERIFY2(error.contains(o.port), qPrintable(error));
     QVERIFY(h.sawState(SessionState::Opening));
+}
+
+void TestDeviceSession::stalledPortKeepsWriteBufferBounded()
+{
+    // A port that takes nothing (here: the peer never reads and no event loop runs to hand
+    // QSerialPort's buffer to the kernel) must not make the host's buffer grow.
+    PtyPeer peer;
+    QVERIFY(peer.isValid());
+    SerialLink link(peer.path(), 921600);
+    QVERIFY2(link.open(), qPrintable(link.errorString()));
+    const QByteArray frame = v2::encodeFrame(0, v2::SetFeedback{0.1f});
+    const int writes = 100'000;
+    for (int i = 0; i < writes; ++i)
+        link.write(frame);
+    QVERIFY2(link.bytesToWrite() <= SerialLink::kMaxPendingWriteBytes,
+             qPrintable(QString::number(link.bytesToWrite())));
+    QVERIFY(link.droppedWrites() > 0);
 }
 
 QTEST_GUILESS_MAIN(TestDeviceSession)

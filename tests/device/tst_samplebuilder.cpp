@@ -34,6 +34,8 @@ private Q_SLOTS:
     void clockFollowsDeviceSteps_data();
     void clockFollowsDeviceSteps();
     void gapUsesHostTimeAndHoldsReference();
+    void unfollowedStepHoldsReferenceEvenWhenHostStepIsShort_data();
+    void unfollowedStepHoldsReferenceEvenWhenHostStepIsShort();
     void reconnectUsesHostTime();
     void referenceIntegratesOverDeviceTime();
     void resetReference();
@@ -86,6 +88,39 @@ void TestSampleBuilder::gapUsesHostTimeAndHoldsReference()
     const Sample s3 = b.fromTelemetry(telemetry(502000, 0.5f), 601000);
     QCOMPARE(s3.flags & kFlagReferenceGap, 0);
     QVERIFY(s3.p_ref > s2.p_ref);
+}
+
+void TestSampleBuilder::unfollowedStepHoldsReferenceEvenWhenHostStepIsShort_data()
+{
+    QTest::addColumn<quint32>("second"); // device clock of the second sample; first is 1000 µs
+    QTest::addColumn<bool>("reconnect");
+    QTest::addColumn<qint64>("hostStep"); // [µs]
+    QTest::newRow("device clock jumped 1 s, host 10 ms") << 1'001'000u << false << qint64(10'000);
+    QTest::newRow("device clock went back, host 30 ms") << 0u << false << qint64(30'000);
+    QTest::newRow("reconnect 1 ms ahead, host 100 ms") << 2000u << true << qint64(100'000);
+}
+
+void TestSampleBuilder::unfollowedStepHoldsReferenceEvenWhenHostStepIsShort()
+{
+    // model.md § 4: a device step over 0.25 s (or a new connection's unrelated clock) is not
+    // integrated, whatever the host time between the two receptions.
+    QFETCH(quint32, second);
+    QFETCH(bool, reconnect);
+    QFETCH(qint64, hostStep);
+    SampleBuilder b;
+    b.fromTelemetry(telemetry(0, 0.5f), 0);
+    const Sample s1 = b.fromTelemetry(telemetry(1000, 0.5f), 1000);
+    QVERIFY(s1.p_ref > 0);
+    if (reconnect)
+        b.markDiscontinuity();
+    const Sample s2 = b.fromTelemetry(telemetry(second, 0.5f), 1000 + hostStep);
+    QCOMPARE(s2.t_s, (1000 + hostStep) * 1e-6); // t_s follows the host here
+    QVERIFY(s2.flags & kFlagReferenceGap);
+    QCOMPARE(s2.p_ref, s1.p_ref);
+    QCOMPARE(b.referenceGaps(), quint64(1));
+    const Sample s3 = b.fromTelemetry(telemetry(second + 1000, 0.5f), 2000 + hostStep);
+    QCOMPARE(s3.flags & kFlagReferenceGap, 0);
+    QVERIFY(std::abs(s3.p_ref - s2.p_ref - 0.25 * 0.001) < 1e-12); // v_ref = v_max/2·θ, 1 ms
 }
 
 void TestSampleBuilder::reconnectUsesHostTime()
