@@ -5,15 +5,18 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
+#include <QSet>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace hatpic {
 
@@ -507,15 +510,32 @@ void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
     m.host.tau_limit = host.value(u"tau_limit").toDouble(m.host.tau_limit);
     rec.hasMetadata = true;
 
-    // Events the CSV lost (e.g. a cut-off last line) are taken from the metadata.
+    // Events the CSV lost (e.g. a cut-off last line) are taken from the metadata. The CSV's
+    // event times are looked up per text in sorted order, so a metadata file holding very many
+    // events costs O(n log n), not a comparison of every pair.
+    QHash<QString, std::vector<double>> csvTimes;
+    for (const RecordingEvent &x : std::as_const(rec.events))
+        csvTimes[x.text].push_back(x.t_s);
+    for (auto it = csvTimes.begin(); it != csvTimes.end(); ++it)
+        std::sort(it->begin(), it->end());
+    QSet<QPair<QString, double>> fromMetadata; //!< listed twice in the .json: kept once
     for (const QJsonValue &v : root.value(u"events").toArray()) {
         const QJsonObject e = v.toObject();
         RecordingEvent event{e.value(u"t_s").toDouble(), e.value(u"text").toString()};
-        const bool known = std::any_of(rec.events.cbegin(), rec.events.cend(), [&](const auto &x) {
-            return x.text == event.text && std::abs(x.t_s - event.t_s) < 1e-9;
-        });
-        if (!known && !event.text.isEmpty())
+        if (event.text.isEmpty())
+            continue;
+        const auto found = csvTimes.constFind(event.text);
+        bool known = false;
+        if (found != csvTimes.cend()) {
+            for (auto at = std::lower_bound(found->cbegin(), found->cend(), event.t_s - 1e-9);
+                 !known && at != found->cend() && *at <= event.t_s + 1e-9; ++at) {
+                known = std::abs(*at - event.t_s) < 1e-9;
+            }
+        }
+        if (!known && !fromMetadata.contains({event.text, event.t_s})) {
+            fromMetadata.insert({event.text, event.t_s});
             rec.events.append(event);
+        }
     }
     std::stable_sort(rec.events.begin(), rec.events.end(),
                      [](const auto &a, const auto &b) { return a.t_s < b.t_s; });
@@ -592,7 +612,7 @@ RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
                 const QString name = QString::fromUtf8(fields[c].trimmed());
                 const int known = static_cast<int>(columns.indexOf(name));
                 if (known < 0) {
-                    out.warnings << u"line 1: unknown column \"" % name % u"\" ignored.";
+                    warn(u"line 1: unknown column \"" % name % u"\" ignored.");
                     continue;
                 }
                 if (index[known] >= 0)
@@ -606,8 +626,8 @@ RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
             }
             for (int k = 0; k < ColCount; ++k) {
                 if (index[k] < 0 && k != ColEvent) {
-                    out.warnings << u"line 1: column \"" % columns[k] %
-                                        u"\" missing; its values read as empty.";
+                    warn(u"line 1: column \"" % columns[k] %
+                         u"\" missing; its values read as empty.");
                 }
             }
             haveHeader = true;

@@ -1,6 +1,7 @@
 // Recorder (CSV + JSON writing) and readRecording (parsing back).
 #include "device/recorder.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -98,6 +99,9 @@ private Q_SLOTS:
     void refusesMalformedCsv();
     void refusesOversizedFile();
     void brokenMetadataIsAWarning();
+    void hostileMetadataIsAWarning_data();
+    void hostileMetadataIsAWarning();
+    void manyMetadataEventsReadInBoundedTime();
     void neverCrashesOnMutatedFiles();
 };
 
@@ -405,6 +409,13 @@ void TestRecorder::readsHandWrittenCsv_data()
                                     << QStringLiteral("line 3: t_s goes back");
     QTest::newRow("nan and inf words")
         << QByteArray(kHeader + "0,nan,inf,-inf,,,,,,0,\n") << 1 << QString();
+    QTest::newRow("thousands of unknown columns: warnings bounded")
+        << QByteArray("t_s,theta" + QByteArray(",x").repeated(4000) + "\n0,1" +
+                      QByteArray(",").repeated(4000) + "\n")
+        << 1 << QStringLiteral("(further warnings left out)");
+    QTest::newRow("header only without line end") << kHeader.chopped(1) << 0 << QString();
+    QTest::newRow("CR LF blank lines")
+        << QByteArray(kHeader + "\r\n\r\n0,1,,,,,,,,0,\r\n\r\n") << 1 << QString();
 }
 
 void TestRecorder::readsHandWrittenCsv()
@@ -462,6 +473,17 @@ void TestRecorder::refusesMalformedCsv_data()
     for (int i = 0; i < 3000; ++i)
         binary.append(char((i * 37) & 0xFF));
     QTest::newRow("binary data") << binary << QStringLiteral("line ");
+    QTest::newRow("over-long last line without line end")
+        << QByteArray(kHeader + QByteArray(20000, '1')) << QStringLiteral("line 2: longer than");
+    QTest::newRow("over-long header")
+        << QByteArray("t_s,theta" + QByteArray(",x").repeated(5000) + "\n")
+        << QStringLiteral("line 1: longer than");
+    QTest::newRow("unclosed quote in header")
+        << QByteArray("\"t_s,theta\n0,1\n") << QStringLiteral("line 1: a quoted field");
+    QTest::newRow("NUL bytes in a number")
+        << QByteArray(kHeader + QByteArray("0,1\0\0,,,,,,,,0,\n", 17))
+        << QStringLiteral("line 2: column theta");
+    QTest::newRow("BOM only") << QByteArray("\xEF\xBB\xBF") << QStringLiteral("no header row");
 }
 
 void TestRecorder::refusesMalformedCsv()
@@ -500,6 +522,67 @@ void TestRecorder::brokenMetadataIsAWarning()
     QVERIFY(!r.recording->hasMetadata);
     QVERIFY2(r.warnings.join(u'\n').contains(u"not valid JSON"),
              qPrintable(r.warnings.join(u'\n')));
+}
+
+void TestRecorder::hostileMetadataIsAWarning_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("warning");
+    QByteArray binary;
+    for (int i = 0; i < 4000; ++i)
+        binary.append(char((i * 101 + 7) & 0xFF));
+    QTest::newRow("binary junk") << binary << QStringLiteral("not valid JSON");
+    QTest::newRow("array, not an object") << QByteArray("[1,2,3]") << QStringLiteral("not valid");
+    QTest::newRow("deeply nested") << QByteArray(100000, '[') << QStringLiteral("not valid JSON");
+    QTest::newRow("other format tag")
+        << QByteArray("{\"format\": \"something-else\"}") << QStringLiteral("not HATPIC");
+    QTest::newRow("over 16 MiB") << QByteArray(16 * 1024 * 1024 + 1, ' ')
+                                 << QStringLiteral("too large");
+}
+
+void TestRecorder::hostileMetadataIsAWarning()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, warning);
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("j.csv"));
+    QVERIFY(writeFile(csv, QByteArray(kHeader + "0,1,,,,,,,,0,\n")));
+    QVERIFY(writeFile(Recorder::metadataPath(csv), json));
+    const RecordingReadResult r = readRecording(csv);
+    QVERIFY2(r.recording, qPrintable(r.error));
+    QCOMPARE(r.recording->samples.size(), 1);
+    QVERIFY(!r.recording->hasMetadata);
+    QVERIFY2(r.warnings.join(u'\n').contains(warning), qPrintable(r.warnings.join(u'\n')));
+}
+
+void TestRecorder::manyMetadataEventsReadInBoundedTime()
+{
+    // A .json under the size limit can list hundreds of thousands of events; merging them with
+    // the CSV's events must not compare every pair (that took minutes).
+    constexpr int kEvents = 300000;
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("e.csv"));
+    QVERIFY(writeFile(csv, QByteArray(kHeader + "0,1,,,,,,,,0,\"e0\"\n")));
+    QByteArray json = "{\"format\":\"hatpic-recording\",\"version\":1,\"events\":[";
+    for (int i = 0; i < kEvents; ++i) {
+        if (i > 0)
+            json += ',';
+        json +=
+            "{\"t_s\":" + QByteArray::number(i) + ",\"text\":\"e" + QByteArray::number(i) + "\"}";
+    }
+    json += "]}";
+    QVERIFY(json.size() < 16 * 1024 * 1024);
+    QVERIFY(writeFile(Recorder::metadataPath(csv), json));
+    QElapsedTimer timer;
+    timer.start();
+    const RecordingReadResult r = readRecording(csv);
+    const qint64 ms = timer.elapsed();
+    QVERIFY2(r.recording, qPrintable(r.error));
+    QVERIFY(r.recording->hasMetadata);
+    QCOMPARE(r.recording->events.size(), kEvents); // "e0" at 0 s is in both: listed once
+    QCOMPARE(r.recording->events.last().text, QStringLiteral("e299999"));
+    // Generous bound: the merge is O(n log n) and takes well under a second here.
+    QVERIFY2(ms < 30000, qPrintable(QString::number(ms)));
 }
 
 void TestRecorder::neverCrashesOnMutatedFiles()
