@@ -191,6 +191,9 @@ private Q_SLOTS:
     void ptySimulator();
     void ptyLegacySimulator();
     void ptyLinkLostDuringStream();
+    void ptySaveStorageError();
+    void streamInterruptedEndsCleanly_data();
+    void streamInterruptedEndsCleanly();
 
 private:
     QString writeFile(const QString &name, const QByteArray &content);
@@ -608,6 +611,11 @@ void TestHatpicCtl::simulateIdealMatchesModel()
         QVERIFY2(closeTo(row[7], v, 1e-12), qPrintable(where + u": v_ref"_s));
         QVERIFY2(closeTo(row[8], pRef, 1e-9), qPrintable(where + u": p_ref"_s));
         const int flags = int(row[9]);
+        const QString zone = stiffnessName(state.theta, p);
+        QVERIFY2(bool(flags & 0x01) == (zone == u"dead zone"),
+                 qPrintable(where + u": flags "_s + QString::number(flags)));
+        QVERIFY2(bool(flags & 0x02) == (zone == u"notch"),
+                 qPrintable(where + u": flags "_s + QString::number(flags)));
         QCOMPARE(bool(flags & 0x04), std::abs(tauRec) > host.tau_limit); // saturated
         QCOMPARE(flags & 0x08, 0);                                       // never stale offline
 
@@ -1021,6 +1029,66 @@ void TestHatpicCtl::ptyLinkLostDuringStream()
     QVERIFY2(read.recording.has_value(), qPrintable(read.error));
     QVERIFY(!read.recording->samples.isEmpty());
 #endif
+}
+
+void TestHatpicCtl::ptySaveStorageError()
+{
+#ifndef HATPIC_SIM_PATH
+    QSKIP("hatpic-sim is not built");
+#else
+    // A state file in a folder that does not exist: SAVE_PARAMS fails on the device, which
+    // answers STORAGE_ERROR, and hatpicctl exits with 2 (docs/cli.md, exit codes).
+    QProcess sim;
+    sim.setProgram(QStringLiteral(HATPIC_SIM_PATH));
+    sim.setArguments({u"--state"_s, m_dir.filePath(u"no-such-folder/state.json"_s)});
+    sim.start();
+    QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
+    QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
+    const QString path = QString::fromLocal8Bit(sim.readLine()).trimmed();
+
+    const Run save = runCtl({u"save"_s, u"--port"_s, path});
+    sim.terminate();
+    QVERIFY(sim.waitForFinished(10000));
+    QVERIFY2(save.code == 2, qPrintable(describe(save)));
+    QVERIFY2(isOneLine(save.err), qPrintable(describe(save)));
+    QVERIFY2(save.err.contains("STORAGE_ERROR"), qPrintable(describe(save)));
+    QVERIFY(save.out.isEmpty());
+#endif
+}
+
+void TestHatpicCtl::streamInterruptedEndsCleanly_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::newRow("SIGINT") << int(SIGINT);
+    QTest::newRow("SIGTERM") << int(SIGTERM);
+}
+
+void TestHatpicCtl::streamInterruptedEndsCleanly()
+{
+    // Without --duration, stream runs until SIGINT or SIGTERM; either ends it cleanly: the
+    // recording is closed, the statistics are printed, exit 0.
+    QFETCH(int, signal);
+    const QString csv = m_dir.filePath(u"interrupted-"_s + QString::number(signal) + u".csv"_s);
+    QProcess ctl;
+    ctl.setProgram(QStringLiteral(HATPICCTL_PATH));
+    ctl.setArguments({u"stream"_s, u"--port"_s, u"sim"_s, u"--csv"_s, csv});
+    ctl.start();
+    QVERIFY2(ctl.waitForStarted(5000), qPrintable(ctl.errorString()));
+    // Streaming has begun once rows reach the file (the recorder flushes every 0.5 s).
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(csv).size() > 1000, 15000);
+
+    QCOMPARE(::kill(pid_t(ctl.processId()), signal), 0);
+    QVERIFY(ctl.waitForFinished(15000));
+    const QByteArray err = ctl.readAllStandardError();
+    QCOMPARE(ctl.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(ctl.exitCode() == 0, err.constData());
+    QVERIFY2(err.contains("frames/s") && err.contains("recording"), err.constData());
+    QVERIFY2(!err.contains("hatpicctl: "), err.constData());
+    QVERIFY(ctl.readAllStandardOutput().isEmpty());
+
+    const RecordingReadResult read = readRecording(csv);
+    QVERIFY2(read.recording.has_value(), qPrintable(read.error));
+    QVERIFY(!read.recording->samples.isEmpty());
 }
 
 QTEST_GUILESS_MAIN(TestHatpicCtl)
