@@ -20,12 +20,16 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QLabel>
 #include <QProcess>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -103,6 +107,8 @@ private Q_SLOTS:
     void degreesToggleReachesEveryView();
     void settingsPersist();
     void keyboardShortcuts();
+    void narrowWindowKeepsStateTagVisible();
+    void narrowReplayBarKeepsItsSlider();
 
 private:
     void connectSim(ProtocolChoice protocol = ProtocolChoice::V2);
@@ -366,13 +372,25 @@ void TestMainWindow::abSwitchKeepsBothTunings()
 
 void TestMainWindow::legacyDeviceCannotPush()
 {
+    // The published firmware reports no torque limit: the profile's tau_limit stays (it is
+    // neither replaced by a built-in guess nor marked as an unsaved change) and is the one the
+    // legacy feedback uses.
+    ParameterEditor *editor = m_window->parameterEditor();
+    HostParams host = editor->hostParams();
+    host.tau_limit = 0.3;
+    editor->setParams(editor->params(), host, QStringLiteral("tau_limit"));
+    QCOMPARE(editor->hostParams().tau_limit, 0.3);
     ConnectOptions options = simOptions(ProtocolChoice::Auto);
     options.sim.protocol = WireProtocol::Legacy;
     m_window->connectTo(options);
     QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
     QCOMPARE(m_window->client()->deviceInfo().protocol, WireProtocol::Legacy);
     QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("legacy")));
-    ParameterEditor *editor = m_window->parameterEditor();
+    QVERIFY2(m_window->linkStatus()->identityText().contains(
+                 QStringLiteral("τ limit 0.3 N·m (assumed)")),
+             qPrintable(m_window->linkStatus()->identityText()));
+    QCOMPARE(m_window->client()->deviceInfo().tauLimit, 0.3);
+    QCOMPARE(editor->hostParams().tau_limit, 0.3);
     QVERIFY(!editor->canPush());
     QVERIFY(!editor->pushAction()->isEnabled());
     QVERIFY(waitForSamples(5)); // legacy streams at ~5 Hz
@@ -525,6 +543,14 @@ void TestMainWindow::replayShowsRecordingAndReturnsToLive()
     QTRY_VERIFY_WITH_TIMEOUT(replay->position() > 103.5, 10000);
     m_window->pauseAction()->trigger();
     QVERIFY(!replay->isPlaying());
+    QVERIFY(m_window->pauseAction()->isChecked());
+    // The bar's ▶ plays too, and the Play / Pause action follows it.
+    QTest::mouseClick(bar->playButton(), Qt::LeftButton);
+    QVERIFY(replay->isPlaying());
+    QVERIFY(!m_window->pauseAction()->isChecked());
+    QTest::mouseClick(bar->playButton(), Qt::LeftButton);
+    QVERIFY(!replay->isPlaying());
+    QVERIFY(m_window->pauseAction()->isChecked());
 
     // One click back to live.
     QTest::mouseClick(bar->liveButton(), Qt::LeftButton);
@@ -591,6 +617,10 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
     QVERIFY(m_window->linkBanner()->isVisible());
     QVERIFY2(m_window->linkBanner()->text().contains(QStringLiteral("Reconnecting")),
              qPrintable(m_window->linkBanner()->text()));
+    // Said once, in the banner, not clipped again in the status bar.
+    const QString message = m_window->statusBar()->currentMessage();
+    QVERIFY2(message.isEmpty() || !m_window->linkBanner()->text().contains(message),
+             qPrintable(message));
     const qsizetype kept = m_window->liveBuffer().size();
     QVERIFY(kept >= 500);
     m_window->plotPanel()->repaintNow();
@@ -645,6 +675,19 @@ void TestMainWindow::settingsPersist()
 
 void TestMainWindow::keyboardShortcuts()
 {
+    {
+        // Every shortcut is in view at once: the table needs no scrolling.
+        ShortcutsDialog dialog(m_window->shortcutActions(), m_window.get());
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        auto *table = dialog.findChild<QTableWidget *>();
+        QVERIFY(table);
+        QVERIFY(table->rowCount() >= 15);
+        QVERIFY2(!table->verticalScrollBar()->isVisible(),
+                 qPrintable(QStringLiteral("%1 rows in %2 px")
+                                .arg(table->rowCount())
+                                .arg(table->viewport()->height())));
+    }
     const QStringList lines = ShortcutsDialog::describe(m_window->shortcutActions());
     auto has = [&](const QKeySequence &key) {
         const QString text = key.toString(QKeySequence::NativeText);
@@ -671,6 +714,71 @@ void TestMainWindow::keyboardShortcuts()
     QVERIFY(!m_window->isLivePaused());
     QTest::keyClick(m_window.get(), Qt::Key_K, Qt::ControlModifier);
     QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Disconnected, kConnectMs);
+}
+
+void TestMainWindow::narrowWindowKeepsStateTagVisible()
+{
+    // On a laptop-sized window the long device identity must give way (elided), not push the
+    // state tag — the one place LINK LOST shows — into the toolbar's overflow menu.
+    m_window->resize(1000, 700);
+    connectSim();
+    auto *tag = m_window->findChild<QLabel *>(QStringLiteral("linkState"));
+    QVERIFY(tag);
+    QCOMPARE(tag->text(), QStringLiteral("connected"));
+    QTRY_VERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("τ limit")));
+    // Let the toolbars lay out the new identity (nested layouts: a few rounds).
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QVERIFY(tag->isVisible());
+    const QRect inWindow(tag->mapTo(m_window.get(), QPoint(0, 0)), tag->size());
+    QVERIFY2(m_window->rect().contains(inWindow),
+             qPrintable(QStringLiteral("tag at x %1..%2, window %3 wide")
+                            .arg(inWindow.left())
+                            .arg(inWindow.right())
+                            .arg(m_window->width())));
+    auto *identity = m_window->findChild<QLabel *>(QStringLiteral("deviceIdentity"));
+    QVERIFY(identity);
+    QTRY_VERIFY(identity->isVisible());
+    // The full identity stays available (tooltip, identityText()).
+    QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("τ limit")));
+    QCOMPARE(identity->toolTip(), m_window->linkStatus()->identityText());
+}
+
+void TestMainWindow::narrowReplayBarKeepsItsSlider()
+{
+    // A long file name and source must not squeeze the scrub slider to nothing, nor widen the
+    // centre of a laptop-sized window at the editor's expense.
+    const QString path = m_dir.filePath(
+        QStringLiteral("a-rather-long-recording-name-from-the-morning-session-trial-07.csv"));
+    {
+        Recorder recorder;
+        RecordingMetadata meta;
+        meta.start = QDateTime::currentDateTimeUtc();
+        meta.source = QStringLiteral("hatpicctl stream --csv on the lab bench computer");
+        QVERIFY2(recorder.open(path, meta), qPrintable(recorder.error()));
+        SampleBatch batch;
+        for (int i = 0; i < 3000; ++i) {
+            Sample s;
+            s.t_s = i * 0.001;
+            batch.append(s);
+        }
+        QVERIFY(recorder.append(batch));
+        recorder.close();
+    }
+    m_window->resize(1000, 700);
+    QString error;
+    QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
+    ReplayBar *bar = m_window->replayBar();
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QVERIFY(bar->isVisible());
+    QVERIFY2(bar->slider()->width() >= 120, qPrintable(QString::number(bar->slider()->width())));
+    QVERIFY2(bar->minimumSizeHint().width() < 600,
+             qPrintable(QString::number(bar->minimumSizeHint().width())));
+    auto *title = bar->findChild<QLabel *>(QStringLiteral("replayTitle"));
+    QVERIFY(title);
+    QVERIFY(title->toolTip().contains(QStringLiteral("morning-session-trial-07.csv")));
+    QVERIFY(title->toolTip().contains(QStringLiteral("lab bench")));
 }
 
 QTEST_MAIN(TestMainWindow)

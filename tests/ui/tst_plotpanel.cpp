@@ -57,6 +57,7 @@ private Q_SLOTS:
     void mouseMoveSetsCursor();
     void bandsFollowDeviceParams();
     void eventsAreMarked();
+    void eventLabelAtTheRightEdgeStaysReadable();
     void autoscaleFitsAndFixedStays();
     void exportsImage_data();
     void exportsImage();
@@ -271,6 +272,41 @@ void TestPlotPanel::eventsAreMarked()
     QCOMPARE(m_panel->events().size(), 3);
     m_panel->setEvents({});
     QCOMPARE(m_panel->customPlot()->itemCount(), before);
+}
+
+void TestPlotPanel::eventLabelAtTheRightEdgeStaysReadable()
+{
+    // A live push is marked at the newest sample, i.e. at the right edge of the view: its label
+    // must turn to the left of the line instead of being cut off by the plot's edge.
+    fill(*m_buffer, 0, 15);
+    m_panel->repaintNow();
+    m_panel->repaintNow(); // laid out at this size
+    const QString late = QStringLiteral("K_max 0.3 → 0.6; N 0.1 → 0.12");
+    const QString early = QStringLiteral("K_max 0.4 → 0.3");
+    m_panel->setEvents({{m_panel->viewStart() + 1, early}, {m_buffer->lastTime(), late}});
+    m_panel->repaintNow();
+    QCPAxisRect *angle = m_panel->axisRect(PlotPanel::Plot::Angle);
+    QCPAxis *x = angle->axis(QCPAxis::atBottom);
+    int checked = 0;
+    for (int i = 0; i < m_panel->customPlot()->itemCount(); ++i) {
+        auto *label = qobject_cast<QCPItemText *>(m_panel->customPlot()->item(i));
+        if (!label || (label->text() != late && label->text() != early))
+            continue;
+        const double line = x->coordToPixel(label->position->coords().x());
+        const double left = label->topLeft->pixelPosition().x();
+        const double right = label->topRight->pixelPosition().x();
+        QVERIFY2(left >= angle->left() - 1 && right <= angle->right() + 1,
+                 qPrintable(QStringLiteral("%1: %2…%3 outside %4…%5")
+                                .arg(label->text())
+                                .arg(left)
+                                .arg(right)
+                                .arg(angle->left())
+                                .arg(angle->right())));
+        // Beside its line, not somewhere else.
+        QVERIFY(std::abs(left - line) <= 1 || std::abs(right - line) <= 1);
+        ++checked;
+    }
+    QCOMPARE(checked, 2);
 }
 
 void TestPlotPanel::autoscaleFitsAndFixedStays()

@@ -2,6 +2,7 @@
 #include "plots/recordingcontrols.h"
 
 #include <QAction>
+#include <QDir>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -15,6 +16,8 @@ class TestRecordingControls : public QObject
 private Q_SLOTS:
     void initTestCase();
     void suggestsTimestampedName();
+    void dialogStartsInAnExistingFolder_data();
+    void dialogStartsInAnExistingFolder();
     void startAndStop();
     void cancelledChooserStartsNothing();
     void showsFailure();
@@ -37,6 +40,24 @@ void TestRecordingControls::suggestsTimestampedName()
     QVERIFY(path.startsWith(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)));
     QVERIFY(RecordingControls::suggestedPath(QStringLiteral("/data/runs"))
                 .startsWith(QStringLiteral("/data/runs/hatpic-")));
+}
+
+void TestRecordingControls::dialogStartsInAnExistingFolder_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("expected");
+    const QString home = QDir::home().filePath(QStringLiteral("hatpic-1.csv"));
+    QTest::newRow("existing folder kept") << QDir::temp().filePath(QStringLiteral("hatpic-1.csv"))
+                                          << QDir::temp().filePath(QStringLiteral("hatpic-1.csv"));
+    QTest::newRow("missing Documents falls back to home")
+        << QStringLiteral("/nonexistent-hatpic/Documents/hatpic-1.csv") << home;
+}
+
+void TestRecordingControls::dialogStartsInAnExistingFolder()
+{
+    QFETCH(QString, path);
+    QFETCH(QString, expected);
+    QCOMPARE(RecordingControls::inExistingFolder(path), expected);
 }
 
 void TestRecordingControls::startAndStop()

@@ -54,6 +54,7 @@ private Q_SLOTS:
     void rangeAroundCenter_data();
     void rangeAroundCenter();
     void deviceCurveDashed();
+    void replayLegendNamesTheRecording();
     void operatingPointMoves();
     void degreesOnlyScaleTheAxis();
     void renders();
@@ -162,6 +163,19 @@ void TestStiffnessView::rangeAroundCenter()
     const auto pts = points(view.torqueGraph());
     QCOMPARE(pts.first().x(), theta0 - half);
     QCOMPARE(pts.last().x(), theta0 + half);
+}
+
+void TestStiffnessView::replayLegendNamesTheRecording()
+{
+    // In replay the dashed curve is not the device's and the dot is not live.
+    StiffnessView view;
+    QCOMPARE(view.deviceTorqueGraph()->name(), u"device"_s);
+    view.setReplaying(true);
+    QCOMPARE(view.deviceTorqueGraph()->name(), u"recording"_s);
+    QVERIFY(view.operatingPointGraph()->name().contains(u"playhead"_s));
+    view.setReplaying(false);
+    QCOMPARE(view.deviceTorqueGraph()->name(), u"device"_s);
+    QVERIFY(view.operatingPointGraph()->name().startsWith(u"live"_s));
 }
 
 void TestStiffnessView::deviceCurveDashed()

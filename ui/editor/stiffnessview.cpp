@@ -122,6 +122,14 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     rebuild();
 }
 
+void StiffnessView::setReplaying(bool replaying)
+{
+    m_deviceTorque->setName(replaying ? tr("recording") : tr("device"));
+    m_deviceStiffness->setName(m_deviceTorque->name());
+    m_point->setName(replaying ? tr("at the playhead (θ, τ_rec)") : tr("live (θ, measured τ_rec)"));
+    requestReplot();
+}
+
 double StiffnessView::halfRange(const DeviceParams &params)
 {
     const double r = std::max(2.5 * params.N, 0.5);

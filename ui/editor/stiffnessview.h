@@ -38,6 +38,9 @@ public:
     bool angleInDegrees() const { return m_degrees; }
     //! Draws ±tau_limit on the torque plot [N·m].
     void setTauLimit(double tauLimit);
+    //! In replay the dashed curve is the recording's parameters and the dot the sample at the
+    //! playhead: the legend says so instead of "device" and "live".
+    void setReplaying(bool replaying);
 
     //! Half-width of the shown θ range around θ0: max(2.5·N, 0.5) rad, at most π/2 [rad].
     static double halfRange(const DeviceParams &params);

@@ -1,5 +1,6 @@
 #include "plots/linkstatuswidget.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 
@@ -42,6 +43,11 @@ LinkStatusWidget::LinkStatusWidget(QWidget *parent) : QWidget(parent)
     m_identity = new QLabel(this);
     m_identity->setObjectName(QStringLiteral("deviceIdentity"));
     m_identity->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // The identity takes the room left and is elided in a narrow window, so that the state tag
+    // (LINK LOST) never slides into the toolbar's overflow menu.
+    m_identity->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_identity->installEventFilter(this);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 0, 4, 0);
     layout->addWidget(m_state);
@@ -73,13 +79,31 @@ QString LinkStatusWidget::describe(const DeviceInfo &info)
             QString::number(info.deviceId, 16).toUpper().rightJustified(8, u'0'));
     if (!info.simulated && !info.port.isEmpty())
         parts << (info.baud > 0 ? tr("%1 @ %2").arg(info.port).arg(info.baud) : info.port);
-    parts << tr("τ limit %1 N·m").arg(info.tauLimit, 0, 'g', 3);
+    if (info.protocol == WireProtocol::V2)
+        parts << tr("τ limit %1 N·m").arg(info.tauLimit, 0, 'g', 3);
+    else // the published firmware does not report it: the host assumes it
+        parts << tr("τ limit %1 N·m (assumed)").arg(info.tauLimit, 0, 'g', 3);
     return parts.join(QStringLiteral(" · "));
 }
 
 void LinkStatusWidget::setDeviceInfo(const std::optional<DeviceInfo> &info)
 {
-    m_identity->setText(info ? describe(*info) : tr("no device"));
+    m_identityText = info ? describe(*info) : tr("no device");
+    m_identity->setToolTip(m_identityText);
+    elideIdentity();
+}
+
+void LinkStatusWidget::elideIdentity()
+{
+    m_identity->setText(m_identity->fontMetrics().elidedText(m_identityText, Qt::ElideRight,
+                                                             m_identity->contentsRect().width()));
+}
+
+bool LinkStatusWidget::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_identity && event->type() == QEvent::Resize)
+        elideIdentity();
+    return QWidget::eventFilter(watched, event);
 }
 
 QString LinkStatusWidget::stateText() const
@@ -89,7 +113,7 @@ QString LinkStatusWidget::stateText() const
 
 QString LinkStatusWidget::identityText() const
 {
-    return m_identity->text();
+    return m_identityText;
 }
 
 } // namespace hatpic

@@ -27,9 +27,15 @@ public:
     //! One line describing a device, as the title bar tag and the status show it.
     static QString describe(const DeviceInfo &info);
 
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
+    void elideIdentity();
+
     QLabel *m_state = nullptr;
     QLabel *m_identity = nullptr;
+    QString m_identityText; //!< in full; the label may show it elided
 };
 
 } // namespace hatpic

@@ -135,6 +135,8 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(m_recording, &RecordingControls::stopRequested, m_client, &DeviceClient::stopRecording);
     connect(m_replay, &ReplayController::activeChanged, this, &MainWindow::onReplayActive);
     connect(m_replay, &ReplayController::positionChanged, this, &MainWindow::onReplayPosition);
+    // The replay bar's ▶ and the end of the recording change the state too.
+    connect(m_replay, &ReplayController::playingChanged, this, &MainWindow::updateActions);
     connect(m_replayBar, &ReplayBar::backToLiveRequested, this, &MainWindow::backToLive);
     connect(m_plots, &PlotPanel::pausedChanged, this, [this](bool paused) {
         m_pauseAction->setChecked(paused);
@@ -400,6 +402,10 @@ void MainWindow::connectTo(const ConnectOptions &options)
             opts.sim.hand = m_simPanel->hand();
         m_simPanel->setHand(opts.sim.hand);
     }
+    // The published firmware does not report its torque limit: the editor's tau_limit (the
+    // profile's) scales the legacy feedback and stays what it is.
+    if (m_editor->hostParams().tau_limit > 0)
+        opts.legacy.tauLimit = m_editor->hostParams().tau_limit;
     m_port = opts.port;
     m_connection->setOptions(opts.port, opts.baud, opts.protocol);
     m_client->setHostParams(m_editor->hostParams());
@@ -435,7 +441,9 @@ void MainWindow::onStateChanged(SessionState state, const QString &detail)
             m_stiffness->clearOperatingPoint();
         }
     }
-    if (!detail.isEmpty())
+    // The banner already says why the link was lost or refused; the status bar, which clips a
+    // long text against the link statistics, only repeats the other details.
+    if (!detail.isEmpty() && m_banner->text().isEmpty())
         statusBar()->showMessage(detail, kStatusMs);
     updateActions();
 }
@@ -443,7 +451,8 @@ void MainWindow::onStateChanged(SessionState state, const QString &detail)
 void MainWindow::onDeviceInfo(const DeviceInfo &info)
 {
     m_linkStatus->setDeviceInfo(info);
-    m_editor->setTauLimit(deviceDecimal(info.tauLimit));
+    if (info.protocol == WireProtocol::V2) // a legacy device reports no limit
+        m_editor->setTauLimit(deviceDecimal(info.tauLimit));
     m_simDock->toggleViewAction()->setEnabled(info.simulated);
     m_simDock->setVisible(info.simulated);
     updateActions();
@@ -537,6 +546,7 @@ bool MainWindow::isReplaying() const
 
 void MainWindow::onReplayActive(bool active)
 {
+    m_stiffness->setReplaying(active);
     if (active) {
         const Recording &rec = m_replay->recording();
         m_plots->setPaused(false);
@@ -668,13 +678,18 @@ void MainWindow::showAbout()
 
 void MainWindow::openRecordingInteractive()
 {
-    QSettings settings;
-    const QString dir = settings.value(QStringLiteral("recording/dir"), documentsDir()).toString();
+    // The folder of the last recording made or opened (what a researcher opens next).
+    QString dir = m_recording->directory();
+    if (dir.isEmpty() || !QDir(dir).exists())
+        dir = documentsDir();
+    if (!QDir(dir).exists())
+        dir = QDir::homePath();
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Open recording"), dir, tr("CSV recordings (*.csv)"));
     if (path.isEmpty())
         return;
-    settings.setValue(QStringLiteral("recording/dir"), QFileInfo(path).absolutePath());
+    m_recording->setDirectory(QFileInfo(path).absolutePath());
+    QSettings().setValue(QStringLiteral("recording/dir"), m_recording->directory());
     QString error;
     if (!openRecording(path, &error))
         QMessageBox::warning(this, tr("Open recording"),

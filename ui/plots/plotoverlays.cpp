@@ -2,6 +2,8 @@
 
 #include "plots/qcp.h"
 
+#include <QFontMetrics>
+
 namespace hatpic {
 
 namespace {
@@ -111,6 +113,7 @@ void PlotOverlays::setEvents(const QList<RecordingEvent> &events, const QFont &f
     for (QCPAbstractItem *item : std::as_const(m_eventItems))
         m_plot->removeItem(item);
     m_eventItems.clear();
+    m_eventLabels.clear();
     QCPAxisRect *angle = m_rects[0];
     for (const RecordingEvent &event : events) {
         for (int i = 0; i < kPlotCount; ++i) {
@@ -133,6 +136,24 @@ void PlotOverlays::setEvents(const QList<RecordingEvent> &events, const QFont &f
         label->setText(event.text);
         label->setFont(font);
         m_eventItems.append(label);
+        m_eventLabels.append(label);
+    }
+    fitEventLabels();
+}
+
+void PlotOverlays::fitEventLabels()
+{
+    QCPAxisRect *angle = m_rects[0];
+    QCPAxis *x = angle->axis(QCPAxis::atBottom);
+    for (QCPItemText *label : std::as_const(m_eventLabels)) {
+        const double pixel = x->coordToPixel(label->position->coords().x());
+        const QMargins padding = label->padding();
+        const int width = QFontMetrics(label->font()).horizontalAdvance(label->text()) +
+                          padding.left() + padding.right();
+        const bool fitsRight = pixel + width <= angle->right();
+        const bool fitsLeft = pixel - width >= angle->left();
+        label->setPositionAlignment(Qt::AlignTop |
+                                    (fitsRight || !fitsLeft ? Qt::AlignLeft : Qt::AlignRight));
     }
 }
 

@@ -41,6 +41,10 @@ public:
     //! One marker per event; replaces the previous markers.
     void setEvents(const QList<RecordingEvent> &events, const QFont &font);
     qsizetype eventItemCount() const { return m_eventItems.size(); }
+    //! Puts each event label on the side of its line where it fits in the angle plot: right of
+    //! the line, or left of it near the right edge (where live pushes land). Call before a
+    //! replot, once the x range is set.
+    void fitEventLabels();
     //! The cursor at time t [s]; nullopt hides it.
     void setCursor(std::optional<double> t);
 
@@ -55,6 +59,7 @@ private:
     std::array<QCPItemStraightLine *, kPlotCount> m_cursorLines{};
     QCPItemText *m_cursorLabel = nullptr;
     QList<QCPAbstractItem *> m_eventItems;
+    QList<QCPItemText *> m_eventLabels;
 };
 
 } // namespace hatpic

@@ -465,6 +465,7 @@ void PlotPanel::repaintIfNeeded()
     if (m_autoscale)
         autoscaleAxes();
     updateLegendTexts();
+    m_overlays->fitEventLabels();
     clock.restart();
     m_plot->replot(QCustomPlot::rpQueuedRefresh);
     m_laidOutSize = m_plot->size();

@@ -52,7 +52,7 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_label, 1);
 
     m_chooser = [this](const QString &suggested) {
-        return QFileDialog::getSaveFileName(this, tr("Record to"), suggested,
+        return QFileDialog::getSaveFileName(this, tr("Record to"), inExistingFolder(suggested),
                                             tr("CSV recordings (*.csv)"));
     };
     refresh();
@@ -68,6 +68,14 @@ QString RecordingControls::suggestedPath(const QString &directory)
     const QString name =
         QDateTime::currentDateTime().toString(QStringLiteral("'hatpic-'yyyyMMdd-HHmmss'.csv'"));
     return QDir(dir).filePath(name);
+}
+
+QString RecordingControls::inExistingFolder(const QString &path)
+{
+    const QFileInfo info(path);
+    if (info.absoluteDir().exists())
+        return path;
+    return QDir::home().filePath(info.fileName());
 }
 
 void RecordingControls::onTriggered()

@@ -27,6 +27,10 @@ public:
 
     //! hatpic-YYYYMMDD-HHMMSS.csv in `directory` (the documents folder when empty).
     static QString suggestedPath(const QString &directory = {});
+    //! `path` when its folder exists, else the same file name in the home folder: a file
+    //! dialog given a missing folder (a fresh account has no Documents) opens in the working
+    //! directory, where the file would then land unnoticed.
+    static QString inExistingFolder(const QString &path);
 
     void setPathChooser(PathChooser chooser) { m_chooser = std::move(chooser); }
     void setDirectory(const QString &directory) { m_directory = directory; }

@@ -3,6 +3,7 @@
 #include "plots/replaycontroller.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -25,6 +26,11 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     tag->setStyleSheet(QStringLiteral("font-weight: bold; padding: 0 6px;"));
     m_title = new QLabel(this);
     m_title->setObjectName(QStringLiteral("replayTitle"));
+    // The title gives way in a narrow window (elided, in full in its tooltip) so that the
+    // slider keeps a usable length and the bar does not widen the window's centre.
+    m_title->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_title->setMinimumWidth(m_title->fontMetrics().horizontalAdvance(QStringLiteral("hatpic…")));
+    m_title->installEventFilter(this);
 
     m_play = new QToolButton(this);
     m_play->setObjectName(QStringLiteral("replayPlay"));
@@ -42,6 +48,7 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     m_slider = new QSlider(Qt::Horizontal, this);
     m_slider->setObjectName(QStringLiteral("replaySlider"));
     m_slider->setToolTip(tr("Drag to scrub through the recording"));
+    m_slider->setMinimumWidth(120);
     connect(m_slider, &QSlider::valueChanged, this, [this](int value) {
         m_controller->setPosition(m_controller->startTime() +
                                   double(value) / kSliderStepsPerSecond);
@@ -49,8 +56,6 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
 
     m_time = new QLabel(this);
     m_time->setObjectName(QStringLiteral("replayTime"));
-    m_time->setMinimumWidth(
-        m_time->fontMetrics().horizontalAdvance(QStringLiteral("00000.00 / 00000.00 s")));
 
     m_live = new QPushButton(tr("Back to &live"), this);
     m_live->setObjectName(QStringLiteral("backToLive"));
@@ -60,10 +65,10 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(8, 4, 8, 4);
     layout->addWidget(tag);
-    layout->addWidget(m_title);
+    layout->addWidget(m_title, 1);
     layout->addWidget(m_play);
     layout->addWidget(m_speed);
-    layout->addWidget(m_slider, 1);
+    layout->addWidget(m_slider, 2);
     layout->addWidget(m_time);
     layout->addWidget(m_live);
 
@@ -86,13 +91,30 @@ void ReplayBar::onActiveChanged(bool active)
     if (rec.hasMetadata && rec.metadata.start.isValid())
         title += tr(", %1").arg(
             rec.metadata.start.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
-    m_title->setText(title);
-    m_title->setToolTip(m_controller->path());
+    m_titleText = title;
+    m_title->setToolTip(m_controller->path() % u'\n' % title);
+    elideTitle();
     const QSignalBlocker blocker(m_slider);
     const double length = m_controller->endTime() - m_controller->startTime();
     m_slider->setRange(0, static_cast<int>(std::ceil(length * kSliderStepsPerSecond)));
     m_slider->setPageStep(kSliderStepsPerSecond);
+    // Wide enough for the longest position text of this recording, so it does not jitter.
+    const QString longest = tr("%1 / %1 s").arg(length, 0, 'f', 2);
+    m_time->setMinimumWidth(m_time->fontMetrics().horizontalAdvance(longest) + 4);
     onPositionChanged(m_controller->position());
+}
+
+void ReplayBar::elideTitle()
+{
+    m_title->setText(m_title->fontMetrics().elidedText(m_titleText, Qt::ElideRight,
+                                                       m_title->contentsRect().width()));
+}
+
+bool ReplayBar::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_title && event->type() == QEvent::Resize)
+        elideTitle();
+    return QFrame::eventFilter(watched, event);
 }
 
 void ReplayBar::onPositionChanged(double t)

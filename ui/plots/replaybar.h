@@ -31,13 +31,18 @@ public:
 Q_SIGNALS:
     void backToLiveRequested();
 
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
+    void elideTitle();
     void onActiveChanged(bool active);
     void onPositionChanged(double t);
     void onPlayingChanged(bool playing);
 
     ReplayController *m_controller;
     QLabel *m_title = nullptr;
+    QString m_titleText; //!< in full; the label shows it elided when the bar is narrow
     QToolButton *m_play = nullptr;
     QComboBox *m_speed = nullptr;
     QSlider *m_slider = nullptr;

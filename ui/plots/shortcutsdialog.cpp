@@ -6,6 +6,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace hatpic {
 
 namespace {
@@ -57,6 +59,10 @@ ShortcutsDialog::ShortcutsDialog(const QList<QAction *> &actions, QWidget *paren
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(table);
     layout->addWidget(buttons);
+    // Tall enough for every row without scrolling (there are about twenty), within reason.
+    const int rows = table->verticalHeader()->length() +
+                     table->horizontalHeader()->sizeHint().height() + 2 * table->frameWidth();
+    table->setMinimumHeight(std::min(rows, 700));
     resize(460, 520);
 }
 
