@@ -163,6 +163,8 @@ void DeviceSession::shutdown()
 
 QString DeviceSession::portDescription() const
 {
+    if (m_options.port == QStringView(kSimPortName))
+        return QStringLiteral("the simulated joystick"); // no serial line, so no baud rate
     const qint32 baud = m_link ? m_link->baud() : requestedBaud();
     return m_options.port % u" at " % QString::number(baud) % u" baud";
 }
