@@ -49,12 +49,8 @@ QString deviceValueText(double value)
 DeviceParams tidyDeviceParams(const DeviceParams &params)
 {
     DeviceParams tidy = params;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        bool ok = false;
-        const double value = deviceValueText(params.field(i)).toDouble(&ok);
-        if (ok)
-            tidy.setField(i, value);
-    }
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        tidy.setField(i, shortestFloatDecimal(params.field(i)));
     return tidy;
 }
 

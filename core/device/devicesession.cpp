@@ -24,21 +24,6 @@ QString fieldName(int index)
     return QString::fromLatin1(deviceFieldName(index));
 }
 
-//! "K_max 0.4 → 0.6; N 0.1 → 0.12": every field that differs after float32 rounding.
-QString describeParamChange(const DeviceParams &from, const DeviceParams &to)
-{
-    QStringList parts;
-    const DeviceParams a = roundedForWire(from);
-    const DeviceParams b = roundedForWire(to);
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        if (a.field(i) != b.field(i)) {
-            parts << fieldName(i) % u' ' % compactNumberText(a.field(i)) % u" → " %
-                         compactNumberText(b.field(i));
-        }
-    }
-    return parts.join(QStringLiteral("; "));
-}
-
 QString describeHostChange(const HostParams &from, const HostParams &to)
 {
     QStringList parts;

@@ -1,6 +1,10 @@
 #include "sessiontypes.h"
 
+#include "device/numbertext.h"
 #include "device/sample.h"
+
+#include <QStringBuilder>
+#include <QStringList>
 
 #include <numeric>
 
@@ -26,6 +30,21 @@ QString sessionStateName(SessionState state)
 quint64 LinkStats::totalDecoderDrops() const
 {
     return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));
+}
+
+QString describeParamChange(const DeviceParams &from, const DeviceParams &to)
+{
+    QStringList parts;
+    const DeviceParams a = roundedForWire(from);
+    const DeviceParams b = roundedForWire(to);
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        if (a.field(i) != b.field(i)) {
+            const std::string_view name = deviceFieldName(i);
+            parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
+                         compactNumberText(a.field(i)) % u" → " % compactNumberText(b.field(i));
+        }
+    }
+    return parts.join(QStringLiteral("; "));
 }
 
 void registerSessionMetaTypes()

@@ -35,6 +35,10 @@ struct ConnectOptions
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
 QString sessionStateName(SessionState state); //!< "disconnected", "opening", …
 
+//! "K_max 0.4 → 0.6; N 0.1 → 0.12": every device field that differs as it travels on the wire
+//! (the text of recording events and of the tuner's push markers). Empty when nothing does.
+QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
+
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
 

@@ -231,6 +231,18 @@ bool sameOnWire(const DeviceParams &a, const DeviceParams &b)
     return roundedForWire(a) == roundedForWire(b);
 }
 
+double shortestFloatDecimal(double value)
+{
+    const auto single = static_cast<float>(value);
+    if (!std::isfinite(value) || static_cast<double>(single) != value)
+        return value;
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, single).ptr;
+    double out = value;
+    std::from_chars(buffer, end, out);
+    return out;
+}
+
 std::string formatNumber(double value)
 {
     if (std::isnan(value))

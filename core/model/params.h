@@ -83,6 +83,12 @@ double roundedForWire(int index, double value);
 //! True when both sets travel as the same ParamBlock (what "in sync" means).
 bool sameOnWire(const DeviceParams &a, const DeviceParams &b);
 
+//! A value a device sent as float32, as the decimal that names that float: 0.44f arrives as
+//! 0.43999999761581421 and becomes 0.44 again, so it compares equal to a profile's 0.44 and
+//! does not litter files with noise digits. Values that are not exactly a float are returned
+//! unchanged.
+double shortestFloatDecimal(double value);
+
 //! Shortest decimal text that reads back as the same double ("0.4", "1e-06", "nan").
 std::string formatNumber(double value);
 

@@ -64,6 +64,8 @@ private Q_SLOTS:
     void roundedForWireKeepsBounds_data();
     void roundedForWireKeepsBounds();
     void roundedForWireKeepsInvalidInvalid();
+    void shortestFloatDecimal_data();
+    void shortestFloatDecimal();
 };
 
 void TestParams::defaultsMatchSpec()
@@ -461,6 +463,28 @@ void TestParams::roundedForWireKeepsInvalidInvalid()
     QCOMPARE(violations.size(), std::size_t(2));
     QCOMPARE(violations[0].field, std::string("K_max"));
     QCOMPARE(violations[1].field, std::string("Q_dz"));
+}
+
+void TestParams::shortestFloatDecimal_data()
+{
+    QTest::addColumn<double>("value");
+    QTest::addColumn<double>("expected");
+    QTest::newRow("0.44f becomes 0.44") << double(0.44f) << 0.44;
+    QTest::newRow("0.4f becomes 0.4") << double(0.4f) << 0.4;
+    QTest::newRow("1e-4f becomes 1e-4") << double(1e-4f) << 1e-4;
+    QTest::newRow("exact float 0.5 stays") << 0.5 << 0.5;
+    QTest::newRow("not a float: unchanged") << 0.1 << 0.1;
+    QTest::newRow("pi (not a float): unchanged") << std::numbers::pi << std::numbers::pi;
+    QTest::newRow("infinity: unchanged") << kInf << kInf;
+}
+
+void TestParams::shortestFloatDecimal()
+{
+    QFETCH(double, value);
+    QFETCH(double, expected);
+    QCOMPARE(hatpic::shortestFloatDecimal(value), expected);
+    // Whatever it returns still names the same float.
+    QCOMPARE(static_cast<float>(hatpic::shortestFloatDecimal(value)), static_cast<float>(value));
 }
 
 QTEST_GUILESS_MAIN(TestParams)

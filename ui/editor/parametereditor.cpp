@@ -22,24 +22,11 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
-#include <charconv>
-
 namespace hatpic {
 
 using namespace Qt::StringLiterals;
 
 namespace {
-
-// A float32 read-back as the shortest decimal that gives the same float (0.4f → 0.4, not
-// 0.4000000059604645), so reverting to device values does not litter profiles with noise.
-double tidyFloat(double value)
-{
-    char buffer[32];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, static_cast<float>(value)).ptr;
-    double out = value;
-    std::from_chars(buffer, end, out);
-    return out;
-}
 
 QToolButton *actionButton(QAction *action, QWidget *parent)
 {
@@ -81,7 +68,7 @@ ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
             return;
         DeviceParams d;
         for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-            d.setField(i, tidyFloat(m_sync.device()->field(i)));
+            d.setField(i, shortestFloatDecimal(m_sync.device()->field(i)));
         setParams(d, m_host, tr("Revert to device values"));
     });
     m_undoAction = m_undo->createUndoAction(this, tr("Undo"));

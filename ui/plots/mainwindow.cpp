@@ -33,7 +33,6 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
-#include <charconv>
 #include <cmath>
 
 // The window icon lives in this static library: its resources must be registered by hand.
@@ -54,34 +53,6 @@ QString documentsDir()
 {
     const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     return dir.isEmpty() ? QDir::homePath() : dir;
-}
-
-//! "K_max 0.4 → 0.6; N 0.1 → 0.12": the fields that differ as the device stores them (float32).
-QString describeChange(const DeviceParams &before, const DeviceParams &after)
-{
-    QStringList parts;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const double a = before.field(i);
-        const double b = after.field(i);
-        if (static_cast<float>(a) == static_cast<float>(b))
-            continue;
-        const std::string_view name = deviceFieldName(i);
-        parts << QString::fromUtf8(name.data(), qsizetype(name.size())) % u' ' %
-                     QString::number(a, 'g', 4) % u" → " % QString::number(b, 'g', 4);
-    }
-    return parts.join(QStringLiteral("; "));
-}
-
-//! A float the device sent, as the shortest decimal that names it: 0.44f arrives as
-//! 0.43999999761581421 and becomes 0.44 again, so it compares equal to the profile's 0.44.
-double deviceDecimal(double value)
-{
-    std::array<char, 32> text{};
-    const auto end =
-        std::to_chars(text.data(), text.data() + text.size(), static_cast<float>(value));
-    double result = value;
-    std::from_chars(text.data(), end.ptr, result);
-    return result;
 }
 
 } // namespace
@@ -452,7 +423,7 @@ void MainWindow::onDeviceInfo(const DeviceInfo &info)
 {
     m_linkStatus->setDeviceInfo(info);
     if (info.protocol == WireProtocol::V2) // a legacy device reports no limit
-        m_editor->setTauLimit(deviceDecimal(info.tauLimit));
+        m_editor->setTauLimit(shortestFloatDecimal(info.tauLimit));
     m_simDock->toggleViewAction()->setEnabled(info.simulated);
     m_simDock->setVisible(info.simulated);
     updateActions();
@@ -484,7 +455,7 @@ void MainWindow::onCommandFinished(quint64 id, const CommandResult &result)
         const PendingPush push = m_pushes.take(id);
         m_editor->pushFinished(result);
         if (result.ok()) {
-            const QString change = describeChange(push.before, push.pushed);
+            const QString change = describeParamChange(push.before, push.pushed);
             m_lastCommandMessage =
                 change.isEmpty() ? tr("Pushed (no change).") : tr("Pushed: %1").arg(change);
             if (!change.isEmpty())
