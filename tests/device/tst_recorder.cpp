@@ -1,7 +1,6 @@
 // Recorder (CSV + JSON writing) and readRecording (parsing back).
 #include "device/recorder.h"
 
-#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -573,16 +572,13 @@ void TestRecorder::manyMetadataEventsReadInBoundedTime()
     json += "]}";
     QVERIFY(json.size() < 16 * 1024 * 1024);
     QVERIFY(writeFile(Recorder::metadataPath(csv), json));
-    QElapsedTimer timer;
-    timer.start();
+    // No timing assertion (speed is for bench/): a merge that compared every pair would run
+    // for many minutes and trip the suite's ctest timeout instead.
     const RecordingReadResult r = readRecording(csv);
-    const qint64 ms = timer.elapsed();
     QVERIFY2(r.recording, qPrintable(r.error));
     QVERIFY(r.recording->hasMetadata);
     QCOMPARE(r.recording->events.size(), kEvents); // "e0" at 0 s is in both: listed once
     QCOMPARE(r.recording->events.last().text, QStringLiteral("e299999"));
-    // Generous bound: the merge is O(n log n) and takes well under a second here.
-    QVERIFY2(ms < 30000, qPrintable(QString::number(ms)));
 }
 
 void TestRecorder::neverCrashesOnMutatedFiles()
