@@ -321,7 +321,7 @@ void DeviceSession::becomeConnectedV2(const v2::HelloReply &reply)
     m_info.maxStreamHz = reply.maxStreamHz;
     m_info.deviceId = reply.deviceId;
     m_info.tauLimit = reply.tauLimit;
-    m_info.firmware = reply.firmware;
+    m_info.firmware = v2::toQString(reply.firmware);
     m_info.simulated = m_options.port == QStringView(kSimPortName);
     if (reply.protocolVersion != v2::kProtocolVersion) {
         qCWarning(lcSession) << "device reports protocol version" << reply.protocolVersion
@@ -488,7 +488,7 @@ void DeviceSession::handleV2Frame(const v2::Frame &frame)
             else if constexpr (std::is_same_v<T, v2::Pong>)
                 handlePong(message.token);
             else if constexpr (std::is_same_v<T, v2::Log>)
-                Q_EMIT deviceLog(message.text);
+                Q_EMIT deviceLog(v2::toQString(message.text));
             else if constexpr (std::is_same_v<T, v2::HelloReply>)
                 qCInfo(lcSession) << "late HELLO_REPLY ignored";
         },

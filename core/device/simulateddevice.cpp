@@ -323,7 +323,7 @@ QByteArray SimulatedDevice::Private::replyTo(const v2::Frame &frame)
         hello.maxStreamHz = maxStreamHz();
         hello.deviceId = config.deviceId;
         hello.tauLimit = float(tauLimit);
-        hello.firmware = QString::fromLatin1(kFirmware);
+        hello.firmware.assign(kFirmware);
         return reply(hello);
     }
     if (std::holds_alternative<v2::GetParams>(m))

@@ -4,24 +4,23 @@
 
 namespace hatpic::v2 {
 
-QString ackStatusName(AckStatus status)
+std::string_view ackStatusWireName(AckStatus status)
 {
     switch (status) {
     case AckStatus::Ok:
-        return QStringLiteral("OK");
+        return "OK";
     case AckStatus::BadLength:
-        return QStringLiteral("BAD_LENGTH");
+        return "BAD_LENGTH";
     case AckStatus::OutOfRange:
-        return QStringLiteral("OUT_OF_RANGE");
+        return "OUT_OF_RANGE";
     case AckStatus::UnknownType:
-        return QStringLiteral("UNKNOWN_TYPE");
+        return "UNKNOWN_TYPE";
     case AckStatus::StorageError:
-        return QStringLiteral("STORAGE_ERROR");
+        return "STORAGE_ERROR";
     case AckStatus::Unsupported:
-        return QStringLiteral("UNSUPPORTED");
+        return "UNSUPPORTED";
     }
-    // A newer device may send a status this host does not know; name it by its number.
-    return QStringLiteral("STATUS_%1").arg(static_cast<int>(status));
+    return {};
 }
 
 namespace {
@@ -62,15 +61,15 @@ template<typename T> constexpr MessageType typeOf()
 
 } // namespace
 
-quint8 messageType(const Message &message)
+std::uint8_t messageType(const Message &message)
 {
     return std::visit(
-        [](const auto &m) -> quint8 {
+        [](const auto &m) -> std::uint8_t {
             using T = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<T, Refused>)
                 return m.type;
             else
-                return static_cast<quint8>(typeOf<T>());
+                return static_cast<std::uint8_t>(typeOf<T>());
         },
         message);
 }

@@ -1,16 +1,21 @@
-// Typed messages of protocol v2 (protocol.md § 3).
+// Typed messages of protocol v2 (protocol.md § 3): one set of layouts for the host and the
+// device core.
+//
+// Plain C++20: no Qt, no OS calls, no allocation (text fields are fixed arrays).
 #pragma once
 
 #include "model/params.h"
 
-#include <QString>
-#include <QtGlobal>
-
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
 #include <variant>
 
 namespace hatpic::v2 {
 
-enum class MessageType : quint8 {
+enum class MessageType : std::uint8_t {
     // host → device
     Hello = 0x01,
     GetParams = 0x02,
@@ -29,11 +34,12 @@ enum class MessageType : quint8 {
     Log = 0xE0,
 };
 
-constexpr quint8 kProtocolVersion = 2;
-constexpr int kMaxPayload = 240;  //!< largest payload of any frame [bytes]
-constexpr quint8 kNoField = 0xFF; //!< ACK `field` when no field applies
+constexpr std::uint8_t kProtocolVersion = 2;
+constexpr std::size_t kMaxPayload = 240;   //!< largest payload of any frame [bytes]
+constexpr std::uint8_t kNoField = 0xFF;    //!< ACK `field` when no field applies
+constexpr std::size_t kFirmwareBytes = 16; //!< HELLO_REPLY's firmware name [bytes]
 
-enum class AckStatus : quint8 {
+enum class AckStatus : std::uint8_t {
     Ok = 0,
     BadLength = 1,
     OutOfRange = 2,
@@ -42,14 +48,45 @@ enum class AckStatus : quint8 {
     Unsupported = 5,
 };
 
-//! Human-readable name of an ACK status ("OUT_OF_RANGE", …).
-QString ackStatusName(AckStatus status);
+//! Wire name of an ACK status ("OUT_OF_RANGE", …); empty for a status this build does not know.
+std::string_view ackStatusWireName(AckStatus status);
 
 // Telemetry flag bits.
-constexpr quint8 kFlagDeadZone = 0x01;
-constexpr quint8 kFlagNotch = 0x02;
-constexpr quint8 kFlagSaturated = 0x04;
-constexpr quint8 kFlagFeedbackStale = 0x08;
+constexpr std::uint8_t kFlagDeadZone = 0x01;
+constexpr std::uint8_t kFlagNotch = 0x02;
+constexpr std::uint8_t kFlagSaturated = 0x04;
+constexpr std::uint8_t kFlagFeedbackStale = 0x08;
+
+//! UTF-8 text of at most N bytes, stored inline. Assigning longer text cuts it at a character
+//! boundary, so a name never ends in half a character.
+template<std::size_t N> class FixedText
+{
+public:
+    FixedText() = default;
+    explicit FixedText(std::string_view text) { assign(text); }
+
+    void assign(std::string_view text)
+    {
+        std::size_t n = std::min(text.size(), N);
+        // Back off while the byte at the cut is a continuation byte (10xxxxxx).
+        if (n < text.size()) {
+            while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80)
+                --n;
+        }
+        std::copy_n(text.data(), n, m_bytes.data());
+        m_size = n;
+    }
+    std::string_view view() const { return {m_bytes.data(), m_size}; }
+    std::size_t size() const { return m_size; }
+    bool empty() const { return m_size == 0; }
+    static constexpr std::size_t capacity() { return N; }
+
+    bool operator==(const FixedText &other) const { return view() == other.view(); }
+
+private:
+    std::array<char, N> m_bytes{};
+    std::size_t m_size = 0;
+};
 
 // ---- host → device ----
 struct Hello
@@ -67,7 +104,7 @@ struct SetParams
 };
 struct SetStream
 {
-    quint16 rateHz = 0; //!< telemetry rate, 0 = stop [Hz]
+    std::uint16_t rateHz = 0; //!< telemetry rate, 0 = stop [Hz]
     friend bool operator==(const SetStream &, const SetStream &) = default;
 };
 struct SetFeedback
@@ -81,7 +118,7 @@ struct SaveParams
 };
 struct Ping
 {
-    quint32 token = 0;
+    std::uint32_t token = 0;
     friend bool operator==(const Ping &, const Ping &) = default;
 };
 struct Zero
@@ -92,11 +129,11 @@ struct Zero
 // ---- device → host ----
 struct HelloReply
 {
-    quint8 protocolVersion = kProtocolVersion;
-    quint16 maxStreamHz = 0; //!< highest telemetry rate the device produces [Hz]
-    quint32 deviceId = 0;
-    float tauLimit = 0; //!< actuator torque limit [N·m]
-    QString firmware;   //!< at most 16 UTF-8 bytes on the wire
+    std::uint8_t protocolVersion = kProtocolVersion;
+    std::uint16_t maxStreamHz = 0; //!< highest telemetry rate the device produces [Hz]
+    std::uint32_t deviceId = 0;
+    float tauLimit = 0;                 //!< actuator torque limit [N·m]
+    FixedText<kFirmwareBytes> firmware; //!< NUL-padded on the wire
     friend bool operator==(const HelloReply &, const HelloReply &) = default;
 };
 struct Params
@@ -106,30 +143,30 @@ struct Params
 };
 struct Ack
 {
-    quint8 ackedSeq = 0;
+    std::uint8_t ackedSeq = 0;
     AckStatus status = AckStatus::Ok;
-    quint8 field = kNoField; //!< first violating ParamBlock index for OUT_OF_RANGE
+    std::uint8_t field = kNoField; //!< first violating ParamBlock index for OUT_OF_RANGE
     friend bool operator==(const Ack &, const Ack &) = default;
 };
 struct Pong
 {
-    quint32 token = 0;
+    std::uint32_t token = 0;
     friend bool operator==(const Pong &, const Pong &) = default;
 };
 struct Telemetry
 {
-    quint32 t_us = 0;  //!< device clock, wraps at 2³² [µs]
-    float theta = 0;   //!< absolute knob angle [rad]
-    float omega = 0;   //!< knob rate [rad/s]
-    float tau = 0;     //!< interaction torque of eq. (1); operator torque is −tau [N·m]
-    float tau_rec = 0; //!< re-centering torque rendered this cycle [N·m]
-    float tau_ext = 0; //!< external feedback rendered this cycle [N·m]
-    quint8 flags = 0;  //!< kFlag* bits
+    std::uint32_t t_us = 0; //!< device clock, wraps at 2³² [µs]
+    float theta = 0;        //!< absolute knob angle [rad]
+    float omega = 0;        //!< knob rate [rad/s]
+    float tau = 0;          //!< interaction torque of eq. (1); operator torque is −tau [N·m]
+    float tau_rec = 0;      //!< re-centering torque rendered this cycle [N·m]
+    float tau_ext = 0;      //!< external feedback rendered this cycle [N·m]
+    std::uint8_t flags = 0; //!< kFlag* bits
     friend bool operator==(const Telemetry &, const Telemetry &) = default;
 };
 struct Log
 {
-    QString text; //!< 1…240 UTF-8 bytes on the wire
+    FixedText<kMaxPayload> text; //!< 1…240 UTF-8 bytes on the wire
     friend bool operator==(const Log &, const Log &) = default;
 };
 
@@ -138,7 +175,7 @@ struct Log
 //! carrying `status` (UNKNOWN_TYPE or BAD_LENGTH) and `seq`.
 struct Refused
 {
-    quint8 type = 0;
+    std::uint8_t type = 0;
     AckStatus status = AckStatus::UnknownType;
     friend bool operator==(const Refused &, const Refused &) = default;
 };
@@ -147,12 +184,12 @@ using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback
                              Zero, HelloReply, Params, Ack, Pong, Telemetry, Log, Refused>;
 
 //! The wire type of a message (Refused gives its original type).
-quint8 messageType(const Message &message);
+std::uint8_t messageType(const Message &message);
 
 //! One decoded frame.
 struct Frame
 {
-    quint8 seq = 0;
+    std::uint8_t seq = 0;
     Message message;
     friend bool operator==(const Frame &, const Frame &) = default;
 };

@@ -1,87 +1,78 @@
-// Protocol v2 framing: COBS + CRC-16/CCITT-FALSE + 0x00 delimiter (protocol.md § 2).
+// The host's Qt adaptor over the protocol v2 wire format: QByteArray in and out, QList of
+// frames, QString names. Every wire rule lives in the plain files it includes (crc16.h,
+// cobs.h, messages.h, framecodec.h), which the device core compiles too.
 #pragma once
 
+#include "crc16.h"
+#include "framecodec.h"
 #include "messages.h"
 
 #include <QByteArray>
 #include <QByteArrayView>
 #include <QList>
+#include <QString>
 
-#include <array>
+#include <span>
 
 namespace hatpic::v2 {
 
-//! CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF, no reflection, xorout 0).
-quint16 crc16(QByteArrayView data);
+//! The bytes of a QByteArrayView as the plain wire code takes them.
+inline std::span<const std::uint8_t> asBytes(QByteArrayView bytes)
+{
+    return {reinterpret_cast<const std::uint8_t *>(bytes.data()),
+            static_cast<std::size_t>(bytes.size())};
+}
 
-//! Standard COBS encoding (no delimiter appended).
+quint16 crc16(QByteArrayView data);
 QByteArray cobsEncode(QByteArrayView data);
 //! Standard COBS decoding of one frame body (without its delimiter); false on a malformed body.
 bool cobsDecode(QByteArrayView encoded, QByteArray &decoded);
 
 //! Raw packet `type | seq | payload | crc` → COBS + delimiter, ready for the wire.
 QByteArray encodePacket(quint8 type, quint8 seq, QByteArrayView payload);
-//! Typed message → wire bytes (Refused is not encodable and yields an empty array).
+//! Typed message → wire bytes (Refused and an empty LOG are not encodable: empty array).
 QByteArray encodeFrame(quint8 seq, const Message &message);
 
-//! Which side's messages a decoder accepts.
-enum class Direction {
-    FromDevice, //!< host side: accepts 0x81…0xE0
-    FromHost,   //!< device side: accepts 0x01…0x08
-};
-
-enum class DropReason {
-    Cobs,        //!< COBS decoding failed
-    Short,       //!< packet shorter than 4 bytes
-    Crc,         //!< CRC mismatch
-    UnknownType, //!< CRC ok, type unknown for this direction
-    BadLength,   //!< CRC ok, payload length wrong for the type
-    Overflow,    //!< more than kMaxFrameBytes without a delimiter
-};
-constexpr int kDropReasonCount = 6;
 QString dropReasonName(DropReason reason);
+//! "OUT_OF_RANGE", …; a status this build does not know is named by its number.
+QString ackStatusName(AckStatus status);
 
-struct DecoderStats
+template<std::size_t N> QString toQString(const FixedText<N> &text)
 {
-    quint64 bytes = 0;  //!< bytes fed
-    quint64 frames = 0; //!< frames yielded with a known message
-    std::array<quint64, kDropReasonCount> drops{};
+    const std::string_view v = text.view();
+    return QString::fromUtf8(v.data(), static_cast<qsizetype>(v.size()));
+}
+template<std::size_t N> FixedText<N> fixedText(const QString &text)
+{
+    const QByteArray utf8 = text.toUtf8();
+    return FixedText<N>(std::string_view(utf8.constData(), static_cast<std::size_t>(utf8.size())));
+}
 
-    quint64 dropped(DropReason r) const { return drops[static_cast<int>(r)]; }
-    quint64 totalDropped() const;
-    friend bool operator==(const DecoderStats &, const DecoderStats &) = default;
-};
+//! Text as a person reads it: the wire's UTF-8 compared with a QString.
+template<std::size_t N> bool operator==(const FixedText<N> &wire, const QString &text)
+{
+    return toQString(wire) == text;
+}
 
-//! Incremental decoder: accepts bytes in any chunking, yields typed frames.
-//!
-//! Memory is bounded: at most kMaxFrameBytes are buffered; a longer run without a delimiter is
-//! discarded (counted once as Overflow) and decoding resumes after the next 0x00.
+//! WireDecoder yielding into a QList.
 class FrameDecoder
 {
 public:
-    static constexpr int kMaxFrameBytes = 256;
+    static constexpr int kMaxFrameBytes = int(WireDecoder::kMaxFrameBytes);
 
-    explicit FrameDecoder(Direction direction) : m_direction(direction) {}
+    explicit FrameDecoder(Direction direction) : m_decoder(direction) {}
 
-    //! Decodes what `bytes` completes and appends the frames to `out`. Frames that fail
-    //! COBS/length/CRC are counted and dropped; unknown type or bad length are counted as
-    //! dropped *and* appended as a Refused message so that a device can answer them.
-    void feed(QByteArrayView bytes, QList<Frame> &out);
-
-    const DecoderStats &stats() const { return m_stats; }
-    void resetStats() { m_stats = {}; }
-    //! Forgets a partial frame (e.g. after reopening a port).
-    void clear();
-    //! Bytes of an unfinished frame held right now; never more than kMaxFrameBytes.
-    qsizetype pendingBytes() const { return m_buffer.size(); }
+    void feed(QByteArrayView bytes, QList<Frame> &out)
+    {
+        m_decoder.feed(asBytes(bytes), [&out](const Frame &frame) { out.append(frame); });
+    }
+    const DecoderStats &stats() const { return m_decoder.stats(); }
+    void resetStats() { m_decoder.resetStats(); }
+    void clear() { m_decoder.clear(); }
+    qsizetype pendingBytes() const { return qsizetype(m_decoder.pendingBytes()); }
 
 private:
-    void finishFrame(QList<Frame> &out);
-
-    Direction m_direction;
-    QByteArray m_buffer;
-    bool m_overflowing = false;
-    DecoderStats m_stats;
+    WireDecoder m_decoder;
 };
 
 } // namespace hatpic::v2

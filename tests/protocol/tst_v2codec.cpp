@@ -142,13 +142,13 @@ private Q_SLOTS:
         hr.maxStreamHz = 1000;
         hr.deviceId = 0x12345678;
         hr.tauLimit = 0.44f;
-        hr.firmware = u"hatpic-sim 1.0"_s;
+        hr.firmware = fixedText<kFirmwareBytes>(u"hatpic-sim 1.0"_s);
         QTest::newRow("HELLO_REPLY") << 9 << Message(hr) << 28;
-        hr.firmware = u"0123456789abcdef"_s;
+        hr.firmware = fixedText<kFirmwareBytes>(u"0123456789abcdef"_s);
         QTest::newRow("HELLO_REPLY firmware exactly 16 bytes") << 10 << Message(hr) << 28;
-        hr.firmware.clear();
+        hr.firmware = {};
         QTest::newRow("HELLO_REPLY empty firmware") << 11 << Message(hr) << 28;
-        hr.firmware = u"fw€中😀"_s; // 2 + 3 + 3 + 4 = 12 bytes
+        hr.firmware = fixedText<kFirmwareBytes>(u"fw€中😀"_s); // 2 + 3 + 3 + 4 = 12 bytes
         QTest::newRow("HELLO_REPLY multibyte firmware") << 12 << Message(hr) << 28;
         QTest::newRow("PARAMS defaults rounded")
             << 13 << Message(Params{asFloats(DeviceParams{})}) << 28;
@@ -168,11 +168,14 @@ private Q_SLOTS:
         t.tau_ext = std::numeric_limits<float>::lowest();
         t.flags = kFlagDeadZone | kFlagNotch | kFlagSaturated | kFlagFeedbackStale;
         QTest::newRow("TELEMETRY extremes") << 17 << Message(t) << 25;
-        QTest::newRow("LOG one byte") << 18 << Message(Log{u"x"_s}) << 1;
-        QTest::newRow("LOG 240 bytes") << 19 << Message(Log{QString(240, u'L')}) << 240;
+        QTest::newRow("LOG one byte") << 18 << Message(Log{fixedText<kMaxPayload>(u"x"_s)}) << 1;
+        QTest::newRow("LOG 240 bytes")
+            << 19 << Message(Log{fixedText<kMaxPayload>(QString(240, u'L'))}) << 240;
         QTest::newRow("LOG with NUL and newline")
-            << 20 << Message(Log{QString(u"a\nb"_s + QChar(0) + u"c"_s)}) << 5;
-        QTest::newRow("LOG multibyte") << 21 << Message(Log{u"Überlast 中 😀"_s}) << 18;
+            << 20 << Message(Log{fixedText<kMaxPayload>(QString(u"a\nb"_s + QChar(0) + u"c"_s))})
+            << 5;
+        QTest::newRow("LOG multibyte")
+            << 21 << Message(Log{fixedText<kMaxPayload>(u"Überlast 中 😀"_s)}) << 18;
     }
     void roundTrip()
     {
@@ -272,12 +275,12 @@ private Q_SLOTS:
         QFETCH(QString, received);
         QFETCH(QByteArray, bytes);
         HelloReply m;
-        m.firmware = firmware;
+        m.firmware = fixedText<kFirmwareBytes>(firmware);
         const QByteArray wire = encodeFrame(0, m);
         QCOMPARE(payloadOf(wire).mid(12).toHex(' '), bytes.toHex(' '));
         const auto frame = decodeOne(wire, Direction::FromDevice);
         QVERIFY(frame);
-        QCOMPARE(std::get<HelloReply>(frame->message).firmware, received);
+        QCOMPARE(toQString(std::get<HelloReply>(frame->message).firmware), received);
     }
 
     void firmwareWithoutNulUsesAll16Bytes()
@@ -286,7 +289,7 @@ private Q_SLOTS:
         payload += "ABCDEFGHIJKLMNOP";
         const auto frame = decodeOne(encodePacket(0x81, 0, payload), Direction::FromDevice);
         QVERIFY(frame);
-        QCOMPARE(std::get<HelloReply>(frame->message).firmware, u"ABCDEFGHIJKLMNOP"_s);
+        QCOMPARE(toQString(std::get<HelloReply>(frame->message).firmware), u"ABCDEFGHIJKLMNOP"_s);
         QCOMPARE(std::get<HelloReply>(frame->message).maxStreamHz, quint16(1000));
     }
 
@@ -327,11 +330,11 @@ private Q_SLOTS:
     {
         QFETCH(QString, text);
         QFETCH(int, bytes);
-        const QByteArray wire = encodeFrame(0, Log{text});
+        const QByteArray wire = encodeFrame(0, Log{fixedText<kMaxPayload>(text)});
         QCOMPARE(payloadOf(wire).size(), bytes);
         const auto frame = decodeOne(wire, Direction::FromDevice);
         QVERIFY(frame);
-        const QString got = std::get<Log>(frame->message).text;
+        const QString got = toQString(std::get<Log>(frame->message).text);
         QVERIFY(text.startsWith(got));
         QCOMPARE(got.toUtf8().size(), bytes);
     }

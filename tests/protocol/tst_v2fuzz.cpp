@@ -226,8 +226,8 @@ private Q_SLOTS:
         qInfo("%llu damaged frames: %llu accepted (rate %.3g, 1/65536 = %.3g, bound %llu); "
               "dropped: COBS %llu, short %llu, CRC %llu; %lld ms",
               trials, accepted, double(accepted) / double(trials), kCrcMissRate, bound,
-              s.dropped(DropReason::Cobs), s.dropped(DropReason::Short), s.dropped(DropReason::Crc),
-              timer.elapsed());
+              quint64(s.dropped(DropReason::Cobs)), quint64(s.dropped(DropReason::Short)),
+              quint64(s.dropped(DropReason::Crc)), timer.elapsed());
         QVERIFY2(accepted <= bound,
                  qPrintable(QStringLiteral("%1 of %2 damaged frames accepted, bound %3")
                                 .arg(accepted)
@@ -326,8 +326,8 @@ private Q_SLOTS:
         const quint64 bound = binomialUpperBound(junkFrames, kCrcMissRate, kSignificance);
         qInfo("%d frames, %d damaged, %lld intact after a delimiter, %llu frames dropped, "
               "%llu extra accepted (bound %llu)",
-              count, damagedCount, qlonglong(expected.size()), decoder.stats().totalDropped(),
-              extras, bound);
+              count, damagedCount, qlonglong(expected.size()),
+              quint64(decoder.stats().totalDropped()), extras, bound);
         QVERIFY(extras <= bound);
     }
 

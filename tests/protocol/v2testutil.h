@@ -42,7 +42,7 @@ inline QString describe(const Message &message)
                     .arg(m.maxStreamHz)
                     .arg(m.deviceId)
                     .arg(double(m.tauLimit), 0, 'g', 9)
-                    .arg(m.firmware);
+                    .arg(toQString(m.firmware));
             else if constexpr (std::is_same_v<T, Ack>)
                 return u"ACK of %1 %2 field %3"_s.arg(m.ackedSeq)
                     .arg(ackStatusName(m.status))
@@ -57,7 +57,7 @@ inline QString describe(const Message &message)
                     .arg(double(m.tau_ext), 0, 'g', 9)
                     .arg(m.flags);
             else if constexpr (std::is_same_v<T, Log>)
-                return u"LOG '"_s + m.text + u'\'';
+                return u"LOG '"_s + toQString(m.text) + u'\'';
             else if constexpr (std::is_same_v<T, Refused>)
                 return u"REFUSED type 0x"_s + QString::number(m.type, 16) + u' ' +
                        ackStatusName(m.status);
@@ -173,7 +173,7 @@ inline Message randomMessage(QRandomGenerator &rng, Direction direction)
         m.maxStreamHz = quint16(rng.bounded(65536));
         m.deviceId = rng.generate();
         m.tauLimit = randomFloat(rng);
-        m.firmware = randomText(rng, 0, 16);
+        m.firmware = fixedText<kFirmwareBytes>(randomText(rng, 0, 16));
         return m;
     }
     case 1:
@@ -199,7 +199,7 @@ inline Message randomMessage(QRandomGenerator &rng, Direction direction)
         return m;
     }
     default:
-        return Log{randomText(rng, 1, kMaxPayload)};
+        return Log{fixedText<kMaxPayload>(randomText(rng, 1, kMaxPayload))};
     }
 }
 
