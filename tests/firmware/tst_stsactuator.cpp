@@ -113,6 +113,9 @@ void TestStsActuator::measuresLikeTheSimulator()
             sts::word(rig.servo.reg(sts::kRegPresentLoad), rig.servo.reg(sts::kRegPresentLoad + 1)),
             sts::kLoadSignBit);
         QCOMPARE(mf.tau, sts::loadToTorque(load, double(0.44f)));
+        // Held in place against the hand, the servo resists: τ ≈ −τ_op (servo.md § 3).
+        if (cycle == 199 && command == theta0 && handTorque != 0)
+            QCOMPARE(std::round(m.tau * 1000), std::round(-handTorque * 1000));
     }
     QCOMPARE(int(rig.bus.stats().errors()), 0);
 }
