@@ -40,10 +40,17 @@ double ServoPlant::torqueFor(double theta, double omega) const
     return std::clamp(limited, low, high);
 }
 
+void ServoPlant::setTorqueEnabled(bool enabled)
+{
+    m_torqueEnabled = enabled;
+    if (!enabled)
+        m_motorTorque = 0.0;
+}
+
 void ServoPlant::step(double dt, double tauOp)
 {
     // Semi-implicit Euler; stable for dt ≤ 1e-4 s with these gains (poles near 160 rad/s).
-    m_motorTorque = torqueFor(m_theta, m_omega);
+    m_motorTorque = m_torqueEnabled ? torqueFor(m_theta, m_omega) : 0.0;
     const double accel = (m_motorTorque + tauOp - kViscousFriction * m_omega) / kInertia;
     m_omega += accel * dt;
     m_theta += m_omega * dt;

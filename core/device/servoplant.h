@@ -26,6 +26,12 @@ public:
     void setCommand(double theta) { m_command = theta; }
     double command() const { return m_command; }
 
+    //! Torque enable (the servo's register 40): off, the motor produces no torque (from now
+    //! on, so motorTorque() reads 0) and the knob turns freely against the shaft's own
+    //! friction. On by default.
+    void setTorqueEnabled(bool enabled);
+    bool torqueEnabled() const { return m_torqueEnabled; }
+
     //! One sub-step of length dt [s] with the operator's torque tauOp [N·m] on the knob.
     void step(double dt, double tauOp);
 
@@ -45,6 +51,7 @@ private:
     double m_omega = 0.0;
     double m_command;
     double m_motorTorque = 0.0;
+    bool m_torqueEnabled = true;
 };
 
 } // namespace hatpic

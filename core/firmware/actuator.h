@@ -1,6 +1,6 @@
 // The knob's actuator as the control cycle sees it: measure, command, enable, disable.
 //
-// StsActuator (sts3032.h) implements it over the servo bus of servo.md; the simulator's ideal
+// StsActuator (stsactuator.h) implements it over the servo bus of servo.md; the simulator's ideal
 // mode implements it with the model alone. Plain C++20; used from the control context only.
 #pragma once
 
