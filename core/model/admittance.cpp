@@ -35,21 +35,22 @@ double phi2(double x)
 
 } // namespace
 
-AdmittanceState admittanceStep(const DeviceParams &p, AdmittanceState s, double u, double h)
+AdmittanceCoefficients AdmittanceCoefficients::compute(const DeviceParams &p, double h)
 {
-    // Exact zero-order-hold solution of D ω̇ + M ω = u over h (model.md § 3), rewritten as
-    //   ω' = ω·e^{−x} + (u/D)·h·φ1(x)
-    //   θ' = θ + ω·h·φ1(x) + (u/D)·h²·φ2(x),      x = α·h, α = M/D.
-    // This is algebraically the spec's formula, but it divides by D (≥ 1e-6) instead of M
-    // (which may be arbitrarily close to 0) and has no cancellation when x is tiny.
     const double alpha = p.M_adm / p.D_adm; // [1/s]
     const double x = alpha * h;
-    const double accel = u / p.D_adm; // [rad/s²]
     const double f1 = phi1(x);
-    AdmittanceState next;
-    next.omega = s.omega * std::exp(-x) + accel * h * f1;
-    next.theta = s.theta + s.omega * h * f1 + accel * h * h * phi2(x);
-    return next;
+    AdmittanceCoefficients c;
+    c.decay = std::exp(-x);
+    c.omegaToTheta = h * f1;
+    c.uToOmega = h * f1 / p.D_adm;
+    c.uToTheta = h * h * phi2(x) / p.D_adm;
+    return c;
+}
+
+AdmittanceState admittanceStep(const DeviceParams &p, AdmittanceState s, double u, double h)
+{
+    return AdmittanceStepper<double>(AdmittanceCoefficients::compute(p, h)).step(s, u);
 }
 
 } // namespace hatpic

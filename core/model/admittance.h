@@ -1,14 +1,62 @@
 // Admittance filter D_adm·ω̇ + M_adm·ω = −τ + τ_total (paper eq. 1, model.md § 3).
+//
+// The exact zero-order-hold step depends on the parameters and the step length only through
+// four coefficients. AdmittanceStepper computes them once (in double, where e^{−αh} is cheap
+// to get right) and then steps in any scalar type: double on the host, float on the ESP32,
+// whose FPU is single precision.
 #pragma once
 
 #include "params.h"
 
 namespace hatpic {
 
-struct AdmittanceState
+template<typename T> struct BasicAdmittanceState
 {
-    double theta = 0.0; //!< knob angle [rad]
-    double omega = 0.0; //!< knob rate [rad/s]
+    T theta{}; //!< knob angle [rad]
+    T omega{}; //!< knob rate [rad/s]
+};
+using AdmittanceState = BasicAdmittanceState<double>;
+
+//! The step's coefficients for one parameter set and step length h, with x = α·h,
+//! α = M_adm/D_adm, φ1(x) = (1 − e^{−x})/x, φ2(x) = (x − 1 + e^{−x})/x²:
+//!   ω' = ω·e^{−x} + u·h·φ1(x)/D
+//!   θ' = θ + ω·h·φ1(x) + u·h²·φ2(x)/D
+//! This is algebraically model.md's formula, but it divides by D (≥ 1e-6) instead of M (which
+//! may be arbitrarily close to 0) and has no cancellation when x is tiny.
+struct AdmittanceCoefficients
+{
+    double decay = 1;        //!< e^{−x} [-]
+    double omegaToTheta = 0; //!< h·φ1(x) [s]
+    double uToOmega = 0;     //!< h·φ1(x)/D [rad/s per N·m]
+    double uToTheta = 0;     //!< h²·φ2(x)/D [rad per N·m]
+
+    //! @param h step length [s], h > 0
+    static AdmittanceCoefficients compute(const DeviceParams &params, double h);
+};
+
+template<typename T> class AdmittanceStepper
+{
+public:
+    AdmittanceStepper() = default;
+    explicit AdmittanceStepper(const AdmittanceCoefficients &c)
+        : m_decay(T(c.decay)), m_omegaToTheta(T(c.omegaToTheta)), m_uToOmega(T(c.uToOmega)),
+          m_uToTheta(T(c.uToTheta))
+    {}
+
+    //! One step with u = −τ + τ_total held constant over it [N·m].
+    BasicAdmittanceState<T> step(BasicAdmittanceState<T> s, T u) const
+    {
+        BasicAdmittanceState<T> next;
+        next.omega = s.omega * m_decay + u * m_uToOmega;
+        next.theta = s.theta + s.omega * m_omegaToTheta + u * m_uToTheta;
+        return next;
+    }
+
+private:
+    T m_decay = T(1);
+    T m_omegaToTheta = T(0);
+    T m_uToOmega = T(0);
+    T m_uToTheta = T(0);
 };
 
 //! One exact zero-order-hold step of the filter.

@@ -13,35 +13,32 @@ namespace {
 constexpr std::array<std::string_view, DeviceParams::kFieldCount> kDeviceFieldNames = {
     "D_adm", "M_adm", "K_min", "K_max", "N", "Q_dz", "theta0"};
 
-// Collects violations for one field; every check records its own rule text.
-class Checker
+// Walks model.md § 1's rules for one field. `report(field, index, value, rule)` is called for
+// each broken rule, where `rule()` makes its text: a caller that only needs the index never
+// builds a string, so the device core can validate without allocating.
+template<typename Report> class Checker
 {
 public:
-    Checker(std::vector<Violation> &out, std::string_view field, int index, double value)
-        : m_out(out), m_field(field), m_index(index), m_value(value)
+    Checker(Report &report, std::string_view field, int index, double value)
+        : m_report(report), m_field(field), m_index(index), m_value(value)
     {}
 
-    // Returns false (and records "must be finite") for NaN/Inf so later rules are skipped.
+    // Returns false (and reports "must be finite") for NaN/Inf so later rules are skipped.
     bool finite()
     {
         if (std::isfinite(m_value))
             return true;
-        add("must be finite");
+        m_report(m_field, m_index, m_value, [] { return std::string("must be finite"); });
         return false;
     }
-    void require(bool ok, std::string rule)
+    template<typename Rule> void require(bool ok, Rule rule)
     {
         if (!ok)
-            add(std::move(rule));
+            m_report(m_field, m_index, m_value, rule);
     }
 
 private:
-    void add(std::string rule)
-    {
-        m_out.push_back(Violation{std::string(m_field), m_index, std::move(rule), m_value});
-    }
-
-    std::vector<Violation> &m_out;
+    Report &m_report;
     std::string_view m_field;
     int m_index;
     double m_value;
@@ -131,64 +128,94 @@ std::string Violation::message() const
     return field + ": " + rule + ", got " + formatNumber(value);
 }
 
+namespace {
+
+template<typename Report> void checkDevice(const DeviceParams &p, Report &&report)
+{
+    constexpr double halfPi = std::numbers::pi / 2;
+    constexpr double pi = std::numbers::pi;
+    const auto text = [](const char *rule) { return [rule] { return std::string(rule); }; };
+    const auto withNumber = [](const char *rule, double bound) {
+        return [rule, bound] { return std::string(rule) + " (" + numberText(bound) + ")"; };
+    };
+
+    if (Checker c(report, "D_adm", 0, p.D_adm); c.finite()) {
+        c.require(p.D_adm >= 1e-6, text("must be ≥ 1e-06"));
+        c.require(p.D_adm <= 1.0, text("must be ≤ 1"));
+    }
+    if (Checker c(report, "M_adm", 1, p.M_adm); c.finite()) {
+        c.require(p.M_adm > 0.0, text("must be > 0"));
+        c.require(p.M_adm <= 10.0, text("must be ≤ 10"));
+    }
+    if (Checker c(report, "K_min", 2, p.K_min); c.finite()) {
+        c.require(p.K_min >= 0.0, text("must be ≥ 0"));
+        // Cross-field rule; only meaningful when K_max itself is a number.
+        if (std::isfinite(p.K_max))
+            c.require(p.K_min <= p.K_max, withNumber("must be ≤ K_max", p.K_max));
+    }
+    if (Checker c(report, "K_max", 3, p.K_max); c.finite()) {
+        c.require(p.K_max >= 0.0, text("must be ≥ 0"));
+        c.require(p.K_max <= 50.0, text("must be ≤ 50"));
+    }
+    if (Checker c(report, "N", 4, p.N); c.finite()) {
+        c.require(p.N > 0.0, text("must be > 0"));
+        c.require(p.N <= halfPi, withNumber("must be ≤ π/2", halfPi));
+    }
+    if (Checker c(report, "Q_dz", 5, p.Q_dz); c.finite()) {
+        c.require(p.Q_dz >= 0.0, text("must be ≥ 0"));
+        if (std::isfinite(p.N))
+            c.require(p.Q_dz < p.N, withNumber("must be < N", p.N));
+    }
+    if (Checker c(report, "theta0", 6, p.theta0); c.finite()) {
+        c.require(p.theta0 >= -pi, withNumber("must be ≥ −π", -pi));
+        c.require(p.theta0 <= pi, withNumber("must be ≤ π", pi));
+    }
+}
+
+//! A report() that collects every violation with its text.
+struct Collect
+{
+    std::vector<Violation> &out;
+    template<typename Rule>
+    void operator()(std::string_view field, int index, double value, const Rule &rule)
+    {
+        out.push_back(Violation{std::string(field), index, rule(), value});
+    }
+};
+
+} // namespace
+
 std::vector<Violation> validate(const DeviceParams &p)
 {
     std::vector<Violation> out;
-    constexpr double halfPi = std::numbers::pi / 2;
-    constexpr double pi = std::numbers::pi;
-
-    if (Checker c(out, "D_adm", 0, p.D_adm); c.finite()) {
-        c.require(p.D_adm >= 1e-6, "must be ≥ 1e-06");
-        c.require(p.D_adm <= 1.0, "must be ≤ 1");
-    }
-    if (Checker c(out, "M_adm", 1, p.M_adm); c.finite()) {
-        c.require(p.M_adm > 0.0, "must be > 0");
-        c.require(p.M_adm <= 10.0, "must be ≤ 10");
-    }
-    if (Checker c(out, "K_min", 2, p.K_min); c.finite()) {
-        c.require(p.K_min >= 0.0, "must be ≥ 0");
-        // Cross-field rule; only meaningful when K_max itself is a number.
-        if (std::isfinite(p.K_max))
-            c.require(p.K_min <= p.K_max, "must be ≤ K_max (" + numberText(p.K_max) + ")");
-    }
-    if (Checker c(out, "K_max", 3, p.K_max); c.finite()) {
-        c.require(p.K_max >= 0.0, "must be ≥ 0");
-        c.require(p.K_max <= 50.0, "must be ≤ 50");
-    }
-    if (Checker c(out, "N", 4, p.N); c.finite()) {
-        c.require(p.N > 0.0, "must be > 0");
-        c.require(p.N <= halfPi, "must be ≤ π/2 (" + numberText(halfPi) + ")");
-    }
-    if (Checker c(out, "Q_dz", 5, p.Q_dz); c.finite()) {
-        c.require(p.Q_dz >= 0.0, "must be ≥ 0");
-        if (std::isfinite(p.N))
-            c.require(p.Q_dz < p.N, "must be < N (" + numberText(p.N) + ")");
-    }
-    if (Checker c(out, "theta0", 6, p.theta0); c.finite()) {
-        c.require(p.theta0 >= -pi, "must be ≥ −π (" + numberText(-pi) + ")");
-        c.require(p.theta0 <= pi, "must be ≤ π (" + numberText(pi) + ")");
-    }
+    checkDevice(p, Collect{out});
     return out;
 }
 
 std::vector<Violation> validate(const HostParams &p)
 {
     std::vector<Violation> out;
-    if (Checker c(out, "v_max", -1, p.v_max); c.finite()) {
-        c.require(p.v_max > 0.0, "must be > 0");
-        c.require(p.v_max <= 100.0, "must be ≤ 100");
+    Collect report{out};
+    const auto text = [](const char *rule) { return [rule] { return std::string(rule); }; };
+    if (Checker c(report, "v_max", -1, p.v_max); c.finite()) {
+        c.require(p.v_max > 0.0, text("must be > 0"));
+        c.require(p.v_max <= 100.0, text("must be ≤ 100"));
     }
-    if (Checker c(out, "tau_limit", -1, p.tau_limit); c.finite()) {
-        c.require(p.tau_limit > 0.0, "must be > 0");
-        c.require(p.tau_limit <= 10.0, "must be ≤ 10");
+    if (Checker c(report, "tau_limit", -1, p.tau_limit); c.finite()) {
+        c.require(p.tau_limit > 0.0, text("must be > 0"));
+        c.require(p.tau_limit <= 10.0, text("must be ≤ 10"));
     }
     return out;
 }
 
 int firstViolatingField(const DeviceParams &params)
 {
-    const auto violations = validate(params);
-    return violations.empty() ? -1 : violations.front().index;
+    int first = -1;
+    checkDevice(params, [&first](std::string_view, int index, double, const auto &) {
+        if (first < 0)
+            first = index;
+    });
+    return first;
 }
 
 double roundedForWire(int index, double value)

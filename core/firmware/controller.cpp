@@ -1,0 +1,108 @@
+#include "controller.h"
+
+#include "protocol/messages.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hatpic::fw {
+
+template<typename T>
+Controller<T>::Controller(const Config &config, Actuator<T> &actuator)
+    : m_config(config), m_actuator(actuator)
+{
+    m_period = 1.0 / config.rateHz;
+    m_tauLimit = T(config.tauLimit);
+}
+
+template<typename T> bool Controller<T>::start(const DeviceParams &params, std::uint32_t nowUs)
+{
+    setParams(params);
+    m_lastFeedbackUs = nowUs;
+    T theta{};
+    if (!m_actuator.start(theta))
+        return false;
+    m_filter = {theta, T(0)};
+    m_measured = {theta, T(0), T(0)};
+    m_record.theta = theta;
+    return true;
+}
+
+template<typename T> void Controller<T>::setParams(const DeviceParams &params)
+{
+    m_params = params;
+    m_shape = StiffnessShape<T>::from(params);
+    m_stepper = AdmittanceStepper<T>(AdmittanceCoefficients::compute(params, m_period));
+}
+
+template<typename T> void Controller<T>::setFeedback(T tauExt, std::uint32_t atUs)
+{
+    m_feedback = tauExt;
+    m_lastFeedbackUs = atUs;
+    m_stale = false;
+}
+
+template<typename T> void Controller<T>::busError()
+{
+    ++m_busErrors;
+    if (++m_consecutiveErrors >= kMaxConsecutiveBusErrors && !m_faulted) {
+        m_faulted = true;
+        m_actuator.disable();
+    }
+}
+
+template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t nowUs)
+{
+    // 1. Measure; a failed read holds the last measurement and commands nothing new.
+    bool measured = false;
+    if (!m_faulted) {
+        measured = m_actuator.measure(m_measured);
+        if (measured)
+            m_consecutiveErrors = 0;
+        else
+            busError();
+    }
+
+    // 2. τ_rec, τ_total and flags at the measured θ (model.md § 2); τ_ext is 0 when stale.
+    // Signed difference: feedback may be stamped after this cycle's time (it arrived between
+    // cycles); the latch keeps a stale flag up once the difference wraps.
+    if (m_config.watchdogUs > 0 && !m_stale)
+        m_stale = std::int32_t(nowUs - m_lastFeedbackUs) >= std::int32_t(m_config.watchdogUs);
+    CycleRecord<T> &r = m_record;
+    r.t_us = nowUs;
+    r.theta = m_measured.theta;
+    r.omega = m_measured.omega;
+    r.tau = m_measured.tau;
+    r.tau_rec = recenteringTorque(m_shape, r.theta);
+    r.tau_ext = m_stale ? T(0) : m_feedback;
+    const T sum = r.tau_rec + r.tau_ext;
+    r.tau_total = std::clamp(sum, -m_tauLimit, m_tauLimit);
+    r.flags = 0;
+    switch (stiffnessZone(m_shape, r.theta)) {
+    case StiffnessZone::DeadZone:
+        r.flags |= v2::kFlagDeadZone;
+        break;
+    case StiffnessZone::Notch:
+        r.flags |= v2::kFlagNotch;
+        break;
+    case StiffnessZone::Outer:
+        break;
+    }
+    if (std::abs(sum) > m_tauLimit)
+        r.flags |= v2::kFlagSaturated;
+    if (m_stale)
+        r.flags |= v2::kFlagFeedbackStale;
+
+    // 3–4. The filter advances its own state with u = −τ + τ_total; its position is the goal.
+    if (measured) {
+        m_filter = m_stepper.step(m_filter, -r.tau + r.tau_total);
+        if (!m_actuator.command(m_filter.theta, m_filter.omega))
+            busError();
+    }
+    return r;
+}
+
+template class Controller<float>;
+template class Controller<double>;
+
+} // namespace hatpic::fw

@@ -1,0 +1,96 @@
+// The control cycle of servo.md § 4 on the haptic model: measure, render τ_rec + τ_ext, advance
+// the admittance filter, command the servo. One implementation for the ESP32 (T = float, its
+// FPU's precision), hatpic-fw-host and the simulator (T = double).
+//
+// Plain C++20: no Qt, no OS calls, no exceptions, no allocation. Everything that depends only
+// on the parameters and the period (K_rec's shape, e^{−αh} and the other step coefficients)
+// is computed once per parameter change, in double; a cycle is a handful of T operations.
+// Used from the control context only.
+#pragma once
+
+#include "firmware/actuator.h"
+#include "model/admittance.h"
+#include "model/params.h"
+#include "model/stiffness.h"
+
+#include <cstdint>
+
+namespace hatpic::fw {
+
+//! One control cycle as the device rendered it: what TELEMETRY reports.
+template<typename T> struct CycleRecord
+{
+    std::uint32_t t_us = 0; //!< the cycle's time on the device clock [µs, wraps]
+    T theta{};              //!< measured knob angle the cycle used [rad]
+    T omega{};              //!< measured knob rate [rad/s]
+    T tau{};                //!< measured interaction torque [N·m]
+    T tau_rec{};            //!< −K_rec(θ)·(θ−θ0) for that θ [N·m]
+    T tau_ext{};            //!< feedback rendered (0 when stale) [N·m]
+    T tau_total{};          //!< τ_rec + τ_ext clamped to ±tau_limit [N·m]
+    std::uint8_t flags = 0; //!< v2::kFlag* bits
+};
+
+template<typename T> class Controller
+{
+public:
+    //! Consecutive failed bus transactions after which the torque goes off (servo.md § 1).
+    static constexpr std::uint32_t kMaxConsecutiveBusErrors = 100;
+
+    struct Config
+    {
+        double rateHz = 1000;              //!< control rate; the period h = 1/rate [Hz]
+        double tauLimit = 0.44;            //!< |τ_total| limit [N·m]
+        std::uint32_t watchdogUs = 200000; //!< feedback older than this is stale; 0 = never
+    };
+
+    Controller(const Config &config, Actuator<T> &actuator);
+
+    //! Brings the actuator up and sets the filter's state to the present angle at rest.
+    //! `params` (already valid) is in force from the first cycle; `nowUs` counts as a
+    //! feedback arrival for the watchdog. False when the actuator does not answer.
+    bool start(const DeviceParams &params, std::uint32_t nowUs);
+
+    //! A new valid block, in force from the next cycle, whole.
+    void setParams(const DeviceParams &params);
+    //! The host's τ_ext [N·m], received at `atUs`; it feeds the watchdog.
+    void setFeedback(T tauExt, std::uint32_t atUs);
+
+    //! Runs one cycle at device time `nowUs`. On a bus error the previous measurement is held
+    //! and the servo keeps its last command; after kMaxConsecutiveBusErrors in a row the
+    //! torque goes off and stays off (faulted()).
+    const CycleRecord<T> &cycle(std::uint32_t nowUs);
+
+    const CycleRecord<T> &last() const { return m_record; }
+    const DeviceParams &params() const { return m_params; }
+    double period() const { return m_period; }
+    bool faulted() const { return m_faulted; }
+    std::uint64_t busErrors() const { return m_busErrors; }
+
+private:
+    void busError();
+
+    Config m_config;
+    Actuator<T> &m_actuator;
+    double m_period = 1e-3; //!< [s]
+    T m_tauLimit{};
+
+    DeviceParams m_params;
+    StiffnessShape<T> m_shape;
+    AdmittanceStepper<T> m_stepper;
+    BasicAdmittanceState<T> m_filter; //!< θ_f, ω_f: the filter's own state (servo.md § 4)
+
+    Measurement<T> m_measured;
+    CycleRecord<T> m_record;
+    T m_feedback{};
+    std::uint32_t m_lastFeedbackUs = 0;
+    bool m_stale = false; //!< latched until the next feedback, so a clock wrap cannot re-arm it
+
+    std::uint32_t m_consecutiveErrors = 0;
+    std::uint64_t m_busErrors = 0;
+    bool m_faulted = false;
+};
+
+extern template class Controller<float>;
+extern template class Controller<double>;
+
+} // namespace hatpic::fw

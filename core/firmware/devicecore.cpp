@@ -1,0 +1,241 @@
+#include "devicecore.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hatpic::fw {
+
+namespace {
+
+//! The block as the device keeps it: 7 × f32.
+DeviceParams roundedToF32(DeviceParams p)
+{
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        p.setField(i, double(float(p.field(i))));
+    return p;
+}
+
+bool valid(const DeviceParams &p)
+{
+    return firstViolatingField(p) < 0;
+}
+
+} // namespace
+
+template<typename T>
+DeviceCore<T>::DeviceCore(const Config &config, HostPort &host, Actuator<T> &actuator, Clock &clock,
+                          ParamStore *store)
+    : m_config(config), m_host(host), m_clock(clock), m_store(store),
+      m_controller(config.control, actuator)
+{
+    m_maxStreamHz = std::uint16_t(std::floor(std::min(config.control.rateHz, kMaxControlRate)));
+}
+
+template<typename T> bool DeviceCore<T>::start(std::uint32_t nowUs)
+{
+    DeviceParams params = roundedToF32(m_config.powerUp);
+    m_powerUp = PowerUp::Configured;
+    if (!valid(params)) {
+        params = roundedToF32(DeviceParams{});
+        m_powerUp = PowerUp::Defaults;
+    }
+    StoredSettings stored;
+    if (m_store && m_store->load(stored)) {
+        const DeviceParams candidate = roundedToF32(stored.params);
+        if (valid(candidate)) {
+            params = candidate;
+            m_powerUp = PowerUp::Stored;
+        } else {
+            m_storedRejected = true;
+        }
+    }
+    m_accepted = params;
+    m_flash = params;
+    m_lastTheta.store(T(params.theta0));
+    const bool ok = m_controller.start(params, nowUs);
+    m_lastTheta.store(m_controller.last().theta);
+    return ok;
+}
+
+// ---- link context ----
+
+template<typename T> void DeviceCore<T>::serviceHost()
+{
+    std::array<std::uint8_t, 64> chunk;
+    for (;;) {
+        const std::size_t n = m_host.read(chunk);
+        if (n == 0)
+            break;
+        m_decoder.feed(std::span<const std::uint8_t>(chunk.data(), n),
+                       [this](const v2::Frame &frame) { handleFrame(frame); });
+    }
+    Event event;
+    while (m_events.pop(event)) {
+        if (event == Event::BusFault)
+            sendLog("servo bus: 100 consecutive errors, torque disabled");
+    }
+    sendTelemetry();
+}
+
+template<typename T> void DeviceCore<T>::handleFrame(const v2::Frame &frame)
+{
+    if (const auto *fb = std::get_if<v2::SetFeedback>(&frame.message)) {
+        // A stream, not a command: applied whatever its seq. A non-finite value is ignored
+        // (it would poison the admittance state) and does not feed the watchdog.
+        if (std::isfinite(fb->tauExt))
+            m_feedback.push(Feedback{T(fb->tauExt), m_clock.micros()});
+        return;
+    }
+    const std::uint8_t type = v2::messageType(frame.message);
+    if (m_haveLastCommand && type == m_lastType && frame.seq == m_lastSeq) {
+        // A retry: answer again with the very same bytes, apply nothing.
+        m_host.write({m_reply.data(), m_replyLength}, HostPort::Traffic::Reply);
+        return;
+    }
+    const std::size_t length = answer(frame);
+    if (length == 0)
+        return;
+    std::copy_n(m_scratch.begin(), length, m_reply.begin());
+    m_replyLength = length;
+    m_haveLastCommand = true;
+    m_lastType = type;
+    m_lastSeq = frame.seq;
+    m_host.write({m_reply.data(), m_replyLength}, HostPort::Traffic::Reply);
+}
+
+template<typename T> std::size_t DeviceCore<T>::reply(const v2::Message &message)
+{
+    return v2::encodeFrame(m_replySeq++, message, m_scratch);
+}
+
+template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
+{
+    const auto ack = [&](v2::AckStatus status, std::uint8_t field = v2::kNoField) {
+        return reply(v2::Ack{frame.seq, status, field});
+    };
+    const v2::Message &m = frame.message;
+    if (std::holds_alternative<v2::Hello>(m)) {
+        m_streamHz = 0; // HELLO stops the stream, as power-up does
+        m_toControl.push(ControlInput{ControlInput::Kind::Stream, {}, 0});
+        v2::HelloReply hello;
+        hello.protocolVersion = v2::kProtocolVersion;
+        hello.maxStreamHz = m_maxStreamHz;
+        hello.deviceId = m_config.deviceId;
+        hello.tauLimit = float(m_config.control.tauLimit);
+        hello.firmware.assign(m_config.firmware);
+        return reply(hello);
+    }
+    if (std::holds_alternative<v2::GetParams>(m))
+        return reply(v2::Params{m_accepted});
+    if (const auto *set = std::get_if<v2::SetParams>(&m)) {
+        const DeviceParams block = roundedToF32(set->params);
+        const int field = firstViolatingField(block);
+        if (field >= 0)
+            return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));
+        if (!m_toControl.push(ControlInput{ControlInput::Kind::Params, block, 0}))
+            return 0;       // the control context is not draining: no answer, the host retries
+        m_accepted = block; // in force from the next control cycle
+        return ack(v2::AckStatus::Ok);
+    }
+    if (const auto *set = std::get_if<v2::SetStream>(&m)) {
+        std::uint16_t hz = std::min(set->rateHz, m_maxStreamHz);
+        if (m_config.linkLimitHz > 0)
+            hz = std::min(hz, m_config.linkLimitHz);
+        if (!m_toControl.push(ControlInput{ControlInput::Kind::Stream, {}, hz}))
+            return 0;
+        m_streamHz = hz;
+        return ack(v2::AckStatus::Ok);
+    }
+    if (std::holds_alternative<v2::SaveParams>(m)) {
+        if (m_store && !m_store->save(StoredSettings{m_accepted}))
+            return ack(v2::AckStatus::StorageError);
+        m_flash = m_accepted;
+        return ack(v2::AckStatus::Ok);
+    }
+    if (const auto *ping = std::get_if<v2::Ping>(&m))
+        return reply(v2::Pong{ping->token});
+    if (std::holds_alternative<v2::Zero>(m)) {
+        DeviceParams candidate = m_accepted;
+        candidate.theta0 = double(float(m_lastTheta.load()));
+        const int field = firstViolatingField(candidate);
+        if (field >= 0)
+            return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));
+        if (!m_toControl.push(ControlInput{ControlInput::Kind::Params, candidate, 0}))
+            return 0;
+        m_accepted = candidate;
+        return ack(v2::AckStatus::Ok);
+    }
+    if (const auto *refused = std::get_if<v2::Refused>(&m))
+        return ack(refused->status);
+    // A device → host message type cannot come out of a FromHost decoder; refuse it anyway.
+    return ack(v2::AckStatus::UnknownType);
+}
+
+template<typename T> void DeviceCore<T>::sendTelemetry()
+{
+    Telemetry item;
+    while (m_toLink.pop(item)) {
+        const CycleRecord<T> &c = item.record;
+        v2::Telemetry tm;
+        tm.t_us = c.t_us;
+        tm.theta = float(c.theta);
+        tm.omega = float(c.omega);
+        tm.tau = float(c.tau);
+        tm.tau_rec = float(c.tau_rec);
+        tm.tau_ext = float(c.tau_ext);
+        tm.flags = c.flags;
+        const std::size_t n = v2::encodeFrame(item.seq, tm, m_scratch);
+        if (!m_host.write({m_scratch.data(), n}, HostPort::Traffic::Stream))
+            m_telemetryDropped.fetch_add(1);
+    }
+}
+
+template<typename T> void DeviceCore<T>::sendLog(std::string_view text)
+{
+    v2::Log log;
+    log.text.assign(text);
+    const std::size_t n = reply(log);
+    m_host.write({m_scratch.data(), n}, HostPort::Traffic::Reply);
+}
+
+// ---- control context ----
+
+template<typename T> const CycleRecord<T> &DeviceCore<T>::controlCycle(std::uint32_t nowUs)
+{
+    ControlInput input;
+    while (m_toControl.pop(input)) {
+        if (input.kind == ControlInput::Kind::Params) {
+            m_controller.setParams(input.params); // the newest block wins, whole
+        } else {
+            m_stream = input.rateHz;
+            m_streamPhase = m_config.control.rateHz - input.rateHz; // first frame next cycle
+        }
+    }
+    Feedback feedback;
+    while (m_feedback.pop(feedback))
+        m_controller.setFeedback(feedback.tauExt, feedback.atUs);
+
+    const CycleRecord<T> &record = m_controller.cycle(nowUs);
+    m_lastTheta.store(record.theta);
+    if (m_controller.faulted() && !m_faultReported) {
+        m_faultReported = true;
+        m_events.push(Event::BusFault);
+    }
+    if (m_stream > 0) {
+        // Frames spread evenly over the cycles: a phase accumulator, so 333 Hz at 1 kHz gives
+        // exactly 333 frames per second.
+        m_streamPhase += m_stream;
+        if (m_streamPhase >= m_config.control.rateHz) {
+            m_streamPhase -= m_config.control.rateHz;
+            const std::uint8_t seq = m_telemetrySeq++; // a dropped frame still uses its seq
+            if (!m_toLink.push(Telemetry{seq, record}))
+                m_telemetryDropped.fetch_add(1);
+        }
+    }
+    return record;
+}
+
+template class DeviceCore<float>;
+template class DeviceCore<double>;
+
+} // namespace hatpic::fw

@@ -1,0 +1,145 @@
+// The HATPIC device: protocol v2's device side (protocol.md § 3) around the control cycle.
+//
+// Two contexts, as on the ESP32 (the paper's two threads):
+// - the control context calls controlCycle() at the control rate;
+// - the link context calls serviceHost() whenever host bytes may have arrived or telemetry
+//   waits (the simulator calls both from one thread).
+// They share nothing but lock-free single-producer queues and one atomic: parameter blocks,
+// stream rate and feedback go to the control context; cycle records and log events come back.
+//
+// Plain C++20: no Qt, no OS calls, no exceptions, no RTTI, no allocation after construction.
+#pragma once
+
+#include "firmware/controller.h"
+#include "firmware/paramstore.h"
+#include "firmware/ports.h"
+#include "firmware/spscqueue.h"
+#include "protocol/framecodec.h"
+
+#include <atomic>
+#include <cstdint>
+#include <string_view>
+
+namespace hatpic::fw {
+
+template<typename T> class DeviceCore
+{
+public:
+    static constexpr double kMaxControlRate = 65535; //!< max_stream_hz is a u16 [Hz]
+
+    struct Config
+    {
+        typename Controller<T>::Config control;
+        std::uint32_t deviceId = 0;    //!< HELLO_REPLY device_id
+        std::string_view firmware;     //!< HELLO_REPLY firmware name (≤ 16 UTF-8 bytes)
+        std::uint16_t linkLimitHz = 0; //!< most TELEMETRY frames/s the link carries; 0 = any
+        DeviceParams powerUp;          //!< used when the store has no valid block
+    };
+
+    //! Where the parameters in force at power-up came from.
+    enum class PowerUp {
+        Stored,     //!< the store's block
+        Configured, //!< Config::powerUp (no store, nothing stored, or the stored block invalid)
+        Defaults,   //!< the model's defaults (Config::powerUp was invalid too)
+    };
+
+    //! Log events the control context reports to the host (LOG frames).
+    enum class Event : std::uint8_t { BusFault };
+
+    DeviceCore(const Config &config, HostPort &host, Actuator<T> &actuator, Clock &clock,
+               ParamStore *store);
+
+    //! Loads the parameters (store, else Config::powerUp, else defaults; each rounded to f32
+    //! and validated) and starts the control cycle. False when the actuator does not answer.
+    bool start(std::uint32_t nowUs);
+
+    // ---- link context ----
+    //! Reads and answers host frames, then sends the telemetry and log events waiting.
+    void serviceHost();
+
+    // ---- control context ----
+    //! Applies what the link context queued, runs one cycle at `nowUs`, queues its telemetry.
+    const CycleRecord<T> &controlCycle(std::uint32_t nowUs);
+
+    // ---- observers (any context; values may lag by a cycle) ----
+    PowerUp powerUpSource() const { return m_powerUp; }
+    //! Whether the stored block was there but invalid (then ignored).
+    bool storedBlockRejected() const { return m_storedRejected; }
+    //! The block last accepted (in force from the next cycle).
+    const DeviceParams &params() const { return m_accepted; }
+    //! The block SAVE_PARAMS saved last (or power-up's).
+    const DeviceParams &savedParams() const { return m_flash; }
+    std::uint16_t streamRate() const { return m_streamHz; } //!< in force after SET_STREAM [Hz]
+    std::uint16_t maxStreamHz() const { return m_maxStreamHz; }
+    //! Telemetry frames lost because the host port or the queue to it was full (seq gaps).
+    std::uint32_t telemetryDropped() const { return m_telemetryDropped.load(); }
+    const v2::DecoderStats &decoderStats() const { return m_decoder.stats(); }
+    const Controller<T> &controller() const { return m_controller; }
+
+private:
+    struct ControlInput
+    {
+        enum class Kind : std::uint8_t { Params, Stream };
+        Kind kind = Kind::Params;
+        DeviceParams params;
+        std::uint16_t rateHz = 0;
+    };
+    struct Feedback
+    {
+        T tauExt{};
+        std::uint32_t atUs = 0;
+    };
+    struct Telemetry
+    {
+        std::uint8_t seq = 0;
+        CycleRecord<T> record;
+    };
+
+    void handleFrame(const v2::Frame &frame);
+    //! Encodes the reply to a command into m_reply; returns its length (0 = no reply).
+    std::size_t answer(const v2::Frame &frame);
+    std::size_t reply(const v2::Message &message);
+    void sendTelemetry();
+    void sendLog(std::string_view text);
+
+    Config m_config;
+    HostPort &m_host;
+    Clock &m_clock;
+    ParamStore *m_store;
+    Controller<T> m_controller;
+    std::uint16_t m_maxStreamHz = 0;
+
+    // link context
+    v2::WireDecoder m_decoder{v2::Direction::FromHost};
+    DeviceParams m_accepted; //!< latest accepted block
+    DeviceParams m_flash;    //!< what SAVE_PARAMS saved (or power-up's block)
+    std::uint16_t m_streamHz = 0;
+    std::uint8_t m_replySeq = 0;
+    bool m_haveLastCommand = false;
+    std::uint8_t m_lastType = 0;
+    std::uint8_t m_lastSeq = 0;
+    v2::FrameBuffer m_reply{};
+    std::size_t m_replyLength = 0;
+    v2::FrameBuffer m_scratch{};
+    PowerUp m_powerUp = PowerUp::Configured;
+    bool m_storedRejected = false;
+
+    // control context
+    std::uint16_t m_stream = 0;
+    double m_streamPhase = 0;
+    std::uint8_t m_telemetrySeq = 0;
+    bool m_faultReported = false;
+
+    // shared (lock-free)
+    SpscQueue<ControlInput, 8> m_toControl;
+    SpscQueue<Feedback, 16> m_feedback;
+    SpscQueue<Telemetry, 64> m_toLink;
+    SpscQueue<Event, 4> m_events;
+    std::atomic<T> m_lastTheta{};                     //!< θ of the latest cycle (ZERO) [rad]
+    std::atomic<std::uint32_t> m_telemetryDropped{0}; // both contexts add
+};
+
+extern template class DeviceCore<float>;
+extern template class DeviceCore<double>;
+
+} // namespace hatpic::fw

@@ -1,0 +1,27 @@
+// Where SAVE_PARAMS puts the parameters and power-up finds them: NVS on the ESP32, a state
+// file for hatpic-fw-host and the simulator, or nothing (kept in RAM only).
+#pragma once
+
+#include "model/params.h"
+
+namespace hatpic::fw {
+
+//! Everything SAVE_PARAMS persists, as one block.
+struct StoredSettings
+{
+    DeviceParams params;
+    friend bool operator==(const StoredSettings &, const StoredSettings &) = default;
+};
+
+class ParamStore
+{
+public:
+    virtual ~ParamStore() = default;
+    //! The saved block; false when there is none or it cannot be read (power-up then uses the
+    //! configured block). Validation is the device core's job, not the store's.
+    virtual bool load(StoredSettings &out) = 0;
+    //! Persists `settings`; false on a storage error (answered STORAGE_ERROR).
+    virtual bool save(const StoredSettings &settings) = 0;
+};
+
+} // namespace hatpic::fw
