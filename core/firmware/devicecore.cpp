@@ -31,8 +31,10 @@ DeviceCore<T>::DeviceCore(const Config &config, HostPort &host, Actuator<T> &act
     m_maxStreamHz = std::uint16_t(std::floor(std::min(config.control.rateHz, kMaxControlRate)));
 }
 
-template<typename T> bool DeviceCore<T>::start(std::uint32_t nowUs)
+template<typename T> const DeviceParams &DeviceCore<T>::loadParams()
 {
+    m_loaded = true;
+    m_storedRejected = false;
     DeviceParams params = roundedToF32(m_config.powerUp);
     m_powerUp = PowerUp::Configured;
     if (!valid(params)) {
@@ -52,7 +54,14 @@ template<typename T> bool DeviceCore<T>::start(std::uint32_t nowUs)
     m_accepted = params;
     m_flash = params;
     m_lastTheta.store(T(params.theta0));
-    const bool ok = m_controller.start(params, nowUs);
+    return m_accepted;
+}
+
+template<typename T> bool DeviceCore<T>::start(std::uint32_t nowUs)
+{
+    if (!m_loaded)
+        loadParams();
+    const bool ok = m_controller.start(m_accepted, nowUs);
     m_lastTheta.store(m_controller.last().theta);
     return ok;
 }

@@ -49,8 +49,11 @@ public:
     DeviceCore(const Config &config, HostPort &host, Actuator<T> &actuator, Clock &clock,
                ParamStore *store);
 
-    //! Loads the parameters (store, else Config::powerUp, else defaults; each rounded to f32
-    //! and validated) and starts the control cycle. False when the actuator does not answer.
+    //! Loads the power-up parameters: the store's block, else Config::powerUp, else the
+    //! defaults, each rounded to f32 and validated. start() calls it when nobody has; call it
+    //! first to place a simulated knob at the block's θ0 before the actuator starts.
+    const DeviceParams &loadParams();
+    //! Starts the control cycle with the loaded block. False when the actuator does not answer.
     bool start(std::uint32_t nowUs);
 
     // ---- link context ----
@@ -123,6 +126,7 @@ private:
     v2::FrameBuffer m_scratch{};
     PowerUp m_powerUp = PowerUp::Configured;
     bool m_storedRejected = false;
+    bool m_loaded = false;
 
     // control context
     std::uint16_t m_stream = 0;
