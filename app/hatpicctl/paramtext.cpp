@@ -2,9 +2,9 @@
 
 #include "console.h"
 
+#include "model/paramtable.h"
 #include "profile/profile.h"
 
-#include <array>
 #include <charconv>
 #include <cmath>
 
@@ -12,26 +12,14 @@ namespace hatpic::cli {
 
 namespace {
 
-struct FieldText
+QString text(std::string_view s)
 {
-    const char16_t *unit;
-    const char16_t *meaning;
-};
-
-constexpr std::array<FieldText, DeviceParams::kFieldCount> kFields = {{
-    {u"kg·m²", u"virtual inertia of the admittance filter"},
-    {u"N·m·s/rad", u"virtual damping of the admittance filter"},
-    {u"N·m/rad", u"minimum re-centering stiffness"},
-    {u"N·m/rad", u"maximum (notch) re-centering stiffness"},
-    {u"rad", u"half-width of the notch band"},
-    {u"rad", u"half-width of the dead zone"},
-    {u"rad", u"center (idle) angle"},
-}};
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
 
 QString fieldName(int index)
 {
-    const auto name = deviceFieldName(index);
-    return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    return text(deviceFieldName(index));
 }
 
 } // namespace
@@ -58,14 +46,14 @@ QString fieldUnit(int index)
 {
     if (index < 0 || index >= DeviceParams::kFieldCount)
         return {};
-    return QString::fromUtf16(kFields[static_cast<std::size_t>(index)].unit);
+    return text(kDeviceFields[static_cast<std::size_t>(index)].unit);
 }
 
 QString fieldMeaning(int index)
 {
     if (index < 0 || index >= DeviceParams::kFieldCount)
         return {};
-    return QString::fromUtf16(kFields[static_cast<std::size_t>(index)].meaning);
+    return text(kDeviceFields[static_cast<std::size_t>(index)].meaning);
 }
 
 QString parameterTable(const DeviceParams &params)

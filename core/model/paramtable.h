@@ -1,0 +1,185 @@
+// The parameter table: every fact about each parameter in one place — name, symbol, unit,
+// meaning, bounds and cross-field rule, wire index — read by validation (params.cpp), wire
+// rounding, the editor, its tooltips, the CLI's tables and a test that checks the docs.
+// Defaults live in the structs' member initializers (params.h), which the table points to.
+//
+// Plain C++20, constexpr: the device core reads it too.
+#pragma once
+
+#include "params.h"
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace hatpic {
+
+//! One end of a field's range. `symbol` is set where the bound is not a short decimal
+//! ("π/2"); messages then give both, e.g. "must be ≤ π/2 (1.5707963267948966)".
+struct FieldBound
+{
+    bool present = false;
+    double value = 0;
+    bool inclusive = true;
+    std::string_view symbol;
+};
+
+//! A rule against another field of the same set: value ≤ other (or < when strict).
+struct CrossRule
+{
+    int field = -1; //!< index of the other field, -1 = none
+    bool strict = false;
+};
+
+template<typename Params> struct FieldSpec
+{
+    std::string_view name;    //!< key in files, CLI and protocol docs: "K_min"
+    std::string_view symbol;  //!< what a person reads: "K_min", "θ0"
+    std::string_view unit;    //!< SI unit: "N·m/rad"
+    std::string_view label;   //!< short meaning for a form: "notch stiffness (maximum)"
+    std::string_view meaning; //!< one-line meaning: "maximum (notch) re-centering stiffness"
+    double Params::*member;
+    FieldBound lower;
+    FieldBound upper;
+    CrossRule cross;
+    bool angle = false; //!< an angle: user interfaces may show degrees
+};
+
+using DeviceFieldSpec = FieldSpec<DeviceParams>;
+using HostFieldSpec = FieldSpec<HostParams>;
+
+namespace paramtable {
+inline constexpr double kPi = 3.14159265358979323846;
+constexpr FieldBound atLeast(double v, std::string_view symbol = {})
+{
+    return {true, v, true, symbol};
+}
+constexpr FieldBound above(double v)
+{
+    return {true, v, false, {}};
+}
+constexpr FieldBound atMost(double v, std::string_view symbol = {})
+{
+    return {true, v, true, symbol};
+}
+} // namespace paramtable
+
+//! The device's fields in ParamBlock (wire) order: the index is the wire index (model.md § 1).
+inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceFields = {{
+    {"D_adm",
+     "D_adm",
+     "kg·m²",
+     "inertia",
+     "virtual inertia of the admittance filter",
+     &DeviceParams::D_adm,
+     paramtable::atLeast(1e-6),
+     paramtable::atMost(1.0),
+     {},
+     false},
+    {"M_adm",
+     "M_adm",
+     "N·m·s/rad",
+     "damping",
+     "virtual damping of the admittance filter",
+     &DeviceParams::M_adm,
+     paramtable::above(0.0),
+     paramtable::atMost(10.0),
+     {},
+     false},
+    {"K_min",
+     "K_min",
+     "N·m/rad",
+     "outer stiffness (minimum)",
+     "minimum re-centering stiffness",
+     &DeviceParams::K_min,
+     paramtable::atLeast(0.0),
+     {},
+     {3, false},
+     false},
+    {"K_max",
+     "K_max",
+     "N·m/rad",
+     "notch stiffness (maximum)",
+     "maximum (notch) re-centering stiffness",
+     &DeviceParams::K_max,
+     paramtable::atLeast(0.0),
+     paramtable::atMost(50.0),
+     {},
+     false},
+    {"N",
+     "N",
+     "rad",
+     "notch half-width",
+     "half-width of the notch band",
+     &DeviceParams::N,
+     paramtable::above(0.0),
+     paramtable::atMost(paramtable::kPi / 2, "π/2"),
+     {},
+     true},
+    {"Q_dz",
+     "Q_dz",
+     "rad",
+     "dead-zone half-width",
+     "half-width of the dead zone",
+     &DeviceParams::Q_dz,
+     paramtable::atLeast(0.0),
+     {},
+     {4, true},
+     true},
+    {"theta0",
+     "θ0",
+     "rad",
+     "center angle",
+     "center (idle) angle",
+     &DeviceParams::theta0,
+     paramtable::atLeast(-paramtable::kPi, "−π"),
+     paramtable::atMost(paramtable::kPi, "π"),
+     {},
+     true},
+}};
+
+//! The host's numeric fields (model.md § 1); mode and ref_deadzone are not numbers.
+inline constexpr std::array<HostFieldSpec, 2> kHostFields = {{
+    {"v_max",
+     "v_max",
+     "m/s or rad/s",
+     "max. reference velocity",
+     "maximum reference velocity",
+     &HostParams::v_max,
+     paramtable::above(0.0),
+     paramtable::atMost(100.0),
+     {},
+     false},
+    {"tau_limit",
+     "tau_limit",
+     "N·m",
+     "actuator torque limit",
+     "actuator torque limit",
+     &HostParams::tau_limit,
+     paramtable::above(0.0),
+     paramtable::atMost(10.0),
+     {},
+     false},
+}};
+
+//! The field's single-field range as numbers, with a cross rule's partner's range standing
+//! in for a missing upper bound (K_min ≤ K_max ≤ 50): what wire rounding must stay inside.
+struct NumericRange
+{
+    double low;
+    double high;
+};
+constexpr NumericRange numericRange(int index)
+{
+    const DeviceFieldSpec &s = kDeviceFields[std::size_t(index)];
+    double high = s.upper.value;
+    if (!s.upper.present && s.cross.field >= 0)
+        high = kDeviceFields[std::size_t(s.cross.field)].upper.value;
+    return {s.lower.value, high};
+}
+
+//! The valid range as a person reads it: "0 < N ≤ π/2", "0 ≤ Q_dz < N" (model.md § 1).
+template<typename Params> std::string rangeText(const FieldSpec<Params> &spec);
+
+} // namespace hatpic
