@@ -1,0 +1,25 @@
+// ParamStore in NVS (Preferences, namespace "hatpic", key "settings"): one settings blob
+// (settingsblob.h), versioned and CRC-checked.
+//
+// load() runs once in setup(), before the tasks exist; save() runs in the link task
+// (SAVE_PARAMS). A flash write stalls both cores' cache for a few tens of ms: the control task
+// misses those cycles and the servo holds its last goal meanwhile.
+#pragma once
+
+#include "firmware/paramstore.h"
+
+namespace hatpic::esp32 {
+
+class NvsParamStore final : public fw::ParamStore
+{
+public:
+    static constexpr const char *kNamespace = "hatpic";
+    static constexpr const char *kKey = "settings";
+
+    //! False when nothing was saved (first boot, erased NVS), or the blob is of another size or
+    //! version or fails its CRC: the device core then uses the spec defaults.
+    bool load(fw::StoredSettings &out) override;
+    bool save(const fw::StoredSettings &settings) override;
+};
+
+} // namespace hatpic::esp32
