@@ -53,7 +53,7 @@ template<typename T> const DeviceParams &DeviceCore<T>::loadParams()
     }
     m_accepted = params;
     m_flash = params;
-    m_lastTheta.store(T(params.theta0));
+    m_lastTheta.store(float(params.theta0));
     return m_accepted;
 }
 
@@ -62,7 +62,7 @@ template<typename T> bool DeviceCore<T>::start(std::uint32_t nowUs)
     if (!m_loaded)
         loadParams();
     const bool ok = m_controller.start(m_accepted, nowUs);
-    m_lastTheta.store(m_controller.last().theta);
+    m_lastTheta.store(float(m_controller.last().theta));
     return ok;
 }
 
@@ -225,7 +225,7 @@ template<typename T> const CycleRecord<T> &DeviceCore<T>::controlCycle(std::uint
         m_controller.setFeedback(feedback.tauExt, feedback.atUs);
 
     const CycleRecord<T> &record = m_controller.cycle(nowUs);
-    m_lastTheta.store(record.theta);
+    m_lastTheta.store(float(record.theta));
     if (m_controller.faulted() && !m_faultReported) {
         m_faultReported = true;
         m_events.push(Event::BusFault);

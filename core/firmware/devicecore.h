@@ -139,7 +139,7 @@ private:
     SpscQueue<Feedback, 16> m_feedback;
     SpscQueue<Telemetry, 64> m_toLink;
     SpscQueue<Event, 4> m_events;
-    std::atomic<T> m_lastTheta{};                     //!< θ of the latest cycle (ZERO) [rad]
+    std::atomic<float> m_lastTheta{}; //!< θ of the latest cycle, as ZERO stores it [rad]
     std::atomic<std::uint32_t> m_telemetryDropped{0}; // both contexts add
 };
 
