@@ -101,8 +101,8 @@ template<typename T> long allocationsOfBusyRun()
     // Everything a host does, pre-encoded outside the counted region.
     std::array<v2::FrameBuffer, 8> frames{};
     std::array<std::size_t, 8> sizes{};
-    const v2::Message messages[] = {v2::SetStream{1000}, v2::SetParams{DeviceParams{}},
-                                    v2::GetParams{},     v2::Ping{7},
+    const v2::Message messages[] = {v2::SetStream{1000},   v2::SetParams{DeviceParams{}},
+                                    v2::GetParams{},       v2::Ping{7},
                                     v2::SetFeedback{0.1f}, v2::Zero{},
                                     v2::Hello{},           v2::SetStream{500}};
     for (std::size_t i = 0; i < frames.size(); ++i)
