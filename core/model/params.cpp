@@ -1,5 +1,6 @@
 #include "params.h"
 
+#include "fieldcheck.h"
 #include "paramtable.h"
 
 #include <charconv>
@@ -8,76 +9,6 @@
 #include <utility>
 
 namespace hatpic {
-
-namespace {
-
-std::string numberText(double v)
-{
-    return formatNumber(v);
-}
-
-std::string boundText(const FieldBound &b)
-{
-    if (b.symbol.empty())
-        return numberText(b.value);
-    return std::string(b.symbol) + " (" + numberText(b.value) + ")";
-}
-
-// Walks the table's rules (model.md § 1) for every field of `p`. `report(field, index, value,
-// rule)` is called for each broken rule, where `rule()` makes its text: a caller that only
-// needs the index never builds a string, so the device core validates without allocating.
-// Device fields report their wire index, host fields -1.
-template<typename Params, std::size_t N, typename Report>
-void checkFields(const Params &p, const std::array<FieldSpec<Params>, N> &specs, bool wireIndex,
-                 Report &&report)
-{
-    for (std::size_t i = 0; i < specs.size(); ++i) {
-        const FieldSpec<Params> &s = specs[i];
-        const double v = p.*s.member;
-        const int index = wireIndex ? int(i) : -1;
-        if (!std::isfinite(v)) {
-            // NaN and ±Inf break every later rule: report only this one.
-            report(s.name, index, v, [] { return std::string("must be finite"); });
-            continue;
-        }
-        const FieldBound &lo = s.lower;
-        if (lo.present && !(lo.inclusive ? v >= lo.value : v > lo.value)) {
-            report(s.name, index, v, [&lo] {
-                return std::string(lo.inclusive ? "must be ≥ " : "must be > ") + boundText(lo);
-            });
-        }
-        const FieldBound &hi = s.upper;
-        if (hi.present && !(hi.inclusive ? v <= hi.value : v < hi.value)) {
-            report(s.name, index, v, [&hi] {
-                return std::string(hi.inclusive ? "must be ≤ " : "must be < ") + boundText(hi);
-            });
-        }
-        if (s.cross.field >= 0) {
-            const FieldSpec<Params> &other = specs[std::size_t(s.cross.field)];
-            const double ov = p.*other.member;
-            // Only meaningful when the other field itself is a number.
-            if (std::isfinite(ov) && !(s.cross.strict ? v < ov : v <= ov)) {
-                report(s.name, index, v, [&s, &other, ov] {
-                    return std::string(s.cross.strict ? "must be < " : "must be ≤ ") +
-                           std::string(other.name) + " (" + numberText(ov) + ")";
-                });
-            }
-        }
-    }
-}
-
-//! A report() that collects every violation with its text.
-struct Collect
-{
-    std::vector<Violation> &out;
-    template<typename Rule>
-    void operator()(std::string_view field, int index, double value, const Rule &rule)
-    {
-        out.push_back(Violation{std::string(field), index, rule(), value});
-    }
-};
-
-} // namespace
 
 double DeviceParams::field(int index) const
 {
@@ -121,25 +52,25 @@ std::string Violation::message() const
 std::vector<Violation> validate(const DeviceParams &p)
 {
     std::vector<Violation> out;
-    checkFields(p, kDeviceFields, true, Collect{out});
+    detail::checkFields(p, kDeviceFields, true, detail::Collect{out});
     return out;
 }
 
 std::vector<Violation> validate(const HostParams &p)
 {
     std::vector<Violation> out;
-    checkFields(p, kHostFields, false, Collect{out});
+    detail::checkFields(p, kHostFields, false, detail::Collect{out});
     return out;
 }
 
 int firstViolatingField(const DeviceParams &params)
 {
     int first = -1;
-    checkFields(params, kDeviceFields, true,
-                [&first](std::string_view, int index, double, const auto &) {
-                    if (first < 0)
-                        first = index;
-                });
+    detail::checkFields(params, kDeviceFields, true,
+                        [&first](std::string_view, int index, double, const auto &) {
+                            if (first < 0)
+                                first = index;
+                        });
     return first;
 }
 
@@ -147,13 +78,15 @@ template<typename Params> std::string rangeText(const FieldSpec<Params> &s)
 {
     std::string text;
     if (s.lower.present) {
-        text += s.lower.symbol.empty() ? numberText(s.lower.value) : std::string(s.lower.symbol);
+        text += s.lower.symbol.empty() ? detail::numberText(s.lower.value)
+                                       : std::string(s.lower.symbol);
         text += s.lower.inclusive ? " ≤ " : " < ";
     }
     text += s.symbol;
     if (s.upper.present) {
         text += s.upper.inclusive ? " ≤ " : " < ";
-        text += s.upper.symbol.empty() ? numberText(s.upper.value) : std::string(s.upper.symbol);
+        text += s.upper.symbol.empty() ? detail::numberText(s.upper.value)
+                                       : std::string(s.upper.symbol);
     } else if (s.cross.field >= 0) {
         text += s.cross.strict ? " < " : " ≤ ";
         text += kDeviceFields[std::size_t(s.cross.field)].symbol;
@@ -162,6 +95,8 @@ template<typename Params> std::string rangeText(const FieldSpec<Params> &s)
 }
 template std::string rangeText(const DeviceFieldSpec &);
 template std::string rangeText(const HostFieldSpec &);
+template std::string rangeText(const EffectFieldSpec &);
+template std::string rangeText(const VibrationFieldSpec &);
 
 double roundedForWire(int index, double value)
 {

@@ -6,6 +6,7 @@
 // Plain C++20, constexpr: the device core reads it too.
 #pragma once
 
+#include "effects.h"
 #include "params.h"
 
 #include <array>
@@ -23,6 +24,7 @@ struct FieldBound
     double value = 0;
     bool inclusive = true;
     std::string_view symbol;
+    bool external = false; //!< the value is given when validating (e.g. tau_limit)
 };
 
 //! A rule against another field of the same set: value ≤ other (or < when strict).
@@ -62,6 +64,11 @@ constexpr FieldBound above(double v)
 constexpr FieldBound atMost(double v, std::string_view symbol = {})
 {
     return {true, v, true, symbol};
+}
+//! ≤ a value known only when validating (tau_limit).
+constexpr FieldBound atMostExternal(std::string_view symbol)
+{
+    return {true, 0, true, symbol, true};
 }
 } // namespace paramtable
 
@@ -158,6 +165,119 @@ inline constexpr std::array<HostFieldSpec, 2> kHostFields = {{
      "actuator torque limit",
      &HostParams::tau_limit,
      paramtable::above(0.0),
+     paramtable::atMost(10.0),
+     {},
+     false},
+}};
+
+using EffectFieldSpec = FieldSpec<EffectParams>;
+using VibrationFieldSpec = FieldSpec<Vibration>;
+
+//! The effect block's fields in wire order (effects.md § 2). detent_strength's upper bound is
+//! the device's tau_limit.
+inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectFields = {{
+    {"detent_strength",
+     "A_det",
+     "N·m",
+     "detent strength",
+     "torque amplitude of the detents",
+     &EffectParams::detent_strength,
+     paramtable::atLeast(0.0),
+     paramtable::atMostExternal("tau_limit"),
+     {},
+     false},
+    {"detent_spacing",
+     "s_det",
+     "rad",
+     "detent spacing",
+     "distance between detent rest positions",
+     &EffectParams::detent_spacing,
+     paramtable::atLeast(0.01),
+     paramtable::atMost(paramtable::kPi, "π"),
+     {},
+     true},
+    {"detent_range",
+     "R_det",
+     "rad",
+     "detent range",
+     "|θ−θ0| up to which detents act (0 = off)",
+     &EffectParams::detent_range,
+     paramtable::atLeast(0.0),
+     paramtable::atMost(paramtable::kPi, "π"),
+     {},
+     true},
+    {"wall_min",
+     "wall_min",
+     "rad",
+     "lower end stop",
+     "lower virtual end stop, relative to θ0",
+     &EffectParams::wall_min,
+     paramtable::atLeast(-paramtable::kPi, "−π"),
+     paramtable::atMost(0.0),
+     {},
+     true},
+    {"wall_max",
+     "wall_max",
+     "rad",
+     "upper end stop",
+     "upper virtual end stop, relative to θ0",
+     &EffectParams::wall_max,
+     paramtable::atLeast(0.0),
+     paramtable::atMost(paramtable::kPi, "π"),
+     {},
+     true},
+    {"wall_stiffness",
+     "K_w",
+     "N·m/rad",
+     "wall stiffness",
+     "stiffness of the end stops",
+     &EffectParams::wall_stiffness,
+     paramtable::atLeast(0.0),
+     paramtable::atMost(50.0),
+     {},
+     false},
+    {"wall_damping",
+     "B_w",
+     "N·m·s/rad",
+     "wall damping",
+     "damping of the end stops while moving further in",
+     &EffectParams::wall_damping,
+     paramtable::atLeast(0.0),
+     paramtable::atMost(1.0),
+     {},
+     false},
+}};
+
+//! VIBRATE's fields (effects.md § 2); amplitude's upper bound is tau_limit, and the frequency
+//! must also stay below half the control rate (checked on top of this table).
+inline constexpr std::array<VibrationFieldSpec, 3> kVibrationFields = {{
+    {"amplitude",
+     "a",
+     "N·m",
+     "amplitude",
+     "vibration amplitude",
+     &Vibration::amplitude,
+     paramtable::atLeast(0.0),
+     paramtable::atMostExternal("tau_limit"),
+     {},
+     false},
+    {"frequency",
+     "f",
+     "Hz",
+     "frequency",
+     "vibration frequency",
+     &Vibration::frequency,
+     paramtable::atLeast(1.0),
+     paramtable::atMost(500.0),
+     {},
+     false},
+    {"duration",
+     "d",
+     "s",
+     "duration",
+     "vibration duration",
+     &Vibration::duration,
+     paramtable::atLeast(0.0),
      paramtable::atMost(10.0),
      {},
      false},

@@ -1,0 +1,103 @@
+#include "effects.h"
+
+#include "fieldcheck.h"
+#include "paramtable.h"
+
+namespace hatpic {
+
+double EffectParams::field(int index) const
+{
+    if (index < 0 || index >= kFieldCount)
+        return std::nan("");
+    return this->*kEffectFields[static_cast<std::size_t>(index)].member;
+}
+
+void EffectParams::setField(int index, double value)
+{
+    if (index >= 0 && index < kFieldCount)
+        this->*kEffectFields[static_cast<std::size_t>(index)].member = value;
+}
+
+std::string_view effectFieldName(int index)
+{
+    if (index < 0 || index >= EffectParams::kFieldCount)
+        return {};
+    return kEffectFields[static_cast<std::size_t>(index)].name;
+}
+
+int effectFieldIndex(std::string_view name)
+{
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        if (kEffectFields[static_cast<std::size_t>(i)].name == name)
+            return i;
+    }
+    return -1;
+}
+
+std::vector<Violation> validate(const EffectParams &effects, double tauLimit)
+{
+    std::vector<Violation> out;
+    detail::checkFields(effects, kEffectFields, true, detail::Collect{out}, tauLimit);
+    return out;
+}
+
+int firstViolatingField(const EffectParams &effects, double tauLimit)
+{
+    int first = -1;
+    detail::checkFields(
+        effects, kEffectFields, true,
+        [&first](std::string_view, int index, double, const auto &) {
+            if (first < 0)
+                first = index;
+        },
+        tauLimit);
+    return first;
+}
+
+namespace {
+
+//! The table's rules plus f < controlRate/2 (a cue above Nyquist would alias).
+template<typename Report>
+void checkVibration(const Vibration &v, double tauLimit, double controlRate, Report &&report)
+{
+    detail::checkFields(v, kVibrationFields, true, report, tauLimit);
+    const double nyquist = controlRate / 2;
+    if (std::isfinite(v.frequency) && !(v.frequency < nyquist)) {
+        report(kVibrationFields[1].name, 1, v.frequency, [nyquist] {
+            return "must be < half the control rate (" + detail::numberText(nyquist) + ")";
+        });
+    }
+}
+
+} // namespace
+
+std::vector<Violation> validate(const Vibration &vibration, double tauLimit, double controlRate)
+{
+    std::vector<Violation> out;
+    checkVibration(vibration, tauLimit, controlRate, detail::Collect{out});
+    return out;
+}
+
+int firstViolatingField(const Vibration &vibration, double tauLimit, double controlRate)
+{
+    int first = -1;
+    checkVibration(vibration, tauLimit, controlRate,
+                   [&first](std::string_view, int index, double, const auto &) {
+                       if (first < 0 || index < first)
+                           first = index;
+                   });
+    return first;
+}
+
+EffectFigures deriveEffectFigures(const EffectParams &effects, const DeviceParams &device,
+                                  double physicalDamping, double period)
+{
+    EffectFigures f;
+    f.detentPeakStiffness =
+        effects.detent_strength * 2.0 * std::numbers::pi / effects.detent_spacing;
+    f.wallPassivityMargin = physicalDamping - effects.wall_stiffness * period / 2.0;
+    f.detentsStifferThanNotch = effects.detent_range > 0 && f.detentPeakStiffness > device.K_max;
+    return f;
+}
+
+} // namespace hatpic

@@ -1,0 +1,85 @@
+// Validation against a field table (paramtable.h): the one implementation of model.md's and
+// effects.md's range rules. Private to core/model.
+#pragma once
+
+#include "paramtable.h"
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace hatpic::detail {
+
+inline std::string numberText(double v)
+{
+    return formatNumber(v);
+}
+
+inline std::string boundText(const FieldBound &b, double external)
+{
+    const double value = b.external ? external : b.value;
+    if (b.symbol.empty())
+        return numberText(value);
+    return std::string(b.symbol) + " (" + numberText(value) + ")";
+}
+
+// Walks the table's rules (model.md § 1) for every field of `p`. `report(field, index, value,
+// rule)` is called for each broken rule, where `rule()` makes its text: a caller that only
+// needs the index never builds a string, so the device core validates without allocating.
+// Device fields report their wire index, host fields -1.
+template<typename Params, std::size_t N, typename Report>
+void checkFields(const Params &p, const std::array<FieldSpec<Params>, N> &specs, bool wireIndex,
+                 Report &&report, double external = 0)
+{
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        const FieldSpec<Params> &s = specs[i];
+        const double v = p.*s.member;
+        const int index = wireIndex ? int(i) : -1;
+        if (!std::isfinite(v)) {
+            // NaN and ±Inf break every later rule: report only this one.
+            report(s.name, index, v, [] { return std::string("must be finite"); });
+            continue;
+        }
+        const FieldBound &lo = s.lower;
+        const double low = lo.external ? external : lo.value;
+        if (lo.present && !(lo.inclusive ? v >= low : v > low)) {
+            report(s.name, index, v, [&lo, external] {
+                return std::string(lo.inclusive ? "must be ≥ " : "must be > ") +
+                       boundText(lo, external);
+            });
+        }
+        const FieldBound &hi = s.upper;
+        const double high = hi.external ? external : hi.value;
+        if (hi.present && !(hi.inclusive ? v <= high : v < high)) {
+            report(s.name, index, v, [&hi, external] {
+                return std::string(hi.inclusive ? "must be ≤ " : "must be < ") +
+                       boundText(hi, external);
+            });
+        }
+        if (s.cross.field >= 0) {
+            const FieldSpec<Params> &other = specs[std::size_t(s.cross.field)];
+            const double ov = p.*other.member;
+            // Only meaningful when the other field itself is a number.
+            if (std::isfinite(ov) && !(s.cross.strict ? v < ov : v <= ov)) {
+                report(s.name, index, v, [&s, &other, ov] {
+                    return std::string(s.cross.strict ? "must be < " : "must be ≤ ") +
+                           std::string(other.name) + " (" + numberText(ov) + ")";
+                });
+            }
+        }
+    }
+}
+
+//! A report() that collects every violation with its text.
+struct Collect
+{
+    std::vector<Violation> &out;
+    template<typename Rule>
+    void operator()(std::string_view field, int index, double value, const Rule &rule)
+    {
+        out.push_back(Violation{std::string(field), index, rule(), value});
+    }
+};
+
+} // namespace hatpic::detail
