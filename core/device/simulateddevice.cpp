@@ -32,7 +32,6 @@ constexpr qint32 kDefaultBaudLegacy = 115200;
 constexpr double kDefaultControlRate = 1000;  //!< [Hz]
 constexpr std::uint32_t kWatchdogUs = 200000; //!< feedback watchdog [µs]
 constexpr qint64 kLegacyPeriodUs = 200000;    //!< legacy frame period [µs]
-constexpr int kTelemetryWireBytes = 31;       //!< 29-byte packet + COBS + delimiter
 constexpr int kLegacyMaxFrameBytes = 64;      //!< bytes kept while waiting for 'o'
 constexpr int kTicksPerRev = legacy::Conversion::kTicksPerRev;
 constexpr int kLegacyCenterTicks = 1000;
@@ -297,7 +296,8 @@ int SimulatedDevice::Private::legacyTicks() const
 
 quint16 SimulatedDevice::Private::linkLimitedRate() const
 {
-    const double frames = double(uart.baud()) / 10.0 / kTelemetryWireBytes;
+    // The device core has the effects capability: its TELEMETRY carries τ_fx (35 bytes).
+    const double frames = double(uart.baud()) / 10.0 / double(v2::telemetryWireBytes(true));
     return quint16(std::clamp(std::floor(frames), 0.0, 65535.0));
 }
 

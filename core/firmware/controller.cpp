@@ -35,6 +35,21 @@ template<typename T> void Controller<T>::setParams(const DeviceParams &params)
     m_stepper = AdmittanceStepper<T>(AdmittanceCoefficients::compute(params, m_period));
 }
 
+template<typename T> void Controller<T>::setEffects(const EffectParams &effects)
+{
+    m_effects = effects;
+    m_fx = EffectShape<T>::from(effects);
+}
+
+template<typename T> void Controller<T>::vibrate(const Vibration &cue)
+{
+    m_cue.amplitude = T(cue.amplitude);
+    m_cue.frequency = T(cue.frequency);
+    m_cue.duration = T(cue.duration);
+    m_cue.running = false;
+    m_cue.pending = cue.amplitude != 0 && cue.duration > 0;
+}
+
 template<typename T> void Controller<T>::setFeedback(T tauExt, std::uint32_t atUs)
 {
     m_feedback = tauExt;
@@ -75,7 +90,21 @@ template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t no
     r.tau = m_measured.tau;
     r.tau_rec = recenteringTorque(m_shape, r.theta);
     r.tau_ext = m_stale ? T(0) : m_feedback;
-    const T sum = r.tau_rec + r.tau_ext;
+    const T e = r.theta - m_shape.theta0;
+    r.tau_fx = detentTorque(m_fx, e) + wallTorque(m_fx, e, r.omega);
+    if (m_cue.pending) { // t_start is the first cycle after VIBRATE arrived
+        m_cue.pending = false;
+        m_cue.running = true;
+        m_cue.startUs = nowUs;
+    }
+    if (m_cue.running) {
+        const T since = T(std::int32_t(nowUs - m_cue.startUs)) * T(1e-6);
+        if (since < m_cue.duration)
+            r.tau_fx += vibrationTorque(m_cue.amplitude, m_cue.frequency, m_cue.duration, since);
+        else
+            m_cue.running = false;
+    }
+    const T sum = r.tau_rec + r.tau_fx + r.tau_ext;
     r.tau_total = std::clamp(sum, -m_tauLimit, m_tauLimit);
     r.flags = 0;
     switch (stiffnessZone(m_shape, r.theta)) {

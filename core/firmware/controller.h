@@ -10,6 +10,7 @@
 
 #include "firmware/actuator.h"
 #include "model/admittance.h"
+#include "model/effects.h"
 #include "model/params.h"
 #include "model/stiffness.h"
 
@@ -26,7 +27,8 @@ template<typename T> struct CycleRecord
     T tau{};                //!< measured interaction torque [N·m]
     T tau_rec{};            //!< −K_rec(θ)·(θ−θ0) for that θ [N·m]
     T tau_ext{};            //!< feedback rendered (0 when stale) [N·m]
-    T tau_total{};          //!< τ_rec + τ_ext clamped to ±tau_limit [N·m]
+    T tau_fx{};             //!< τ_det + τ_wall + τ_vib (effects.md § 1) [N·m]
+    T tau_total{};          //!< τ_rec + τ_fx + τ_ext clamped to ±tau_limit [N·m]
     std::uint8_t flags = 0; //!< v2::kFlag* bits
 };
 
@@ -52,6 +54,10 @@ public:
 
     //! A new valid block, in force from the next cycle, whole.
     void setParams(const DeviceParams &params);
+    //! A new valid effect block, in force from the next cycle.
+    void setEffects(const EffectParams &effects);
+    //! Starts a vibration cue at the next cycle, replacing a running one (a = 0 stops it).
+    void vibrate(const Vibration &cue);
     //! The host's τ_ext [N·m], received at `atUs`; it feeds the watchdog.
     void setFeedback(T tauExt, std::uint32_t atUs);
 
@@ -62,6 +68,7 @@ public:
 
     const CycleRecord<T> &last() const { return m_record; }
     const DeviceParams &params() const { return m_params; }
+    const EffectParams &effects() const { return m_effects; }
     double period() const { return m_period; }
     bool faulted() const { return m_faulted; }
     std::uint64_t busErrors() const { return m_busErrors; }
@@ -78,6 +85,15 @@ private:
     StiffnessShape<T> m_shape;
     AdmittanceStepper<T> m_stepper;
     BasicAdmittanceState<T> m_filter; //!< θ_f, ω_f: the filter's own state (servo.md § 4)
+    EffectParams m_effects;
+    EffectShape<T> m_fx = EffectShape<T>::from(EffectParams{});
+    struct Cue
+    {
+        T amplitude{}, frequency{}, duration{};
+        bool pending = false; //!< starts at the next cycle
+        bool running = false;
+        std::uint32_t startUs = 0; //!< t_start [µs]
+    } m_cue;
 
     Measurement<T> m_measured;
     CycleRecord<T> m_record;

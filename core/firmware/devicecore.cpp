@@ -41,18 +41,23 @@ template<typename T> const DeviceParams &DeviceCore<T>::loadParams()
         params = roundedToF32(DeviceParams{});
         m_powerUp = PowerUp::Defaults;
     }
+    // The defaults' ±π are not floats: kept as the nearest floats inside the range.
+    EffectParams effects = roundedForWire(EffectParams{}, m_config.control.tauLimit);
     StoredSettings stored;
     if (m_store && m_store->load(stored)) {
         const DeviceParams candidate = roundedToF32(stored.params);
-        if (valid(candidate)) {
+        const EffectParams candidateFx = roundedForWire(stored.effects, m_config.control.tauLimit);
+        if (valid(candidate) && firstViolatingField(candidateFx, m_config.control.tauLimit) < 0) {
             params = candidate;
+            effects = candidateFx;
             m_powerUp = PowerUp::Stored;
         } else {
             m_storedRejected = true;
         }
     }
     m_accepted = params;
-    m_flash = params;
+    m_effects = effects;
+    m_flash = StoredSettings{params, effects};
     m_lastTheta.store(float(params.theta0));
     return m_accepted;
 }
@@ -61,6 +66,7 @@ template<typename T> bool DeviceCore<T>::start(std::uint32_t nowUs)
 {
     if (!m_loaded)
         loadParams();
+    m_controller.setEffects(m_effects);
     const bool ok = m_controller.start(m_accepted, nowUs);
     m_lastTheta.store(float(m_controller.last().theta));
     return ok;
@@ -125,9 +131,12 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
     const v2::Message &m = frame.message;
     if (std::holds_alternative<v2::Hello>(m)) {
         m_streamHz = 0; // HELLO stops the stream, as power-up does
-        m_toControl.push(ControlInput{ControlInput::Kind::Stream, {}, 0});
+        ControlInput stop;
+        stop.kind = ControlInput::Kind::Stream;
+        m_toControl.push(stop);
         v2::HelloReply hello;
         hello.protocolVersion = v2::kProtocolVersion;
+        hello.capabilities = v2::kCapabilityEffects;
         hello.maxStreamHz = m_maxStreamHz;
         hello.deviceId = m_config.deviceId;
         hello.tauLimit = float(m_config.control.tauLimit);
@@ -141,7 +150,9 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
         const int field = firstViolatingField(block);
         if (field >= 0)
             return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));
-        if (!m_toControl.push(ControlInput{ControlInput::Kind::Params, block, 0}))
+        ControlInput input;
+        input.params = block;
+        if (!m_toControl.push(input))
             return 0;       // the control context is not draining: no answer, the host retries
         m_accepted = block; // in force from the next control cycle
         return ack(v2::AckStatus::Ok);
@@ -150,15 +161,50 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
         std::uint16_t hz = std::min(set->rateHz, m_maxStreamHz);
         if (m_config.linkLimitHz > 0)
             hz = std::min(hz, m_config.linkLimitHz);
-        if (!m_toControl.push(ControlInput{ControlInput::Kind::Stream, {}, hz}))
+        ControlInput input;
+        input.kind = ControlInput::Kind::Stream;
+        input.rateHz = hz;
+        if (!m_toControl.push(input))
             return 0;
         m_streamHz = hz;
         return ack(v2::AckStatus::Ok);
     }
     if (std::holds_alternative<v2::SaveParams>(m)) {
-        if (m_store && !m_store->save(StoredSettings{m_accepted}))
+        const StoredSettings settings{m_accepted, m_effects};
+        if (m_store && !m_store->save(settings))
             return ack(v2::AckStatus::StorageError);
-        m_flash = m_accepted;
+        m_flash = settings;
+        return ack(v2::AckStatus::Ok);
+    }
+    if (const auto *set = std::get_if<v2::SetEffects>(&m)) {
+        const EffectParams block = roundedForWire(set->effects, m_config.control.tauLimit);
+        const int field = firstViolatingField(block, m_config.control.tauLimit);
+        if (field >= 0)
+            return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));
+        ControlInput input;
+        input.kind = ControlInput::Kind::Effects;
+        input.effects = block;
+        if (!m_toControl.push(input))
+            return 0;
+        m_effects = block;
+        return ack(v2::AckStatus::Ok);
+    }
+    if (std::holds_alternative<v2::GetEffects>(m))
+        return reply(v2::Effects{m_effects});
+    if (const auto *vib = std::get_if<v2::Vibrate>(&m)) {
+        const Vibration cue{vib->amplitude, vib->frequency, vib->duration};
+        // a = 0 stops a cue whatever f and d say.
+        if (cue.amplitude != 0) {
+            const int field =
+                firstViolatingField(cue, m_config.control.tauLimit, m_config.control.rateHz);
+            if (field >= 0)
+                return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));
+        }
+        ControlInput input;
+        input.kind = ControlInput::Kind::Vibrate;
+        input.cue = cue;
+        if (!m_toControl.push(input))
+            return 0;
         return ack(v2::AckStatus::Ok);
     }
     if (const auto *ping = std::get_if<v2::Ping>(&m))
@@ -169,7 +215,9 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
         const int field = firstViolatingField(candidate);
         if (field >= 0)
             return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));
-        if (!m_toControl.push(ControlInput{ControlInput::Kind::Params, candidate, 0}))
+        ControlInput input;
+        input.params = candidate;
+        if (!m_toControl.push(input))
             return 0;
         m_accepted = candidate;
         return ack(v2::AckStatus::Ok);
@@ -193,6 +241,7 @@ template<typename T> void DeviceCore<T>::sendTelemetry()
         tm.tau_rec = float(c.tau_rec);
         tm.tau_ext = float(c.tau_ext);
         tm.flags = c.flags;
+        tm.tau_fx = float(c.tau_fx);
         const std::size_t n = v2::encodeFrame(item.seq, tm, m_scratch);
         if (!m_host.write({m_scratch.data(), n}, HostPort::Traffic::Stream))
             m_telemetryDropped.fetch_add(1);
@@ -213,11 +262,20 @@ template<typename T> const CycleRecord<T> &DeviceCore<T>::controlCycle(std::uint
 {
     ControlInput input;
     while (m_toControl.pop(input)) {
-        if (input.kind == ControlInput::Kind::Params) {
+        switch (input.kind) {
+        case ControlInput::Kind::Params:
             m_controller.setParams(input.params); // the newest block wins, whole
-        } else {
+            break;
+        case ControlInput::Kind::Effects:
+            m_controller.setEffects(input.effects);
+            break;
+        case ControlInput::Kind::Vibrate:
+            m_controller.vibrate(input.cue);
+            break;
+        case ControlInput::Kind::Stream:
             m_stream = input.rateHz;
             m_streamPhase = m_config.control.rateHz - input.rateHz; // first frame next cycle
+            break;
         }
     }
     Feedback feedback;

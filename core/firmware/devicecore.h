@@ -71,7 +71,9 @@ public:
     //! The block last accepted (in force from the next cycle).
     const DeviceParams &params() const { return m_accepted; }
     //! The block SAVE_PARAMS saved last (or power-up's).
-    const DeviceParams &savedParams() const { return m_flash; }
+    const DeviceParams &savedParams() const { return m_flash.params; }
+    //! The effect block last accepted (in force from the next cycle).
+    const EffectParams &effects() const { return m_effects; }
     std::uint16_t streamRate() const { return m_streamHz; } //!< in force after SET_STREAM [Hz]
     std::uint16_t maxStreamHz() const { return m_maxStreamHz; }
     //! Telemetry frames lost because the host port or the queue to it was full (seq gaps).
@@ -82,9 +84,11 @@ public:
 private:
     struct ControlInput
     {
-        enum class Kind : std::uint8_t { Params, Stream };
+        enum class Kind : std::uint8_t { Params, Stream, Effects, Vibrate };
         Kind kind = Kind::Params;
         DeviceParams params;
+        EffectParams effects;
+        Vibration cue;
         std::uint16_t rateHz = 0;
     };
     struct Feedback
@@ -115,7 +119,8 @@ private:
     // link context
     v2::WireDecoder m_decoder{v2::Direction::FromHost};
     DeviceParams m_accepted; //!< latest accepted block
-    DeviceParams m_flash;    //!< what SAVE_PARAMS saved (or power-up's block)
+    EffectParams m_effects;  //!< latest accepted effect block
+    StoredSettings m_flash;  //!< what SAVE_PARAMS saved (or power-up's blocks)
     std::uint16_t m_streamHz = 0;
     std::uint8_t m_replySeq = 0;
     bool m_haveLastCommand = false;

@@ -2,6 +2,7 @@
 // file for hatpic-fw-host and the simulator, or nothing (kept in RAM only).
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 
 namespace hatpic::fw {
@@ -10,6 +11,7 @@ namespace hatpic::fw {
 struct StoredSettings
 {
     DeviceParams params;
+    EffectParams effects; //!< effects.md § 3: SAVE_PARAMS persists the effect block too
     friend bool operator==(const StoredSettings &, const StoredSettings &) = default;
 };
 

@@ -54,6 +54,16 @@ int firstViolatingField(const EffectParams &effects, double tauLimit)
     return first;
 }
 
+EffectParams roundedForWire(const EffectParams &effects, double tauLimit)
+{
+    EffectParams out;
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        const EffectFieldSpec &s = kEffectFields[static_cast<std::size_t>(i)];
+        out.setField(i, detail::roundedInward(effects.field(i), s.lower, s.upper, tauLimit));
+    }
+    return out;
+}
+
 namespace {
 
 //! The table's rules plus f < controlRate/2 (a cue above Nyquist would alias).

@@ -55,6 +55,11 @@ std::vector<Violation> validate(const Vibration &vibration, double tauLimit, dou
 //! Index (0 a, 1 f, 2 d) of the first violating VIBRATE field, or -1; allocation-free.
 int firstViolatingField(const Vibration &vibration, double tauLimit, double controlRate);
 
+//! The block as it travels in SET_EFFECTS: each field rounded to float32, moved one float
+//! inward where rounding alone would leave a bound it satisfied (the defaults ±π are not
+//! floats: float(π) > π). detent_strength's bound is `tauLimit` [N·m].
+EffectParams roundedForWire(const EffectParams &effects, double tauLimit);
+
 //! The torque-relevant fields in the scalar type that evaluates them.
 template<typename T> struct EffectShape
 {

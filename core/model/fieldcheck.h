@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -81,5 +82,28 @@ struct Collect
         out.push_back(Violation{std::string(field), index, rule(), value});
     }
 };
+
+//! `value` rounded to float32, moved one float inward when it satisfied a bound that the
+//! rounding alone would leave. Values already outside stay outside (the receiver refuses them).
+inline double roundedInward(double value, const FieldBound &lower, const FieldBound &upper,
+                            double external)
+{
+    float f = static_cast<float>(value);
+    if (!std::isfinite(value))
+        return f;
+    if (lower.present) {
+        const double low = lower.external ? external : lower.value;
+        if (value >= low && f < low)
+            f = std::nextafter(f, std::numeric_limits<float>::infinity());
+        if (!lower.inclusive && value > low && f <= float(low))
+            f = std::nextafter(float(low), std::numeric_limits<float>::infinity());
+    }
+    if (upper.present) {
+        const double high = upper.external ? external : upper.value;
+        if (value <= high && f > high)
+            f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    }
+    return f;
+}
 
 } // namespace hatpic::detail

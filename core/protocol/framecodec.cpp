@@ -32,6 +32,11 @@ public:
         for (int i = 0; i < DeviceParams::kFieldCount; ++i)
             f32(static_cast<float>(p.field(i)));
     }
+    void effects(const EffectParams &p)
+    {
+        for (int i = 0; i < EffectParams::kFieldCount; ++i)
+            f32(static_cast<float>(p.field(i)));
+    }
     void text(std::string_view t, std::size_t padTo)
     {
         for (const char c : t)
@@ -70,6 +75,14 @@ public:
             p.setField(i, static_cast<double>(f32()));
         return p;
     }
+    EffectParams effects()
+    {
+        EffectParams p;
+        for (int i = 0; i < EffectParams::kFieldCount; ++i)
+            p.setField(i, static_cast<double>(f32()));
+        return p;
+    }
+    std::size_t remaining() const { return m_bytes.size() - m_pos; }
     std::span<const std::uint8_t> bytes(std::size_t n)
     {
         const auto v = m_bytes.subspan(m_pos, n);
@@ -95,6 +108,12 @@ bool encodePayload(const Message &message, Writer &w)
             using T = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<T, SetParams> || std::is_same_v<T, Params>) {
                 w.params(m.params);
+            } else if constexpr (std::is_same_v<T, SetEffects> || std::is_same_v<T, Effects>) {
+                w.effects(m.effects);
+            } else if constexpr (std::is_same_v<T, Vibrate>) {
+                w.f32(m.amplitude);
+                w.f32(m.frequency);
+                w.f32(m.duration);
             } else if constexpr (std::is_same_v<T, SetStream>) {
                 w.u16(m.rateHz);
             } else if constexpr (std::is_same_v<T, SetFeedback>) {
@@ -103,7 +122,7 @@ bool encodePayload(const Message &message, Writer &w)
                 w.u32(m.token);
             } else if constexpr (std::is_same_v<T, HelloReply>) {
                 w.u8(m.protocolVersion);
-                w.u8(0); // reserved
+                w.u8(m.capabilities);
                 w.u16(m.maxStreamHz);
                 w.u32(m.deviceId);
                 w.f32(m.tauLimit);
@@ -121,6 +140,8 @@ bool encodePayload(const Message &message, Writer &w)
                 w.f32(m.tau_rec);
                 w.f32(m.tau_ext);
                 w.u8(m.flags);
+                if (m.tau_fx)
+                    w.f32(*m.tau_fx);
             } else if constexpr (std::is_same_v<T, Log>) {
                 if (m.text.empty())
                     return false; // a LOG carries 1…240 bytes
@@ -135,7 +156,8 @@ bool encodePayload(const Message &message, Writer &w)
 }
 
 //! Payload length a known type must have: >= 0 fixed, -1 unknown for this direction,
-//! -2 variable (LOG, 1…kMaxPayload).
+//! -2 variable (LOG, 1…kMaxPayload), -3 at least kTelemetryBytes (TELEMETRY may grow:
+//! effects.md § 3; a receiver reads what it knows).
 int expectedLength(std::uint8_t type, Direction direction)
 {
     if (direction == Direction::FromHost) {
@@ -144,7 +166,12 @@ int expectedLength(std::uint8_t type, Direction direction)
         case MessageType::GetParams:
         case MessageType::SaveParams:
         case MessageType::Zero:
+        case MessageType::GetEffects:
             return 0;
+        case MessageType::SetEffects:
+            return int(kEffectBlockBytes);
+        case MessageType::Vibrate:
+            return int(kVibrateBytes);
         case MessageType::SetParams:
             return int(kParamBlockBytes);
         case MessageType::SetStream:
@@ -165,8 +192,10 @@ int expectedLength(std::uint8_t type, Direction direction)
         return int(kAckBytes);
     case MessageType::Pong:
         return 4;
+    case MessageType::Effects:
+        return int(kEffectBlockBytes);
     case MessageType::Telemetry:
-        return int(kTelemetryBytes);
+        return -3;
     case MessageType::Log:
         return -2;
     default:
@@ -195,10 +224,23 @@ Message decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload)
         return Ping{r.u32()};
     case MessageType::Zero:
         return Zero{};
+    case MessageType::SetEffects:
+        return SetEffects{r.effects()};
+    case MessageType::GetEffects:
+        return GetEffects{};
+    case MessageType::Vibrate: {
+        Vibrate m;
+        m.amplitude = r.f32();
+        m.frequency = r.f32();
+        m.duration = r.f32();
+        return m;
+    }
+    case MessageType::Effects:
+        return Effects{r.effects()};
     case MessageType::HelloReply: {
         HelloReply m;
         m.protocolVersion = r.u8();
-        r.u8(); // reserved, ignored
+        m.capabilities = r.u8();
         m.maxStreamHz = r.u16();
         m.deviceId = r.u32();
         m.tauLimit = r.f32();
@@ -227,7 +269,9 @@ Message decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload)
         m.tau_rec = r.f32();
         m.tau_ext = r.f32();
         m.flags = r.u8();
-        return m;
+        if (r.remaining() >= 4)
+            m.tau_fx = r.f32();
+        return m; // anything after τ_fx is for newer hosts
     }
     case MessageType::Log: {
         Log m;
@@ -340,8 +384,13 @@ bool WireDecoder::finishFrame(Frame &out)
         out.message = Refused{type, AckStatus::UnknownType};
         return true;
     }
-    const bool lengthOk = expected == -2 ? (!payload.empty() && payload.size() <= kMaxPayload)
-                                         : payload.size() == static_cast<std::size_t>(expected);
+    bool lengthOk = false;
+    if (expected == -2)
+        lengthOk = !payload.empty() && payload.size() <= kMaxPayload;
+    else if (expected == -3)
+        lengthOk = payload.size() >= kTelemetryBytes && payload.size() <= kMaxPayload;
+    else
+        lengthOk = payload.size() == static_cast<std::size_t>(expected);
     if (!lengthOk) {
         drop(DropReason::BadLength);
         out.message = Refused{type, AckStatus::BadLength};

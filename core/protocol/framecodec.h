@@ -20,10 +20,22 @@ constexpr std::size_t kPacketOverhead = 4; //!< type, seq, crc [bytes]
 constexpr std::size_t kParamBlockBytes = 4 * DeviceParams::kFieldCount;
 constexpr std::size_t kHelloReplyBytes = 1 + 1 + 2 + 4 + 4 + kFirmwareBytes;
 constexpr std::size_t kAckBytes = 4;
-constexpr std::size_t kTelemetryBytes = 4 + 5 * 4 + 1;
+constexpr std::size_t kTelemetryBytes = 4 + 5 * 4 + 1;         //!< without τ_fx
+constexpr std::size_t kTelemetryFxBytes = kTelemetryBytes + 4; //!< with τ_fx (effects.md § 3)
+constexpr std::size_t kEffectBlockBytes = 4 * EffectParams::kFieldCount;
+constexpr std::size_t kVibrateBytes = 3 * 4;
+//! A TELEMETRY frame's length on the wire (COBS adds at most one byte here, plus the
+//! delimiter): 31 bytes, 35 with τ_fx [bytes].
+constexpr std::size_t telemetryWireBytes(bool withEffects)
+{
+    return cobsMaxEncodedSize(kPacketOverhead +
+                              (withEffects ? kTelemetryFxBytes : kTelemetryBytes)) +
+           1;
+}
 //! Largest frame on the wire: COBS of the largest packet plus the delimiter [bytes].
 constexpr std::size_t kMaxWireFrameBytes = cobsMaxEncodedSize(kPacketOverhead + kMaxPayload) + 1;
 static_assert(kParamBlockBytes == 28 && kHelloReplyBytes == 28 && kTelemetryBytes == 25);
+static_assert(telemetryWireBytes(false) == 31 && telemetryWireBytes(true) == 35);
 
 //! A buffer that holds any one frame.
 using FrameBuffer = std::array<std::uint8_t, kMaxWireFrameBytes>;
@@ -44,7 +56,7 @@ std::size_t encodeFrame(std::uint8_t seq, const Message &message, std::span<std:
 //! Which side's messages a decoder accepts.
 enum class Direction {
     FromDevice, //!< host side: accepts 0x81…0xE0
-    FromHost,   //!< device side: accepts 0x01…0x08
+    FromHost,   //!< device side: accepts 0x01…0x0B
 };
 
 enum class DropReason {

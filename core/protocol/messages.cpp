@@ -43,6 +43,14 @@ template<typename T> constexpr MessageType typeOf()
         return MessageType::Ping;
     else if constexpr (std::is_same_v<T, Zero>)
         return MessageType::Zero;
+    else if constexpr (std::is_same_v<T, SetEffects>)
+        return MessageType::SetEffects;
+    else if constexpr (std::is_same_v<T, GetEffects>)
+        return MessageType::GetEffects;
+    else if constexpr (std::is_same_v<T, Vibrate>)
+        return MessageType::Vibrate;
+    else if constexpr (std::is_same_v<T, Effects>)
+        return MessageType::Effects;
     else if constexpr (std::is_same_v<T, HelloReply>)
         return MessageType::HelloReply;
     else if constexpr (std::is_same_v<T, Params>)

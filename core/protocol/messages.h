@@ -4,12 +4,14 @@
 // Plain C++20: no Qt, no OS calls, no allocation (text fields are fixed arrays).
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <variant>
 
@@ -25,11 +27,15 @@ enum class MessageType : std::uint8_t {
     SaveParams = 0x06,
     Ping = 0x07,
     Zero = 0x08,
+    SetEffects = 0x09, //!< effects.md § 3
+    GetEffects = 0x0A,
+    Vibrate = 0x0B,
     // device → host
     HelloReply = 0x81,
     Params = 0x82,
     Ack = 0x83,
     Pong = 0x87,
+    Effects = 0x8A,
     Telemetry = 0x90,
     Log = 0xE0,
 };
@@ -56,6 +62,9 @@ constexpr std::uint8_t kFlagDeadZone = 0x01;
 constexpr std::uint8_t kFlagNotch = 0x02;
 constexpr std::uint8_t kFlagSaturated = 0x04;
 constexpr std::uint8_t kFlagFeedbackStale = 0x08;
+
+// HELLO_REPLY capability bits (its formerly reserved byte, effects.md § 3).
+constexpr std::uint8_t kCapabilityEffects = 0x01; //!< SET_EFFECTS, GET_EFFECTS, VIBRATE, τ_fx
 
 //! UTF-8 text of at most N bytes, stored inline. Assigning longer text cuts it at a character
 //! boundary, so a name never ends in half a character.
@@ -125,11 +134,28 @@ struct Zero
 {
     friend bool operator==(const Zero &, const Zero &) = default;
 };
+struct SetEffects
+{
+    EffectParams effects; //!< travels as 7 × f32
+    friend bool operator==(const SetEffects &, const SetEffects &) = default;
+};
+struct GetEffects
+{
+    friend bool operator==(const GetEffects &, const GetEffects &) = default;
+};
+struct Vibrate
+{
+    float amplitude = 0; //!< a [N·m]; 0 stops a running cue
+    float frequency = 0; //!< f [Hz]
+    float duration = 0;  //!< d [s]
+    friend bool operator==(const Vibrate &, const Vibrate &) = default;
+};
 
 // ---- device → host ----
 struct HelloReply
 {
     std::uint8_t protocolVersion = kProtocolVersion;
+    std::uint8_t capabilities = 0; //!< kCapability* bits (0 on devices before effects.md)
     std::uint16_t maxStreamHz = 0; //!< highest telemetry rate the device produces [Hz]
     std::uint32_t deviceId = 0;
     float tauLimit = 0;                 //!< actuator torque limit [N·m]
@@ -140,6 +166,11 @@ struct Params
 {
     DeviceParams params; //!< travels as 7 × f32
     friend bool operator==(const Params &, const Params &) = default;
+};
+struct Effects
+{
+    EffectParams effects; //!< travels as 7 × f32
+    friend bool operator==(const Effects &, const Effects &) = default;
 };
 struct Ack
 {
@@ -162,6 +193,9 @@ struct Telemetry
     float tau_rec = 0;      //!< re-centering torque rendered this cycle [N·m]
     float tau_ext = 0;      //!< external feedback rendered this cycle [N·m]
     std::uint8_t flags = 0; //!< kFlag* bits
+    //! τ_det + τ_wall + τ_vib rendered this cycle [N·m]; only devices with the effects
+    //! capability send it (a 29-byte TELEMETRY).
+    std::optional<float> tau_fx;
     friend bool operator==(const Telemetry &, const Telemetry &) = default;
 };
 struct Log
@@ -181,7 +215,8 @@ struct Refused
 };
 
 using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback, SaveParams, Ping,
-                             Zero, HelloReply, Params, Ack, Pong, Telemetry, Log, Refused>;
+                             Zero, SetEffects, GetEffects, Vibrate, HelloReply, Params, Effects,
+                             Ack, Pong, Telemetry, Log, Refused>;
 
 //! The wire type of a message (Refused gives its original type).
 std::uint8_t messageType(const Message &message);

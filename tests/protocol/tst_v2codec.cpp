@@ -34,6 +34,14 @@ std::optional<Frame> decodeOne(const QByteArray &wire, Direction direction)
     return out.first();
 }
 
+//! The block as it travels: each field a float32.
+EffectParams f32Effects(EffectParams p)
+{
+    for (int i = 0; i < EffectParams::kFieldCount; ++i)
+        p.setField(i, double(float(p.field(i))));
+    return p;
+}
+
 Direction receiverOf(const Message &m)
 {
     return messageType(m) < 0x80 ? Direction::FromHost : Direction::FromDevice;
@@ -168,6 +176,24 @@ private Q_SLOTS:
         t.tau_ext = std::numeric_limits<float>::lowest();
         t.flags = kFlagDeadZone | kFlagNotch | kFlagSaturated | kFlagFeedbackStale;
         QTest::newRow("TELEMETRY extremes") << 17 << Message(t) << 25;
+        t.tau_fx = -0.0625f;
+        QTest::newRow("TELEMETRY with tau_fx") << 22 << Message(t) << 29;
+        EffectParams fx;
+        fx.detent_strength = 0.05;
+        fx.detent_spacing = 0.2;
+        fx.detent_range = 0.8;
+        fx.wall_min = -0.5;
+        fx.wall_max = 0.5;
+        fx.wall_stiffness = 5;
+        fx.wall_damping = 0.02;
+        fx = f32Effects(fx);
+        QTest::newRow("SET_EFFECTS") << 23 << Message(SetEffects{fx}) << 28;
+        QTest::newRow("GET_EFFECTS") << 24 << Message(GetEffects{}) << 0;
+        QTest::newRow("EFFECTS") << 25 << Message(Effects{fx}) << 28;
+        QTest::newRow("VIBRATE") << 26 << Message(Vibrate{0.1f, 80.0f, 0.25f}) << 12;
+        HelloReply capable;
+        capable.capabilities = kCapabilityEffects;
+        QTest::newRow("HELLO_REPLY with effects") << 27 << Message(capable) << 28;
         QTest::newRow("LOG one byte") << 18 << Message(Log{fixedText<kMaxPayload>(u"x"_s)}) << 1;
         QTest::newRow("LOG 240 bytes")
             << 19 << Message(Log{fixedText<kMaxPayload>(QString(240, u'L'))}) << 240;
@@ -302,15 +328,17 @@ private Q_SLOTS:
         QCOMPARE(ack->message, Message(Ack{5, AckStatus::OutOfRange, 4}));
         QCOMPARE(payloadOf(encodeFrame(1, Ack{5, AckStatus::OutOfRange, 4})).toHex(' '),
                  QByteArray("05 02 04 00"));
-        // HELLO_REPLY reserved byte (offset 1).
+        // HELLO_REPLY's byte at offset 1, reserved in protocol.md, carries the capability
+        // flags of effects.md § 3: a device that predates them sends 0 there.
         HelloReply hr;
         hr.protocolVersion = 7;
         QByteArray payload = payloadOf(encodeFrame(0, hr));
         QCOMPARE(payload.at(0), char(7));
         QCOMPARE(payload.at(1), char(0));
-        payload[1] = char(0x55);
+        payload[1] = char(kCapabilityEffects);
         const auto reply = decodeOne(encodePacket(0x81, 0, payload), Direction::FromDevice);
         QVERIFY(reply);
+        hr.capabilities = kCapabilityEffects;
         QCOMPARE(reply->message, Message(hr));
     }
 

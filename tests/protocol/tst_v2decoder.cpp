@@ -92,8 +92,9 @@ private Q_SLOTS:
         QTest::newRow("SET_STREAM with 4 bytes")
             << h << encodePacket(0x04, 6, repeated(1, 4)) << int(DropReason::BadLength)
             << QList<Frame>{Frame{6, Refused{0x04, AckStatus::BadLength}}};
-        QTest::newRow("TELEMETRY with 26 bytes")
-            << d << encodePacket(0x90, 7, repeated(1, 26)) << int(DropReason::BadLength)
+        // TELEMETRY may grow (effects.md § 3): a host reads any length from 25 bytes on.
+        QTest::newRow("TELEMETRY with 24 bytes")
+            << d << encodePacket(0x90, 7, repeated(1, 24)) << int(DropReason::BadLength)
             << QList<Frame>{Frame{7, Refused{0x90, AckStatus::BadLength}}};
         QTest::newRow("empty LOG") << d << encodePacket(0xE0, 8, {}) << int(DropReason::BadLength)
                                    << QList<Frame>{Frame{8, Refused{0xE0, AckStatus::BadLength}}};
@@ -247,6 +248,32 @@ private Q_SLOTS:
         QCOMPARE(decoder.stats().totalDropped(), quint64(1));
         decoder.feed(join('\0', kAck), out);
         QCOMPARE(out, (QList<Frame>{Frame{0, Ack{3, AckStatus::Ok, kNoField}}}));
+    }
+
+    void longerTelemetryIsRead()
+    {
+        // 25 bytes: no τ_fx; 29: τ_fx; 33: τ_fx and 4 bytes a newer device added, ignored.
+        FrameDecoder decoder(Direction::FromDevice);
+        Telemetry t;
+        t.t_us = 1000;
+        t.theta = 0.25f;
+        t.flags = 2;
+        QByteArray base = encodeFrame(1, t);
+        t.tau_fx = -0.125f;
+        QByteArray withFx = encodeFrame(2, t);
+        QByteArray payload;
+        {
+            QByteArray p;
+            QVERIFY(cobsDecode(QByteArrayView(withFx).chopped(1), p));
+            payload = p.mid(2, p.size() - 4) + QByteArray(4, '\x7f');
+        }
+        QList<Frame> frames;
+        decoder.feed(QByteArray(base + withFx + encodePacket(0x90, 3, payload)), frames);
+        QCOMPARE(frames.size(), 3);
+        QVERIFY(!std::get<Telemetry>(frames[0].message).tau_fx);
+        QCOMPARE(std::get<Telemetry>(frames[1].message), t);
+        QCOMPARE(std::get<Telemetry>(frames[2].message), t);
+        QCOMPARE(decoder.stats().totalDropped(), quint64(0));
     }
 
     void dropReasonNames()

@@ -147,7 +147,17 @@ inline QString randomText(QRandomGenerator &rng, int minBytes, int maxBytes)
 inline Message randomMessage(QRandomGenerator &rng, Direction direction)
 {
     if (direction == Direction::FromHost) {
-        switch (rng.bounded(8)) {
+        switch (rng.bounded(11)) {
+        case 8: {
+            EffectParams fx;
+            for (int i = 0; i < EffectParams::kFieldCount; ++i)
+                fx.setField(i, double(randomFloat(rng)));
+            return SetEffects{fx};
+        }
+        case 9:
+            return GetEffects{};
+        case 10:
+            return Vibrate{randomFloat(rng), randomFloat(rng), randomFloat(rng)};
         case 0:
             return Hello{};
         case 1:
@@ -166,10 +176,11 @@ inline Message randomMessage(QRandomGenerator &rng, Direction direction)
             return Zero{};
         }
     }
-    switch (rng.bounded(6)) {
+    switch (rng.bounded(7)) {
     case 0: {
         HelloReply m;
         m.protocolVersion = quint8(rng.bounded(256));
+        m.capabilities = quint8(rng.bounded(256));
         m.maxStreamHz = quint16(rng.bounded(65536));
         m.deviceId = rng.generate();
         m.tauLimit = randomFloat(rng);
@@ -196,7 +207,15 @@ inline Message randomMessage(QRandomGenerator &rng, Direction direction)
         m.tau_rec = randomFloat(rng);
         m.tau_ext = randomFloat(rng);
         m.flags = quint8(rng.bounded(16));
+        if (rng.bounded(2))
+            m.tau_fx = randomFloat(rng);
         return m;
+    }
+    case 5: {
+        EffectParams fx;
+        for (int i = 0; i < EffectParams::kFieldCount; ++i)
+            fx.setField(i, double(randomFloat(rng)));
+        return Effects{fx};
     }
     default:
         return Log{fixedText<kMaxPayload>(randomText(rng, 1, kMaxPayload))};
