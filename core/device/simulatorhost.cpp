@@ -1,43 +1,13 @@
 #include "simulatorhost.h"
 
-#include <QFile>
-#include <QFileInfo>
 #include <QSocketNotifier>
 #include <QTimer>
 
 #include <cerrno>
-#include <cstring>
-#include <fcntl.h>
-#include <pty.h>
 #include <termios.h>
 #include <unistd.h>
 
 namespace hatpic {
-
-namespace {
-
-QString errnoText(int error)
-{
-    return QString::fromLocal8Bit(std::strerror(error));
-}
-
-void makeRaw(int fd)
-{
-    termios tio{};
-    if (::tcgetattr(fd, &tio) == 0) {
-        ::cfmakeraw(&tio);
-        ::tcsetattr(fd, TCSANOW, &tio);
-    }
-}
-
-void setFlag(int fd, int getCmd, int setCmd, int flag)
-{
-    const int flags = ::fcntl(fd, getCmd);
-    if (flags >= 0)
-        ::fcntl(fd, setCmd, flags | flag);
-}
-
-} // namespace
 
 SimulatorHost::SimulatorHost(const SimulatedDevice::Config &config, QObject *parent)
     : QObject(parent), m_device(std::make_unique<SimulatedDevice>(config))
@@ -52,28 +22,10 @@ QString SimulatorHost::start()
 {
     if (isRunning())
         return {};
-    int master = -1;
-    int slave = -1;
-    if (::openpty(&master, &slave, nullptr, nullptr, nullptr) != 0)
-        return QStringLiteral("Cannot open a pseudo-terminal: %1.").arg(errnoText(errno));
-    char name[256] = {};
-    if (::ttyname_r(slave, name, sizeof name) != 0) {
-        const int error = errno;
-        ::close(master);
-        ::close(slave);
-        return QStringLiteral("Cannot name the pseudo-terminal: %1.").arg(errnoText(error));
-    }
-    // Raw on both sides: the line discipline must not translate CR/LF, echo or eat bytes.
-    makeRaw(master);
-    makeRaw(slave);
-    setFlag(master, F_GETFL, F_SETFL, O_NONBLOCK);
-    setFlag(master, F_GETFD, F_SETFD, FD_CLOEXEC);
-    setFlag(slave, F_GETFD, F_SETFD, FD_CLOEXEC);
-    m_master = master;
-    m_slave = slave;
-    m_slavePath = QFile::decodeName(name);
+    if (const QString error = m_pty.open(); !error.isEmpty())
+        return error;
 
-    m_readNotifier = new QSocketNotifier(qintptr(m_master), QSocketNotifier::Read, this);
+    m_readNotifier = new QSocketNotifier(qintptr(m_pty.master()), QSocketNotifier::Read, this);
     connect(m_readNotifier, &QSocketNotifier::activated, this, [this] {
         advanceToNow();
         readHost();
@@ -95,17 +47,11 @@ QString SimulatorHost::start()
 
 void SimulatorHost::stop()
 {
-    removeLink();
     delete m_readNotifier;
     m_readNotifier = nullptr;
     delete m_timer;
     m_timer = nullptr;
-    if (m_master >= 0)
-        ::close(m_master);
-    if (m_slave >= 0)
-        ::close(m_slave);
-    m_master = -1;
-    m_slave = -1;
+    m_pty.close(); // removes the link (if still ours)
     m_pending.clear();
 }
 
@@ -125,7 +71,7 @@ void SimulatorHost::readHost()
 {
     char buffer[4096];
     for (;;) {
-        const ssize_t n = ::read(m_master, buffer, sizeof buffer);
+        const ssize_t n = ::read(m_pty.master(), buffer, sizeof buffer);
         if (n > 0) {
             m_device->receive(QByteArrayView(buffer, n));
             continue;
@@ -153,7 +99,7 @@ void SimulatorHost::writeOutput()
         m_pending.append(out);
     }
     while (!m_pending.isEmpty()) {
-        const ssize_t n = ::write(m_master, m_pending.constData(), size_t(m_pending.size()));
+        const ssize_t n = ::write(m_pty.master(), m_pending.constData(), size_t(m_pending.size()));
         if (n > 0) {
             m_pending.remove(0, n);
             continue;
@@ -165,7 +111,7 @@ void SimulatorHost::writeOutput()
             // Nobody has read for a long while (no client, or one that stopped reading):
             // what waits in the pty is stale. Discard it and our backlog so the next reader
             // starts with fresh bytes, and memory stays bounded.
-            ::tcflush(m_slave, TCIFLUSH);
+            ::tcflush(m_pty.slave(), TCIFLUSH);
             m_discarded += quint64(m_pending.size());
             m_pending.clear();
         }
@@ -177,37 +123,7 @@ QString SimulatorHost::createLink(const QString &path)
 {
     if (!isRunning())
         return QStringLiteral("Cannot create link %1: the simulator is not running.").arg(path);
-    const QFileInfo info(path);
-    if (info.exists() && !info.isSymLink())
-        return QStringLiteral("Cannot create link %1: a file that is not a symlink is in the "
-                              "way.")
-            .arg(path);
-    // Make the link beside its final place, then rename over any old one (atomic).
-    const QByteArray target = QFile::encodeName(m_slavePath);
-    const QByteArray finalName = QFile::encodeName(path);
-    const QByteArray temp = finalName + ".tmp" + QByteArray::number(qint64(::getpid()));
-    ::unlink(temp.constData());
-    if (::symlink(target.constData(), temp.constData()) != 0) {
-        return QStringLiteral("Cannot create link %1: %2.").arg(path, errnoText(errno));
-    }
-    if (::rename(temp.constData(), finalName.constData()) != 0) {
-        const int error = errno;
-        ::unlink(temp.constData());
-        return QStringLiteral("Cannot create link %1: %2.").arg(path, errnoText(error));
-    }
-    m_linkPath = path;
-    return {};
-}
-
-void SimulatorHost::removeLink()
-{
-    if (m_linkPath.isEmpty())
-        return;
-    const QFileInfo info(m_linkPath);
-    // Only remove the link if it still points at our slave (another simulator may own it).
-    if (info.isSymLink() && info.symLinkTarget() == m_slavePath)
-        QFile::remove(m_linkPath);
-    m_linkPath.clear();
+    return m_pty.createLink(path);
 }
 
 } // namespace hatpic

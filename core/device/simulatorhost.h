@@ -6,6 +6,7 @@
 // kMaxPendingBytes kept when the pty does not take them.
 #pragma once
 
+#include "device/pseudoterminal.h"
 #include "device/simulateddevice.h"
 
 #include <QElapsedTimer>
@@ -35,15 +36,15 @@ public:
     QString start();
     //! Stops the loop, closes the pty and removes the link (if still ours).
     void stop();
-    bool isRunning() const { return m_master >= 0; }
+    bool isRunning() const { return m_pty.isOpen(); }
 
     //! The slave's path (e.g. "/dev/pts/3") that a client opens; empty before start().
-    QString slavePath() const { return m_slavePath; }
+    QString slavePath() const { return m_pty.slavePath(); }
 
     //! Creates a symlink at `path` to the slave (after start()). An existing symlink there
     //! is replaced; any other file is refused. Returns an empty string or the error.
     QString createLink(const QString &path);
-    QString linkPath() const { return m_linkPath; }
+    QString linkPath() const { return m_pty.linkPath(); }
 
     SimulatedDevice &device() { return *m_device; }
     const SimulatedDevice &device() const { return *m_device; }
@@ -54,13 +55,9 @@ private:
     void advanceToNow();
     void readHost();
     void writeOutput();
-    void removeLink();
 
     std::unique_ptr<SimulatedDevice> m_device;
-    int m_master = -1;
-    int m_slave = -1; //!< kept open so the master never sees EIO/HUP between clients
-    QString m_slavePath;
-    QString m_linkPath;
+    PseudoTerminal m_pty;
     QSocketNotifier *m_readNotifier = nullptr;
     QTimer *m_timer = nullptr;
     QElapsedTimer m_clock;

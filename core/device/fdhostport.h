@@ -1,0 +1,51 @@
+// The host link of hatpic-fw-host: a fw::HostPort over a non-blocking file descriptor (the
+// master of a pseudo-terminal).
+//
+// Used from the link context only (the main thread): DeviceCore::serviceHost() calls read() and
+// write(), the owner calls flush() afterwards and whenever the fd becomes writable.
+#pragma once
+
+#include "firmware/ports.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace hatpic {
+
+class FdHostPort : public fw::HostPort
+{
+public:
+    //! Output kept when the fd does not take it: a stream frame is dropped when the backlog
+    //! would exceed kStreamBound, a reply when it would exceed kReplyBound [bytes]. The gap
+    //! keeps room for replies while a client that stopped reading is flooded with telemetry.
+    static constexpr std::size_t kStreamBound = 4 * 1024;
+    static constexpr std::size_t kReplyBound = 64 * 1024;
+
+    //! `fd` stays the caller's (not closed here); it must be non-blocking.
+    explicit FdHostPort(int fd);
+
+    std::size_t read(std::span<std::uint8_t> out) override;
+    bool write(std::span<const std::uint8_t> frame, Traffic traffic) override;
+    //! Writes as much of the backlog as the fd takes now.
+    void flush();
+
+    //! Whether a read() saw end-of-file or an error other than "nothing yet" since the last
+    //! call (the fd then polls readable without data: the owner pauses its notifier).
+    bool takeHangUp() { return std::exchange(m_hangUp, false); }
+
+    std::size_t pendingBytes() const { return m_pending.size(); }
+    std::uint64_t streamDropped() const { return m_streamDropped; } //!< frames
+    std::uint64_t replyDropped() const { return m_replyDropped; }   //!< frames
+
+private:
+    int m_fd;
+    std::vector<std::uint8_t> m_pending;
+    std::uint64_t m_streamDropped = 0;
+    std::uint64_t m_replyDropped = 0;
+    bool m_hangUp = false;
+};
+
+} // namespace hatpic
