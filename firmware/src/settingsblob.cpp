@@ -9,6 +9,22 @@ namespace hatpic::esp32 {
 namespace {
 
 constexpr std::size_t kCrcOffset = kSettingsBlobBytes - 2;
+constexpr std::size_t kVersion1PayloadBytes = 4 * DeviceParams::kFieldCount;
+
+void putF32(std::uint8_t *at, double value)
+{
+    const auto bits = std::bit_cast<std::uint32_t>(static_cast<float>(value));
+    for (int b = 0; b < 4; ++b)
+        at[b] = static_cast<std::uint8_t>(bits >> (8 * b));
+}
+
+double getF32(const std::uint8_t *at)
+{
+    std::uint32_t bits = 0;
+    for (int b = 0; b < 4; ++b)
+        bits |= std::uint32_t{at[b]} << (8 * b);
+    return static_cast<double>(std::bit_cast<float>(bits));
+}
 
 void putU16(std::uint8_t *at, std::uint16_t value)
 {
@@ -28,32 +44,35 @@ SettingsBlob encodeSettingsBlob(const fw::StoredSettings &settings)
     SettingsBlob blob{};
     putU16(&blob[0], kSettingsBlobVersion);
     putU16(&blob[2], static_cast<std::uint16_t>(kSettingsPayloadBytes));
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const auto bits =
-            std::bit_cast<std::uint32_t>(static_cast<float>(settings.params.field(i)));
-        std::uint8_t *at = &blob[4 + 4 * static_cast<std::size_t>(i)];
-        for (int b = 0; b < 4; ++b)
-            at[b] = static_cast<std::uint8_t>(bits >> (8 * b));
-    }
+    std::uint8_t *at = &blob[4];
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i, at += 4)
+        putF32(at, settings.params.field(i));
+    for (int i = 0; i < EffectParams::kFieldCount; ++i, at += 4)
+        putF32(at, settings.effects.field(i));
     putU16(&blob[kCrcOffset], v2::crc16(std::span<const std::uint8_t>(blob).first(kCrcOffset)));
     return blob;
 }
 
 bool decodeSettingsBlob(std::span<const std::uint8_t> bytes, fw::StoredSettings &out)
 {
-    if (bytes.size() != kSettingsBlobBytes)
+    if (bytes.size() < 6)
         return false;
-    if (getU16(&bytes[0]) != kSettingsBlobVersion || getU16(&bytes[2]) != kSettingsPayloadBytes)
+    const std::uint16_t version = getU16(&bytes[0]);
+    const std::size_t payload = getU16(&bytes[2]);
+    const bool known = (version == kSettingsBlobVersion && payload == kSettingsPayloadBytes) ||
+                       (version == 1 && payload == kVersion1PayloadBytes);
+    if (!known || bytes.size() != 2 + 2 + payload + 2)
         return false;
-    if (getU16(&bytes[kCrcOffset]) != v2::crc16(bytes.first(kCrcOffset)))
+    const std::size_t crcAt = 4 + payload;
+    if (getU16(&bytes[crcAt]) != v2::crc16(bytes.first(crcAt)))
         return false;
     fw::StoredSettings settings;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const std::uint8_t *at = &bytes[4 + 4 * static_cast<std::size_t>(i)];
-        std::uint32_t bits = 0;
-        for (int b = 0; b < 4; ++b)
-            bits |= std::uint32_t{at[b]} << (8 * b);
-        settings.params.setField(i, static_cast<double>(std::bit_cast<float>(bits)));
+    const std::uint8_t *at = &bytes[4];
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i, at += 4)
+        settings.params.setField(i, getF32(at));
+    if (version >= 2) {
+        for (int i = 0; i < EffectParams::kFieldCount; ++i, at += 4)
+            settings.effects.setField(i, getF32(at));
     }
     out = settings;
     return true;

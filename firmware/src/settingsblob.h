@@ -14,9 +14,12 @@
 namespace hatpic::esp32 {
 
 //! Layout version; a blob of another version is ignored (power-up then uses the defaults).
-inline constexpr std::uint16_t kSettingsBlobVersion = 1;
-//! 7 × f32 in ParamBlock order (protocol.md § 3) [bytes].
-inline constexpr std::size_t kSettingsPayloadBytes = 4 * DeviceParams::kFieldCount;
+//! Version 2 added the effect block (effects.md § 3); a version-1 blob (parameters only) is
+//! still read, with the effects at their defaults.
+inline constexpr std::uint16_t kSettingsBlobVersion = 2;
+//! 7 × f32 in ParamBlock order (protocol.md § 3), then 7 × f32 of the effect block [bytes].
+inline constexpr std::size_t kSettingsPayloadBytes =
+    4 * (DeviceParams::kFieldCount + EffectParams::kFieldCount);
 //! u16 version | u16 payload length | payload | u16 CRC-16/CCITT-FALSE of everything before it,
 //! all little-endian [bytes].
 inline constexpr std::size_t kSettingsBlobBytes = 2 + 2 + kSettingsPayloadBytes + 2;
