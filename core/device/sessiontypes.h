@@ -90,17 +90,19 @@ struct LinkStats
     double rttMaxMs = -1;
     quint64 referenceGaps = 0; //!< gaps the reference held across
     quint64 retries = 0;       //!< command frames sent again
+    quint64 nonFinite = 0;     //!< telemetry frames with a NaN or ±Inf value: skipped
     quint64 totalDecoderDrops() const;
 };
 
 struct RecordingStatus
 {
     bool active = false;
-    QString path;       //!< the CSV file
-    double seconds = 0; //!< recorded duration [s]
-    quint64 samples = 0;
-    qint64 bytes = 0; //!< bytes written to the CSV so far
-    QString error;    //!< why the recording stopped, if it failed
+    QString path;              //!< the CSV file
+    double seconds = 0;        //!< recorded duration [s]
+    quint64 samples = 0;       //!< whole rows on disk
+    qint64 bytes = 0;          //!< bytes written to the CSV so far
+    quint64 eventsDropped = 0; //!< events left out by the recorder's bounds
+    QString error;             //!< why the recording stopped, if it failed
 };
 
 } // namespace hatpic
