@@ -39,6 +39,14 @@ QString sessionStateName(SessionState state); //!< "disconnected", "opening", �
 //! (the text of recording events and of the tuner's push markers). Empty when nothing does.
 QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
 
+//! Text a device sent, safe to print: control characters (ESC, CR, LF, …, DEL and C1) become
+//! "\x1b"-style escapes, so a device's name can never drive a terminal.
+QString printableDeviceText(const QString &text);
+
+//! Why a HELLO_REPLY is nonsense (model.md bounds: tau_limit finite, > 0 and ≤ 10 N·m;
+//! max_stream_hz > 0); empty when every field is usable.
+QString helloReplyProblem(const v2::HelloReply &reply);
+
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
 

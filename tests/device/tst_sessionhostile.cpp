@@ -1,0 +1,287 @@
+// DeviceSession against a device that sends nonsense (issue 10, "Hostile input"): the test
+// plays the device on the master side of a real pseudo-terminal and scripts its answers.
+#include "device/devicesession.h"
+#include "device/recorder.h"
+#include "protocol/v2codec.h"
+
+#include <QSocketNotifier>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <fcntl.h>
+#include <limits>
+#include <pty.h>
+#include <unistd.h>
+
+using namespace hatpic;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int kTimeoutMs = 5000;
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+//! A v2 device played by the test: answers HELLO with `hello`, GET_PARAMS with `params`,
+//! SET_STREAM and the rest with ACK OK, PING with PONG; telemetry only when told.
+class ScriptedDevice
+{
+public:
+    v2::HelloReply hello;
+    DeviceParams params;
+
+    ScriptedDevice()
+    {
+        hello.maxStreamHz = 1000;
+        hello.deviceId = 0x54455354;
+        hello.tauLimit = 0.44f;
+        hello.firmware.assign("scripted");
+        char name[256] = {};
+        int slave = -1;
+        if (::openpty(&m_master, &slave, name, nullptr, nullptr) != 0)
+            return;
+        ::close(slave);
+        ::fcntl(m_master, F_SETFL, ::fcntl(m_master, F_GETFL) | O_NONBLOCK);
+        m_path = QString::fromLocal8Bit(name);
+        m_notifier = std::make_unique<QSocketNotifier>(m_master, QSocketNotifier::Read);
+        QObject::connect(m_notifier.get(), &QSocketNotifier::activated, [this] { onReadable(); });
+    }
+    ~ScriptedDevice()
+    {
+        m_notifier.reset();
+        if (m_master >= 0)
+            ::close(m_master);
+    }
+    bool isValid() const { return m_master >= 0; }
+    QString path() const { return m_path; }
+    //! Bytes the device's receiver holds before the host sends anything (line noise).
+    void preload(const QByteArray &junk) { m_decoder.feed(junk, m_frames); }
+    void send(const v2::Message &message) { write(v2::encodeFrame(m_seq++, message)); }
+    void sendTelemetry(float theta, quint32 tUs)
+    {
+        v2::Telemetry t;
+        t.t_us = tUs;
+        t.theta = theta;
+        write(v2::encodeFrame(m_telemetrySeq++, t));
+    }
+    int hellosAnswered() const { return m_hellos; }
+
+private:
+    void write(const QByteArray &bytes)
+    {
+        qsizetype done = 0;
+        while (done < bytes.size()) {
+            const ssize_t n = ::write(m_master, bytes.constData() + done, bytes.size() - done);
+            if (n <= 0)
+                return;
+            done += n;
+        }
+    }
+    void onReadable()
+    {
+        char buf[4096];
+        const ssize_t n = ::read(m_master, buf, sizeof buf);
+        if (n <= 0)
+            return;
+        m_frames.clear();
+        m_decoder.feed(QByteArrayView(buf, n), m_frames);
+        for (const v2::Frame &f : std::as_const(m_frames)) {
+            if (std::holds_alternative<v2::Hello>(f.message)) {
+                ++m_hellos;
+                send(hello);
+            } else if (std::holds_alternative<v2::GetParams>(f.message)) {
+                send(v2::Params{params});
+            } else if (const auto *ping = std::get_if<v2::Ping>(&f.message)) {
+                send(v2::Pong{ping->token});
+            } else if (!std::holds_alternative<v2::SetFeedback>(f.message)) {
+                send(v2::Ack{f.seq, v2::AckStatus::Ok, v2::kNoField});
+            }
+        }
+    }
+
+    int m_master = -1;
+    QString m_path;
+    std::unique_ptr<QSocketNotifier> m_notifier;
+    v2::FrameDecoder m_decoder{v2::Direction::FromHost};
+    QList<v2::Frame> m_frames;
+    quint8 m_seq = 0;
+    quint8 m_telemetrySeq = 0;
+    int m_hellos = 0;
+};
+
+struct Session
+{
+    DeviceSession session;
+    QList<Sample> samples;
+    QList<DeviceInfo> infos;
+    QString lastDetail;
+    LinkStats stats;
+    Session()
+    {
+        QObject::connect(&session, &DeviceSession::samplesReady,
+                         [this](const SampleBatch &b) { samples.append(b); });
+        QObject::connect(&session, &DeviceSession::deviceInfoChanged,
+                         [this](const DeviceInfo &i) { infos.append(i); });
+        QObject::connect(&session, &DeviceSession::stateChanged,
+                         [this](SessionState, const QString &d) { lastDetail = d; });
+        QObject::connect(&session, &DeviceSession::statsUpdated,
+                         [this](const LinkStats &s) { stats = s; });
+    }
+    ~Session() { QObject::disconnect(&session, nullptr, nullptr, nullptr); }
+    void connectTo(const QString &port, ProtocolChoice choice = ProtocolChoice::Auto)
+    {
+        ConnectOptions o;
+        o.port = port;
+        o.baud = 921600;
+        o.protocol = choice;
+        o.feedbackRateHz = 0;
+        o.autoReconnect = false;
+        session.connectDevice(o);
+    }
+};
+
+} // namespace
+
+class TestSessionHostile : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void nonsenseHelloReplyIsRefused_data();
+    void nonsenseHelloReplyIsRefused();
+    void firmwareNameIsMadePrintable();
+    void strayByteBeforeHelloIsSurvived_data();
+    void strayByteBeforeHelloIsSurvived();
+    void nonFiniteTelemetryIsSkippedAndCounted();
+    void paramsFloodKeepsTheRecordingReadable();
+};
+
+void TestSessionHostile::nonsenseHelloReplyIsRefused_data()
+{
+    QTest::addColumn<float>("tauLimit");
+    QTest::addColumn<int>("maxStreamHz");
+    QTest::addColumn<QString>("field");
+    QTest::newRow("tau_limit -1") << -1.0f << 1000 << u"tau_limit"_s;
+    QTest::newRow("tau_limit 0") << 0.0f << 1000 << u"tau_limit"_s;
+    QTest::newRow("tau_limit NaN") << kNaN << 1000 << u"tau_limit"_s;
+    QTest::newRow("tau_limit Inf") << kInf << 1000 << u"tau_limit"_s;
+    QTest::newRow("tau_limit 11") << 11.0f << 1000 << u"tau_limit"_s;
+    QTest::newRow("max_stream_hz 0") << 0.44f << 0 << u"max_stream_hz"_s;
+}
+
+void TestSessionHostile::nonsenseHelloReplyIsRefused()
+{
+    QFETCH(float, tauLimit);
+    QFETCH(int, maxStreamHz);
+    QFETCH(QString, field);
+    ScriptedDevice device;
+    QVERIFY(device.isValid());
+    device.hello.tauLimit = tauLimit;
+    device.hello.maxStreamHz = quint16(maxStreamHz);
+    Session s;
+    s.connectTo(device.path());
+    QTRY_VERIFY_WITH_TIMEOUT(device.hellosAnswered() > 0, kTimeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(s.session.state(), SessionState::Disconnected, kTimeoutMs);
+    QVERIFY2(s.infos.isEmpty(), "a nonsense device was taken as connected");
+    QVERIFY2(s.lastDetail.contains(field) && s.lastDetail.contains(device.path()),
+             qPrintable(s.lastDetail));
+}
+
+void TestSessionHostile::firmwareNameIsMadePrintable()
+{
+    ScriptedDevice device;
+    QVERIFY(device.isValid());
+    device.hello.firmware.assign("ev\x1b[2J\r\nil\x7f");
+    Session s;
+    s.connectTo(device.path());
+    QTRY_COMPARE_WITH_TIMEOUT(s.session.state(), SessionState::Connected, kTimeoutMs);
+    const QString firmware = s.session.deviceInfo().firmware;
+    for (const QChar c : firmware)
+        QVERIFY2(c.unicode() >= 0x20 && c.unicode() != 0x7F, qPrintable(firmware));
+    QCOMPARE(firmware, u"ev\\x1b[2J\\x0d\\x0ail\\x7f"_s);
+}
+
+void TestSessionHostile::strayByteBeforeHelloIsSurvived_data()
+{
+    QTest::addColumn<int>("choice");
+    QTest::newRow("auto") << int(ProtocolChoice::Auto);
+    QTest::newRow("forced v2") << int(ProtocolChoice::V2);
+}
+
+void TestSessionHostile::strayByteBeforeHelloIsSurvived()
+{
+    // One byte of noise already sits in the device's receiver: the HELLO must not be glued
+    // onto it.
+    QFETCH(int, choice);
+    ScriptedDevice device;
+    QVERIFY(device.isValid());
+    device.preload(QByteArray(1, '\x05'));
+    Session s;
+    s.connectTo(device.path(), ProtocolChoice(choice));
+    QTRY_COMPARE_WITH_TIMEOUT(s.session.state(), SessionState::Connected, kTimeoutMs);
+}
+
+void TestSessionHostile::nonFiniteTelemetryIsSkippedAndCounted()
+{
+    ScriptedDevice device;
+    QVERIFY(device.isValid());
+    Session s;
+    s.connectTo(device.path());
+    QTRY_COMPARE_WITH_TIMEOUT(s.session.state(), SessionState::Connected, kTimeoutMs);
+    quint32 t = 1000;
+    const auto burst = [&](int n, float theta) {
+        for (int i = 0; i < n; ++i)
+            device.sendTelemetry(theta, t += 1000);
+    };
+    burst(20, 0.5f);
+    device.sendTelemetry(kNaN, t += 1000);
+    device.sendTelemetry(kInf, t += 1000);
+    burst(20, 0.5f);
+    QTRY_COMPARE_WITH_TIMEOUT(s.samples.size(), 40, kTimeoutMs);
+    for (const Sample &sample : std::as_const(s.samples)) {
+        QVERIFY(std::isfinite(sample.theta));
+        QVERIFY(std::isfinite(sample.p_ref));
+        QVERIFY(std::isfinite(sample.v_ref));
+    }
+    // p_ref goes on integrating after the bad frames.
+    QVERIFY(s.samples.last().p_ref > s.samples[19].p_ref);
+    QTRY_COMPARE_WITH_TIMEOUT(s.stats.nonFinite, quint64(2), kTimeoutMs);
+}
+
+void TestSessionHostile::paramsFloodKeepsTheRecordingReadable()
+{
+    // A device sending PARAMS that differ each time, 2000 per second, while telemetry flows:
+    // the recording stays readable and its events bounded.
+    ScriptedDevice device;
+    QVERIFY(device.isValid());
+    Session s;
+    s.connectTo(device.path());
+    QTRY_COMPARE_WITH_TIMEOUT(s.session.state(), SessionState::Connected, kTimeoutMs);
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(u"flood.csv"_s);
+    s.session.startRecording(csv, u"tst_sessionhostile"_s);
+    quint32 t = 1000;
+    DeviceParams a;
+    DeviceParams b = a;
+    b.K_max = 0.6;
+    for (int ms = 0; ms < 1500; ++ms) {
+        device.send(v2::Params{ms % 2 ? a : b});
+        device.send(v2::Params{ms % 2 ? b : a});
+        device.sendTelemetry(0.01f, t += 1000);
+        if (ms % 20 == 0)
+            QTest::qWait(1);
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(s.samples.size() >= 1500, kTimeoutMs);
+    s.session.stopRecording();
+    const RecordingReadResult read = readRecording(csv);
+    QVERIFY2(read.recording, qPrintable(read.error));
+    QCOMPARE(read.recording->samples.size(), 1500);
+    QVERIFY2(read.recording->events.size() <= 2 * (Recorder::kMaxEventsPerSecond + 1),
+             qPrintable(QString::number(read.recording->events.size())));
+    QFile json(Recorder::metadataPath(csv));
+    QVERIFY(json.size() < 256 * 1024);
+}
+
+QTEST_GUILESS_MAIN(TestSessionHostile)
+#include "tst_sessionhostile.moc"
