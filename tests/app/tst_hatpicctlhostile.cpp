@@ -1,9 +1,11 @@
 // hatpicctl as a real process against hostile conditions (issue 10, "Hostile input"): files it
 // did not create, paths that are not files, signals, a file-size limit, line noise before
 // HELLO, a silent legacy port.
+#include "../device/scripteddevice.h"
 #include "device/recorder.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -13,6 +15,7 @@
 #include <QTest>
 
 #include <csignal>
+#include <limits>
 #include <pty.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -89,6 +92,31 @@ qint64 samplesLine(const QByteArray &err)
     return -1;
 }
 
+//! Runs hatpicctl while this thread's event loop keeps a ScriptedDevice answering.
+Run runCtlWithDevice(const QStringList &arguments)
+{
+    QProcess process;
+    process.setProgram(QStringLiteral(HATPICCTL_PATH));
+    process.setArguments(arguments);
+    process.start();
+    Run run;
+    if (!process.waitForStarted(10000))
+        return run;
+    QElapsedTimer clock;
+    clock.start();
+    while (process.state() != QProcess::NotRunning && clock.elapsed() < 30000)
+        QTest::qWait(20);
+    if (process.state() != QProcess::NotRunning) {
+        process.kill();
+        process.waitForFinished(5000);
+        return run;
+    }
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    return run;
+}
+
 const QByteArray kProfile = R"({"format": "hatpic-profile", "version": 1})";
 
 } // namespace
@@ -109,6 +137,10 @@ private Q_SLOTS:
     void samplesFigureIsTheRowCount();
     void strayByteBeforeDetection();
     void silentLegacyPortSaysNoFrameArrived();
+    void infoRefusesANonsenseDevice();
+    void infoEscapesTheFirmwareName();
+    void getRefusesInvalidDeviceParameters();
+    void setBlamesTheDeviceForItsParameters();
 
 private:
     QTemporaryDir m_dir;
@@ -278,6 +310,53 @@ void TestHatpicCtlHostile::silentLegacyPortSaysNoFrameArrived()
     ::close(master);
     QVERIFY2(run.code == 3, qPrintable(describe(run)));
     QVERIFY2(run.err.contains("No legacy HATPIC frame arrived"), qPrintable(describe(run)));
+}
+
+void TestHatpicCtlHostile::infoRefusesANonsenseDevice()
+{
+    test::ScriptedDevice device;
+    QVERIFY(device.isValid());
+    device.hello.tauLimit = -1.0f;
+    const Run run = runCtlWithDevice({u"info"_s, u"--port"_s, device.path(), u"--json"_s});
+    QVERIFY2(run.code == 3, qPrintable(describe(run)));
+    QVERIFY2(run.err.contains("tau_limit"), qPrintable(describe(run)));
+    QVERIFY(run.out.isEmpty());
+}
+
+void TestHatpicCtlHostile::infoEscapesTheFirmwareName()
+{
+    test::ScriptedDevice device;
+    QVERIFY(device.isValid());
+    device.hello.firmware.assign("ev\x1b[2J\r\nil");
+    const Run run = runCtlWithDevice({u"info"_s, u"--port"_s, device.path()});
+    QVERIFY2(run.code == 0, qPrintable(describe(run)));
+    QVERIFY(!run.out.contains('\x1b') && !run.out.contains('\r'));
+    QVERIFY2(run.out.contains("ev\\x1b[2J\\x0d\\x0ail"), run.out.constData());
+}
+
+void TestHatpicCtlHostile::getRefusesInvalidDeviceParameters()
+{
+    test::ScriptedDevice device;
+    QVERIFY(device.isValid());
+    device.params.K_min = std::numeric_limits<double>::quiet_NaN();
+    const Run run = runCtlWithDevice({u"get"_s, u"--port"_s, device.path(), u"--json"_s});
+    QVERIFY2(run.code == 3, qPrintable(describe(run)));
+    QVERIFY2(run.err.contains("K_min") && run.err.contains("device"), qPrintable(describe(run)));
+    QVERIFY(run.out.isEmpty());
+}
+
+void TestHatpicCtlHostile::setBlamesTheDeviceForItsParameters()
+{
+    // K_min above K_max came from the device, not from --set N=0.12.
+    test::ScriptedDevice device;
+    QVERIFY(device.isValid());
+    device.params.K_min = 0.9;
+    device.params.K_max = 0.4;
+    const Run run =
+        runCtlWithDevice({u"set"_s, u"--port"_s, device.path(), u"--set"_s, u"N=0.12"_s});
+    QVERIFY2(run.code == 3, qPrintable(describe(run)));
+    QVERIFY2(run.err.contains("The device's current parameters are not valid"),
+             qPrintable(describe(run)));
 }
 
 QTEST_GUILESS_MAIN(TestHatpicCtlHostile)
