@@ -8,6 +8,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QSocketNotifier>
 
 #include <cerrno>
@@ -160,6 +161,15 @@ std::optional<Options> parseOptions(const QCoreApplication &app)
         config.stateFile = parser.value(stateOption);
         if (config.stateFile.isEmpty()) {
             printError(QStringLiteral("The state file name is empty."));
+            return std::nullopt;
+        }
+        // A pipe would block open() before any signal handling exists (Ctrl+C and SIGTERM
+        // ignored); a device or folder is no place for parameters either.
+        const QFileInfo state(config.stateFile);
+        if (state.exists() && !state.isFile()) {
+            printError(QStringLiteral("The state file \"%1\" is not a regular file (a pipe, a "
+                                      "device or a folder).")
+                           .arg(config.stateFile));
             return std::nullopt;
         }
     }

@@ -136,6 +136,13 @@ int DeviceRunner::connect()
     case Wait::Done:
         return ExitSuccess;
     case Wait::Lost:
+        // Silent from the start (the session gives up after 2 s without a byte): say what
+        // was missing, as the timeout below does, not that a connection was lost.
+        if (!heard) {
+            printError(u"No legacy HATPIC frame arrived on " + portText(m_options.connect.port) +
+                       u": " + asSentence(m_lostDetail));
+            return ExitNoDevice;
+        }
         return reportLoss();
     case Wait::TimedOut:
         break;

@@ -47,6 +47,13 @@ protected:
             return code;
         if (const int code = DeviceRunner::reportResult(result, QStringLiteral("GET_PARAMS")); code)
             return code;
+        // A device reporting NaN or values that break model.md is not printed as a profile
+        // (nor as a table that looks fine): it is refused with what is wrong.
+        if (const QString problem = deviceParamsProblem(runner.client().deviceParams());
+            !problem.isEmpty()) {
+            printError(u"The device reported parameters that are not valid: " + problem + u'.');
+            return ExitNoDevice;
+        }
         writeOut(parameterOutput(runner.client().deviceParams(), runner.client().deviceInfo(),
                                  parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;

@@ -4,8 +4,13 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 
+#include <csignal>
+
 int main(int argc, char *argv[])
 {
+    // A file-size limit (ulimit -f) must fail the write with EFBIG, which the recorder
+    // handles (whole rows kept, files closed), instead of killing the process mid-row.
+    std::signal(SIGXFSZ, SIG_IGN);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("hatpicctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(HATPIC_VERSION));

@@ -79,6 +79,14 @@ QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info)
     return serializeProfile(profile);
 }
 
+QString deviceParamsProblem(const DeviceParams &params)
+{
+    QStringList problems;
+    for (const Violation &v : validate(params))
+        problems << QString::fromStdString(v.message());
+    return problems.join(QStringLiteral("; "));
+}
+
 QByteArray parameterOutput(const DeviceParams &params, const DeviceInfo &info, bool json)
 {
     return json ? parameterProfile(params, info) : parameterTable(params).toUtf8();

@@ -30,4 +30,8 @@ QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info);
 //! parameterProfile() when `json`, else parameterTable() — what get, set and zero print.
 QByteArray parameterOutput(const DeviceParams &params, const DeviceInfo &info, bool json);
 
+//! Why parameters a device reported are not usable (model.md § 1, as 32-bit floats), every
+//! violation joined with "; "; empty when they are valid.
+QString deviceParamsProblem(const DeviceParams &params);
+
 } // namespace hatpic::cli

@@ -143,7 +143,17 @@ protected:
                 return code;
             // The device's floats as their shortest decimals: the same floats go back, and any
             // violation names readable values (0.4, not 0.4000000059604645).
-            params = withAssignments(tidyDeviceParams(runner.client().deviceParams()));
+            const DeviceParams held = tidyDeviceParams(runner.client().deviceParams());
+            params = withAssignments(held);
+            if (!validate(params).empty()) {
+                // Not the user's fault when the values --set starts from are the problem.
+                if (const QString problem = deviceParamsProblem(held); !problem.isEmpty()) {
+                    printError(u"The device's current parameters are not valid (" + problem +
+                               u"), so --set cannot start from them; nothing was sent. Give "
+                               u"every parameter with --profile.");
+                    return ExitNoDevice;
+                }
+            }
             if (const int code = checkValid(params); code)
                 return code;
         }

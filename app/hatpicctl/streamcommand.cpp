@@ -12,6 +12,8 @@
 #include <QCommandLineParser>
 #include <QDateTime>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
 
 #include <atomic>
 #include <cmath>
@@ -21,7 +23,7 @@ namespace hatpic::cli {
 
 namespace {
 
-std::atomic<bool> g_interrupted{false}; // set by SIGINT / SIGTERM
+std::atomic<bool> g_interrupted{false}; // set by SIGINT / SIGTERM / SIGHUP
 
 void onInterrupt(int)
 {
@@ -45,7 +47,8 @@ public:
     }
     QString synopsis() const override
     {
-        return QStringLiteral("stream --port PORT [--rate HZ] [--duration S] [--csv FILE]");
+        return QStringLiteral(
+            "stream --port PORT [--rate HZ] [--duration S] [--csv FILE [--force]]");
     }
     QString description() const override
     {
@@ -54,7 +57,9 @@ public:
                    "Without --csv every sample goes to stdout as CSV with the header\n"
                    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags.\n"
                    "With --csv FILE the samples are recorded to FILE (the tuner's recording\n"
-                   "format, metadata in FILE's .json sibling) and stdout stays empty.\n"
+                   "format, metadata in FILE's .json sibling) and stdout stays empty. An\n"
+                   "existing FILE or .json is never overwritten without --force.\n"
+                   "Ctrl+C, SIGTERM and SIGHUP end the stream cleanly (recording closed).\n"
                    "At the end the link statistics go to stderr: frames/s, frames, frames\n"
                    "missing by sequence number, decoder drops by reason, round-trip time.\n\n") +
                portHelp();
@@ -75,6 +80,9 @@ protected:
         parser.addOption(QCommandLineOption(QStringList{QStringLiteral("csv")},
                                             QStringLiteral("Record to FILE instead of stdout."),
                                             QStringLiteral("FILE")));
+        parser.addOption(
+            QCommandLineOption(QStringList{QStringLiteral("force")},
+                               QStringLiteral("Overwrite FILE and its .json if they exist.")));
     }
 
     int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
@@ -97,6 +105,20 @@ protected:
             }
         }
         m_csvPath = parser.value(QStringLiteral("csv"));
+        m_force = parser.isSet(QStringLiteral("force"));
+        if (parser.isSet(QStringLiteral("csv")) && m_csvPath.isEmpty()) {
+            printError(QStringLiteral("--csv needs a file name; without --csv the samples go to "
+                                      "stdout."));
+            return ExitBadUsage;
+        }
+        // Everything about the files is checked before the port is opened or a file touched.
+        if (!m_csvPath.isEmpty()) {
+            if (const QString problem = recordingTargetProblem(m_csvPath, m_force);
+                !problem.isEmpty()) {
+                printError(problem);
+                return ExitBadUsage;
+            }
+        }
         return ExitSuccess;
     }
 
@@ -127,6 +149,13 @@ protected:
         // flushed every 0.5 s, with parameter events, closed cleanly if the port vanishes.
         QObject context;
         if (!m_csvPath.isEmpty()) {
+            // --force: the user allowed replacing whatever .json is there (a profile, say),
+            // which the recorder would otherwise refuse.
+            const QString json = Recorder::metadataPath(m_csvPath);
+            if (m_force && QFileInfo(json).isFile() && !QFile::remove(json)) {
+                printError(u"Cannot replace " + json + u'.');
+                return ExitBadUsage;
+            }
             client.startRecording(m_csvPath, QStringLiteral("hatpicctl stream"));
             runner.runFor(kRecordingStartWaitS, [&] {
                 const RecordingStatus status = client.recordingStatus();
@@ -164,6 +193,7 @@ protected:
         g_interrupted.store(false);
         const auto previousInt = std::signal(SIGINT, onInterrupt);
         const auto previousTerm = std::signal(SIGTERM, onInterrupt);
+        const auto previousHup = std::signal(SIGHUP, onInterrupt);
         QElapsedTimer elapsed;
         elapsed.start();
         const int code =
@@ -172,6 +202,7 @@ protected:
         QObject::disconnect(&client, &DeviceClient::samplesReady, &context, nullptr);
         std::signal(SIGINT, previousInt);
         std::signal(SIGTERM, previousTerm);
+        std::signal(SIGHUP, previousHup);
 
         // The recording covers the requested duration, not the wait for statistics below.
         RecordingStatus recorded = client.recordingStatus();
@@ -189,6 +220,9 @@ protected:
         }
 
         flushOut();
+        // With a recording, the figure is its rows on disk (what a reader will find).
+        if (!m_csvPath.isEmpty())
+            samples = recorded.samples;
         printStatistics(client, seconds, samples, recorded);
 
         if (code == ExitNoDevice)
@@ -196,6 +230,11 @@ protected:
         if (recordingFailed) {
             printError(u"The recording stopped: " + asSentence(recorded.error));
             return ExitBadUsage;
+        }
+        if (code == ExitSuccess && samples == 0) {
+            printError(u"No telemetry arrived from " + info.port + u" in " +
+                       QString::number(seconds, 'f', 1) + u" s; the device did not stream.");
+            return ExitNoDevice;
         }
         return code;
     }
@@ -245,8 +284,31 @@ private:
         printNote(text);
     }
 
+    //! Why `csvPath` (and its .json) cannot be a new recording; empty when it can.
+    static QString recordingTargetProblem(const QString &csvPath, bool force)
+    {
+        const QStringList paths{csvPath, Recorder::metadataPath(csvPath)};
+        for (const QString &path : paths) {
+            const QFileInfo info(path);
+            if (info.exists() && !info.isFile()) {
+                return path + u" is not a regular file (" +
+                       (info.isDir() ? QStringLiteral("a folder")
+                                     : QStringLiteral("a device or pipe")) +
+                       u"); a recording needs files of its own.";
+            }
+        }
+        for (const QString &path : paths) {
+            if (QFileInfo::exists(path) && !force)
+                return path + u" already exists; pass --force to overwrite it.";
+        }
+        if (!QFileInfo(QFileInfo(csvPath).absolutePath()).isDir())
+            return u"Cannot create " + csvPath + u": its folder does not exist.";
+        return {};
+    }
+
     double m_duration = 0; //!< [s]; 0 = until interrupted
     QString m_csvPath;
+    bool m_force = false;
     quint64 m_statsUpdates = 0;
 };
 

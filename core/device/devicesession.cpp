@@ -135,8 +135,10 @@ void DeviceSession::disconnectDevice()
     failAllCommands(QStringLiteral("The session was disconnected before the device answered."));
     closeLink();
     m_statsTimer.stop();
-    if (wasActive)
+    if (wasActive) {
+        Q_EMIT statsUpdated(stats());
         setState(SessionState::Disconnected);
+    }
 }
 
 void DeviceSession::shutdown()
@@ -277,12 +279,26 @@ void DeviceSession::onListenTimeout()
     m_helloSeq = safeHelloSeq(m_seq);
     m_seq = static_cast<quint8>(*m_helloSeq + 1);
     m_v2.clear();
-    m_link->write(v2::encodeFrame(*m_helloSeq, v2::Hello{}));
-    m_detectTimer.start(kHelloWaitMs);
+    m_helloSends = 0;
+    sendDetectionHello();
+}
+
+void DeviceSession::sendDetectionHello()
+{
+    // Led by a delimiter: a stray byte already on the line (noise, a terminal's echo) ends
+    // as a frame of its own that the device drops, instead of corrupting the HELLO. Sent
+    // kHelloSends times within the wait, the same bytes each time, in case one is lost.
+    ++m_helloSends;
+    m_link->write(QByteArray(1, '\0') + v2::encodeFrame(*m_helloSeq, v2::Hello{}));
+    m_detectTimer.start(kHelloWaitMs / kHelloSends);
 }
 
 void DeviceSession::onHelloTimeout()
 {
+    if (m_link && m_helloSeq && m_helloSends < kHelloSends) {
+        sendDetectionHello();
+        return;
+    }
     const QString listenBaud =
         detectsAtTwoRates() ? u" at " % QString::number(kDefaultLegacyBaud) % u" baud" : QString();
     failDetection(u"No HATPIC answered on " % portDescription() % u": listened " %
@@ -311,6 +327,11 @@ void DeviceSession::failDetection(const QString &message)
 void DeviceSession::becomeConnectedV2(const v2::HelloReply &reply)
 {
     m_detectTimer.stop();
+    if (const QString problem = helloReplyProblem(reply); !problem.isEmpty()) {
+        failDetection(u"Refused the device on " % portDescription() % u": " % problem %
+                      u". It does not behave as a HATPIC joystick; nothing was sent to it.");
+        return;
+    }
     m_phase = Phase::Connected;
     m_protocol = WireProtocol::V2;
     m_info = DeviceInfo();
@@ -321,7 +342,7 @@ void DeviceSession::becomeConnectedV2(const v2::HelloReply &reply)
     m_info.maxStreamHz = reply.maxStreamHz;
     m_info.deviceId = reply.deviceId;
     m_info.tauLimit = reply.tauLimit;
-    m_info.firmware = v2::toQString(reply.firmware);
+    m_info.firmware = printableDeviceText(v2::toQString(reply.firmware));
     m_info.simulated = m_options.port == QStringView(kSimPortName);
     if (reply.protocolVersion != v2::kProtocolVersion) {
         qCWarning(lcSession) << "device reports protocol version" << reply.protocolVersion
@@ -405,6 +426,7 @@ void DeviceSession::linkLost(const QString &reason)
     failAllCommands(QStringLiteral("The connection was lost before the device answered."));
     closeLink();
     m_builder.markDiscontinuity();
+    Q_EMIT statsUpdated(stats()); // the final figures, before anyone reads them as such
     setState(SessionState::Lost, detail);
     if (m_wanted && m_options.autoReconnect)
         m_reconnectTimer.start();
@@ -488,7 +510,7 @@ void DeviceSession::handleV2Frame(const v2::Frame &frame)
             else if constexpr (std::is_same_v<T, v2::Pong>)
                 handlePong(message.token);
             else if constexpr (std::is_same_v<T, v2::Log>)
-                Q_EMIT deviceLog(v2::toQString(message.text));
+                Q_EMIT deviceLog(printableDeviceText(v2::toQString(message.text)));
             else if constexpr (std::is_same_v<T, v2::HelloReply>)
                 qCInfo(lcSession) << "late HELLO_REPLY ignored";
         },
@@ -503,6 +525,14 @@ void DeviceSession::handleTelemetry(quint8 seq, const v2::Telemetry &telemetry)
         m_stats.seqDrops += static_cast<quint8>(seq - *m_lastTelemetrySeq - 1);
     }
     m_lastTelemetrySeq = seq;
+    // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:
+    // such a frame is counted and skipped, never integrated.
+    if (!std::isfinite(telemetry.theta) || !std::isfinite(telemetry.omega) ||
+        !std::isfinite(telemetry.tau) || !std::isfinite(telemetry.tau_rec) ||
+        !std::isfinite(telemetry.tau_ext)) {
+        ++m_stats.nonFinite;
+        return;
+    }
     if (m_pendingEffect)
         applyPendingEffect();
     pushSample(m_builder.fromTelemetry(telemetry, hostUs()));
@@ -772,7 +802,8 @@ void DeviceSession::sendInflight()
     cmd.seq = nextSeq();
     switch (cmd.kind) {
     case CommandKind::Hello:
-        cmd.wire = v2::encodeFrame(cmd.seq, v2::Hello{});
+        // Led by a delimiter, as in detection: junk already on the line cannot spoil it.
+        cmd.wire = QByteArray(1, '\0') + v2::encodeFrame(cmd.seq, v2::Hello{});
         break;
     case CommandKind::GetParams:
         cmd.wire = v2::encodeFrame(cmd.seq, v2::GetParams{});

@@ -33,6 +33,7 @@ class DeviceSession : public QObject
 public:
     static constexpr int kListenMs = 500;            //!< detection: listen for legacy frames [ms]
     static constexpr int kHelloWaitMs = 500;         //!< detection: wait for HELLO_REPLY [ms]
+    static constexpr int kHelloSends = 4;            //!< detection: HELLOs sent within the wait
     static constexpr int kLegacyFramesNeeded = 2;    //!< legacy frames that decide "legacy"
     static constexpr int kCommandTimeoutMs = 250;    //!< resend a command after this [ms]
     static constexpr int kCommandRetries = 3;        //!< resends before Timeout
@@ -120,6 +121,7 @@ private:
     void startDetection();
     void onListenTimeout();
     void onHelloTimeout();
+    void sendDetectionHello();
     void failDetection(const QString &message);
     void becomeConnectedV2(const v2::HelloReply &reply);
     void becomeConnectedLegacy();
@@ -192,6 +194,7 @@ private:
     legacy::Decoder m_detectLegacy;
     int m_detectLegacyFrames = 0;
     std::optional<quint8> m_helloSeq;
+    int m_helloSends = 0;
 
     // decoding
     v2::FrameDecoder m_v2{v2::Direction::FromDevice};

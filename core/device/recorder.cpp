@@ -1,18 +1,17 @@
 #include "recorder.h"
 
 #include "device/numbertext.h"
+#include "device/recordingformat.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
-#include <QSet>
 
-#include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -22,12 +21,9 @@ namespace hatpic {
 
 namespace {
 
-constexpr char kFormatTag[] = "hatpic-recording";
-constexpr int kFormatVersion = 1;
+using recording::kFormatTag;
+using recording::kFormatVersion;
 constexpr qsizetype kFlushThresholdBytes = 256 * 1024; //!< write out earlier when this full
-constexpr qsizetype kMaxLineBytes = 8192;              //!< longest CSV line a reader accepts
-constexpr qint64 kMaxMetadataBytes = 16 * 1024 * 1024;
-constexpr int kMaxWarnings = 20; //!< warnings a reader lists before it stops listing
 
 // ---- JSON text with a fixed, readable key order (QJsonObject would sort the keys) ----
 
@@ -142,42 +138,93 @@ class Recorder::Private
 {
 public:
     bool writeOut();
+    QByteArray metadataText(bool closing) const;
     bool writeMetadata(bool closing);
     void fail(const QString &message);
+    QString checkTargets() const;
+    void dropEvent();
 
     QFile csv;
     QString csvPath;
     RecordingMetadata metadata;
     QByteArray buffer;
+    std::vector<double> bufferTimes;    //!< t_s of each row in `buffer`, in order [s]
+    QList<RecordingEvent> bufferEvents; //!< events of rows in `buffer`
     QString pendingEvent;
-    QList<RecordingEvent> events;
+    int droppedOnRow = 0;    //!< events not recorded since the last row with an event
+    double eventSecond = -1; //!< whole second of t_s the event rate is counted in [s]
+    int eventsThisSecond = 0;
+    double noteSecond = -std::numeric_limits<double>::infinity(); //!< last note's second [s]
+    quint64 eventsDropped = 0;
+    quint64 eventsNotListed = 0;  //!< in the CSV, beyond the .json's list
+    QList<RecordingEvent> events; //!< events on rows on disk (at most kMaxMetadataEvents)
     bool eventsDirty = false;
     bool open = false;
-    quint64 samples = 0;
+    quint64 samples = 0; //!< whole rows on disk
     double firstT = 0;
     double lastT = 0;
-    qint64 bytes = 0;
+    double lastSeenT = 0; //!< t_s of the last sample appended (written or not) [s]
+    qint64 bytes = 0;     //!< size of the CSV on disk: whole rows only
     QString error;
 };
 
 bool Recorder::Private::writeOut()
 {
+    if (buffer.isEmpty())
+        return true;
     qsizetype done = 0;
     while (done < buffer.size()) {
+        errno = 0;
         const qint64 n = csv.write(buffer.constData() + done, buffer.size() - done);
         if (n <= 0) {
-            fail(u"Writing " % csvPath % u" failed: " % csv.errorString() %
-                 u". The recording stopped; what was written before is kept.");
+            const int systemError = errno;
+            const QString reason =
+                systemError != 0 ? qt_error_string(systemError) : csv.errorString();
+            // Keep whole rows only: cut the file after the last complete row that reached it,
+            // so a reader never meets half a row and the counts equal the rows on disk.
+            const qsizetype whole = done > 0 ? buffer.lastIndexOf('\n', done - 1) + 1 : 0;
+            const auto rows = static_cast<std::size_t>(buffer.left(whole).count('\n'));
+            csv.resize(bytes + whole);
+            bytes += whole;
+            for (std::size_t r = 0; r < rows && r < bufferTimes.size(); ++r) {
+                if (samples++ == 0)
+                    firstT = bufferTimes[r];
+                lastT = bufferTimes[r];
+            }
+            const double lastWritten = rows > 0 && rows <= bufferTimes.size()
+                                           ? bufferTimes[rows - 1]
+                                           : -std::numeric_limits<double>::infinity();
+            for (const RecordingEvent &e : std::as_const(bufferEvents)) {
+                if (e.t_s <= lastWritten && events.size() < kMaxMetadataEvents)
+                    events.append(e);
+            }
+            fail(u"Writing " % csvPath % u" failed: " % reason %
+                 u". The recording stopped; the rows written before are kept.");
             return false;
         }
         done += n;
-        bytes += n;
+    }
+    bytes += buffer.size();
+    for (double t : bufferTimes) {
+        if (samples++ == 0)
+            firstT = t;
+        lastT = t;
+    }
+    for (const RecordingEvent &e : std::as_const(bufferEvents)) {
+        if (events.size() < kMaxMetadataEvents) {
+            events.append(e);
+            eventsDirty = true;
+        } else {
+            ++eventsNotListed;
+        }
     }
     buffer.clear();
+    bufferTimes.clear();
+    bufferEvents.clear();
     return true;
 }
 
-bool Recorder::Private::writeMetadata(bool closing)
+QByteArray Recorder::Private::metadataText(bool closing) const
 {
     QByteArray events_;
     {
@@ -203,20 +250,42 @@ bool Recorder::Private::writeMetadata(bool closing)
         .add("protocol", jsonString(wireProtocolName(metadata.device.protocol)))
         .add("device", deviceInfoJson(metadata.device, 2))
         .add("parameters", parameters)
-        .add("events", events_)
-        .add("samples", QByteArray::number(samples))
+        .add("events", events_);
+    if (eventsNotListed > 0)
+        root.add("events_not_listed", QByteArray::number(eventsNotListed));
+    if (eventsDropped > 0)
+        root.add("events_dropped", QByteArray::number(eventsDropped));
+    root.add("samples", QByteArray::number(samples))
         .add("duration_s", jsonDouble(samples ? std::round((lastT - firstT) * 1e6) / 1e6 : 0.0))
         .add("closed", jsonBool(closing));
     if (!error.isEmpty())
         root.add("error", jsonString(error));
+    return root.text() + '\n';
+}
 
+bool Recorder::Private::writeMetadata(bool closing)
+{
     QSaveFile file(Recorder::metadataPath(csvPath));
     if (!file.open(QIODevice::WriteOnly)) {
         if (error.isEmpty())
             fail(u"Cannot write " % file.fileName() % u": " % file.errorString());
         return false;
     }
-    file.write(root.text() + '\n');
+    // Flush and check before commit(), as the profile writer does: Qt 6.4's commit() does not
+    // notice a failed final flush (ENOSPC, EFBIG) and would rename a truncated file over the
+    // good one. On failure the previous .json stays as it was.
+    const QByteArray text = metadataText(closing);
+    errno = 0;
+    if (file.write(text) != text.size() || !file.flush()) {
+        const int systemError = errno;
+        file.cancelWriting();
+        file.commit(); // discards the temporary file
+        if (error.isEmpty()) {
+            fail(u"Writing " % file.fileName() % u" failed: " %
+                 (systemError != 0 ? qt_error_string(systemError) : file.errorString()));
+        }
+        return false;
+    }
     if (!file.commit()) {
         if (error.isEmpty())
             fail(u"Writing " % file.fileName() % u" failed: " % file.errorString());
@@ -234,9 +303,58 @@ void Recorder::Private::fail(const QString &message)
         return;
     open = false;
     buffer.clear();
+    bufferTimes.clear();
+    bufferEvents.clear();
     csv.close();
-    // Best effort: say in the metadata why the recording ended (the disk may be full).
+    // Best effort: say in the metadata why the recording ended (the disk may be full; then
+    // the last good .json stays).
     writeMetadata(true);
+}
+
+//! Why the recording cannot be written to `csvPath` and its .json, checked before either
+//! file is touched; empty when both can be.
+QString Recorder::Private::checkTargets() const
+{
+    if (csvPath.isEmpty())
+        return QStringLiteral("No file name was given for the recording.");
+    const QString jsonPath = Recorder::metadataPath(csvPath);
+    for (const QString &path : {csvPath, jsonPath}) {
+        const QFileInfo info(path);
+        if (info.exists() && !info.isFile()) {
+            return path % u" is not a regular file (" %
+                   (info.isDir() ? QStringLiteral("a folder")
+                                 : QStringLiteral("a device or pipe")) %
+                   u"); a recording needs files of its own.";
+        }
+        if (info.exists() && !info.isWritable())
+            return u"Cannot write " % path % u": it is read-only.";
+    }
+    const QFileInfo folder(QFileInfo(csvPath).absolutePath());
+    if (!folder.isDir())
+        return u"Cannot create " % csvPath % u": the folder " % folder.filePath() %
+               u" does not exist.";
+    // A .json that is not an earlier recording's metadata (a profile, say) is never replaced.
+    QFile json(jsonPath);
+    if (json.exists() && json.size() > 0) {
+        bool ours = false;
+        if (json.open(QIODevice::ReadOnly)) {
+            const QJsonDocument doc =
+                QJsonDocument::fromJson(json.read(recording::kMaxMetadataBytes));
+            ours = doc.isObject() &&
+                   doc.object().value(u"format").toString() == QLatin1String(kFormatTag);
+        }
+        if (!ours) {
+            return jsonPath % u" exists and is not a HATPIC recording's metadata; it was left "
+                              u"untouched. Choose another name for the recording.";
+        }
+    }
+    return {};
+}
+
+void Recorder::Private::dropEvent()
+{
+    ++eventsDropped;
+    ++droppedOnRow;
 }
 
 Recorder::Recorder() : d(std::make_unique<Private>()) {}
@@ -261,18 +379,37 @@ bool Recorder::open(const QString &csvPath, const RecordingMetadata &metadata)
     d = std::make_unique<Private>();
     d->csvPath = csvPath;
     d->metadata = metadata;
+    // Everything is checked before anything is touched: a refused start leaves existing files
+    // as they were.
+    if (const QString problem = d->checkTargets(); !problem.isEmpty()) {
+        d->error = problem;
+        return false;
+    }
+    QSaveFile json(metadataPath(csvPath));
+    const QByteArray text = d->metadataText(false);
+    errno = 0;
+    if (!json.open(QIODevice::WriteOnly) || json.write(text) != text.size() || !json.flush()) {
+        const int systemError = errno;
+        d->error = u"Cannot write " % json.fileName() % u": " %
+                   (systemError != 0 ? qt_error_string(systemError) : json.errorString());
+        json.cancelWriting();
+        return false;
+    }
     d->csv.setFileName(csvPath);
     // Unbuffered: the row buffer is ours, and a write error shows at the write that failed.
     if (!d->csv.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered)) {
         d->error = u"Cannot create " % csvPath % u": " % d->csv.errorString();
+        json.cancelWriting();
         return false;
     }
     d->open = true;
     d->buffer = recordingColumns().join(u',').toUtf8() + '\n';
     if (!d->writeOut())
         return false;
-    if (!d->writeMetadata(false))
+    if (!json.commit()) {
+        d->fail(u"Writing " % json.fileName() % u" failed: " % json.errorString());
         return false;
+    }
     return true;
 }
 
@@ -285,6 +422,19 @@ void Recorder::addEvent(const QString &text)
 {
     if (!d->open || text.isEmpty())
         return;
+    // Bounded per second of recording time and per row, so a device flooding changes cannot
+    // grow a row (or the .json) without limit; what is left out is counted.
+    const double second = std::floor(d->lastSeenT);
+    if (second != d->eventSecond) {
+        d->eventSecond = second;
+        d->eventsThisSecond = 0;
+    }
+    if (d->eventsThisSecond >= kMaxEventsPerSecond ||
+        d->pendingEvent.size() + text.size() + 2 > kMaxEventTextPerRow) {
+        d->dropEvent();
+        return;
+    }
+    ++d->eventsThisSecond;
     if (d->pendingEvent.isEmpty())
         d->pendingEvent = text;
     else
@@ -297,10 +447,8 @@ bool Recorder::append(const SampleBatch &batch)
         return false;
     QByteArray &out = d->buffer;
     for (const Sample &s : batch) {
-        if (d->samples == 0)
-            d->firstT = s.t_s;
-        d->lastT = s.t_s;
-        ++d->samples;
+        d->lastSeenT = s.t_s;
+        d->bufferTimes.push_back(s.t_s);
         appendNumber(out, s.t_s);
         for (double v :
              {s.theta, s.omega, s.tau, s.tau_rec, s.tau_ext, s.tau_total, s.v_ref, s.p_ref}) {
@@ -310,11 +458,22 @@ bool Recorder::append(const SampleBatch &batch)
         out += ',';
         out += QByteArray::number(s.flags);
         out += ',';
-        if (!d->pendingEvent.isEmpty()) {
-            out += csvQuoted(d->pendingEvent);
-            d->events.append({s.t_s, d->pendingEvent});
+        // Events left out are noted on the next row with a kept event, or at most once per
+        // second of recording time, so the note itself cannot flood the file.
+        const bool note = d->droppedOnRow > 0 &&
+                          (!d->pendingEvent.isEmpty() || std::floor(s.t_s) > d->noteSecond);
+        if (!d->pendingEvent.isEmpty() || note) {
+            if (note)
+                d->noteSecond = std::floor(s.t_s);
+            QString text = d->pendingEvent;
+            if (note) {
+                text += (text.isEmpty() ? QString() : QStringLiteral("; ")) % u'(' %
+                        QString::number(d->droppedOnRow) % u" more events not recorded)";
+            }
+            out += csvQuoted(text);
+            d->bufferEvents.append({s.t_s, text});
             d->pendingEvent.clear();
-            d->eventsDirty = true;
+            d->droppedOnRow = 0;
         }
         out += '\n';
     }
@@ -341,8 +500,8 @@ void Recorder::close()
     if (!d->writeOut())
         return;
     d->csv.close();
-    d->writeMetadata(true);
     d->open = false;
+    d->writeMetadata(true);
 }
 
 QString Recorder::error() const
@@ -358,350 +517,9 @@ RecordingStatus Recorder::status() const
     s.samples = d->samples;
     s.seconds = d->samples ? std::round((d->lastT - d->firstT) * 1e6) / 1e6 : 0.0;
     s.bytes = d->bytes;
+    s.eventsDropped = d->eventsDropped;
     s.error = d->error;
     return s;
-}
-
-// ================================================================ reading
-
-namespace {
-
-//! Splits one CSV line (no line break) into fields; false on a broken quote.
-bool splitCsvLine(QByteArrayView line, QList<QByteArray> &fields, QString &problem)
-{
-    fields.clear();
-    QByteArray field;
-    qsizetype i = 0;
-    const qsizetype n = line.size();
-    while (true) {
-        field.clear();
-        if (i < n && line[i] == '"') {
-            ++i;
-            bool closed = false;
-            while (i < n) {
-                const char c = line[i++];
-                if (c == '"') {
-                    if (i < n && line[i] == '"') {
-                        field += '"';
-                        ++i;
-                    } else {
-                        closed = true;
-                        break;
-                    }
-                } else {
-                    field += c;
-                }
-            }
-            if (!closed) {
-                problem = QStringLiteral("a quoted field is not closed");
-                return false;
-            }
-            if (i < n && line[i] != ',') {
-                problem = QStringLiteral("text follows a closing quote");
-                return false;
-            }
-        } else {
-            while (i < n && line[i] != ',') {
-                if (line[i] == '"') {
-                    problem = QStringLiteral("a quote inside an unquoted field");
-                    return false;
-                }
-                field += line[i++];
-            }
-        }
-        fields.append(field);
-        if (i >= n)
-            return true;
-        ++i; // the comma
-        if (i == n) {
-            fields.append(QByteArray());
-            return true;
-        }
-    }
-}
-
-bool parseDouble(const QByteArray &text, double &value)
-{
-    const QByteArray t = text.trimmed();
-    if (t.isEmpty()) {
-        value = std::numeric_limits<double>::quiet_NaN();
-        return true;
-    }
-    const char *begin = t.constData();
-    const char *end = begin + t.size();
-    if (*begin == '+')
-        ++begin;
-    const auto r = std::from_chars(begin, end, value);
-    return r.ec == std::errc() && r.ptr == end;
-}
-
-enum Column {
-    ColT,
-    ColTheta,
-    ColOmega,
-    ColTau,
-    ColTauRec,
-    ColTauExt,
-    ColTauTotal,
-    ColVRef,
-    ColPRef,
-    ColFlags,
-    ColEvent,
-    ColCount
-};
-
-void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
-{
-    QFile file(Recorder::metadataPath(csvPath));
-    if (!file.exists())
-        return;
-    if (file.size() > kMaxMetadataBytes) {
-        warnings << file.fileName() + u" is too large to be recording metadata; ignored.";
-        return;
-    }
-    if (!file.open(QIODevice::ReadOnly)) {
-        warnings << u"Cannot read " % file.fileName() % u": " % file.errorString();
-        return;
-    }
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
-    if (parseError.error != QJsonParseError::NoError || !doc.isObject()) {
-        warnings << file.fileName() % u" is not valid JSON (offset " %
-                        QString::number(parseError.offset) % u": " % parseError.errorString() %
-                        u"); metadata ignored.";
-        return;
-    }
-    const QJsonObject root = doc.object();
-    if (root.value(u"format").toString() != QLatin1String(kFormatTag)) {
-        warnings << file.fileName() + u" is not HATPIC recording metadata; ignored.";
-        return;
-    }
-    if (root.value(u"version").toInt() > kFormatVersion) {
-        warnings << file.fileName() % u" was written by a newer version (format version " %
-                        QString::number(root.value(u"version").toInt()) %
-                        u"); reading what this build knows.";
-    }
-    RecordingMetadata &m = rec.metadata;
-    m.start = QDateTime::fromString(root.value(u"start").toString(), Qt::ISODateWithMs);
-    m.source = root.value(u"source").toString();
-    const QString protocol = root.value(u"protocol").toString();
-    m.device.protocol = protocol == u"legacy" ? WireProtocol::Legacy : WireProtocol::V2;
-    const QJsonObject dev = root.value(u"device").toObject();
-    m.device.port = dev.value(u"port").toString();
-    m.device.baud = dev.value(u"baud").toInt();
-    m.device.simulated = dev.value(u"simulated").toBool();
-    m.device.protocolVersion = static_cast<quint8>(dev.value(u"protocol_version").toInt());
-    m.device.maxStreamHz = static_cast<quint16>(dev.value(u"max_stream_hz").toInt());
-    m.device.deviceId = static_cast<quint32>(dev.value(u"device_id").toDouble());
-    m.device.tauLimit = dev.value(u"tau_limit").toDouble(m.device.tauLimit);
-    m.device.firmware = dev.value(u"firmware").toString();
-    const QJsonObject params = root.value(u"parameters").toObject();
-    const QJsonObject device = params.value(u"device").toObject();
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const QString key = QString::fromLatin1(deviceFieldName(i));
-        if (device.contains(key))
-            m.params.setField(i, device.value(key).toDouble(m.params.field(i)));
-    }
-    const QJsonObject host = params.value(u"host").toObject();
-    m.host.v_max = host.value(u"v_max").toDouble(m.host.v_max);
-    m.host.mode = host.value(u"mode").toString() == u"rotation" ? ReferenceMode::Rotation
-                                                                : ReferenceMode::Translation;
-    m.host.ref_deadzone = host.value(u"ref_deadzone").toBool(m.host.ref_deadzone);
-    m.host.tau_limit = host.value(u"tau_limit").toDouble(m.host.tau_limit);
-    rec.hasMetadata = true;
-
-    // Events the CSV lost (e.g. a cut-off last line) are taken from the metadata. The CSV's
-    // event times are looked up per text in sorted order, so a metadata file holding very many
-    // events costs O(n log n), not a comparison of every pair.
-    QHash<QString, std::vector<double>> csvTimes;
-    for (const RecordingEvent &x : std::as_const(rec.events))
-        csvTimes[x.text].push_back(x.t_s);
-    for (auto it = csvTimes.begin(); it != csvTimes.end(); ++it)
-        std::sort(it->begin(), it->end());
-    QSet<QPair<QString, double>> fromMetadata; //!< listed twice in the .json: kept once
-    for (const QJsonValue &v : root.value(u"events").toArray()) {
-        const QJsonObject e = v.toObject();
-        RecordingEvent event{e.value(u"t_s").toDouble(), e.value(u"text").toString()};
-        if (event.text.isEmpty())
-            continue;
-        const auto found = csvTimes.constFind(event.text);
-        bool known = false;
-        if (found != csvTimes.cend()) {
-            for (auto at = std::lower_bound(found->cbegin(), found->cend(), event.t_s - 1e-9);
-                 !known && at != found->cend() && *at <= event.t_s + 1e-9; ++at) {
-                known = std::abs(*at - event.t_s) < 1e-9;
-            }
-        }
-        if (!known && !fromMetadata.contains({event.text, event.t_s})) {
-            fromMetadata.insert({event.text, event.t_s});
-            rec.events.append(event);
-        }
-    }
-    std::stable_sort(rec.events.begin(), rec.events.end(),
-                     [](const auto &a, const auto &b) { return a.t_s < b.t_s; });
-}
-
-} // namespace
-
-RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
-{
-    RecordingReadResult out;
-    QFile file(csvPath);
-    if (!file.open(QIODevice::ReadOnly)) {
-        out.error = u"Cannot open " % csvPath % u": " % file.errorString();
-        return out;
-    }
-    if (file.size() > maxBytes) {
-        out.error = csvPath % u" is " % QString::number(file.size()) %
-                    u" bytes, more than the limit of " % QString::number(maxBytes) % u" bytes.";
-        return out;
-    }
-
-    Recording rec;
-    std::array<int, ColCount> index;
-    index.fill(-1);
-    int columnCount = 0;
-    qint64 lineNumber = 0;
-    qint64 readBytes = 0;
-    bool haveHeader = false;
-    QList<QByteArray> fields;
-    QString problem;
-    const QStringList columns = recordingColumns();
-    int warningsLeft = kMaxWarnings;
-    auto warn = [&](const QString &message) {
-        if (warningsLeft-- > 0)
-            out.warnings << message;
-        else if (warningsLeft == -1)
-            out.warnings << QStringLiteral("(further warnings left out)");
-    };
-    auto fail = [&](const QString &message) {
-        out.error = u"line " % QString::number(lineNumber) % u": " % message;
-        return out;
-    };
-
-    while (!file.atEnd()) {
-        QByteArray line = file.readLine(kMaxLineBytes + 1);
-        ++lineNumber;
-        readBytes += line.size();
-        if (readBytes > maxBytes)
-            return fail(QStringLiteral("the file grew beyond the size limit while being read"));
-        const bool complete = line.endsWith('\n');
-        if (!complete && !file.atEnd()) {
-            return fail(u"longer than " % QString::number(kMaxLineBytes) %
-                        u" bytes; this is not a recording");
-        }
-        while (line.endsWith('\n') || line.endsWith('\r'))
-            line.chop(1);
-        if (lineNumber == 1 && line.startsWith("\xEF\xBB\xBF"))
-            line.remove(0, 3); // UTF-8 byte order mark, as some spreadsheets write it
-        if (line.trimmed().isEmpty())
-            continue;
-
-        if (!splitCsvLine(line, fields, problem)) {
-            if (!complete && haveHeader) {
-                warn(u"line " % QString::number(lineNumber) %
-                     u": incomplete last line ignored (the recording was cut off).");
-                break;
-            }
-            return fail(problem);
-        }
-
-        if (!haveHeader) {
-            columnCount = static_cast<int>(fields.size());
-            for (int c = 0; c < columnCount; ++c) {
-                const QString name = QString::fromUtf8(fields[c].trimmed());
-                const int known = static_cast<int>(columns.indexOf(name));
-                if (known < 0) {
-                    warn(u"line 1: unknown column \"" % name % u"\" ignored.");
-                    continue;
-                }
-                if (index[known] >= 0)
-                    return fail(u"column \"" % name % u"\" appears twice");
-                index[known] = c;
-            }
-            if (index[ColT] < 0 || index[ColTheta] < 0) {
-                return fail(u"not a HATPIC recording: the header must name at least t_s and "
-                            u"theta (expected " %
-                            columns.join(u',') % u')');
-            }
-            for (int k = 0; k < ColCount; ++k) {
-                if (index[k] < 0 && k != ColEvent) {
-                    warn(u"line 1: column \"" % columns[k] %
-                         u"\" missing; its values read as empty.");
-                }
-            }
-            haveHeader = true;
-            continue;
-        }
-
-        if (fields.size() != columnCount) {
-            if (!complete) {
-                warn(u"line " % QString::number(lineNumber) %
-                     u": incomplete last line ignored (the recording was cut off).");
-                break;
-            }
-            return fail(u"expected " % QString::number(columnCount) % u" fields, found " %
-                        QString::number(fields.size()));
-        }
-
-        Sample s;
-        double values[ColFlags];
-        bool cutOff = false;
-        for (int k = 0; k < ColFlags; ++k) {
-            values[k] = std::numeric_limits<double>::quiet_NaN();
-            if (index[k] < 0 || parseDouble(fields[index[k]], values[k]))
-                continue;
-            if (!complete) {
-                cutOff = true;
-                break;
-            }
-            return fail(u"column " % columns[k] % u": \"" %
-                        QString::fromUtf8(fields[index[k]].left(40)) % u"\" is not a number");
-        }
-        if (cutOff) {
-            warn(u"line " % QString::number(lineNumber) %
-                 u": incomplete last line ignored (the recording was cut off).");
-            break;
-        }
-        if (!std::isfinite(values[ColT]))
-            return fail(QStringLiteral("t_s must be a finite number"));
-        s.t_s = values[ColT];
-        s.t_us = static_cast<quint32>(static_cast<quint64>(std::llround(s.t_s * 1e6)));
-        s.theta = values[ColTheta];
-        s.omega = values[ColOmega];
-        s.tau = values[ColTau];
-        s.tau_rec = values[ColTauRec];
-        s.tau_ext = values[ColTauExt];
-        s.tau_total = values[ColTauTotal];
-        s.v_ref = values[ColVRef];
-        s.p_ref = values[ColPRef];
-        if (index[ColFlags] >= 0) {
-            const QByteArray text = fields[index[ColFlags]].trimmed();
-            bool ok = true;
-            const uint flags = text.isEmpty() ? 0u : text.toUInt(&ok);
-            if (!ok || flags > 0xFFFF) {
-                return fail(u"column flags: \"" % QString::fromUtf8(text.left(40)) %
-                            u"\" is not a number from 0 to 65535");
-            }
-            s.flags = static_cast<quint16>(flags);
-        }
-        if (!rec.samples.isEmpty() && s.t_s < rec.samples.last().t_s) {
-            warn(u"line " % QString::number(lineNumber) % u": t_s goes back in time.");
-        }
-        if (index[ColEvent] >= 0) {
-            const QString event = QString::fromUtf8(fields[index[ColEvent]]);
-            if (!event.isEmpty())
-                rec.events.append({s.t_s, event});
-        }
-        rec.samples.append(s);
-    }
-    if (!haveHeader) {
-        out.error = csvPath % u" is empty: no header row.";
-        return out;
-    }
-    readMetadata(csvPath, rec, out.warnings);
-    out.recording = std::move(rec);
-    return out;
 }
 
 } // namespace hatpic

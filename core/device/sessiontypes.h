@@ -39,6 +39,14 @@ QString sessionStateName(SessionState state); //!< "disconnected", "opening", �
 //! (the text of recording events and of the tuner's push markers). Empty when nothing does.
 QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
 
+//! Text a device sent, safe to print: control characters (ESC, CR, LF, …, DEL and C1) become
+//! "\x1b"-style escapes, so a device's name can never drive a terminal.
+QString printableDeviceText(const QString &text);
+
+//! Why a HELLO_REPLY is nonsense (model.md bounds: tau_limit finite, > 0 and ≤ 10 N·m;
+//! max_stream_hz > 0); empty when every field is usable.
+QString helloReplyProblem(const v2::HelloReply &reply);
+
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
 
@@ -90,17 +98,19 @@ struct LinkStats
     double rttMaxMs = -1;
     quint64 referenceGaps = 0; //!< gaps the reference held across
     quint64 retries = 0;       //!< command frames sent again
+    quint64 nonFinite = 0;     //!< telemetry frames with a NaN or ±Inf value: skipped
     quint64 totalDecoderDrops() const;
 };
 
 struct RecordingStatus
 {
     bool active = false;
-    QString path;       //!< the CSV file
-    double seconds = 0; //!< recorded duration [s]
-    quint64 samples = 0;
-    qint64 bytes = 0; //!< bytes written to the CSV so far
-    QString error;    //!< why the recording stopped, if it failed
+    QString path;              //!< the CSV file
+    double seconds = 0;        //!< recorded duration [s]
+    quint64 samples = 0;       //!< whole rows on disk
+    qint64 bytes = 0;          //!< bytes written to the CSV so far
+    quint64 eventsDropped = 0; //!< events left out by the recorder's bounds
+    QString error;             //!< why the recording stopped, if it failed
 };
 
 } // namespace hatpic

@@ -247,13 +247,15 @@ void TestRecorder::flushPutsRowsOnDiskWithoutClose()
 
 void TestRecorder::fullDiskAtOpen()
 {
+    // /dev/full is not a file a recording may use (issue 10 #9); a really full disk is in
+    // tst_recorderlimits (diskFullAtOpenChangesNothing, on a tmpfs).
     QTemporaryDir dir;
     const QString csv = dir.filePath(QStringLiteral("full.csv"));
     QVERIFY(QFile::link(QStringLiteral("/dev/full"), csv));
     Recorder rec;
     QVERIFY(!rec.open(csv, metadata()));
     QVERIFY(!rec.isOpen());
-    QVERIFY2(rec.error().contains(csv) && rec.error().contains(u"No space left on device"),
+    QVERIFY2(rec.error().contains(csv) && rec.error().contains(u"not a regular file"),
              qPrintable(rec.error()));
     QCOMPARE(rec.status().error, rec.error());
     QVERIFY(!rec.status().active);

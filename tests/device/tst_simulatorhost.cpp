@@ -11,6 +11,7 @@
 #include <QTest>
 
 #include <csignal>
+#include <sys/stat.h>
 #include <sys/types.h>
 
 using namespace hatpic;
@@ -260,6 +261,15 @@ void TestSimulatorHost::binaryRefusesBadOptions_data()
     QTest::newRow("unknown option") << QStringList{u"--colour"_s} << u"colour"_s;
     QTest::newRow("missing value") << QStringList{u"--rate"_s} << u"rate"_s;
     QTest::newRow("positional argument") << QStringList{u"extra"_s} << u"extra"_s;
+    // A pipe as the state file once blocked open() before signals were handled (issue 10).
+    static QTemporaryDir dir;
+    const QString fifo = dir.filePath(u"state.fifo"_s);
+    if (!QFileInfo::exists(fifo))
+        ::mkfifo(QFile::encodeName(fifo).constData(), 0600);
+    QTest::newRow("state file is a pipe")
+        << QStringList{u"--state"_s, fifo} << u"not a regular file"_s;
+    QTest::newRow("state file is a folder")
+        << QStringList{u"--state"_s, dir.path()} << u"not a regular file"_s;
 }
 
 void TestSimulatorHost::binaryRefusesBadOptions()
