@@ -1,5 +1,5 @@
 // SIGINT/SIGTERM → QCoreApplication::quit(), for the programs that run until stopped
-// (hatpic-fw-host, hatpic-servo-sim).
+// (hatpic-sim, hatpic-fw-host, hatpic-servo-sim).
 #pragma once
 
 namespace hatpic {

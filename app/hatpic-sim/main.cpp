@@ -2,6 +2,7 @@
 //
 // Prints the slave path as the first stdout line, then runs until SIGINT/SIGTERM (exit 0).
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
+#include "common/quitonsignal.h"
 #include "device/handinput.h"
 #include "device/simulateddevice.h"
 #include "device/simulatorhost.h"
@@ -9,13 +10,8 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QSocketNotifier>
 
-#include <cerrno>
-#include <csignal>
 #include <cstdio>
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <optional>
 
@@ -28,17 +24,6 @@ constexpr int kExitFailure = 1;
 constexpr int kExitBadOptions = 4;
 constexpr double kMaxRateHz = 20000;  //!< highest --rate accepted [Hz]
 constexpr double kLoadNoise = 0.0005; //!< std-dev of the load-reading noise [N·m]
-
-int g_signalPipe[2] = {-1, -1};
-
-// Async-signal-safe: only write() to the self-pipe; the event loop does the rest.
-void onSignal(int)
-{
-    const int saved = errno;
-    const char byte = 1;
-    [[maybe_unused]] const ssize_t n = ::write(g_signalPipe[1], &byte, 1);
-    errno = saved;
-}
 
 void printError(const QString &sentence)
 {
@@ -183,20 +168,6 @@ std::optional<Options> parseOptions(const QCoreApplication &app)
     return options;
 }
 
-bool installSignalHandlers()
-{
-    if (::pipe2(g_signalPipe, O_CLOEXEC | O_NONBLOCK) != 0)
-        return false;
-    struct sigaction action = {};
-    action.sa_handler = onSignal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
-    ::sigaction(SIGINT, &action, nullptr);
-    ::sigaction(SIGTERM, &action, nullptr);
-    std::signal(SIGPIPE, SIG_IGN);
-    return true;
-}
-
 } // namespace
 
 int main(int argc, char *argv[])
@@ -209,17 +180,10 @@ int main(int argc, char *argv[])
     if (!options)
         return kExitBadOptions;
 
-    if (!installSignalHandlers()) {
+    if (!quitOnSignals()) {
         printError(QStringLiteral("Cannot set up signal handling."));
         return kExitFailure;
     }
-    QSocketNotifier signalNotifier{qintptr(g_signalPipe[0]), QSocketNotifier::Read};
-    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [] {
-        char bytes[16];
-        while (::read(g_signalPipe[0], bytes, sizeof bytes) > 0) {
-        }
-        QCoreApplication::quit();
-    });
 
     SimulatorHost host(options->config);
     if (!host.device().stateWarning().isEmpty())
