@@ -2,6 +2,7 @@
 
 #include "device/numbertext.h"
 
+#include <QBuffer>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -450,34 +451,24 @@ enum Column {
     ColCount
 };
 
-void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
+//! Applies the metadata JSON `json` (read from `fileName`) to `rec`.
+void applyMetadata(const QByteArray &json, const QString &fileName, Recording &rec,
+                   QStringList &warnings)
 {
-    QFile file(Recorder::metadataPath(csvPath));
-    if (!file.exists())
-        return;
-    if (file.size() > kMaxMetadataBytes) {
-        warnings << file.fileName() + u" is too large to be recording metadata; ignored.";
-        return;
-    }
-    if (!file.open(QIODevice::ReadOnly)) {
-        warnings << u"Cannot read " % file.fileName() % u": " % file.errorString();
-        return;
-    }
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError || !doc.isObject()) {
-        warnings << file.fileName() % u" is not valid JSON (offset " %
-                        QString::number(parseError.offset) % u": " % parseError.errorString() %
-                        u"); metadata ignored.";
+        warnings << fileName % u" is not valid JSON (offset " % QString::number(parseError.offset) %
+                        u": " % parseError.errorString() % u"); metadata ignored.";
         return;
     }
     const QJsonObject root = doc.object();
     if (root.value(u"format").toString() != QLatin1String(kFormatTag)) {
-        warnings << file.fileName() + u" is not HATPIC recording metadata; ignored.";
+        warnings << fileName + u" is not HATPIC recording metadata; ignored.";
         return;
     }
     if (root.value(u"version").toInt() > kFormatVersion) {
-        warnings << file.fileName() % u" was written by a newer version (format version " %
+        warnings << fileName % u" was written by a newer version (format version " %
                         QString::number(root.value(u"version").toInt()) %
                         u"); reading what this build knows.";
     }
@@ -541,23 +532,27 @@ void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
                      [](const auto &a, const auto &b) { return a.t_s < b.t_s; });
 }
 
-} // namespace
-
-RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
+void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
 {
-    RecordingReadResult out;
-    QFile file(csvPath);
+    QFile file(Recorder::metadataPath(csvPath));
+    if (!file.exists())
+        return;
+    if (file.size() > kMaxMetadataBytes) {
+        warnings << file.fileName() + u" is too large to be recording metadata; ignored.";
+        return;
+    }
     if (!file.open(QIODevice::ReadOnly)) {
-        out.error = u"Cannot open " % csvPath % u": " % file.errorString();
-        return out;
+        warnings << u"Cannot read " % file.fileName() % u": " % file.errorString();
+        return;
     }
-    if (file.size() > maxBytes) {
-        out.error = csvPath % u" is " % QString::number(file.size()) %
-                    u" bytes, more than the limit of " % QString::number(maxBytes) % u" bytes.";
-        return out;
-    }
+    applyMetadata(file.readAll(), file.fileName(), rec, warnings);
+}
 
-    Recording rec;
+//! Reads the CSV rows from `file` (opened, its size already checked) into `rec`. `name` names
+//! the file in messages. False (with out.error) when the file is refused.
+bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &rec,
+             RecordingReadResult &out)
+{
     std::array<int, ColCount> index;
     index.fill(-1);
     int columnCount = 0;
@@ -576,7 +571,7 @@ RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
     };
     auto fail = [&](const QString &message) {
         out.error = u"line " % QString::number(lineNumber) % u": " % message;
-        return out;
+        return false;
     };
 
     while (!file.atEnd()) {
@@ -696,10 +691,47 @@ RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
         rec.samples.append(s);
     }
     if (!haveHeader) {
-        out.error = csvPath % u" is empty: no header row.";
+        out.error = name % u" is empty: no header row.";
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
+{
+    RecordingReadResult out;
+    QFile file(csvPath);
+    if (!file.open(QIODevice::ReadOnly)) {
+        out.error = u"Cannot open " % csvPath % u": " % file.errorString();
         return out;
     }
+    if (file.size() > maxBytes) {
+        out.error = csvPath % u" is " % QString::number(file.size()) %
+                    u" bytes, more than the limit of " % QString::number(maxBytes) % u" bytes.";
+        return out;
+    }
+    Recording rec;
+    if (!readCsv(file, csvPath, maxBytes, rec, out))
+        return out;
     readMetadata(csvPath, rec, out.warnings);
+    out.recording = std::move(rec);
+    return out;
+}
+
+RecordingReadResult parseRecording(const QByteArray &csv, const std::optional<QByteArray> &metadata,
+                                   const QString &name)
+{
+    RecordingReadResult out;
+    QBuffer buffer;
+    buffer.setData(csv);
+    buffer.open(QIODevice::ReadOnly);
+    Recording rec;
+    if (!readCsv(buffer, name, std::numeric_limits<qint64>::max(), rec, out))
+        return out;
+    if (metadata)
+        applyMetadata(*metadata, Recorder::metadataPath(name), rec, out.warnings);
     out.recording = std::move(rec);
     return out;
 }
