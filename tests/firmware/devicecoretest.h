@@ -49,10 +49,7 @@ class FixedHostPort : public fw::HostPort
 {
 public:
     std::size_t read(std::span<std::uint8_t> out) override { return toDevice.pop(out); }
-    bool write(std::span<const std::uint8_t> frame, Traffic) override
-    {
-        return toHost.push(frame);
-    }
+    bool write(std::span<const std::uint8_t> frame, Traffic) override { return toHost.push(frame); }
     ByteRing<1024> toDevice;
     ByteRing<64 * 1024> toHost;
 };
@@ -97,8 +94,7 @@ public:
         std::array<std::uint8_t, 64> out{};
         std::size_t n = 0;
         if (instr == fw::sts::kRead) {
-            n = fw::sts::encodePacket(1, 0, std::span(regs).subspan(params[0], params[1]),
-                                      m_reply);
+            n = fw::sts::encodePacket(1, 0, std::span(regs).subspan(params[0], params[1]), m_reply);
         } else {
             if (instr == fw::sts::kWrite) {
                 for (std::size_t i = 1; i < params.size(); ++i)
