@@ -1,5 +1,6 @@
-// fw::DeviceCore<double> fed arbitrary host bytes through a fixed-buffer host port, with
-// control cycles interleaved, on a canned STS3032 bus (tests/firmware/devicecoretest.h).
+// fw::DeviceCore<double> fed arbitrary host bytes through a fixed-buffer host port (room for a
+// few frames towards the host), with control cycles interleaved, on a canned STS3032 bus
+// (tests/firmware/devicecoretest.h).
 //
 // Input: byte 0 seeds the schedule (chunk sizes, when the link and control contexts run, clock
 // steps), byte 1 sets the knob's position and whether the parameter store fails, the rest is
@@ -7,8 +8,8 @@
 // Invariants (checked after every link-context run):
 // - every complete frame that passes the CRC and is a command gets exactly one reply, of the
 //   kind the command asks for (HELLO_REPLY, PARAMS, PONG with the token, or an ACK of its seq
-//   with the refusal's status), or is counted in unansweredCommands(), or is SET_FEEDBACK and
-//   gets none;
+//   with the refusal's status), or is counted in unansweredCommands() (queue to the control
+//   context full, or host port full), or is SET_FEEDBACK and gets none;
 // - everything the device sends decodes without a single drop;
 // - the device's decoder stats equal those of an independent decoder fed the same bytes.
 // Crashes, sanitizer reports and hangs (libFuzzer's -timeout) fail the run.
@@ -34,6 +35,17 @@ public:
     bool failing = false;
 };
 
+//! Like FixedHostPort, but the device → host buffer holds only a few frames (it is drained
+//! after every link-context run), so that a burst of replies meets a full port.
+class TightHostPort : public fw::HostPort
+{
+public:
+    std::size_t read(std::span<std::uint8_t> out) override { return toDevice.pop(out); }
+    bool write(std::span<const std::uint8_t> frame, Traffic) override { return toHost.push(frame); }
+    ByteRing<1024> toDevice;
+    ByteRing<192> toHost;
+};
+
 struct Rig
 {
     Rig() : bus(servo, 0), actuator(bus, {}), core(config(), host, actuator, clock, &store) {}
@@ -46,7 +58,7 @@ struct Rig
         return c;
     }
     CannedServo servo;
-    FixedHostPort host;
+    TightHostPort host;
     ManualClock clock;
     FlakyStore store;
     fw::StsBus bus;
