@@ -97,5 +97,9 @@ struct RecordingReadResult
 //! Reads a recording CSV (and its .json beside it when present). Bounded: refuses files
 //! over `maxBytes`.
 RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes = 2LL << 30);
+//! The same reading from memory: `csv` holds the CSV file, `metadata` its .json (std::nullopt
+//! when there is none); `name` stands for the CSV's path in messages.
+RecordingReadResult parseRecording(const QByteArray &csv, const std::optional<QByteArray> &metadata,
+                                   const QString &name = QStringLiteral("recording.csv"));
 
 } // namespace hatpic

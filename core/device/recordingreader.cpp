@@ -3,6 +3,7 @@
 #include "device/recorder.h"
 #include "device/recordingformat.h"
 
+#include <QBuffer>
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
@@ -112,6 +113,9 @@ enum Column {
     ColCount
 };
 
+void applyMetadata(const QByteArray &text, const QString &fileName, Recording &rec,
+                   QStringList &warnings);
+
 void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
 {
     QFile file(Recorder::metadataPath(csvPath));
@@ -137,21 +141,27 @@ void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
         warnings << file.fileName() + u" is too large to be recording metadata; ignored.";
         return;
     }
+    applyMetadata(text, file.fileName(), rec, warnings);
+}
+
+//! Applies the metadata JSON `text` (read from `fileName`) to `rec`.
+void applyMetadata(const QByteArray &text, const QString &fileName, Recording &rec,
+                   QStringList &warnings)
+{
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
     if (parseError.error != QJsonParseError::NoError || !doc.isObject()) {
-        warnings << file.fileName() % u" is not valid JSON (offset " %
-                        QString::number(parseError.offset) % u": " % parseError.errorString() %
-                        u"); metadata ignored.";
+        warnings << fileName % u" is not valid JSON (offset " % QString::number(parseError.offset) %
+                        u": " % parseError.errorString() % u"); metadata ignored.";
         return;
     }
     const QJsonObject root = doc.object();
     if (root.value(u"format").toString() != QLatin1String(kFormatTag)) {
-        warnings << file.fileName() + u" is not HATPIC recording metadata; ignored.";
+        warnings << fileName + u" is not HATPIC recording metadata; ignored.";
         return;
     }
     if (root.value(u"version").toInt() > kFormatVersion) {
-        warnings << file.fileName() % u" was written by a newer version (format version " %
+        warnings << fileName % u" was written by a newer version (format version " %
                         QString::number(root.value(u"version").toInt()) %
                         u"); reading what this build knows.";
     }
@@ -215,6 +225,9 @@ void readMetadata(const QString &csvPath, Recording &rec, QStringList &warnings)
                      [](const auto &a, const auto &b) { return a.t_s < b.t_s; });
 }
 
+bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &rec,
+             RecordingReadResult &out);
+
 } // namespace
 
 RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
@@ -236,8 +249,37 @@ RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
                     u" bytes, more than the limit of " % QString::number(maxBytes) % u" bytes.";
         return out;
     }
-
     Recording rec;
+    if (!readCsv(file, csvPath, maxBytes, rec, out))
+        return out;
+    readMetadata(csvPath, rec, out.warnings);
+    out.recording = std::move(rec);
+    return out;
+}
+
+RecordingReadResult parseRecording(const QByteArray &csv, const std::optional<QByteArray> &metadata,
+                                   const QString &name)
+{
+    RecordingReadResult out;
+    QBuffer buffer;
+    buffer.setData(csv);
+    buffer.open(QIODevice::ReadOnly);
+    Recording rec;
+    if (!readCsv(buffer, name, std::numeric_limits<qint64>::max(), rec, out))
+        return out;
+    if (metadata)
+        applyMetadata(*metadata, Recorder::metadataPath(name), rec, out.warnings);
+    out.recording = std::move(rec);
+    return out;
+}
+
+namespace {
+
+//! Reads the CSV rows from `file` (opened, its size already checked) into `rec`. `name` names
+//! the file in messages. False (with out.error) when the file is refused.
+bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &rec,
+             RecordingReadResult &out)
+{
     std::array<int, ColCount> index;
     index.fill(-1);
     int columnCount = 0;
@@ -256,7 +298,7 @@ RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
     };
     auto fail = [&](const QString &message) {
         out.error = u"line " % QString::number(lineNumber) % u": " % message;
-        return out;
+        return false;
     };
 
     while (!file.atEnd()) {
@@ -381,12 +423,12 @@ RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes)
         rec.samples.append(s);
     }
     if (!haveHeader) {
-        out.error = csvPath % u" is empty: no header row.";
-        return out;
+        out.error = name % u" is empty: no header row.";
+        return false;
     }
-    readMetadata(csvPath, rec, out.warnings);
-    out.recording = std::move(rec);
-    return out;
+    return true;
 }
+
+} // namespace
 
 } // namespace hatpic

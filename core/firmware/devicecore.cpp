@@ -104,18 +104,22 @@ template<typename T> void DeviceCore<T>::handleFrame(const v2::Frame &frame)
     const std::uint8_t type = v2::messageType(frame.message);
     if (m_haveLastCommand && type == m_lastType && frame.seq == m_lastSeq) {
         // A retry: answer again with the very same bytes, apply nothing.
-        m_host.write({m_reply.data(), m_replyLength}, HostPort::Traffic::Reply);
+        if (!m_host.write({m_reply.data(), m_replyLength}, HostPort::Traffic::Reply))
+            ++m_unanswered;
         return;
     }
     const std::size_t length = answer(frame);
-    if (length == 0)
+    if (length == 0) {
+        ++m_unanswered; // not applied: the control context is not draining; the host retries
         return;
+    }
     std::copy_n(m_scratch.begin(), length, m_reply.begin());
     m_replyLength = length;
     m_haveLastCommand = true;
     m_lastType = type;
     m_lastSeq = frame.seq;
-    m_host.write({m_reply.data(), m_replyLength}, HostPort::Traffic::Reply);
+    if (!m_host.write({m_reply.data(), m_replyLength}, HostPort::Traffic::Reply))
+        ++m_unanswered;
 }
 
 template<typename T> std::size_t DeviceCore<T>::reply(const v2::Message &message)
@@ -130,10 +134,12 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
     };
     const v2::Message &m = frame.message;
     if (std::holds_alternative<v2::Hello>(m)) {
-        m_streamHz = 0; // HELLO stops the stream, as power-up does
+        // HELLO stops the stream, as power-up does; unanswered when that cannot be queued.
         ControlInput stop;
         stop.kind = ControlInput::Kind::Stream;
-        m_toControl.push(stop);
+        if (!m_toControl.push(stop))
+            return 0;
+        m_streamHz = 0;
         v2::HelloReply hello;
         hello.protocolVersion = v2::kProtocolVersion;
         hello.capabilities = v2::kCapabilityEffects;

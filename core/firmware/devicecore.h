@@ -78,6 +78,10 @@ public:
     std::uint16_t maxStreamHz() const { return m_maxStreamHz; }
     //! Telemetry frames lost because the host port or the queue to it was full (seq gaps).
     std::uint32_t telemetryDropped() const { return m_telemetryDropped.load(); }
+    //! Commands that got no reply (link context): the queue to the control context was full,
+    //! so the command was not applied, or the host port refused the reply. The host retries
+    //! either way; a retry of an applied command is answered, not applied again.
+    std::uint32_t unansweredCommands() const { return m_unanswered; }
     const v2::DecoderStats &decoderStats() const { return m_decoder.stats(); }
     const Controller<T> &controller() const { return m_controller; }
 
@@ -123,6 +127,7 @@ private:
     StoredSettings m_flash;  //!< what SAVE_PARAMS saved (or power-up's blocks)
     std::uint16_t m_streamHz = 0;
     std::uint8_t m_replySeq = 0;
+    std::uint32_t m_unanswered = 0;
     bool m_haveLastCommand = false;
     std::uint8_t m_lastType = 0;
     std::uint8_t m_lastSeq = 0;

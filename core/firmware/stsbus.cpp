@@ -101,6 +101,9 @@ bool StsBus::transact(std::uint8_t id, std::uint8_t code, std::span<const std::u
                       std::span<std::uint8_t> reply)
 {
     ++m_stats.requests;
+    // 0xFF is no id: FF FF FF reads as preamble on the bus, so no servo could parse the request.
+    if (id > sts::kBroadcastId)
+        return fail(StsBusError::Rejected);
     m_requestSize = sts::encodePacket(id, code, params, m_request);
     if (m_requestSize == 0)
         return fail(StsBusError::Rejected);

@@ -21,7 +21,7 @@ enum class StsBusError : std::uint8_t {
     Short,     //!< the reply stopped before a whole packet, or carried fewer params than asked
     Corrupt,   //!< bad checksum or LEN, or a well-formed packet of the wrong size
     ForeignId, //!< a valid status packet from another servo id
-    Rejected,  //!< request not sent: too long, or an answer asked of the broadcast id
+    Rejected,  //!< request not sent: too long, id 0xFF, or an answer asked of the broadcast id
 };
 
 //! Bus counters. Every failed transaction is counted once, under one kind.

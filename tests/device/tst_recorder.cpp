@@ -102,6 +102,7 @@ private Q_SLOTS:
     void hostileMetadataIsAWarning();
     void manyMetadataEventsReadInBoundedTime();
     void neverCrashesOnMutatedFiles();
+    void parseFromBytesReadsLikeTheFile();
 };
 
 void TestRecorder::columns()
@@ -625,6 +626,47 @@ void TestRecorder::neverCrashesOnMutatedFiles()
         accepted += r.recording ? 1 : 0;
     }
     QVERIFY(accepted > 0 && accepted < rounds); // both outcomes were exercised
+}
+
+void TestRecorder::parseFromBytesReadsLikeTheFile()
+{
+    // parseRecording (what fuzz_recording drives) is the reader readRecording uses: the same
+    // bytes give the same recording, error and warnings, with and without the .json.
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("p.csv"));
+    Recorder rec;
+    QVERIFY(rec.open(csv, metadata()));
+    SampleBatch batch;
+    for (int i = 0; i < 20; ++i)
+        batch.append(sample(i * 1e-3));
+    rec.addEvent(QStringLiteral("K_max 0.4 → 0.6"));
+    QVERIFY(rec.append(batch));
+    rec.close();
+    const QByteArray good = readAll(csv);
+    const QByteArray json = readAll(Recorder::metadataPath(csv));
+    const QByteArray cutOff = good + "0.5,1";
+    const QByteArray bad = good + "1,2,3\n";
+    for (const QByteArray &bytes : {good, cutOff, bad}) {
+        for (const bool withJson : {true, false}) {
+            QVERIFY(writeFile(csv, bytes));
+            if (!withJson)
+                QVERIFY(QFile::remove(Recorder::metadataPath(csv)));
+            const RecordingReadResult fromFile = readRecording(csv);
+            const RecordingReadResult fromBytes =
+                parseRecording(bytes, withJson ? std::optional(json) : std::nullopt, csv);
+            QCOMPARE(fromBytes.error, fromFile.error);
+            QCOMPARE(fromBytes.warnings, fromFile.warnings);
+            QCOMPARE(fromBytes.recording.has_value(), fromFile.recording.has_value());
+            if (fromFile.recording) {
+                QCOMPARE(fromBytes.recording->hasMetadata, withJson);
+                QCOMPARE(fromBytes.recording->samples.size(), fromFile.recording->samples.size());
+                QCOMPARE(fromBytes.recording->events.size(), fromFile.recording->events.size());
+                QCOMPARE(fromBytes.recording->metadata.source, fromFile.recording->metadata.source);
+            }
+            if (!withJson)
+                QVERIFY(writeFile(Recorder::metadataPath(csv), json));
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TestRecorder)

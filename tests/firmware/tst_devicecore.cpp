@@ -136,6 +136,7 @@ private Q_SLOTS:
     void busErrorHoldsMeasurementAndCommand();
     void hundredBusErrorsDisableTorque();
     void floatBuildTracksDoubleBuild();
+    void commandsBeyondTheQueueAreCountedAndHelloStillStops();
 };
 
 void TestDeviceCore::noAllocationAfterStart()
@@ -227,6 +228,43 @@ void TestDeviceCore::floatBuildTracksDoubleBuild()
     const double rest = 0.02 / DeviceParams{}.K_max;
     QVERIFY(std::abs(double(f.core.controller().last().theta) - rest) <= 1.5 * kTick);
     QVERIFY(std::abs(d.core.controller().last().theta - rest) <= 1.5 * kTick);
+}
+
+void TestDeviceCore::commandsBeyondTheQueueAreCountedAndHelloStillStops()
+{
+    // Found writing fuzz_devicecore's invariant: more commands for the control context than its
+    // queue holds, between two cycles, were dropped without a reply and without a count; a HELLO
+    // among them was answered while its "stop the stream" was lost, so telemetry went on.
+    Rig<double> rig;
+    QVERIFY(rig.core.start(0));
+    rig.received();
+    constexpr std::uint8_t kBurst = 12; // the queue holds 8
+    for (std::uint8_t seq = 0; seq < kBurst; ++seq)
+        rig.send(seq, v2::SetStream{1000});
+    rig.send(kBurst, v2::Hello{});
+    rig.core.serviceHost();
+    const QList<v2::Frame> replies = rig.received();
+    QCOMPARE(replies.size() + qsizetype(rig.core.unansweredCommands()), qsizetype(kBurst + 1));
+    QVERIFY(rig.core.unansweredCommands() > 0);
+    bool helloAnswered = false;
+    for (const v2::Frame &f : replies)
+        helloAnswered = helloAnswered || std::holds_alternative<v2::HelloReply>(f.message);
+    QVERIFY(!helloAnswered); // not applied, so not answered: the host retries it
+
+    // The retry goes through once the control context has drained the queue, and stops the
+    // stream for good.
+    rig.cycle();
+    rig.received();
+    rig.send(kBurst, v2::Hello{});
+    rig.cycle();
+    int helloReplies = 0;
+    for (const v2::Frame &f : rig.received()) // and the telemetry of the cycle before it
+        helloReplies += std::holds_alternative<v2::HelloReply>(f.message) ? 1 : 0;
+    QCOMPARE(helloReplies, 1);
+    for (int i = 0; i < 20; ++i)
+        rig.cycle();
+    QVERIFY(rig.received().isEmpty());
+    QCOMPARE(rig.core.streamRate(), std::uint16_t(0));
 }
 
 QTEST_GUILESS_MAIN(TestDeviceCore)

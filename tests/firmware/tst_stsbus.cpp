@@ -160,8 +160,16 @@ void TestStsBus::rejectsImpossibleRequests()
     std::array<std::uint8_t, sts::kMaxParams> big{};
     QVERIFY(!bus.write(1, 0, big));
     QVERIFY(!bus.syncWrite(42, 2, std::span<const std::uint8_t>(big.data(), 4)));
+    // Found by fuzz_sts_bus: id 0xFF went on the wire as FF FF FF …, which every servo reads as
+    // preamble, and the call then waited out its timeout.
+    const std::array<std::uint8_t, 1> one{0};
+    QVERIFY(!bus.write(0xFF, 0, one));
+    QVERIFY(!bus.regWrite(0xFF, 0, one));
+    QVERIFY(!bus.ping(0xFF));
+    QVERIFY(!bus.read(0xFF, 56, out));
+    QVERIFY(!bus.action(0xFF));
     QCOMPARE(bus.lastError(), StsBusError::Rejected);
-    QCOMPARE(int(bus.stats().rejected), 5);
+    QCOMPARE(int(bus.stats().rejected), 10);
     QCOMPARE(int(bus.stats().errors()), 0);
     QVERIFY(port.writes.isEmpty());
 }
