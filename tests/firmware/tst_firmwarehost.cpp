@@ -166,7 +166,10 @@ void TestFirmwareHost::closedLoopThroughPtys()
     QTRY_VERIFY_WITH_TIMEOUT(stale(), kTimeoutMs);
     const qint64 staleAfterMs = sinceLastFeedback.elapsed();
     qInfo("stale %lld ms after the last feedback frame", static_cast<long long>(staleAfterMs));
-    QVERIFY2(staleAfterMs >= 180 && staleAfterMs < 400, qPrintable(QString::number(staleAfterMs)));
+    // Not before 200 ms (less the host timer's slack). The upper bound only says "it came":
+    // on a loaded 2-core CI machine the ptys and two event loops can add a second of delay;
+    // the watchdog's exact timing is tested on simulated time (tst_simulateddevice::watchdog).
+    QVERIFY2(staleAfterMs >= 180 && staleAfterMs < 1500, qPrintable(QString::number(staleAfterMs)));
     const double back = settledTheta(client);
     QVERIFY2(std::abs(back - 0.0396) < 2 * kTick, qPrintable(QString::number(back)));
     QCOMPARE(telemetrySince(client, client.frames.size() - 50).last().tau_ext, 0.0f);
