@@ -8,11 +8,14 @@
 #include <QCommandLineParser>
 #include <QTimer>
 
+#include <cmath>
 #include <cstdio>
 
 using namespace hatpic;
 
 namespace {
+
+constexpr double kMaxQuitAfterSeconds = 604800; //!< --quit-after: at most one week [s]
 
 void fail(const QString &message)
 {
@@ -103,8 +106,22 @@ int main(int argc, char *argv[])
     if (parser.isSet(repaint)) {
         bool ok = false;
         repaintHz = parser.value(repaint).toDouble(&ok);
-        if (!ok || repaintHz < 1 || repaintHz > 240) {
-            fail(QStringLiteral("--repaint-rate: expected 1 to 240 Hz"));
+        // NaN passes neither comparison, so finiteness is checked on its own.
+        if (!ok || !std::isfinite(repaintHz) || repaintHz < 1 || repaintHz > 240) {
+            fail(QStringLiteral("--repaint-rate: expected 1 to 240 Hz, got \"%1\"")
+                     .arg(parser.value(repaint)));
+            return 2;
+        }
+    }
+    double quitAfterSeconds = -1;
+    if (parser.isSet(quitAfter)) {
+        bool ok = false;
+        quitAfterSeconds = parser.value(quitAfter).toDouble(&ok);
+        if (!ok || !std::isfinite(quitAfterSeconds) || quitAfterSeconds < 0 ||
+            quitAfterSeconds > kMaxQuitAfterSeconds) {
+            fail(QStringLiteral("--quit-after: expected 0 to %1 seconds, got \"%2\"")
+                     .arg(kMaxQuitAfterSeconds)
+                     .arg(parser.value(quitAfter)));
             return 2;
         }
     }
@@ -130,9 +147,8 @@ int main(int argc, char *argv[])
         if (!window.openRecording(parser.positionalArguments().constFirst(), &error))
             fail(error);
     }
-    if (parser.isSet(quitAfter)) {
-        const double seconds = parser.value(quitAfter).toDouble();
-        QTimer::singleShot(static_cast<int>(seconds * 1000), &window, &QWidget::close);
-    }
+    if (quitAfterSeconds >= 0)
+        QTimer::singleShot(static_cast<int>(std::lround(quitAfterSeconds * 1000)), &window,
+                           &QWidget::close);
     return app.exec();
 }

@@ -141,13 +141,20 @@ public:
         writeOut(sampleCsvHeader());
         QByteArray chunk;
         while (!simulation.atEnd()) {
-            chunk += sampleCsvRow(simulation.next());
+            const Sample sample = simulation.next();
+            if (simulation.failed())
+                break; // that row is not a result
+            chunk += sampleCsvRow(sample);
             if (chunk.size() > 1 << 16) {
                 writeOut(chunk);
                 chunk.clear();
             }
         }
         writeOut(chunk);
+        if (simulation.failed()) {
+            printError(simulation.problem());
+            return ExitBadUsage;
+        }
         return ExitSuccess;
     }
 };

@@ -135,10 +135,26 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
     HandInput hand;
     hand.kind = info->kind;
     auto checkFrequency = [&](double f) {
-        if (f >= 0)
+        if (f < 0) {
+            setError(error,
+                     QStringLiteral("Hand input frequency %1 Hz in \"%2\" must not be negative.")
+                         .arg(number(f), text));
+            return false;
+        }
+        if (f > kMaxFrequency) {
+            setError(error, QStringLiteral("Hand input frequency %1 Hz in \"%2\" is above the "
+                                           "%3 Hz a simulated hand may have.")
+                                .arg(number(f), text, number(kMaxFrequency)));
+            return false;
+        }
+        return true;
+    };
+    auto checkTorque = [&](double tau) {
+        if (std::abs(tau) <= kMaxTorque)
             return true;
-        setError(error, QStringLiteral("Hand input frequency %1 Hz in \"%2\" must not be negative.")
-                            .arg(number(f), text));
+        setError(error, QStringLiteral("Hand input torque %1 N·m in \"%2\" is beyond the ±%3 N·m "
+                                       "a simulated hand may apply.")
+                            .arg(number(tau), text, number(kMaxTorque)));
         return false;
     };
     switch (hand.kind) {
@@ -146,26 +162,37 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
         break;
     case Kind::Constant:
         hand.amplitude = values.at(0);
+        if (!checkTorque(hand.amplitude))
+            return std::nullopt;
         break;
     case Kind::Step:
         hand.amplitude = values.at(0);
         hand.offset = values.size() > 1 ? values.at(1) : 0.0;
+        if (!checkTorque(hand.amplitude) || !checkTorque(hand.offset))
+            return std::nullopt;
         break;
     case Kind::Sine:
         hand.amplitude = values.at(0);
         hand.frequency = values.at(1);
-        if (!checkFrequency(hand.frequency))
+        if (!checkTorque(hand.amplitude) || !checkFrequency(hand.frequency))
             return std::nullopt;
         break;
     case Kind::Chirp:
         hand.amplitude = values.at(0);
         hand.frequency = values.at(1);
         hand.frequency1 = values.at(2);
-        if (!checkFrequency(hand.frequency) || !checkFrequency(hand.frequency1))
+        if (!checkTorque(hand.amplitude) || !checkFrequency(hand.frequency) ||
+            !checkFrequency(hand.frequency1))
             return std::nullopt;
         break;
     case Kind::VirtualHand:
         hand.angle = values.at(0);
+        if (std::abs(hand.angle) > kMaxAngle) {
+            setError(error, QStringLiteral("Hand input angle %1 rad in \"%2\" is more than one "
+                                           "turn (2π rad) from 0.")
+                                .arg(number(hand.angle), text));
+            return std::nullopt;
+        }
         break;
     }
     return hand;

@@ -4,6 +4,7 @@
 #include <QMetaType>
 #include <QString>
 
+#include <numbers>
 #include <optional>
 
 namespace hatpic {
@@ -26,6 +27,12 @@ struct HandInput
     static constexpr double kChirpPeriod = 10.0;  //!< one linear F0→F1 sweep, then repeats [s]
     static constexpr double kHandStiffness = 2.0; //!< virtual hand spring [N·m/rad]
     static constexpr double kHandDamping = 0.05;  //!< virtual hand damper [N·m·s/rad]
+
+    // What parse() accepts (simulator.md § 4): far beyond what a hand does to this knob, yet
+    // small enough that the simulated knob stays within finite numbers.
+    static constexpr double kMaxTorque = 10.0;                //!< |T|, |T0|, |A| [N·m]
+    static constexpr double kMaxFrequency = 1000.0;           //!< F, F0, F1 [Hz]
+    static constexpr double kMaxAngle = 2 * std::numbers::pi; //!< |ANGLE|: one turn [rad]
 
     //! τ_op at time t since the input started, for knob angle θ [rad] and rate ω [rad/s].
     double torque(double t, double theta, double omega) const;

@@ -18,6 +18,16 @@ QString number(double value)
     return QString::fromStdString(formatNumber(value));
 }
 
+bool isFinite(const Sample &s)
+{
+    for (double value :
+         {s.t_s, s.theta, s.omega, s.tau, s.tau_rec, s.tau_ext, s.tau_total, s.v_ref, s.p_ref}) {
+        if (!std::isfinite(value))
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 qint64 OfflineSimulation::rowsFor(const OfflineSimulationConfig &config)
@@ -34,6 +44,9 @@ QString OfflineSimulation::check(const OfflineSimulationConfig &config)
         return u"The duration must be 0 s or more, got " + number(config.duration) + u'.';
     if (!std::isfinite(config.noise) || config.noise < 0)
         return u"The noise must be 0 N·m or more, got " + number(config.noise) + u'.';
+    // The hand's own bounds (simulator.md § 4), also for an input that was not parsed.
+    if (QString error; !HandInput::parse(config.hand.toSpec(), &error))
+        return error;
     if (config.duration * config.rateHz + 1 > static_cast<double>(kMaxRows))
         return u"The simulation would have more than " + QString::number(kMaxRows) +
                u" rows; shorten the duration or lower the rate.";
@@ -93,6 +106,12 @@ Sample OfflineSimulation::next()
     sample.flags = cycle.flags;
     if (reference.gap)
         sample.flags |= kFlagReferenceGap;
+    if (!isFinite(sample)) {
+        m_failed = true;
+        m_problem = u"The simulation left the finite numbers at t = " + number(cycle.t) +
+                    u" s; the hand input or the profile drives the knob beyond what the model "
+                    u"can represent.";
+    }
     return sample;
 }
 

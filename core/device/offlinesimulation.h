@@ -45,9 +45,15 @@ public:
 
     //! Rows in the whole run: floor(duration·rate) + 1.
     qint64 rowCount() const { return m_rows; }
-    bool atEnd() const { return m_done >= m_rows; }
-    //! The next control step. The first is t = 0 with θ = theta0 and ω = 0.
+    //! True after the last row, and at once after a row that failed().
+    bool atEnd() const { return m_done >= m_rows || m_failed; }
+    //! The next control step. The first is t = 0 with θ = theta0 and ω = 0. When one of its
+    //! numbers is not finite the run has failed: that row is not a result and there is no next.
     Sample next();
+    //! The simulation left the finite numbers; problem() says where.
+    bool failed() const { return m_failed; }
+    //! Empty unless failed(): one sentence naming the time of the first non-finite row.
+    QString problem() const { return m_problem; }
 
 private:
     static qint64 rowsFor(const OfflineSimulationConfig &config);
@@ -59,6 +65,8 @@ private:
     ReferenceGenerator m_reference;
     qint64 m_rows = 0;
     qint64 m_done = 0;
+    bool m_failed = false;
+    QString m_problem;
 };
 
 } // namespace hatpic

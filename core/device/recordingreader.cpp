@@ -393,7 +393,11 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
         if (!std::isfinite(values[ColT]))
             return fail(QStringLiteral("t_s must be a finite number"));
         s.t_s = values[ColT];
-        s.t_us = static_cast<quint32>(static_cast<quint64>(std::llround(s.t_s * 1e6)));
+        {
+            // Any finite t_s: wrap in double before converting, so that no cast overflows.
+            const double us = std::fmod(std::round(s.t_s * 1e6), 4294967296.0);
+            s.t_us = std::isfinite(us) ? static_cast<quint32>(static_cast<qint64>(us)) : 0;
+        }
         s.theta = values[ColTheta];
         s.omega = values[ColOmega];
         s.tau = values[ColTau];

@@ -141,6 +141,8 @@ private Q_SLOTS:
     void infoEscapesTheFirmwareName();
     void getRefusesInvalidDeviceParameters();
     void setBlamesTheDeviceForItsParameters();
+    void simulateRefusesAnAbsurdHand_data();
+    void simulateRefusesAnAbsurdHand();
 
 private:
     QTemporaryDir m_dir;
@@ -357,6 +359,34 @@ void TestHatpicCtlHostile::setBlamesTheDeviceForItsParameters()
     QVERIFY2(run.code == 3, qPrintable(describe(run)));
     QVERIFY2(run.err.contains("The device's current parameters are not valid"),
              qPrintable(describe(run)));
+}
+
+void TestHatpicCtlHostile::simulateRefusesAnAbsurdHand_data()
+{
+    QTest::addColumn<QString>("spec");
+    QTest::addColumn<QByteArray>("bound"); // what the sentence names
+    QTest::newRow("torque") << u"const:1e305"_s << QByteArray("±10 N·m");
+    QTest::newRow("angle") << u"hand:1e307"_s << QByteArray("more than one turn");
+    QTest::newRow("frequency") << u"sine:1:1e308"_s << QByteArray("1000 Hz");
+}
+
+void TestHatpicCtlHostile::simulateRefusesAnAbsurdHand()
+{
+    // These once printed rows of empty values with exit 0: the knob's speed overflowed.
+    QFETCH(QString, spec);
+    QFETCH(QByteArray, bound);
+    const QString profile = m_dir.filePath(u"simulate.json"_s);
+    QVERIFY(writeFile(profile, kProfile));
+    for (const bool ideal : {false, true}) {
+        QStringList args{u"simulate"_s, u"--profile"_s, profile, u"--input"_s, spec};
+        if (ideal)
+            args << u"--ideal"_s;
+        const Run run = runCtl(args);
+        QVERIFY2(run.code == 4, qPrintable(describe(run)));
+        QVERIFY2(run.out.isEmpty(), qPrintable(describe(run)));
+        QVERIFY2(run.err.trimmed().count('\n') == 0 && run.err.contains(bound),
+                 qPrintable(describe(run)));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestHatpicCtlHostile)

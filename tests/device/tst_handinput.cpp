@@ -57,6 +57,12 @@ void TestHandInput::parseValid_data()
     QTest::newRow("virtual hand") << u"hand:0.3"_s << make(K::VirtualHand, 0, 0, 0, 0, 0.3);
     QTest::newRow("virtual hand negative")
         << u"hand:-1.2"_s << make(K::VirtualHand, 0, 0, 0, 0, -1.2);
+    // The bounds themselves are accepted (simulator.md § 4).
+    QTest::newRow("torque at its bound") << u"step:10:-10"_s << make(K::Step, 10, -10);
+    QTest::newRow("frequency at its bound")
+        << u"chirp:-10:0:1000"_s << make(K::Chirp, -10, 0, 0, 1000);
+    QTest::newRow("angle at its bound")
+        << u"hand:-6.283185307179586"_s << make(K::VirtualHand, 0, 0, 0, 0, -2 * std::numbers::pi);
 }
 
 void TestHandInput::parseValid()
@@ -94,6 +100,17 @@ void TestHandInput::parseInvalid_data()
                                                 "negative"_s;
     QTest::newRow("negative chirp F0") << u"chirp:0.1:-1:2"_s << u"must not be negative"_s;
     QTest::newRow("negative chirp F1") << u"chirp:0.1:1:-2"_s << u"must not be negative"_s;
+    // Absurd magnitudes (issue 10): refused up front, naming the bound.
+    QTest::newRow("huge torque") << u"const:1e305"_s
+                                 << u"torque 1e+305 N·m in \"const:1e305\" is beyond the ±10 N·m"_s;
+    QTest::newRow("huge step T0") << u"step:0.1:-11"_s << u"torque -11 N·m"_s;
+    QTest::newRow("huge sine amplitude") << u"sine:20:1"_s << u"beyond the ±10 N·m"_s;
+    QTest::newRow("huge sine frequency")
+        << u"sine:1:1e308"_s << u"frequency 1e+308 Hz in \"sine:1:1e308\" is above the 1000 Hz"_s;
+    QTest::newRow("huge chirp F1") << u"chirp:0.1:1:1000.5"_s << u"above the 1000 Hz"_s;
+    QTest::newRow("huge angle") << u"hand:1e307"_s
+                                << u"angle 1e+307 rad in \"hand:1e307\" is more than one turn"_s;
+    QTest::newRow("angle beyond a turn") << u"hand:-6.3"_s << u"more than one turn"_s;
 }
 
 void TestHandInput::parseInvalid()

@@ -20,9 +20,11 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFile>
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
@@ -109,6 +111,10 @@ private Q_SLOTS:
     void keyboardShortcuts();
     void narrowWindowKeepsStateTagVisible();
     void narrowReplayBarKeepsItsSlider();
+    void hugeReplaySpanKeepsTheWindow_data();
+    void hugeReplaySpanKeepsTheWindow();
+    void oversizedSettingsAreFitted_data();
+    void oversizedSettingsAreFitted();
 
 private:
     void connectSim(ProtocolChoice protocol = ProtocolChoice::V2);
@@ -779,6 +785,126 @@ void TestMainWindow::narrowReplayBarKeepsItsSlider()
     QVERIFY(title);
     QVERIFY(title->toolTip().contains(QStringLiteral("morning-session-trial-07.csv")));
     QVERIFY(title->toolTip().contains(QStringLiteral("lab bench")));
+}
+
+void TestMainWindow::hugeReplaySpanKeepsTheWindow_data()
+{
+    QTest::addColumn<QByteArray>("csv");
+    QTest::addColumn<double>("middle"); // t at the slider's middle
+    QTest::newRow("0 to 1e300 s") << QByteArray("t_s,theta\n0,0\n5e299,0.1\n1e300,0\n") << 5e299;
+    QTest::newRow("35 days (ms overflow an int)")
+        << QByteArray("t_s,theta\n0,0\n1500000,0.1\n3000000,0\n") << 1.5e6;
+    QTest::newRow("beyond the largest double")
+        << QByteArray("t_s,theta\n-1.7e308,0\n0,0.1\n1.7e308,0\n") << 0.0;
+}
+
+void TestMainWindow::hugeReplaySpanKeepsTheWindow()
+{
+    // Issue 10: a recording whose t_s spans 0…1e300 widened the window to 5474 px (a 300-digit
+    // time label) and saved that size for every later launch; spans over ~24.8 days overflowed
+    // the slider's int.
+    QFETCH(QByteArray, csv);
+    QFETCH(double, middle);
+    const QString path = m_dir.filePath(QStringLiteral("span.csv"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(csv);
+    }
+    const QRect available = m_window->screen()->availableGeometry();
+    m_window->resize(m_window->minimumSizeHint().expandedTo(QSize(1100, 700))); // room for the bar
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    const int width = m_window->width();
+    const int minimumWidth = m_window->minimumSizeHint().width();
+
+    QString error;
+    QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
+    ReplayBar *bar = m_window->replayBar();
+    ReplayController *replay = m_window->replayController();
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    m_window->plotPanel()->repaintNow();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+
+    // Nothing widens the window: not the replay bar, not the plots' axis labels.
+    QCOMPARE(m_window->width(), width);
+    QVERIFY2(m_window->minimumSizeHint().width() <= width,
+             qPrintable(QString::number(m_window->minimumSizeHint().width())));
+    QVERIFY2(bar->minimumSizeHint().width() < 700,
+             qPrintable(QString::number(bar->minimumSizeHint().width())));
+    QVERIFY2(bar->positionText().size() <= 24, qPrintable(bar->positionText()));
+    auto *plot = m_window->plotPanel()->findChild<QCustomPlot *>();
+    QVERIFY(plot);
+    for (QCPAxisRect *rect : plot->axisRects()) {
+        for (QCPAxis *axis : rect->axes()) {
+            for (const QString &label : axis->tickVectorLabels())
+                QVERIFY2(label.size() <= 16, qPrintable(label));
+        }
+    }
+
+    // The slider covers the whole span in an int, both ways.
+    QSlider *slider = bar->slider();
+    QVERIFY(slider->maximum() > 0 && slider->maximum() <= ReplayBar::kMaxSliderSteps);
+    slider->setValue(slider->maximum());
+    QCOMPARE(replay->position(), replay->endTime());
+    slider->setValue(slider->maximum() / 2);
+    QVERIFY2(std::abs(replay->position() - middle) <= 1e-6 * replay->endTime(),
+             qPrintable(QString::number(replay->position())));
+    replay->setPosition(replay->startTime());
+    QCOMPARE(slider->value(), 0);
+    replay->setPosition(replay->endTime());
+    QCOMPARE(slider->value(), slider->maximum());
+
+    // The next launch gets a window that fits the screen.
+    QVERIFY(m_window->close());
+    m_window = std::make_unique<MainWindow>();
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY2(m_window->width() <= std::max(available.width(), minimumWidth),
+             qPrintable(QString::number(m_window->width())));
+}
+
+void TestMainWindow::oversizedSettingsAreFitted_data()
+{
+    QTest::addColumn<bool>("legacyKey"); // window/geometry as saved by earlier versions
+    QTest::newRow("window/rect") << false;
+    QTest::newRow("window/geometry") << true;
+}
+
+void TestMainWindow::oversizedSettingsAreFitted()
+{
+    QFETCH(bool, legacyKey);
+    m_window.reset();
+    const QRect available = QGuiApplication::primaryScreen()->availableGeometry();
+    const QRect huge(available.topLeft() + QPoint(-3000, 50), QSize(6000, 4000));
+    {
+        QSettings settings;
+        settings.clear();
+        if (legacyKey) {
+            QWidget big;
+            big.setGeometry(huge);
+            settings.setValue(QStringLiteral("window/geometry"), big.saveGeometry());
+        } else {
+            settings.setValue(QStringLiteral("window/rect"), huge);
+        }
+    }
+    m_window = std::make_unique<MainWindow>();
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    const QSize least = m_window->minimumSize();
+    QVERIFY2(m_window->width() <= std::max(available.width(), least.width()),
+             qPrintable(QString::number(m_window->width())));
+    QVERIFY2(m_window->height() <= std::max(available.height(), least.height()),
+             qPrintable(QString::number(m_window->height())));
+    // And what it saves fits too, whatever size it had.
+    m_window->resize(6000, 4000);
+    QVERIFY(m_window->close());
+    const QRect saved = QSettings().value(QStringLiteral("window/rect")).toRect();
+    QVERIFY2(available.contains(saved), qPrintable(QStringLiteral("%1 %2 %3×%4")
+                                                       .arg(saved.x())
+                                                       .arg(saved.y())
+                                                       .arg(saved.width())
+                                                       .arg(saved.height())));
 }
 
 QTEST_MAIN(TestMainWindow)

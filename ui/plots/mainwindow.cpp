@@ -25,6 +25,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QScreen>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -33,6 +34,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 // The window icon lives in this static library: its resources must be registered by hand.
@@ -676,8 +678,19 @@ void MainWindow::readSettings()
         static_cast<ProtocolChoice>(
             settings.value(QStringLiteral("connection/protocol"), int(ProtocolChoice::Auto))
                 .toInt()));
-    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
-        resize(1400, 900);
+    // The window's own rectangle, fitted into the screen both when saved and when restored;
+    // "window/geometry" is what versions before it saved (opaque, and never fitted).
+    const QRect saved = settings.value(QStringLiteral("window/rect")).toRect();
+    if (saved.isValid()) {
+        setGeometry(fittedInto(saved, availableGeometryFor(saved)));
+        if (settings.value(QStringLiteral("window/maximized"), false).toBool())
+            setWindowState(windowState() | Qt::WindowMaximized);
+    } else if (restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray())) {
+        if (!isMaximized() && !isFullScreen())
+            setGeometry(fittedInto(geometry(), availableGeometryFor(geometry())));
+    } else {
+        resize(1400, 900); // the first launch; what is saved on close is fitted
+    }
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     setAngleInDegrees(settings.value(QStringLiteral("view/degrees"), false).toBool());
     setWindowSeconds(
@@ -699,7 +712,11 @@ void MainWindow::writeSettings() const
     settings.setValue(QStringLiteral("connection/port"), m_connection->port());
     settings.setValue(QStringLiteral("connection/baud"), m_connection->baud());
     settings.setValue(QStringLiteral("connection/protocol"), int(m_connection->protocol()));
-    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    const QRect normal = isMaximized() || isFullScreen() ? normalGeometry() : geometry();
+    settings.setValue(QStringLiteral("window/rect"),
+                      fittedInto(normal, availableGeometryFor(normal)));
+    settings.setValue(QStringLiteral("window/maximized"), isMaximized());
+    settings.remove(QStringLiteral("window/geometry"));
     settings.setValue(QStringLiteral("window/state"), saveState());
     settings.setValue(QStringLiteral("view/degrees"), m_plots->angleInDegrees());
     settings.setValue(QStringLiteral("view/window"), m_plots->windowLength());
@@ -707,6 +724,28 @@ void MainWindow::writeSettings() const
     if (!m_recording->directory().isEmpty())
         settings.setValue(QStringLiteral("recording/dir"), m_recording->directory());
     settings.setValue(QStringLiteral("profiles/last"), m_profiles->filePath());
+}
+
+QRect MainWindow::fittedInto(const QRect &rect, const QRect &available)
+{
+    if (!available.isValid())
+        return rect;
+    QRect fitted(rect.topLeft(), rect.size().boundedTo(available.size()));
+    fitted.moveLeft(std::clamp(fitted.left(), available.left(),
+                               available.left() + available.width() - fitted.width()));
+    fitted.moveTop(std::clamp(fitted.top(), available.top(),
+                              available.top() + available.height() - fitted.height()));
+    return fitted;
+}
+
+QRect MainWindow::availableGeometryFor(const QRect &rect) const
+{
+    const QScreen *on = rect.isValid() ? QGuiApplication::screenAt(rect.center()) : nullptr;
+    if (!on)
+        on = screen();
+    if (!on)
+        on = QGuiApplication::primaryScreen();
+    return on ? on->availableGeometry() : QRect();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

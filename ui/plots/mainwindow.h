@@ -87,6 +87,10 @@ public:
     QAction *resetReferenceAction() const { return m_resetRefAction; }
     QString lastCommandMessage() const { return m_lastCommandMessage; }
 
+    //! `rect` made no larger than `available` and moved inside it: what the window's geometry
+    //! is saved as and restored to, so that no screen ever gets a window larger than itself.
+    static QRect fittedInto(const QRect &rect, const QRect &available);
+
 protected:
     void closeEvent(QCloseEvent *event) override;
 
@@ -99,6 +103,8 @@ private:
     void connectEditor();
     void readSettings();
     void writeSettings() const;
+    //! The available geometry of the screen showing `rect` (else this window's, else primary).
+    QRect availableGeometryFor(const QRect &rect) const;
 
     void onStateChanged(SessionState state, const QString &detail);
     void onDeviceInfo(const DeviceInfo &info);

@@ -12,6 +12,7 @@
 #include <QStyle>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
 
 namespace hatpic {
@@ -49,10 +50,8 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     m_slider->setObjectName(QStringLiteral("replaySlider"));
     m_slider->setToolTip(tr("Drag to scrub through the recording"));
     m_slider->setMinimumWidth(120);
-    connect(m_slider, &QSlider::valueChanged, this, [this](int value) {
-        m_controller->setPosition(m_controller->startTime() +
-                                  double(value) / kSliderStepsPerSecond);
-    });
+    connect(m_slider, &QSlider::valueChanged, this,
+            [this](int value) { m_controller->setPosition(timeOfSliderValue(value)); });
 
     m_time = new QLabel(this);
     m_time->setObjectName(QStringLiteral("replayTime"));
@@ -95,11 +94,19 @@ void ReplayBar::onActiveChanged(bool active)
     m_title->setToolTip(m_controller->path() % u'\n' % title);
     elideTitle();
     const QSignalBlocker blocker(m_slider);
+    // Any finite span: up to kMaxSliderSteps milliseconds, one step per millisecond; beyond,
+    // kMaxSliderSteps equal steps (the span itself may even exceed the largest double).
     const double length = m_controller->endTime() - m_controller->startTime();
-    m_slider->setRange(0, static_cast<int>(std::ceil(length * kSliderStepsPerSecond)));
-    m_slider->setPageStep(kSliderStepsPerSecond);
-    // Wide enough for the longest position text of this recording, so it does not jitter.
-    const QString longest = tr("%1 / %1 s").arg(length, 0, 'f', 2);
+    m_millisecondSteps = length * kSliderStepsPerSecond <= kMaxSliderSteps;
+    const int steps = m_millisecondSteps
+                          ? static_cast<int>(std::ceil(length * kSliderStepsPerSecond))
+                          : kMaxSliderSteps;
+    m_slider->setRange(0, steps);
+    m_slider->setPageStep(m_millisecondSteps ? kSliderStepsPerSecond
+                                             : std::max(1, kMaxSliderSteps / 100));
+    // Wide enough for the longest position text of this recording, so it does not jitter;
+    // compactSeconds() keeps that bounded for any span.
+    const QString longest = tr("%1 / %1 s").arg(compactSeconds(length));
     m_time->setMinimumWidth(m_time->fontMetrics().horizontalAdvance(longest) + 4);
     onPositionChanged(m_controller->position());
 }
@@ -121,8 +128,7 @@ void ReplayBar::onPositionChanged(double t)
 {
     {
         const QSignalBlocker blocker(m_slider);
-        m_slider->setValue(
-            static_cast<int>(std::lround((t - m_controller->startTime()) * kSliderStepsPerSecond)));
+        m_slider->setValue(sliderValueOf(t));
     }
     m_time->setText(positionText());
 }
@@ -136,8 +142,48 @@ void ReplayBar::onPlayingChanged(bool playing)
 QString ReplayBar::positionText() const
 {
     return tr("%1 / %2 s")
-        .arg(m_controller->position() - m_controller->startTime(), 0, 'f', 2)
-        .arg(m_controller->endTime() - m_controller->startTime(), 0, 'f', 2);
+        .arg(compactSeconds(m_controller->position() - m_controller->startTime()),
+             compactSeconds(m_controller->endTime() - m_controller->startTime()));
+}
+
+QString ReplayBar::compactSeconds(double seconds, int decimals)
+{
+    if (std::isnan(seconds))
+        return QStringLiteral("—");
+    if (std::isinf(seconds)) // a span beyond the largest double
+        return seconds > 0 ? QStringLiteral("> 1.8e+308") : QStringLiteral("< −1.8e+308");
+    if (std::abs(seconds) < 1e6)
+        return QString::number(seconds, 'f', decimals);
+    return QString::number(seconds, 'e', 3);
+}
+
+double ReplayBar::timeOfSliderValue(int value) const
+{
+    const double start = m_controller->startTime();
+    const double end = m_controller->endTime();
+    if (m_millisecondSteps)
+        return std::min(start + double(value) / kSliderStepsPerSecond, end);
+    // A weighted mean never overflows, even when end − start does.
+    const double f = std::clamp(double(value) / kMaxSliderSteps, 0.0, 1.0);
+    return start * (1 - f) + end * f;
+}
+
+int ReplayBar::sliderValueOf(double t) const
+{
+    const double start = m_controller->startTime();
+    const double end = m_controller->endTime();
+    double steps = 0;
+    if (m_millisecondSteps) {
+        steps = (t - start) * kSliderStepsPerSecond;
+    } else {
+        // Halves, so that neither difference overflows.
+        const double half = end / 2 - start / 2;
+        steps = half > 0 ? (t / 2 - start / 2) / half * kMaxSliderSteps : 0;
+    }
+    if (!std::isfinite(steps))
+        return 0;
+    return static_cast<int>(
+        std::lround(std::clamp(steps, 0.0, double(std::max(m_slider->maximum(), 0)))));
 }
 
 } // namespace hatpic

@@ -18,7 +18,15 @@ class ReplayBar : public QFrame
 {
     Q_OBJECT
 public:
+    //! One slider step per millisecond while the recording is short enough…
     static constexpr int kSliderStepsPerSecond = 1000;
+    //! …and never more steps than this: a longer recording is cut into this many equal steps,
+    //! so that any finite span fits the slider's int.
+    static constexpr int kMaxSliderSteps = 10'000'000;
+
+    //! Seconds as the bar writes them: fixed with `decimals` up to a million, then in
+    //! scientific notation, so the text stays short for any finite value.
+    static QString compactSeconds(double seconds, int decimals = 2);
 
     explicit ReplayBar(ReplayController *controller, QWidget *parent = nullptr);
 
@@ -27,6 +35,9 @@ public:
     QPushButton *liveButton() const { return m_live; }
     QToolButton *playButton() const { return m_play; }
     QString positionText() const;
+    //! The playhead time of slider value `value`, and the value nearest time `t` [s].
+    double timeOfSliderValue(int value) const;
+    int sliderValueOf(double t) const;
 
 Q_SIGNALS:
     void backToLiveRequested();
@@ -47,6 +58,7 @@ private:
     QComboBox *m_speed = nullptr;
     QSlider *m_slider = nullptr;
     QLabel *m_time = nullptr;
+    bool m_millisecondSteps = true; //!< the slider counts milliseconds (else equal fractions)
     QPushButton *m_live = nullptr;
 };
 
