@@ -2,6 +2,7 @@
 #include "device/deviceclient.h"
 #include "device/recorder.h"
 
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -179,14 +180,21 @@ void TestSessionPty::throughput()
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), SessionState::Connected, kConnectTimeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(client.stats().frames > quint64(rate), kConnectTimeoutMs);
     const quint64 frames0 = client.stats().frames;
-    QTRY_VERIFY_WITH_TIMEOUT(client.stats().frames > frames0 + quint64(rate), kConnectTimeoutMs);
+    QElapsedTimer window;
+    window.start();
+    QTRY_VERIFY_WITH_TIMEOUT(client.stats().frames > frames0 + quint64(2 * rate),
+                             2 * kConnectTimeoutMs);
     const LinkStats s = client.stats();
+    const double averageRate = double(s.frames - frames0) / (double(window.elapsed()) / 1000.0);
     qInfo("over the pty at %d Hz: %.0f frames/s, %.0f B/s, seq drops %llu, decoder drops %llu, "
           "RTT last %.2f ms / median %.2f ms / max %.2f ms",
           rate, s.framesPerSecond, s.bytesPerSecond, s.seqDrops, s.totalDecoderDrops(), s.rttLastMs,
           s.rttMedianMs, s.rttMaxMs);
-    QVERIFY2(s.framesPerSecond > 0.95 * rate && s.framesPerSecond < 1.05 * rate,
-             qPrintable(QString::number(s.framesPerSecond)));
+    // The exact rate is tested on simulated time (tst_simulateddevice); here the point is that
+    // the pty carries the stream without a loss. The rate is judged over two seconds of host
+    // time, loosely: a loaded CI machine delays the simulator, which then catches up in bursts.
+    QVERIFY2(averageRate > 0.8 * rate && averageRate < 1.2 * rate,
+             qPrintable(QString::number(averageRate)));
     QCOMPARE(s.totalDecoderDrops(), quint64(0));
     QCOMPARE(s.seqDrops, quint64(0));
     QVERIFY(s.rttMedianMs >= 0 && s.rttMedianMs < 50);
