@@ -4,6 +4,7 @@
 // Prints the pty's slave path as the first stdout line, then runs until SIGINT/SIGTERM: the
 // control thread stops, the servo's torque goes off, the link is removed, exit 0. Bad options:
 // one sentence on stderr, exit 4. The servo does not answer or no pty: exit 1.
+#include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
 #include "device/firmwarehost.h"
 
@@ -178,24 +179,10 @@ int main(int argc, char *argv[])
     }
 
     FirmwareHost host(options->config);
-    const QString error = host.start();
-    if (!error.isEmpty()) {
-        printError(error);
+    if (!serveOnPseudoTerminal(host, options->link, printError))
         return kExitFailure;
-    }
     for (const QString &warning : host.warnings())
         printError(warning);
-    if (!options->link.isEmpty()) {
-        const QString linkError = host.createLink(options->link);
-        if (!linkError.isEmpty()) {
-            printError(linkError);
-            host.stop();
-            return kExitFailure;
-        }
-    }
-
-    std::fprintf(stdout, "%s\n", qPrintable(host.slavePath()));
-    std::fflush(stdout);
     const FirmwareHost::Config &c = options->config;
     std::fprintf(stderr,
                  "hatpic-fw-host: servo id %d on %s at %u baud, center tick %d, timeout %u µs; "

@@ -4,6 +4,7 @@
 // Prints the slave path as the first stdout line, then runs until SIGINT/SIGTERM (exit 0).
 // Changes of the torque enable register are reported on stderr ("torque on" / "torque off").
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
+#include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
 #include "device/servobushost.h"
 
@@ -137,24 +138,11 @@ int main(int argc, char *argv[])
     }
 
     ServoBusHost host(options->config);
-    const QString error = host.start();
-    if (!error.isEmpty()) {
-        printError(error);
+    if (!serveOnPseudoTerminal(host, options->link, printError))
         return kExitFailure;
-    }
-    if (!options->link.isEmpty()) {
-        const QString linkError = host.createLink(options->link);
-        if (!linkError.isEmpty()) {
-            printError(linkError);
-            return kExitFailure;
-        }
-    }
     QObject::connect(&host, &ServoBusHost::torqueEnableChanged, &app, [](bool enabled) {
         std::fprintf(stderr, "hatpic-servo-sim: torque %s\n", enabled ? "on" : "off");
     });
-
-    std::fprintf(stdout, "%s\n", qPrintable(host.slavePath()));
-    std::fflush(stdout);
     std::fprintf(stderr, "hatpic-servo-sim: STS3032 id %d, center tick %d, hand %s; torque %s\n",
                  int(options->config.id), int(options->config.centerTick),
                  qPrintable(options->config.hand.toSpec()), host.torqueEnabled() ? "on" : "off");

@@ -2,6 +2,7 @@
 //
 // Prints the slave path as the first stdout line, then runs until SIGINT/SIGTERM (exit 0).
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
+#include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
 #include "device/handinput.h"
 #include "device/simulateddevice.h"
@@ -188,21 +189,8 @@ int main(int argc, char *argv[])
     SimulatorHost host(options->config);
     if (!host.device().stateWarning().isEmpty())
         printError(host.device().stateWarning());
-    const QString error = host.start();
-    if (!error.isEmpty()) {
-        printError(error);
+    if (!serveOnPseudoTerminal(host, options->link, printError))
         return kExitFailure;
-    }
-    if (!options->link.isEmpty()) {
-        const QString linkError = host.createLink(options->link);
-        if (!linkError.isEmpty()) {
-            printError(linkError);
-            return kExitFailure;
-        }
-    }
-
-    std::fprintf(stdout, "%s\n", qPrintable(host.slavePath()));
-    std::fflush(stdout);
     std::fprintf(stderr, "hatpic-sim: %s protocol, %g Hz control, %d baud%s\n",
                  qPrintable(wireProtocolName(options->config.protocol)),
                  options->config.controlRateHz, host.device().baud(),

@@ -39,13 +39,6 @@ constexpr char kFirmware[] = "hatpic-sim 0.1";
 
 using Traffic = fw::HostPort::Traffic;
 
-DeviceParams roundedToF32(DeviceParams p)
-{
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        p.setField(i, double(float(p.field(i))));
-    return p;
-}
-
 QString violationsText(const DeviceParams &p)
 {
     QStringList parts;
@@ -237,7 +230,7 @@ SimulatedDevice::Private::Private(const Config &c)
     control.tauLimit = tauLimit;
     control.watchdogUs = kWatchdogUs;
 
-    const DeviceParams configured = roundedToF32(c.params);
+    const DeviceParams configured = roundedToFloat(c.params);
     if (firstViolatingField(configured) >= 0)
         stateWarning = QStringLiteral("The power-up parameters are invalid (%1); using the "
                                       "defaults.")
@@ -261,11 +254,12 @@ SimulatedDevice::Private::Private(const Config &c)
             fw::StoredSettings stored;
             store->load(stored);
             stateWarning = QStringLiteral("State file %1 ignored: %2")
-                               .arg(store->path(), violationsText(roundedToF32(stored.params)));
+                               .arg(store->path(), violationsText(roundedToFloat(stored.params)));
         }
     } else {
         control.watchdogUs = 0; // the published firmware has no watchdog
-        powerUp = firstViolatingField(configured) >= 0 ? roundedToF32(DeviceParams{}) : configured;
+        powerUp =
+            firstViolatingField(configured) >= 0 ? roundedToFloat(DeviceParams{}) : configured;
         legacyController.emplace(control, *actuator);
     }
 

@@ -7,14 +7,6 @@ namespace hatpic::fw {
 
 namespace {
 
-//! The block as the device keeps it: 7 × f32.
-DeviceParams roundedToF32(DeviceParams p)
-{
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        p.setField(i, double(float(p.field(i))));
-    return p;
-}
-
 bool valid(const DeviceParams &p)
 {
     return firstViolatingField(p) < 0;
@@ -35,17 +27,17 @@ template<typename T> const DeviceParams &DeviceCore<T>::loadParams()
 {
     m_loaded = true;
     m_storedRejected = false;
-    DeviceParams params = roundedToF32(m_config.powerUp);
+    DeviceParams params = roundedToFloat(m_config.powerUp);
     m_powerUp = PowerUp::Configured;
     if (!valid(params)) {
-        params = roundedToF32(DeviceParams{});
+        params = roundedToFloat(DeviceParams{});
         m_powerUp = PowerUp::Defaults;
     }
     // The defaults' ±π are not floats: kept as the nearest floats inside the range.
     EffectParams effects = roundedForWire(EffectParams{}, m_config.control.tauLimit);
     StoredSettings stored;
     if (m_store && m_store->load(stored)) {
-        const DeviceParams candidate = roundedToF32(stored.params);
+        const DeviceParams candidate = roundedToFloat(stored.params);
         const EffectParams candidateFx = roundedForWire(stored.effects, m_config.control.tauLimit);
         if (valid(candidate) && firstViolatingField(candidateFx, m_config.control.tauLimit) < 0) {
             params = candidate;
@@ -152,7 +144,7 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
     if (std::holds_alternative<v2::GetParams>(m))
         return reply(v2::Params{m_accepted});
     if (const auto *set = std::get_if<v2::SetParams>(&m)) {
-        const DeviceParams block = roundedToF32(set->params);
+        const DeviceParams block = roundedToFloat(set->params);
         const int field = firstViolatingField(block);
         if (field >= 0)
             return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));

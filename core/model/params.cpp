@@ -116,6 +116,14 @@ double roundedForWire(int index, double value)
     return f;
 }
 
+DeviceParams roundedToFloat(const DeviceParams &params)
+{
+    DeviceParams out;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        out.setField(i, static_cast<double>(static_cast<float>(params.field(i))));
+    return out;
+}
+
 DeviceParams roundedForWire(const DeviceParams &params)
 {
     DeviceParams out;

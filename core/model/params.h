@@ -73,6 +73,10 @@ std::vector<Violation> validate(const HostParams &params);
 //! Index of the first violating device field (the device's reject reply), or -1 when valid.
 int firstViolatingField(const DeviceParams &params);
 
+//! The set as a device keeps it: every field rounded to the nearest float32, nothing adjusted
+//! (unlike roundedForWire(), a value that rounds out of its range stays out and is refused).
+DeviceParams roundedToFloat(const DeviceParams &params);
+
 //! The set as it travels in a v2 ParamBlock: every field rounded to the nearest float32, except
 //! that a value which satisfied a single-field bound and left it by rounding (1e-6, π/2, ±π are
 //! not floats) is moved one float toward the inside. Values already outside are kept as they are,
