@@ -4,8 +4,8 @@
 // then a grab of the window at 1400×900. Run it under Xvfb (see docs/performance.md):
 //   xvfb-run -a -s "-screen 0 1400x900x24" build/bench/tuner_screenshot docs/screenshot.png
 #include "editor/parametereditor.h"
-#include "plots/mainwindow.h"
 #include "plots/plotpanel.h"
+#include "window/mainwindow.h"
 
 #include <QAction>
 #include <QApplication>

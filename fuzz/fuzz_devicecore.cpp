@@ -1,6 +1,6 @@
 // fw::DeviceCore<double> fed arbitrary host bytes through a fixed-buffer host port (room for a
 // few frames towards the host), with control cycles interleaved, on a canned STS3032 bus
-// (tests/firmware/devicecoretest.h).
+// (tests/core/firmware/devicecoretest.h).
 //
 // Input: byte 0 seeds the schedule (chunk sizes, when the link and control contexts run, clock
 // steps), byte 1 sets the knob's position and whether the parameter store fails, the rest is

@@ -6,8 +6,8 @@
 // - a result holds either a recording or an error, never both, never neither;
 // - every sample's t_s is finite; warnings are bounded (20 and a closing note);
 // - with metadata, events are sorted by time (the CSV alone keeps row order).
-#include "device/recorder.h"
 #include "fuzzcheck.h"
+#include "telemetry/recordingreader.h"
 
 #include <cmath>
 

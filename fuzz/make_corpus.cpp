@@ -2,10 +2,10 @@
 // seed is a valid input the targets then mutate: `fuzz_make_corpus DIR` fills DIR/<target>/.
 // The profile seeds are the presets of resources/presets, copied as they are. Run by hand when
 // a format changes.
-#include "device/recorder.h"
 #include "firmware/sts3032.h"
 #include "protocol/framecodec.h"
 #include "protocol/legacy.h"
+#include "telemetry/recordingwriter.h"
 
 #include <QDir>
 #include <QFile>
@@ -189,7 +189,7 @@ int main(int argc, char **argv)
     QTemporaryDir dir;
     const QString csvPath = dir.filePath(u"rec.csv"_qs);
     {
-        Recorder recorder;
+        RecordingWriter recorder;
         RecordingMetadata meta;
         meta.start = QDateTime::fromString(u"2024-05-01T10:00:00.000Z"_qs, Qt::ISODateWithMs);
         meta.source = u"fuzz_make_corpus"_qs;
@@ -213,7 +213,7 @@ int main(int argc, char **argv)
         recorder.close();
     }
     QFile csv(csvPath);
-    QFile json(Recorder::metadataPath(csvPath));
+    QFile json(recordingMetadataPath(csvPath));
     if (!csv.open(QIODevice::ReadOnly) || !json.open(QIODevice::ReadOnly))
         return 1;
     const QByteArray csvBytes = csv.readAll();

@@ -6,7 +6,7 @@
 // one sentence on stderr, exit 4. The servo does not answer or no pty: exit 1.
 #include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
-#include "device/firmwarehost.h"
+#include "fwhost/firmwarehost.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

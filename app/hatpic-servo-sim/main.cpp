@@ -6,7 +6,7 @@
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
 #include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
-#include "device/servobushost.h"
+#include "sim/servobushost.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -4,9 +4,9 @@
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
 #include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
-#include "device/handinput.h"
-#include "device/simulateddevice.h"
-#include "device/simulatorhost.h"
+#include "sim/handinput.h"
+#include "sim/simulateddevice.h"
+#include "sim/simulatorhost.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,8 +1,8 @@
 // hatpic-tuner [--port PATH|sim] [--baud N] [--protocol auto|v2|legacy] [--profile FILE]
 //              [--hand SPEC] [RECORDING.csv]
 #include "editor/profilecontroller.h"
-#include "plots/mainwindow.h"
 #include "plots/plotpanel.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -1,7 +1,7 @@
 // The options every device subcommand shares: --port, --baud, --protocol, --timeout.
 #pragma once
 
-#include "device/sessiontypes.h"
+#include "session/sessiontypes.h"
 
 #include <QString>
 

@@ -7,7 +7,7 @@
 
 #include "deviceoptions.h"
 
-#include "device/deviceclient.h"
+#include "session/deviceclient.h"
 
 #include <QObject>
 

@@ -1,8 +1,8 @@
 // How device parameters are shown: a text table and a profile document.
 #pragma once
 
-#include "device/sessiontypes.h"
 #include "model/params.h"
+#include "session/sessiontypes.h"
 
 #include <QByteArray>
 #include <QString>

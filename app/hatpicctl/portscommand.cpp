@@ -4,7 +4,7 @@
 #include "console.h"
 #include "exitcode.h"
 
-#include "device/sessiontypes.h"
+#include "session/sessiontypes.h"
 
 #include <QCommandLineParser>
 #include <QSerialPortInfo>

@@ -1,7 +1,7 @@
 // The CSV form of samples that `stream` (to stdout) and `simulate` print.
 #pragma once
 
-#include "device/sample.h"
+#include "telemetry/sample.h"
 
 #include <QByteArray>
 

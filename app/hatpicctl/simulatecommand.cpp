@@ -6,7 +6,7 @@
 #include "profileinput.h"
 #include "samplecsv.h"
 
-#include "device/offlinesimulation.h"
+#include "sim/offlinesimulation.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

@@ -6,7 +6,7 @@
 #include "exitcode.h"
 #include "samplecsv.h"
 
-#include "device/recorder.h"
+#include "telemetry/recording.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -151,7 +151,7 @@ protected:
         if (!m_csvPath.isEmpty()) {
             // --force: the user allowed replacing whatever .json is there (a profile, say),
             // which the recorder would otherwise refuse.
-            const QString json = Recorder::metadataPath(m_csvPath);
+            const QString json = recordingMetadataPath(m_csvPath);
             if (m_force && QFileInfo(json).isFile() && !QFile::remove(json)) {
                 printError(u"Cannot replace " + json + u'.');
                 return ExitBadUsage;
@@ -287,7 +287,7 @@ private:
     //! Why `csvPath` (and its .json) cannot be a new recording; empty when it can.
     static QString recordingTargetProblem(const QString &csvPath, bool force)
     {
-        const QStringList paths{csvPath, Recorder::metadataPath(csvPath)};
+        const QStringList paths{csvPath, recordingMetadataPath(csvPath)};
         for (const QString &path : paths) {
             const QFileInfo info(path);
             if (info.exists() && !info.isFile()) {

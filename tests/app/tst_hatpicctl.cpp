@@ -1,10 +1,10 @@
 // hatpicctl, run as a real process: argument handling, exit codes, the CSV forms against an
 // independent computation of model.md, and the device commands against the in-process
 // simulated joystick, a hatpic-sim child on a pseudo-terminal and a port that does not exist.
-#include "device/recorder.h"
 #include "model/admittance.h"
 #include "model/params.h"
 #include "profile/profile.h"
+#include "telemetry/recordingreader.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,8 +1,8 @@
 // hatpicctl as a real process against hostile conditions (issue 10, "Hostile input"): files it
 // did not create, paths that are not files, signals, a file-size limit, line noise before
 // HELLO, a silent legacy port.
-#include "../device/scripteddevice.h"
-#include "device/recorder.h"
+#include "../core/session/scripteddevice.h"
+#include "telemetry/recordingreader.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -238,7 +238,7 @@ void TestHatpicCtlHostile::hangupClosesTheRecording()
     const QByteArray err = ctl.readAllStandardError();
     QCOMPARE(ctl.exitStatus(), QProcess::NormalExit);
     QVERIFY2(ctl.exitCode() == 0, err.constData());
-    const QJsonObject meta = QJsonDocument::fromJson(readAll(Recorder::metadataPath(csv))).object();
+    const QJsonObject meta = QJsonDocument::fromJson(readAll(recordingMetadataPath(csv))).object();
     QCOMPARE(meta.value(u"closed").toBool(), true);
     bool whole = false;
     const qsizetype rows = rowsOf(csv, &whole);
@@ -258,7 +258,7 @@ void TestHatpicCtlHostile::fileSizeLimitKeepsWholeRows()
     bool whole = false;
     const qsizetype rows = rowsOf(csv, &whole);
     QVERIFY2(whole, "the recording ends in half a row");
-    const QJsonObject meta = QJsonDocument::fromJson(readAll(Recorder::metadataPath(csv))).object();
+    const QJsonObject meta = QJsonDocument::fromJson(readAll(recordingMetadataPath(csv))).object();
     QCOMPARE(meta.value(u"closed").toBool(), true);
     QVERIFY(meta.contains(u"error"));
     QCOMPARE(qsizetype(meta.value(u"samples").toDouble()), rows);

@@ -3,9 +3,9 @@
 // with a visible sync state, optional rate-limited live push, and the derived figures.
 #pragma once
 
-#include "device/sessiontypes.h"
 #include "editor/synctracker.h"
 #include "model/params.h"
+#include "session/sessiontypes.h"
 
 #include <QElapsedTimer>
 #include <QHash>

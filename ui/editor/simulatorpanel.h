@@ -2,7 +2,7 @@
 // chirp, virtual hand) and its parameters; every change emits the new HandInput.
 #pragma once
 
-#include "device/handinput.h"
+#include "sim/handinput.h"
 
 #include <QWidget>
 

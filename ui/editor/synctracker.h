@@ -2,8 +2,8 @@
 // read back. No widgets; the editor asks it for the state after every change.
 #pragma once
 
-#include "device/sessiontypes.h"
 #include "model/params.h"
+#include "session/sessiontypes.h"
 
 #include <QString>
 

@@ -1,7 +1,7 @@
 // The plotted quantities of a Sample, by name, so buffers and plots can address them as columns.
 #pragma once
 
-#include "device/sample.h"
+#include "telemetry/sample.h"
 
 #include <QString>
 

@@ -5,8 +5,8 @@
 // Not a widget: it owns nothing but QCustomPlot items, which the plot deletes with itself.
 #pragma once
 
-#include "device/recorder.h"
 #include "model/params.h"
+#include "telemetry/recording.h"
 
 #include <QColor>
 #include <QFont>

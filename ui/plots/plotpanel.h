@@ -8,12 +8,12 @@
 // are converted to degrees only for display.
 #pragma once
 
-#include "device/recorder.h"
 #include "model/params.h"
 #include "plots/channel.h"
 #include "plots/decimator.h"
 #include "plots/displayunits.h"
 #include "plots/samplebuffer.h"
+#include "telemetry/recording.h"
 
 #include <QElapsedTimer>
 #include <QWidget>

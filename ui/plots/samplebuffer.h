@@ -6,8 +6,8 @@
 // to kRestartGap after the newest one, and every later sample of that run keeps the same shift.
 #pragma once
 
-#include "device/sample.h"
 #include "plots/channel.h"
+#include "telemetry/sample.h"
 
 #include <array>
 #include <vector>

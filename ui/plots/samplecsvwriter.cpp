@@ -1,8 +1,8 @@
 #include "plots/samplecsvwriter.h"
 
-#include "device/recorder.h"
 #include "model/params.h"
 #include "plots/samplebuffer.h"
+#include "telemetry/recording.h"
 
 #include <QSaveFile>
 

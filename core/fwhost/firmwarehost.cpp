@@ -1,0 +1,245 @@
+#include "firmwarehost.h"
+
+#include "firmware/devicecore.h"
+#include "firmware/stsactuator.h"
+#include "fwhost/fdhostport.h"
+#include "fwhost/profileparamstore.h"
+#include "fwhost/serialservoport.h"
+
+#include <QSocketNotifier>
+#include <QTimer>
+
+#include <cerrno>
+#include <cmath>
+#include <ctime>
+#include <pthread.h>
+#include <sched.h>
+
+namespace hatpic {
+
+namespace {
+
+constexpr std::uint32_t kDeviceId = 0x46574831;              //!< "FWH1"
+constexpr std::string_view kFirmwareName = "hatpic-fw-host"; //!< ≤ 16 bytes (HELLO_REPLY)
+constexpr int kControlPriority = 50;                         //!< SCHED_FIFO priority, 1…99
+
+std::int64_t monotonicNs()
+{
+    timespec ts{};
+    ::clock_gettime(CLOCK_MONOTONIC, &ts);
+    return std::int64_t(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+timespec toTimespec(std::int64_t ns)
+{
+    return timespec{time_t(ns / 1000000000), long(ns % 1000000000)};
+}
+
+} // namespace
+
+//! fw::Clock on CLOCK_MONOTONIC: stateless, so both contexts may call it.
+class MonotonicClock : public fw::Clock
+{
+public:
+    std::uint32_t micros() override { return std::uint32_t(monotonicNs() / 1000); }
+};
+
+struct FirmwareHost::Shared
+{
+    std::mutex mutex;
+    PeriodHistogram windowPeriod, totalPeriod, windowBusy, totalBusy;
+    std::int64_t windowStartNs = 0;
+    std::int64_t totalStartNs = 0;
+    std::uint64_t windowLate = 0;
+    std::uint64_t totalLate = 0;
+    std::uint32_t windowErrorBase = 0; //!< bus.errors() when the window began
+    fw::StsBusStats bus;
+    bool faulted = false;
+};
+
+FirmwareHost::FirmwareHost(const Config &config, QObject *parent)
+    : QObject(parent), m_config(config), m_shared(std::make_unique<Shared>())
+{}
+
+FirmwareHost::~FirmwareHost()
+{
+    stop();
+}
+
+QString FirmwareHost::start()
+{
+    if (isRunning())
+        return {};
+    m_servoPort = std::make_unique<SerialServoPort>();
+    if (const QString error = m_servoPort->open(m_config.servoPath, m_config.servoBaud);
+        !error.isEmpty())
+        return error;
+    if (const QString error = m_pty.open(); !error.isEmpty())
+        return error;
+
+    m_bus = std::make_unique<fw::StsBus>(*m_servoPort);
+    fw::StsActuator<double>::Config actuator;
+    actuator.id = m_config.servoId;
+    actuator.centerTick = m_config.centerTick;
+    actuator.tauLimit = m_config.tauLimit;
+    actuator.timeoutUs = m_config.servoTimeoutUs;
+    m_actuator = std::make_unique<fw::StsActuator<double>>(*m_bus, actuator);
+    m_clock = std::make_unique<MonotonicClock>();
+    if (!m_config.stateFile.isEmpty())
+        m_store = std::make_unique<ProfileParamStore>(m_config.stateFile, m_config.tauLimit);
+    m_hostPort = std::make_unique<FdHostPort>(m_pty.master());
+
+    fw::DeviceCore<double>::Config core;
+    core.control.rateHz = m_config.rateHz;
+    core.control.tauLimit = m_config.tauLimit;
+    core.deviceId = kDeviceId;
+    core.firmware = kFirmwareName;
+    core.linkLimitHz = 0; // a pty has no baud rate
+    m_core = std::make_unique<fw::DeviceCore<double>>(core, *m_hostPort, *m_actuator, *m_clock,
+                                                      m_store.get());
+    if (!m_core->start(m_clock->micros())) {
+        m_pty.close();
+        return QStringLiteral("The servo (id %1) on %2 does not answer at %3 baud.")
+            .arg(m_config.servoId)
+            .arg(m_config.servoPath)
+            .arg(m_config.servoBaud);
+    }
+    m_warnings.clear();
+    if (m_store && !m_store->warning().isEmpty())
+        m_warnings << m_store->warning() + QStringLiteral("; using the defaults.");
+    if (m_core->storedBlockRejected())
+        m_warnings << QStringLiteral("State file %1 ignored: its parameters are invalid; "
+                                     "using the defaults.")
+                          .arg(m_config.stateFile);
+
+    const std::int64_t now = monotonicNs();
+    m_shared->windowStartNs = now;
+    m_shared->totalStartNs = now;
+    m_stopping.store(false);
+    m_thread = std::thread([this] { controlLoop(); });
+
+    m_notifier = new QSocketNotifier(qintptr(m_pty.master()), QSocketNotifier::Read, this);
+    connect(m_notifier, &QSocketNotifier::activated, this, [this] { serviceLink(); });
+    m_timer = new QTimer(this);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    m_timer->setInterval(kLinkTickMs);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        serviceLink();
+        m_notifier->setEnabled(true);
+    });
+    m_timer->start();
+    return {};
+}
+
+void FirmwareHost::stop()
+{
+    if (!isRunning())
+        return;
+    m_stopping.store(true);
+    m_thread.join();
+    // The control context is gone: the bus is ours now. Torque off, whatever state it is in.
+    m_actuator->disable();
+    delete m_notifier;
+    m_notifier = nullptr;
+    delete m_timer;
+    m_timer = nullptr;
+    m_pty.close(); // and the link, if still ours
+}
+
+QString FirmwareHost::createLink(const QString &path)
+{
+    return m_pty.createLink(path);
+}
+
+void FirmwareHost::serviceLink()
+{
+    m_core->serviceHost();
+    m_hostPort->flush();
+    // EOF/EIO keeps the master readable: pause until the next tick instead of spinning.
+    if (m_hostPort->takeHangUp())
+        m_notifier->setEnabled(false);
+}
+
+void FirmwareHost::controlLoop()
+{
+    sched_param param{};
+    param.sched_priority = kControlPriority;
+    m_realtime.store(::pthread_setschedparam(::pthread_self(), SCHED_FIFO, &param) == 0);
+
+    const auto periodNs = std::int64_t(std::llround(1e9 / m_config.rateHz));
+    std::int64_t next = monotonicNs();
+    std::int64_t previousStart = -1;
+    while (!m_stopping.load(std::memory_order_relaxed)) {
+        next += periodNs;
+        const timespec wake = toTimespec(next);
+        while (::clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &wake, nullptr) == EINTR) {
+        }
+        const std::int64_t start = monotonicNs();
+        m_core->controlCycle(std::uint32_t(start / 1000));
+        const std::int64_t end = monotonicNs();
+        // More than a whole period behind (a bus timeout, a preempted thread): start afresh
+        // from now rather than running the missed cycles back to back.
+        const bool late = end - next > periodNs;
+        if (late)
+            next = end;
+        std::lock_guard lock(m_shared->mutex);
+        Shared &s = *m_shared;
+        if (previousStart >= 0) {
+            s.windowPeriod.add((start - previousStart) / 1000);
+            s.totalPeriod.add((start - previousStart) / 1000);
+        }
+        s.windowBusy.add((end - start) / 1000);
+        s.totalBusy.add((end - start) / 1000);
+        s.windowLate += late;
+        s.totalLate += late;
+        s.bus = m_bus->stats();
+        s.faulted = m_core->controller().faulted();
+        previousStart = start;
+    }
+}
+
+FirmwareHost::Report FirmwareHost::takeReport()
+{
+    std::lock_guard lock(m_shared->mutex);
+    Shared &s = *m_shared;
+    const std::int64_t now = monotonicNs();
+    Report r;
+    r.seconds = double(now - s.windowStartNs) * 1e-9;
+    r.cycles = s.windowBusy.count();
+    r.periodP50Us = s.windowPeriod.percentileUs(0.5);
+    r.periodP99Us = s.windowPeriod.percentileUs(0.99);
+    r.periodMaxUs = s.windowPeriod.maxUs();
+    r.busyP99Us = s.windowBusy.percentileUs(0.99);
+    r.busyMaxUs = s.windowBusy.maxUs();
+    r.late = s.windowLate;
+    r.busErrors = s.bus.errors() - s.windowErrorBase;
+    r.bus = s.bus;
+    r.faulted = s.faulted;
+    s.windowPeriod.clear();
+    s.windowBusy.clear();
+    s.windowLate = 0;
+    s.windowErrorBase = s.bus.errors();
+    s.windowStartNs = now;
+    return r;
+}
+
+FirmwareHost::Report FirmwareHost::totalReport()
+{
+    std::lock_guard lock(m_shared->mutex);
+    const Shared &s = *m_shared;
+    Report r;
+    r.seconds = double(monotonicNs() - s.totalStartNs) * 1e-9;
+    r.cycles = s.totalBusy.count();
+    r.periodP50Us = s.totalPeriod.percentileUs(0.5);
+    r.periodP99Us = s.totalPeriod.percentileUs(0.99);
+    r.periodMaxUs = s.totalPeriod.maxUs();
+    r.busyP99Us = s.totalBusy.percentileUs(0.99);
+    r.busyMaxUs = s.totalBusy.maxUs();
+    r.late = s.totalLate;
+    r.busErrors = s.bus.errors();
+    r.bus = s.bus;
+    r.faulted = s.faulted;
+    return r;
+}
+
+} // namespace hatpic

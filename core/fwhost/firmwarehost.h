@@ -1,0 +1,124 @@
+// hatpic-fw-host's engine: the firmware's device core (fw::DeviceCore<double>) on Linux, with
+// the STS3032 on a serial port and protocol v2 served on a pseudo-terminal.
+//
+// Two contexts, as on the ESP32: the control cycle runs on a thread of its own, paced by
+// clock_nanosleep(TIMER_ABSTIME) on CLOCK_MONOTONIC (SCHED_FIFO when the system grants it);
+// the link runs on the thread that created this object, from its event loop (a
+// QSocketNotifier on the pty and a 1 ms timer call serviceHost()). Only DeviceCore's lock-free
+// queues and this class's mutex-guarded statistics cross between them.
+#pragma once
+
+#include "firmware/stsbus.h"
+#include "fwhost/periodhistogram.h"
+#include "link/pseudoterminal.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+class QSocketNotifier;
+class QTimer;
+
+namespace hatpic {
+
+class FdHostPort;
+class MonotonicClock;
+class ProfileParamStore;
+class SerialServoPort;
+
+namespace fw {
+template<typename T> class DeviceCore;
+template<typename T> class StsActuator;
+} // namespace fw
+
+class FirmwareHost : public QObject
+{
+    Q_OBJECT
+public:
+    //! USB–TTL adapters deliver replies in USB frames (1 ms on full-speed USB, plus the
+    //! driver's latency timer): 5 ms covers them with margin, where the ESP32 uses 1 ms.
+    static constexpr std::uint32_t kDefaultServoTimeoutUs = 5000;
+    static constexpr int kLinkTickMs = 1; //!< link service period when no bytes arrive [ms]
+
+    struct Config
+    {
+        QString servoPath;                                     //!< serial device of the bus
+        std::uint32_t servoBaud = 1000000;                     //!< [bit/s]
+        std::uint8_t servoId = 1;                              //!< 0…253
+        std::int32_t centerTick = 1000;                        //!< tick of θ = 0 [tick]
+        double rateHz = 1000;                                  //!< control rate [Hz]
+        std::uint32_t servoTimeoutUs = kDefaultServoTimeoutUs; //!< bus reply timeout [µs]
+        double tauLimit = 0.44;                                //!< torque at load ±1000 [N·m]
+        QString stateFile;                                     //!< SAVE_PARAMS target; empty = RAM
+    };
+
+    //! Timing and bus counters over a window of cycles.
+    struct Report
+    {
+        double seconds = 0;           //!< wall time the window covers [s]
+        std::uint64_t cycles = 0;     //!< control cycles run
+        std::int64_t periodP50Us = 0; //!< cycle start to cycle start [µs]
+        std::int64_t periodP99Us = 0;
+        std::int64_t periodMaxUs = 0;
+        std::int64_t busyP99Us = 0; //!< time inside controlCycle (bus transactions) [µs]
+        std::int64_t busyMaxUs = 0;
+        std::uint64_t late = 0;      //!< cycles more than a period late (schedule skipped)
+        std::uint32_t busErrors = 0; //!< failed transactions in the window
+        fw::StsBusStats bus;         //!< counters since start
+        bool faulted = false;        //!< 100 bus errors in a row: torque is off
+        double rateHz() const { return seconds > 0 ? double(cycles) / seconds : 0.0; }
+    };
+
+    explicit FirmwareHost(const Config &config, QObject *parent = nullptr);
+    ~FirmwareHost() override; //!< stop()
+
+    //! Opens the servo port and the pty, brings the servo up (ping, position mode, torque on)
+    //! and starts both contexts. Empty string on success, else one sentence.
+    QString start();
+    //! Stops the control thread, then switches the servo's torque off, closes the pty and
+    //! removes the link. Safe to call twice.
+    void stop();
+    bool isRunning() const { return m_thread.joinable(); }
+
+    QString slavePath() const { return m_pty.slavePath(); }
+    QString createLink(const QString &path); //!< PseudoTerminal::createLink
+    //! Things said once at start (an unreadable or invalid state file).
+    QStringList warnings() const { return m_warnings; }
+    bool realtime() const { return m_realtime.load(); } //!< SCHED_FIFO granted
+
+    //! The statistics since the previous takeReport() (or start), and a new window begun.
+    Report takeReport();
+    //! The statistics since start.
+    Report totalReport();
+
+private:
+    struct Shared; // statistics, guarded by its mutex
+    void controlLoop();
+    void serviceLink();
+
+    Config m_config;
+    PseudoTerminal m_pty;
+    std::unique_ptr<SerialServoPort> m_servoPort;
+    std::unique_ptr<fw::StsBus> m_bus;
+    std::unique_ptr<fw::StsActuator<double>> m_actuator;
+    std::unique_ptr<MonotonicClock> m_clock;
+    std::unique_ptr<ProfileParamStore> m_store;
+    std::unique_ptr<FdHostPort> m_hostPort;
+    std::unique_ptr<fw::DeviceCore<double>> m_core;
+    QSocketNotifier *m_notifier = nullptr;
+    QTimer *m_timer = nullptr;
+    QStringList m_warnings;
+
+    std::thread m_thread;
+    std::atomic<bool> m_stopping{false};
+    std::atomic<bool> m_realtime{false};
+    std::unique_ptr<Shared> m_shared;
+};
+
+} // namespace hatpic

@@ -1,0 +1,44 @@
+// Which protocol a device speaks and what it says about itself: the facts the session, the
+// simulator, the recordings and the windows share about the device at the other end.
+#pragma once
+
+#include "protocol/messages.h"
+
+#include <QString>
+#include <QtGlobal>
+
+namespace hatpic {
+
+enum class WireProtocol { V2, Legacy };
+QString wireProtocolName(WireProtocol protocol); //!< "v2" / "legacy"
+
+//! The link's baud rate when none is asked for: protocol.md § 1 (v2) and the published
+//! firmware's Serial.begin (legacy). The one definition every program and the simulator read.
+constexpr qint32 defaultBaud(WireProtocol protocol)
+{
+    return protocol == WireProtocol::Legacy ? 115200 : 921600;
+}
+
+struct DeviceInfo
+{
+    WireProtocol protocol = WireProtocol::V2;
+    QString port;
+    qint32 baud = 0;
+    quint8 protocolVersion = 0; //!< 2 for v2, 0 for legacy
+    quint16 maxStreamHz = 0;    //!< legacy: 5
+    quint32 deviceId = 0;       //!< legacy: 0 (unknown)
+    double tauLimit = 0.44;     //!< [N·m]
+    QString firmware;           //!< legacy: "published firmware (legacy)"
+    bool simulated = false;     //!< the in-process simulator
+    bool canSetParams() const { return protocol == WireProtocol::V2; }
+};
+
+//! Text a device sent, safe to print: control characters (ESC, CR, LF, …, DEL and C1) become
+//! "\x1b"-style escapes, so a device's name can never drive a terminal.
+QString printableDeviceText(const QString &text);
+
+//! Why a HELLO_REPLY is nonsense (model.md bounds: tau_limit finite, > 0 and ≤ 10 N·m;
+//! max_stream_hz > 0); empty when every field is usable.
+QString helloReplyProblem(const v2::HelloReply &reply);
+
+} // namespace hatpic

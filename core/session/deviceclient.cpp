@@ -1,0 +1,182 @@
+#include "deviceclient.h"
+
+#include "session/devicesession.h"
+
+#include <QThread>
+
+#include <limits>
+
+namespace hatpic {
+
+DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThread(this))
+{
+    registerSessionMetaTypes();
+    m_thread->setObjectName(QStringLiteral("hatpic-session"));
+    m_session = new DeviceSession; // no parent: it moves to the session thread
+    m_session->moveToThread(m_thread);
+    connect(m_thread, &QThread::finished, m_session, &QObject::deleteLater);
+
+    // Every connection below crosses threads, so it is queued: the slot runs on this
+    // object's thread with a copy of the values, and the cache is updated before re-emitting.
+    connect(m_session, &DeviceSession::stateChanged, this,
+            [this](SessionState state, const QString &detail) {
+                m_state = state;
+                Q_EMIT stateChanged(state, detail);
+            });
+    connect(m_session, &DeviceSession::deviceInfoChanged, this, [this](const DeviceInfo &info) {
+        m_info = info;
+        Q_EMIT deviceInfoChanged(info);
+    });
+    connect(m_session, &DeviceSession::deviceParamsChanged, this,
+            [this](const DeviceParams &params) {
+                m_params = params;
+                m_hasParams = true;
+                Q_EMIT deviceParamsChanged(params);
+            });
+    // The streams below are forwarded from the session thread (direct connections) and
+    // posted here only while few of their kind wait, so a frozen thread's queue stays bounded.
+    connect(
+        m_session, &DeviceSession::samplesReady, this,
+        [this](const SampleBatch &batch) {
+            if (!post(m_pendingBatches, kMaxPendingBatches,
+                      [this, batch] { Q_EMIT samplesReady(batch); }))
+                ++m_droppedBatches;
+        },
+        Qt::DirectConnection);
+    connect(m_session, &DeviceSession::commandFinished, this, &DeviceClient::commandFinished);
+    connect(
+        m_session, &DeviceSession::statsUpdated, this,
+        [this](const LinkStats &stats) {
+            post(m_pendingStats, kMaxPendingStats, [this, stats] {
+                m_stats = stats;
+                Q_EMIT statsUpdated(stats);
+            });
+        },
+        Qt::DirectConnection);
+    connect(
+        m_session, &DeviceSession::recordingChanged, this,
+        [this](const RecordingStatus &status) {
+            auto deliver = [this, status] {
+                m_recording = status;
+                Q_EMIT recordingChanged(status);
+            };
+            // Progress of a running recording may be skipped; a start, stop or error never.
+            const bool progress = status.active && status.error.isEmpty();
+            post(m_pendingRecording, progress ? kMaxPendingStats : std::numeric_limits<int>::max(),
+                 deliver);
+        },
+        Qt::DirectConnection);
+    connect(
+        m_session, &DeviceSession::deviceLog, this,
+        [this](const QString &line) {
+            post(m_pendingLogLines, kMaxPendingLogLines, [this, line] { Q_EMIT deviceLog(line); });
+        },
+        Qt::DirectConnection);
+    m_thread->start(QThread::HighestPriority);
+}
+
+DeviceClient::~DeviceClient()
+{
+    // Close the port and the recording on the session thread, then let the thread end;
+    // the session deletes itself there when the thread finishes.
+    QMetaObject::invokeMethod(
+        m_session, [s = m_session] { s->shutdown(); }, Qt::BlockingQueuedConnection);
+    m_thread->quit();
+    m_thread->wait();
+}
+
+template<typename Deliver>
+bool DeviceClient::post(std::atomic<int> &pending, int cap, Deliver deliver)
+{
+    if (pending.load() >= cap)
+        return false;
+    ++pending;
+    QMetaObject::invokeMethod(
+        this,
+        [&pending, deliver = std::move(deliver)] {
+            --pending;
+            deliver();
+        },
+        Qt::QueuedConnection);
+    return true;
+}
+
+void DeviceClient::connectDevice(const ConnectOptions &options)
+{
+    m_hasParams = false;
+    QMetaObject::invokeMethod(m_session, [s = m_session, options] { s->connectDevice(options); });
+}
+
+void DeviceClient::disconnectDevice()
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session] { s->disconnectDevice(); });
+}
+
+quint64 DeviceClient::pushParams(const DeviceParams &params)
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session,
+                              [s = m_session, id, params] { s->pushParams(id, params); });
+    return id;
+}
+
+quint64 DeviceClient::readParams()
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->readParams(id); });
+    return id;
+}
+
+quint64 DeviceClient::zero()
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->zero(id); });
+    return id;
+}
+
+quint64 DeviceClient::saveParams()
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->saveParams(id); });
+    return id;
+}
+
+quint64 DeviceClient::setStreamRate(quint16 hz)
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id, hz] { s->setStreamRate(id, hz); });
+    return id;
+}
+
+void DeviceClient::setFeedback(double tauExt)
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session, tauExt] { s->setFeedback(tauExt); });
+}
+
+void DeviceClient::setHostParams(const HostParams &host)
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session, host] { s->setHostParams(host); });
+}
+
+void DeviceClient::resetReference()
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session] { s->resetReference(); });
+}
+
+void DeviceClient::setSimulatedHand(const HandInput &hand)
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session, hand] { s->setSimulatedHand(hand); });
+}
+
+void DeviceClient::startRecording(const QString &csvPath, const QString &source)
+{
+    QMetaObject::invokeMethod(
+        m_session, [s = m_session, csvPath, source] { s->startRecording(csvPath, source); });
+}
+
+void DeviceClient::stopRecording()
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session] { s->stopRecording(); });
+}
+
+} // namespace hatpic

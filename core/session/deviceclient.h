@@ -1,0 +1,95 @@
+// The application's handle on a joystick: owns the session thread, forwards commands to it,
+// and re-emits its signals on the owner's thread. All methods return immediately.
+#pragma once
+
+#include "session/sessiontypes.h"
+#include "telemetry/sample.h"
+
+#include <QObject>
+
+#include <atomic>
+
+class QThread;
+
+namespace hatpic {
+
+class DeviceSession;
+
+class DeviceClient : public QObject
+{
+    Q_OBJECT
+public:
+    //! Deliveries that may wait on this object's thread at once; beyond that the session
+    //! drops the newest, so a frozen GUI thread never makes the event queue grow unbounded.
+    static constexpr int kMaxPendingBatches = 100;  //!< samplesReady (≥ 2 s of samples)
+    static constexpr int kMaxPendingStats = 4;      //!< statsUpdated, recording progress
+    static constexpr int kMaxPendingLogLines = 256; //!< deviceLog
+
+    explicit DeviceClient(QObject *parent = nullptr);
+    ~DeviceClient() override; //!< closes the session and joins its thread
+
+    void connectDevice(const ConnectOptions &options);
+    void disconnectDevice();
+
+    //! Commands; each returns a request id that commandFinished() reports back.
+    quint64 pushParams(const DeviceParams &params); //!< SET_PARAMS, then GET_PARAMS read-back
+    quint64 readParams();                           //!< GET_PARAMS
+    quint64 zero();                                 //!< ZERO, then GET_PARAMS
+    quint64 saveParams();                           //!< SAVE_PARAMS
+    quint64 setStreamRate(quint16 hz);              //!< SET_STREAM
+
+    void setFeedback(double tauExt);              //!< τ_ext streamed to the device [N·m]
+    void setHostParams(const HostParams &host);   //!< reference model settings
+    void resetReference();                        //!< p_ref := 0
+    void setSimulatedHand(const HandInput &hand); //!< only for the simulated device
+
+    //! Records to `csvPath` (+ NAME.json); `source` names the program in the metadata.
+    void startRecording(const QString &csvPath,
+                        const QString &source = QStringLiteral("hatpic-tuner"));
+    void stopRecording();
+
+    // Last values seen on this thread (updated before the matching signal is emitted).
+    SessionState state() const { return m_state; }
+    DeviceInfo deviceInfo() const { return m_info; }
+    DeviceParams deviceParams() const { return m_params; }
+    bool hasDeviceParams() const { return m_hasParams; }
+    LinkStats stats() const { return m_stats; }
+    RecordingStatus recordingStatus() const { return m_recording; }
+    //! Sample batches never delivered because kMaxPendingBatches were already waiting (the
+    //! recording still has them).
+    quint64 droppedSampleBatches() const { return m_droppedBatches.load(); }
+
+Q_SIGNALS:
+    void stateChanged(hatpic::SessionState state, const QString &detail);
+    void deviceInfoChanged(const hatpic::DeviceInfo &info);
+    void deviceParamsChanged(const hatpic::DeviceParams &params); //!< the device's read-back
+    void samplesReady(const hatpic::SampleBatch &batch);
+    void commandFinished(quint64 id, const hatpic::CommandResult &result);
+    void statsUpdated(const hatpic::LinkStats &stats);
+    void recordingChanged(const hatpic::RecordingStatus &status);
+    void deviceLog(const QString &line);
+
+private:
+    quint64 nextId() { return ++m_lastId; }
+    //! Session thread: posts `deliver` to this object's thread unless `cap` deliveries counted
+    //! by `pending` already wait there. False when dropped.
+    template<typename Deliver> bool post(std::atomic<int> &pending, int cap, Deliver deliver);
+
+    QThread *m_thread = nullptr;
+    DeviceSession *m_session = nullptr; //!< lives on m_thread
+    quint64 m_lastId = 0;
+    SessionState m_state = SessionState::Disconnected;
+    DeviceInfo m_info;
+    DeviceParams m_params;
+    bool m_hasParams = false;
+    LinkStats m_stats;
+    RecordingStatus m_recording;
+    // Shared with the session thread: only these atomics are touched from both threads.
+    std::atomic<int> m_pendingBatches{0};
+    std::atomic<int> m_pendingStats{0};
+    std::atomic<int> m_pendingRecording{0};
+    std::atomic<int> m_pendingLogLines{0};
+    std::atomic<quint64> m_droppedBatches{0};
+};
+
+} // namespace hatpic

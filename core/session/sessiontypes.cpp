@@ -1,0 +1,66 @@
+#include "sessiontypes.h"
+
+#include "telemetry/numbertext.h"
+#include "telemetry/sample.h"
+
+#include <QStringBuilder>
+#include <QStringList>
+
+#include <cmath>
+#include <numeric>
+
+namespace hatpic {
+
+QString sessionStateName(SessionState state)
+{
+    switch (state) {
+    case SessionState::Disconnected:
+        return QStringLiteral("disconnected");
+    case SessionState::Opening:
+        return QStringLiteral("opening");
+    case SessionState::Detecting:
+        return QStringLiteral("detecting");
+    case SessionState::Connected:
+        return QStringLiteral("connected");
+    case SessionState::Lost:
+        return QStringLiteral("lost");
+    }
+    return QStringLiteral("unknown");
+}
+
+quint64 LinkStats::totalDecoderDrops() const
+{
+    return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));
+}
+
+QString describeParamChange(const DeviceParams &from, const DeviceParams &to)
+{
+    QStringList parts;
+    const DeviceParams a = roundedForWire(from);
+    const DeviceParams b = roundedForWire(to);
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        if (a.field(i) != b.field(i)) {
+            const std::string_view name = deviceFieldName(i);
+            parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
+                         compactNumberText(a.field(i)) % u" → " % compactNumberText(b.field(i));
+        }
+    }
+    return parts.join(QStringLiteral("; "));
+}
+
+void registerSessionMetaTypes()
+{
+    qRegisterMetaType<hatpic::Sample>();
+    qRegisterMetaType<hatpic::SampleBatch>();
+    qRegisterMetaType<hatpic::HandInput>();
+    qRegisterMetaType<hatpic::ConnectOptions>();
+    qRegisterMetaType<hatpic::SessionState>();
+    qRegisterMetaType<hatpic::DeviceInfo>();
+    qRegisterMetaType<hatpic::CommandResult>();
+    qRegisterMetaType<hatpic::LinkStats>();
+    qRegisterMetaType<hatpic::RecordingStatus>();
+    qRegisterMetaType<hatpic::DeviceParams>();
+    qRegisterMetaType<hatpic::HostParams>();
+}
+
+} // namespace hatpic

@@ -1,0 +1,474 @@
+#include "simulateddevice.h"
+
+#include "firmware/devicecore.h"
+#include "firmware/stsactuator.h"
+#include "firmware/stsbus.h"
+#include "profile/profile.h"
+#include "sim/emulatedservoport.h"
+#include "sim/emulatedsts3032.h"
+#include "sim/emulateduart.h"
+#include "sim/servoplant.h"
+
+#include <QFileInfo>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <optional>
+
+namespace hatpic {
+
+namespace {
+
+constexpr double kDefaultControlRate = 1000;  //!< [Hz]
+constexpr std::uint32_t kWatchdogUs = 200000; //!< feedback watchdog [µs]
+constexpr qint64 kLegacyPeriodUs = 200000;    //!< legacy frame period [µs]
+constexpr int kLegacyMaxFrameBytes = 64;      //!< bytes kept while waiting for 'o'
+constexpr int kTicksPerRev = legacy::Conversion::kTicksPerRev;
+constexpr int kLegacyCenterTicks = 1000;
+constexpr char kFirmware[] = "hatpic-sim 0.1";
+
+using Traffic = fw::HostPort::Traffic;
+
+QString violationsText(const DeviceParams &p)
+{
+    QStringList parts;
+    for (const Violation &v : validate(p))
+        parts.append(QString::fromStdString(v.message()));
+    return parts.join(QStringLiteral("; "));
+}
+
+//! The simulated clock as the device reads it: whole µs, wrapping at 2³².
+class SimClock : public fw::Clock
+{
+public:
+    explicit SimClock(const double &seconds) : m_seconds(seconds) {}
+    std::uint32_t micros() override
+    {
+        return std::uint32_t(std::uint64_t(std::llround(m_seconds * 1e6)) & 0xFFFFFFFFu);
+    }
+
+private:
+    const double &m_seconds;
+};
+
+//! SAVE_PARAMS into a profile file (profile.md), as docs/simulator.md § 7 describes.
+class ProfileStore : public fw::ParamStore
+{
+public:
+    ProfileStore(QString path, double tauLimit) : m_path(std::move(path)), m_tauLimit(tauLimit) {}
+
+    bool load(fw::StoredSettings &out) override
+    {
+        if (!QFileInfo::exists(m_path))
+            return false; // never saved: not an error
+        const ProfileReadResult read = readProfile(m_path);
+        if (!read.ok()) {
+            warning = QStringLiteral("State file %1 ignored: %2")
+                          .arg(m_path, read.errors.join(QStringLiteral("; ")));
+            return false;
+        }
+        out.params = read.profile->device;
+        return true;
+    }
+    bool save(const fw::StoredSettings &settings) override
+    {
+        Profile profile;
+        profile.name = QStringLiteral("hatpic-sim state");
+        profile.notes = QStringLiteral("Parameters saved by the simulated device (SAVE_PARAMS).");
+        profile.device = settings.params;
+        profile.host.tau_limit = m_tauLimit;
+        return writeProfile(profile, m_path).isEmpty();
+    }
+    const QString &path() const { return m_path; }
+
+    QString warning; //!< why the file was not used at power-up
+
+private:
+    QString m_path;
+    double m_tauLimit;
+};
+
+//! Ideal mode's actuator: no servo, no quantisation, no noise. The knob *is* the admittance
+//! state the control cycle commands, and τ = −τ_op of the hand at that state.
+class IdealActuator : public fw::Actuator<double>
+{
+public:
+    explicit IdealActuator(std::function<double(double, double)> operatorTorque)
+        : m_operatorTorque(std::move(operatorTorque))
+    {}
+    void place(double theta) { m_state = {theta, 0.0}; }
+
+    bool start(double &theta) override
+    {
+        theta = m_state.theta;
+        return true;
+    }
+    bool measure(fw::Measurement<double> &m) override
+    {
+        m = {m_state.theta, m_state.omega, -m_operatorTorque(m_state.theta, m_state.omega)};
+        return true;
+    }
+    bool command(double theta, double omega) override
+    {
+        m_state = {theta, omega};
+        return true;
+    }
+    void disable() override {}
+
+private:
+    std::function<double(double, double)> m_operatorTorque;
+    AdmittanceState m_state;
+};
+
+} // namespace
+
+class SimulatedDevice::Private
+{
+public:
+    explicit Private(const Config &c);
+
+    void receive(QByteArrayView bytes);
+    void receiveLegacy(QByteArrayView bytes);
+    Cycle runCycle();
+    void runPlant(double t);
+
+    qint64 cycleMicros(quint64 n) const { return std::llround(double(n) * 1e6 / rate); }
+    int legacyTicks() const;
+    quint16 linkLimitedRate() const;
+    double handTorque(double theta, double omega) const
+    {
+        return hand.torque(cycleTime - handStart, theta, omega);
+    }
+
+    Config config;
+    double rate = kDefaultControlRate; //!< control rate [Hz]
+    double period = 1e-3;              //!< control period h [s]
+    int subSteps = 10;                 //!< plant sub-steps per control cycle
+    double tauLimit = 0.44;            //!< [N·m]
+
+    quint64 cycles = 0;   //!< control cycles run (cycle n happens at n·h)
+    double clock = 0;     //!< simulated time [s]
+    double cycleTime = 0; //!< time of the cycle running now [s]
+    HandInput hand;
+    double handStart = 0; //!< simulated time at which the hand input's t = 0 [s]
+    Cycle last;
+
+    // The hardware around the device core: knob and servo (or the ideal model), the bus,
+    // the USB link, the clock and the flash.
+    ServoPlant plant;
+    std::optional<EmulatedSts3032> servo;
+    std::optional<EmulatedServoPort> servoPort;
+    std::optional<fw::StsBus> bus;
+    std::optional<fw::StsActuator<double>> stsActuator;
+    std::optional<IdealActuator> idealActuator;
+    EmulatedUart uart;
+    SimClock simClock{clock};
+    std::optional<ProfileStore> store;
+
+    // v2: our firmware's device core. Legacy: the published firmware's protocol around the
+    // same control cycle.
+    std::optional<fw::DeviceCore<double>> core;
+    std::optional<fw::Controller<double>> legacyController;
+
+    bool legacyWaiting = false; //!< an 'i' is unmatched: the firmware's loop is stuck
+    QByteArray legacyFrame;
+    qint64 nextLegacyUs = kLegacyPeriodUs;
+    legacy::Conversion legacyConversion;
+    quint64 legacyDropped = 0;
+    QString stateWarning;
+};
+
+SimulatedDevice::Private::Private(const Config &c)
+    : config(c), plant(0.44), uart(c.baud > 0 ? c.baud : defaultBaud(c.protocol), c.throttle)
+{
+    if (std::isfinite(c.controlRateHz) && c.controlRateHz > 0)
+        rate = std::min(c.controlRateHz, fw::DeviceCore<double>::kMaxControlRate);
+    period = 1.0 / rate;
+    subSteps = std::max(1, int(std::ceil(ServoPlant::kMinSubStepRate * period - 1e-9)));
+    if (std::isfinite(c.tauLimit) && c.tauLimit > 0)
+        tauLimit = c.tauLimit;
+    legacyConversion.centerTicks = kLegacyCenterTicks;
+    legacyConversion.tauLimit = tauLimit;
+    hand = c.hand;
+
+    fw::Actuator<double> *actuator = nullptr;
+    if (c.ideal) {
+        idealActuator.emplace(
+            [this](double theta, double omega) { return handTorque(theta, omega); });
+        actuator = &*idealActuator;
+    } else {
+        EmulatedSts3032::Config sc;
+        sc.centerTick = kLegacyCenterTicks;
+        sc.tauLimit = tauLimit;
+        sc.noise = c.noise;
+        sc.seed = c.seed;
+        servo.emplace(plant, sc);
+        servoPort.emplace(*servo);
+        bus.emplace(*servoPort);
+        fw::StsActuator<double>::Config ac;
+        ac.centerTick = kLegacyCenterTicks;
+        ac.tauLimit = tauLimit;
+        stsActuator.emplace(*bus, ac);
+        actuator = &*stsActuator;
+    }
+
+    fw::Controller<double>::Config control;
+    control.rateHz = rate;
+    control.tauLimit = tauLimit;
+    control.watchdogUs = kWatchdogUs;
+
+    const DeviceParams configured = roundedToFloat(c.params);
+    if (firstViolatingField(configured) >= 0)
+        stateWarning = QStringLiteral("The power-up parameters are invalid (%1); using the "
+                                      "defaults.")
+                           .arg(violationsText(configured));
+
+    DeviceParams powerUp;
+    if (c.protocol == WireProtocol::V2) {
+        if (!c.stateFile.isEmpty())
+            store.emplace(c.stateFile, tauLimit);
+        fw::DeviceCore<double>::Config dc;
+        dc.control = control;
+        dc.deviceId = c.deviceId;
+        dc.firmware = kFirmware;
+        dc.linkLimitHz = c.throttle ? linkLimitedRate() : 0;
+        dc.powerUp = c.params;
+        core.emplace(dc, uart, *actuator, simClock, store ? &*store : nullptr);
+        powerUp = core->loadParams();
+        if (store && !store->warning.isEmpty())
+            stateWarning = store->warning;
+        if (core->storedBlockRejected()) {
+            fw::StoredSettings stored;
+            store->load(stored);
+            stateWarning = QStringLiteral("State file %1 ignored: %2")
+                               .arg(store->path(), violationsText(roundedToFloat(stored.params)));
+        }
+    } else {
+        control.watchdogUs = 0; // the published firmware has no watchdog
+        powerUp =
+            firstViolatingField(configured) >= 0 ? roundedToFloat(DeviceParams{}) : configured;
+        legacyController.emplace(control, *actuator);
+    }
+
+    // The knob rests at θ0 at power-up; the firmware then finds it there.
+    plant = ServoPlant(tauLimit, powerUp.theta0);
+    if (idealActuator)
+        idealActuator->place(powerUp.theta0);
+    if (core)
+        core->start(0);
+    else
+        legacyController->start(powerUp, 0);
+    last.theta = core ? core->controller().last().theta : legacyController->last().theta;
+
+    if (c.protocol == WireProtocol::Legacy) {
+        const QByteArray pos = QByteArray::number(legacyTicks());
+        uart.write(QByteArray("STS3032 Torque control\r\nCurrent pos motor : " + pos + "\r\n" +
+                              pos + "\r\n"),
+                   Traffic::Reply);
+    }
+}
+
+int SimulatedDevice::Private::legacyTicks() const
+{
+    const long long ticks =
+        std::llround(plant.theta() * kTicksPerRev / (2.0 * std::numbers::pi)) + kLegacyCenterTicks;
+    return int(((ticks % kTicksPerRev) + kTicksPerRev) % kTicksPerRev);
+}
+
+quint16 SimulatedDevice::Private::linkLimitedRate() const
+{
+    // The device core has the effects capability: its TELEMETRY carries τ_fx (35 bytes).
+    const double frames = double(uart.baud()) / 10.0 / double(v2::telemetryWireBytes(true));
+    return quint16(std::clamp(std::floor(frames), 0.0, 65535.0));
+}
+
+void SimulatedDevice::Private::receive(QByteArrayView bytes)
+{
+    if (config.protocol == WireProtocol::Legacy) {
+        receiveLegacy(bytes);
+        return;
+    }
+    uart.fromHost(bytes);
+    core->serviceHost();
+}
+
+void SimulatedDevice::Private::receiveLegacy(QByteArrayView bytes)
+{
+    // The published firmware ignores bytes until an 'i', then reads until an 'o' and parses
+    // what it collected. While it waits for the 'o' its loop does nothing else.
+    for (const char c : bytes) {
+        if (!legacyWaiting) {
+            if (c == 'i') {
+                legacyWaiting = true;
+                legacyFrame = QByteArray(1, c);
+            }
+            continue;
+        }
+        if (legacyFrame.size() < kLegacyMaxFrameBytes)
+            legacyFrame.append(c);
+        if (c != 'o')
+            continue;
+        legacyWaiting = false;
+        if (legacyFrame.endsWith('o')) {
+            legacy::Decoder parser;
+            QList<legacy::Frame> frames;
+            parser.feed(legacyFrame, frames);
+            if (frames.size() == 1) {
+                const double tauExt = legacyConversion.fieldToFeedback(frames.first().a);
+                if (std::isfinite(tauExt))
+                    legacyController->setFeedback(tauExt, 0);
+            }
+        }
+        legacyFrame.clear();
+    }
+}
+
+void SimulatedDevice::Private::runPlant(double t)
+{
+    if (config.ideal)
+        return;
+    const double dt = period / subSteps;
+    for (int i = 0; i < subSteps; ++i) {
+        const double tauOp = hand.torque(t + i * dt - handStart, plant.theta(), plant.omega());
+        plant.step(dt, tauOp);
+    }
+}
+
+SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
+{
+    const quint64 n = cycles++;
+    const double t = double(n) * period;
+    const qint64 tUs = cycleMicros(n);
+    cycleTime = t;
+
+    if (legacyController && legacyWaiting) {
+        // The firmware is stuck waiting for 'o': no control, no frames. The servo keeps
+        // holding its last position command on its own.
+        runPlant(t);
+        uart.transfer(period);
+        return last;
+    }
+
+    const auto now = std::uint32_t(quint64(tUs) & 0xFFFFFFFFu);
+    const fw::CycleRecord<double> &r =
+        core ? core->controlCycle(now) : legacyController->cycle(now);
+    Cycle c;
+    c.t = t;
+    c.theta = r.theta;
+    c.omega = r.omega;
+    c.tau = r.tau;
+    c.tau_rec = r.tau_rec;
+    c.tau_ext = r.tau_ext;
+    c.tau_total = r.tau_total;
+    c.flags = r.flags;
+
+    if (core) {
+        core->serviceHost(); // the link context sends this cycle's telemetry
+    } else if (tUs >= nextLegacyUs) {
+        nextLegacyUs += kLegacyPeriodUs;
+        if (nextLegacyUs <= tUs)
+            nextLegacyUs = tUs + kLegacyPeriodUs;
+        const legacy::Frame frame{legacyTicks(), 1000, 1000, 1000};
+        if (!uart.write(QByteArray(legacy::encodeFrame(frame) + "\r\n"), Traffic::Stream))
+            ++legacyDropped;
+    }
+
+    runPlant(t);
+    uart.transfer(period);
+    last = c;
+    return c;
+}
+
+// ---- public API ----
+
+SimulatedDevice::SimulatedDevice(const Config &config) : d(std::make_unique<Private>(config)) {}
+
+SimulatedDevice::~SimulatedDevice() = default;
+
+void SimulatedDevice::receive(QByteArrayView bytes)
+{
+    d->receive(bytes);
+}
+
+void SimulatedDevice::advance(double dt)
+{
+    if (!(dt > 0) || !std::isfinite(dt))
+        return;
+    d->clock += dt;
+    // Cycle n covers [n·h, (n+1)·h); it has run once the clock has passed its end.
+    while (double(d->cycles + 1) * d->period <= d->clock * (1.0 + 1e-12))
+        d->runCycle();
+}
+
+SimulatedDevice::Cycle SimulatedDevice::step()
+{
+    const Cycle c = d->runCycle();
+    d->clock = std::max(d->clock, double(d->cycles) * d->period);
+    return c;
+}
+
+QByteArray SimulatedDevice::takeOutput()
+{
+    return d->uart.take();
+}
+
+void SimulatedDevice::setHand(const HandInput &hand)
+{
+    d->hand = hand;
+    d->handStart = double(d->cycles) * d->period; // t = 0 at the next control cycle
+}
+
+HandInput SimulatedDevice::hand() const
+{
+    return d->hand;
+}
+
+const SimulatedDevice::Config &SimulatedDevice::config() const
+{
+    return d->config;
+}
+
+DeviceParams SimulatedDevice::params() const
+{
+    return d->core ? d->core->params() : d->legacyController->params();
+}
+
+double SimulatedDevice::time() const
+{
+    return d->clock;
+}
+
+qint32 SimulatedDevice::baud() const
+{
+    return d->uart.baud();
+}
+
+quint16 SimulatedDevice::streamRate() const
+{
+    return d->core ? d->core->streamRate() : 0;
+}
+
+bool SimulatedDevice::feedbackStale() const
+{
+    return d->last.flags & v2::kFlagFeedbackStale;
+}
+
+quint16 SimulatedDevice::linkLimitedRate() const
+{
+    return d->linkLimitedRate();
+}
+
+quint64 SimulatedDevice::telemetryDropped() const
+{
+    return d->core ? d->core->telemetryDropped() : d->legacyDropped;
+}
+
+QString SimulatedDevice::stateWarning() const
+{
+    return d->stateWarning;
+}
+
+} // namespace hatpic

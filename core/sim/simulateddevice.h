@@ -1,0 +1,91 @@
+// A simulated HATPIC joystick: the device side of model.md and protocol.md on simulated time.
+//
+// Pure and single-threaded: no timers, no I/O threads. The owner feeds host bytes with
+// receive(), advances simulated time with advance(), and drains the device's bytes with
+// takeOutput(). hatpic-sim drives it from a pseudo-terminal in real time; the session's
+// in-process "sim" port drives it directly; `hatpicctl simulate` uses step() offline.
+#pragma once
+
+#include "model/admittance.h"
+#include "model/params.h"
+#include "protocol/deviceinfo.h"
+#include "protocol/legacy.h"
+#include "protocol/v2codec.h"
+#include "sim/handinput.h"
+
+#include <QByteArray>
+#include <QString>
+
+#include <memory>
+#include <random>
+
+namespace hatpic {
+
+class SimulatedDevice
+{
+public:
+    struct Config
+    {
+        WireProtocol protocol = WireProtocol::V2;
+        double controlRateHz = 1000;   //!< control loop rate [Hz]
+        qint32 baud = 0;               //!< emulated link; 0 = the protocol's defaultBaud()
+        bool throttle = true;          //!< limit output to the link's byte rate
+        bool ideal = false;            //!< no servo lag, quantisation or noise: model.md alone
+        double noise = 0;              //!< std-dev of load-reading noise [N·m]; 0 = none
+        quint64 seed = 1;              //!< noise seed
+        QString stateFile;             //!< SAVE_PARAMS persists here (a profile file) if set
+        HandInput hand;                //!< operator input at start
+        quint32 deviceId = 0x53494D31; //!< "SIM1"
+        double tauLimit = 0.44;        //!< actuator torque limit [N·m]
+        DeviceParams params;           //!< power-up parameters (a valid stateFile overrides)
+    };
+
+    //! One control cycle as the device saw it (what TELEMETRY reports).
+    struct Cycle
+    {
+        double t = 0;         //!< simulated time at the cycle [s]
+        double theta = 0;     //!< measured knob angle used this cycle [rad]
+        double omega = 0;     //!< knob rate [rad/s]
+        double tau = 0;       //!< measured interaction torque [N·m]
+        double tau_rec = 0;   //!< [N·m]
+        double tau_ext = 0;   //!< [N·m]
+        double tau_total = 0; //!< clamped to tau_limit [N·m]
+        quint8 flags = 0;     //!< v2::kFlag* bits
+    };
+
+    explicit SimulatedDevice(const Config &config);
+    ~SimulatedDevice();
+    SimulatedDevice(const SimulatedDevice &) = delete;
+    SimulatedDevice &operator=(const SimulatedDevice &) = delete;
+
+    //! Host → device bytes (any chunking).
+    void receive(QByteArrayView bytes);
+    //! Runs the control loop for `dt` seconds of simulated time, queueing output.
+    void advance(double dt);
+    //! Runs exactly one control cycle and returns it (offline simulation).
+    Cycle step();
+    //! Device → host bytes the emulated link has carried so far (bounded queue).
+    QByteArray takeOutput();
+
+    void setHand(const HandInput &hand); //!< switch the operator input while running
+    HandInput hand() const;
+
+    const Config &config() const;
+    DeviceParams params() const;
+    double time() const;        //!< simulated time [s]
+    qint32 baud() const;        //!< effective emulated baud rate
+    quint16 streamRate() const; //!< telemetry rate in force [Hz]
+    bool feedbackStale() const;
+    //! Highest telemetry rate the link can carry at this baud [Hz].
+    quint16 linkLimitedRate() const;
+    //! Telemetry frames dropped because the output queue was full (seen as seq gaps).
+    quint64 telemetryDropped() const;
+    //! Why the state file (or config.params) was not used at power-up; empty when fine.
+    QString stateWarning() const;
+
+private:
+    class Private;
+    std::unique_ptr<Private> d;
+};
+
+} // namespace hatpic

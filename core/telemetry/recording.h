@@ -1,0 +1,50 @@
+// What a recording is: its columns, its metadata, its events and the status of one being
+// written. RecordingWriter (recordingwriter.h) writes NAME.csv + NAME.json; readRecording
+// (recordingreader.h) reads them back; docs/recording.md describes the format.
+#pragma once
+
+#include "model/params.h"
+#include "protocol/deviceinfo.h"
+#include "telemetry/sample.h"
+
+#include <QDateTime>
+#include <QMetaType>
+#include <QString>
+#include <QStringList>
+
+namespace hatpic {
+
+//! Header of the CSV, in column order.
+QStringList recordingColumns(); // t_s, theta, omega, tau, tau_rec, tau_ext, tau_total, v_ref,
+                                // p_ref, flags, event
+
+struct RecordingMetadata
+{
+    QDateTime start; //!< wall-clock start (UTC)
+    DeviceInfo device;
+    DeviceParams params; //!< parameters at start
+    HostParams host;
+    QString source; //!< "hatpic-tuner", "hatpicctl stream", …
+};
+
+struct RecordingEvent
+{
+    double t_s = 0; //!< sample time the event is attached to [s]
+    QString text;   //!< e.g. "K_max 0.4 → 0.6"
+};
+
+struct RecordingStatus
+{
+    bool active = false;
+    QString path;              //!< the CSV file
+    double seconds = 0;        //!< recorded duration [s]
+    quint64 samples = 0;       //!< whole rows on disk
+    qint64 bytes = 0;          //!< bytes written to the CSV so far
+    quint64 eventsDropped = 0; //!< events left out by the recorder's bounds
+    QString error;             //!< why the recording stopped, if it failed
+};
+
+//! NAME.csv → NAME.json: where a recording's metadata lives.
+QString recordingMetadataPath(const QString &csvPath);
+
+} // namespace hatpic

@@ -1,0 +1,317 @@
+// hatpic-fw-host end to end: the real binary driving hatpic-servo-sim's emulated STS3032 over
+// one real pseudo-terminal, served to a v2 host (and hatpicctl) over another.
+#include "fwhosttest.h"
+#include "link/pseudoterminal.h"
+#include "model/stiffness.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+using namespace hatpic;
+using namespace hatpic::test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr double kHandTorque = 0.02;     //!< --hand const:0.02 [N·m]
+constexpr double kLoadQuantum = 0.44e-3; //!< tau_limit / 1000 [N·m]
+constexpr int kSettleMs = 1500;          //!< from a change to the window [ms]
+constexpr int kWindowMs = 500;           //!< window the rest point is averaged over [ms]
+constexpr int kTimeoutMs = 5000;
+
+QString fwHost()
+{
+    return QStringLiteral(HATPIC_FW_HOST_PATH);
+}
+QString servoSim()
+{
+    return QStringLiteral(HATPIC_SERVO_SIM_PATH);
+}
+
+DeviceParams asDevice(DeviceParams p) // the device keeps 7 × f32
+{
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        p.setField(i, double(float(p.field(i))));
+    return p;
+}
+
+//! The θ where the model holds the measured hand torque plus τ_ext (bisection) [rad].
+double restPoint(const DeviceParams &p, double tauExt)
+{
+    // The servo reads the hand's torque on its load grid: 0.02 N·m reads 45 quanta.
+    const double push = std::round(kHandTorque / kLoadQuantum) * kLoadQuantum + tauExt;
+    double lo = 0, hi = 1;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (recenteringTorque(p, mid) + push > 0 ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+QList<v2::Telemetry> telemetrySince(const V2Client &client, qsizetype from)
+{
+    QList<v2::Telemetry> out;
+    for (qsizetype i = from; i < client.frames.size(); ++i) {
+        if (const auto *t = std::get_if<v2::Telemetry>(&client.frames.at(i).message))
+            out.append(*t);
+    }
+    return out;
+}
+
+//! Waits kSettleMs, then averages θ over kWindowMs of telemetry.
+double settledTheta(V2Client &client)
+{
+    QTest::qWait(kSettleMs); // the knob needs the time: nothing to poll for
+    const qsizetype from = client.frames.size();
+    QTest::qWait(kWindowMs);
+    const QList<v2::Telemetry> window = telemetrySince(client, from);
+    double sum = 0;
+    for (const v2::Telemetry &t : window)
+        sum += t.theta;
+    return window.isEmpty() ? std::nan("") : sum / double(window.size());
+}
+
+//! Every frame's θ on the tick grid, τ on the load grid, τ_rec the model at that θ.
+QString inconsistency(const QList<v2::Telemetry> &frames, const DeviceParams &p)
+{
+    for (const v2::Telemetry &t : frames) {
+        const double ticks = t.theta / kTick;
+        const double loads = t.tau / kLoadQuantum;
+        const double model = recenteringTorque(p, double(t.theta));
+        if (std::abs(ticks - std::round(ticks)) > 1e-3)
+            return u"θ %1 is %2 ticks"_s.arg(t.theta).arg(ticks);
+        if (std::abs(loads - std::round(loads)) > 1e-3)
+            return u"τ %1 is %2 load units"_s.arg(t.tau).arg(loads);
+        if (std::abs(double(t.tau_rec) - model) > 1e-6)
+            return u"τ_rec %1 at θ %2, the model says %3"_s.arg(t.tau_rec).arg(t.theta).arg(model);
+    }
+    return {};
+}
+
+} // namespace
+
+class TestFirmwareHost : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void closedLoopThroughPtys();
+    void savedParamsSurviveRestart();
+    void hatpicctlInfo();
+    void sigtermDisablesTorque();
+    void silentServoFails();
+    void badOptions_data();
+    void badOptions();
+};
+
+void TestFirmwareHost::closedLoopThroughPtys()
+{
+    PtyProgram servo(servoSim(), {u"--hand"_s, u"const:0.02"_s});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    V2Client client(host.path());
+    QVERIFY2(client.open(), qPrintable(client.errorString()));
+    client.send(v2::SetStream{1000});
+
+    // Defaults: at rest where K_rec holds the hand, 0.0495 rad.
+    const DeviceParams defaults = asDevice(DeviceParams{});
+    const double rest = settledTheta(client);
+    qInfo("rest %.5f rad (model %.5f)", rest, restPoint(defaults, 0));
+    QVERIFY(std::abs(restPoint(defaults, 0) - 0.0495) < 1e-4);
+    QVERIFY2(std::abs(rest - 0.0495) < 2 * kTick, qPrintable(QString::number(rest)));
+    const QList<v2::Telemetry> early = telemetrySince(client, 0);
+    QVERIFY(early.size() > 1000);
+    QCOMPARE(inconsistency(early, defaults), QString());
+
+    // K_max = 0.5 moves the rest point to 0.0396 rad.
+    DeviceParams stiff = defaults;
+    stiff.K_max = 0.5;
+    const quint8 seq = client.send(v2::SetParams{stiff});
+    QTRY_VERIFY_WITH_TIMEOUT(client.ack(seq).has_value(), kTimeoutMs);
+    QCOMPARE(client.ack(seq)->status, v2::AckStatus::Ok);
+    const qsizetype afterSet = client.frames.size();
+    const double stiffRest = settledTheta(client);
+    qInfo("rest with K_max 0.5: %.5f rad (model %.5f)", stiffRest, restPoint(asDevice(stiff), 0));
+    QVERIFY2(std::abs(stiffRest - 0.0396) < 2 * kTick, qPrintable(QString::number(stiffRest)));
+    QCOMPARE(inconsistency(telemetrySince(client, afterSet + 100), asDevice(stiff)), QString());
+
+    // Streamed feedback shifts the rest point…
+    constexpr float kTauExt = 0.01f;
+    QTimer feedback;
+    QElapsedTimer sinceLastFeedback;
+    connect(&feedback, &QTimer::timeout, this, [&] {
+        client.send(v2::SetFeedback{kTauExt});
+        sinceLastFeedback.start();
+    });
+    feedback.start(20);
+    const double pushed = settledTheta(client);
+    const double pushedModel = restPoint(asDevice(stiff), double(kTauExt));
+    qInfo("rest with τ_ext %.3f N·m: %.5f rad (model %.5f)", double(kTauExt), pushed, pushedModel);
+    QVERIFY2(std::abs(pushed - pushedModel) < 2 * kTick, qPrintable(QString::number(pushed)));
+    QCOMPARE(telemetrySince(client, client.frames.size() - 50).last().tau_ext, kTauExt);
+
+    // …and the watchdog takes it back 200 ms after the feedback stops.
+    feedback.stop();
+    const qsizetype stopped = client.frames.size();
+    const auto stale = [&] {
+        for (const v2::Telemetry &t : telemetrySince(client, stopped)) {
+            if (t.flags & v2::kFlagFeedbackStale)
+                return true;
+        }
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(stale(), kTimeoutMs);
+    const qint64 staleAfterMs = sinceLastFeedback.elapsed();
+    qInfo("stale %lld ms after the last feedback frame", static_cast<long long>(staleAfterMs));
+    // Not before 200 ms (less the host timer's slack). The upper bound only says "it came":
+    // on a loaded 2-core CI machine the ptys and two event loops can add a second of delay;
+    // the watchdog's exact timing is tested on simulated time (tst_simulateddevice::watchdog).
+    QVERIFY2(staleAfterMs >= 180 && staleAfterMs < 1500, qPrintable(QString::number(staleAfterMs)));
+    const double back = settledTheta(client);
+    QVERIFY2(std::abs(back - 0.0396) < 2 * kTick, qPrintable(QString::number(back)));
+    QCOMPARE(telemetrySince(client, client.frames.size() - 50).last().tau_ext, 0.0f);
+}
+
+void TestFirmwareHost::savedParamsSurviveRestart()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString state = dir.filePath(u"state.json"_s);
+    PtyProgram servo(servoSim(), {});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    DeviceParams stiff = asDevice(DeviceParams{});
+    stiff.K_max = 0.5;
+    {
+        PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+        QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+        V2Client client(host.path());
+        QVERIFY(client.open());
+        const quint8 set = client.send(v2::SetParams{stiff});
+        const quint8 save = client.send(v2::SaveParams{});
+        QTRY_VERIFY_WITH_TIMEOUT(client.ack(save).has_value(), kTimeoutMs);
+        QCOMPARE(client.ack(set)->status, v2::AckStatus::Ok);
+        QCOMPARE(client.ack(save)->status, v2::AckStatus::Ok);
+        QVERIFY(QFileInfo::exists(state));
+        QVERIFY(host.terminate());
+        QCOMPARE(host.process().exitCode(), 0);
+    }
+    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    V2Client client(host.path());
+    QVERIFY(client.open());
+    client.send(v2::GetParams{});
+    QTRY_COMPARE_WITH_TIMEOUT(client.all<v2::Params>().size(), 1, kTimeoutMs);
+    QCOMPARE(client.all<v2::Params>().first().params, stiff);
+
+    // An unreadable state file: a warning, and the defaults.
+    QVERIFY(host.terminate());
+    QFile file(state);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("{ not json");
+    file.close();
+    PtyProgram broken(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+    QVERIFY2(!broken.path().isEmpty(), qPrintable(broken.errors()));
+    QTRY_VERIFY_WITH_TIMEOUT(broken.errors().contains(u"ignored"_s), kTimeoutMs);
+    V2Client again(broken.path());
+    QVERIFY(again.open());
+    again.send(v2::GetParams{});
+    QTRY_COMPARE_WITH_TIMEOUT(again.all<v2::Params>().size(), 1, kTimeoutMs);
+    QCOMPARE(again.all<v2::Params>().first().params, asDevice(DeviceParams{}));
+}
+
+void TestFirmwareHost::hatpicctlInfo()
+{
+    PtyProgram servo(servoSim(), {});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    QProcess ctl;
+    ctl.start(QStringLiteral(HATPICCTL_PATH), {u"info"_s, u"--port"_s, host.path()});
+    QVERIFY(ctl.waitForFinished(10000));
+    const QString out = QString::fromUtf8(ctl.readAllStandardOutput());
+    QVERIFY2(ctl.exitCode() == 0, qPrintable(QString::fromUtf8(ctl.readAllStandardError())));
+    QVERIFY2(out.contains(u"hatpic-fw-host"_s) && out.contains(u"0x46574831"_s), qPrintable(out));
+    QVERIFY2(out.contains(u"1000 Hz"_s), qPrintable(out));
+}
+
+void TestFirmwareHost::sigtermDisablesTorque()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString link = dir.filePath(u"hatpic"_s);
+    PtyProgram servo(servoSim(), {});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s});
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    QCOMPARE(QFileInfo(link).symLinkTarget(), host.path());
+    QVERIFY(!servo.errors().contains(u"torque off"_s));
+
+    QVERIFY(host.terminate());
+    QCOMPARE(host.process().exitStatus(), QProcess::NormalExit);
+    QCOMPARE(host.process().exitCode(), 0);
+    QVERIFY(!QFileInfo(link).isSymLink());
+    QTRY_VERIFY_WITH_TIMEOUT(servo.errors().contains(u"torque off"_s), kTimeoutMs);
+
+    // Ask the servo itself: READ 1 byte at the torque enable register (40).
+    QSerialPort bus(servo.path());
+    QVERIFY(bus.open(QIODevice::ReadWrite));
+    const QByteArray read = QByteArray::fromHex("ffff0104022801cf");
+    bus.write(read);
+    QByteArray reply;
+    QTRY_VERIFY_WITH_TIMEOUT((reply += bus.readAll()).size() >= 7, kTimeoutMs);
+    QCOMPARE(reply.left(7).toHex(), QByteArray("ffff01030000fb")); // error 0, value 0
+}
+
+void TestFirmwareHost::silentServoFails()
+{
+    PseudoTerminal nobody; // a "serial port" with no servo behind it
+    QCOMPARE(nobody.open(), QString());
+    QProcess host;
+    host.start(fwHost(), {u"--servo"_s, nobody.slavePath()});
+    QVERIFY(host.waitForFinished(kTimeoutMs));
+    QCOMPARE(host.exitCode(), 1);
+    QVERIFY(host.readAllStandardOutput().isEmpty());
+    const QString error = QString::fromUtf8(host.readAllStandardError());
+    QVERIFY2(error.contains(u"does not answer"_s), qPrintable(error));
+}
+
+void TestFirmwareHost::badOptions_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("says");
+    QTest::newRow("fw-host without --servo") << fwHost() << QStringList{} << u"--servo"_s;
+    QTest::newRow("fw-host rate 0")
+        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--rate"_s, u"0"_s} << u"control rate"_s;
+    QTest::newRow("fw-host id 254")
+        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-id"_s, u"254"_s}
+        << u"servo id"_s;
+    QTest::newRow("fw-host timeout")
+        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-timeout"_s, u"0"_s}
+        << u"timeout"_s;
+    QTest::newRow("fw-host unknown") << fwHost() << QStringList{u"--bogus"_s} << u"bogus"_s;
+    QTest::newRow("servo-sim hand")
+        << servoSim() << QStringList{u"--hand"_s, u"push"_s} << u"push"_s;
+    QTest::newRow("servo-sim center")
+        << servoSim() << QStringList{u"--center-tick"_s, u"4096"_s} << u"center tick"_s;
+}
+
+void TestFirmwareHost::badOptions()
+{
+    QFETCH(QString, program);
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, says);
+    QProcess process;
+    process.start(program, arguments);
+    QVERIFY(process.waitForFinished(kTimeoutMs));
+    QCOMPARE(process.exitCode(), 4);
+    QVERIFY(process.readAllStandardOutput().isEmpty());
+    const QString error = QString::fromUtf8(process.readAllStandardError()).trimmed();
+    QVERIFY2(error.contains(says) && !error.contains(u'\n'), qPrintable(error));
+}
+
+QTEST_GUILESS_MAIN(TestFirmwareHost)
+#include "tst_firmwarehost.moc"

@@ -1,0 +1,912 @@
+// The real MainWindow against the in-process simulator ("sim") and, where built, the hatpic-sim
+// program on a pseudo-terminal: connect, plots fill, edit → push → in sync, invalid values,
+// device rejection, undo/redo, profiles, A/B, recording, replay, link loss, settings, keys.
+#include "connection/connectionbar.h"
+#include "connection/linkbanner.h"
+#include "connection/linkstatswidget.h"
+#include "connection/linkstatuswidget.h"
+#include "editor/parametereditor.h"
+#include "editor/profilecontroller.h"
+#include "editor/simulatorpanel.h"
+#include "editor/stiffnessview.h"
+#include "plots/plotpanel.h"
+#include "plots/qcp.h"
+#include "recording/recordingcontrols.h"
+#include "recording/replaybar.h"
+#include "recording/replaycontroller.h"
+#include "telemetry/recordingreader.h"
+#include "telemetry/recordingwriter.h"
+#include "window/mainwindow.h"
+#include "window/shortcutsdialog.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QFile>
+#include <QLabel>
+#include <QProcess>
+#include <QPushButton>
+#include <QScreen>
+#include <QScrollBar>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+#include <memory>
+
+using namespace hatpic;
+
+namespace {
+
+constexpr int kConnectMs = 15000; //!< generous: the machine is shared
+constexpr int kDataMs = 15000;
+
+ConnectOptions simOptions(ProtocolChoice protocol = ProtocolChoice::V2)
+{
+    ConnectOptions options;
+    options.port = QStringLiteral("sim");
+    options.protocol = protocol;
+    return options;
+}
+
+//! Samples in the live buffer with a time after t.
+qsizetype samplesAfter(const SampleBuffer &buffer, double t)
+{
+    return buffer.size() - buffer.upperBound(t);
+}
+
+//! max θ − min θ over the buffer [rad].
+double thetaSpan(const SampleBuffer &buffer)
+{
+    double lo = 1e9;
+    double hi = -1e9;
+    for (qsizetype i = 0; i < buffer.size(); ++i) {
+        lo = std::min(lo, buffer.value(Channel::Theta, i));
+        hi = std::max(hi, buffer.value(Channel::Theta, i));
+    }
+    return hi - lo;
+}
+
+//! Where the live view ends: the newest sample, or first + window while the data are shorter.
+//! Repaints first, so that nothing arrives between the repaint and the comparison.
+double liveViewEnd(MainWindow &window)
+{
+    window.plotPanel()->repaintNow();
+    const SampleBuffer &b = window.liveBuffer();
+    return std::max(b.lastTime(), b.firstTime() + window.plotPanel()->windowLength());
+}
+
+} // namespace
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void connectsToSimulatorAndPlotsSamples_data();
+    void connectsToSimulatorAndPlotsSamples();
+    void editPushInSyncChangesBehaviour();
+    void invalidValueDisablesPush();
+    void deviceRejectionIsShown();
+    void undoRedo();
+    void profileSaveLoadRoundTrip();
+    void abSwitchKeepsBothTunings();
+    void legacyDeviceCannotPush();
+    void simulatedHandReachesDevice();
+    void pauseKeepsLinkRecording();
+    void recordCreatesValidFile();
+    void replayShowsRecordingAndReturnsToLive();
+    void disconnectKeepsPlotData();
+    void lostLinkKeepsDataAndReconnects();
+    void degreesToggleReachesEveryView();
+    void settingsPersist();
+    void keyboardShortcuts();
+    void narrowWindowKeepsStateTagVisible();
+    void narrowReplayBarKeepsItsSlider();
+    void hugeReplaySpanKeepsTheWindow_data();
+    void hugeReplaySpanKeepsTheWindow();
+    void oversizedSettingsAreFitted_data();
+    void oversizedSettingsAreFitted();
+
+private:
+    void connectSim(ProtocolChoice protocol = ProtocolChoice::V2);
+    bool waitForSamples(qsizetype count);
+
+    std::unique_ptr<MainWindow> m_window;
+    QTemporaryDir m_dir;
+};
+
+void TestMainWindow::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("hatpic-test"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_mainwindow"));
+    QVERIFY(m_dir.isValid());
+}
+
+void TestMainWindow::init()
+{
+    QSettings().clear();
+    m_window = std::make_unique<MainWindow>();
+    m_window->profileController()->setQuestion(
+        [](const QString &) { return QMessageBox::Discard; });
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+}
+
+void TestMainWindow::cleanup()
+{
+    m_window.reset();
+}
+
+void TestMainWindow::connectSim(ProtocolChoice protocol)
+{
+    m_window->connectTo(simOptions(protocol));
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->client()->hasDeviceParams() ||
+                                 !m_window->client()->deviceInfo().canSetParams(),
+                             kConnectMs);
+}
+
+bool TestMainWindow::waitForSamples(qsizetype count)
+{
+    const double since = m_window->liveBuffer().lastTime();
+    return QTest::qWaitFor([&] { return samplesAfter(m_window->liveBuffer(), since) >= count; },
+                           kDataMs);
+}
+
+void TestMainWindow::connectsToSimulatorAndPlotsSamples_data()
+{
+    QTest::addColumn<ProtocolChoice>("protocol");
+    QTest::newRow("auto detection") << ProtocolChoice::Auto;
+    QTest::newRow("forced v2") << ProtocolChoice::V2;
+}
+
+void TestMainWindow::connectsToSimulatorAndPlotsSamples()
+{
+    QFETCH(ProtocolChoice, protocol);
+    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("disconnected"));
+    connectSim(protocol);
+    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("connected"));
+    QVERIFY2(m_window->linkStatus()->identityText().contains(QStringLiteral("Simulated HATPIC")),
+             qPrintable(m_window->linkStatus()->identityText()));
+    QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("protocol v2")));
+    QCOMPARE(m_window->connectionBar()->connectButton()->text(), QStringLiteral("Disconnect"));
+    QVERIFY(m_window->simulatorDock()->isVisible());
+    QCOMPARE(m_window->simulatorPanel()->hand(), MainWindow::gentleHand());
+
+    QVERIFY(waitForSamples(1500));
+    PlotPanel *plots = m_window->plotPanel();
+    QTRY_VERIFY(plots->pointCount(Channel::Theta) > 100);
+    QVERIFY(plots->pointCount(Channel::TauRec) > 100);
+    QVERIFY(plots->pointCount(Channel::PRef) > 100);
+    QCOMPARE(plots->viewEnd(), liveViewEnd(*m_window));
+    QTRY_VERIFY(m_window->linkStats()->text().contains(QStringLiteral("frames/s")));
+    QVERIFY(!m_window->linkStats()->text().startsWith(QStringLiteral("0 frames/s")));
+
+    // The gentle hand moves the knob from the first second.
+    QTRY_VERIFY_WITH_TIMEOUT(thetaSpan(m_window->liveBuffer()) > 0.05, kDataMs);
+}
+
+void TestMainWindow::editPushInSyncChangesBehaviour()
+{
+    connectSim();
+    ParameterEditor *editor = m_window->parameterEditor();
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
+    const DeviceParams before = m_window->client()->deviceParams();
+
+    DeviceParams edited = editor->params();
+    edited.K_max = 0.6;
+    editor->setParams(edited, editor->hostParams(), QStringLiteral("K_max"));
+    QCOMPARE(editor->syncState(), SyncState::Edited);
+    QVERIFY(editor->pushAction()->isEnabled());
+    editor->pushAction()->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
+    QCOMPARE(float(m_window->client()->deviceParams().K_max), 0.6f);
+    QVERIFY2(m_window->lastCommandMessage().contains(QStringLiteral("K_max 0.4 → 0.6")),
+             qPrintable(m_window->lastCommandMessage()));
+    QCOMPARE(m_window->plotPanel()->events().size(), 1);
+    QVERIFY(m_window->plotPanel()->events().constFirst().text.contains(QStringLiteral("K_max")));
+    QVERIFY(before.K_max != m_window->client()->deviceParams().K_max);
+
+    // The stiffness view draws the device curve with the new K_max.
+    QCPGraph *device = m_window->stiffnessView()->deviceStiffnessGraph();
+    QTRY_VERIFY(!device->data()->isEmpty());
+    double peak = 0;
+    for (auto it = device->data()->constBegin(); it != device->data()->constEnd(); ++it)
+        peak = std::max(peak, it->value);
+    QCOMPARE(float(peak), 0.6f);
+
+    // The device renders it: in the notch band τ_rec = −K_max·(θ−θ0).
+    const double pushedAt = m_window->liveBuffer().lastTime();
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            const SampleBuffer &b = m_window->liveBuffer();
+            for (qsizetype i = b.upperBound(pushedAt + 0.1); i < b.size(); ++i) {
+                if (b.flags(i) & 0x02) // in the notch band
+                    return true;
+            }
+            return false;
+        },
+        30000));
+    const SampleBuffer &b = m_window->liveBuffer();
+    int checked = 0;
+    for (qsizetype i = b.upperBound(pushedAt + 0.1); i < b.size(); ++i) {
+        if (!(b.flags(i) & 0x02))
+            continue;
+        const double e = b.value(Channel::Theta, i) - edited.theta0;
+        QVERIFY2(std::abs(b.value(Channel::TauRec, i) + 0.6 * e) < 1e-4,
+                 qPrintable(QStringLiteral("θ %1, τ_rec %2")
+                                .arg(b.value(Channel::Theta, i))
+                                .arg(b.value(Channel::TauRec, i))));
+        ++checked;
+    }
+    QVERIFY(checked > 0);
+}
+
+void TestMainWindow::invalidValueDisablesPush()
+{
+    connectSim();
+    ParameterEditor *editor = m_window->parameterEditor();
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
+    QSignalSpy validity(editor, &ParameterEditor::validityChanged);
+    DeviceParams bad = editor->params();
+    bad.K_min = 0.9; // above K_max
+    editor->setParams(bad, editor->hostParams(), QStringLiteral("K_min"));
+    QVERIFY(!editor->isValid());
+    QCOMPARE(validity.size(), 1);
+    QVERIFY(!editor->pushAction()->isEnabled());
+    QVERIFY(!editor->problems().isEmpty());
+    // Ctrl+Return does nothing while invalid: the device keeps its values.
+    editor->pushAction()->trigger();
+    QTest::qWait(200); // nothing must arrive; there is no event to wait for
+    QCOMPARE(float(m_window->client()->deviceParams().K_min), float(DeviceParams().K_min));
+    editor->undoStack()->undo();
+    QVERIFY(editor->isValid());
+    QVERIFY(editor->pushAction()->isEnabled() || editor->syncState() == SyncState::InSync);
+}
+
+void TestMainWindow::deviceRejectionIsShown()
+{
+    // The host validates in double precision, the device in float32 (its wire type). Q_dz just
+    // below N passes Q_dz < N on the host, but both round to the same float, so the device
+    // answers OUT_OF_RANGE naming Q_dz: a real device rejection, reached through the editor.
+    connectSim();
+    ParameterEditor *editor = m_window->parameterEditor();
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
+    DeviceParams edge = editor->params();
+    edge.N = 0.1;
+    edge.Q_dz = std::nextafter(0.1, 0.0);
+    QVERIFY(validate(edge).empty());
+    QCOMPARE(float(edge.Q_dz), float(edge.N));
+    editor->setParams(edge, editor->hostParams(), QStringLiteral("Q_dz"));
+    QVERIFY(editor->pushAction()->isEnabled());
+    editor->pushAction()->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::Rejected, kConnectMs);
+    QVERIFY2(m_window->lastCommandMessage().startsWith(QStringLiteral("Push failed")),
+             qPrintable(m_window->lastCommandMessage()));
+    QVERIFY2(editor->syncText().contains(QStringLiteral("Q_dz")), qPrintable(editor->syncText()));
+    // The device kept its previous, valid set.
+    QCOMPARE(float(m_window->client()->deviceParams().Q_dz), float(DeviceParams().Q_dz));
+    QVERIFY(m_window->plotPanel()->events().isEmpty());
+}
+
+void TestMainWindow::undoRedo()
+{
+    ParameterEditor *editor = m_window->parameterEditor();
+    const DeviceParams original = editor->params();
+    DeviceParams edited = original;
+    edited.N = 0.15;
+    editor->setParams(edited, editor->hostParams(), QStringLiteral("N"));
+    QCOMPARE(editor->params().N, 0.15);
+    QVERIFY(editor->undoAction()->isEnabled());
+    QCOMPARE(editor->undoAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Z));
+    editor->undoAction()->trigger();
+    QCOMPARE(editor->params(), original);
+    QCOMPARE(editor->redoAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
+    editor->redoAction()->trigger();
+    QCOMPARE(editor->params().N, 0.15);
+    // The stiffness view follows the edited set.
+    QCPGraph *stiffness = m_window->stiffnessView()->stiffnessGraph();
+    QVERIFY(!stiffness->data()->isEmpty());
+}
+
+void TestMainWindow::profileSaveLoadRoundTrip()
+{
+    ProfileController *profiles = m_window->profileController();
+    ParameterEditor *editor = m_window->parameterEditor();
+    DeviceParams tuned = editor->params();
+    tuned.K_max = 0.55;
+    tuned.theta0 = 0.125;
+    HostParams host = editor->hostParams();
+    host.v_max = 2.5;
+    host.mode = ReferenceMode::Rotation;
+    editor->setParams(tuned, host, QStringLiteral("tune"));
+    const QString path = m_dir.filePath(QStringLiteral("Roundtrip.json"));
+    QString error;
+    QVERIFY2(profiles->saveTo(path, &error), qPrintable(error));
+    QVERIFY(!profiles->isModified());
+
+    editor->setParams(DeviceParams(), HostParams(), QStringLiteral("reset"));
+    QVERIFY(editor->params() != tuned);
+    QVERIFY2(profiles->openFile(path, &error), qPrintable(error));
+    QCOMPARE(editor->params(), tuned);
+    QCOMPARE(editor->hostParams(), host);
+    QCOMPARE(profiles->filePath(), path);
+    QVERIFY2(m_window->windowTitle().contains(profiles->profileName()),
+             qPrintable(m_window->windowTitle()));
+
+    // A refused file changes nothing.
+    const QString broken = m_dir.filePath(QStringLiteral("broken.json"));
+    QFile file(broken);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{ not json");
+    file.close();
+    QVERIFY(!profiles->openFile(broken, &error));
+    QVERIFY(!error.isEmpty());
+    QCOMPARE(editor->params(), tuned);
+}
+
+void TestMainWindow::abSwitchKeepsBothTunings()
+{
+    ProfileController *profiles = m_window->profileController();
+    ParameterEditor *editor = m_window->parameterEditor();
+    QAction *ab = profiles->abToggleAction();
+    QVERIFY(!ab->shortcut().isEmpty());
+    QCOMPARE(profiles->activeSlot(), 0);
+    const DeviceParams a = editor->params();
+    ab->trigger();
+    QCOMPARE(profiles->activeSlot(), 1);
+    DeviceParams b = editor->params();
+    b.K_min = 0.05;
+    editor->setParams(b, editor->hostParams(), QStringLiteral("B"));
+    ab->trigger();
+    QCOMPARE(profiles->activeSlot(), 0);
+    QCOMPARE(editor->params(), a);
+    QVERIFY(m_window->windowTitle().contains(QStringLiteral("A")));
+    ab->trigger();
+    QCOMPARE(editor->params(), b);
+}
+
+void TestMainWindow::legacyDeviceCannotPush()
+{
+    // The published firmware reports no torque limit: the profile's tau_limit stays (it is
+    // neither replaced by a built-in guess nor marked as an unsaved change) and is the one the
+    // legacy feedback uses.
+    ParameterEditor *editor = m_window->parameterEditor();
+    HostParams host = editor->hostParams();
+    host.tau_limit = 0.3;
+    editor->setParams(editor->params(), host, QStringLiteral("tau_limit"));
+    QCOMPARE(editor->hostParams().tau_limit, 0.3);
+    ConnectOptions options = simOptions(ProtocolChoice::Auto);
+    options.sim.protocol = WireProtocol::Legacy;
+    m_window->connectTo(options);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
+    QCOMPARE(m_window->client()->deviceInfo().protocol, WireProtocol::Legacy);
+    QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("legacy")));
+    QVERIFY2(m_window->linkStatus()->identityText().contains(
+                 QStringLiteral("τ limit 0.3 N·m (assumed)")),
+             qPrintable(m_window->linkStatus()->identityText()));
+    QCOMPARE(m_window->client()->deviceInfo().tauLimit, 0.3);
+    QCOMPARE(editor->hostParams().tau_limit, 0.3);
+    QVERIFY(!editor->canPush());
+    QVERIFY(!editor->pushAction()->isEnabled());
+    QVERIFY(waitForSamples(5)); // legacy streams at ~5 Hz
+    QTRY_VERIFY(m_window->plotPanel()->pointCount(Channel::Theta) > 0);
+}
+
+void TestMainWindow::simulatedHandReachesDevice()
+{
+    connectSim();
+    HandInput push;
+    push.kind = HandInput::Kind::Constant;
+    push.amplitude = 0.1; // beyond the notch: settles near 0.1 / K_min ≈ 0.67 rad
+    m_window->setSimulatedHand(push);
+    QCOMPARE(m_window->simulatorPanel()->hand(), push);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_window->liveBuffer().value(Channel::Theta, m_window->liveBuffer().size() - 1) > 0.5,
+        kDataMs);
+}
+
+void TestMainWindow::pauseKeepsLinkRecording()
+{
+    connectSim();
+    PlotPanel *plots = m_window->plotPanel();
+    plots->setWindowLength(1);
+    QVERIFY(waitForSamples(1200)); // more than the window: the view scrolls
+    plots->repaintNow();
+    m_window->pauseAction()->trigger();
+    QVERIFY(m_window->isLivePaused());
+    QVERIFY(m_window->pauseAction()->isChecked());
+    const double end = plots->viewEnd();
+    const quint64 appended = m_window->liveBuffer().appendedCount();
+    QVERIFY(waitForSamples(500));
+    QVERIFY(m_window->liveBuffer().appendedCount() >= appended + 500);
+    plots->repaintNow();
+    QCOMPARE(plots->viewEnd(), end);
+    m_window->pauseAction()->trigger();
+    QVERIFY(!m_window->isLivePaused());
+    QTRY_VERIFY(plots->viewEnd() > end);
+}
+
+void TestMainWindow::recordCreatesValidFile()
+{
+    connectSim();
+    ParameterEditor *editor = m_window->parameterEditor();
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
+    const QString path = m_dir.filePath(QStringLiteral("session.csv"));
+    RecordingControls *controls = m_window->recordingControls();
+    QString suggested;
+    controls->setPathChooser([&](const QString &s) {
+        suggested = s;
+        return path;
+    });
+    QAction *record = controls->recordAction();
+    QCOMPARE(record->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_R));
+    QVERIFY(record->isEnabled());
+    record->trigger();
+    QVERIFY(QFileInfo(suggested).fileName().startsWith(QStringLiteral("hatpic-")));
+    QVERIFY(suggested.endsWith(QStringLiteral(".csv")));
+    QTRY_VERIFY_WITH_TIMEOUT(controls->status().active, kConnectMs);
+    QVERIFY(record->isChecked());
+    QTRY_VERIFY_WITH_TIMEOUT(controls->status().samples > 300, kDataMs);
+    QVERIFY(controls->statusText().contains(QStringLiteral("samples")));
+
+    DeviceParams edited = editor->params();
+    edited.K_max = 0.5;
+    editor->setParams(edited, editor->hostParams(), QStringLiteral("K_max"));
+    editor->pushAction()->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
+    QVERIFY(waitForSamples(200));
+    record->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!controls->status().active, kConnectMs);
+    QVERIFY(!record->isChecked());
+
+    const RecordingReadResult result = readRecording(path);
+    QVERIFY2(result.recording.has_value(), qPrintable(result.error));
+    QVERIFY(result.recording->samples.size() > 300);
+    QVERIFY(result.recording->hasMetadata);
+    QCOMPARE(result.recording->metadata.source, QStringLiteral("hatpic-tuner"));
+    QVERIFY(result.recording->metadata.device.simulated);
+    QVERIFY(!result.recording->events.isEmpty());
+    QVERIFY2(result.recording->events.constFirst().text.contains(QStringLiteral("K_max")),
+             qPrintable(result.recording->events.constFirst().text));
+}
+
+void TestMainWindow::replayShowsRecordingAndReturnsToLive()
+{
+    // A recording as the core writes it (the same file hatpicctl stream produces).
+    const QString path = m_dir.filePath(QStringLiteral("replay.csv"));
+    {
+        RecordingWriter recorder;
+        RecordingMetadata meta;
+        meta.start = QDateTime::currentDateTimeUtc();
+        meta.source = QStringLiteral("hatpicctl stream");
+        meta.params.K_max = 0.45;
+        QVERIFY2(recorder.open(path, meta), qPrintable(recorder.error()));
+        SampleBatch batch;
+        for (int i = 0; i < 5000; ++i) {
+            Sample s;
+            s.t_s = 100 + i * 0.001;
+            s.theta = 0.2 * std::sin(i * 0.002);
+            s.tau_rec = -0.4 * s.theta;
+            batch.append(s);
+            if (i == 2500) {
+                QVERIFY(recorder.append(batch));
+                batch.clear();
+                recorder.addEvent(QStringLiteral("K_max 0.4 → 0.45"));
+            }
+        }
+        QVERIFY(recorder.append(batch));
+        recorder.close();
+    }
+
+    connectSim();
+    QVERIFY(waitForSamples(100));
+    QString error;
+    QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
+    QVERIFY(m_window->isReplaying());
+    ReplayBar *bar = m_window->replayBar();
+    QVERIFY(bar->isVisible());
+    PlotPanel *plots = m_window->plotPanel();
+    ReplayController *replay = m_window->replayController();
+    QCOMPARE(plots->source(), &replay->buffer());
+    QVERIFY(!plots->followsLatest());
+    QCOMPARE(plots->events().size(), 1);
+    QVERIFY(m_window->pauseAction()->text().contains(QStringLiteral("Replay")));
+    QCOMPARE(replay->startTime(), 100.0);
+
+    // It opens on a full first window (here the whole 5 s recording).
+    QCOMPARE(replay->position(), replay->endTime());
+    QCOMPARE(plots->viewStart(), 100.0);
+    // Scrub with the slider: data up to the playhead; the view ends there once it is full.
+    bar->slider()->setValue(3000);
+    QCOMPARE(replay->position(), 103.0);
+    QCOMPARE(plots->dataEnd(), 103.0);
+    QCOMPARE(plots->viewEnd(), 110.0); // 10 s window, not yet full
+    m_window->setWindowSeconds(2);
+    QCOMPARE(plots->viewEnd(), 103.0);
+    QCOMPARE(plots->viewStart(), 101.0);
+    plots->repaintNow();
+    QVERIFY(plots->pointCount(Channel::Theta) > 0);
+    const QCPGraphData last = *(plots->graph(Channel::Theta)->data()->constEnd() - 1);
+    QVERIFY(last.key <= 103.001);
+    QVERIFY(bar->positionText().startsWith(QStringLiteral("3.00")));
+
+    // Play at 5×: the playhead moves; live samples keep arriving but are not shown.
+    bar->speedBox()->setCurrentIndex(bar->speedBox()->findData(5.0));
+    QCOMPARE(replay->speed(), 5.0);
+    m_window->pauseAction()->trigger(); // Space plays and pauses the replay
+    QVERIFY(replay->isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(replay->position() > 103.5, 10000);
+    m_window->pauseAction()->trigger();
+    QVERIFY(!replay->isPlaying());
+    QVERIFY(m_window->pauseAction()->isChecked());
+    // The bar's ▶ plays too, and the Play / Pause action follows it.
+    QTest::mouseClick(bar->playButton(), Qt::LeftButton);
+    QVERIFY(replay->isPlaying());
+    QVERIFY(!m_window->pauseAction()->isChecked());
+    QTest::mouseClick(bar->playButton(), Qt::LeftButton);
+    QVERIFY(!replay->isPlaying());
+    QVERIFY(m_window->pauseAction()->isChecked());
+
+    // One click back to live.
+    QTest::mouseClick(bar->liveButton(), Qt::LeftButton);
+    QVERIFY(!m_window->isReplaying());
+    QVERIFY(!bar->isVisible());
+    QCOMPARE(plots->source(), &m_window->liveBuffer());
+    QVERIFY(plots->followsLatest());
+    QCOMPARE(plots->viewEnd(), liveViewEnd(*m_window));
+
+    // A broken file is refused with a reason, and live stays live.
+    const QString broken = m_dir.filePath(QStringLiteral("broken.csv"));
+    QFile file(broken);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("a,b\n1,2\n");
+    file.close();
+    QVERIFY(!m_window->openRecording(broken, &error));
+    QVERIFY(!error.isEmpty());
+    QVERIFY(!m_window->isReplaying());
+}
+
+void TestMainWindow::disconnectKeepsPlotData()
+{
+    connectSim();
+    QVERIFY(waitForSamples(500));
+    m_window->disconnectDevice();
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Disconnected, kConnectMs);
+    const qsizetype kept = m_window->liveBuffer().size();
+    QVERIFY(kept >= 500);
+    m_window->plotPanel()->repaintNow();
+    QVERIFY(m_window->plotPanel()->pointCount(Channel::Theta) > 0);
+    QCOMPARE(m_window->liveBuffer().size(), kept);
+    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("disconnected"));
+    QVERIFY(!m_window->parameterEditor()->canPush());
+    QVERIFY(!m_window->simulatorDock()->isVisible());
+    QVERIFY(!m_window->recordingControls()->recordAction()->isEnabled());
+}
+
+void TestMainWindow::lostLinkKeepsDataAndReconnects()
+{
+#ifndef HATPIC_SIM_EXECUTABLE
+    QSKIP("hatpic-sim is not built");
+#else
+    // hatpic-sim on a pseudo-terminal, behind a symlink that outlives the process.
+    const QString link = m_dir.filePath(QStringLiteral("hatpic-pty"));
+    auto start = [&](QProcess &sim) {
+        sim.start(QStringLiteral(HATPIC_SIM_EXECUTABLE), {QStringLiteral("--link"), link});
+        QVERIFY(sim.waitForStarted(5000));
+        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine() || QFileInfo::exists(link), 10000);
+    };
+    QProcess sim;
+    start(sim);
+    ConnectOptions options;
+    options.port = link;
+    options.protocol = ProtocolChoice::V2;
+    m_window->connectTo(options);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
+    QVERIFY(!m_window->simulatorDock()->isVisible()); // not the in-process simulator
+    QVERIFY(waitForSamples(500));
+
+    sim.terminate(); // the device vanishes
+    QVERIFY(sim.waitForFinished(5000));
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Lost, kConnectMs);
+    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("LINK LOST"));
+    QVERIFY(m_window->linkBanner()->isVisible());
+    QVERIFY2(m_window->linkBanner()->text().contains(QStringLiteral("Reconnecting")),
+             qPrintable(m_window->linkBanner()->text()));
+    // Said once, in the banner, not clipped again in the status bar.
+    const QString message = m_window->statusBar()->currentMessage();
+    QVERIFY2(message.isEmpty() || !m_window->linkBanner()->text().contains(message),
+             qPrintable(message));
+    const qsizetype kept = m_window->liveBuffer().size();
+    QVERIFY(kept >= 500);
+    m_window->plotPanel()->repaintNow();
+    QVERIFY(m_window->plotPanel()->pointCount(Channel::Theta) > 0);
+
+    // The port returns: the session reconnects by itself and the banner goes away.
+    QProcess again;
+    start(again);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, 30000);
+    QVERIFY(!m_window->linkBanner()->isVisible());
+    QVERIFY(waitForSamples(200));
+    QVERIFY(m_window->liveBuffer().size() > kept); // old and new data, one time axis
+    m_window->disconnectDevice();
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Disconnected, kConnectMs);
+    again.terminate();
+    again.waitForFinished(5000);
+#endif
+}
+
+void TestMainWindow::degreesToggleReachesEveryView()
+{
+    QAction *degrees = m_window->degreesAction();
+    QVERIFY(!degrees->isChecked());
+    degrees->trigger();
+    QVERIFY(m_window->plotPanel()->angleInDegrees());
+    QVERIFY(m_window->stiffnessView()->angleInDegrees());
+    QVERIFY(m_window->parameterEditor()->angleInDegrees());
+    // The editor's own check box drives the same switch.
+    m_window->parameterEditor()->setAngleInDegrees(false);
+    QTRY_VERIFY(!degrees->isChecked());
+}
+
+void TestMainWindow::settingsPersist()
+{
+    m_window->connectionBar()->setOptions(QStringLiteral("/dev/ttyTEST0"), 115200,
+                                          ProtocolChoice::Legacy);
+    m_window->degreesAction()->setChecked(true);
+    m_window->plotPanel()->setWindowLength(30);
+    const QString profile = m_dir.filePath(QStringLiteral("Persisted.json"));
+    QVERIFY(m_window->profileController()->saveTo(profile));
+    QVERIFY(m_window->close());
+
+    m_window = std::make_unique<MainWindow>();
+    ConnectionBar *bar = m_window->connectionBar();
+    QCOMPARE(bar->port(), QStringLiteral("/dev/ttyTEST0"));
+    QCOMPARE(bar->baud(), 115200);
+    QCOMPARE(bar->protocol(), ProtocolChoice::Legacy);
+    QVERIFY(m_window->plotPanel()->angleInDegrees());
+    QCOMPARE(m_window->plotPanel()->windowLength(), 30.0);
+    QCOMPARE(m_window->profileController()->filePath(), profile);
+}
+
+void TestMainWindow::keyboardShortcuts()
+{
+    {
+        // Every shortcut is in view at once: the table needs no scrolling.
+        ShortcutsDialog dialog(m_window->shortcutActions(), m_window.get());
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        auto *table = dialog.findChild<QTableWidget *>();
+        QVERIFY(table);
+        QVERIFY(table->rowCount() >= 15);
+        QVERIFY2(!table->verticalScrollBar()->isVisible(),
+                 qPrintable(QStringLiteral("%1 rows in %2 px")
+                                .arg(table->rowCount())
+                                .arg(table->viewport()->height())));
+    }
+    const QStringList lines = ShortcutsDialog::describe(m_window->shortcutActions());
+    auto has = [&](const QKeySequence &key) {
+        const QString text = key.toString(QKeySequence::NativeText);
+        return std::any_of(lines.cbegin(), lines.cend(),
+                           [&](const QString &l) { return l.contains(text); });
+    };
+    QVERIFY(has(QKeySequence(Qt::CTRL | Qt::Key_K)));
+    QVERIFY(has(QKeySequence(Qt::CTRL | Qt::Key_Return)));
+    QVERIFY(has(QKeySequence(Qt::Key_Space)));
+    QVERIFY(has(QKeySequence(Qt::CTRL | Qt::Key_R)));
+    QVERIFY(has(QKeySequence(Qt::CTRL | Qt::Key_Z)));
+    QVERIFY(has(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)));
+    QVERIFY(has(m_window->profileController()->abToggleAction()->shortcut()));
+
+    // Ctrl+K connects through the real shortcut machinery.
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    m_window->plotPanel()->customPlot()->setFocus();
+    QTest::keyClick(m_window.get(), Qt::Key_K, Qt::ControlModifier);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
+    QTest::keyClick(m_window->plotPanel()->customPlot(), Qt::Key_Space);
+    QVERIFY(m_window->isLivePaused());
+    QTest::keyClick(m_window.get(), Qt::Key_P, Qt::ControlModifier);
+    QVERIFY(!m_window->isLivePaused());
+    QTest::keyClick(m_window.get(), Qt::Key_K, Qt::ControlModifier);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Disconnected, kConnectMs);
+}
+
+void TestMainWindow::narrowWindowKeepsStateTagVisible()
+{
+    // On a laptop-sized window the long device identity must give way (elided), not push the
+    // state tag — the one place LINK LOST shows — into the toolbar's overflow menu.
+    m_window->resize(1000, 700);
+    connectSim();
+    auto *tag = m_window->findChild<QLabel *>(QStringLiteral("linkState"));
+    QVERIFY(tag);
+    QCOMPARE(tag->text(), QStringLiteral("connected"));
+    QTRY_VERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("τ limit")));
+    // Let the toolbars lay out the new identity (nested layouts: a few rounds).
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QVERIFY(tag->isVisible());
+    const QRect inWindow(tag->mapTo(m_window.get(), QPoint(0, 0)), tag->size());
+    QVERIFY2(m_window->rect().contains(inWindow),
+             qPrintable(QStringLiteral("tag at x %1..%2, window %3 wide")
+                            .arg(inWindow.left())
+                            .arg(inWindow.right())
+                            .arg(m_window->width())));
+    auto *identity = m_window->findChild<QLabel *>(QStringLiteral("deviceIdentity"));
+    QVERIFY(identity);
+    QTRY_VERIFY(identity->isVisible());
+    // The full identity stays available (tooltip, identityText()).
+    QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("τ limit")));
+    QCOMPARE(identity->toolTip(), m_window->linkStatus()->identityText());
+}
+
+void TestMainWindow::narrowReplayBarKeepsItsSlider()
+{
+    // A long file name and source must not squeeze the scrub slider to nothing, nor widen the
+    // centre of a laptop-sized window at the editor's expense.
+    const QString path = m_dir.filePath(
+        QStringLiteral("a-rather-long-recording-name-from-the-morning-session-trial-07.csv"));
+    {
+        RecordingWriter recorder;
+        RecordingMetadata meta;
+        meta.start = QDateTime::currentDateTimeUtc();
+        meta.source = QStringLiteral("hatpicctl stream --csv on the lab bench computer");
+        QVERIFY2(recorder.open(path, meta), qPrintable(recorder.error()));
+        SampleBatch batch;
+        for (int i = 0; i < 3000; ++i) {
+            Sample s;
+            s.t_s = i * 0.001;
+            batch.append(s);
+        }
+        QVERIFY(recorder.append(batch));
+        recorder.close();
+    }
+    m_window->resize(1000, 700);
+    QString error;
+    QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
+    ReplayBar *bar = m_window->replayBar();
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QVERIFY(bar->isVisible());
+    QVERIFY2(bar->slider()->width() >= 120, qPrintable(QString::number(bar->slider()->width())));
+    QVERIFY2(bar->minimumSizeHint().width() < 600,
+             qPrintable(QString::number(bar->minimumSizeHint().width())));
+    auto *title = bar->findChild<QLabel *>(QStringLiteral("replayTitle"));
+    QVERIFY(title);
+    QVERIFY(title->toolTip().contains(QStringLiteral("morning-session-trial-07.csv")));
+    QVERIFY(title->toolTip().contains(QStringLiteral("lab bench")));
+}
+
+void TestMainWindow::hugeReplaySpanKeepsTheWindow_data()
+{
+    QTest::addColumn<QByteArray>("csv");
+    QTest::addColumn<double>("middle"); // t at the slider's middle
+    QTest::newRow("0 to 1e300 s") << QByteArray("t_s,theta\n0,0\n5e299,0.1\n1e300,0\n") << 5e299;
+    QTest::newRow("35 days (ms overflow an int)")
+        << QByteArray("t_s,theta\n0,0\n1500000,0.1\n3000000,0\n") << 1.5e6;
+    QTest::newRow("beyond the largest double")
+        << QByteArray("t_s,theta\n-1.7e308,0\n0,0.1\n1.7e308,0\n") << 0.0;
+}
+
+void TestMainWindow::hugeReplaySpanKeepsTheWindow()
+{
+    // Issue 10: a recording whose t_s spans 0…1e300 widened the window to 5474 px (a 300-digit
+    // time label) and saved that size for every later launch; spans over ~24.8 days overflowed
+    // the slider's int.
+    QFETCH(QByteArray, csv);
+    QFETCH(double, middle);
+    const QString path = m_dir.filePath(QStringLiteral("span.csv"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(csv);
+    }
+    const QRect available = m_window->screen()->availableGeometry();
+    m_window->resize(m_window->minimumSizeHint().expandedTo(QSize(1100, 700))); // room for the bar
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    const int width = m_window->width();
+    const int minimumWidth = m_window->minimumSizeHint().width();
+
+    QString error;
+    QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
+    ReplayBar *bar = m_window->replayBar();
+    ReplayController *replay = m_window->replayController();
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    m_window->plotPanel()->repaintNow();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+
+    // Nothing widens the window: not the replay bar, not the plots' axis labels.
+    QCOMPARE(m_window->width(), width);
+    QVERIFY2(m_window->minimumSizeHint().width() <= width,
+             qPrintable(QString::number(m_window->minimumSizeHint().width())));
+    QVERIFY2(bar->minimumSizeHint().width() < 700,
+             qPrintable(QString::number(bar->minimumSizeHint().width())));
+    QVERIFY2(bar->positionText().size() <= 24, qPrintable(bar->positionText()));
+    auto *plot = m_window->plotPanel()->findChild<QCustomPlot *>();
+    QVERIFY(plot);
+    for (QCPAxisRect *rect : plot->axisRects()) {
+        for (QCPAxis *axis : rect->axes()) {
+            for (const QString &label : axis->tickVectorLabels())
+                QVERIFY2(label.size() <= 16, qPrintable(label));
+        }
+    }
+
+    // The slider covers the whole span in an int, both ways.
+    QSlider *slider = bar->slider();
+    QVERIFY(slider->maximum() > 0 && slider->maximum() <= ReplayBar::kMaxSliderSteps);
+    slider->setValue(slider->maximum());
+    QCOMPARE(replay->position(), replay->endTime());
+    slider->setValue(slider->maximum() / 2);
+    QVERIFY2(std::abs(replay->position() - middle) <= 1e-6 * replay->endTime(),
+             qPrintable(QString::number(replay->position())));
+    replay->setPosition(replay->startTime());
+    QCOMPARE(slider->value(), 0);
+    replay->setPosition(replay->endTime());
+    QCOMPARE(slider->value(), slider->maximum());
+
+    // The next launch gets a window that fits the screen.
+    QVERIFY(m_window->close());
+    m_window = std::make_unique<MainWindow>();
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY2(m_window->width() <= std::max(available.width(), minimumWidth),
+             qPrintable(QString::number(m_window->width())));
+}
+
+void TestMainWindow::oversizedSettingsAreFitted_data()
+{
+    QTest::addColumn<bool>("legacyKey"); // window/geometry as saved by earlier versions
+    QTest::newRow("window/rect") << false;
+    QTest::newRow("window/geometry") << true;
+}
+
+void TestMainWindow::oversizedSettingsAreFitted()
+{
+    QFETCH(bool, legacyKey);
+    m_window.reset();
+    const QRect available = QGuiApplication::primaryScreen()->availableGeometry();
+    const QRect huge(available.topLeft() + QPoint(-3000, 50), QSize(6000, 4000));
+    {
+        QSettings settings;
+        settings.clear();
+        if (legacyKey) {
+            QWidget big;
+            big.setGeometry(huge);
+            settings.setValue(QStringLiteral("window/geometry"), big.saveGeometry());
+        } else {
+            settings.setValue(QStringLiteral("window/rect"), huge);
+        }
+    }
+    m_window = std::make_unique<MainWindow>();
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    const QSize least = m_window->minimumSize();
+    QVERIFY2(m_window->width() <= std::max(available.width(), least.width()),
+             qPrintable(QString::number(m_window->width())));
+    QVERIFY2(m_window->height() <= std::max(available.height(), least.height()),
+             qPrintable(QString::number(m_window->height())));
+    // And what it saves fits too, whatever size it had.
+    m_window->resize(6000, 4000);
+    QVERIFY(m_window->close());
+    const QRect saved = QSettings().value(QStringLiteral("window/rect")).toRect();
+    QVERIFY2(available.contains(saved), qPrintable(QStringLiteral("%1 %2 %3×%4")
+                                                       .arg(saved.x())
+                                                       .arg(saved.y())
+                                                       .arg(saved.width())
+                                                       .arg(saved.height())));
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

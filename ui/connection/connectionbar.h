@@ -1,0 +1,58 @@
+// The row that opens a device: port chooser ("Simulated HATPIC" first, then the serial ports,
+// refreshed as devices come and go; a pty path can be typed), baud, protocol, connect button.
+#pragma once
+
+#include "session/sessiontypes.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QPushButton;
+class QTimer;
+
+namespace hatpic {
+
+class ConnectionBar : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr int kRefreshMs = 1500; //!< port list refresh period [ms]
+
+    explicit ConnectionBar(QWidget *parent = nullptr);
+
+    //! The options the controls describe (port "sim" for the simulator).
+    ConnectOptions options() const;
+    //! Selects port (adding it when the list does not have it), baud and protocol.
+    void setOptions(const QString &port, qint32 baud, ProtocolChoice protocol);
+
+    QString port() const;
+    qint32 baud() const; //!< 0 = the protocol's default
+    ProtocolChoice protocol() const;
+
+    //! Follows the session: the button says Connect or Disconnect, the choosers lock.
+    void setState(SessionState state);
+
+    //! Re-reads the serial ports now (the timer does it every kRefreshMs).
+    void refreshPorts();
+    QStringList listedPorts() const; //!< "sim" first, then device paths
+
+    //! What the button does: connect with options(), or disconnect.
+    void toggleConnection();
+
+    QPushButton *connectButton() const { return m_button; }
+    QComboBox *portBox() const { return m_port; }
+
+Q_SIGNALS:
+    void connectRequested(const hatpic::ConnectOptions &options);
+    void disconnectRequested();
+
+private:
+    QComboBox *m_port = nullptr;
+    QComboBox *m_baud = nullptr;
+    QComboBox *m_protocol = nullptr;
+    QPushButton *m_button = nullptr;
+    QTimer *m_refresh = nullptr;
+    SessionState m_state = SessionState::Disconnected;
+};
+
+} // namespace hatpic

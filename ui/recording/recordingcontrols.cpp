@@ -1,0 +1,158 @@
+#include "recording/recordingcontrols.h"
+
+#include <QAction>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QPixmap>
+#include <QStandardPaths>
+#include <QToolButton>
+
+namespace hatpic {
+
+namespace {
+
+QIcon recordIcon()
+{
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(120, 0, 0), 1.5));
+    painter.setBrush(QColor(211, 47, 47));
+    painter.drawEllipse(QRectF(6, 6, 20, 20));
+    return QIcon(pixmap);
+}
+
+} // namespace
+
+RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
+{
+    m_action = new QAction(recordIcon(), tr("&Record…"), this);
+    m_action->setObjectName(QStringLiteral("recordAction"));
+    m_action->setCheckable(true);
+    m_action->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_action->setToolTip(tr("Record the live data to a CSV file (Ctrl+R); again to stop"));
+    connect(m_action, &QAction::triggered, this, &RecordingControls::onTriggered);
+
+    m_button = new QToolButton(this);
+    m_button->setDefaultAction(m_action);
+    m_button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_label = new QLabel(this);
+    m_label->setObjectName(QStringLiteral("recordingStatus"));
+    m_label->setMinimumWidth(m_label->fontMetrics().horizontalAdvance(
+        QStringLiteral("● 00:00 · 999.9 MB · 999999 samples")));
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 0, 4, 0);
+    layout->addWidget(m_button);
+    layout->addWidget(m_label, 1);
+
+    m_chooser = [this](const QString &suggested) {
+        return QFileDialog::getSaveFileName(this, tr("Record to"), inExistingFolder(suggested),
+                                            tr("CSV recordings (*.csv)"));
+    };
+    refresh();
+}
+
+QString RecordingControls::suggestedPath(const QString &directory)
+{
+    QString dir = directory;
+    if (dir.isEmpty())
+        dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (dir.isEmpty())
+        dir = QDir::homePath();
+    const QString name =
+        QDateTime::currentDateTime().toString(QStringLiteral("'hatpic-'yyyyMMdd-HHmmss'.csv'"));
+    return QDir(dir).filePath(name);
+}
+
+QString RecordingControls::inExistingFolder(const QString &path)
+{
+    const QFileInfo info(path);
+    if (info.absoluteDir().exists())
+        return path;
+    return QDir::home().filePath(info.fileName());
+}
+
+void RecordingControls::onTriggered()
+{
+    if (m_status.active) {
+        Q_EMIT stopRequested();
+    } else {
+        QString path = m_chooser ? m_chooser(suggestedPath(m_directory)) : QString();
+        if (!path.isEmpty()) {
+            if (QFileInfo(path).suffix().isEmpty())
+                path += QStringLiteral(".csv");
+            m_directory = QFileInfo(path).absolutePath();
+            Q_EMIT startRequested(path);
+        }
+    }
+    refresh(); // the check state follows the session, not the click
+}
+
+void RecordingControls::setStatus(const RecordingStatus &status)
+{
+    m_status = status;
+    refresh();
+}
+
+void RecordingControls::setCanRecord(bool connected)
+{
+    m_canRecord = connected;
+    refresh();
+}
+
+void RecordingControls::refresh()
+{
+    m_action->setChecked(m_status.active);
+    m_action->setEnabled(m_canRecord || m_status.active);
+    m_action->setText(m_status.active ? tr("Stop &recording") : tr("&Record…"));
+    m_label->setText(statusText());
+    m_label->setToolTip(m_status.path);
+    m_label->setStyleSheet(m_status.active ? QStringLiteral("color: #c62828; font-weight: bold;")
+                                           : QString());
+}
+
+QString RecordingControls::statusText() const
+{
+    if (m_status.active) {
+        return tr("● %1 · %2 · %3 samples")
+            .arg(formatDuration(m_status.seconds), formatBytes(m_status.bytes))
+            .arg(m_status.samples);
+    }
+    if (!m_status.error.isEmpty())
+        return tr("Recording stopped: %1").arg(m_status.error);
+    if (!m_status.path.isEmpty())
+        return tr("Saved %1 (%2)")
+            .arg(QFileInfo(m_status.path).fileName(), formatBytes(m_status.bytes));
+    return {};
+}
+
+QString RecordingControls::formatBytes(qint64 bytes)
+{
+    if (bytes < 1000)
+        return tr("%1 B").arg(bytes);
+    if (bytes < 1000 * 1000)
+        return tr("%1 kB").arg(bytes / 1e3, 0, 'f', 1);
+    if (bytes < 1000LL * 1000 * 1000)
+        return tr("%1 MB").arg(bytes / 1e6, 0, 'f', 1);
+    return tr("%1 GB").arg(bytes / 1e9, 0, 'f', 2);
+}
+
+QString RecordingControls::formatDuration(double seconds)
+{
+    const qint64 total = static_cast<qint64>(std::max(seconds, 0.0));
+    const qint64 h = total / 3600;
+    const qint64 m = (total / 60) % 60;
+    const qint64 s = total % 60;
+    auto two = [](qint64 v) { return QString::number(v).rightJustified(2, u'0'); };
+    if (h > 0)
+        return QString::number(h) % u':' % two(m) % u':' % two(s);
+    return two(m) % u':' % two(s);
+}
+
+} // namespace hatpic
