@@ -13,7 +13,7 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
-#include <string>
+#include <string_view>
 
 // Q_INIT_RESOURCE must be used outside any namespace.
 static void initPresetResources()
@@ -86,7 +86,8 @@ void readDevice(const QJsonObject &root, DeviceParams &device, QStringList &erro
         QString names;
         for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
             names += i == 0 ? u""_s : i + 1 < DeviceParams::kFieldCount ? u", "_s : u" and "_s;
-            names += QString::fromStdString(std::string(deviceFieldName(i)));
+            const std::string_view name = deviceFieldName(i);
+            names += QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
         }
         errors.append(u"device: missing, must be an object with " + names);
         return;
