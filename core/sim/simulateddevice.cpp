@@ -471,4 +471,14 @@ QString SimulatedDevice::stateWarning() const
     return d->stateWarning;
 }
 
+std::unique_ptr<FaultInjector> makeFaultInjector(const SimulatedDevice::Config &config)
+{
+    if (config.faults.isEmpty())
+        return nullptr;
+    return std::make_unique<FaultInjector>(config.faults, config.seed,
+                                           config.protocol == WireProtocol::Legacy
+                                               ? FaultInjector::Framing::Legacy
+                                               : FaultInjector::Framing::V2);
+}
+
 } // namespace hatpic
