@@ -18,6 +18,7 @@
 #include <optional>
 
 using namespace hatpic;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -216,10 +217,12 @@ int main(int argc, char *argv[])
 
     auto printFaults = [&host, &options] {
         if (const FaultInjector *faults = host.faults()) {
-            std::fprintf(stderr, "hatpic-sim: faults %s, seed %llu:\n%s\n",
-                         qPrintable(faults->spec().toString()),
-                         static_cast<unsigned long long>(options->config.seed),
-                         qPrintable(faults->summary()));
+            QString text = u"faults "_s + faults->spec().toString() + u", seed "_s +
+                           QString::number(options->config.seed) + u", after "_s +
+                           QString::number(host.device().time(), 'f', 3) +
+                           u" s of simulated time:\n"_s + faults->summary();
+            text.replace(u'\n', u"\nhatpic-sim:   "_s);
+            printError(text);
             std::fflush(stderr);
         }
     };

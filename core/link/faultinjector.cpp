@@ -173,19 +173,19 @@ FaultCounts &FaultCounts::operator+=(const FaultCounts &o)
     cut += o.cut;
     unframed += o.unframed;
     streamLost += o.streamLost;
+    streamCorrupted += o.streamCorrupted;
     streamDuplicated += o.streamDuplicated;
     return *this;
 }
 
 QString describeFaultCounts(const FaultCounts &c)
 {
-    QString text = QString::number(c.frames) % u" frames, " % QString::number(c.dropped) %
-                   u" dropped, " % QString::number(c.corrupted) % u" corrupted, " %
-                   QString::number(c.duplicated) % u" duplicated, " % QString::number(c.delayed) %
-                   u" delayed, " % QString::number(c.cut) % u" lost to cuts";
-    if (c.unframed > 0)
-        text += u", " % QString::number(c.unframed) % u" bytes unframed";
-    return text;
+    return u"frames=" % QString::number(c.frames) % u" dropped=" % QString::number(c.dropped) %
+           u" corrupted=" % QString::number(c.corrupted) % u" duplicated=" %
+           QString::number(c.duplicated) % u" delayed=" % QString::number(c.delayed) % u" cut=" %
+           QString::number(c.cut) % u" stream_lost=" % QString::number(c.streamLost) %
+           u" stream_corrupted=" % QString::number(c.streamCorrupted) % u" stream_duplicated=" %
+           QString::number(c.streamDuplicated) % u" unframed_bytes=" % QString::number(c.unframed);
 }
 
 FaultInjector::FaultInjector(const FaultSpec &spec, quint64 seed, Framing framing)
@@ -203,8 +203,10 @@ bool FaultInjector::cutAt(double now) const
 
 QString FaultInjector::summary() const
 {
-    return u"device→host: " % describeFaultCounts(toHostCounts()) % u"\nhost→device: " %
-           describeFaultCounts(toDeviceCounts());
+    return u"injected device→host: " % describeFaultCounts(toHostCounts()) %
+           u"\ninjected host→device: " % describeFaultCounts(toDeviceCounts()) %
+           u"\nseen device→host: " % describeFaultCounts(toHostSeen()) % u"\nseen host→device: " %
+           describeFaultCounts(toDeviceSeen());
 }
 
 FaultInjector::Lane::Lane(const FaultSpec::Lane &faults, const FaultInjector &owner, quint64 seed)
@@ -291,6 +293,7 @@ void FaultInjector::Lane::frame(QByteArray frame, double now)
     FaultCounts copy;
     if (corruptDraw < m_faults.corrupt && corrupt(frame, bitDraw)) {
         effect.corrupted = 1;
+        effect.streamCorrupted = stream ? 1 : 0;
     } else if (dupDraw < m_faults.dup) {
         copy.duplicated = 1;
         copy.streamDuplicated = stream ? 1 : 0;

@@ -65,9 +65,11 @@ struct FaultCounts
     quint64 delayed = 0;    //!< held back for the delay (frames behind them wait too)
     quint64 cut = 0;        //!< lost to a cut
     quint64 unframed = 0;   //!< bytes passed on untouched: no delimiter within kMaxFrameBytes
-    //! Of the dropped and cut frames, and of the duplicated ones, those that were stream
-    //! frames: v2 TELEMETRY (which the receiver numbers by seq), every legacy frame.
+    //! Of the dropped and cut frames, the corrupted and the duplicated ones, those that were
+    //! stream frames: v2 TELEMETRY (which the receiver numbers by seq), every legacy frame. A
+    //! v2 receiver misses streamLost + streamCorrupted frames by seq.
     quint64 streamLost = 0;
+    quint64 streamCorrupted = 0;
     quint64 streamDuplicated = 0;
     //! Frames the receiver never gets: dropped + cut.
     quint64 lost() const { return dropped + cut; }
@@ -101,7 +103,8 @@ public:
     const FaultCounts &toDeviceSeen() const { return m_toDevice.seen(); }
     //! Whether `now` falls in a cut [s].
     bool cutAt(double now) const;
-    //! Two lines, "device→host: 120000 frames, 1187 dropped, …" and "host→device: …".
+    //! Four lines, "injected device→host: frames=120000 dropped=1187 …", the same for
+    //! host→device, then "seen device→host: …" and "seen host→device: …".
     QString summary() const;
 
 private:
@@ -144,7 +147,9 @@ private:
     Lane m_toDevice;
 };
 
-//! "device→host: … " text of one direction's counts (FaultInjector::summary's lines).
+//! "frames=120000 dropped=1187 corrupted=… duplicated=… delayed=… cut=… stream_lost=…
+//! stream_corrupted=… stream_duplicated=… unframed_bytes=…": one direction's counts, as
+//! summary() gives them.
 QString describeFaultCounts(const FaultCounts &counts);
 
 } // namespace hatpic

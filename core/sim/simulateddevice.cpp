@@ -466,6 +466,11 @@ quint64 SimulatedDevice::telemetryDropped() const
     return d->core ? d->core->telemetryDropped() : d->legacyDropped;
 }
 
+quint64 SimulatedDevice::paramsApplied() const
+{
+    return d->core ? d->core->paramsApplied() : 0;
+}
+
 QString SimulatedDevice::stateWarning() const
 {
     return d->stateWarning;

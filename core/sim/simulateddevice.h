@@ -83,6 +83,8 @@ public:
     quint16 linkLimitedRate() const;
     //! Telemetry frames dropped because the output queue was full (seen as seq gaps).
     quint64 telemetryDropped() const;
+    //! SET_PARAMS blocks the device accepted (v2; a retry it answered again does not count).
+    quint64 paramsApplied() const;
     //! Why the state file (or config.params) was not used at power-up; empty when fine.
     QString stateWarning() const;
 

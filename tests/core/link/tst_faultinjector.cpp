@@ -185,6 +185,7 @@ private Q_SLOTS:
         QCOMPARE(repeats, c.duplicated);
         QCOMPARE(c.streamDuplicated, c.duplicated);
         QCOMPARE(c.streamLost, c.dropped);
+        QCOMPARE(c.streamCorrupted, c.corrupted);
         QCOMPARE(injector.toHostSeen(), c); // everything released by now
     }
 
