@@ -3,6 +3,7 @@
 // Prints the slave path as the first stdout line, then runs until SIGINT/SIGTERM (exit 0).
 // With --faults, prints what it injected on stderr at exit and on SIGUSR1.
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
+#include "common/faultreport.h"
 #include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
 #include "sim/handinput.h"
@@ -18,7 +19,6 @@
 #include <optional>
 
 using namespace hatpic;
-using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -216,15 +216,8 @@ int main(int argc, char *argv[])
                  options->config.throttle ? "" : " (not throttled)");
 
     auto printFaults = [&host, &options] {
-        if (const FaultInjector *faults = host.faults()) {
-            QString text = u"faults "_s + faults->spec().toString() + u", seed "_s +
-                           QString::number(options->config.seed) + u", after "_s +
-                           QString::number(host.device().time(), 'f', 3) +
-                           u" s of simulated time:\n"_s + faults->summary();
-            text.replace(u'\n', u"\nhatpic-sim:   "_s);
-            printError(text);
-            std::fflush(stderr);
-        }
+        if (const FaultInjector *faults = host.faults())
+            printFaultReport("hatpic-sim", *faults, options->config.seed);
     };
     if (host.faults() && !reportOnSignal(printFaults)) {
         printError(QStringLiteral("Cannot set up signal handling."));

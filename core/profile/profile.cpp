@@ -1,5 +1,7 @@
 #include "profile.h"
 
+#include "jsonkeys.h"
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -343,14 +345,19 @@ ProfileReadResult parseProfile(const QByteArray &json)
         result.errors.append(u"not a profile: the top level must be a JSON object, got " + got);
         return result;
     }
+    if (const QString key = firstDuplicateKey(json); !key.isEmpty()) {
+        result.errors.append(u"duplicate key \"" + key +
+                             u"\": a key may appear once (which value was meant?)");
+        return result;
+    }
     const QJsonObject root = document.object();
+    // Not a profile at all: its error alone, no word about keys a profile does not have.
+    if (!checkHeader(root, result.errors))
+        return result;
 
     static constexpr std::array<QStringView, 6> kTopKeys = {u"format", u"version", u"name",
                                                             u"notes",  u"device",  u"host"};
     warnUnknownKeys(root, kTopKeys, QString(), result.warnings);
-
-    if (!checkHeader(root, result.errors))
-        return result;
 
     Profile profile;
     readOptionalString(root, u"name", profile.name, result.errors);
