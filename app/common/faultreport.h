@@ -16,7 +16,7 @@ inline void printFaultReport(const char *program, const FaultInjector &faults, q
     QString text = QStringLiteral("faults ") + faults.spec().toString() +
                    QStringLiteral(", seed ") + QString::number(seed) + u':' + u'\n' +
                    faults.summary();
-    text.replace(u'\n', QString::fromLatin1(program) + QStringLiteral(":   ").prepend(u'\n'));
+    text.replace(u'\n', u'\n' + QString::fromLatin1(program) + QStringLiteral(":   "));
     std::fprintf(stderr, "%s: %s\n", program, qPrintable(text));
     std::fflush(stderr);
 }
