@@ -613,7 +613,7 @@ void TestProfile::duplicateKeysRefused_data()
         << u"device.K_max"_s;
     QTest::newRow("unknown key twice, in an array's object")
         << QByteArray(R"({"format": "hatpic-profile", "version": 1, )" + device +
-                      R"(}, "extra": [1, {"a": 1, "b": "}\"{", "a": 2}]})")
+                      "}, \"extra\": [1, {\"a\": 1, \"b\": \"}\\\"{\", \"a\": 2}]}")
         << u"extra[].a"_s;
 }
 
@@ -627,7 +627,8 @@ void TestProfile::duplicateKeysRefused()
                                         u"\": a key may appear once (which value was meant?)"_s});
     // The same keys once each (same names in different objects) are fine.
     QVERIFY(hatpic::firstDuplicateKey(
-                R"({"a": {"x": 1}, "b": {"x": 1}, "c": [{"x": 1}, {"x": 2}], "s": "a\"a"})")
+                "{\"a\": {\"x\": 1}, \"b\": {\"x\": 1}, \"c\": [{\"x\": 1}, {\"x\": 2}], "
+                "\"s\": \"a\\\"a\"}")
                 .isEmpty());
 }
 
