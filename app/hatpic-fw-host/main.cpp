@@ -4,6 +4,7 @@
 // Prints the pty's slave path as the first stdout line, then runs until SIGINT/SIGTERM: the
 // control thread stops, the servo's torque goes off, the link is removed, exit 0. Bad options:
 // one sentence on stderr, exit 4. The servo does not answer or no pty: exit 1.
+#include "common/faultreport.h"
 #include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
 #include "fwhost/firmwarehost.h"
@@ -78,7 +79,12 @@ std::optional<Options> parseOptions(const QCoreApplication &app)
     const auto link =
         option("link", "Symlink to create to the terminal (removed on exit).", "PATH");
     const auto quiet = option("quiet", "No timing reports on stderr.");
-    parser.addOptions({servo, baud, id, center, timeout, rate, state, link, quiet});
+    const auto faults = option("faults",
+                               "Faults to inject on the pty link, e.g. drop=0.01,cut=30s:2s "
+                               "(docs/simulator.md); a summary at exit and on SIGUSR1.",
+                               "SPEC");
+    const auto seed = option("seed", "Seed of the faults (default 1).", "N", "1");
+    parser.addOptions({servo, baud, id, center, timeout, rate, state, link, quiet, faults, seed});
 
     if (!parser.parse(app.arguments())) {
         QString text = parser.errorText();
@@ -145,6 +151,21 @@ std::optional<Options> parseOptions(const QCoreApplication &app)
         }
     }
     options.quiet = parser.isSet(quiet);
+    if (parser.isSet(faults)) {
+        QString error;
+        const std::optional<FaultSpec> spec = FaultSpec::parse(parser.value(faults), &error);
+        if (!spec) {
+            printError(error);
+            return std::nullopt;
+        }
+        config.faults = *spec;
+    }
+    config.faultSeed = parser.value(seed).toULongLong(&ok);
+    if (!ok) {
+        printError(QStringLiteral("The seed \"%1\" must be a non-negative whole number.")
+                       .arg(parser.value(seed)));
+        return std::nullopt;
+    }
     return options;
 }
 
@@ -190,6 +211,15 @@ int main(int argc, char *argv[])
                  int(c.servoId), qPrintable(c.servoPath), c.servoBaud, int(c.centerTick),
                  c.servoTimeoutUs, c.rateHz);
 
+    auto printFaults = [&host, &c] {
+        if (const FaultInjector *faults = host.faults())
+            printFaultReport("hatpic-fw-host", *faults, c.faultSeed);
+    };
+    if (host.faults() && !reportOnSignal(printFaults)) {
+        printError(QStringLiteral("Cannot set up signal handling."));
+        return kExitFailure;
+    }
+
     QTimer report;
     if (!options->quiet) {
         QObject::connect(&report, &QTimer::timeout, &app,
@@ -200,7 +230,8 @@ int main(int argc, char *argv[])
     const int code = app.exec();
     report.stop();
     const FirmwareHost::Report total = host.totalReport();
-    host.stop(); // control thread joined, then torque off
+    printFaults(); // before stop(), which ends the link
+    host.stop();   // control thread joined, then torque off
     if (!options->quiet) {
         printReport("total", total);
         std::fprintf(stderr, "hatpic-fw-host: control thread %s; torque off\n",

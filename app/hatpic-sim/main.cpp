@@ -1,7 +1,9 @@
 // hatpic-sim: a simulated HATPIC joystick on a pseudo-terminal, in real time.
 //
 // Prints the slave path as the first stdout line, then runs until SIGINT/SIGTERM (exit 0).
+// With --faults, prints what it injected on stderr at exit and on SIGUSR1.
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
+#include "common/faultreport.h"
 #include "common/ptyprogram.h"
 #include "common/quitonsignal.h"
 #include "sim/handinput.h"
@@ -63,7 +65,8 @@ std::optional<Options> parseOptions(const QCoreApplication &app)
                        "or hand:ANGLE (N·m, Hz, rad)."),
         QStringLiteral("SPEC"), QStringLiteral("idle"));
     const QCommandLineOption seedOption(QStringLiteral("seed"),
-                                        QStringLiteral("Seed of the load-reading noise."),
+                                        QStringLiteral("Seed of the load-reading noise and "
+                                                       "of the faults."),
                                         QStringLiteral("N"), QStringLiteral("1"));
     const QCommandLineOption stateOption(
         QStringLiteral("state"),
@@ -74,8 +77,14 @@ std::optional<Options> parseOptions(const QCoreApplication &app)
         QStringLiteral("Symlink to create to the terminal (removed on "
                        "exit)."),
         QStringLiteral("PATH"));
+    const QCommandLineOption faultsOption(
+        QStringLiteral("faults"),
+        QStringLiteral("Faults to inject on the link, e.g. "
+                       "drop=0.01,corrupt=0.005,dup=0.002,delay=0.01:20ms,cut=30s:2s,hdrop=0.01 "
+                       "(docs/simulator.md)."),
+        QStringLiteral("SPEC"));
     parser.addOptions({protocolOption, rateOption, baudOption, noThrottleOption, handOption,
-                       seedOption, stateOption, linkOption});
+                       seedOption, stateOption, linkOption, faultsOption});
 
     if (!parser.parse(app.arguments())) {
         QString text = parser.errorText();
@@ -159,6 +168,16 @@ std::optional<Options> parseOptions(const QCoreApplication &app)
             return std::nullopt;
         }
     }
+    if (parser.isSet(faultsOption)) {
+        QString faultError;
+        const std::optional<FaultSpec> faults =
+            FaultSpec::parse(parser.value(faultsOption), &faultError);
+        if (!faults) {
+            printError(faultError);
+            return std::nullopt;
+        }
+        config.faults = *faults;
+    }
     if (parser.isSet(linkOption)) {
         options.link = parser.value(linkOption);
         if (options.link.isEmpty()) {
@@ -196,7 +215,17 @@ int main(int argc, char *argv[])
                  options->config.controlRateHz, host.device().baud(),
                  options->config.throttle ? "" : " (not throttled)");
 
+    auto printFaults = [&host, &options] {
+        if (const FaultInjector *faults = host.faults())
+            printFaultReport("hatpic-sim", *faults, options->config.seed);
+    };
+    if (host.faults() && !reportOnSignal(printFaults)) {
+        printError(QStringLiteral("Cannot set up signal handling."));
+        return kExitFailure;
+    }
+
     const int code = app.exec();
     host.stop();
+    printFaults();
     return code == 0 ? kExitOk : kExitFailure;
 }

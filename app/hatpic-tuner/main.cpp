@@ -64,7 +64,16 @@ int main(int argc, char *argv[])
                                        QStringLiteral("Close the window after SECONDS (for "
                                                       "scripted screenshots and measurements)."),
                                        QStringLiteral("SECONDS"));
-    parser.addOptions({port, baud, protocol, profile, hand, repaint, quitAfter});
+    const QCommandLineOption faults(QStringLiteral("faults"),
+                                    QStringLiteral("With --port sim: faults the simulated link "
+                                                   "injects, e.g. drop=0.01,cut=30s:2s "
+                                                   "(docs/simulator.md)."),
+                                    QStringLiteral("SPEC"));
+    const QCommandLineOption seed(QStringLiteral("seed"),
+                                  QStringLiteral("With --port sim: seed of the faults and the "
+                                                 "load noise (default 1)."),
+                                  QStringLiteral("N"));
+    parser.addOptions({port, baud, protocol, profile, hand, repaint, quitAfter, faults, seed});
     parser.addPositionalArgument(QStringLiteral("recording"),
                                  QStringLiteral("A recording (CSV) to open in replay."),
                                  QStringLiteral("[RECORDING.csv]"));
@@ -100,6 +109,28 @@ int main(int argc, char *argv[])
             fail(QStringLiteral("--hand: %1").arg(error));
             return 2;
         }
+    }
+    if (parser.isSet(faults)) {
+        QString error;
+        const std::optional<FaultSpec> spec = FaultSpec::parse(parser.value(faults), &error);
+        if (!spec) {
+            fail(QStringLiteral("--faults: %1").arg(error));
+            return 2;
+        }
+        options.sim.faults = *spec;
+    }
+    if (parser.isSet(seed)) {
+        bool ok = false;
+        options.sim.seed = parser.value(seed).toULongLong(&ok);
+        if (!ok) {
+            fail(QStringLiteral("--seed: expected a non-negative whole number, got \"%1\"")
+                     .arg(parser.value(seed)));
+            return 2;
+        }
+    }
+    if ((parser.isSet(faults) || parser.isSet(seed)) && options.port != QStringView(kSimPortName)) {
+        fail(QStringLiteral("--faults and --seed need --port sim"));
+        return 2;
     }
     double repaintHz = PlotPanel::kDefaultRepaintHz;
     if (parser.isSet(repaint)) {

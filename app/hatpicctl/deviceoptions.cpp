@@ -30,6 +30,15 @@ void addDeviceOptions(QCommandLineParser &parser)
         QStringLiteral("Longest wait for the connection and for each answer, in seconds "
                        "(default: 5)."),
         QStringLiteral("S"), QStringLiteral("5")));
+    parser.addOption(QCommandLineOption(
+        QStringList{QStringLiteral("faults")},
+        QStringLiteral("With --port sim: faults the simulated link injects, e.g. "
+                       "drop=0.01,cut=30s:2s (docs/simulator.md)."),
+        QStringLiteral("SPEC")));
+    parser.addOption(QCommandLineOption(
+        QStringList{QStringLiteral("seed")},
+        QStringLiteral("With --port sim: seed of the faults and the load noise (default: 1)."),
+        QStringLiteral("N")));
 }
 
 std::optional<DeviceOptions> deviceOptions(const QCommandLineParser &parser)
@@ -76,6 +85,30 @@ std::optional<DeviceOptions> deviceOptions(const QCommandLineParser &parser)
         return std::nullopt;
     }
     options.timeoutS = timeout;
+
+    const bool sim = port == QStringView(kSimPortName);
+    if (parser.isSet(QStringLiteral("faults"))) {
+        QString error;
+        const auto faults = FaultSpec::parse(parser.value(QStringLiteral("faults")), &error);
+        if (!faults) {
+            printError(u"--faults: " + error);
+            return std::nullopt;
+        }
+        options.connect.sim.faults = *faults;
+    }
+    if (parser.isSet(QStringLiteral("seed"))) {
+        options.connect.sim.seed = parser.value(QStringLiteral("seed")).toULongLong(&ok);
+        if (!ok) {
+            printError(u"--seed must be a non-negative whole number, got '" +
+                       parser.value(QStringLiteral("seed")) + u"'.");
+            return std::nullopt;
+        }
+    }
+    if (!sim && (parser.isSet(QStringLiteral("faults")) || parser.isSet(QStringLiteral("seed")))) {
+        printError(QStringLiteral("--faults and --seed act on the built-in simulated joystick: "
+                                  "use them with --port sim (hatpic-sim has its own)."));
+        return std::nullopt;
+    }
     return options;
 }
 

@@ -264,9 +264,14 @@ private:
                                      u" per second)");
         text += line(u"frames/s",
                      QString::number(stats.framesPerSecond, 'f', 1) + u" over the last second");
-        text += line(u"frames", QString::number(stats.frames) + u" received, " +
-                                    QString::number(stats.seqDrops) +
-                                    u" missing by seq (since connecting)");
+        // Duplicates only when there were some: the line stays as it was on a sound link.
+        text += line(u"frames",
+                     QString::number(stats.frames) + u" received, " +
+                         QString::number(stats.seqDrops) + u" missing by seq" +
+                         (stats.duplicates > 0
+                              ? u", " + QString::number(stats.duplicates) + u" received twice"
+                              : QString()) +
+                         u" (since connecting)");
         QStringList reasons;
         for (int r = 0; r < v2::kDropReasonCount; ++r) {
             reasons << v2::dropReasonName(static_cast<v2::DropReason>(r)) + u' ' +

@@ -153,6 +153,7 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
         if (!m_toControl.push(input))
             return 0;       // the control context is not draining: no answer, the host retries
         m_accepted = block; // in force from the next control cycle
+        ++m_paramsApplied;
         return ack(v2::AckStatus::Ok);
     }
     if (const auto *set = std::get_if<v2::SetStream>(&m)) {

@@ -82,6 +82,8 @@ public:
     //! so the command was not applied, or the host port refused the reply. The host retries
     //! either way; a retry of an applied command is answered, not applied again.
     std::uint32_t unansweredCommands() const { return m_unanswered; }
+    //! SET_PARAMS blocks accepted (link context); a retry answered again does not count.
+    std::uint32_t paramsApplied() const { return m_paramsApplied; }
     const v2::DecoderStats &decoderStats() const { return m_decoder.stats(); }
     const Controller<T> &controller() const { return m_controller; }
 
@@ -128,6 +130,7 @@ private:
     std::uint16_t m_streamHz = 0;
     std::uint8_t m_replySeq = 0;
     std::uint32_t m_unanswered = 0;
+    std::uint32_t m_paramsApplied = 0;
     bool m_haveLastCommand = false;
     std::uint8_t m_lastType = 0;
     std::uint8_t m_lastSeq = 0;

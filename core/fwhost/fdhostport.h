@@ -6,9 +6,14 @@
 #pragma once
 
 #include "firmware/ports.h"
+#include "link/faultinjector.h"
 
+#include <QByteArray>
+
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -26,6 +31,12 @@ public:
 
     //! `fd` stays the caller's (not closed here); it must be non-blocking.
     explicit FdHostPort(int fd);
+    ~FdHostPort() override;
+
+    //! Passes both directions through `faults` from now on (hatpic-fw-host --faults); the
+    //! injector's clock starts here.
+    void setFaults(std::unique_ptr<FaultInjector> faults);
+    const FaultInjector *faults() const { return m_faults.get(); }
 
     std::size_t read(std::span<std::uint8_t> out) override;
     bool write(std::span<const std::uint8_t> frame, Traffic traffic) override;
@@ -41,7 +52,13 @@ public:
     std::uint64_t replyDropped() const { return m_replyDropped; }   //!< frames
 
 private:
+    std::size_t readFd(std::span<std::uint8_t> out);
+    double seconds() const;
+
     int m_fd;
+    std::unique_ptr<FaultInjector> m_faults;
+    std::chrono::steady_clock::time_point m_faultStart;
+    QByteArray m_inbox; //!< host bytes the injector passed on, not read by the core yet
     std::vector<std::uint8_t> m_pending;
     std::uint64_t m_streamDropped = 0;
     std::uint64_t m_replyDropped = 0;

@@ -88,6 +88,10 @@ QString FirmwareHost::start()
     if (!m_config.stateFile.isEmpty())
         m_store = std::make_unique<ProfileParamStore>(m_config.stateFile, m_config.tauLimit);
     m_hostPort = std::make_unique<FdHostPort>(m_pty.master());
+    if (!m_config.faults.isEmpty()) {
+        m_hostPort->setFaults(std::make_unique<FaultInjector>(m_config.faults, m_config.faultSeed,
+                                                              FaultInjector::Framing::V2));
+    }
 
     fw::DeviceCore<double>::Config core;
     core.control.rateHz = m_config.rateHz;
@@ -149,6 +153,11 @@ void FirmwareHost::stop()
 QString FirmwareHost::createLink(const QString &path)
 {
     return m_pty.createLink(path);
+}
+
+const FaultInjector *FirmwareHost::faults() const
+{
+    return m_hostPort ? m_hostPort->faults() : nullptr;
 }
 
 void FirmwareHost::serviceLink()

@@ -10,6 +10,7 @@
 
 #include "firmware/stsbus.h"
 #include "fwhost/periodhistogram.h"
+#include "link/faultinjector.h"
 #include "link/pseudoterminal.h"
 
 #include <QObject>
@@ -56,6 +57,8 @@ public:
         std::uint32_t servoTimeoutUs = kDefaultServoTimeoutUs; //!< bus reply timeout [µs]
         double tauLimit = 0.44;                                //!< torque at load ±1000 [N·m]
         QString stateFile;                                     //!< SAVE_PARAMS target; empty = RAM
+        FaultSpec faults;                                      //!< injected on the pty link
+        quint64 faultSeed = 1;                                 //!< seed of those faults
     };
 
     //! Timing and bus counters over a window of cycles.
@@ -90,6 +93,9 @@ public:
     QString createLink(const QString &path); //!< PseudoTerminal::createLink
     //! Things said once at start (an unreadable or invalid state file).
     QStringList warnings() const { return m_warnings; }
+    //! The faults injected on the pty link (Config::faults), or null when none are (link
+    //! context: read it from the thread that runs the event loop).
+    const FaultInjector *faults() const;
     bool realtime() const { return m_realtime.load(); } //!< SCHED_FIFO granted
 
     //! The statistics since the previous takeReport() (or start), and a new window begun.

@@ -1,5 +1,6 @@
 #include "profile.h"
 
+#include "jsonkeys.h"
 #include "profile/paramsjson.h"
 
 #include <QFile>
@@ -153,15 +154,20 @@ ProfileReadResult parseProfile(const QByteArray &json)
         result.errors.append(u"not a profile: the top level must be a JSON object, got " + got);
         return result;
     }
+    if (const QString key = firstDuplicateKey(json); !key.isEmpty()) {
+        result.errors.append(u"duplicate key \"" + key +
+                             u"\": a key may appear once (which value was meant?)");
+        return result;
+    }
     const QJsonObject root = document.object();
+    // Not a profile at all: its error alone, no word about keys a profile does not have.
+    if (!checkHeader(root, result.errors))
+        return result;
 
     warnUnknownKeys(root,
                     {QStringLiteral("format"), QStringLiteral("version"), QStringLiteral("name"),
                      QStringLiteral("notes"), QStringLiteral("device"), QStringLiteral("host")},
                     QString(), result.warnings);
-
-    if (!checkHeader(root, result.errors))
-        return result;
 
     Profile profile;
     readOptionalString(root, u"name", profile.name, result.errors);

@@ -350,7 +350,7 @@ void DeviceSession::becomeConnectedV2(const v2::HelloReply &reply)
     }
     m_builder.setTauLimit(m_info.tauLimit);
     m_paramsKnown = false;
-    m_lastTelemetrySeq.reset();
+    m_telemetrySeq.reset();
     // Discard the detection's noise (e.g. the tail of a stream we opened in the middle of).
     m_v2.resetStats();
     m_everConnected = true;
@@ -520,11 +520,12 @@ void DeviceSession::handleV2Frame(const v2::Frame &frame)
 void DeviceSession::handleTelemetry(quint8 seq, const v2::Telemetry &telemetry)
 {
     ++m_stats.frames;
-    if (m_lastTelemetrySeq) {
-        // u8 sequence: the frames missing are the gap modulo 256.
-        m_stats.seqDrops += static_cast<quint8>(seq - *m_lastTelemetrySeq - 1);
+    const TelemetrySequence::Step step = m_telemetrySeq.accept(seq, telemetry.t_us);
+    if (step.duplicate) { // the same frame again (a link that repeats): one sample only
+        ++m_stats.duplicates;
+        return;
     }
-    m_lastTelemetrySeq = seq;
+    m_stats.seqDrops += step.missing;
     // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:
     // such a frame is counted and skipped, never integrated.
     if (!std::isfinite(telemetry.theta) || !std::isfinite(telemetry.omega) ||
@@ -599,7 +600,7 @@ void DeviceSession::handleAck(const v2::Ack &ack)
     }
     case CommandKind::SetStream:
         m_options.streamRateHz = cmd.rate;
-        m_lastTelemetrySeq.reset();
+        m_telemetrySeq.reset();
         finishInflight(result(CommandResult::Status::Ok,
                               cmd.rate ? u"Telemetry requested at " % QString::number(cmd.rate) %
                                              u" Hz (the device may clamp it)."

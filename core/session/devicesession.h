@@ -9,6 +9,7 @@
 #include "session/rttstats.h"
 #include "session/samplebuilder.h"
 #include "session/sessiontypes.h"
+#include "session/telemetrysequence.h"
 #include "telemetry/recordingwriter.h"
 #include "telemetry/sample.h"
 
@@ -216,7 +217,7 @@ private:
     quint32 m_pingToken = 0;
     QHash<quint32, qint64> m_pings; //!< token → send time [ns]
     RttStats m_rtt;
-    std::optional<quint8> m_lastTelemetrySeq;
+    TelemetrySequence m_telemetrySeq;
     qint64 m_lastRxNs = 0;
 
     // statistics

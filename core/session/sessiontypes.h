@@ -70,7 +70,8 @@ struct LinkStats
     double bytesPerSecond = 0;  //!< received bytes, over the last second [B/s]
     quint64 frames = 0;         //!< telemetry (or legacy) frames received
     quint64 bytes = 0;          //!< bytes received
-    quint64 seqDrops = 0;       //!< telemetry frames missing by seq gaps
+    quint64 seqDrops = 0;       //!< telemetry frames missing by seq gaps (and device time)
+    quint64 duplicates = 0;     //!< telemetry frames whose seq was seen already: skipped
     std::array<quint64, v2::kDropReasonCount> decoderDrops{}; //!< v2 drops by reason
     quint64 legacyMalformed = 0;
     double rttLastMs = -1; //!< -1 = none measured yet [ms]

@@ -20,7 +20,7 @@ quint8 hostFrameType(const QByteArray &bytes)
 } // namespace
 
 SimLink::SimLink(const SimulatedDevice::Config &config, QObject *parent)
-    : ByteLink(parent), m_config(config), m_timer(this)
+    : ByteLink(parent), m_config(config), m_faults(makeFaultInjector(config)), m_timer(this)
 {
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(kTickMs);
@@ -35,6 +35,8 @@ bool SimLink::open()
         return true;
     m_device = std::make_unique<SimulatedDevice>(m_config);
     m_clock.start();
+    if (!m_faultClock.isValid())
+        m_faultClock.start();
     m_lastNs = 0;
     m_timer.start();
     return true;
@@ -69,7 +71,10 @@ void SimLink::write(const QByteArray &bytes)
         ++m_dropped;
         return;
     }
-    m_device->receive(bytes);
+    if (m_faults)
+        m_device->receive(m_faults->toDevice(bytes, faultClock()));
+    else
+        m_device->receive(bytes);
 }
 
 void SimLink::setHand(const HandInput &hand)
@@ -106,9 +111,13 @@ void SimLink::tick()
     const qint64 now = m_clock.nsecsElapsed();
     const double dt = std::min(kMaxAdvance, static_cast<double>(now - m_lastNs) * 1e-9);
     m_lastNs = now;
+    if (m_faults) // host frames held back by a delay reach the device when due
+        m_device->receive(m_faults->toDevice({}, faultClock()));
     if (dt > 0)
         m_device->advance(dt);
-    const QByteArray out = m_device->takeOutput();
+    QByteArray out = m_device->takeOutput();
+    if (m_faults)
+        out = m_faults->toHost(out, faultClock());
     if (!out.isEmpty() && !m_silenced)
         Q_EMIT bytesReceived(out);
 }

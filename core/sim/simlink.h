@@ -6,6 +6,7 @@
 #pragma once
 
 #include "link/bytelink.h"
+#include "link/faultinjector.h"
 #include "sim/simulateddevice.h"
 
 #include <QElapsedTimer>
@@ -35,6 +36,9 @@ public:
     //! The simulator while open, else null (session thread only).
     SimulatedDevice *device() const { return m_device.get(); }
     void setHand(const HandInput &hand);
+    //! The faults this link injects (config.faults), or null when it injects none. Its
+    //! clock starts when the link first opens and runs on across reopening.
+    const FaultInjector *faults() const { return m_faults.get(); }
 
     // ---- test seams ----
     //! Swallows the next `count` host frames of message type `type` (0 = any type).
@@ -52,7 +56,11 @@ private:
     void tick();
 
     SimulatedDevice::Config m_config;
+    double faultClock() const { return double(m_faultClock.nsecsElapsed()) * 1e-9; }
+
     std::unique_ptr<SimulatedDevice> m_device;
+    std::unique_ptr<FaultInjector> m_faults;
+    QElapsedTimer m_faultClock;
     QTimer m_timer;
     QElapsedTimer m_clock;
     qint64 m_lastNs = 0;

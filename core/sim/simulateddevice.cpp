@@ -466,9 +466,24 @@ quint64 SimulatedDevice::telemetryDropped() const
     return d->core ? d->core->telemetryDropped() : d->legacyDropped;
 }
 
+quint64 SimulatedDevice::paramsApplied() const
+{
+    return d->core ? d->core->paramsApplied() : 0;
+}
+
 QString SimulatedDevice::stateWarning() const
 {
     return d->stateWarning;
+}
+
+std::unique_ptr<FaultInjector> makeFaultInjector(const SimulatedDevice::Config &config)
+{
+    if (config.faults.isEmpty())
+        return nullptr;
+    return std::make_unique<FaultInjector>(config.faults, config.seed,
+                                           config.protocol == WireProtocol::Legacy
+                                               ? FaultInjector::Framing::Legacy
+                                               : FaultInjector::Framing::V2);
 }
 
 } // namespace hatpic

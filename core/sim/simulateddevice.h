@@ -6,6 +6,7 @@
 // in-process "sim" port drives it directly; `hatpicctl simulate` uses step() offline.
 #pragma once
 
+#include "link/faultinjector.h"
 #include "model/admittance.h"
 #include "model/params.h"
 #include "protocol/deviceinfo.h"
@@ -32,12 +33,14 @@ public:
         bool throttle = true;          //!< limit output to the link's byte rate
         bool ideal = false;            //!< no servo lag, quantisation or noise: model.md alone
         double noise = 0;              //!< std-dev of load-reading noise [N·m]; 0 = none
-        quint64 seed = 1;              //!< noise seed
+        quint64 seed = 1;              //!< noise seed, and the faults' seed
         QString stateFile;             //!< SAVE_PARAMS persists here (a profile file) if set
         HandInput hand;                //!< operator input at start
         quint32 deviceId = 0x53494D31; //!< "SIM1"
         double tauLimit = 0.44;        //!< actuator torque limit [N·m]
         DeviceParams params;           //!< power-up parameters (a valid stateFile overrides)
+        //! Faults the link to the host injects (SimLink, SimulatorHost); empty = none.
+        FaultSpec faults;
     };
 
     //! One control cycle as the device saw it (what TELEMETRY reports).
@@ -80,6 +83,8 @@ public:
     quint16 linkLimitedRate() const;
     //! Telemetry frames dropped because the output queue was full (seen as seq gaps).
     quint64 telemetryDropped() const;
+    //! SET_PARAMS blocks the device accepted (v2; a retry it answered again does not count).
+    quint64 paramsApplied() const;
     //! Why the state file (or config.params) was not used at power-up; empty when fine.
     QString stateWarning() const;
 
@@ -87,5 +92,9 @@ private:
     class Private;
     std::unique_ptr<Private> d;
 };
+
+//! The injector for config.faults (seeded with config.seed, framed by config.protocol), or
+//! null when the spec holds no fault.
+std::unique_ptr<FaultInjector> makeFaultInjector(const SimulatedDevice::Config &config);
 
 } // namespace hatpic

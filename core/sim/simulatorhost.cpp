@@ -10,7 +10,8 @@
 namespace hatpic {
 
 SimulatorHost::SimulatorHost(const SimulatedDevice::Config &config, QObject *parent)
-    : QObject(parent), m_device(std::make_unique<SimulatedDevice>(config))
+    : QObject(parent), m_device(std::make_unique<SimulatedDevice>(config)),
+      m_faults(makeFaultInjector(config))
 {}
 
 SimulatorHost::~SimulatorHost()
@@ -64,6 +65,8 @@ void SimulatorHost::advanceToNow()
     // thousands of cycles at once.
     if (dt > kMaxCatchUp)
         dt = kMaxCatchUp;
+    if (m_faults) // host frames held back by a delay reach the device when due
+        m_device->receive(m_faults->toDevice({}, seconds()));
     m_device->advance(dt);
 }
 
@@ -73,7 +76,10 @@ void SimulatorHost::readHost()
     for (;;) {
         const ssize_t n = ::read(m_pty.master(), buffer, sizeof buffer);
         if (n > 0) {
-            m_device->receive(QByteArrayView(buffer, n));
+            if (m_faults)
+                m_device->receive(m_faults->toDevice(QByteArrayView(buffer, n), seconds()));
+            else
+                m_device->receive(QByteArrayView(buffer, n));
             continue;
         }
         if (n < 0 && errno == EINTR)
@@ -90,7 +96,9 @@ void SimulatorHost::readHost()
 
 void SimulatorHost::writeOutput()
 {
-    const QByteArray out = m_device->takeOutput();
+    QByteArray out = m_device->takeOutput();
+    if (m_faults)
+        out = m_faults->toHost(out, seconds());
     const qsizetype room = kMaxPendingBytes - m_pending.size();
     if (out.size() > room) {
         m_pending.append(out.left(room));

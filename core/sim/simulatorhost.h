@@ -6,6 +6,7 @@
 // kMaxPendingBytes kept when the pty does not take them.
 #pragma once
 
+#include "link/faultinjector.h"
 #include "link/pseudoterminal.h"
 #include "sim/simulateddevice.h"
 
@@ -50,13 +51,18 @@ public:
     const SimulatedDevice &device() const { return *m_device; }
 
     quint64 bytesDiscarded() const { return m_discarded; } //!< output the pty never took
+    //! The faults injected (config.faults, clock from start()), or null when none are.
+    const FaultInjector *faults() const { return m_faults.get(); }
 
 private:
     void advanceToNow();
     void readHost();
     void writeOutput();
 
+    double seconds() const { return double(m_clock.nsecsElapsed()) * 1e-9; }
+
     std::unique_ptr<SimulatedDevice> m_device;
+    std::unique_ptr<FaultInjector> m_faults;
     PseudoTerminal m_pty;
     QSocketNotifier *m_readNotifier = nullptr;
     QTimer *m_timer = nullptr;

@@ -290,6 +290,14 @@ void TestHatpicCtl::usage_data()
     QTest::newRow("bad timeout") << QStringList{u"info"_s, u"--port"_s, u"sim"_s, u"--timeout"_s,
                                                 u"-1"_s}
                                  << 4 << QString();
+    QTest::newRow("bad faults") << QStringList{u"info"_s, u"--port"_s, u"sim"_s, u"--faults"_s,
+                                               u"cut=3s"_s}
+                                << 4 << QString();
+    QTest::newRow("faults off the sim port")
+        << QStringList{u"info"_s, u"--port"_s, u"/dev/null"_s, u"--faults"_s, u"drop=0.1"_s} << 4
+        << QString();
+    QTest::newRow("bad seed") << QStringList{u"info"_s, u"--port"_s, u"sim"_s, u"--seed"_s, u"x"_s}
+                              << 4 << QString();
     QTest::newRow("ports lists sim") << QStringList{u"ports"_s} << 0 << u"sim\t"_s;
 }
 
@@ -681,6 +689,16 @@ void TestHatpicCtl::validate_data()
   "device": {"D_adm": 0.0001, "M_adm": 0.01, "K_min": 0.15, "K_max": 0.4,
              "N": 0.1, "Q_dz": 0.02, "theta0": 0.0}
 })")} << 0 << QStringList{u"warning:"_s, u"colour"_s};
+    QTest::newRow("not a profile: the error alone, no key warnings")
+        << QStringList{u"validate"_s, writeFile(u"other.json"_s, R"({
+  "format": "something-else", "version": 1, "colour": "red"
+})")} << 4
+        << QStringList{};
+    QTest::newRow("duplicate key") << QStringList{u"validate"_s, writeFile(u"twice.json"_s, R"({
+  "format": "hatpic-profile", "version": 1,
+  "device": {"D_adm": 0.0001, "M_adm": 0.01, "K_min": 0.15, "K_max": 0.4,
+             "N": 0.1, "Q_dz": 0.02, "theta0": 0.0, "K_max": 0.9}
+})")} << 4 << QStringList{u"duplicate key \"device.K_max\""_s};
     QTest::newRow("saturating and ringing are warnings")
         << QStringList{u"validate"_s, writeFile(u"stiff.json"_s, R"({
   "format": "hatpic-profile", "version": 1,

@@ -76,6 +76,12 @@ void TestTunerOptions::refusesBadNumbers_data()
         << QStringList{u"--repaint-rate"_s, u"0"_s} << u"--repaint-rate"_s;
     QTest::newRow("baud not a number") << QStringList{u"--baud"_s, u"fast"_s} << u"--baud"_s;
     QTest::newRow("baud negative") << QStringList{u"--baud"_s, u"-9600"_s} << u"--baud"_s;
+    QTest::newRow("faults spec") << QStringList{u"--port"_s, u"sim"_s, u"--faults"_s, u"drop=2"_s}
+                                 << u"--faults"_s;
+    QTest::newRow("faults without the sim port")
+        << QStringList{u"--port"_s, u"/dev/null"_s, u"--faults"_s, u"drop=0.1"_s} << u"--faults"_s;
+    QTest::newRow("seed not a number")
+        << QStringList{u"--port"_s, u"sim"_s, u"--seed"_s, u"-1"_s} << u"--seed"_s;
 }
 
 void TestTunerOptions::refusesBadNumbers()

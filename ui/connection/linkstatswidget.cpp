@@ -38,6 +38,8 @@ void LinkStatsWidget::setStats(const LinkStats &stats)
                        .arg(v2::dropReasonName(static_cast<v2::DropReason>(i)))
                        .arg(stats.decoderDrops[i]);
     }
+    if (stats.duplicates > 0)
+        tip << tr("Telemetry frames received twice (skipped): %1").arg(stats.duplicates);
     if (stats.legacyMalformed > 0)
         tip << tr("Malformed legacy frames: %1").arg(stats.legacyMalformed);
     if (stats.rttMaxMs >= 0)

@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -100,6 +101,7 @@ private Q_SLOTS:
     void closedLoopThroughPtys();
     void savedParamsSurviveRestart();
     void hatpicctlInfo();
+    void faultsAreInjectedAndCounted();
     void sigtermDisablesTorque();
     void silentServoFails();
     void badOptions_data();
@@ -237,6 +239,43 @@ void TestFirmwareHost::hatpicctlInfo()
     QVERIFY2(out.contains(u"1000 Hz"_s), qPrintable(out));
 }
 
+void TestFirmwareHost::faultsAreInjectedAndCounted()
+{
+    PtyProgram servo(servoSim(), {});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    PtyProgram host(fwHost(),
+                    {u"--servo"_s, servo.path(), u"--quiet"_s, u"--faults"_s,
+                     u"drop=0.05,corrupt=0.02,dup=0.02,hdrop=0.2"_s, u"--seed"_s, u"3"_s});
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    // A lost SET_PARAMS (or its lost ACK) is retried: the push succeeds all the same.
+    QProcess set;
+    set.start(QStringLiteral(HATPICCTL_PATH),
+              {u"set"_s, u"--port"_s, host.path(), u"--set"_s, u"K_max=0.5"_s});
+    QVERIFY(set.waitForFinished(10000));
+    QVERIFY2(set.exitCode() == 0, qPrintable(QString::fromUtf8(set.readAllStandardError())));
+    QProcess stream;
+    stream.start(QStringLiteral(HATPICCTL_PATH),
+                 {u"stream"_s, u"--port"_s, host.path(), u"--duration"_s, u"2"_s});
+    QVERIFY(stream.waitForFinished(10000));
+    const QString stats = QString::fromUtf8(stream.readAllStandardError());
+    QVERIFY2(stream.exitCode() == 0, qPrintable(stats));
+    const QRegularExpression frames(u"(\\d+) missing by seq, (\\d+) received twice"_s);
+    const QRegularExpressionMatch m = frames.match(stats);
+    QVERIFY2(m.hasMatch() && m.captured(1).toInt() > 20 && m.captured(2).toInt() > 5,
+             qPrintable(stats));
+    QVERIFY2(!stats.contains(u"decoder drops 0 "_s), qPrintable(stats));
+
+    QVERIFY(host.terminate());
+    QCOMPARE(host.process().exitCode(), 0);
+    const QString summary = host.errors();
+    QVERIFY2(summary.contains(u"hatpic-fw-host: faults drop=0.05,corrupt=0.02,dup=0.02,"
+                              u"hdrop=0.2, seed 3:"_s),
+             qPrintable(summary));
+    const QRegularExpression hostDrops(u"injected host→device: frames=\\d+ dropped=(\\d+)"_s);
+    const QRegularExpressionMatch d = hostDrops.match(summary);
+    QVERIFY2(d.hasMatch() && d.captured(1).toInt() > 0, qPrintable(summary));
+}
+
 void TestFirmwareHost::sigtermDisablesTorque()
 {
     QTemporaryDir dir;
@@ -293,6 +332,9 @@ void TestFirmwareHost::badOptions_data()
         << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-timeout"_s, u"0"_s}
         << u"timeout"_s;
     QTest::newRow("fw-host unknown") << fwHost() << QStringList{u"--bogus"_s} << u"bogus"_s;
+    QTest::newRow("fw-host faults")
+        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--faults"_s, u"drop=2"_s}
+        << u"drop is a probability from 0 to 1, got \"2\""_s;
     QTest::newRow("servo-sim hand")
         << servoSim() << QStringList{u"--hand"_s, u"push"_s} << u"push"_s;
     QTest::newRow("servo-sim center")

@@ -1,6 +1,7 @@
 // Tests for profile files (profile.md): reading rules, exact writing, atomic saves, presets.
 
 #include "model/derived.h"
+#include "profile/jsonkeys.h"
 #include "profile/paramsjson.h"
 #include "profile/profile.h"
 
@@ -234,6 +235,9 @@ private Q_SLOTS:
     void hostOptionalWithDefaults_data();
     void hostOptionalWithDefaults();
     void unknownKeysWarnAndAreDropped();
+    void duplicateKeysRefused_data();
+    void duplicateKeysRefused();
+    void notAProfileGetsNoKeyWarnings();
     void nameAndNotesOptional();
     void serializedTextExact();
     void jsonNumberText_data();
@@ -588,6 +592,55 @@ void TestProfile::unknownKeysWarnAndAreDropped()
     const auto refused = hatpic::parseProfile(QJsonDocument(root).toJson());
     QVERIFY(!refused.ok());
     QCOMPARE(refused.warnings.size(), 3);
+}
+
+void TestProfile::duplicateKeysRefused_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("key");
+    const QByteArray device = R"("device": {"D_adm": 0.0001, "M_adm": 0.01, "K_min": 0.15,
+        "K_max": 0.4, "N": 0.1, "Q_dz": 0.02, "theta0": 0.0)";
+    QTest::newRow("device field twice")
+        << QByteArray(R"({"format": "hatpic-profile", "version": 1, )" + device +
+                      R"(, "K_max": 0.9}})")
+        << u"device.K_max"_s;
+    QTest::newRow("top-level key twice")
+        << QByteArray(R"({"format": "hatpic-profile", "version": 1, "name": "a", )" + device +
+                      R"(}, "name": "b"})")
+        << u"name"_s;
+    QTest::newRow("spelt with an escape")
+        << QByteArray(R"({"format": "hatpic-profile", "version": 1, )" + device +
+                      R"(, "K_max": 0.9}})")
+        << u"device.K_max"_s;
+    QTest::newRow("unknown key twice, in an array's object")
+        << QByteArray(R"({"format": "hatpic-profile", "version": 1, )" + device +
+                      "}, \"extra\": [1, {\"a\": 1, \"b\": \"}\\\"{\", \"a\": 2}]}")
+        << u"extra[].a"_s;
+}
+
+void TestProfile::duplicateKeysRefused()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, key);
+    const hatpic::ProfileReadResult result = hatpic::parseProfile(json);
+    QVERIFY(!result.ok());
+    QCOMPARE(result.errors, QStringList{u"duplicate key \""_s + key +
+                                        u"\": a key may appear once (which value was meant?)"_s});
+    // The same keys once each (same names in different objects) are fine.
+    QVERIFY(hatpic::firstDuplicateKey(
+                "{\"a\": {\"x\": 1}, \"b\": {\"x\": 1}, \"c\": [{\"x\": 1}, {\"x\": 2}], "
+                "\"s\": \"a\\\"a\"}")
+                .isEmpty());
+}
+
+void TestProfile::notAProfileGetsNoKeyWarnings()
+{
+    const hatpic::ProfileReadResult result =
+        hatpic::parseProfile(R"({"format": "something-else", "version": 1, "colour": "red"})");
+    QVERIFY(!result.ok());
+    QCOMPARE(result.errors.size(), 1);
+    QVERIFY2(result.errors.first().startsWith(u"format:"_s), qPrintable(result.errors.first()));
+    QCOMPARE(result.warnings, QStringList());
 }
 
 void TestProfile::nameAndNotesOptional()

@@ -259,6 +259,8 @@ void TestSimulatorHost::binaryRefusesBadOptions_data()
     QTest::newRow("bad hand spec") << QStringList{u"--hand"_s, u"sine:1"_s} << u"sine:A:F"_s;
     QTest::newRow("negative seed") << QStringList{u"--seed"_s, u"-1"_s} << u"seed"_s;
     QTest::newRow("unknown option") << QStringList{u"--colour"_s} << u"colour"_s;
+    QTest::newRow("fault spec") << QStringList{u"--faults"_s, u"dup=0.1,delay=0.1:20"_s}
+                                << u"Fault spec item \"delay=0.1:20\": delay's duration"_s;
     QTest::newRow("missing value") << QStringList{u"--rate"_s} << u"rate"_s;
     QTest::newRow("positional argument") << QStringList{u"extra"_s} << u"extra"_s;
     // A pipe as the state file once blocked open() before signals were handled (issue 10).
