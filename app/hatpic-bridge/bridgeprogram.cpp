@@ -17,7 +17,7 @@ QString num(double v)
 
 void printLine(FILE *stream, const QString &line)
 {
-    std::fprintf(stream, "%s\n", qPrintable(line));
+    std::fprintf(stream, "%s\n", line.toUtf8().constData());
     std::fflush(stream);
 }
 
