@@ -16,6 +16,10 @@ namespace {
 constexpr qint64 kMaxConfigBytes = 64 * 1024;
 constexpr qint32 kMaxBaud = 4000000;
 constexpr int kMaxTelemetryHz = 65535;
+// The device's watchdog must never trip while the wrench is fresh: a frame at least every
+// 50 ms (ros.md).
+constexpr double kMinFeedbackHz = 20;
+constexpr double kMaxFeedbackHz = 1000;
 
 // Reads `text` into the settings; returns an empty string or what is wrong with it.
 using Apply = std::function<QString(AppOptions &, const QString &text)>;
@@ -113,6 +117,14 @@ const std::vector<Setting> &settingTable()
              if (!v || *v < 1 || *v > kMaxTelemetryHz)
                  return QStringLiteral("needs a whole number of Hz from 1 to 65535");
              o.connect.streamRateHz = quint16(*v);
+             return QString();
+         }},
+        {"feedback-rate", "HZ", "SET_FEEDBACK frames per second (default 100; 20 to 1000).",
+         [](AppOptions &o, const QString &t) {
+             const auto v = number(t);
+             if (!v || *v < kMinFeedbackHz || *v > kMaxFeedbackHz)
+                 return QStringLiteral("needs a number of Hz from 20 to 1000");
+             o.connect.feedbackRateHz = *v;
              return QString();
          }},
         {"domain", "ID", "DDS domain (default: ROS_DOMAIN_ID, else 0).",
