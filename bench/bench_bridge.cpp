@@ -5,7 +5,8 @@
 //            default --rate (100 Hz) and with every sample (1000 Hz), the simulated joystick
 //            behind a real pseudo-terminal streaming 1 kHz telemetry;
 //   latency: wrench → τ_ext: from dds_write of a WrenchStamped to the first control cycle of
-//            the simulated device that renders the new τ_ext (polled every 1 ms), for N steps
+//            the simulated device that renders the new τ_ext — the first telemetry sample that
+//            shows it, dated by the device clock relative to its batch's arrival — for N steps
 //            between +0.5 N and −0.5 N, 100 ms apart, with the session streaming SET_FEEDBACK
 //            at HZ (default 100, hatpic-bridge's default). Prints median and maximum, and
 //            the same up to the Bridge's feedbackChanged (the DDS part alone).
@@ -102,16 +103,16 @@ int main(int argc, char *argv[])
     dds_qos_t *qos = dds_create_qos();
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
     dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1000);
-    const dds_entity_t joints = dds_create_reader(
-        participant,
-        dds_create_topic(participant, &sensor_msgs_msg_dds__JointState__desc,
-                         "rt/hatpic/joint_states", nullptr, nullptr),
-        qos, nullptr);
-    const dds_entity_t wrench = dds_create_writer(
-        participant,
-        dds_create_topic(participant, &geometry_msgs_msg_dds__WrenchStamped__desc,
-                         "rt/wrench_estimation", nullptr, nullptr),
-        qos, nullptr);
+    const dds_entity_t joints =
+        dds_create_reader(participant,
+                          dds_create_topic(participant, &sensor_msgs_msg_dds__JointState__desc,
+                                           "rt/hatpic/joint_states", nullptr, nullptr),
+                          qos, nullptr);
+    const dds_entity_t wrench =
+        dds_create_writer(participant,
+                          dds_create_topic(participant, &geometry_msgs_msg_dds__WrenchStamped__desc,
+                                           "rt/wrench_estimation", nullptr, nullptr),
+                          qos, nullptr);
     dds_delete_qos(qos);
 
     Bridge bridge(client);
@@ -143,9 +144,19 @@ int main(int argc, char *argv[])
     std::vector<double> latencies, toBridge;
     QElapsedTimer since;
     double bridgeMs = -1;
+    double expected = 0, deviceMs = -1;
     QObject::connect(&bridge, &Bridge::feedbackChanged, &app, [&](double) {
         if (bridgeMs < 0)
             bridgeMs = double(since.nsecsElapsed()) * 1e-6;
+    });
+    // The first sample that shows the new τ_ext, dated back from its batch's arrival by how
+    // much older than the batch's newest sample it is (device clock).
+    QObject::connect(&client, &DeviceClient::samplesReady, &app, [&](const SampleBatch &batch) {
+        const double arrivalMs = double(since.nsecsElapsed()) * 1e-6;
+        for (const Sample &s : batch) {
+            if (deviceMs < 0 && std::abs(s.tau_ext - expected) < 1e-6)
+                deviceMs = arrivalMs - (batch.last().t_s - s.t_s) * 1e3;
+        }
     });
     for (int i = 0; i < steps; ++i) {
         const double force = (i % 2 == 0) ? 0.5 : -0.5;
@@ -153,13 +164,13 @@ int main(int argc, char *argv[])
         w.header.frame_id = const_cast<char *>("bench");
         w.wrench.force.z = force;
         bridgeMs = -1;
+        deviceMs = -1;
+        expected = 0.154 * force;
         since.start();
         dds_write(wrench, &w);
-        const double expected = 0.154 * force;
-        while (std::abs(host.device().lastCycle().tau_ext - expected) > 1e-6 &&
-               since.elapsed() < 1000)
+        while (deviceMs < 0 && since.elapsed() < 1000)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
-        latencies.push_back(double(since.nsecsElapsed()) * 1e-6);
+        latencies.push_back(deviceMs < 0 ? 1000.0 : deviceMs);
         toBridge.push_back(bridgeMs);
         waitMs(100);
     }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <functional>
+#include <type_traits>
 #include <vector>
 
 namespace hatpic::bridge {
@@ -46,54 +47,31 @@ std::optional<int> whole(const QString &text)
     return ok ? std::optional(v) : std::nullopt;
 }
 
-Apply numberInto(double BridgeSettings::*field)
+// The setting that `place` finds in the options, read as its type: a number, a whole number
+// or text.
+template<typename Place> Apply at(Place place)
 {
-    return [field](AppOptions &o, const QString &t) {
-        const auto v = number(t);
-        if (!v)
-            return QStringLiteral("needs a number");
-        o.settings.*field = *v;
-        return QString();
+    return [place](AppOptions &o, const QString &t) -> QString {
+        auto &target = place(o);
+        using T = std::remove_reference_t<decltype(target)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+            target = t.toStdString();
+        } else if constexpr (std::is_same_v<T, int>) {
+            const auto v = whole(t);
+            if (!v)
+                return QStringLiteral("needs a whole number");
+            target = *v;
+        } else {
+            const auto v = number(t);
+            if (!v)
+                return QStringLiteral("needs a number");
+            target = *v;
+        }
+        return {};
     };
 }
 
-Apply feedbackNumber(double FeedbackSettings::*field)
-{
-    return [field](AppOptions &o, const QString &t) {
-        const auto v = number(t);
-        if (!v)
-            return QStringLiteral("needs a number");
-        o.settings.feedback.*field = *v;
-        return QString();
-    };
-}
-
-Apply text(std::string BridgeSettings::*field)
-{
-    return [field](AppOptions &o, const QString &t) {
-        o.settings.*field = t.toStdString();
-        return QString();
-    };
-}
-
-Apply topic(std::string Topics::*field)
-{
-    return [field](AppOptions &o, const QString &t) {
-        o.settings.topics.*field = t.toStdString();
-        return QString();
-    };
-}
-
-Apply intInto(int BridgeSettings::*field)
-{
-    return [field](AppOptions &o, const QString &t) {
-        const auto v = whole(t);
-        if (!v)
-            return QStringLiteral("needs a whole number");
-        o.settings.*field = *v;
-        return QString();
-    };
-}
+#define HATPIC_SETTING(expr) at([](AppOptions & o) -> auto & { return o.expr; })
 
 const std::vector<Setting> &settingTable()
 {
@@ -128,26 +106,26 @@ const std::vector<Setting> &settingTable()
              return QString();
          }},
         {"domain", "ID", "DDS domain (default: ROS_DOMAIN_ID, else 0).",
-         intInto(&BridgeSettings::domainId)},
+         HATPIC_SETTING(settings.domainId)},
         {"joint-states-topic", "NAME",
          "sensor_msgs/JointState out (default /hatpic/joint_states; "
          "empty: none).",
-         topic(&Topics::jointStates)},
+         HATPIC_SETTING(settings.topics.jointStates)},
         {"twist-topic", "NAME", "geometry_msgs/TwistStamped out (default /hatpic/twist).",
-         topic(&Topics::twist)},
+         HATPIC_SETTING(settings.topics.twist)},
         {"pose-topic", "NAME", "geometry_msgs/PoseStamped out (default /hatpic/pose).",
-         topic(&Topics::pose)},
+         HATPIC_SETTING(settings.topics.pose)},
         {"feedback-topic", "NAME", "geometry_msgs/WrenchStamped out (default /hatpic/feedback).",
-         topic(&Topics::feedback)},
+         HATPIC_SETTING(settings.topics.feedback)},
         {"wrench-topic", "NAME", "geometry_msgs/WrenchStamped in (default /wrench_estimation).",
-         topic(&Topics::wrench)},
+         HATPIC_SETTING(settings.topics.wrench)},
         {"wrench-unstamped-topic", "NAME", "geometry_msgs/Wrench in (default: none).",
-         topic(&Topics::wrenchUnstamped)},
+         HATPIC_SETTING(settings.topics.wrenchUnstamped)},
         {"rate", "HZ", "Messages per topic per second, at most (default 100).",
-         numberInto(&BridgeSettings::publishRateHz)},
-        {"frame-id", "ID", "header.frame_id (default hatpic).", text(&BridgeSettings::frameId)},
+         HATPIC_SETTING(settings.publishRateHz)},
+        {"frame-id", "ID", "header.frame_id (default hatpic).", HATPIC_SETTING(settings.frameId)},
         {"joint-name", "NAME", "JointState name (default hatpic_knob).",
-         text(&BridgeSettings::jointName)},
+         HATPIC_SETTING(settings.jointName)},
         {"axis", "AXIS",
          "Twist/pose axis: linear.x … angular.z, or auto (default: linear.x, "
          "angular.z in rotation mode).",
@@ -188,11 +166,11 @@ const std::vector<Setting> &settingTable()
              return QString();
          }},
         {"gain", "NM_PER_N", "τ_ext per unit of the component (default 0.154).",
-         feedbackNumber(&FeedbackSettings::gain)},
+         HATPIC_SETTING(settings.feedback.gain)},
         {"limit", "NM", "|τ_ext| at most [N·m] (default 0.154).",
-         feedbackNumber(&FeedbackSettings::limit)},
+         HATPIC_SETTING(settings.feedback.limit)},
         {"stale", "S", "A wrench older than this gives τ_ext 0 (default 0.5).",
-         feedbackNumber(&FeedbackSettings::staleAfter)},
+         HATPIC_SETTING(settings.feedback.staleAfter)},
         {"qos", "PROFILE", "reliable (default) or best-effort (sensor data).",
          [](AppOptions &o, const QString &t) {
              const auto p = parseQosProfile(t.toStdString());
@@ -201,7 +179,7 @@ const std::vector<Setting> &settingTable()
              o.settings.qos = *p;
              return QString();
          }},
-        {"depth", "N", "History depth, keep last N (default 10).", intInto(&BridgeSettings::depth)},
+        {"depth", "N", "History depth, keep last N (default 10).", HATPIC_SETTING(settings.depth)},
     };
     return table;
 }

@@ -107,20 +107,22 @@ void BridgeProgram::shutdown()
     m_closing = true;
     m_statsTimer.stop();
     m_retryTimer.stop();
-    m_bridge.stop(); // τ_ext 0 to the session, endpoints closed
+    m_bridge.releaseFeedback(); // τ_ext 0 to the session; publishing goes on
     if (m_client.state() == SessionState::Connected) {
-        // The session streams the 0 on its feedback timer; wait until the device says so.
+        // The session streams the 0 on its feedback timer; wait until the device's telemetry
+        // says so and that has gone out on the feedback topic.
         QEventLoop loop;
         QElapsedTimer waited;
         waited.start();
         QTimer poll;
         connect(&poll, &QTimer::timeout, &loop, [&] {
-            if (m_lastDeviceTauExt == 0 || waited.elapsed() >= kZeroConfirmMs)
+            if (m_bridge.stats().publishedTauExt == 0 || waited.elapsed() >= kZeroConfirmMs)
                 loop.quit();
         });
         poll.start(5);
         loop.exec();
     }
+    m_bridge.stop();
     printStats();
     m_client.disconnectDevice();
 }

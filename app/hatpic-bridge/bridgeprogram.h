@@ -27,8 +27,8 @@ public:
 
     //! Reads the profile, opens the DDS endpoints, starts connecting. Empty or one sentence.
     QString start();
-    //! τ_ext 0 to the device (waiting until its telemetry shows it, at most kZeroConfirmMs),
-    //! then closes the endpoints and the port.
+    //! τ_ext 0 to the device (waiting until its telemetry shows it and /hatpic/feedback has
+    //! published it, at most kZeroConfirmMs), then closes the endpoints and the port.
     void shutdown();
 
 private:

@@ -10,8 +10,10 @@ Bridge::Bridge(DeviceClient &client, QObject *parent) : QObject(parent), m_clien
 {
     m_clock.start();
     m_checkTimer.setInterval(kCheckIntervalMs);
-    connect(&m_checkTimer, &QTimer::timeout, this,
-            [this] { applyTorque(m_feedback.torqueAt(now())); });
+    connect(&m_checkTimer, &QTimer::timeout, this, [this] {
+        const double tau = m_feedback.torqueAt(now()); // counts a wrench that went stale
+        applyTorque(m_released ? 0.0 : tau);
+    });
     connect(&m_client, &DeviceClient::samplesReady, this, &Bridge::onSamples);
 }
 
@@ -33,8 +35,15 @@ QString Bridge::start(const BridgeSettings &settings)
     m_settings = settings;
     m_feedback = WrenchFeedback(settings.feedback);
     m_rate = RateLimiter(settings.publishRateHz);
+    m_released = false;
     m_checkTimer.start();
     return {};
+}
+
+void Bridge::releaseFeedback()
+{
+    m_released = true;
+    applyTorque(0);
 }
 
 void Bridge::stop()
@@ -57,7 +66,7 @@ void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
 {
     m_settings.feedback = feedback;
     m_feedback.setSettings(feedback);
-    if (m_endpoints)
+    if (m_endpoints && !m_released)
         applyTorque(m_feedback.torqueAt(now()));
 }
 
@@ -74,6 +83,7 @@ BridgeStats Bridge::stats() const
     s.wrenches = m_feedback.counters();
     s.lastWrench = m_feedback.lastValue();
     s.tauExt = m_tauExt;
+    s.publishedTauExt = m_publishedTauExt;
     const std::lock_guard lock(m_mutex);
     s.overflow = m_overflow;
     return s;
@@ -89,8 +99,10 @@ void Bridge::onSamples(const SampleBatch &batch)
     for (const Sample &sample : batch) {
         if (!m_rate.due(sample.t_s))
             continue;
-        m_endpoints->publish(referenceMessages(
-            sample, sampleWallSeconds(arrival, newest, sample.t_s), m_settings, axis));
+        const ReferenceMessages m = referenceMessages(
+            sample, sampleWallSeconds(arrival, newest, sample.t_s), m_settings, axis);
+        m_endpoints->publish(m);
+        m_publishedTauExt = m.feedbackTorque;
     }
 }
 
@@ -119,7 +131,7 @@ void Bridge::takeWrench()
         arrivals.swap(m_arrivals);
         m_takePosted = false;
     }
-    if (!m_endpoints || arrivals.empty())
+    if (!m_endpoints || arrivals.empty() || m_released)
         return;
     const Component c = m_settings.feedback.component;
     for (const Arrival &a : arrivals)

@@ -29,6 +29,7 @@ struct BridgeStats
     WrenchFeedback::Counters wrenches; //!< wrenches in, rejected, stale
     double lastWrench = 0;             //!< last component received (NaN: none)
     double tauExt = 0;                 //!< τ_ext asked of the device [N·m]
+    double publishedTauExt = 0;        //!< torque.z of the last /hatpic/feedback message [N·m]
 };
 
 class Bridge : public QObject
@@ -45,6 +46,9 @@ public:
 
     //! Opens the DDS endpoints and starts publishing. Empty on success, else one sentence.
     QString start(const BridgeSettings &settings);
+    //! From now on every wrench is ignored and the device is asked for τ_ext = 0; publishing
+    //! goes on, so the robot sees the 0 on the feedback topic. stop() or start() end it.
+    void releaseFeedback();
     //! Asks the device for τ_ext = 0, then closes the endpoints.
     void stop();
     bool isRunning() const { return m_endpoints != nullptr; }
@@ -77,6 +81,8 @@ private:
     QElapsedTimer m_clock;
     QTimer m_checkTimer;
     double m_tauExt = 0;
+    double m_publishedTauExt = 0;
+    bool m_released = false; //!< releaseFeedback(): wrenches ignored, τ_ext held at 0
     std::array<std::uint64_t, kOutTopicCount> m_publishedBefore{}; //!< by endpoints now closed
     std::uint64_t m_writeErrorsBefore = 0;
 

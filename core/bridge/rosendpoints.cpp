@@ -108,19 +108,32 @@ std::string RosEndpoints::create()
     dds_qset_data_representation(qos, 1, &xcdr1);
 
     std::string problem;
-    const auto writer = [&](const std::string &name, const dds_topic_descriptor_t *desc) {
+    // The DDS topic of a ROS name; 0 (and `problem` set) when refused or already failed.
+    const auto topic = [&](const std::string &name, const dds_topic_descriptor_t *desc) {
         if (name.empty() || !problem.empty())
             return dds_entity_t(0);
-        const dds_entity_t topic =
+        const dds_entity_t t =
             dds_create_topic(h.participant, desc, ddsTopicName(name).c_str(), nullptr, nullptr);
-        if (topic < 0) {
-            problem = ddsError(("topic " + name).c_str(), topic);
+        if (t < 0)
+            problem = ddsError(("topic " + name).c_str(), t);
+        return t < 0 ? dds_entity_t(0) : t;
+    };
+    // A reader or writer of that topic.
+    const auto endpoint = [&](auto create, const char *what, const std::string &name,
+                              const dds_topic_descriptor_t *desc) {
+        const dds_entity_t t = topic(name, desc);
+        if (t == 0)
             return dds_entity_t(0);
-        }
-        const dds_entity_t w = dds_create_writer(h.participant, topic, qos, nullptr);
-        if (w < 0)
-            problem = ddsError(("writer of " + name).c_str(), w);
-        return w < 0 ? dds_entity_t(0) : w;
+        const dds_entity_t e = create(h.participant, t, qos, nullptr);
+        if (e < 0)
+            problem = ddsError((std::string(what) + name).c_str(), e);
+        return e < 0 ? dds_entity_t(0) : e;
+    };
+    const auto writer = [&](const std::string &name, const dds_topic_descriptor_t *desc) {
+        return endpoint(&dds_create_writer, "writer of ", name, desc);
+    };
+    const auto reader = [&](const std::string &name, const dds_topic_descriptor_t *desc) {
+        return endpoint(&dds_create_reader, "reader of ", name, desc);
     };
     h.writers[int(OutTopic::JointStates)] =
         writer(m_settings.topics.jointStates, &sensor_msgs_msg_dds__JointState__desc);
@@ -131,25 +144,11 @@ std::string RosEndpoints::create()
     h.writers[int(OutTopic::Feedback)] =
         writer(m_settings.topics.feedback, &geometry_msgs_msg_dds__WrenchStamped__desc);
 
-    dds_listener_t *listener = dds_create_listener(this);
-    dds_lset_data_available(listener, &Handles::onData);
-    const auto reader = [&](const std::string &name, const dds_topic_descriptor_t *desc) {
-        if (name.empty() || !problem.empty())
-            return dds_entity_t(0);
-        const dds_entity_t topic =
-            dds_create_topic(h.participant, desc, ddsTopicName(name).c_str(), nullptr, nullptr);
-        if (topic < 0) {
-            problem = ddsError(("topic " + name).c_str(), topic);
-            return dds_entity_t(0);
-        }
-        const dds_entity_t r = dds_create_reader(h.participant, topic, qos, nullptr);
-        if (r < 0)
-            problem = ddsError(("reader of " + name).c_str(), r);
-        return r < 0 ? dds_entity_t(0) : r;
-    };
     h.wrenchReader = reader(m_settings.topics.wrench, &geometry_msgs_msg_dds__WrenchStamped__desc);
     h.unstampedReader =
         reader(m_settings.topics.wrenchUnstamped, &geometry_msgs_msg_dds__Wrench__desc);
+    dds_listener_t *listener = dds_create_listener(this);
+    dds_lset_data_available(listener, &Handles::onData);
     // Listening starts once both handles are known (takeWrenches tells them apart).
     for (const dds_entity_t r : {h.wrenchReader, h.unstampedReader}) {
         if (r > 0 && problem.empty()) {

@@ -451,11 +451,6 @@ quint16 SimulatedDevice::streamRate() const
     return d->core ? d->core->streamRate() : 0;
 }
 
-SimulatedDevice::Cycle SimulatedDevice::lastCycle() const
-{
-    return d->last;
-}
-
 bool SimulatedDevice::feedbackStale() const
 {
     return d->last.flags & v2::kFlagFeedbackStale;

@@ -76,8 +76,6 @@ public:
     qint32 baud() const;        //!< effective emulated baud rate
     quint16 streamRate() const; //!< telemetry rate in force [Hz]
     bool feedbackStale() const;
-    //! The newest control cycle (τ_ext as the device renders it, its flags).
-    Cycle lastCycle() const;
     //! Highest telemetry rate the link can carry at this baud [Hz].
     quint16 linkLimitedRate() const;
     //! Telemetry frames dropped because the output queue was full (seen as seq gaps).

