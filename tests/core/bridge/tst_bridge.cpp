@@ -175,8 +175,28 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.05) < kTauExtTolerance, 3000);
     }
 
+    void releaseHoldsZeroWhileTheWrenchKeepsComing()
+    {
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(0.5); });
+        robot.start(20);
+        const double tau = 0.5 * m_bridge.settings().feedback.gain;
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - tau) < kTauExtTolerance, 5000);
+        m_bridge.releaseFeedback();
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 300);
+        QTRY_VERIFY_WITH_TIMEOUT(feedbackSeen(0.0), 1000); // still publishing
+        // Past several staleness checks and wrenches, it stays at 0.
+        QTest::qWait(3 * Bridge::kCheckIntervalMs + 100);
+        QCOMPARE(m_deviceTauExt, 0.0);
+        QCOMPARE(m_bridge.stats().tauExt, 0.0);
+        QVERIFY(m_bridge.isRunning());
+    }
+
     void stopLeavesTauExtZero()
     {
+        BridgeSettings settings = m_bridge.settings();
+        QCOMPARE(m_bridge.start(settings), QString()); // start() ends a release
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
         QTimer robot;
         connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(0.5); });
         robot.start(20);
