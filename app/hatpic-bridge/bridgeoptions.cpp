@@ -71,6 +71,23 @@ template<typename Place> Apply at(Place place)
     };
 }
 
+// A twist or wrench component (either spelling); with `allowAuto` also "auto" (nullopt).
+Apply componentSetting(const char *choices, bool allowAuto,
+                       void (*assign)(AppOptions &, std::optional<Component>))
+{
+    return [=](AppOptions &o, const QString &t) -> QString {
+        if (allowAuto && t == u"auto") {
+            assign(o, std::nullopt);
+            return {};
+        }
+        const auto c = Component::parse(t.toStdString());
+        if (!c)
+            return u"needs " + QString::fromLatin1(choices);
+        assign(o, c);
+        return {};
+    };
+}
+
 #define HATPIC_SETTING(expr) at([](AppOptions & o) -> auto & { return o.expr; })
 
 const std::vector<Setting> &settingTable()
@@ -129,18 +146,9 @@ const std::vector<Setting> &settingTable()
         {"axis", "AXIS",
          "Twist/pose axis: linear.x … angular.z, or auto (default: linear.x, "
          "angular.z in rotation mode).",
-         [](AppOptions &o, const QString &t) {
-             if (t == u"auto") {
-                 o.settings.referenceAxis.reset();
-                 return QString();
-             }
-             const auto c = Component::parse(t.toStdString());
-             if (!c)
-                 return QStringLiteral("needs linear.x, linear.y, linear.z, angular.x, "
-                                       "angular.y, angular.z or auto");
-             o.settings.referenceAxis = *c;
-             return QString();
-         }},
+         componentSetting(
+             "linear.x, linear.y, linear.z, angular.x, angular.y, angular.z or auto", true,
+             [](AppOptions &o, std::optional<Component> c) { o.settings.referenceAxis = c; })},
         {"origin", "X,Y,Z", "Pose position origin [m] (default 0,0,0; MAVROS: 0,0,0.5).",
          [](AppOptions &o, const QString &t) {
              const QStringList parts = t.split(u',');
@@ -157,14 +165,10 @@ const std::vector<Setting> &settingTable()
         {"component", "COMPONENT",
          "Wrench component fed back: force.x … torque.z (default "
          "force.z).",
-         [](AppOptions &o, const QString &t) {
-             const auto c = Component::parse(t.toStdString());
-             if (!c)
-                 return QStringLiteral("needs force.x, force.y, force.z, torque.x, torque.y or "
-                                       "torque.z");
-             o.settings.feedback.component = *c;
-             return QString();
-         }},
+         componentSetting("force.x, force.y, force.z, torque.x, torque.y or torque.z", false,
+                          [](AppOptions &o, std::optional<Component> c) {
+                              o.settings.feedback.component = *c;
+                          })},
         {"gain", "NM_PER_N", "τ_ext per unit of the component (default 0.154).",
          HATPIC_SETTING(settings.feedback.gain)},
         {"limit", "NM", "|τ_ext| at most [N·m] (default 0.154).",
