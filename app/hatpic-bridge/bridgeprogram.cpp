@@ -1,0 +1,130 @@
+#include "bridgeprogram.h"
+
+#include <QElapsedTimer>
+#include <QEventLoop>
+
+#include <cmath>
+#include <cstdio>
+
+namespace hatpic::bridge {
+
+namespace {
+
+QString num(double v)
+{
+    return QString::number(v, 'g', 4);
+}
+
+void printLine(FILE *stream, const QString &line)
+{
+    std::fprintf(stream, "%s\n", line.toUtf8().constData());
+    std::fflush(stream);
+}
+
+} // namespace
+
+BridgeProgram::BridgeProgram(const AppOptions &options, QObject *parent)
+    : QObject(parent), m_options(options), m_bridge(m_client)
+{
+    m_statsTimer.setInterval(kStatsIntervalMs);
+    connect(&m_statsTimer, &QTimer::timeout, this, &BridgeProgram::printStats);
+    m_retryTimer.setSingleShot(true);
+    m_retryTimer.setInterval(kRetryIntervalMs);
+    connect(&m_retryTimer, &QTimer::timeout, this,
+            [this] { m_client.connectDevice(m_options.connect); });
+    connect(&m_client, &DeviceClient::stateChanged, this, &BridgeProgram::onStateChanged);
+    connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
+        if (!batch.isEmpty())
+            m_lastDeviceTauExt = batch.last().tau_ext;
+    });
+    connect(&m_client, &DeviceClient::deviceLog, this,
+            [](const QString &line) { printLine(stderr, u"hatpic-bridge: device: " + line); });
+}
+
+QString BridgeProgram::start()
+{
+    if (!m_options.profilePath.isEmpty()) {
+        const ProfileReadResult read = readProfile(m_options.profilePath);
+        if (!read.ok())
+            return u"The profile " + m_options.profilePath + u" cannot be used: " +
+                   read.errors.join(QStringLiteral("; ")) + u'.';
+        m_profile = read.profile;
+        m_bridge.setReferenceMode(m_profile->host.mode);
+    }
+    if (const QString error = m_bridge.start(m_options.settings); !error.isEmpty())
+        return error;
+    m_client.connectDevice(m_options.connect);
+    m_statsTimer.start();
+    return {};
+}
+
+void BridgeProgram::onStateChanged(SessionState state, const QString &detail)
+{
+    if (m_closing)
+        return;
+    printLine(stderr, u"hatpic-bridge: " + sessionStateName(state) +
+                          (detail.isEmpty() ? QString() : u": " + detail));
+    if (state == SessionState::Connected)
+        onConnected();
+    // A first connection that failed is tried again; a lost one reconnects by itself.
+    if (state == SessionState::Disconnected)
+        m_retryTimer.start();
+}
+
+void BridgeProgram::onConnected()
+{
+    HostParams host = m_profile ? m_profile->host : HostParams();
+    const double limit = m_client.deviceInfo().tauLimit;
+    if (std::isfinite(limit) && limit > 0 && limit <= 10)
+        host.tau_limit = limit;
+    m_client.setHostParams(host);
+    if (m_profile && m_client.deviceInfo().canSetParams())
+        m_client.pushParams(m_profile->device);
+}
+
+void BridgeProgram::printStats()
+{
+    const LinkStats link = m_client.stats();
+    const BridgeStats s = m_bridge.stats();
+    QString out;
+    for (int i = 0; i < kOutTopicCount; ++i) {
+        out += (i ? u", " : u"") + QString::fromLatin1(outTopicKey(OutTopic(i))) + u' ' +
+               QString::number(s.published[i]);
+    }
+    const QString rtt = link.rttMedianMs < 0 ? QStringLiteral("–") : num(link.rttMedianMs) + u" ms";
+    printLine(stdout, u"link " + sessionStateName(m_client.state()) + u", " +
+                          num(link.framesPerSecond) + u" frames/s, " +
+                          QString::number(link.seqDrops) + u" missing, rtt " + rtt + u" | out " +
+                          out + u" | wrenches " + QString::number(s.wrenches.received) +
+                          u", non-finite " + QString::number(s.wrenches.nonFinite) + u", stale " +
+                          QString::number(s.wrenches.stale) + u", limited " +
+                          QString::number(s.wrenches.limited) + u" | tau_ext " + num(s.tauExt) +
+                          u" N·m, device " + num(m_lastDeviceTauExt) + u" N·m");
+}
+
+void BridgeProgram::shutdown()
+{
+    m_closing = true;
+    m_statsTimer.stop();
+    m_retryTimer.stop();
+    m_bridge.releaseFeedback(); // τ_ext 0 to the session; publishing goes on
+    if (m_client.state() == SessionState::Connected) {
+        // The session streams the 0 on its feedback timer; wait until the device's telemetry
+        // says so and that has gone out on the feedback topic.
+        QEventLoop loop;
+        QElapsedTimer waited;
+        waited.start();
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &loop, [&] {
+            if (m_bridge.stats().publishedTauExt == 0 || waited.elapsed() >= kZeroConfirmMs)
+                loop.quit();
+        });
+        poll.start(5);
+        loop.exec();
+    }
+    m_bridge.stop();
+    printStats();
+    m_client.disconnectDevice();
+}
+
+} // namespace hatpic::bridge

@@ -1,0 +1,49 @@
+// hatpic-bridge at run time: a DeviceClient that keeps reconnecting, the Bridge on top of it,
+// statistics once a second, and a shutdown that leaves the device with τ_ext = 0.
+#pragma once
+
+#include "bridgeoptions.h"
+
+#include "bridge/bridge.h"
+#include "profile/profile.h"
+#include "session/deviceclient.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <optional>
+
+namespace hatpic::bridge {
+
+class BridgeProgram : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kStatsIntervalMs = 1000;
+    static constexpr int kRetryIntervalMs = 1000; //!< a first connection that failed
+    static constexpr int kZeroConfirmMs = 300;    //!< longest wait for τ_ext 0 at shutdown
+
+    explicit BridgeProgram(const AppOptions &options, QObject *parent = nullptr);
+
+    //! Reads the profile, opens the DDS endpoints, starts connecting. Empty or one sentence.
+    QString start();
+    //! τ_ext 0 to the device (waiting until its telemetry shows it and /hatpic/feedback has
+    //! published it, at most kZeroConfirmMs), then closes the endpoints and the port.
+    void shutdown();
+
+private:
+    void onStateChanged(SessionState state, const QString &detail);
+    void onConnected();
+    void printStats();
+
+    AppOptions m_options;
+    DeviceClient m_client;
+    Bridge m_bridge;
+    std::optional<Profile> m_profile;
+    QTimer m_statsTimer;
+    QTimer m_retryTimer;
+    double m_lastDeviceTauExt = 0; //!< τ_ext of the newest sample [N·m]
+    bool m_closing = false;
+};
+
+} // namespace hatpic::bridge

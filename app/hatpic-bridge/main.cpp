@@ -1,0 +1,57 @@
+// hatpic-bridge: the joystick on ROS 2 and the robot's wrench back in the operator's hand
+// (docs/ros.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4;
+// DDS refused: exit 1.
+#include "bridgeoptions.h"
+#include "bridgeprogram.h"
+
+#include "common/quitonsignal.h"
+#include "session/sessiontypes.h"
+
+#include <QCoreApplication>
+
+#include <cstdio>
+
+using namespace hatpic;
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitBadOptions = 4;
+
+void printError(const QString &sentence)
+{
+    std::fprintf(stderr, "hatpic-bridge: %s\n", qPrintable(sentence));
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("hatpic-bridge"));
+    registerSessionMetaTypes();
+
+    QString help, error;
+    const auto options = bridge::parseAppOptions(QCoreApplication::arguments(), &help, &error);
+    if (!options) {
+        if (!error.isEmpty()) {
+            printError(error);
+            return kExitBadOptions;
+        }
+        std::fputs(qPrintable(help), stdout);
+        return kExitOk;
+    }
+    if (!quitOnSignals()) {
+        printError(QStringLiteral("Cannot install the signal handlers."));
+        return kExitFailure;
+    }
+    bridge::BridgeProgram program(*options);
+    if (const QString failure = program.start(); !failure.isEmpty()) {
+        printError(failure);
+        return kExitFailure;
+    }
+    app.exec();
+    program.shutdown();
+    return kExitOk;
+}

@@ -1,0 +1,99 @@
+// What the robot bridge publishes and subscribes, and how a wrench becomes feedback (ros.md).
+// Plain values with their defaults; no DDS, no Qt.
+#pragma once
+
+#include "model/params.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hatpic::bridge {
+
+//! One component of a twist or wrench: linear.x … angular.z (force.x … torque.z).
+struct Component
+{
+    bool angular = false; //!< angular (torque) rather than linear (force)
+    int index = 0;        //!< 0 = x, 1 = y, 2 = z
+
+    //! "linear.x", "angular.z"; a wrench reads the same indices as "force.x", "torque.z".
+    std::string twistName() const;
+    std::string wrenchName() const;
+    //! Accepts both spellings ("linear.x" or "force.x"); nullopt for anything else.
+    static std::optional<Component> parse(const std::string &text);
+
+    friend bool operator==(const Component &, const Component &) = default;
+};
+
+enum class QosProfile {
+    Reliable,   //!< reliable, volatile, keep last `depth` (ROS 2's default)
+    BestEffort, //!< best effort, volatile, keep last `depth` (ROS 2's sensor data profile)
+};
+std::string qosProfileName(QosProfile profile); //!< "reliable", "best-effort"
+std::optional<QosProfile> parseQosProfile(const std::string &text);
+
+//! ROS topic names (a leading '/' as in `ros2 topic list`); an empty name is not used.
+struct Topics
+{
+    std::string jointStates = "/hatpic/joint_states"; //!< out: sensor_msgs/JointState
+    std::string twist = "/hatpic/twist";              //!< out: geometry_msgs/TwistStamped
+    std::string pose = "/hatpic/pose";                //!< out: geometry_msgs/PoseStamped
+    std::string feedback = "/hatpic/feedback";        //!< out: geometry_msgs/WrenchStamped
+    std::string wrench = "/wrench_estimation";        //!< in: geometry_msgs/WrenchStamped
+    std::string wrenchUnstamped;                      //!< in: geometry_msgs/Wrench (off)
+
+    friend bool operator==(const Topics &, const Topics &) = default;
+};
+
+//! Wrench → τ_ext. The defaults reproduce the published driver: force.z × 350 load units,
+//! clamped to ±350, where ±1000 load units are tau_limit (0.44 N·m): 0.154 N·m per N, ±0.154.
+struct FeedbackSettings
+{
+    Component component{false, 2}; //!< force.z
+    double gain = 0.154;           //!< τ_ext per unit of the component [N·m/N or N·m/(N·m)]
+    double limit = 0.154;          //!< |τ_ext| at most [N·m]
+    double staleAfter = 0.5;       //!< a wrench older than this gives τ_ext = 0 [s]
+
+    friend bool operator==(const FeedbackSettings &, const FeedbackSettings &) = default;
+};
+
+struct BridgeSettings
+{
+    Topics topics;
+    double publishRateHz = 100;             //!< messages per topic per second, at most [Hz]
+    std::string frameId = "hatpic";         //!< header.frame_id of every message out
+    std::string jointName = "hatpic_knob";  //!< JointState.name[0]
+    std::optional<Component> referenceAxis; //!< unset: linear.x, angular.z in rotation mode
+    std::array<double, 3> poseOrigin{};     //!< added to the pose's position [m]
+    FeedbackSettings feedback;              //!< the wrench that comes back
+    QosProfile qos = QosProfile::Reliable;  //!< of every topic, in and out
+    int depth = 10;                         //!< keep last N
+    int domainId = 0;                       //!< DDS domain (ROS_DOMAIN_ID)
+
+    //! The axis the references go on for the given reference mode.
+    Component axisFor(ReferenceMode mode) const;
+
+    friend bool operator==(const BridgeSettings &, const BridgeSettings &) = default;
+};
+
+// Bounds (checked by validate()).
+constexpr double kMaxPublishRateHz = 1000; //!< the fastest telemetry there is
+constexpr double kMaxFeedbackGain = 100;   //!< |gain| [N·m per unit]
+constexpr double kMaxFeedbackLimit = 10;   //!< model.md's largest tau_limit [N·m]
+constexpr double kMaxStaleAfter = 10;      //!< [s]
+constexpr int kMaxDepth = 1000;
+constexpr int kMaxDomainId = 232;      //!< DDS's port mapping allows 0…232
+constexpr double kMaxPoseOrigin = 1e6; //!< |origin| per axis [m]
+
+//! Every broken rule, one sentence each ("publish rate: must be above 0 and at most 1000 Hz,
+//! got 0"). Empty means valid.
+std::vector<std::string> validate(const BridgeSettings &settings);
+//! A topic name rmw would accept: '/'-separated tokens of [A-Za-z0-9_], not starting with a
+//! digit, no "//", no trailing '/'.
+bool isValidTopicName(const std::string &name);
+//! The DDS topic rmw names after a ROS topic: "rt" + the absolute name ("/a/b" and "a/b" both
+//! give "rt/a/b": a relative name resolves in the root namespace).
+std::string ddsTopicName(const std::string &rosName);
+
+} // namespace hatpic::bridge

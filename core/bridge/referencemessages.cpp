@@ -1,0 +1,68 @@
+#include "referencemessages.h"
+
+#include <cmath>
+#include <limits>
+
+namespace hatpic::bridge {
+
+Stamp stampFromSeconds(double seconds)
+{
+    if (!std::isfinite(seconds) || seconds < 0)
+        return {};
+    constexpr double kMaxSec = std::numeric_limits<std::int32_t>::max();
+    if (seconds >= kMaxSec)
+        return {std::numeric_limits<std::int32_t>::max(), 0};
+    const double whole = std::floor(seconds);
+    auto nanos = static_cast<std::int64_t>(std::llround((seconds - whole) * 1e9));
+    auto sec = static_cast<std::int64_t>(whole);
+    if (nanos >= 1000000000) {
+        nanos -= 1000000000;
+        ++sec;
+    }
+    return {static_cast<std::int32_t>(sec), static_cast<std::uint32_t>(nanos)};
+}
+
+double stampSeconds(const Stamp &stamp)
+{
+    return double(stamp.sec) + double(stamp.nanosec) * 1e-9;
+}
+
+ReferenceMessages referenceMessages(const Sample &sample, double wallSeconds,
+                                    const BridgeSettings &settings, Component axis)
+{
+    ReferenceMessages m;
+    m.stamp = stampFromSeconds(wallSeconds);
+    m.position = sample.theta;
+    m.velocity = sample.omega;
+    m.effort = sample.tau;
+    m.twist[(axis.angular ? 3 : 0) + axis.index] = sample.v_ref;
+    for (int i = 0; i < 3; ++i)
+        m.posePosition[i] = settings.poseOrigin[i];
+    if (axis.angular) {
+        // p_ref is an angle about that axis: the rotation as a unit quaternion.
+        m.poseOrientation[axis.index] = std::sin(sample.p_ref / 2);
+        m.poseOrientation[3] = std::cos(sample.p_ref / 2);
+    } else {
+        m.posePosition[axis.index] += sample.p_ref;
+    }
+    m.feedbackTorque = sample.tau_ext;
+    return m;
+}
+
+bool RateLimiter::due(double t)
+{
+    constexpr double kTolerance = 1e-6; // a device clock's microsecond rounding [s]
+    // A clock that went back (a new connection) starts over.
+    if (!m_next || t < *m_next - 2 * m_period) {
+        m_next = t + m_period;
+        return true;
+    }
+    if (t < *m_next - kTolerance)
+        return false;
+    *m_next += m_period;
+    if (*m_next <= t) // fell behind (a gap): the next one is a period from now
+        *m_next = t + m_period;
+    return true;
+}
+
+} // namespace hatpic::bridge

@@ -1,0 +1,70 @@
+// The joystick's state as the content of the bridge's outgoing ROS messages (ros.md § Topics),
+// and the rate at which they go out. Plain C++: what goes on the wire is decided here, the
+// DDS side only copies it.
+#pragma once
+
+#include "bridgesettings.h"
+
+#include "telemetry/sample.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+namespace hatpic::bridge {
+
+//! builtin_interfaces/Time.
+struct Stamp
+{
+    std::int32_t sec = 0;
+    std::uint32_t nanosec = 0;
+
+    friend bool operator==(const Stamp &, const Stamp &) = default;
+};
+//! Seconds since the Unix epoch → Time (nanosec always below 10⁹; clamped to int32 seconds).
+Stamp stampFromSeconds(double seconds);
+double stampSeconds(const Stamp &stamp);
+
+//! One sample's content for every outgoing topic.
+struct ReferenceMessages
+{
+    Stamp stamp;                          //!< the sample's time on the host's wall clock
+    double position = 0;                  //!< JointState: θ [rad]
+    double velocity = 0;                  //!< JointState: ω [rad/s]
+    double effort = 0;                    //!< JointState: τ [N·m]
+    std::array<double, 6> twist{};        //!< linear x y z, angular x y z: v_ref on the axis
+    std::array<double, 3> posePosition{}; //!< origin, plus p_ref on a linear axis [m]
+    std::array<double, 4> poseOrientation{0, 0, 0, 1}; //!< x y z w: p_ref about an angular axis
+    double feedbackTorque = 0; //!< WrenchStamped torque.z: the τ_ext the device applies
+};
+
+//! The messages for `sample`, stamped `wallSeconds` (Unix time of the sample), with the
+//! references on `axis`.
+ReferenceMessages referenceMessages(const Sample &sample, double wallSeconds,
+                                    const BridgeSettings &settings, Component axis);
+
+//! The wall-clock time of a sample that is `ageSeconds` older than the newest sample of its
+//! batch, which arrived at `arrivalWallSeconds`.
+inline double sampleWallSeconds(double arrivalWallSeconds, double newestT, double sampleT)
+{
+    return arrivalWallSeconds - (newestT - sampleT);
+}
+
+//! Picks samples so that at most `rateHz` per second go out, on average exactly that many when
+//! the samples come faster, by the samples' own clock (so batching on the host does not
+//! change the rate).
+class RateLimiter
+{
+public:
+    explicit RateLimiter(double rateHz) { setRate(rateHz); }
+    void setRate(double rateHz) { m_period = 1.0 / rateHz; }
+    //! True when the sample at time `t` [s] is to be published.
+    bool due(double t);
+    void reset() { m_next.reset(); }
+
+private:
+    double m_period = 0.01;
+    std::optional<double> m_next;
+};
+
+} // namespace hatpic::bridge

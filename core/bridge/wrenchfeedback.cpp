@@ -1,0 +1,42 @@
+#include "wrenchfeedback.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hatpic::bridge {
+
+double WrenchFeedback::mapped(double value)
+{
+    if (!std::isfinite(value))
+        return 0.0;
+    const double tau = m_settings.gain * value;
+    if (!std::isfinite(tau))
+        return 0.0;
+    return std::clamp(tau, -m_settings.limit, m_settings.limit);
+}
+
+double WrenchFeedback::receive(double value, double now)
+{
+    ++m_counters.received;
+    m_lastValue = value;
+    m_lastTime = now;
+    m_stale = false;
+    if (!std::isfinite(value)) {
+        ++m_counters.nonFinite;
+        return 0.0;
+    }
+    if (std::abs(m_settings.gain * value) > m_settings.limit)
+        ++m_counters.limited;
+    return mapped(value);
+}
+
+double WrenchFeedback::torqueAt(double now)
+{
+    if (!m_stale && now - m_lastTime > m_settings.staleAfter) {
+        m_stale = true;
+        ++m_counters.stale;
+    }
+    return m_stale ? 0.0 : mapped(m_lastValue);
+}
+
+} // namespace hatpic::bridge

@@ -1,0 +1,170 @@
+// hatpic-bridge, run as a real process against a simulated joystick on a pseudo-terminal,
+// with a test ROS 2 node (its own IDL types) on loopback-only Cyclone DDS: references out,
+// wrench in as τ_ext, statistics, options, and SIGINT leaving the device with τ_ext 0.
+#include "rostestpeer.h"
+
+#include "sim/simulatorhost.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include <cmath>
+#include <csignal>
+#include <memory>
+
+using namespace hatpic;
+using hatpic::test::RosTestPeer;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int kDomain = 72;               //!< this test's own DDS domain
+constexpr double kTauExtTolerance = 1e-6; //!< τ_ext travels as float32 [N·m]
+
+struct Run
+{
+    int code = -1;
+    QByteArray out, err;
+};
+
+Run runBridge(const QStringList &arguments, const QByteArray &domain = QByteArray())
+{
+    QProcess process;
+    process.setProgram(QStringLiteral(HATPIC_BRIDGE_PATH));
+    process.setArguments(arguments);
+    if (!domain.isNull()) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, QString::fromLatin1(domain));
+        process.setProcessEnvironment(env);
+    }
+    process.start();
+    Run run;
+    if (!process.waitForFinished(30000)) {
+        process.kill();
+        process.waitForFinished();
+        return run;
+    }
+    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+} // namespace
+
+class TestHatpicBridge : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { hatpic::test::confineDdsToLoopback(); }
+
+    void badOptionsAreOneSentence_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QByteArray>("domain");
+        QTest::addColumn<QByteArray>("message");
+        QTest::newRow("no port") << QStringList{} << QByteArray() << QByteArray("--port is needed");
+        QTest::newRow("gain") << QStringList{u"--port"_s, u"sim"_s, u"--gain"_s, u"lots"_s}
+                              << QByteArray() << QByteArray("--gain needs a number, got 'lots'.");
+        QTest::newRow("limit") << QStringList{u"--port"_s, u"sim"_s, u"--limit"_s, u"-1"_s}
+                               << QByteArray()
+                               << QByteArray("limit: must be from 0 to 10 N·m, got -1.");
+        QTest::newRow("topic") << QStringList{u"--port"_s, u"sim"_s, u"--twist-topic"_s, u"a b"_s}
+                               << QByteArray() << QByteArray("twist topic: 'a b' is not a ROS");
+        QTest::newRow("axis") << QStringList{u"--port"_s, u"sim"_s, u"--axis"_s, u"up"_s}
+                              << QByteArray() << QByteArray("--axis needs linear.x");
+        QTest::newRow("domain") << QStringList{u"--port"_s, u"sim"_s} << QByteArray("seven")
+                                << QByteArray("ROS_DOMAIN_ID must be a whole number");
+        QTest::newRow("config") << QStringList{u"--port"_s, u"sim"_s, u"--config"_s,
+                                               u"/nonexistent/bridge.json"_s}
+                                << QByteArray() << QByteArray("Cannot read the config file");
+    }
+    void badOptionsAreOneSentence()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QByteArray, domain);
+        QFETCH(QByteArray, message);
+        const Run run = runBridge(arguments, domain);
+        QCOMPARE(run.code, 4);
+        QVERIFY2(run.err.contains(message), run.err.constData());
+        QCOMPARE(run.err.trimmed().count('\n'), 0);
+        QVERIFY(run.out.isEmpty());
+    }
+
+    void configFileSettingsAndUnknownKeys()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"bridge.json"_s);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"gain": 0.2, "colour": "red"})");
+        file.close();
+        const Run run = runBridge({u"--port"_s, u"sim"_s, u"--config"_s, path});
+        QCOMPARE(run.code, 4);
+        QVERIFY2(run.err.contains("unknown setting \"colour\""), run.err.constData());
+    }
+
+    void roundTripAndSigint()
+    {
+        SimulatedDevice::Config config;
+        config.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
+        SimulatorHost host(config);
+        QCOMPARE(host.start(), QString());
+
+        RosTestPeer peer(kDomain);
+        QVERIFY(peer.isValid());
+        QProcess bridge;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, QString::number(kDomain));
+        bridge.setProcessEnvironment(env);
+        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH),
+                     {u"--port"_s, host.slavePath(), u"--origin"_s, u"0,0,0.5"_s});
+        QVERIFY(bridge.waitForStarted());
+
+        // References of the held knob under ROS 2's names.
+        QTRY_VERIFY_WITH_TIMEOUT((peer.take(), peer.twists.size() >= 50), 15000);
+        const auto &twist = peer.twists.back();
+        QVERIFY2(twist.a[0] > 0.1 && twist.a[0] < 0.3, qPrintable(QString::number(twist.a[0])));
+        QVERIFY(!peer.joints.empty() && !peer.poses.empty());
+        QCOMPARE(peer.joints.back().names, std::vector<std::string>{"hatpic_knob"});
+        QCOMPARE(peer.poses.back().position[2], 0.5);
+
+        // A wrench at 50 Hz reaches the device and comes back on /hatpic/feedback.
+        QTRY_VERIFY_WITH_TIMEOUT(peer.wrenchMatched(), 10000);
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { peer.publishWrench(0.5); });
+        robot.start(20);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (peer.take(), !peer.feedbacks.empty() &&
+                              std::abs(peer.feedbacks.back().b[2] - 0.077) < kTauExtTolerance),
+            10000);
+
+        // Statistics once a second, with the wrenches counted.
+        QByteArray out;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (out += bridge.readAllStandardOutput(), out.contains("| tau_ext 0.077 N·m")), 5000);
+        QVERIFY2(out.contains("out joint_states "), out.constData());
+
+        // SIGINT while the wrench is still coming: the bridge exits within a second, and the
+        // device's telemetry showed τ_ext 0 on /hatpic/feedback before it went — while the
+        // bridge still streamed feedback, so the 0 was the bridge's, not the watchdog's.
+        QElapsedTimer stopping;
+        stopping.start();
+        ::kill(pid_t(bridge.processId()), SIGINT);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
+        const qint64 stopMs = stopping.elapsed();
+        robot.stop();
+        QCOMPARE(bridge.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(bridge.exitCode(), 0);
+        QVERIFY2(stopMs < 1000, qPrintable(QString::number(stopMs)));
+        peer.take();
+        QVERIFY(!peer.feedbacks.empty());
+        QCOMPARE(peer.feedbacks.back().b[2], 0.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestHatpicBridge)
+#include "tst_hatpicbridge.moc"

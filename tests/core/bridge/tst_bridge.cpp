@@ -1,0 +1,225 @@
+// The bridge over real Cyclone DDS on loopback, against the in-process simulated joystick: a
+// test node with its own IDL types sees the references of a knob held at a known angle under
+// ROS 2's topic and type names, and its wrench reaches the device as τ_ext.
+#include "rostestpeer.h"
+
+#include "bridge/bridge.h"
+#include "session/deviceclient.h"
+
+#include <QDateTime>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+using namespace hatpic;
+using namespace hatpic::bridge;
+using hatpic::test::RosTestPeer;
+
+namespace {
+
+constexpr int kDomain = 71;               //!< this test's own DDS domain
+constexpr double kHeldAngle = 0.5;        //!< the simulated hand's target [rad]
+constexpr double kTauExtTolerance = 1e-6; //!< τ_ext travels as float32 [N·m]
+
+double wallNow()
+{
+    return double(QDateTime::currentMSecsSinceEpoch()) * 1e-3;
+}
+
+} // namespace
+
+class TestBridge : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        hatpic::test::confineDdsToLoopback();
+        registerSessionMetaTypes();
+        ConnectOptions options;
+        options.port = QString::fromUtf16(kSimPortName);
+        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, kHeldAngle};
+        connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
+            if (!batch.isEmpty())
+                m_deviceTauExt = batch.last().tau_ext;
+        });
+        m_client.connectDevice(options);
+        QTRY_COMPARE_WITH_TIMEOUT(m_client.state(), SessionState::Connected, 10000);
+        m_client.setHostParams(HostParams{});
+
+        BridgeSettings settings;
+        settings.domainId = kDomain;
+        settings.topics.wrenchUnstamped = "/robot/wrench";
+        m_peer = std::make_unique<RosTestPeer>(kDomain);
+        QCOMPARE(m_bridge.start(settings), QString());
+        QVERIFY(m_peer->isValid());
+    }
+
+    void referencesOfAHeldKnob()
+    {
+        // Let the knob settle at the hand's angle, then listen for half a second.
+        QTest::qWait(1500);
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(500);
+        m_peer->take();
+        QVERIFY2(m_peer->joints.size() >= 20 && m_peer->twists.size() >= 20 &&
+                     m_peer->poses.size() >= 20,
+                 qPrintable(QString::number(m_peer->joints.size())));
+        const double received = wallNow();
+
+        for (const auto &j : m_peer->joints) {
+            QCOMPARE(j.frame, std::string("hatpic"));
+            QCOMPARE(j.names, std::vector<std::string>{"hatpic_knob"});
+            QCOMPARE(j.position.size(), 1u);
+            QCOMPARE(j.velocity.size(), 1u);
+            QCOMPARE(j.effort.size(), 1u);
+            QVERIFY2(j.position[0] > 0.25 && j.position[0] < kHeldAngle + 0.05,
+                     qPrintable(QString::number(j.position[0])));
+            QVERIFY(std::abs(j.stamp.seconds() - received) < 1.0); // the wall clock
+        }
+        // v_ref = v_max/2 · θ (v_max 1, θ0 0) on linear.x, matched by stamp.
+        int matched = 0;
+        for (const auto &t : m_peer->twists) {
+            const auto j = std::find_if(m_peer->joints.begin(), m_peer->joints.end(),
+                                        [&](const auto &j) { return j.stamp == t.stamp; });
+            if (j == m_peer->joints.end())
+                continue;
+            ++matched;
+            QVERIFY(std::abs(t.a[0] - 0.5 * j->position[0]) < 1e-12);
+            QCOMPARE(t.a[1], 0.0);
+            QCOMPARE(t.a[2], 0.0);
+            QCOMPARE(t.b, (std::array<double, 3>{0, 0, 0}));
+        }
+        QVERIFY(matched >= 20);
+        // p_ref = ∫ v_ref dt on position.x: it grows at v_ref per second of stamp time.
+        const auto &first = m_peer->poses.front();
+        const auto &last = m_peer->poses.back();
+        const double dt = last.stamp.seconds() - first.stamp.seconds();
+        const double rate = (last.position[0] - first.position[0]) / dt;
+        const double v = m_peer->twists.back().a[0];
+        QVERIFY2(std::abs(rate - v) < 0.1 * v, qPrintable(QString::number(rate)));
+        QCOMPARE(last.orientation, (std::array<double, 4>{0, 0, 0, 1}));
+
+        // On the wire under ROS 2's names.
+        const auto publications = m_peer->publications();
+        const std::pair<std::string, std::string> expected[] = {
+            {"rt/hatpic/joint_states", "sensor_msgs::msg::dds_::JointState_"},
+            {"rt/hatpic/twist", "geometry_msgs::msg::dds_::TwistStamped_"},
+            {"rt/hatpic/pose", "geometry_msgs::msg::dds_::PoseStamped_"},
+            {"rt/hatpic/feedback", "geometry_msgs::msg::dds_::WrenchStamped_"}};
+        for (const auto &e : expected) {
+            QVERIFY2(std::find(publications.begin(), publications.end(), e) != publications.end(),
+                     e.first.c_str());
+        }
+    }
+
+    void wrenchBecomesTauExt()
+    {
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
+        // A robot publishing at 50 Hz.
+        double force = 0.5;
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(force); });
+        robot.start(20);
+
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.077) < kTauExtTolerance, 5000);
+        QCOMPARE(m_bridge.stats().tauExt, 0.077);
+        QTRY_VERIFY_WITH_TIMEOUT(feedbackSeen(0.077), 3000);
+
+        force = std::numeric_limits<double>::quiet_NaN();
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
+        QVERIFY(m_bridge.stats().wrenches.nonFinite > 0);
+        QTRY_VERIFY_WITH_TIMEOUT(feedbackSeen(0.0), 3000);
+
+        force = 1e12;
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.154) < kTauExtTolerance, 3000);
+        QVERIFY(m_bridge.stats().wrenches.limited > 0);
+        force = -1e12;
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt + 0.154) < kTauExtTolerance, 3000);
+
+        // The robot falls silent: after 0.5 s the wrench is stale and τ_ext goes to 0.
+        robot.stop();
+        QElapsedTimer silent;
+        silent.start();
+        const quint64 staleBefore = m_bridge.stats().wrenches.stale;
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
+        QVERIFY2(silent.elapsed() >= 450, qPrintable(QString::number(silent.elapsed())));
+        QCOMPARE(m_bridge.stats().wrenches.stale, staleBefore + 1);
+    }
+
+    void unstampedWrenchIsAcceptedToo()
+    {
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(true), 5000);
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishUnstampedWrench(-0.25); });
+        robot.start(20);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt + 0.0385) < kTauExtTolerance, 5000);
+    }
+
+    void gainAndLimitChangeWhileRunning()
+    {
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(1.0); });
+        robot.start(20);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.154) < kTauExtTolerance, 5000);
+        FeedbackSettings f = m_bridge.settings().feedback;
+        f.gain = 0.05;
+        m_bridge.setFeedbackSettings(f);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.05) < kTauExtTolerance, 3000);
+    }
+
+    void releaseHoldsZeroWhileTheWrenchKeepsComing()
+    {
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(0.5); });
+        robot.start(20);
+        const double tau = 0.5 * m_bridge.settings().feedback.gain;
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - tau) < kTauExtTolerance, 5000);
+        m_bridge.releaseFeedback();
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 300);
+        QTRY_VERIFY_WITH_TIMEOUT(feedbackSeen(0.0), 1000); // still publishing
+        // Past several staleness checks and wrenches, it stays at 0.
+        QTest::qWait(3 * Bridge::kCheckIntervalMs + 100);
+        QCOMPARE(m_deviceTauExt, 0.0);
+        QCOMPARE(m_bridge.stats().tauExt, 0.0);
+        QVERIFY(m_bridge.isRunning());
+    }
+
+    void stopLeavesTauExtZero()
+    {
+        BridgeSettings settings = m_bridge.settings();
+        QCOMPARE(m_bridge.start(settings), QString()); // start() ends a release
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(0.5); });
+        robot.start(20);
+        QTRY_VERIFY_WITH_TIMEOUT(m_deviceTauExt != 0.0, 5000);
+        robot.stop();
+        m_bridge.stop();
+        QVERIFY(!m_bridge.isRunning());
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 300); // well before staleness would
+    }
+
+private:
+    bool feedbackSeen(double tau)
+    {
+        m_peer->take();
+        return !m_peer->feedbacks.empty() &&
+               std::abs(m_peer->feedbacks.back().b[2] - tau) < kTauExtTolerance;
+    }
+
+    DeviceClient m_client;
+    Bridge m_bridge{m_client};
+    std::unique_ptr<RosTestPeer> m_peer;
+    double m_deviceTauExt = 0;
+};
+
+QTEST_GUILESS_MAIN(TestBridge)
+#include "tst_bridge.moc"

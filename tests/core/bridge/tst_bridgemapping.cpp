@@ -1,0 +1,212 @@
+// The bridge's DDS-independent parts: wrench → τ_ext (gain, limit, stale, non-finite), the
+// outgoing messages' content, stamps, the rate limiter, and the settings' rules.
+#include "bridge/bridgesettings.h"
+#include "bridge/referencemessages.h"
+#include "bridge/wrenchfeedback.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+using namespace hatpic;
+using namespace hatpic::bridge;
+
+class TestBridgeMapping : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void defaultsReproduceThePublishedDriver()
+    {
+        // force.z × 350 load units, clamped to ±350; ±1000 load units = tau_limit (0.44 N·m).
+        const FeedbackSettings f;
+        QCOMPARE(f.component, (Component{false, 2}));
+        QCOMPARE(f.gain, 350.0 / 1000.0 * 0.44);
+        QCOMPARE(f.limit, 350.0 / 1000.0 * 0.44);
+        QCOMPARE(f.staleAfter, 0.5);
+    }
+
+    void wrenchMapsThroughGainAndLimit_data()
+    {
+        QTest::addColumn<double>("value");
+        QTest::addColumn<double>("tau");
+        QTest::addColumn<bool>("limited");
+        QTest::newRow("zero") << 0.0 << 0.0 << false;
+        QTest::newRow("half a newton") << 0.5 << 0.077 << false;
+        QTest::newRow("minus half") << -0.5 << -0.077 << false;
+        QTest::newRow("exactly one newton") << 1.0 << 0.154 << false;
+        QTest::newRow("huge") << 1e9 << 0.154 << true;
+        QTest::newRow("huge negative") << -1e9 << -0.154 << true;
+        QTest::newRow("largest double") << std::numeric_limits<double>::max() << 0.154 << true;
+    }
+    void wrenchMapsThroughGainAndLimit()
+    {
+        QFETCH(double, value);
+        QFETCH(double, tau);
+        QFETCH(bool, limited);
+        WrenchFeedback w;
+        QVERIFY(std::abs(w.receive(value, 1.0) - tau) < 1e-15);
+        QVERIFY(std::abs(w.torqueAt(1.2) - tau) < 1e-15);
+        QCOMPARE(w.counters().received, 1u);
+        QCOMPARE(w.counters().limited, limited ? 1u : 0u);
+        QCOMPARE(w.counters().nonFinite, 0u);
+    }
+
+    void nonFiniteGivesZeroAndIsCounted()
+    {
+        WrenchFeedback w;
+        QCOMPARE(w.receive(0.5, 0.0), 0.077);
+        for (const double bad :
+             {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+              -std::numeric_limits<double>::infinity()}) {
+            QCOMPARE(w.receive(bad, 0.1), 0.0);
+            QCOMPARE(w.torqueAt(0.1), 0.0);
+        }
+        QCOMPARE(w.counters().nonFinite, 3u);
+        QCOMPARE(w.counters().received, 4u);
+        QCOMPARE(w.receive(-0.5, 0.2), -0.077); // a good one afterwards is used again
+    }
+
+    void staleAfterHalfASecond()
+    {
+        WrenchFeedback w;
+        QCOMPARE(w.torqueAt(0.0), 0.0); // none yet: 0, not counted as stale
+        QCOMPARE(w.counters().stale, 0u);
+        w.receive(1.0, 10.0);
+        QCOMPARE(w.torqueAt(10.5), 0.154); // exactly 0.5 s old: still fresh
+        QCOMPARE(w.torqueAt(10.5001), 0.0);
+        QCOMPARE(w.torqueAt(11.0), 0.0);
+        QCOMPARE(w.counters().stale, 1u); // counted once per wrench that went stale
+        QVERIFY(w.isStale());
+        w.receive(1.0, 12.0);
+        QCOMPARE(w.torqueAt(12.1), 0.154);
+        QCOMPARE(w.torqueAt(13.0), 0.0);
+        QCOMPARE(w.counters().stale, 2u);
+    }
+
+    void settingsChangeTakesEffectAtOnce()
+    {
+        WrenchFeedback w;
+        w.receive(1.0, 0.0);
+        FeedbackSettings f;
+        f.gain = -0.1;
+        f.limit = 0.05;
+        w.setSettings(f);
+        QCOMPARE(w.torqueAt(0.1), -0.05);
+        f.limit = 0.2;
+        w.setSettings(f);
+        QCOMPARE(w.torqueAt(0.1), -0.1);
+    }
+
+    void messagesCarryTheSample()
+    {
+        Sample s;
+        s.theta = 0.4;
+        s.omega = -0.25;
+        s.tau = 0.03;
+        s.tau_ext = 0.077;
+        s.v_ref = 0.2;
+        s.p_ref = 1.5;
+        BridgeSettings settings;
+        settings.poseOrigin = {0, 0, 0.5};
+        const ReferenceMessages m = referenceMessages(s, 1700000000.25, settings,
+                                                      settings.axisFor(ReferenceMode::Translation));
+        QCOMPARE(m.stamp, (Stamp{1700000000, 250000000}));
+        QCOMPARE(m.position, 0.4);
+        QCOMPARE(m.velocity, -0.25);
+        QCOMPARE(m.effort, 0.03);
+        QCOMPARE(m.twist, (std::array<double, 6>{0.2, 0, 0, 0, 0, 0}));
+        QCOMPARE(m.posePosition, (std::array<double, 3>{1.5, 0, 0.5}));
+        QCOMPARE(m.poseOrientation, (std::array<double, 4>{0, 0, 0, 1}));
+        QCOMPARE(m.feedbackTorque, 0.077);
+
+        // Rotation: ω_ref on angular.z, yaw_ref as a rotation about z.
+        const ReferenceMessages r =
+            referenceMessages(s, 0, settings, settings.axisFor(ReferenceMode::Rotation));
+        QCOMPARE(r.twist, (std::array<double, 6>{0, 0, 0, 0, 0, 0.2}));
+        QCOMPARE(r.posePosition, (std::array<double, 3>{0, 0, 0.5}));
+        QCOMPARE(r.poseOrientation[2], std::sin(0.75));
+        QCOMPARE(r.poseOrientation[3], std::cos(0.75));
+
+        settings.referenceAxis = Component{false, 2};
+        QCOMPARE(settings.axisFor(ReferenceMode::Rotation), (Component{false, 2}));
+        const ReferenceMessages z = referenceMessages(s, 0, settings, *settings.referenceAxis);
+        QCOMPARE(z.twist[2], 0.2);
+        QCOMPARE(z.posePosition[2], 2.0);
+    }
+
+    void stamps()
+    {
+        QCOMPARE(stampFromSeconds(0.0), (Stamp{0, 0}));
+        QCOMPARE(stampFromSeconds(1.9999999999), (Stamp{2, 0})); // never nanosec = 10⁹
+        QCOMPARE(stampFromSeconds(-1.0), (Stamp{0, 0}));
+        QCOMPARE(stampFromSeconds(std::numeric_limits<double>::quiet_NaN()), (Stamp{0, 0}));
+        QCOMPARE(stampFromSeconds(1e12).sec, std::numeric_limits<std::int32_t>::max());
+        QCOMPARE(stampSeconds(Stamp{3, 500000000}), 3.5);
+        QCOMPARE(sampleWallSeconds(100.0, 5.0, 4.98), 100.0 - (5.0 - 4.98));
+    }
+
+    void rateLimiterKeepsTheRateBySampleTime()
+    {
+        RateLimiter limiter(100);
+        int due = 0;
+        for (int i = 0; i < 1000; ++i) // one second at 1 kHz
+            due += limiter.due(i * 1e-3) ? 1 : 0;
+        QCOMPARE(due, 100);
+        // Slower samples than the rate: every one goes out.
+        RateLimiter slow(100);
+        due = 0;
+        for (int i = 0; i < 50; ++i)
+            due += slow.due(i * 0.02) ? 1 : 0;
+        QCOMPARE(due, 50);
+        // A clock that starts over (reconnect) does not stall the output.
+        QVERIFY(limiter.due(0.0));
+    }
+
+    void settingsRules()
+    {
+        QVERIFY(validate(BridgeSettings()).empty());
+        BridgeSettings s;
+        s.publishRateHz = 0;
+        s.feedback.gain = std::numeric_limits<double>::quiet_NaN();
+        s.feedback.limit = -1;
+        s.feedback.staleAfter = 0;
+        s.depth = 0;
+        s.domainId = 233;
+        s.topics.twist = "/hatpic//twist";
+        const auto errors = validate(s);
+        QCOMPARE(errors.size(), 7u);
+        QCOMPARE(errors.front(), std::string("twist topic: '/hatpic//twist' is not a ROS topic "
+                                             "name (letters, digits and '_' between single '/', "
+                                             "not starting with a digit)"));
+        QCOMPARE(errors[1],
+                 std::string("publish rate: must be above 0 and at most 1000 Hz, got 0"));
+    }
+
+    void topicNames()
+    {
+        QVERIFY(isValidTopicName("/hatpic/twist"));
+        QVERIFY(isValidTopicName("wrench_estimation"));
+        QVERIFY(!isValidTopicName("/"));
+        QVERIFY(!isValidTopicName("/a/"));
+        QVERIFY(!isValidTopicName("/1a"));
+        QVERIFY(!isValidTopicName("/a b"));
+        QCOMPARE(ddsTopicName("/hatpic/twist"), std::string("rt/hatpic/twist"));
+        QCOMPARE(ddsTopicName("wrench_estimation"), std::string("rt/wrench_estimation"));
+    }
+
+    void componentsAndProfiles()
+    {
+        QCOMPARE(Component::parse("force.z"), (Component{false, 2}));
+        QCOMPARE(Component::parse("linear.z"), (Component{false, 2}));
+        QCOMPARE(Component::parse("torque.x"), (Component{true, 0}));
+        QCOMPARE(Component::parse("angular.y")->twistName(), std::string("angular.y"));
+        QVERIFY(!Component::parse("force.w"));
+        QCOMPARE(parseQosProfile("best-effort"), QosProfile::BestEffort);
+        QVERIFY(!parseQosProfile("sometimes"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBridgeMapping)
+#include "tst_bridgemapping.moc"
