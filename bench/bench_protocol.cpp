@@ -114,19 +114,19 @@ Figure decodeWire(const std::vector<std::uint8_t> &bytes, v2::Direction directio
     volatile std::uint32_t sink = 0;
     const std::uint64_t a0 = g_allocations.load();
     f.ns = benchclock::bestNsPer(long(frames) * passes, [&](long) {
-               v2::WireDecoder decoder(direction);
-               std::uint32_t sum = 0;
-               for (long p = 0; p < passes; ++p) {
-                   for (std::size_t at = 0; at < bytes.size(); at += kChunk) {
-                       const std::size_t n = std::min(kChunk, bytes.size() - at);
-                       decoder.feed({bytes.data() + at, n}, [&sum](const v2::Frame &frame) {
-                           sum += frame.seq + std::uint32_t(frame.message.index());
-                       });
-                   }
-               }
-               f.frames = decoder.stats().frames;
-               sink = sink + sum;
-           }) ;
+        v2::WireDecoder decoder(direction);
+        std::uint32_t sum = 0;
+        for (long p = 0; p < passes; ++p) {
+            for (std::size_t at = 0; at < bytes.size(); at += kChunk) {
+                const std::size_t n = std::min(kChunk, bytes.size() - at);
+                decoder.feed({bytes.data() + at, n}, [&sum](const v2::Frame &frame) {
+                    sum += frame.seq + std::uint32_t(frame.message.index());
+                });
+            }
+        }
+        f.frames = decoder.stats().frames;
+        sink = sink + sum;
+    });
     f.allocations = double(g_allocations.load() - a0) / double(5 * frames * std::size_t(passes));
     return f;
 }
@@ -146,9 +146,9 @@ Figure decodeQt(const std::vector<std::uint8_t> &bytes, std::size_t frames, long
             for (std::size_t at = 0; at < bytes.size(); at += kChunk) {
                 const std::size_t n = std::min(kChunk, bytes.size() - at);
                 out.clear(); // keeps its capacity, as the session's list does
-                decoder.feed(QByteArrayView(reinterpret_cast<const char *>(bytes.data() + at),
-                                            qsizetype(n)),
-                             out);
+                decoder.feed(
+                    QByteArrayView(reinterpret_cast<const char *>(bytes.data() + at), qsizetype(n)),
+                    out);
                 for (const v2::Frame &frame : std::as_const(out))
                     sum += frame.seq;
                 yielded += std::uint64_t(out.size());
@@ -244,7 +244,6 @@ int main(int argc, char **argv)
     const Figure qd = decodeQt(tmWire, kFrames, passes / 4 + 1);
     ok &= check("Qt decode", qd.frames, kFrames * std::uint64_t(passes / 4 + 1));
     print("decode TELEMETRY, Qt FrameDecoder -> QList", qd, tmBytes);
-    print("encode TELEMETRY, Qt encodeFrame -> QByteArray", encodeQt(tm, passes / 4 + 1),
-          tmBytes);
+    print("encode TELEMETRY, Qt encodeFrame -> QByteArray", encodeQt(tm, passes / 4 + 1), tmBytes);
     return ok ? 0 : 1;
 }

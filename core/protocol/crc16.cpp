@@ -43,9 +43,9 @@ std::uint16_t crc16(std::span<const std::uint8_t> data)
     const std::uint8_t *p = data.data();
     std::size_t n = data.size();
     for (; n >= kSlices; n -= kSlices, p += kSlices) {
-        crc = kTables[7][(crc >> 8) ^ p[0]] ^ kTables[6][(crc & 0xFF) ^ p[1]] ^
-              kTables[5][p[2]] ^ kTables[4][p[3]] ^ kTables[3][p[4]] ^ kTables[2][p[5]] ^
-              kTables[1][p[6]] ^ kTables[0][p[7]];
+        crc = kTables[7][(crc >> 8) ^ p[0]] ^ kTables[6][(crc & 0xFF) ^ p[1]] ^ kTables[5][p[2]] ^
+              kTables[4][p[3]] ^ kTables[3][p[4]] ^ kTables[2][p[5]] ^ kTables[1][p[6]] ^
+              kTables[0][p[7]];
     }
     for (; n > 0; --n, ++p)
         crc = ((crc << 8) & 0xFFFF) ^ kTables[0][(crc >> 8) ^ *p];

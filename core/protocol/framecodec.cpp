@@ -275,25 +275,25 @@ void decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload, Mes
         out.emplace<GetParams>();
         return;
     case MessageType::SetParams:
-        out.emplace<SetParams>(r.params());
+        out.emplace<SetParams>(SetParams{r.params()});
         return;
     case MessageType::SetStream:
-        out.emplace<SetStream>(r.u16());
+        out.emplace<SetStream>(SetStream{r.u16()});
         return;
     case MessageType::SetFeedback:
-        out.emplace<SetFeedback>(r.f32());
+        out.emplace<SetFeedback>(SetFeedback{r.f32()});
         return;
     case MessageType::SaveParams:
         out.emplace<SaveParams>();
         return;
     case MessageType::Ping:
-        out.emplace<Ping>(r.u32());
+        out.emplace<Ping>(Ping{r.u32()});
         return;
     case MessageType::Zero:
         out.emplace<Zero>();
         return;
     case MessageType::SetEffects:
-        out.emplace<SetEffects>(r.effects());
+        out.emplace<SetEffects>(SetEffects{r.effects()});
         return;
     case MessageType::GetEffects:
         out.emplace<GetEffects>();
@@ -306,7 +306,7 @@ void decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload, Mes
         return;
     }
     case MessageType::Effects:
-        out.emplace<Effects>(r.effects());
+        out.emplace<Effects>(Effects{r.effects()});
         return;
     case MessageType::HelloReply: {
         HelloReply &m = out.emplace<HelloReply>();
@@ -321,7 +321,7 @@ void decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload, Mes
         return;
     }
     case MessageType::Params:
-        out.emplace<Params>(r.params());
+        out.emplace<Params>(Params{r.params()});
         return;
     case MessageType::Ack: {
         Ack &m = out.emplace<Ack>();
@@ -331,7 +331,7 @@ void decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload, Mes
         return; // reserved byte ignored
     }
     case MessageType::Pong:
-        out.emplace<Pong>(r.u32());
+        out.emplace<Pong>(Pong{r.u32()});
         return;
     case MessageType::Telemetry: {
         Telemetry &m = out.emplace<Telemetry>();

@@ -262,7 +262,6 @@ template<typename T> constexpr MessageType messageTypeOf()
     }
 }
 
-
 //! The wire type of a message (Refused gives its original type).
 std::uint8_t messageType(const Message &message);
 
