@@ -166,7 +166,9 @@ void PlotPanel::addGraph(Channel channel, Plot plot, const QColor &color, bool r
     QCPAxis *y = rect->axis(rightAxis ? QCPAxis::atRight : QCPAxis::atLeft);
     auto *g = new QCPGraph(rect->axis(QCPAxis::atBottom), y);
     g->setName(channelLabel(channel));
-    g->setPen(QPen(color, 1.4));
+    // 1 px: Qt draws it with its fast cosmetic stroker; a wider pen is outlined and filled
+    // as a polygon, which doubled the cost of a frame (docs/performance.md).
+    g->setPen(QPen(color, 1.0));
     g->setAdaptiveSampling(false); // the Decimator already reduced the data to the pixels
     g->removeFromLegend();
     g->addToLegend(legend(plot));
