@@ -10,7 +10,6 @@ add_executable(hatpicctl
   hatpicctl/devicecommand.cpp hatpicctl/devicecommand.h
   hatpicctl/paramtext.cpp hatpicctl/paramtext.h
   hatpicctl/profileinput.cpp hatpicctl/profileinput.h
-  hatpicctl/samplecsv.cpp hatpicctl/samplecsv.h
   hatpicctl/curvetable.cpp hatpicctl/curvetable.h
   hatpicctl/portscommand.cpp
   hatpicctl/infocommand.cpp

@@ -36,14 +36,14 @@ int main(int argc, char *argv[])
     window.connectTo(options);
 
     QTimer::singleShot(6500, &window, [&window] {
-        ParameterEditor *editor = window.parameterEditor();
+        auto *editor = window.findChild<ParameterEditor *>(QStringLiteral("parameterEditor"));
         DeviceParams params = editor->params();
         params.K_max = 0.6;
         editor->setParams(params, editor->hostParams(), QStringLiteral("K_max"));
         editor->pushAction()->trigger();
     });
     QTimer::singleShot(13800, &window, [&window] {
-        PlotPanel *plots = window.plotPanel();
+        auto *plots = window.findChild<PlotPanel *>(QStringLiteral("plotPanel"));
         plots->setCursorTime(plots->viewEnd() - 1.6);
         plots->repaintNow();
     });

@@ -1,6 +1,5 @@
 // hatpic-tuner [--port PATH|sim] [--baud N] [--protocol auto|v2|legacy] [--profile FILE]
 //              [--hand SPEC] [RECORDING.csv]
-#include "editor/profilecontroller.h"
 #include "plots/plotpanel.h"
 #include "window/mainwindow.h"
 
@@ -131,10 +130,10 @@ int main(int argc, char *argv[])
     }
 
     MainWindow window;
-    window.plotPanel()->setRepaintRate(repaintHz);
+    window.setRepaintRate(repaintHz);
     if (parser.isSet(profile)) {
         QString error;
-        if (!window.profileController()->openFile(parser.value(profile), &error))
+        if (!window.openProfile(parser.value(profile), &error))
             fail(QStringLiteral("--profile: %1").arg(error));
     }
     if (handInput)

@@ -1,7 +1,5 @@
 #include "console.h"
 
-#include "model/params.h"
-
 #include <cstdio>
 
 namespace hatpic::cli {
@@ -34,14 +32,6 @@ void printNote(const QString &text)
     if (!bytes.endsWith('\n'))
         bytes += '\n';
     std::fwrite(bytes.constData(), 1, static_cast<size_t>(bytes.size()), stderr);
-}
-
-QString numberText(double value)
-{
-    // −0 (e.g. τ = −τ_op with no hand) reads as 0: the sign of a zero carries nothing here.
-    if (value == 0.0)
-        return QStringLiteral("0");
-    return QString::fromStdString(formatNumber(value));
 }
 
 QString asSentence(const QString &text)

@@ -18,10 +18,6 @@ void printError(const QString &sentence);
 //! Writes lines to stderr as they are (for lists under an error sentence, notes, statistics).
 void printNote(const QString &text);
 
-//! A number for CSV/JSON/text output: the shortest decimal that reads back as the identical
-//! double, so no digit is lost ("0.1", "-1.5707963267948966", "1e-06"); −0 prints as "0".
-QString numberText(double value);
-
 //! Ensures `text` ends like a sentence (adds a full stop if it has no final punctuation).
 QString asSentence(const QString &text);
 

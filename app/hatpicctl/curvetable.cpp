@@ -3,6 +3,7 @@
 #include "console.h"
 
 #include "model/stiffness.h"
+#include "telemetry/numbertext.h"
 
 #include <cmath>
 
@@ -26,10 +27,10 @@ std::optional<qint64> AngleGrid::rowCount(QString *error) const
     if (!std::isfinite(from) || !std::isfinite(to) || !std::isfinite(step))
         return fail(QStringLiteral("--from, --to and --step must be finite numbers."));
     if (step <= 0)
-        return fail(u"--step must be above 0, got " + numberText(step) + u'.');
+        return fail(u"--step must be above 0, got " + compactNumberText(step) + u'.');
     if (from > to) {
-        return fail(u"--from (" + numberText(from) + u") must not be above --to (" +
-                    numberText(to) + u").");
+        return fail(u"--from (" + compactNumberText(from) + u") must not be above --to (" +
+                    compactNumberText(to) + u").");
     }
     const double intervals = std::floor((to - from) / step + kSameAngle);
     if (!(intervals + 2 <= static_cast<double>(kMaxRows))) {
@@ -56,9 +57,9 @@ QByteArray curveHeader()
 
 QByteArray curveRow(const DeviceParams &params, double theta)
 {
-    return numberText(theta).toLatin1() + ',' +
-           numberText(recenteringStiffness(params, theta)).toLatin1() + ',' +
-           numberText(recenteringTorque(params, theta)).toLatin1() + '\n';
+    return compactNumberText(theta).toLatin1() + ',' +
+           compactNumberText(recenteringStiffness(params, theta)).toLatin1() + ',' +
+           compactNumberText(recenteringTorque(params, theta)).toLatin1() + '\n';
 }
 
 } // namespace hatpic::cli

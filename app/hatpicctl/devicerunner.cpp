@@ -4,6 +4,7 @@
 #include "exitcode.h"
 
 #include "model/params.h"
+#include "telemetry/numbertext.h"
 
 #include <QEventLoop>
 #include <QTimer>
@@ -24,7 +25,7 @@ QString portText(const QString &port)
 
 QString secondsText(double seconds)
 {
-    return numberText(seconds) +
+    return compactNumberText(seconds) +
            (seconds == 1.0 ? QStringLiteral(" second") : QStringLiteral(" seconds"));
 }
 

@@ -5,6 +5,7 @@
 #include "devicerunner.h"
 #include "exitcode.h"
 #include "paramtext.h"
+#include "telemetry/numbertext.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -51,7 +52,7 @@ protected:
             object.insert(QStringLiteral("device_id"), deviceId);
             object.insert(QStringLiteral("firmware"), info.firmware);
             object.insert(QStringLiteral("max_stream_hz"), info.maxStreamHz);
-            object.insert(QStringLiteral("tau_limit"), deviceValueText(info.tauLimit).toDouble());
+            object.insert(QStringLiteral("tau_limit"), shortestFloatDecimal(info.tauLimit));
             object.insert(QStringLiteral("can_set_params"), info.canSetParams());
             object.insert(QStringLiteral("simulated"), info.simulated);
             writeOut(QJsonDocument(object).toJson(QJsonDocument::Indented));
@@ -68,7 +69,7 @@ protected:
         text += line(QStringLiteral("device id"), deviceId);
         text += line(QStringLiteral("firmware"), info.firmware);
         text += line(QStringLiteral("max stream"), QString::number(info.maxStreamHz) + u" Hz");
-        text += line(QStringLiteral("tau_limit"), deviceValueText(info.tauLimit) + u" N·m");
+        text += line(QStringLiteral("tau_limit"), compactNumberText(info.tauLimit) + u" N·m");
         text += line(QStringLiteral("parameters"), info.canSetParams()
                                                        ? QStringLiteral("read and write")
                                                        : QStringLiteral("not carried (legacy)"));

@@ -1,11 +1,9 @@
 #include "paramtext.h"
 
-#include "console.h"
-
 #include "model/paramtable.h"
 #include "profile/profile.h"
+#include "telemetry/numbertext.h"
 
-#include <charconv>
 #include <cmath>
 
 namespace hatpic::cli {
@@ -23,16 +21,6 @@ QString fieldName(int index)
 }
 
 } // namespace
-
-QString deviceValueText(double value)
-{
-    const auto single = static_cast<float>(value);
-    if (!std::isfinite(value) || static_cast<double>(single) != value)
-        return numberText(value);
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, single);
-    return QString::fromLatin1(buffer, result.ptr - buffer);
-}
 
 DeviceParams tidyDeviceParams(const DeviceParams &params)
 {
@@ -60,8 +48,9 @@ QString parameterTable(const DeviceParams &params)
 {
     QString text;
     for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        text += fieldName(i).leftJustified(8) + deviceValueText(params.field(i)).leftJustified(14) +
-                u' ' + fieldUnit(i).leftJustified(11) + fieldMeaning(i) + u'\n';
+        text += fieldName(i).leftJustified(8) +
+                compactNumberText(params.field(i)).leftJustified(14) + u' ' +
+                fieldUnit(i).leftJustified(11) + fieldMeaning(i) + u'\n';
     }
     return text;
 }
@@ -75,7 +64,7 @@ QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info)
                     u"); host settings are defaults.";
     profile.device = tidyDeviceParams(params);
     if (std::isfinite(info.tauLimit) && info.tauLimit > 0 && info.tauLimit <= 10)
-        profile.host.tau_limit = deviceValueText(info.tauLimit).toDouble();
+        profile.host.tau_limit = shortestFloatDecimal(info.tauLimit);
     return serializeProfile(profile);
 }
 

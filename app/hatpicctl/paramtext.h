@@ -9,11 +9,7 @@
 
 namespace hatpic::cli {
 
-//! A value the device holds as a 32-bit float, as the shortest decimal that identifies that
-//! float ("0.1" rather than "0.10000000149011612"). Other values: shortest double text.
-QString deviceValueText(double value);
-
-//! Each field replaced by the double nearest to deviceValueText(field): sending it back gives
+//! Each field replaced by the double nearest to compactNumberText(field): sending it back gives
 //! the device the identical floats, and a profile written from it reads like a person wrote it.
 DeviceParams tidyDeviceParams(const DeviceParams &params);
 

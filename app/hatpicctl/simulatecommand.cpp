@@ -4,9 +4,9 @@
 #include "console.h"
 #include "exitcode.h"
 #include "profileinput.h"
-#include "samplecsv.h"
 
 #include "sim/offlinesimulation.h"
+#include "telemetry/samplecolumns.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -36,24 +36,26 @@ public:
     QString description() const override
     {
         return QStringLiteral(
-            "Runs the simulated joystick offline (no device, no clock) with the profile's\n"
-            "device parameters and tau_limit, and prints one CSV row per control step:\n"
-            "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags\n"
-            "from t = 0 (theta = theta0, omega = 0) to t = DURATION inclusive. v_ref and\n"
-            "p_ref come from the profile's host settings. tau is the measured interaction\n"
-            "torque; the operator's torque is -tau.\n"
-            "\n"
-            "SPEC is the operator's torque on the knob [N·m]; positive pushes theta up:\n"
-            "  idle             no hand\n"
-            "  const:T          T from t = 0\n"
-            "  step:T[:T0]      T0 (default 0) until t = 0.1 s, then T\n"
-            "  sine:A:F         A·sin(2π·F·t), F in Hz\n"
-            "  chirp:A:F0:F1    sine sweeping linearly from F0 to F1 Hz every 10 s\n"
-            "  hand:ANGLE       a virtual hand (spring 2 N·m/rad, damper 0.05 N·m·s/rad)\n"
-            "                   holding the knob toward ANGLE [rad, absolute]\n"
-            "\n"
-            "--ideal removes the servo's lag, tick quantisation and load-reading noise, so\n"
-            "the rows are the model of docs/model.md alone.");
+                   "Runs the simulated joystick offline (no device, no clock) with the profile's\n"
+                   "device parameters and tau_limit, and prints one CSV row per control step:\n") +
+               QString::fromLatin1(sampleCsvHeader()) +
+               QStringLiteral(
+                   "\n"
+                   "from t = 0 (theta = theta0, omega = 0) to t = DURATION inclusive. v_ref and\n"
+                   "p_ref come from the profile's host settings. tau is the measured interaction\n"
+                   "torque; the operator's torque is -tau.\n"
+                   "\n"
+                   "SPEC is the operator's torque on the knob [N·m]; positive pushes theta up:\n"
+                   "  idle             no hand\n"
+                   "  const:T          T from t = 0\n"
+                   "  step:T[:T0]      T0 (default 0) until t = 0.1 s, then T\n"
+                   "  sine:A:F         A·sin(2π·F·t), F in Hz\n"
+                   "  chirp:A:F0:F1    sine sweeping linearly from F0 to F1 Hz every 10 s\n"
+                   "  hand:ANGLE       a virtual hand (spring 2 N·m/rad, damper 0.05 N·m·s/rad)\n"
+                   "                   holding the knob toward ANGLE [rad, absolute]\n"
+                   "\n"
+                   "--ideal removes the servo's lag, tick quantisation and load-reading noise, so\n"
+                   "the rows are the model of docs/model.md alone.");
     }
     void addOptions(QCommandLineParser &parser) override
     {
@@ -138,13 +140,14 @@ public:
         }
 
         OfflineSimulation simulation(config);
-        writeOut(sampleCsvHeader());
+        writeOut(sampleCsvHeader() + '\n');
         QByteArray chunk;
         while (!simulation.atEnd()) {
             const Sample sample = simulation.next();
             if (simulation.failed())
                 break; // that row is not a result
-            chunk += sampleCsvRow(sample);
+            appendSampleCsvRow(chunk, sample);
+            chunk += '\n';
             if (chunk.size() > 1 << 16) {
                 writeOut(chunk);
                 chunk.clear();

@@ -4,9 +4,9 @@
 #include "devicecommand.h"
 #include "devicerunner.h"
 #include "exitcode.h"
-#include "samplecsv.h"
 
 #include "telemetry/recording.h"
+#include "telemetry/samplecolumns.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -54,8 +54,10 @@ public:
     {
         return QStringLiteral(
                    "Streams telemetry for --duration seconds (default: until Ctrl+C).\n"
-                   "Without --csv every sample goes to stdout as CSV with the header\n"
-                   "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags.\n"
+                   "Without --csv every sample goes to stdout as CSV with the header\n") +
+               QString::fromLatin1(sampleCsvHeader()) +
+               QStringLiteral(
+                   ".\n"
                    "With --csv FILE the samples are recorded to FILE (the tuner's recording\n"
                    "format, metadata in FILE's .json sibling) and stdout stays empty. An\n"
                    "existing FILE or .json is never overwritten without --force.\n"
@@ -167,7 +169,7 @@ protected:
                 return ExitBadUsage;
             }
         } else {
-            writeOut(sampleCsvHeader());
+            writeOut(sampleCsvHeader() + '\n');
         }
 
         quint64 samples = 0;
@@ -182,8 +184,10 @@ protected:
                              samples += static_cast<quint64>(batch.size());
                              if (m_csvPath.isEmpty()) {
                                  QByteArray rows;
-                                 for (const Sample &sample : batch)
-                                     rows += sampleCsvRow(sample);
+                                 for (const Sample &sample : batch) {
+                                     appendSampleCsvRow(rows, sample);
+                                     rows += '\n';
+                                 }
                                  writeOut(rows);
                              }
                          });

@@ -5,6 +5,7 @@
 #include "devicerunner.h"
 #include "exitcode.h"
 #include "paramtext.h"
+#include "telemetry/numbertext.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -45,7 +46,7 @@ protected:
         if (const int code = DeviceRunner::reportResult(result, QStringLiteral("ZERO")); code)
             return code;
         const DeviceParams params = runner.client().deviceParams();
-        printNote(u"The center is now theta0 = " + deviceValueText(params.theta0) + u" rad.");
+        printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");
         writeOut(parameterOutput(params, runner.client().deviceInfo(),
                                  parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;

@@ -106,17 +106,7 @@ template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t no
     }
     const T sum = r.tau_rec + r.tau_fx + r.tau_ext;
     r.tau_total = std::clamp(sum, -m_tauLimit, m_tauLimit);
-    r.flags = 0;
-    switch (stiffnessZone(m_shape, r.theta)) {
-    case StiffnessZone::DeadZone:
-        r.flags |= v2::kFlagDeadZone;
-        break;
-    case StiffnessZone::Notch:
-        r.flags |= v2::kFlagNotch;
-        break;
-    case StiffnessZone::Outer:
-        break;
-    }
+    r.flags = v2::zoneFlag(stiffnessZone(m_shape, r.theta));
     if (std::abs(sum) > m_tauLimit)
         r.flags |= v2::kFlagSaturated;
     if (m_stale)

@@ -74,7 +74,7 @@ void checkVibration(const Vibration &v, double tauLimit, double controlRate, Rep
     const double nyquist = controlRate / 2;
     if (std::isfinite(v.frequency) && !(v.frequency < nyquist)) {
         report(kVibrationFields[1].name, 1, v.frequency, [nyquist] {
-            return "must be < half the control rate (" + detail::numberText(nyquist) + ")";
+            return "must be < half the control rate (" + formatNumber(nyquist) + ")";
         });
     }
 }

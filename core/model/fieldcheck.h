@@ -12,17 +12,12 @@
 
 namespace hatpic::detail {
 
-inline std::string numberText(double v)
-{
-    return formatNumber(v);
-}
-
 inline std::string boundText(const FieldBound &b, double external)
 {
     const double value = b.external ? external : b.value;
     if (b.symbol.empty())
-        return numberText(value);
-    return std::string(b.symbol) + " (" + numberText(value) + ")";
+        return formatNumber(value);
+    return std::string(b.symbol) + " (" + formatNumber(value) + ")";
 }
 
 // Walks the table's rules (model.md § 1) for every field of `p`. `report(field, index, value,
@@ -65,7 +60,7 @@ void checkFields(const Params &p, const std::array<FieldSpec<Params>, N> &specs,
             if (std::isfinite(ov) && !(s.cross.strict ? v < ov : v <= ov)) {
                 report(s.name, index, v, [&s, &other, ov] {
                     return std::string(s.cross.strict ? "must be < " : "must be ≤ ") +
-                           std::string(other.name) + " (" + numberText(ov) + ")";
+                           std::string(other.name) + " (" + formatNumber(ov) + ")";
                 });
             }
         }

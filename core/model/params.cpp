@@ -78,15 +78,13 @@ template<typename Params> std::string rangeText(const FieldSpec<Params> &s)
 {
     std::string text;
     if (s.lower.present) {
-        text += s.lower.symbol.empty() ? detail::numberText(s.lower.value)
-                                       : std::string(s.lower.symbol);
+        text += s.lower.symbol.empty() ? formatNumber(s.lower.value) : std::string(s.lower.symbol);
         text += s.lower.inclusive ? " ≤ " : " < ";
     }
     text += s.symbol;
     if (s.upper.present) {
         text += s.upper.inclusive ? " ≤ " : " < ";
-        text += s.upper.symbol.empty() ? detail::numberText(s.upper.value)
-                                       : std::string(s.upper.symbol);
+        text += s.upper.symbol.empty() ? formatNumber(s.upper.value) : std::string(s.upper.symbol);
     } else if (s.cross.field >= 0) {
         text += s.cross.strict ? " < " : " ≤ ";
         text += kDeviceFields[std::size_t(s.cross.field)].symbol;

@@ -1,5 +1,7 @@
 #include "profile.h"
 
+#include "profile/paramsjson.h"
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -10,9 +12,7 @@
 
 #include <array>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
-#include <string>
 #include <string_view>
 
 // Q_INIT_RESOURCE must be used outside any namespace.
@@ -22,6 +22,8 @@ static void initPresetResources()
 }
 
 namespace hatpic {
+
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -39,52 +41,6 @@ constexpr std::array<PresetEntry, 3> kPresets = {{
     {u"Notchy", u":/presets/notchy.json"},
 }};
 
-QString number(double value)
-{
-    return QString::fromStdString(formatNumber(value));
-}
-
-// How a JSON value appears after "got " in a message.
-QString describe(const QJsonValue &value)
-{
-    switch (value.type()) {
-    case QJsonValue::Null:
-        return QStringLiteral("null");
-    case QJsonValue::Bool:
-        return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
-    case QJsonValue::Double:
-        return number(value.toDouble());
-    case QJsonValue::String: {
-        constexpr qsizetype kMaxShown = 40;
-        QString text = value.toString();
-        if (text.size() > kMaxShown)
-            text = text.left(kMaxShown) + u'…';
-        return u'"' + text + u'"';
-    }
-    case QJsonValue::Array:
-        return QStringLiteral("an array");
-    case QJsonValue::Object:
-        return QStringLiteral("an object");
-    case QJsonValue::Undefined:
-        break;
-    }
-    return QStringLiteral("nothing");
-}
-
-// Reports every key of `object` that is not in `known` as a warning; `prefix` is "" or "device.".
-template<std::size_t Count>
-void warnUnknownKeys(const QJsonObject &object, const std::array<QStringView, Count> &known,
-                     const QString &prefix, QStringList &warnings)
-{
-    for (auto it = object.begin(); it != object.end(); ++it) {
-        bool isKnown = false;
-        for (QStringView key : known)
-            isKnown = isKnown || key == it.key();
-        if (!isKnown)
-            warnings.append(u"unknown key \"" + prefix + it.key() + u"\" ignored");
-    }
-}
-
 // Checks format and version. Returns false when the document is not a profile this build can
 // read, in which case nothing else is examined.
 bool checkHeader(const QJsonObject &root, QStringList &errors)
@@ -93,7 +49,7 @@ bool checkHeader(const QJsonObject &root, QStringList &errors)
     if (format.isUndefined())
         errors.append(u"format: missing, must be \"" + kFormat + u'"');
     else if (format.toString() != kFormat)
-        errors.append(u"format: must be \"" + kFormat + u"\", got " + describe(format));
+        errors.append(u"format: must be \"" + kFormat + u"\", got " + jsonValueText(format));
 
     const QJsonValue version = root.value(u"version");
     const QString versionText = QString::number(kProfileVersion);
@@ -104,9 +60,10 @@ bool checkHeader(const QJsonObject &root, QStringList &errors)
     else if (integral && v > kProfileVersion)
         errors.append(u"version: the file was written by a newer version of HATPIC Tuner "
                       u"(profile version " +
-                      number(v) + u"); this build reads profile version " + versionText);
+                      QString::fromStdString(formatNumber(v)) +
+                      u"); this build reads profile version " + versionText);
     else if (!integral || v != kProfileVersion)
-        errors.append(u"version: must be " + versionText + u", got " + describe(version));
+        errors.append(u"version: must be " + versionText + u", got " + jsonValueText(version));
     return errors.isEmpty();
 }
 
@@ -118,7 +75,7 @@ void readOptionalString(const QJsonObject &root, QStringView key, QString &out, 
     if (value.isString())
         out = value.toString();
     else
-        errors.append(key + u": must be a string, got " + describe(value));
+        errors.append(key + u": must be a string, got " + jsonValueText(value));
 }
 
 void readDevice(const QJsonObject &root, DeviceParams &device, QStringList &errors,
@@ -126,40 +83,27 @@ void readDevice(const QJsonObject &root, DeviceParams &device, QStringList &erro
 {
     const QJsonValue deviceValue = root.value(u"device");
     if (deviceValue.isUndefined()) {
-        errors.append(QStringLiteral("device: missing, must be an object with D_adm, M_adm, "
-                                     "K_min, K_max, N, Q_dz and theta0"));
+        QString names;
+        for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+            names += i == 0 ? u""_s : i + 1 < DeviceParams::kFieldCount ? u", "_s : u" and "_s;
+            const std::string_view name = deviceFieldName(i);
+            names += QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
+        }
+        errors.append(u"device: missing, must be an object with " + names);
         return;
     }
     if (!deviceValue.isObject()) {
-        errors.append(u"device: must be an object, got " + describe(deviceValue));
+        errors.append(u"device: must be an object, got " + jsonValueText(deviceValue));
         return;
     }
-    const QJsonObject object = deviceValue.toObject();
+    // Missing or non-number fields hold NaN: their own "must be finite" is not repeated, and
+    // validate() skips cross-field rules against them.
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        device.setField(i, std::nan(""));
+    const auto present = readDeviceParams(deviceValue.toObject(), QStringLiteral("device."), device,
+                                          errors, &warnings);
 
-    std::array<QStringView, DeviceParams::kFieldCount> known;
-    std::array<QString, DeviceParams::kFieldCount> names;
-    std::array<bool, DeviceParams::kFieldCount> present{};
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const std::string_view name = deviceFieldName(i);
-        const auto slot = static_cast<std::size_t>(i);
-        names[slot] = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
-        known[slot] = names[slot];
-        const QJsonValue value = object.value(names[slot]);
-        if (value.isUndefined()) {
-            errors.append(u"device." + names[slot] + u": missing, must be a number");
-            device.setField(i, std::nan(""));
-        } else if (!value.isDouble()) {
-            errors.append(u"device." + names[slot] + u": must be a number, got " + describe(value));
-            device.setField(i, std::nan(""));
-        } else {
-            device.setField(i, value.toDouble());
-            present[slot] = true;
-        }
-    }
-    warnUnknownKeys(object, known, QStringLiteral("device."), warnings);
-
-    // Range and cross-field rules. Missing or non-number fields hold NaN: their own
-    // "must be finite" is not repeated, and validate() skips cross-field rules against them.
+    // Range and cross-field rules.
     for (const Violation &v : validate(device)) {
         if (v.index >= 0 && present[static_cast<std::size_t>(v.index)])
             errors.append(u"device." + QString::fromStdString(v.message()));
@@ -172,46 +116,11 @@ void readHost(const QJsonObject &root, HostParams &host, QStringList &errors, QS
     if (hostValue.isUndefined())
         return;
     if (!hostValue.isObject()) {
-        errors.append(u"host: must be an object, got " + describe(hostValue));
+        errors.append(u"host: must be an object, got " + jsonValueText(hostValue));
         return;
     }
-    const QJsonObject object = hostValue.toObject();
-    static constexpr std::array<QStringView, 4> kKnown = {u"mode", u"v_max", u"ref_deadzone",
-                                                          u"tau_limit"};
-    warnUnknownKeys(object, kKnown, QStringLiteral("host."), warnings);
-
-    if (const QJsonValue mode = object.value(u"mode"); !mode.isUndefined()) {
-        const QString text = mode.isString() ? mode.toString() : QString();
-        if (text == u"translation")
-            host.mode = ReferenceMode::Translation;
-        else if (text == u"rotation")
-            host.mode = ReferenceMode::Rotation;
-        else
-            errors.append(u"host.mode: must be \"translation\" or \"rotation\", got " +
-                          describe(mode));
-    }
-    if (const QJsonValue flag = object.value(u"ref_deadzone"); !flag.isUndefined()) {
-        if (flag.isBool())
-            host.ref_deadzone = flag.toBool();
-        else
-            errors.append(u"host.ref_deadzone: must be true or false, got " + describe(flag));
-    }
-
-    // Numbers: a non-number is reported here and left out of the range rules below.
-    QStringList nonNumbers;
-    auto readNumber = [&](const QString &key, double &out) {
-        const QJsonValue value = object.value(key);
-        if (value.isUndefined())
-            return;
-        if (value.isDouble()) {
-            out = value.toDouble();
-        } else {
-            errors.append(u"host." + key + u": must be a number, got " + describe(value));
-            nonNumbers.append(key);
-        }
-    };
-    readNumber(QStringLiteral("v_max"), host.v_max);
-    readNumber(QStringLiteral("tau_limit"), host.tau_limit);
+    const QStringList nonNumbers =
+        readHostParams(hostValue.toObject(), QStringLiteral("host."), host, errors, &warnings);
     for (const Violation &v : validate(host)) {
         const QString message = QString::fromStdString(v.message());
         if (!nonNumbers.contains(QString::fromStdString(v.field)))
@@ -219,106 +128,7 @@ void readHost(const QJsonObject &root, HostParams &host, QStringList &errors, QS
     }
 }
 
-// A JSON string literal: quotes, backslash and control characters escaped, the rest UTF-8.
-void appendJsonString(QByteArray &out, const QString &text)
-{
-    out += '"';
-    const QByteArray utf8 = text.toUtf8();
-    for (const char c : utf8) {
-        const auto byte = static_cast<unsigned char>(c);
-        switch (c) {
-        case '"':
-            out += "\\\"";
-            break;
-        case '\\':
-            out += "\\\\";
-            break;
-        case '\b':
-            out += "\\b";
-            break;
-        case '\f':
-            out += "\\f";
-            break;
-        case '\n':
-            out += "\\n";
-            break;
-        case '\r':
-            out += "\\r";
-            break;
-        case '\t':
-            out += "\\t";
-            break;
-        default:
-            if (byte < 0x20) {
-                static constexpr char kHex[] = "0123456789abcdef";
-                out += "\\u00";
-                out += kHex[byte >> 4];
-                out += kHex[byte & 0xf];
-            } else {
-                out += c;
-            }
-        }
-    }
-    out += '"';
-}
-
 } // namespace
-
-QByteArray jsonNumber(double value)
-{
-    if (!std::isfinite(value))
-        return QByteArrayLiteral("null");
-    // Negative zero is written as 0.0: Qt's JSON reader keeps integral numbers as integers,
-    // which have no sign of zero, so "-0.0" would read back as +0.0 and then be rewritten
-    // differently. Every rule and formula of the model treats the two zeros alike.
-    if (value == 0.0)
-        return QByteArrayLiteral("0.0");
-
-    // Shortest round-trip digits, in scientific form: "-d.ddde±XX".
-    char buffer[64];
-    const auto result =
-        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific);
-    const std::string_view text(buffer, static_cast<std::size_t>(result.ptr - buffer));
-    const std::size_t ePos = text.find('e');
-    const bool negative = text.front() == '-';
-    std::string digits;
-    for (char c : text.substr(negative ? 1 : 0, ePos - (negative ? 1 : 0))) {
-        if (c != '.')
-            digits += c;
-    }
-    int exponent = 0;
-    const std::string_view expText = text.substr(ePos + 1);
-    std::from_chars(expText.data() + (expText.front() == '+' ? 1 : 0),
-                    expText.data() + expText.size(), exponent);
-
-    // value = 0.d1d2…dn × 10^(exponent+1)
-    std::string out = negative ? "-" : "";
-    const int count = static_cast<int>(digits.size());
-    if (exponent >= -5 && exponent < 16) {
-        if (exponent < 0) {
-            out += "0.";
-            out.append(static_cast<std::size_t>(-exponent - 1), '0');
-            out += digits;
-        } else if (exponent + 1 >= count) {
-            out += digits;
-            out.append(static_cast<std::size_t>(exponent + 1 - count), '0');
-            out += ".0";
-        } else {
-            out += digits.substr(0, static_cast<std::size_t>(exponent + 1));
-            out += '.';
-            out += digits.substr(static_cast<std::size_t>(exponent + 1));
-        }
-    } else {
-        out += digits.front();
-        if (count > 1) {
-            out += '.';
-            out += digits.substr(1);
-        }
-        out += 'e';
-        out += std::to_string(exponent);
-    }
-    return QByteArray::fromStdString(out);
-}
 
 ProfileReadResult parseProfile(const QByteArray &json)
 {
@@ -345,9 +155,10 @@ ProfileReadResult parseProfile(const QByteArray &json)
     }
     const QJsonObject root = document.object();
 
-    static constexpr std::array<QStringView, 6> kTopKeys = {u"format", u"version", u"name",
-                                                            u"notes",  u"device",  u"host"};
-    warnUnknownKeys(root, kTopKeys, QString(), result.warnings);
+    warnUnknownKeys(root,
+                    {QStringLiteral("format"), QStringLiteral("version"), QStringLiteral("name"),
+                     QStringLiteral("notes"), QStringLiteral("device"), QStringLiteral("host")},
+                    QString(), result.warnings);
 
     if (!checkHeader(root, result.errors))
         return result;
@@ -392,33 +203,15 @@ ProfileReadResult readProfile(const QString &path)
 
 QByteArray serializeProfile(const Profile &profile)
 {
-    QByteArray out;
-    out += "{\n";
-    out += "  \"format\": ";
-    appendJsonString(out, kFormat);
-    out += ",\n  \"version\": " + QByteArray::number(kProfileVersion) + ",\n";
-    out += "  \"name\": ";
-    appendJsonString(out, profile.name);
-    out += ",\n  \"notes\": ";
-    appendJsonString(out, profile.notes);
-    out += ",\n  \"device\": {\n";
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const std::string_view name = deviceFieldName(i);
-        out += "    \"";
-        out += QByteArrayView(name.data(), static_cast<qsizetype>(name.size()));
-        out += "\": " + jsonNumber(profile.device.field(i));
-        out += i + 1 < DeviceParams::kFieldCount ? ",\n" : "\n";
-    }
-    out += "  },\n  \"host\": {\n";
-    out += "    \"mode\": ";
-    const std::string_view mode = referenceModeName(profile.host.mode);
-    appendJsonString(out, QString::fromLatin1(mode.data(), static_cast<qsizetype>(mode.size())));
-    out += ",\n    \"v_max\": " + jsonNumber(profile.host.v_max);
-    out += ",\n    \"ref_deadzone\": ";
-    out += profile.host.ref_deadzone ? "true" : "false";
-    out += ",\n    \"tau_limit\": " + jsonNumber(profile.host.tau_limit);
-    out += "\n  }\n}\n";
-    return out;
+    return JsonObjectWriter(0)
+               .add("format", jsonString(kFormat))
+               .add("version", QByteArray::number(kProfileVersion))
+               .add("name", jsonString(profile.name))
+               .add("notes", jsonString(profile.notes))
+               .add("device", deviceParamsJson(profile.device, 2))
+               .add("host", hostParamsJson(profile.host, 2))
+               .text() +
+           '\n';
 }
 
 QString writeProfile(const Profile &profile, const QString &path)

@@ -41,10 +41,6 @@ ProfileReadResult readProfile(const QString &path);
 
 //! The JSON text of a profile (key order of profile.md, two-space indent, exact doubles).
 QByteArray serializeProfile(const Profile &profile);
-//! A double as JSON number text that reads back as the identical double: shortest round-trip
-//! digits, always with a '.' or an exponent ("0.0001", "1.0", "1e-300"); −0.0 is written
-//! "0.0" (it reads back as +0.0); "null" for NaN and ±Inf, which JSON cannot hold.
-QByteArray jsonNumber(double value);
 //! Writes atomically with QSaveFile. Returns an empty string on success, else the error.
 QString writeProfile(const Profile &profile, const QString &path);
 

@@ -6,6 +6,7 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/stiffness.h"
 
 #include <algorithm>
 #include <array>
@@ -63,6 +64,21 @@ constexpr std::uint8_t kFlagDeadZone = 0x01;
 constexpr std::uint8_t kFlagNotch = 0x02;
 constexpr std::uint8_t kFlagSaturated = 0x04;
 constexpr std::uint8_t kFlagFeedbackStale = 0x08;
+
+//! The flag bit that says which stiffness zone θ lies in (kFlagDeadZone, kFlagNotch; none for
+//! the outer zone): the device core sets it, and the host for legacy samples.
+constexpr std::uint8_t zoneFlag(StiffnessZone zone)
+{
+    switch (zone) {
+    case StiffnessZone::DeadZone:
+        return kFlagDeadZone;
+    case StiffnessZone::Notch:
+        return kFlagNotch;
+    case StiffnessZone::Outer:
+        break;
+    }
+    return 0;
+}
 
 // HELLO_REPLY capability bits (its formerly reserved byte, effects.md § 3).
 constexpr std::uint8_t kCapabilityEffects = 0x01; //!< SET_EFFECTS, GET_EFFECTS, VIBRATE, τ_fx

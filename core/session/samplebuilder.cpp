@@ -83,17 +83,7 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     s.tau_ext = tauExt;
     const double total = s.tau_rec + s.tau_ext;
     s.tau_total = std::clamp(total, -m_tauLimit, m_tauLimit);
-    quint16 flags = kFlagModelEstimated;
-    switch (stiffnessZone(m_stiffness, s.theta)) {
-    case StiffnessZone::DeadZone:
-        flags |= v2::kFlagDeadZone;
-        break;
-    case StiffnessZone::Notch:
-        flags |= v2::kFlagNotch;
-        break;
-    case StiffnessZone::Outer:
-        break;
-    }
+    quint16 flags = kFlagModelEstimated | v2::zoneFlag(stiffnessZone(m_stiffness, s.theta));
     if (std::abs(total) > m_tauLimit)
         flags |= v2::kFlagSaturated;
     s.flags = flags;

@@ -1,11 +1,14 @@
 #include "handinput.h"
 
 #include "model/params.h"
+#include "telemetry/numbertext.h"
 
 #include <QStringList>
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 namespace hatpic {
 
@@ -36,11 +39,6 @@ const KindInfo &infoOf(HandInput::Kind kind)
             return info;
     }
     return kKinds[0];
-}
-
-QString number(double value)
-{
-    return QString::fromStdString(formatNumber(value));
 }
 
 QString valueCount(int n)
@@ -138,13 +136,13 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
         if (f < 0) {
             setError(error,
                      QStringLiteral("Hand input frequency %1 Hz in \"%2\" must not be negative.")
-                         .arg(number(f), text));
+                         .arg(compactNumberText(f), text));
             return false;
         }
         if (f > kMaxFrequency) {
             setError(error, QStringLiteral("Hand input frequency %1 Hz in \"%2\" is above the "
                                            "%3 Hz a simulated hand may have.")
-                                .arg(number(f), text, number(kMaxFrequency)));
+                                .arg(compactNumberText(f), text, compactNumberText(kMaxFrequency)));
             return false;
         }
         return true;
@@ -154,7 +152,7 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
             return true;
         setError(error, QStringLiteral("Hand input torque %1 N·m in \"%2\" is beyond the ±%3 N·m "
                                        "a simulated hand may apply.")
-                            .arg(number(tau), text, number(kMaxTorque)));
+                            .arg(compactNumberText(tau), text, compactNumberText(kMaxTorque)));
         return false;
     };
     switch (hand.kind) {
@@ -190,7 +188,7 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
         if (std::abs(hand.angle) > kMaxAngle) {
             setError(error, QStringLiteral("Hand input angle %1 rad in \"%2\" is more than one "
                                            "turn (2π rad) from 0.")
-                                .arg(number(hand.angle), text));
+                                .arg(compactNumberText(hand.angle), text));
             return std::nullopt;
         }
         break;
@@ -200,25 +198,31 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
 
 QString HandInput::toSpec() const
 {
-    const QString name = QString(infoOf(kind).name);
+    // Exact doubles (formatNumber), so the spec parses back to this very input.
+    std::vector<double> values;
     switch (kind) {
     case Kind::Idle:
-        return name;
+        break;
     case Kind::Constant:
-        return name % QLatin1Char(':') % number(amplitude);
+        values = {amplitude};
+        break;
     case Kind::Step:
-        if (offset == 0.0)
-            return name % QLatin1Char(':') % number(amplitude);
-        return name % QLatin1Char(':') % number(amplitude) % QLatin1Char(':') % number(offset);
+        values = offset == 0.0 ? std::vector{amplitude} : std::vector{amplitude, offset};
+        break;
     case Kind::Sine:
-        return name % QLatin1Char(':') % number(amplitude) % QLatin1Char(':') % number(frequency);
+        values = {amplitude, frequency};
+        break;
     case Kind::Chirp:
-        return name % QLatin1Char(':') % number(amplitude) % QLatin1Char(':') % number(frequency) %
-               QLatin1Char(':') % number(frequency1);
+        values = {amplitude, frequency, frequency1};
+        break;
     case Kind::VirtualHand:
-        return name % QLatin1Char(':') % number(angle);
+        values = {angle};
+        break;
     }
-    return name;
+    std::string spec(infoOf(kind).name.data(), static_cast<std::size_t>(infoOf(kind).name.size()));
+    for (double value : values)
+        spec += ':' + formatNumber(value);
+    return QString::fromStdString(spec);
 }
 
 } // namespace hatpic

@@ -2,6 +2,7 @@
 
 #include "protocol/v2codec.h"
 #include "sim/simulateddevice.h"
+#include "telemetry/numbertext.h"
 
 #include <cmath>
 
@@ -12,11 +13,6 @@ namespace {
 // floor(duration·rate) must not lose the last row to rounding (2 s · 1000 Hz = 1999.9999…).
 constexpr double kRowSlack = 1e-9;
 constexpr double kMaxRateHz = 65535; // the simulated device's highest control rate
-
-QString number(double value)
-{
-    return QString::fromStdString(formatNumber(value));
-}
 
 bool isFinite(const Sample &s)
 {
@@ -38,12 +34,13 @@ qint64 OfflineSimulation::rowsFor(const OfflineSimulationConfig &config)
 QString OfflineSimulation::check(const OfflineSimulationConfig &config)
 {
     if (!std::isfinite(config.rateHz) || config.rateHz <= 0 || config.rateHz > kMaxRateHz)
-        return u"The rate must be above 0 and at most " + number(kMaxRateHz) + u" Hz, got " +
-               number(config.rateHz) + u'.';
+        return u"The rate must be above 0 and at most " + compactNumberText(kMaxRateHz) +
+               u" Hz, got " + compactNumberText(config.rateHz) + u'.';
     if (!std::isfinite(config.duration) || config.duration < 0)
-        return u"The duration must be 0 s or more, got " + number(config.duration) + u'.';
+        return u"The duration must be 0 s or more, got " + compactNumberText(config.duration) +
+               u'.';
     if (!std::isfinite(config.noise) || config.noise < 0)
-        return u"The noise must be 0 N·m or more, got " + number(config.noise) + u'.';
+        return u"The noise must be 0 N·m or more, got " + compactNumberText(config.noise) + u'.';
     // The hand's own bounds (simulator.md § 4), also for an input that was not parsed.
     if (QString error; !HandInput::parse(config.hand.toSpec(), &error))
         return error;
@@ -108,7 +105,7 @@ Sample OfflineSimulation::next()
         sample.flags |= kFlagReferenceGap;
     if (!isFinite(sample)) {
         m_failed = true;
-        m_problem = u"The simulation left the finite numbers at t = " + number(cycle.t) +
+        m_problem = u"The simulation left the finite numbers at t = " + compactNumberText(cycle.t) +
                     u" s; the hand input or the profile drives the knob beyond what the model "
                     u"can represent.";
     }

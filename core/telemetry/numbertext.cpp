@@ -5,14 +5,14 @@
 
 namespace hatpic {
 
-QByteArray compactNumber(double value)
+QString compactNumberText(double value)
 {
     if (std::isnan(value))
-        return QByteArrayLiteral("nan");
+        return QStringLiteral("nan");
     if (std::isinf(value))
-        return value > 0 ? QByteArrayLiteral("inf") : QByteArrayLiteral("-inf");
+        return value > 0 ? QStringLiteral("inf") : QStringLiteral("-inf");
     if (value == 0.0)
-        return QByteArrayLiteral("0"); // also −0 (e.g. −K_rec·0), which reads as noise in a table
+        return QStringLiteral("0");
     char buffer[32];
     std::to_chars_result result;
     const auto asFloat = static_cast<float>(value);
@@ -20,12 +20,7 @@ QByteArray compactNumber(double value)
         result = std::to_chars(buffer, buffer + sizeof buffer, asFloat);
     else
         result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return QByteArray(buffer, result.ptr - buffer);
-}
-
-QString compactNumberText(double value)
-{
-    return QString::fromLatin1(compactNumber(value));
+    return QString::fromLatin1(buffer, result.ptr - buffer);
 }
 
 } // namespace hatpic

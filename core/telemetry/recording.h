@@ -14,9 +14,9 @@
 
 namespace hatpic {
 
-//! Header of the CSV, in column order.
-QStringList recordingColumns(); // t_s, theta, omega, tau, tau_rec, tau_ext, tau_total, v_ref,
-                                // p_ref, flags, event
+//! Header of the CSV, in column order: the sample columns (samplecolumns.h), then "event", the
+//! text of what took effect on that sample.
+QStringList recordingColumns();
 
 struct RecordingMetadata
 {

@@ -1,4 +1,4 @@
-// Facts of the recording format shared by its writer (recorder.cpp) and its reader
+// Facts of the recording format shared by its writer (recordingwriter.cpp) and its reader
 // (recordingreader.cpp); docs/recording.md describes them for people.
 #pragma once
 

@@ -1,7 +1,10 @@
 // readRecording(): a recording's CSV (and its .json) read back for replay, bounded and
 // tolerant of what people feed it (docs/recording.md, "Reading a recording back").
 #include "recordingreader.h"
+
+#include "profile/paramsjson.h"
 #include "telemetry/recordingformat.h"
+#include "telemetry/samplecolumns.h"
 
 #include <QBuffer>
 #include <QFile>
@@ -98,20 +101,12 @@ bool parseDouble(const QByteArray &text, double &value)
     return r.ec == std::errc() && r.ptr == end;
 }
 
-enum Column {
-    ColT,
-    ColTheta,
-    ColOmega,
-    ColTau,
-    ColTauRec,
-    ColTauExt,
-    ColTauTotal,
-    ColVRef,
-    ColPRef,
-    ColFlags,
-    ColEvent,
-    ColCount
-};
+// Columns of recordingColumns(): the sample columns (samplecolumns.h), then the event.
+constexpr std::size_t kColT = sampleColumnIndex("t_s");
+constexpr std::size_t kColTheta = sampleColumnIndex("theta");
+constexpr std::size_t kColFlags = sampleColumnIndex("flags");
+constexpr std::size_t kColEvent = kSampleColumns.size();
+constexpr std::size_t kColCount = kColEvent + 1;
 
 void applyMetadata(const QByteArray &text, const QString &fileName, Recording &rec,
                    QStringList &warnings);
@@ -179,19 +174,16 @@ void applyMetadata(const QByteArray &text, const QString &fileName, Recording &r
     m.device.deviceId = static_cast<quint32>(dev.value(u"device_id").toDouble());
     m.device.tauLimit = dev.value(u"tau_limit").toDouble(m.device.tauLimit);
     m.device.firmware = dev.value(u"firmware").toString();
+    // The parameters are read as a profile's are (paramsjson.h); what is missing or not of its
+    // type keeps its default, with a warning.
     const QJsonObject params = root.value(u"parameters").toObject();
-    const QJsonObject device = params.value(u"device").toObject();
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const QString key = QString::fromLatin1(deviceFieldName(i));
-        if (device.contains(key))
-            m.params.setField(i, device.value(key).toDouble(m.params.field(i)));
-    }
-    const QJsonObject host = params.value(u"host").toObject();
-    m.host.v_max = host.value(u"v_max").toDouble(m.host.v_max);
-    m.host.mode = host.value(u"mode").toString() == u"rotation" ? ReferenceMode::Rotation
-                                                                : ReferenceMode::Translation;
-    m.host.ref_deadzone = host.value(u"ref_deadzone").toBool(m.host.ref_deadzone);
-    m.host.tau_limit = host.value(u"tau_limit").toDouble(m.host.tau_limit);
+    QStringList problems;
+    readDeviceParams(params.value(u"device").toObject(), QStringLiteral("parameters.device."),
+                     m.params, problems, nullptr);
+    readHostParams(params.value(u"host").toObject(), QStringLiteral("parameters.host."), m.host,
+                   problems, nullptr);
+    for (const QString &problem : std::as_const(problems))
+        warnings << fileName % u": " % problem % u"; the default is used.";
     rec.hasMetadata = true;
 
     // Events the CSV lost (e.g. a cut-off last line) are taken from the metadata. The CSV's
@@ -280,7 +272,7 @@ namespace {
 bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &rec,
              RecordingReadResult &out)
 {
-    std::array<int, ColCount> index;
+    std::array<int, kColCount> index;
     index.fill(-1);
     int columnCount = 0;
     qint64 lineNumber = 0;
@@ -337,23 +329,23 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
             columnCount = static_cast<int>(fields.size());
             for (int c = 0; c < columnCount; ++c) {
                 const QString name = QString::fromUtf8(fields[c].trimmed());
-                const int known = static_cast<int>(columns.indexOf(name));
+                const qsizetype known = columns.indexOf(name);
                 if (known < 0) {
                     warn(u"line 1: unknown column \"" % name % u"\" ignored.");
                     continue;
                 }
-                if (index[known] >= 0)
+                if (index[static_cast<std::size_t>(known)] >= 0)
                     return fail(u"column \"" % name % u"\" appears twice");
-                index[known] = c;
+                index[static_cast<std::size_t>(known)] = c;
             }
-            if (index[ColT] < 0 || index[ColTheta] < 0) {
+            if (index[kColT] < 0 || index[kColTheta] < 0) {
                 return fail(u"not a HATPIC recording: the header must name at least t_s and "
                             u"theta (expected " %
                             columns.join(u',') % u')');
             }
-            for (int k = 0; k < ColCount; ++k) {
-                if (index[k] < 0 && k != ColEvent) {
-                    warn(u"line 1: column \"" % columns[k] %
+            for (std::size_t k = 0; k < kColEvent; ++k) {
+                if (index[k] < 0) {
+                    warn(u"line 1: column \"" % columns[static_cast<qsizetype>(k)] %
                          u"\" missing; its values read as empty.");
                 }
             }
@@ -372,42 +364,37 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
         }
 
         Sample s;
-        double values[ColFlags];
         bool cutOff = false;
-        for (int k = 0; k < ColFlags; ++k) {
-            values[k] = std::numeric_limits<double>::quiet_NaN();
-            if (index[k] < 0 || parseDouble(fields[index[k]], values[k]))
+        for (std::size_t k = 0; k < kSampleColumns.size(); ++k) {
+            const SampleColumn &column = kSampleColumns[k];
+            if (column.isFlags())
+                continue; // below, once the row's numbers are known to be whole
+            const int at = index[k];
+            double &value = s.*column.value;
+            value = std::numeric_limits<double>::quiet_NaN();
+            if (at < 0 || parseDouble(fields[at], value))
                 continue;
             if (!complete) {
                 cutOff = true;
                 break;
             }
-            return fail(u"column " % columns[k] % u": \"" %
-                        QString::fromUtf8(fields[index[k]].left(40)) % u"\" is not a number");
+            return fail(u"column " % columns[static_cast<qsizetype>(k)] % u": \"" %
+                        QString::fromUtf8(fields[at].left(40)) % u"\" is not a number");
         }
         if (cutOff) {
             warn(u"line " % QString::number(lineNumber) %
                  u": incomplete last line ignored (the recording was cut off).");
             break;
         }
-        if (!std::isfinite(values[ColT]))
+        if (!std::isfinite(s.t_s))
             return fail(QStringLiteral("t_s must be a finite number"));
-        s.t_s = values[ColT];
         {
             // Any finite t_s: wrap in double before converting, so that no cast overflows.
             const double us = std::fmod(std::round(s.t_s * 1e6), 4294967296.0);
             s.t_us = std::isfinite(us) ? static_cast<quint32>(static_cast<qint64>(us)) : 0;
         }
-        s.theta = values[ColTheta];
-        s.omega = values[ColOmega];
-        s.tau = values[ColTau];
-        s.tau_rec = values[ColTauRec];
-        s.tau_ext = values[ColTauExt];
-        s.tau_total = values[ColTauTotal];
-        s.v_ref = values[ColVRef];
-        s.p_ref = values[ColPRef];
-        if (index[ColFlags] >= 0) {
-            const QByteArray text = fields[index[ColFlags]].trimmed();
+        if (const int at = index[kColFlags]; at >= 0) {
+            const QByteArray text = fields[at].trimmed();
             bool ok = true;
             const uint flags = text.isEmpty() ? 0u : text.toUInt(&ok);
             if (!ok || flags > 0xFFFF) {
@@ -419,8 +406,8 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
         if (!rec.samples.isEmpty() && s.t_s < rec.samples.last().t_s) {
             warn(u"line " % QString::number(lineNumber) % u": t_s goes back in time.");
         }
-        if (index[ColEvent] >= 0) {
-            const QString event = QString::fromUtf8(fields[index[ColEvent]]);
+        if (index[kColEvent] >= 0) {
+            const QString event = QString::fromUtf8(fields[index[kColEvent]]);
             if (!event.isEmpty())
                 rec.events.append({s.t_s, event});
         }

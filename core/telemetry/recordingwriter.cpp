@@ -1,18 +1,16 @@
 #include "recordingwriter.h"
 
-#include "telemetry/numbertext.h"
+#include "profile/paramsjson.h"
 #include "telemetry/recordingformat.h"
+#include "telemetry/samplecolumns.h"
 
-#include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
 
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -25,75 +23,6 @@ using recording::kFormatTag;
 using recording::kFormatVersion;
 constexpr qsizetype kFlushThresholdBytes = 256 * 1024; //!< write out earlier when this full
 
-// ---- JSON text with a fixed, readable key order (QJsonObject would sort the keys) ----
-
-QByteArray jsonString(const QString &text)
-{
-    QByteArray array = QJsonDocument(QJsonArray{text}).toJson(QJsonDocument::Compact);
-    return array.mid(1, array.size() - 2); // strip [ ]
-}
-
-//! JSON number that reads back as the identical double (as profiles do); "null" for NaN and
-//! ±Inf. The parameters a device reports are float32 values, so they show their full digits
-//! (0.4000000059604645): a reader gets exactly what the device holds.
-QByteArray jsonDouble(double value)
-{
-    if (!std::isfinite(value))
-        return QByteArrayLiteral("null");
-    char buffer[32];
-    const auto r = std::to_chars(buffer, buffer + sizeof buffer, value);
-    QByteArray text(buffer, r.ptr - buffer);
-    if (!text.contains('.') && !text.contains('e'))
-        text += ".0";
-    return text;
-}
-
-QByteArray jsonBool(bool value)
-{
-    return value ? QByteArrayLiteral("true") : QByteArrayLiteral("false");
-}
-
-class JsonObjectWriter
-{
-public:
-    explicit JsonObjectWriter(int indent) : m_indent(indent) {}
-    JsonObjectWriter &add(const char *key, const QByteArray &rawValue)
-    {
-        m_items.append(QByteArray(m_indent + 2, ' ') + '"' + key + "\": " + rawValue);
-        return *this;
-    }
-    QByteArray text() const
-    {
-        if (m_items.isEmpty())
-            return QByteArrayLiteral("{}");
-        return "{\n" + m_items.join(",\n") + '\n' + QByteArray(m_indent, ' ') + '}';
-    }
-
-private:
-    int m_indent;
-    QByteArrayList m_items;
-};
-
-QByteArray deviceParamsJson(const DeviceParams &p, int indent)
-{
-    JsonObjectWriter w(indent);
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const std::string_view name = deviceFieldName(i);
-        w.add(name.data(), jsonDouble(p.field(i)));
-    }
-    return w.text();
-}
-
-QByteArray hostParamsJson(const HostParams &h, int indent)
-{
-    return JsonObjectWriter(indent)
-        .add("mode", jsonString(QString::fromLatin1(referenceModeName(h.mode))))
-        .add("v_max", jsonDouble(h.v_max))
-        .add("ref_deadzone", jsonBool(h.ref_deadzone))
-        .add("tau_limit", jsonDouble(h.tau_limit))
-        .text();
-}
-
 QByteArray deviceInfoJson(const DeviceInfo &d, int indent)
 {
     return JsonObjectWriter(indent)
@@ -103,18 +32,12 @@ QByteArray deviceInfoJson(const DeviceInfo &d, int indent)
         .add("protocol_version", QByteArray::number(d.protocolVersion))
         .add("max_stream_hz", QByteArray::number(d.maxStreamHz))
         .add("device_id", QByteArray::number(d.deviceId))
-        .add("tau_limit", jsonDouble(d.tauLimit))
+        .add("tau_limit", jsonNumber(d.tauLimit))
         .add("firmware", jsonString(d.firmware))
         .text();
 }
 
 // ---- CSV ----
-
-void appendNumber(QByteArray &row, double value)
-{
-    if (!std::isnan(value)) // NaN stays an empty field
-        row += compactNumber(value);
-}
 
 QByteArray csvQuoted(const QString &text)
 {
@@ -125,14 +48,6 @@ QByteArray csvQuoted(const QString &text)
 }
 
 } // namespace
-
-QStringList recordingColumns()
-{
-    return {QStringLiteral("t_s"),       QStringLiteral("theta"),   QStringLiteral("omega"),
-            QStringLiteral("tau"),       QStringLiteral("tau_rec"), QStringLiteral("tau_ext"),
-            QStringLiteral("tau_total"), QStringLiteral("v_ref"),   QStringLiteral("p_ref"),
-            QStringLiteral("flags"),     QStringLiteral("event")};
-}
 
 class RecordingWriter::Private
 {
@@ -231,7 +146,7 @@ QByteArray RecordingWriter::Private::metadataText(bool closing) const
         QByteArrayList items;
         for (const RecordingEvent &e : std::as_const(events)) {
             items.append("    " + JsonObjectWriter(4)
-                                      .add("t_s", jsonDouble(e.t_s))
+                                      .add("t_s", jsonNumber(e.t_s))
                                       .add("text", jsonString(e.text))
                                       .text());
         }
@@ -256,7 +171,7 @@ QByteArray RecordingWriter::Private::metadataText(bool closing) const
     if (eventsDropped > 0)
         root.add("events_dropped", QByteArray::number(eventsDropped));
     root.add("samples", QByteArray::number(samples))
-        .add("duration_s", jsonDouble(samples ? std::round((lastT - firstT) * 1e6) / 1e6 : 0.0))
+        .add("duration_s", jsonNumber(samples ? std::round((lastT - firstT) * 1e6) / 1e6 : 0.0))
         .add("closed", jsonBool(closing));
     if (!error.isEmpty())
         root.add("error", jsonString(error));
@@ -364,15 +279,6 @@ RecordingWriter::~RecordingWriter()
     close();
 }
 
-QString recordingMetadataPath(const QString &csvPath)
-{
-    const QFileInfo info(csvPath);
-    const QString base = info.suffix().compare(u"csv", Qt::CaseInsensitive) == 0
-                             ? info.completeBaseName()
-                             : info.fileName();
-    return info.dir().filePath(base + u".json");
-}
-
 bool RecordingWriter::open(const QString &csvPath, const RecordingMetadata &metadata)
 {
     close();
@@ -449,14 +355,7 @@ bool RecordingWriter::append(const SampleBatch &batch)
     for (const Sample &s : batch) {
         d->lastSeenT = s.t_s;
         d->bufferTimes.push_back(s.t_s);
-        appendNumber(out, s.t_s);
-        for (double v :
-             {s.theta, s.omega, s.tau, s.tau_rec, s.tau_ext, s.tau_total, s.v_ref, s.p_ref}) {
-            out += ',';
-            appendNumber(out, v);
-        }
-        out += ',';
-        out += QByteArray::number(s.flags);
+        appendSampleCsvRow(out, s);
         out += ',';
         // Events left out are noted on the next row with a kept event, or at most once per
         // second of recording time, so the note itself cannot flood the file.

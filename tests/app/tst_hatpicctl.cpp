@@ -4,7 +4,9 @@
 #include "model/admittance.h"
 #include "model/params.h"
 #include "profile/profile.h"
+#include "telemetry/numbertext.h"
 #include "telemetry/recordingreader.h"
+#include "telemetry/samplecolumns.h"
 
 #include <QDir>
 #include <QFile>
@@ -173,6 +175,7 @@ private Q_SLOTS:
     void simulateIdealMatchesModel();
     void simulateSettlesAtSpringEquilibrium_data();
     void simulateSettlesAtSpringEquilibrium();
+    void sampleCsvFormsReadTheColumnTable();
 
     void validate_data();
     void validate();
@@ -714,6 +717,49 @@ void TestHatpicCtl::validate()
         QVERIFY2(run.err.isEmpty(), qPrintable(describe(run)));
 }
 
+//! Why `csv` is not the sample CSV of the column table (its header, one field per column, every
+//! number in the one number format); empty when it is. `floatDigits` counts the values written
+//! with a float's digits (they read back as a double that is not a float).
+static QString sampleCsvFormProblem(const QByteArray &csv, int &floatDigits)
+{
+    floatDigits = 0;
+    const QList<QByteArray> lines = csv.split('\n');
+    if (lines.first() != sampleCsvHeader())
+        return u"header: "_s + QString::fromUtf8(lines.first());
+    for (qsizetype i = 1; i + 1 < lines.size(); ++i) {
+        const QList<QByteArray> fields = lines[i].split(',');
+        if (fields.size() != qsizetype(kSampleColumns.size()))
+            return u"fields: "_s + QString::fromUtf8(lines[i]);
+        for (qsizetype k = 0; k + 1 < fields.size(); ++k) {
+            const double value = fields[k].toDouble();
+            if (!fields[k].isEmpty() && QString::fromLatin1(fields[k]) != compactNumberText(value))
+                return u"number format: "_s + QString::fromUtf8(fields[k]);
+            const double asFloat = static_cast<float>(value);
+            floatDigits += k > 0 && asFloat != value ? 1 : 0;
+        }
+    }
+    return {};
+}
+
+void TestHatpicCtl::sampleCsvFormsReadTheColumnTable()
+{
+    // simulate prints the table's header and rows in the one number format (the servo's
+    // readings are floats: float digits), and both help texts name the table's header.
+    QCOMPARE(kSampleHeader, sampleCsvHeader());
+    const Run run = runCtl({u"simulate"_s, u"--profile"_s, m_exact, u"--input"_s, u"sine:0.05:2"_s,
+                            u"--duration"_s, u"0.2"_s});
+    QVERIFY2(run.code == 0, qPrintable(describe(run)));
+    int floatDigits = 0;
+    const QString problem = sampleCsvFormProblem(run.out, floatDigits);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    QVERIFY(floatDigits > 0); // float values, written with their float digits
+    for (const QString &command : {u"simulate"_s, u"stream"_s}) {
+        const Run help = runCtl({command, u"--help"_s});
+        QVERIFY2(help.code == 0, qPrintable(describe(help)));
+        QVERIFY2(help.out.contains(sampleCsvHeader()), qPrintable(describe(help)));
+    }
+}
+
 // ---- device commands against the in-process simulated joystick ----
 
 void TestHatpicCtl::simDevice_data()
@@ -836,6 +882,9 @@ void TestHatpicCtl::simStreamToStdout()
     const auto table = parseCsv(run.out, kSampleHeader, &problem);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
     QVERIFY2(table.size() >= 50, qPrintable(QString::number(table.size())));
+    int floatDigits = 0; // none need be: a knob at rest reports zeros
+    problem = sampleCsvFormProblem(run.out, floatDigits);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
     QVERIFY(run.err.contains("frames/s"));
 }
 

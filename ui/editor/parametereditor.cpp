@@ -5,7 +5,7 @@
 #include "editor/parameterfield.h"
 #include "editor/parameterspecs.h"
 #include "editor/scientificspinbox.h"
-#include "editor/undobutton.h"
+#include "editor/syncbar.h"
 #include "model/derived.h"
 
 #include <QAction>
@@ -13,30 +13,16 @@
 #include <QComboBox>
 #include <QGridLayout>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QTimer>
-#include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
 namespace hatpic {
 
 using namespace Qt::StringLiterals;
-
-namespace {
-
-QToolButton *actionButton(QAction *action, QWidget *parent)
-{
-    auto *button = new QToolButton(parent);
-    button->setDefaultAction(action);
-    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    return button;
-}
-
-} // namespace
 
 ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
 {
@@ -111,52 +97,11 @@ void ParameterEditor::buildUi()
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
     layout->setSpacing(8);
-    layout->addWidget(buildSyncBar());
+    m_syncBar = new SyncBar(m_undo, m_readAction, m_revertAction, m_pushAction, this);
+    connect(m_syncBar, &SyncBar::livePushToggled, this, &ParameterEditor::setLivePush);
+    connect(m_syncBar, &SyncBar::angleInDegreesToggled, this, &ParameterEditor::setAngleInDegrees);
+    layout->addWidget(m_syncBar);
     layout->addWidget(scroll, 1);
-}
-
-QWidget *ParameterEditor::buildSyncBar()
-{
-    auto *bar = new QWidget(this);
-    auto *grid = new QGridLayout(bar);
-    grid->setContentsMargins(0, 0, 0, 0);
-
-    m_syncLabel = new QLabel(bar);
-    m_syncLabel->setObjectName(u"sync_state"_s);
-    m_syncLabel->setWordWrap(true);
-    m_syncLabel->setToolTip(tr("Whether the device renders what the editor shows"));
-    grid->addWidget(m_syncLabel, 0, 0);
-
-    auto *buttons = new QHBoxLayout;
-    buttons->setSpacing(4);
-    buttons->addWidget(new UndoButton(m_undo, UndoButton::Direction::Undo, bar));
-    buttons->addWidget(new UndoButton(m_undo, UndoButton::Direction::Redo, bar));
-    buttons->addSpacing(8);
-    buttons->addWidget(actionButton(m_readAction, bar));
-    buttons->addWidget(actionButton(m_revertAction, bar));
-    auto *push = actionButton(m_pushAction, bar);
-    push->setObjectName(u"button_push"_s);
-    push->setStyleSheet(QStringLiteral("QToolButton:enabled { font-weight: bold; }"));
-    buttons->addWidget(push);
-    grid->addLayout(buttons, 0, 1, Qt::AlignRight);
-
-    auto *options = new QHBoxLayout;
-    m_liveCheck = new QCheckBox(tr("Live push while editing"), bar);
-    m_liveCheck->setObjectName(u"check_live_push"_s);
-    m_liveCheck->setToolTip(tr("Push every change as you drag or type (at most 10 pushes per "
-                               "second, one at a time; the last value is always sent)"));
-    connect(m_liveCheck, &QCheckBox::toggled, this, &ParameterEditor::setLivePush);
-    m_degreesCheck = new QCheckBox(tr("Angles in degrees"), bar);
-    m_degreesCheck->setObjectName(u"check_degrees"_s);
-    m_degreesCheck->setToolTip(tr("Show θ0, N and Q_dz in degrees; files and the device stay "
-                                  "in radians"));
-    connect(m_degreesCheck, &QCheckBox::toggled, this, &ParameterEditor::setAngleInDegrees);
-    options->addWidget(m_liveCheck);
-    options->addWidget(m_degreesCheck);
-    options->addStretch(1);
-    grid->addLayout(options, 1, 0, 1, 2);
-    grid->setColumnStretch(0, 1);
-    return bar;
 }
 
 QWidget *ParameterEditor::buildDeviceGroups()
@@ -218,7 +163,7 @@ QWidget *ParameterEditor::buildHostGroup()
     connect(m_mode, &QComboBox::currentIndexChanged, this, [this](int index) {
         HostParams h = m_host;
         h.mode = static_cast<ReferenceMode>(m_mode->itemData(index).toInt());
-        pushEdit(m_params, h, tr("Change mode"), u"mode"_s);
+        recordEdit(m_params, h, tr("Change mode"), u"mode"_s);
         ++m_gesture;
     });
 
@@ -243,7 +188,7 @@ QWidget *ParameterEditor::buildHostGroup()
     connect(m_refDeadzone, &QCheckBox::toggled, this, [this](bool on) {
         HostParams h = m_host;
         h.ref_deadzone = on;
-        pushEdit(m_params, h, tr("Change dead-zone hold"), u"ref_deadzone"_s);
+        recordEdit(m_params, h, tr("Change dead-zone hold"), u"ref_deadzone"_s);
         ++m_gesture;
     });
     return group;
@@ -260,11 +205,11 @@ void ParameterEditor::onFieldEdited(const QString &key, double value)
         h.v_max = value;
     else if (key == u"tau_limit")
         h.tau_limit = value;
-    pushEdit(d, h, tr("Change %1 to %2").arg(key, QString::number(value, 'g', 6)), key);
+    recordEdit(d, h, tr("Change %1 to %2").arg(key, QString::number(value, 'g', 6)), key);
 }
 
-void ParameterEditor::pushEdit(const DeviceParams &device, const HostParams &host,
-                               const QString &text, const QString &field)
+void ParameterEditor::recordEdit(const DeviceParams &device, const HostParams &host,
+                                 const QString &text, const QString &field)
 {
     if (device == m_params && host == m_host)
         return;
@@ -276,7 +221,7 @@ void ParameterEditor::setParams(const DeviceParams &device, const HostParams &ho
                                 const QString &undoText)
 {
     ++m_gesture;
-    pushEdit(device, host, undoText, QString());
+    recordEdit(device, host, undoText, QString());
     ++m_gesture;
 }
 
@@ -396,8 +341,7 @@ void ParameterEditor::scheduleLivePush()
 void ParameterEditor::setLivePush(bool enabled)
 {
     m_livePush = enabled;
-    const QSignalBlocker block(m_liveCheck);
-    m_liveCheck->setChecked(enabled);
+    m_syncBar->setLivePush(enabled);
     if (!enabled) {
         m_livePending = false;
         m_liveTimer->stop();
@@ -414,10 +358,7 @@ void ParameterEditor::setAngleInDegrees(bool degrees)
     if (degrees == m_degrees)
         return;
     m_degrees = degrees;
-    {
-        const QSignalBlocker block(m_degreesCheck);
-        m_degreesCheck->setChecked(degrees);
-    }
+    m_syncBar->setAngleInDegrees(degrees);
     for (ParameterField *f : std::as_const(m_fields))
         f->setAngleInDegrees(degrees);
     m_derived->setAngleInDegrees(degrees);
@@ -468,30 +409,7 @@ void ParameterEditor::refreshSync()
 {
     const SyncState state = m_sync.state(m_params);
     const QString text = m_sync.text(m_params);
-    QString colour = u"#757575"_s;
-    switch (state) {
-    case SyncState::InSync:
-        colour = u"#2e7d32"_s;
-        break;
-    case SyncState::Edited:
-        colour = u"#ef6c00"_s;
-        break;
-    case SyncState::Pushing:
-    case SyncState::AwaitingReadback:
-        colour = u"#1565c0"_s;
-        break;
-    case SyncState::ReadbackDiffers:
-    case SyncState::Rejected:
-    case SyncState::Timeout:
-    case SyncState::Failed:
-        colour = u"#c62828"_s;
-        break;
-    case SyncState::NotConnected:
-    case SyncState::NotRead:
-        break;
-    }
-    m_syncLabel->setText(u"<span style=\"color:"_s + colour + u"\">●</span> <b>"_s +
-                         text.toHtmlEscaped() + u"</b>"_s);
+    m_syncBar->setState(state, text);
 
     if (state != m_syncState || text != m_syncText) {
         m_syncState = state;
@@ -509,7 +427,7 @@ void ParameterEditor::refreshActions()
                 : tr("Fix the invalid fields first:\n%1").arg(m_problems.join(u'\n')));
     m_readAction->setEnabled(m_sync.canPush() && !pushing);
     const auto &device = m_sync.device();
-    m_revertAction->setEnabled(device && !pushing && !SyncTracker::sameAsFloat(m_params, *device));
+    m_revertAction->setEnabled(device && !pushing && !sameOnWire(m_params, *device));
 }
 
 } // namespace hatpic

@@ -1,6 +1,9 @@
 // The parameter editor: every device and host parameter with its meaning, unit and valid range,
 // whole-set validation at the fields, undo/redo, diff markers against the device, push/read
 // with a visible sync state, optional rate-limited live push, and the derived figures.
+// "Push" means sending to the device, only; edits go onto the undo stack (recordEdit).
+// It does not talk to the device itself: DeviceParameterLink carries its pushes and reads to
+// the DeviceClient and brings back the answers and read-backs.
 #pragma once
 
 #include "editor/synctracker.h"
@@ -24,6 +27,7 @@ namespace hatpic {
 
 class DerivedFiguresView;
 class ParameterField;
+class SyncBar;
 
 class ParameterEditor : public QWidget
 {
@@ -62,7 +66,7 @@ public:
 
     QUndoStack *undoStack() const { return m_undo; }
 
-    //! The main window forwards the result of DeviceClient::pushParams here.
+    //! The answer to the last pushRequested() (DeviceParameterLink hands it over).
     void pushFinished(const hatpic::CommandResult &result);
 
     QAction *pushAction() const { return m_pushAction; }     //!< Ctrl+Return
@@ -100,12 +104,12 @@ Q_SIGNALS:
 
 private:
     void buildUi();
-    QWidget *buildSyncBar();
     QWidget *buildDeviceGroups();
     QWidget *buildHostGroup();
     void onFieldEdited(const QString &key, double value);
-    void pushEdit(const DeviceParams &device, const HostParams &host, const QString &text,
-                  const QString &field);
+    //! Puts the change on the undo stack (merged within one gesture) and applies it.
+    void recordEdit(const DeviceParams &device, const HostParams &host, const QString &text,
+                    const QString &field);
     void startPush();
     void scheduleLivePush();
     void revalidate();
@@ -135,9 +139,7 @@ private:
     QHash<QString, ParameterField *> m_fields;
     QComboBox *m_mode = nullptr;
     QCheckBox *m_refDeadzone = nullptr;
-    QCheckBox *m_liveCheck = nullptr;
-    QCheckBox *m_degreesCheck = nullptr;
-    QLabel *m_syncLabel = nullptr;
+    SyncBar *m_syncBar = nullptr;
     DerivedFiguresView *m_derived = nullptr;
     QAction *m_pushAction = nullptr;
     QAction *m_readAction = nullptr;

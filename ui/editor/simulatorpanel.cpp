@@ -264,7 +264,37 @@ void SimulatorPanel::emitIfChanged()
     if (h == m_last)
         return;
     m_last = h;
+    m_chosen = true;
     Q_EMIT handChanged(h);
+}
+
+HandInput SimulatorPanel::gentleHand()
+{
+    // 0.06 N·m is more than the notch holds with the default parameters (K_max·N = 0.04 N·m),
+    // so the knob is pushed out of the notch and back every 5 s: dead zone, notch and slope
+    // all show in the plots and on the stiffness curve.
+    HandInput hand;
+    hand.kind = HandInput::Kind::Sine;
+    hand.amplitude = 0.06;
+    hand.frequency = 0.2;
+    return hand;
+}
+
+void SimulatorPanel::chooseHand(const HandInput &hand)
+{
+    m_chosen = true;
+    setHand(hand);
+}
+
+HandInput SimulatorPanel::handToStartWith(const HandInput &requested)
+{
+    HandInput start = requested;
+    if (m_chosen)
+        start = hand();
+    else if (requested.kind == HandInput::Kind::Idle)
+        start = gentleHand();
+    setHand(start);
+    return start;
 }
 
 } // namespace hatpic

@@ -28,6 +28,16 @@ public:
     //! Shows an input without emitting handChanged().
     void setHand(const HandInput &hand);
 
+    //! The operator input the simulator starts with: a slow sine that crosses the notch.
+    static HandInput gentleHand();
+    //! Chooses `hand` as the user's (as if picked here), without emitting handChanged().
+    void chooseHand(const HandInput &hand);
+    //! Whether the user has picked a hand (here or through chooseHand()).
+    bool isHandChosen() const { return m_chosen; }
+    //! The hand a newly connected simulator gets, and shows it: the user's choice, else the
+    //! requested one, else (idle requested) gentleHand().
+    HandInput handToStartWith(const HandInput &requested);
+
 Q_SIGNALS:
     void handChanged(const hatpic::HandInput &hand);
 
@@ -36,6 +46,7 @@ private:
     void emitIfChanged();
 
     HandInput m_last;
+    bool m_chosen = false;
     QComboBox *m_kind = nullptr;
     QLabel *m_description = nullptr;
     QLabel *m_amplitudeLabel = nullptr;

@@ -15,11 +15,6 @@ QString tr(const char *text)
 
 } // namespace
 
-bool SyncTracker::sameAsFloat(const DeviceParams &a, const DeviceParams &b)
-{
-    return sameOnWire(a, b);
-}
-
 void SyncTracker::setCanPush(bool canPush, const QString &reason)
 {
     m_canPush = canPush;
@@ -112,7 +107,7 @@ SyncState SyncTracker::state(const DeviceParams &edited) const
         return SyncState::NotRead;
     if (m_awaitingReadback)
         return SyncState::AwaitingReadback;
-    if (sameAsFloat(edited, *m_device))
+    if (sameOnWire(edited, *m_device))
         return SyncState::InSync;
     if (m_pushedOk && edited == m_lastPushed)
         return SyncState::ReadbackDiffers;

@@ -27,9 +27,6 @@ enum class SyncState {
 class SyncTracker
 {
 public:
-    //! Equal after rounding every field to float32, the wire type of ParamBlock.
-    static bool sameAsFloat(const DeviceParams &a, const DeviceParams &b);
-
     void setCanPush(bool canPush, const QString &reason);
     bool canPush() const { return m_canPush; }
 

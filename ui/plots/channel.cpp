@@ -2,52 +2,6 @@
 
 namespace hatpic {
 
-double channelValue(const Sample &sample, Channel channel)
-{
-    switch (channel) {
-    case Channel::Theta:
-        return sample.theta;
-    case Channel::Omega:
-        return sample.omega;
-    case Channel::Tau:
-        return sample.tau;
-    case Channel::TauRec:
-        return sample.tau_rec;
-    case Channel::TauExt:
-        return sample.tau_ext;
-    case Channel::TauTotal:
-        return sample.tau_total;
-    case Channel::VRef:
-        return sample.v_ref;
-    case Channel::PRef:
-        return sample.p_ref;
-    }
-    return 0;
-}
-
-QString channelKey(Channel channel)
-{
-    switch (channel) {
-    case Channel::Theta:
-        return QStringLiteral("theta");
-    case Channel::Omega:
-        return QStringLiteral("omega");
-    case Channel::Tau:
-        return QStringLiteral("tau");
-    case Channel::TauRec:
-        return QStringLiteral("tau_rec");
-    case Channel::TauExt:
-        return QStringLiteral("tau_ext");
-    case Channel::TauTotal:
-        return QStringLiteral("tau_total");
-    case Channel::VRef:
-        return QStringLiteral("v_ref");
-    case Channel::PRef:
-        return QStringLiteral("p_ref");
-    }
-    return {};
-}
-
 QString channelLabel(Channel channel)
 {
     switch (channel) {
@@ -73,7 +27,8 @@ QString channelLabel(Channel channel)
 
 bool isAngleChannel(Channel channel)
 {
-    return channel == Channel::Theta || channel == Channel::Omega;
+    const std::string_view unit = channelColumn(channel).unit;
+    return unit == "rad" || unit == "rad/s";
 }
 
 } // namespace hatpic

@@ -1,7 +1,8 @@
-// The plotted quantities of a Sample, by name, so buffers and plots can address them as columns.
+// The plotted quantities of a Sample (the columns theta … p_ref of the sample column table,
+// telemetry/samplecolumns.h), so buffers and plots can address them as columns.
 #pragma once
 
-#include "telemetry/sample.h"
+#include "telemetry/samplecolumns.h"
 
 #include <QString>
 
@@ -12,6 +13,7 @@ namespace hatpic {
 enum class Channel { Theta, Omega, Tau, TauRec, TauExt, TauTotal, VRef, PRef };
 
 inline constexpr int kChannelCount = 8;
+static_assert(kChannelCount == kQuantityColumnCount);
 
 inline constexpr std::array<Channel, kChannelCount> kAllChannels{
     Channel::Theta,  Channel::Omega,    Channel::Tau,  Channel::TauRec,
@@ -23,11 +25,17 @@ constexpr int channelIndex(Channel channel)
     return static_cast<int>(channel);
 }
 
-//! The channel's value in a sample (SI; NaN where the protocol does not carry it).
-double channelValue(const Sample &sample, Channel channel);
+//! The channel's column in the sample column table: its name, unit and value.
+constexpr const SampleColumn &channelColumn(Channel channel)
+{
+    return kSampleColumns[kFirstQuantityColumn + static_cast<std::size_t>(channelIndex(channel))];
+}
 
-//! Recording column name: "theta", "omega", "tau", "tau_rec", …
-QString channelKey(Channel channel);
+//! The channel's value in a sample (SI; NaN where the protocol does not carry it).
+inline double channelValue(const Sample &sample, Channel channel)
+{
+    return sample.*channelColumn(channel).value;
+}
 
 //! Name a person reads in a legend: "θ", "τ_rec", "p_ref", …
 QString channelLabel(Channel channel);

@@ -1,6 +1,7 @@
 #include "plots/plotpanel.h"
 
 #include "plots/logging.h"
+#include "plots/plotframe.h"
 #include "plots/plotoverlays.h"
 #include "plots/qcp.h"
 #include "plots/samplecsvwriter.h"
@@ -13,17 +14,6 @@
 #include <cmath>
 
 namespace hatpic {
-
-namespace {
-
-static_assert(PlotPanel::kPlotCount == PlotOverlays::kPlotCount);
-
-//! Smallest span autoscale shows, so that a resting signal is not magnified into noise.
-constexpr std::array<double, PlotPanel::kPlotCount> kMinSpan{0.02, 0.01, 0.01}; // SI
-
-constexpr int kLegendWidth = 200; //!< [px], fixed so that changing values do not reflow
-
-} // namespace
 
 PlotPanel::PlotPanel(QWidget *parent) : QWidget(parent)
 {
@@ -52,94 +42,24 @@ PlotPanel::~PlotPanel() = default;
 
 void PlotPanel::buildPlots()
 {
-    m_plot->plotLayout()->clear();
-    auto *margins = new QCPMarginGroup(m_plot);
+    m_frame = std::make_unique<PlotFrame>(m_plot);
     for (int i = 0; i < kPlotCount; ++i) {
-        auto *rect = new QCPAxisRect(m_plot);
-        rect->setupFullAxesBox(false);
-        rect->axis(QCPAxis::atTop)->setVisible(false);
-        rect->axis(QCPAxis::atRight)->setVisible(false);
-        rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
-        rect->axis(QCPAxis::atLeft)->setNumberFormat(QStringLiteral("gb"));
-        rect->axis(QCPAxis::atRight)->setNumberFormat(QStringLiteral("gb"));
-        rect->setRangeZoomFactor(0.85);
-        m_plot->plotLayout()->addElement(i, 0, rect);
-        m_rects[i] = rect;
-
-        // The legend sits at the top of a column beside its plot; a filler takes the rest.
-        auto *column = new QCPLayoutGrid;
-        m_plot->plotLayout()->addElement(i, 1, column);
-        auto *legend = new QCPLegend;
-        column->addElement(0, 0, legend);
-        column->addElement(1, 0, new QCPLayoutElement(m_plot));
-        column->setRowStretchFactor(0, 0.001);
-        column->setRowStretchFactor(1, 1);
-        column->setRowSpacing(0);
-        legend->setLayer(QStringLiteral("legend"));
-        legend->setVisible(true);
-        legend->setBorderPen(Qt::NoPen);
-        legend->setBrush(Qt::NoBrush);
-        legend->setMinimumSize(kLegendWidth, 0);
-        legend->setMaximumSize(kLegendWidth, QWIDGETSIZE_MAX);
-        legend->setMargins(QMargins(6, 8, 4, 4));
-        legend->setRowSpacing(2);
-        legend->setIconSize(18, 10);
-        m_legends[i] = legend;
-
+        QCPAxisRect *rect = m_frame->rects()[i];
         QCPAxis *x = rect->axis(QCPAxis::atBottom);
         connect(x, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), this,
                 [this, i] { onXRangeChanged(i); });
         for (QCPAxis *y : {rect->axis(QCPAxis::atLeft), rect->axis(QCPAxis::atRight)})
             connect(y, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), this,
                     [this] { m_replotNeeded = true; });
-        if (i + 1 < kPlotCount) {
-            x->setTickLabels(false);
-            rect->setAutoMargins(QCP::msLeft | QCP::msRight | QCP::msTop);
-            rect->setMargins(QMargins(0, 0, 0, 6));
-        }
     }
-    m_plot->plotLayout()->setColumnStretchFactor(0, 1);
-    m_plot->plotLayout()->setColumnStretchFactor(1, 0.01);
-    m_plot->plotLayout()->setColumnSpacing(0);
-    m_plot->plotLayout()->setRowSpacing(0);
+    m_overlays = std::make_unique<PlotOverlays>(m_plot, m_frame->rects());
 
-    addGraph(Channel::Theta, Plot::Angle, QColor(21, 101, 192), false);
-    addGraph(Channel::Omega, Plot::Angle, QColor(0, 151, 167), true);
-    addGraph(Channel::Tau, Plot::Torque, QColor(97, 97, 97), false);
-    addGraph(Channel::TauRec, Plot::Torque, QColor(21, 101, 192), false);
-    addGraph(Channel::TauExt, Plot::Torque, QColor(46, 125, 50), false);
-    addGraph(Channel::TauTotal, Plot::Torque, QColor(230, 81, 0), false);
-    addGraph(Channel::VRef, Plot::Reference, QColor(123, 31, 162), false);
-    addGraph(Channel::PRef, Plot::Reference, QColor(0, 121, 107), true);
-    graph(Channel::Omega)->setVisible(false);
-
-    m_overlays = std::make_unique<PlotOverlays>(m_plot, m_rects);
-
-    QCPAxisRect *angle = axisRect(Plot::Angle);
-    auto makeKey = [&](const QString &name, const QColor &color) {
-        auto *key = new QCPGraph(angle->axis(QCPAxis::atBottom), angle->axis(QCPAxis::atLeft));
-        key->setName(name);
-        key->setPen(Qt::NoPen);
-        key->setBrush(QColor(color.red(), color.green(), color.blue(), 140));
-        key->removeFromLegend();
-        key->addToLegend(legend(Plot::Angle));
-        return key;
-    };
-    m_deadZoneKey = makeKey(tr("dead zone ±Q_dz"), PlotOverlays::kDeadZoneColor);
-    m_notchKey = makeKey(tr("notch band ±N"), PlotOverlays::kNotchColor);
-    // Room below the text: the legend clips each item to its rect, which would cut the "_".
-    for (QCPLegend *legend : m_legends) {
-        for (int k = 0; k < legend->itemCount(); ++k)
-            legend->item(k)->setMargins(QMargins(2, 1, 2, 3));
-    }
-
-    connect(m_plot, &QCustomPlot::legendClick, this,
-            [this](QCPLegend *legend, QCPAbstractLegendItem *item, QMouseEvent *) {
-                onLegendClick(legend, item);
-            });
+    connect(
+        m_plot, &QCustomPlot::legendClick, this,
+        [this](QCPLegend *, QCPAbstractLegendItem *item, QMouseEvent *) { onLegendClick(item); });
     connect(m_plot, &QCustomPlot::mouseMove, this, [this](QMouseEvent *event) {
         const QPointF pos = event->position();
-        for (QCPAxisRect *rect : m_rects) {
+        for (QCPAxisRect *rect : m_frame->rects()) {
             if (rect->rect().contains(pos.toPoint())) {
                 setCursorTime(rect->axis(QCPAxis::atBottom)->pixelToCoord(pos.x()));
                 return;
@@ -147,32 +67,10 @@ void PlotPanel::buildPlots()
         }
         setCursorTime(std::nullopt);
     });
-
-    // Ranges that make sense before any data arrive (autoscale takes over with the data).
-    axisRect(Plot::Angle)->axis(QCPAxis::atLeft)->setRange(-0.5, 0.5);
-    axisRect(Plot::Angle)->axis(QCPAxis::atRight)->setRange(-2, 2);
-    axisRect(Plot::Torque)->axis(QCPAxis::atLeft)->setRange(-0.1, 0.1);
-    axisRect(Plot::Reference)->axis(QCPAxis::atLeft)->setRange(-0.5, 0.5);
-    axisRect(Plot::Reference)->axis(QCPAxis::atRight)->setRange(-0.5, 0.5);
     updateLabels();
     updateBands();
     updateInteractions();
     applyXRange(0, m_window);
-}
-
-void PlotPanel::addGraph(Channel channel, Plot plot, const QColor &color, bool rightAxis)
-{
-    QCPAxisRect *rect = axisRect(plot);
-    QCPAxis *y = rect->axis(rightAxis ? QCPAxis::atRight : QCPAxis::atLeft);
-    auto *g = new QCPGraph(rect->axis(QCPAxis::atBottom), y);
-    g->setName(channelLabel(channel));
-    // 1 px: Qt draws it with its fast cosmetic stroker; a wider pen is outlined and filled
-    // as a polygon, which doubled the cost of a frame (docs/performance.md).
-    g->setPen(QPen(color, 1.0));
-    g->setAdaptiveSampling(false); // the Decimator already reduced the data to the pixels
-    g->removeFromLegend();
-    g->addToLegend(legend(plot));
-    m_graphs[channelIndex(channel)] = g;
 }
 
 void PlotPanel::setSource(const SampleBuffer *buffer)
@@ -211,7 +109,7 @@ void PlotPanel::setViewEnd(double t)
 
 double PlotPanel::viewStart() const
 {
-    return m_rects[0]->axis(QCPAxis::atBottom)->range().lower;
+    return m_frame->rects()[0]->axis(QCPAxis::atBottom)->range().lower;
 }
 
 void PlotPanel::setDataEnd(std::optional<double> t)
@@ -229,7 +127,7 @@ double PlotPanel::dataEdge() const
 
 double PlotPanel::viewEnd() const
 {
-    return m_rects[0]->axis(QCPAxis::atBottom)->range().upper;
+    return m_frame->rects()[0]->axis(QCPAxis::atBottom)->range().upper;
 }
 
 void PlotPanel::setPaused(bool paused)
@@ -264,23 +162,10 @@ void PlotPanel::setAngleInDegrees(bool degrees)
     // Fixed ranges keep showing the same quantities in the new unit.
     const DisplayUnits before = m_units;
     m_units.setDegrees(degrees);
-    rescaleAxes(before);
+    m_frame->rescaleAxes(before, m_units);
     updateLabels();
     updateBands();
     m_dataDirty = true;
-}
-
-void PlotPanel::rescaleAxes(const DisplayUnits &before)
-{
-    auto rescale = [&](QCPAxis *axis, Channel channel) {
-        const double factor = m_units.scale(channel) / before.scale(channel);
-        if (factor != 1.0)
-            axis->setRange(axis->range().lower * factor, axis->range().upper * factor);
-    };
-    rescale(axisRect(Plot::Angle)->axis(QCPAxis::atLeft), Channel::Theta);
-    rescale(axisRect(Plot::Angle)->axis(QCPAxis::atRight), Channel::Omega);
-    rescale(axisRect(Plot::Reference)->axis(QCPAxis::atLeft), Channel::VRef);
-    rescale(axisRect(Plot::Reference)->axis(QCPAxis::atRight), Channel::PRef);
 }
 
 void PlotPanel::setDeviceParams(const std::optional<DeviceParams> &params)
@@ -296,7 +181,7 @@ void PlotPanel::setHostParams(const HostParams &host)
         return;
     const DisplayUnits before = m_units;
     m_units.setMode(host.mode);
-    rescaleAxes(before);
+    m_frame->rescaleAxes(before, m_units);
     updateLabels();
     m_dataDirty = true;
 }
@@ -362,20 +247,7 @@ void PlotPanel::setCursorTime(std::optional<double> t)
 
 void PlotPanel::updateLabels()
 {
-    const QString angleUnit = m_units.unit(Channel::Theta);
-    axisRect(Plot::Angle)->axis(QCPAxis::atLeft)->setLabel(tr("θ [%1]").arg(angleUnit));
-    axisRect(Plot::Angle)
-        ->axis(QCPAxis::atRight)
-        ->setLabel(tr("ω [%1]").arg(m_units.unit(Channel::Omega)));
-    axisRect(Plot::Torque)->axis(QCPAxis::atLeft)->setLabel(tr("torque [N·m]"));
-    axisRect(Plot::Reference)
-        ->axis(QCPAxis::atLeft)
-        ->setLabel(tr("v_ref [%1]").arg(m_units.unit(Channel::VRef)));
-    QCPAxis *p = axisRect(Plot::Reference)->axis(QCPAxis::atRight);
-    p->setLabel(tr("p_ref [%1]").arg(m_units.unit(Channel::PRef)));
-    p->setVisible(true);
-    p->setTickLabels(true);
-    axisRect(Plot::Reference)->axis(QCPAxis::atBottom)->setLabel(tr("time [s]"));
+    m_frame->setAxisLabels(m_units);
     updateLegendTexts();
 }
 
@@ -390,7 +262,7 @@ void PlotPanel::updateInteractions()
     const bool dragY = !m_autoscale;
     m_plot->setInteractions(dragX || dragY ? QCP::iRangeDrag | QCP::iRangeZoom
                                            : QCP::Interactions());
-    for (QCPAxisRect *rect : m_rects) {
+    for (QCPAxisRect *rect : m_frame->rects()) {
         QList<QCPAxis *> horizontal;
         QList<QCPAxis *> vertical;
         if (dragX)
@@ -412,7 +284,7 @@ void PlotPanel::updateInteractions()
 void PlotPanel::applyXRange(double start, double end)
 {
     m_settingRange = true;
-    for (QCPAxisRect *rect : m_rects)
+    for (QCPAxisRect *rect : m_frame->rects())
         rect->axis(QCPAxis::atBottom)->setRange(start, end);
     m_settingRange = false;
     m_replotNeeded = true;
@@ -423,7 +295,7 @@ void PlotPanel::onXRangeChanged(int plotIndex)
     if (m_settingRange)
         return;
     // The user dragged or zoomed one plot: the others follow, the data is decimated again.
-    const QCPRange range = m_rects[plotIndex]->axis(QCPAxis::atBottom)->range();
+    const QCPRange range = m_frame->rects()[plotIndex]->axis(QCPAxis::atBottom)->range();
     applyXRange(range.lower, range.upper);
     m_dataDirty = true;
 }
@@ -465,7 +337,7 @@ void PlotPanel::repaintIfNeeded()
         rebuildData();
     m_stats.lastDecimateMs = clock.nsecsElapsed() / 1e6;
     if (m_autoscale)
-        autoscaleAxes();
+        m_frame->autoscale(m_ranges, m_units, m_bandsVisible ? m_params : std::nullopt);
     updateLegendTexts();
     m_overlays->fitEventLabels();
     clock.restart();
@@ -492,7 +364,8 @@ void PlotPanel::rebuildData()
     m_dataDirty = false;
     // The axis rects are laid out by replot(); until the first replot at the current widget
     // size, the widget width is a safe upper bound of the plot width.
-    const int pixels = m_laidOutSize == m_plot->size() ? m_rects[0]->width() : m_plot->width();
+    const int pixels =
+        m_laidOutSize == m_plot->size() ? m_frame->rects()[0]->width() : m_plot->width();
     m_decimator.setPixels(std::max(pixels, 100));
     const double t0 = viewStart();
     const double t1 = dataEdge();
@@ -512,58 +385,6 @@ void PlotPanel::rebuildData()
     }
 }
 
-void PlotPanel::autoscaleAxes()
-{
-    auto fit = [](QCPAxis *axis, double lo, double hi, double minSpan) {
-        if (!(lo <= hi))
-            return;
-        if (hi - lo < minSpan) {
-            const double mid = (lo + hi) / 2;
-            lo = mid - minSpan / 2;
-            hi = mid + minSpan / 2;
-        }
-        const double margin = 0.06 * (hi - lo);
-        // Hysteresis: keep the current range while it holds the data with a margin and is not
-        // much wider, so the axes do not breathe with every repaint.
-        const QCPRange current = axis->range();
-        if (current.lower <= lo - margin && current.upper >= hi + margin &&
-            current.size() < 1.6 * (hi - lo + 2 * margin))
-            return;
-        axis->setRange(lo - 2 * margin, hi + 2 * margin);
-    };
-    auto collect = [this](std::initializer_list<Channel> channels, double &lo, double &hi) {
-        lo = std::numeric_limits<double>::infinity();
-        hi = -lo;
-        for (Channel channel : channels) {
-            const DecimationResult &r = m_ranges[channelIndex(channel)];
-            if (r.hasValues && isChannelVisible(channel)) {
-                lo = std::min(lo, r.min);
-                hi = std::max(hi, r.max);
-            }
-        }
-    };
-    const double angleScale = m_units.scale(Channel::Theta);
-    double lo;
-    double hi;
-    collect({Channel::Theta}, lo, hi);
-    if (m_params && m_bandsVisible && lo <= hi) {
-        // Keep the notch band in sight so the operator sees where the knob is relative to it.
-        lo = std::min(lo, (m_params->theta0 - m_params->N) * angleScale);
-        hi = std::max(hi, (m_params->theta0 + m_params->N) * angleScale);
-    }
-    fit(axisRect(Plot::Angle)->axis(QCPAxis::atLeft), lo, hi, kMinSpan[0] * angleScale);
-    collect({Channel::Omega}, lo, hi);
-    fit(axisRect(Plot::Angle)->axis(QCPAxis::atRight), lo, hi, 0.1 * angleScale);
-    collect({Channel::Tau, Channel::TauRec, Channel::TauExt, Channel::TauTotal}, lo, hi);
-    fit(axisRect(Plot::Torque)->axis(QCPAxis::atLeft), lo, hi, kMinSpan[1]);
-    collect({Channel::VRef}, lo, hi);
-    fit(axisRect(Plot::Reference)->axis(QCPAxis::atLeft), lo, hi,
-        kMinSpan[2] * m_units.scale(Channel::VRef));
-    collect({Channel::PRef}, lo, hi);
-    fit(axisRect(Plot::Reference)->axis(QCPAxis::atRight), lo, hi,
-        kMinSpan[2] * m_units.scale(Channel::PRef));
-}
-
 void PlotPanel::updateLegendTexts()
 {
     const SampleBuffer *src = drawSource();
@@ -576,24 +397,7 @@ void PlotPanel::updateLegendTexts()
             index = end > 0 && src->time(end - 1) >= viewStart() ? end - 1 : -1;
         }
     }
-    for (Channel channel : kAllChannels) {
-        QCPGraph *g = graph(channel);
-        QString name = channelLabel(channel);
-        if (index >= 0 && g->visible())
-            name += u"  " % m_units.format(channel, src->value(channel, index));
-        g->setName(name);
-    }
-    for (int i = 0; i < kPlotCount; ++i) {
-        QCPLegend *legend = m_legends[i];
-        for (int k = 0; k < legend->itemCount(); ++k) {
-            auto *item = qobject_cast<QCPPlottableLegendItem *>(legend->item(k));
-            if (!item)
-                continue;
-            const QCPAbstractPlottable *p = item->plottable();
-            const bool on = (p == m_deadZoneKey || p == m_notchKey) ? m_bandsVisible : p->visible();
-            item->setTextColor(on ? QColor(Qt::black) : QColor(160, 160, 160));
-        }
-    }
+    m_frame->updateLegends(src, index, m_units, m_bandsVisible);
 }
 
 QString PlotPanel::readout() const
@@ -619,22 +423,16 @@ QString PlotPanel::readout() const
     return parts.join(QStringLiteral("; "));
 }
 
-void PlotPanel::onLegendClick(QCPLegend *, QCPAbstractLegendItem *item)
+void PlotPanel::onLegendClick(QCPAbstractLegendItem *item)
 {
     auto *plottableItem = qobject_cast<QCPPlottableLegendItem *>(item);
     if (!plottableItem)
         return;
-    QCPAbstractPlottable *p = plottableItem->plottable();
-    if (p == m_deadZoneKey || p == m_notchKey) {
+    const QCPAbstractPlottable *p = plottableItem->plottable();
+    if (m_frame->isBandKey(p))
         setBandsVisible(!m_bandsVisible);
-        return;
-    }
-    for (Channel channel : kAllChannels) {
-        if (graph(channel) == p) {
-            setChannelVisible(channel, !isChannelVisible(channel));
-            return;
-        }
-    }
+    else if (const std::optional<Channel> channel = m_frame->channelOf(p))
+        setChannelVisible(*channel, !isChannelVisible(*channel));
 }
 
 bool PlotPanel::exportImage(const QString &path, QString *error)

@@ -12,6 +12,7 @@
 #include "plots/channel.h"
 #include "plots/decimator.h"
 #include "plots/displayunits.h"
+#include "plots/plotframe.h"
 #include "plots/samplebuffer.h"
 #include "telemetry/recording.h"
 
@@ -37,8 +38,8 @@ class PlotPanel : public QWidget
 {
     Q_OBJECT
 public:
-    enum class Plot { Angle, Torque, Reference };
-    static constexpr int kPlotCount = 3;
+    using Plot = PlotKind;
+    static constexpr int kPlotCount = PlotFrame::kPlotCount;
     static constexpr double kDefaultRepaintHz = 30; //!< [Hz]
 
     //! Timing of the repaints, for the status line, the benchmark and the performance notes.
@@ -120,9 +121,9 @@ public:
     void repaintNow();
 
     QCustomPlot *customPlot() const { return m_plot; }
-    QCPAxisRect *axisRect(Plot plot) const { return m_rects[static_cast<int>(plot)]; }
-    QCPGraph *graph(Channel channel) const { return m_graphs[channelIndex(channel)]; }
-    QCPLegend *legend(Plot plot) const { return m_legends[static_cast<int>(plot)]; }
+    QCPAxisRect *axisRect(Plot plot) const { return m_frame->rect(plot); }
+    QCPGraph *graph(Channel channel) const { return m_frame->graph(channel); }
+    QCPLegend *legend(Plot plot) const { return m_frame->legend(plot); }
 
 Q_SIGNALS:
     void channelVisibilityChanged(hatpic::Channel channel, bool visible);
@@ -136,28 +137,21 @@ protected:
 
 private:
     void buildPlots();
-    void addGraph(Channel channel, Plot plot, const QColor &color, bool rightAxis);
     void updateLabels();
     void updateBands();
     void rebuildEvents();
     void updateInteractions();
     void applyXRange(double start, double end);
     void rebuildData();
-    void autoscaleAxes();
-    void rescaleAxes(const DisplayUnits &before);
     void updateLegendTexts();
-    void onLegendClick(QCPLegend *legend, QCPAbstractLegendItem *item);
+    void onLegendClick(QCPAbstractLegendItem *item);
     void onXRangeChanged(int plotIndex);
     void logRate();
     const SampleBuffer *drawSource() const;
     double dataEdge() const; //!< right end of the drawn data: view end or data end [s]
 
     QCustomPlot *m_plot = nullptr;
-    std::array<QCPAxisRect *, kPlotCount> m_rects{};
-    std::array<QCPLegend *, kPlotCount> m_legends{};
-    std::array<QCPGraph *, kChannelCount> m_graphs{};
-    QCPGraph *m_deadZoneKey = nullptr; //!< legend entries of the bands (no data)
-    QCPGraph *m_notchKey = nullptr;
+    std::unique_ptr<PlotFrame> m_frame;
     QTimer *m_timer = nullptr;
     std::unique_ptr<PlotOverlays> m_overlays;
     DisplayUnits m_units;

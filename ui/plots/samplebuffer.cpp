@@ -69,14 +69,8 @@ Sample SampleBuffer::sample(qsizetype index) const
     Sample s;
     s.t_s = time(index);
     s.t_us = static_cast<quint32>(std::llround(std::fmod(s.t_s * 1e6, 4294967296.0)));
-    s.theta = value(Channel::Theta, index);
-    s.omega = value(Channel::Omega, index);
-    s.tau = value(Channel::Tau, index);
-    s.tau_rec = value(Channel::TauRec, index);
-    s.tau_ext = value(Channel::TauExt, index);
-    s.tau_total = value(Channel::TauTotal, index);
-    s.v_ref = value(Channel::VRef, index);
-    s.p_ref = value(Channel::PRef, index);
+    for (Channel channel : kAllChannels)
+        s.*channelColumn(channel).value = value(channel, index);
     s.flags = flags(index);
     return s;
 }

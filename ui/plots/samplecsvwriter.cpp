@@ -1,26 +1,12 @@
 #include "plots/samplecsvwriter.h"
 
-#include "model/params.h"
 #include "plots/samplebuffer.h"
 #include "telemetry/recording.h"
+#include "telemetry/samplecolumns.h"
 
 #include <QSaveFile>
 
-#include <cmath>
-
 namespace hatpic {
-
-namespace {
-
-void appendNumber(QByteArray &line, double value)
-{
-    if (std::isnan(value))
-        return; // an empty field, as the recorder writes it
-    const std::string text = formatNumber(value);
-    line.append(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-} // namespace
 
 QString SampleCsvWriter::header()
 {
@@ -42,14 +28,8 @@ qsizetype SampleCsvWriter::write(const SampleBuffer &buffer, double t0, double t
     QByteArray line;
     for (qsizetype i = first; i < last; ++i) {
         line.clear();
-        appendNumber(line, buffer.time(i));
-        for (Channel channel : kAllChannels) {
-            line.append(',');
-            appendNumber(line, buffer.value(channel, i));
-        }
-        line.append(',');
-        line.append(QByteArray::number(buffer.flags(i)));
-        line.append(",\n");
+        appendSampleCsvRow(line, buffer.sample(i));
+        line.append(",\n"); // no event
         file.write(line);
     }
     if (!file.commit()) {

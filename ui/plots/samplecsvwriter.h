@@ -1,7 +1,8 @@
 // Writes the samples of a time range as CSV, in the column layout of a recording
-// (t_s, theta, omega, tau, tau_rec, tau_ext, tau_total, v_ref, p_ref, flags, event), so an
-// exported view opens in replay like any recording. Values are SI with round-trip digits; NaN
-// (a quantity the protocol does not carry) is an empty field, as in a recording.
+// (recordingColumns(): the sample columns, then an empty event), so an exported view opens in
+// replay like any recording. Rows come from the one sample row writer (appendSampleCsvRow):
+// SI values in the recordings' number format, NaN (a quantity the protocol does not carry) as
+// an empty field.
 #pragma once
 
 #include <QString>

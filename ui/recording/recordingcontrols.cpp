@@ -78,6 +78,20 @@ QString RecordingControls::inExistingFolder(const QString &path)
     return QDir::home().filePath(info.fileName());
 }
 
+QString RecordingControls::chooseRecordingToOpen()
+{
+    QString dir = m_directory;
+    if (dir.isEmpty() || !QDir(dir).exists())
+        dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (dir.isEmpty() || !QDir(dir).exists())
+        dir = QDir::homePath();
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open recording"), dir, tr("CSV recordings (*.csv)"));
+    if (!path.isEmpty())
+        m_directory = QFileInfo(path).absolutePath();
+    return path;
+}
+
 void RecordingControls::onTriggered()
 {
     if (m_status.active) {

@@ -35,6 +35,9 @@ public:
     void setPathChooser(PathChooser chooser) { m_chooser = std::move(chooser); }
     void setDirectory(const QString &directory) { m_directory = directory; }
     QString directory() const { return m_directory; } //!< of the last recording chosen
+    //! Asks which recording to replay, starting in the folder of the last recording made or
+    //! opened (what a researcher opens next); remembers its folder. Empty = cancelled.
+    QString chooseRecordingToOpen();
 
     void setStatus(const RecordingStatus &status);
     RecordingStatus status() const { return m_status; }

@@ -1,17 +1,13 @@
-// The tuner's main window: connection bar and link state, the three live plots, recording and
-// replay, and docks for the parameter editor, the stiffness view, the simulated hand and the
-// device log. Owns the one DeviceClient; every device call returns at once and its results
-// arrive as signals on this (the GUI) thread.
+// The tuner's main window assembles the folders' parts and wires them: the connection bar and
+// link state, the plots and their feed (live or replay), recording, and docks for the parameter
+// editor, the stiffness view, the simulated hand and the device log. It owns the one
+// DeviceClient; the parameter round trip belongs to DeviceParameterLink, what the plots show to
+// PlotFeed. Tests reach the parts by their object names (findChild), not through the window.
 #pragma once
 
-#include "plots/samplebuffer.h"
 #include "session/deviceclient.h"
-#include "telemetry/recording.h"
 
-#include <QHash>
 #include <QMainWindow>
-
-#include <optional>
 
 class QAction;
 class QDockWidget;
@@ -21,18 +17,20 @@ class QPlainTextEdit;
 namespace hatpic {
 
 class ConnectionBar;
+class DeviceParameterLink;
 class LinkBanner;
 class LinkStatsWidget;
 class LinkStatusWidget;
 class ParameterEditor;
 class PlotActions;
+class PlotFeed;
 class PlotPanel;
 class ProfileController;
 class RecordingControls;
 class ReplayBar;
-class ReplayController;
 class SimulatorPanel;
 class StiffnessView;
+class WindowActions;
 
 class MainWindow : public QMainWindow
 {
@@ -44,86 +42,51 @@ public:
     ~MainWindow() override;
 
     //! Connects at once. For the simulator with no hand chosen yet, a gentle sine of the
-    //! operator torque keeps the plots moving (gentleHand()).
+    //! operator torque keeps the plots moving (SimulatorPanel::gentleHand()).
     void connectTo(const ConnectOptions &options);
     void disconnectDevice();
-    //! The operator input the simulator starts with: a slow sine that crosses the notch.
-    static HandInput gentleHand();
     //! Chooses the simulated hand (as if picked in the simulator panel).
     void setSimulatedHand(const HandInput &hand);
 
     //! Enters replay of a recording; false (with `error`) when it cannot be read.
     bool openRecording(const QString &csvPath, QString *error = nullptr);
     void backToLive();
-    bool isReplaying() const;
+    //! Opens a profile into the editor (as File → Open); false (with `error`) when refused.
+    bool openProfile(const QString &path, QString *error = nullptr);
 
     //! Length of the plots' time window [s] (View → Window Length).
     void setWindowSeconds(double seconds);
-
-    void setLivePaused(bool paused);
-    bool isLivePaused() const;
+    //! How often the plots repaint at most [Hz] (hatpic-tuner --repaint-rate).
+    void setRepaintRate(double hz);
 
     //! Actions with a shortcut, in menu order (the Help → Keyboard shortcuts table).
     QList<QAction *> shortcutActions() const;
-
-    DeviceClient *client() const { return m_client; }
-    PlotPanel *plotPanel() const { return m_plots; }
-    const SampleBuffer &liveBuffer() const { return m_live; }
-    ParameterEditor *parameterEditor() const { return m_editor; }
-    ProfileController *profileController() const { return m_profiles; }
-    StiffnessView *stiffnessView() const { return m_stiffness; }
-    SimulatorPanel *simulatorPanel() const { return m_simPanel; }
-    QDockWidget *simulatorDock() const { return m_simDock; }
-    ConnectionBar *connectionBar() const { return m_connection; }
-    LinkStatusWidget *linkStatus() const { return m_linkStatus; }
-    LinkBanner *linkBanner() const { return m_banner; }
-    LinkStatsWidget *linkStats() const { return m_stats; }
-    RecordingControls *recordingControls() const { return m_recording; }
-    ReplayController *replayController() const { return m_replay; }
-    ReplayBar *replayBar() const { return m_replayBar; }
-    QAction *connectAction() const { return m_connectAction; }
-    QAction *pauseAction() const { return m_pauseAction; }
-    QAction *degreesAction() const { return m_degreesAction; }
-    QAction *resetReferenceAction() const { return m_resetRefAction; }
-    QString lastCommandMessage() const { return m_lastCommandMessage; }
-
-    //! `rect` made no larger than `available` and moved inside it: what the window's geometry
-    //! is saved as and restored to, so that no screen ever gets a window larger than itself.
-    static QRect fittedInto(const QRect &rect, const QRect &available);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
+    void createParts();
     void createActions();
     void createMenus();
     void createToolBars();
     void createDocks();
-    void connectClient();
-    void connectEditor();
+    void connectParts();
     void readSettings();
     void writeSettings() const;
-    //! The available geometry of the screen showing `rect` (else this window's, else primary).
-    QRect availableGeometryFor(const QRect &rect) const;
 
     void onStateChanged(SessionState state, const QString &detail);
     void onDeviceInfo(const DeviceInfo &info);
-    void onDeviceParams(const DeviceParams &params);
-    void onSamples(const SampleBatch &batch);
-    void onCommandFinished(quint64 id, const CommandResult &result);
-    void onReplayActive(bool active);
-    void onReplayPosition(double t);
     void setAngleInDegrees(bool degrees);
-    void addLiveEvent(const QString &text);
-    void togglePause();
+    void showStatus(const QString &message);
     void openRecordingInteractive();
     void showShortcuts();
     void showAbout();
     void updateActions();
 
     DeviceClient *m_client = nullptr;
-    SampleBuffer m_live;
-    QList<RecordingEvent> m_liveEvents;
+    DeviceParameterLink *m_paramLink = nullptr;
+    PlotFeed *m_feed = nullptr;
 
     PlotPanel *m_plots = nullptr;
     PlotActions *m_plotActions = nullptr;
@@ -132,7 +95,6 @@ private:
     LinkBanner *m_banner = nullptr;
     LinkStatsWidget *m_stats = nullptr;
     RecordingControls *m_recording = nullptr;
-    ReplayController *m_replay = nullptr;
     ReplayBar *m_replayBar = nullptr;
     ParameterEditor *m_editor = nullptr;
     StiffnessView *m_stiffness = nullptr;
@@ -144,29 +106,10 @@ private:
     QDockWidget *m_simDock = nullptr;
     QDockWidget *m_logDock = nullptr;
 
-    QAction *m_connectAction = nullptr;
-    QAction *m_pauseAction = nullptr;
-    QAction *m_degreesAction = nullptr;
-    QAction *m_resetRefAction = nullptr;
-    QAction *m_zeroAction = nullptr;
-    QAction *m_saveDeviceAction = nullptr;
-    QAction *m_openRecordingAction = nullptr;
-    QAction *m_backToLiveAction = nullptr;
-    QAction *m_quitAction = nullptr;
-    QAction *m_shortcutsAction = nullptr;
-    QAction *m_aboutAction = nullptr;
+    WindowActions *m_actions = nullptr;
     QMenu *m_viewMenu = nullptr;
 
-    QString m_port;            //!< port of the current or last connection
-    bool m_handChosen = false; //!< the user picked a simulated hand
-    struct PendingPush
-    {
-        DeviceParams before; //!< the device's values when the push was sent
-        DeviceParams pushed;
-    };
-    QHash<quint64, PendingPush> m_pushes; //!< pushes in flight, by request id
-    QHash<quint64, QString> m_commands;   //!< other commands in flight: what they were
-    QString m_lastCommandMessage;
+    QString m_port; //!< port of the current or last connection
 };
 
 } // namespace hatpic

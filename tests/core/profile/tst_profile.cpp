@@ -1,6 +1,7 @@
 // Tests for profile files (profile.md): reading rules, exact writing, atomic saves, presets.
 
 #include "model/derived.h"
+#include "profile/paramsjson.h"
 #include "profile/profile.h"
 
 #include <QDir>

@@ -16,6 +16,7 @@
 #include <sys/resource.h>
 
 using namespace hatpic;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -104,6 +105,7 @@ private Q_SLOTS:
     void manyMetadataEventsReadInBoundedTime();
     void neverCrashesOnMutatedFiles();
     void parseFromBytesReadsLikeTheFile();
+    void metadataParametersReadAsAProfilesAre();
 };
 
 void TestRecordingWriter::columns()
@@ -668,6 +670,37 @@ void TestRecordingWriter::parseFromBytesReadsLikeTheFile()
                 QVERIFY(writeFile(recordingMetadataPath(csv), json));
         }
     }
+}
+
+void TestRecordingWriter::metadataParametersReadAsAProfilesAre()
+{
+    // parameters.device and parameters.host are read by the profile's code (paramsjson.h): a
+    // field missing or not of its type keeps its default, with a warning naming it.
+    const QByteArray csv = kHeader + "0,1,,,,,,,,0,\n";
+    const QByteArray json = R"({"format": "hatpic-recording", "version": 1,
+        "parameters": {
+            "device": {"D_adm": 0.0002, "M_adm": 0.02, "K_min": "soft", "K_max": 0.5, "N": 0.1,
+                       "Q_dz": 0.02},
+            "host": {"mode": "rotation", "v_max": 3.0, "ref_deadzone": "yes", "tau_limit": 0.3}
+        }})";
+    const RecordingReadResult r = parseRecording(csv, json, QStringLiteral("m.csv"));
+    QVERIFY2(r.recording, qPrintable(r.error));
+    const RecordingMetadata &m = r.recording->metadata;
+    QCOMPARE(m.params.D_adm, 0.0002);
+    QCOMPARE(m.params.K_max, 0.5);
+    QCOMPARE(m.params.K_min, DeviceParams{}.K_min);
+    QCOMPARE(m.params.theta0, DeviceParams{}.theta0);
+    QCOMPARE(m.host.mode, ReferenceMode::Rotation);
+    QCOMPARE(m.host.v_max, 3.0);
+    QCOMPARE(m.host.ref_deadzone, HostParams{}.ref_deadzone);
+    QCOMPARE(m.host.tau_limit, 0.3);
+    QCOMPARE(r.warnings,
+             QStringList({u"./m.json: parameters.device.K_min: must be a number, got \"soft\"; the "
+                          u"default is used."_s,
+                          u"./m.json: parameters.device.theta0: missing, must be a number; the "
+                          u"default is used."_s,
+                          u"./m.json: parameters.host.ref_deadzone: must be true or false, got "
+                          u"\"yes\"; the default is used."_s}));
 }
 
 QTEST_GUILESS_MAIN(TestRecordingWriter)

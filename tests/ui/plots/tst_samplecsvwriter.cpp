@@ -3,6 +3,9 @@
 #include "plots/samplebuffer.h"
 #include "plots/samplecsvwriter.h"
 #include "telemetry/recordingreader.h"
+#include "telemetry/samplecolumns.h"
+
+#include <QFile>
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -17,6 +20,8 @@ class TestSampleCsvWriter : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void headerIsRecordingHeader();
+    void rowsAreTheColumnTablesRows();
+    void channelsAreTheTablesQuantities();
     void writesRangeThatReadsBack_data();
     void writesRangeThatReadsBack();
     void reportsUnwritablePath();
@@ -25,6 +30,57 @@ private Q_SLOTS:
 void TestSampleCsvWriter::headerIsRecordingHeader()
 {
     QCOMPARE(SampleCsvWriter::header(), recordingColumns().join(u','));
+}
+
+void TestSampleCsvWriter::rowsAreTheColumnTablesRows()
+{
+    // The export writes each row with the one row writer (the number format of recordings:
+    // float digits for floats, −0 as 0, NaN empty), then an empty event.
+    SampleBuffer buffer(3);
+    Sample s;
+    s.theta = double(0.05f);
+    s.omega = std::numeric_limits<double>::quiet_NaN();
+    s.tau = -0.0;
+    s.p_ref = 1.0 / 3.0;
+    s.flags = 0x0201;
+    for (int i = 0; i < 3; ++i) {
+        s.t_s = i * 0.001;
+        buffer.append(s);
+    }
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("rows.csv"));
+    QCOMPARE(SampleCsvWriter::write(buffer, 0, 1, path), qsizetype(3));
+    QByteArray expected = sampleCsvHeader() + ",event\n";
+    for (qsizetype i = 0; i < buffer.size(); ++i) {
+        appendSampleCsvRow(expected, buffer.sample(i));
+        expected += ",\n";
+    }
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    QCOMPARE(text, expected);
+    QVERIFY(text.contains("\n0.001,0.05,,0,0,0,0,0,0.3333333333333333,513,\n"));
+}
+
+void TestSampleCsvWriter::channelsAreTheTablesQuantities()
+{
+    // The plots' channels are the table's quantity columns, in order, with their values.
+    Sample s;
+    double v = 0.5;
+    for (const SampleColumn &column : kSampleColumns) {
+        if (!column.isFlags())
+            s.*column.value = v;
+        v += 1;
+    }
+    for (Channel channel : kAllChannels) {
+        const std::size_t column = kFirstQuantityColumn + std::size_t(channelIndex(channel));
+        QVERIFY(channelColumn(channel).name == kSampleColumns[column].name);
+        QCOMPARE(channelValue(s, channel), 0.5 + double(column));
+    }
+    QVERIFY(channelColumn(Channel::Theta).name == "theta");
+    QVERIFY(channelColumn(Channel::PRef).name == "p_ref");
+    QVERIFY(isAngleChannel(Channel::Omega));
+    QVERIFY(!isAngleChannel(Channel::VRef));
 }
 
 void TestSampleCsvWriter::writesRangeThatReadsBack_data()

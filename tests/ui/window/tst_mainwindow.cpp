@@ -5,12 +5,14 @@
 #include "connection/linkbanner.h"
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
+#include "editor/deviceparameterlink.h"
 #include "editor/parametereditor.h"
 #include "editor/profilecontroller.h"
 #include "editor/simulatorpanel.h"
 #include "editor/stiffnessview.h"
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
+#include "recording/plotfeed.h"
 #include "recording/recordingcontrols.h"
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
@@ -73,13 +75,23 @@ double thetaSpan(const SampleBuffer &buffer)
     return hi - lo;
 }
 
+//! A part of the window by its object name: the window has no getters for its parts.
+template<typename T> T *part(const QObject *window, const char *name)
+{
+    auto *found = window->findChild<T *>(QString::fromLatin1(name));
+    if (!found)
+        qFatal("the window has no %s named %s", T::staticMetaObject.className(), name);
+    return found;
+}
+
 //! Where the live view ends: the newest sample, or first + window while the data are shorter.
 //! Repaints first, so that nothing arrives between the repaint and the comparison.
-double liveViewEnd(MainWindow &window)
+double liveViewEnd(const MainWindow &window)
 {
-    window.plotPanel()->repaintNow();
-    const SampleBuffer &b = window.liveBuffer();
-    return std::max(b.lastTime(), b.firstTime() + window.plotPanel()->windowLength());
+    auto *plots = part<PlotPanel>(&window, "plotPanel");
+    plots->repaintNow();
+    const SampleBuffer &b = part<PlotFeed>(&window, "plotFeed")->liveBuffer();
+    return std::max(b.lastTime(), b.firstTime() + plots->windowLength());
 }
 
 } // namespace
@@ -119,6 +131,11 @@ private Q_SLOTS:
 
 private:
     void connectSim(ProtocolChoice protocol = ProtocolChoice::V2);
+    //! A part of the window by its object name.
+    template<typename T> T *find(const char *name) const { return part<T>(m_window.get(), name); }
+    DeviceClient *client() const { return find<DeviceClient>("deviceClient"); }
+    LinkStatusWidget *linkStatus() const { return find<LinkStatusWidget>("linkStatus"); }
+    const SampleBuffer &liveBuffer() const { return find<PlotFeed>("plotFeed")->liveBuffer(); }
     bool waitForSamples(qsizetype count);
 
     std::unique_ptr<MainWindow> m_window;
@@ -137,8 +154,9 @@ void TestMainWindow::init()
 {
     QSettings().clear();
     m_window = std::make_unique<MainWindow>();
-    m_window->profileController()->setQuestion(
-        [](const QString &) { return QMessageBox::Discard; });
+    find<ProfileController>("profileController")->setQuestion([](const QString &) {
+        return QMessageBox::Discard;
+    });
     m_window->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
 }
@@ -151,17 +169,15 @@ void TestMainWindow::cleanup()
 void TestMainWindow::connectSim(ProtocolChoice protocol)
 {
     m_window->connectTo(simOptions(protocol));
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
-    QTRY_VERIFY_WITH_TIMEOUT(m_window->client()->hasDeviceParams() ||
-                                 !m_window->client()->deviceInfo().canSetParams(),
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client()->hasDeviceParams() || !client()->deviceInfo().canSetParams(),
                              kConnectMs);
 }
 
 bool TestMainWindow::waitForSamples(qsizetype count)
 {
-    const double since = m_window->liveBuffer().lastTime();
-    return QTest::qWaitFor([&] { return samplesAfter(m_window->liveBuffer(), since) >= count; },
-                           kDataMs);
+    const double since = liveBuffer().lastTime();
+    return QTest::qWaitFor([&] { return samplesAfter(liveBuffer(), since) >= count; }, kDataMs);
 }
 
 void TestMainWindow::connectsToSimulatorAndPlotsSamples_data()
@@ -174,35 +190,36 @@ void TestMainWindow::connectsToSimulatorAndPlotsSamples_data()
 void TestMainWindow::connectsToSimulatorAndPlotsSamples()
 {
     QFETCH(ProtocolChoice, protocol);
-    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("disconnected"));
+    QCOMPARE(linkStatus()->stateText(), QStringLiteral("disconnected"));
     connectSim(protocol);
-    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("connected"));
-    QVERIFY2(m_window->linkStatus()->identityText().contains(QStringLiteral("Simulated HATPIC")),
-             qPrintable(m_window->linkStatus()->identityText()));
-    QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("protocol v2")));
-    QCOMPARE(m_window->connectionBar()->connectButton()->text(), QStringLiteral("Disconnect"));
-    QVERIFY(m_window->simulatorDock()->isVisible());
-    QCOMPARE(m_window->simulatorPanel()->hand(), MainWindow::gentleHand());
+    QCOMPARE(linkStatus()->stateText(), QStringLiteral("connected"));
+    QVERIFY2(linkStatus()->identityText().contains(QStringLiteral("Simulated HATPIC")),
+             qPrintable(linkStatus()->identityText()));
+    QVERIFY(linkStatus()->identityText().contains(QStringLiteral("protocol v2")));
+    QCOMPARE(find<ConnectionBar>("connectionBar")->connectButton()->text(),
+             QStringLiteral("Disconnect"));
+    QVERIFY(find<QDockWidget>("simulatorDock")->isVisible());
+    QCOMPARE(find<SimulatorPanel>("simulatorPanel")->hand(), SimulatorPanel::gentleHand());
 
     QVERIFY(waitForSamples(1500));
-    PlotPanel *plots = m_window->plotPanel();
+    PlotPanel *plots = find<PlotPanel>("plotPanel");
     QTRY_VERIFY(plots->pointCount(Channel::Theta) > 100);
     QVERIFY(plots->pointCount(Channel::TauRec) > 100);
     QVERIFY(plots->pointCount(Channel::PRef) > 100);
     QCOMPARE(plots->viewEnd(), liveViewEnd(*m_window));
-    QTRY_VERIFY(m_window->linkStats()->text().contains(QStringLiteral("frames/s")));
-    QVERIFY(!m_window->linkStats()->text().startsWith(QStringLiteral("0 frames/s")));
+    QTRY_VERIFY(find<LinkStatsWidget>("linkStats")->text().contains(QStringLiteral("frames/s")));
+    QVERIFY(!find<LinkStatsWidget>("linkStats")->text().startsWith(QStringLiteral("0 frames/s")));
 
     // The gentle hand moves the knob from the first second.
-    QTRY_VERIFY_WITH_TIMEOUT(thetaSpan(m_window->liveBuffer()) > 0.05, kDataMs);
+    QTRY_VERIFY_WITH_TIMEOUT(thetaSpan(liveBuffer()) > 0.05, kDataMs);
 }
 
 void TestMainWindow::editPushInSyncChangesBehaviour()
 {
     connectSim();
-    ParameterEditor *editor = m_window->parameterEditor();
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
-    const DeviceParams before = m_window->client()->deviceParams();
+    const DeviceParams before = client()->deviceParams();
 
     DeviceParams edited = editor->params();
     edited.K_max = 0.6;
@@ -211,15 +228,18 @@ void TestMainWindow::editPushInSyncChangesBehaviour()
     QVERIFY(editor->pushAction()->isEnabled());
     editor->pushAction()->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
-    QCOMPARE(float(m_window->client()->deviceParams().K_max), 0.6f);
-    QVERIFY2(m_window->lastCommandMessage().contains(QStringLiteral("K_max 0.4 → 0.6")),
-             qPrintable(m_window->lastCommandMessage()));
-    QCOMPARE(m_window->plotPanel()->events().size(), 1);
-    QVERIFY(m_window->plotPanel()->events().constFirst().text.contains(QStringLiteral("K_max")));
-    QVERIFY(before.K_max != m_window->client()->deviceParams().K_max);
+    QCOMPARE(float(client()->deviceParams().K_max), 0.6f);
+    QVERIFY2(find<DeviceParameterLink>("parameterLink")
+                 ->lastMessage()
+                 .contains(QStringLiteral("K_max 0.4 → 0.6")),
+             qPrintable(find<DeviceParameterLink>("parameterLink")->lastMessage()));
+    QCOMPARE(find<PlotPanel>("plotPanel")->events().size(), 1);
+    QVERIFY(
+        find<PlotPanel>("plotPanel")->events().constFirst().text.contains(QStringLiteral("K_max")));
+    QVERIFY(before.K_max != client()->deviceParams().K_max);
 
     // The stiffness view draws the device curve with the new K_max.
-    QCPGraph *device = m_window->stiffnessView()->deviceStiffnessGraph();
+    QCPGraph *device = find<StiffnessView>("stiffnessView")->deviceStiffnessGraph();
     QTRY_VERIFY(!device->data()->isEmpty());
     double peak = 0;
     for (auto it = device->data()->constBegin(); it != device->data()->constEnd(); ++it)
@@ -227,10 +247,10 @@ void TestMainWindow::editPushInSyncChangesBehaviour()
     QCOMPARE(float(peak), 0.6f);
 
     // The device renders it: in the notch band τ_rec = −K_max·(θ−θ0).
-    const double pushedAt = m_window->liveBuffer().lastTime();
+    const double pushedAt = liveBuffer().lastTime();
     QVERIFY(QTest::qWaitFor(
         [&] {
-            const SampleBuffer &b = m_window->liveBuffer();
+            const SampleBuffer &b = liveBuffer();
             for (qsizetype i = b.upperBound(pushedAt + 0.1); i < b.size(); ++i) {
                 if (b.flags(i) & 0x02) // in the notch band
                     return true;
@@ -238,7 +258,7 @@ void TestMainWindow::editPushInSyncChangesBehaviour()
             return false;
         },
         30000));
-    const SampleBuffer &b = m_window->liveBuffer();
+    const SampleBuffer &b = liveBuffer();
     int checked = 0;
     for (qsizetype i = b.upperBound(pushedAt + 0.1); i < b.size(); ++i) {
         if (!(b.flags(i) & 0x02))
@@ -256,7 +276,7 @@ void TestMainWindow::editPushInSyncChangesBehaviour()
 void TestMainWindow::invalidValueDisablesPush()
 {
     connectSim();
-    ParameterEditor *editor = m_window->parameterEditor();
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
     QSignalSpy validity(editor, &ParameterEditor::validityChanged);
     DeviceParams bad = editor->params();
@@ -269,7 +289,7 @@ void TestMainWindow::invalidValueDisablesPush()
     // Ctrl+Return does nothing while invalid: the device keeps its values.
     editor->pushAction()->trigger();
     QTest::qWait(200); // nothing must arrive; there is no event to wait for
-    QCOMPARE(float(m_window->client()->deviceParams().K_min), float(DeviceParams().K_min));
+    QCOMPARE(float(client()->deviceParams().K_min), float(DeviceParams().K_min));
     editor->undoStack()->undo();
     QVERIFY(editor->isValid());
     QVERIFY(editor->pushAction()->isEnabled() || editor->syncState() == SyncState::InSync);
@@ -281,7 +301,7 @@ void TestMainWindow::deviceRejectionIsShown()
     // below N passes Q_dz < N on the host, but both round to the same float, so the device
     // answers OUT_OF_RANGE naming Q_dz: a real device rejection, reached through the editor.
     connectSim();
-    ParameterEditor *editor = m_window->parameterEditor();
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
     DeviceParams edge = editor->params();
     edge.N = 0.1;
@@ -292,17 +312,19 @@ void TestMainWindow::deviceRejectionIsShown()
     QVERIFY(editor->pushAction()->isEnabled());
     editor->pushAction()->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::Rejected, kConnectMs);
-    QVERIFY2(m_window->lastCommandMessage().startsWith(QStringLiteral("Push failed")),
-             qPrintable(m_window->lastCommandMessage()));
+    QVERIFY2(find<DeviceParameterLink>("parameterLink")
+                 ->lastMessage()
+                 .startsWith(QStringLiteral("Push failed")),
+             qPrintable(find<DeviceParameterLink>("parameterLink")->lastMessage()));
     QVERIFY2(editor->syncText().contains(QStringLiteral("Q_dz")), qPrintable(editor->syncText()));
     // The device kept its previous, valid set.
-    QCOMPARE(float(m_window->client()->deviceParams().Q_dz), float(DeviceParams().Q_dz));
-    QVERIFY(m_window->plotPanel()->events().isEmpty());
+    QCOMPARE(float(client()->deviceParams().Q_dz), float(DeviceParams().Q_dz));
+    QVERIFY(find<PlotPanel>("plotPanel")->events().isEmpty());
 }
 
 void TestMainWindow::undoRedo()
 {
-    ParameterEditor *editor = m_window->parameterEditor();
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     const DeviceParams original = editor->params();
     DeviceParams edited = original;
     edited.N = 0.15;
@@ -316,14 +338,14 @@ void TestMainWindow::undoRedo()
     editor->redoAction()->trigger();
     QCOMPARE(editor->params().N, 0.15);
     // The stiffness view follows the edited set.
-    QCPGraph *stiffness = m_window->stiffnessView()->stiffnessGraph();
+    QCPGraph *stiffness = find<StiffnessView>("stiffnessView")->stiffnessGraph();
     QVERIFY(!stiffness->data()->isEmpty());
 }
 
 void TestMainWindow::profileSaveLoadRoundTrip()
 {
-    ProfileController *profiles = m_window->profileController();
-    ParameterEditor *editor = m_window->parameterEditor();
+    ProfileController *profiles = find<ProfileController>("profileController");
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     DeviceParams tuned = editor->params();
     tuned.K_max = 0.55;
     tuned.theta0 = 0.125;
@@ -358,8 +380,8 @@ void TestMainWindow::profileSaveLoadRoundTrip()
 
 void TestMainWindow::abSwitchKeepsBothTunings()
 {
-    ProfileController *profiles = m_window->profileController();
-    ParameterEditor *editor = m_window->parameterEditor();
+    ProfileController *profiles = find<ProfileController>("profileController");
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     QAction *ab = profiles->abToggleAction();
     QVERIFY(!ab->shortcut().isEmpty());
     QCOMPARE(profiles->activeSlot(), 0);
@@ -382,7 +404,7 @@ void TestMainWindow::legacyDeviceCannotPush()
     // The published firmware reports no torque limit: the profile's tau_limit stays (it is
     // neither replaced by a built-in guess nor marked as an unsaved change) and is the one the
     // legacy feedback uses.
-    ParameterEditor *editor = m_window->parameterEditor();
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     HostParams host = editor->hostParams();
     host.tau_limit = 0.3;
     editor->setParams(editor->params(), host, QStringLiteral("tau_limit"));
@@ -390,18 +412,17 @@ void TestMainWindow::legacyDeviceCannotPush()
     ConnectOptions options = simOptions(ProtocolChoice::Auto);
     options.sim.protocol = WireProtocol::Legacy;
     m_window->connectTo(options);
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
-    QCOMPARE(m_window->client()->deviceInfo().protocol, WireProtocol::Legacy);
-    QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("legacy")));
-    QVERIFY2(m_window->linkStatus()->identityText().contains(
-                 QStringLiteral("τ limit 0.3 N·m (assumed)")),
-             qPrintable(m_window->linkStatus()->identityText()));
-    QCOMPARE(m_window->client()->deviceInfo().tauLimit, 0.3);
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
+    QCOMPARE(client()->deviceInfo().protocol, WireProtocol::Legacy);
+    QVERIFY(linkStatus()->identityText().contains(QStringLiteral("legacy")));
+    QVERIFY2(linkStatus()->identityText().contains(QStringLiteral("τ limit 0.3 N·m (assumed)")),
+             qPrintable(linkStatus()->identityText()));
+    QCOMPARE(client()->deviceInfo().tauLimit, 0.3);
     QCOMPARE(editor->hostParams().tau_limit, 0.3);
     QVERIFY(!editor->canPush());
     QVERIFY(!editor->pushAction()->isEnabled());
     QVERIFY(waitForSamples(5)); // legacy streams at ~5 Hz
-    QTRY_VERIFY(m_window->plotPanel()->pointCount(Channel::Theta) > 0);
+    QTRY_VERIFY(find<PlotPanel>("plotPanel")->pointCount(Channel::Theta) > 0);
 }
 
 void TestMainWindow::simulatedHandReachesDevice()
@@ -411,40 +432,39 @@ void TestMainWindow::simulatedHandReachesDevice()
     push.kind = HandInput::Kind::Constant;
     push.amplitude = 0.1; // beyond the notch: settles near 0.1 / K_min ≈ 0.67 rad
     m_window->setSimulatedHand(push);
-    QCOMPARE(m_window->simulatorPanel()->hand(), push);
-    QTRY_VERIFY_WITH_TIMEOUT(
-        m_window->liveBuffer().value(Channel::Theta, m_window->liveBuffer().size() - 1) > 0.5,
-        kDataMs);
+    QCOMPARE(find<SimulatorPanel>("simulatorPanel")->hand(), push);
+    QTRY_VERIFY_WITH_TIMEOUT(liveBuffer().value(Channel::Theta, liveBuffer().size() - 1) > 0.5,
+                             kDataMs);
 }
 
 void TestMainWindow::pauseKeepsLinkRecording()
 {
     connectSim();
-    PlotPanel *plots = m_window->plotPanel();
+    PlotPanel *plots = find<PlotPanel>("plotPanel");
     plots->setWindowLength(1);
     QVERIFY(waitForSamples(1200)); // more than the window: the view scrolls
     plots->repaintNow();
-    m_window->pauseAction()->trigger();
-    QVERIFY(m_window->isLivePaused());
-    QVERIFY(m_window->pauseAction()->isChecked());
+    find<QAction>("pauseAction")->trigger();
+    QVERIFY(find<PlotPanel>("plotPanel")->isPaused());
+    QVERIFY(find<QAction>("pauseAction")->isChecked());
     const double end = plots->viewEnd();
-    const quint64 appended = m_window->liveBuffer().appendedCount();
+    const quint64 appended = liveBuffer().appendedCount();
     QVERIFY(waitForSamples(500));
-    QVERIFY(m_window->liveBuffer().appendedCount() >= appended + 500);
+    QVERIFY(liveBuffer().appendedCount() >= appended + 500);
     plots->repaintNow();
     QCOMPARE(plots->viewEnd(), end);
-    m_window->pauseAction()->trigger();
-    QVERIFY(!m_window->isLivePaused());
+    find<QAction>("pauseAction")->trigger();
+    QVERIFY(!find<PlotPanel>("plotPanel")->isPaused());
     QTRY_VERIFY(plots->viewEnd() > end);
 }
 
 void TestMainWindow::recordCreatesValidFile()
 {
     connectSim();
-    ParameterEditor *editor = m_window->parameterEditor();
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
     const QString path = m_dir.filePath(QStringLiteral("session.csv"));
-    RecordingControls *controls = m_window->recordingControls();
+    RecordingControls *controls = find<RecordingControls>("recordingControls");
     QString suggested;
     controls->setPathChooser([&](const QString &s) {
         suggested = s;
@@ -514,15 +534,15 @@ void TestMainWindow::replayShowsRecordingAndReturnsToLive()
     QVERIFY(waitForSamples(100));
     QString error;
     QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
-    QVERIFY(m_window->isReplaying());
-    ReplayBar *bar = m_window->replayBar();
+    QVERIFY(find<PlotFeed>("plotFeed")->isReplaying());
+    ReplayBar *bar = find<ReplayBar>("replayBar");
     QVERIFY(bar->isVisible());
-    PlotPanel *plots = m_window->plotPanel();
-    ReplayController *replay = m_window->replayController();
+    PlotPanel *plots = find<PlotPanel>("plotPanel");
+    ReplayController *replay = find<ReplayController>("replayController");
     QCOMPARE(plots->source(), &replay->buffer());
     QVERIFY(!plots->followsLatest());
     QCOMPARE(plots->events().size(), 1);
-    QVERIFY(m_window->pauseAction()->text().contains(QStringLiteral("Replay")));
+    QVERIFY(find<QAction>("pauseAction")->text().contains(QStringLiteral("Replay")));
     QCOMPARE(replay->startTime(), 100.0);
 
     // It opens on a full first window (here the whole 5 s recording).
@@ -545,25 +565,25 @@ void TestMainWindow::replayShowsRecordingAndReturnsToLive()
     // Play at 5×: the playhead moves; live samples keep arriving but are not shown.
     bar->speedBox()->setCurrentIndex(bar->speedBox()->findData(5.0));
     QCOMPARE(replay->speed(), 5.0);
-    m_window->pauseAction()->trigger(); // Space plays and pauses the replay
+    find<QAction>("pauseAction")->trigger(); // Space plays and pauses the replay
     QVERIFY(replay->isPlaying());
     QTRY_VERIFY_WITH_TIMEOUT(replay->position() > 103.5, 10000);
-    m_window->pauseAction()->trigger();
+    find<QAction>("pauseAction")->trigger();
     QVERIFY(!replay->isPlaying());
-    QVERIFY(m_window->pauseAction()->isChecked());
+    QVERIFY(find<QAction>("pauseAction")->isChecked());
     // The bar's ▶ plays too, and the Play / Pause action follows it.
     QTest::mouseClick(bar->playButton(), Qt::LeftButton);
     QVERIFY(replay->isPlaying());
-    QVERIFY(!m_window->pauseAction()->isChecked());
+    QVERIFY(!find<QAction>("pauseAction")->isChecked());
     QTest::mouseClick(bar->playButton(), Qt::LeftButton);
     QVERIFY(!replay->isPlaying());
-    QVERIFY(m_window->pauseAction()->isChecked());
+    QVERIFY(find<QAction>("pauseAction")->isChecked());
 
     // One click back to live.
     QTest::mouseClick(bar->liveButton(), Qt::LeftButton);
-    QVERIFY(!m_window->isReplaying());
+    QVERIFY(!find<PlotFeed>("plotFeed")->isReplaying());
     QVERIFY(!bar->isVisible());
-    QCOMPARE(plots->source(), &m_window->liveBuffer());
+    QCOMPARE(plots->source(), &liveBuffer());
     QVERIFY(plots->followsLatest());
     QCOMPARE(plots->viewEnd(), liveViewEnd(*m_window));
 
@@ -575,7 +595,7 @@ void TestMainWindow::replayShowsRecordingAndReturnsToLive()
     file.close();
     QVERIFY(!m_window->openRecording(broken, &error));
     QVERIFY(!error.isEmpty());
-    QVERIFY(!m_window->isReplaying());
+    QVERIFY(!find<PlotFeed>("plotFeed")->isReplaying());
 }
 
 void TestMainWindow::disconnectKeepsPlotData()
@@ -583,16 +603,16 @@ void TestMainWindow::disconnectKeepsPlotData()
     connectSim();
     QVERIFY(waitForSamples(500));
     m_window->disconnectDevice();
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Disconnected, kConnectMs);
-    const qsizetype kept = m_window->liveBuffer().size();
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Disconnected, kConnectMs);
+    const qsizetype kept = liveBuffer().size();
     QVERIFY(kept >= 500);
-    m_window->plotPanel()->repaintNow();
-    QVERIFY(m_window->plotPanel()->pointCount(Channel::Theta) > 0);
-    QCOMPARE(m_window->liveBuffer().size(), kept);
-    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("disconnected"));
-    QVERIFY(!m_window->parameterEditor()->canPush());
-    QVERIFY(!m_window->simulatorDock()->isVisible());
-    QVERIFY(!m_window->recordingControls()->recordAction()->isEnabled());
+    find<PlotPanel>("plotPanel")->repaintNow();
+    QVERIFY(find<PlotPanel>("plotPanel")->pointCount(Channel::Theta) > 0);
+    QCOMPARE(liveBuffer().size(), kept);
+    QCOMPARE(linkStatus()->stateText(), QStringLiteral("disconnected"));
+    QVERIFY(!find<ParameterEditor>("parameterEditor")->canPush());
+    QVERIFY(!find<QDockWidget>("simulatorDock")->isVisible());
+    QVERIFY(!find<RecordingControls>("recordingControls")->recordAction()->isEnabled());
 }
 
 void TestMainWindow::lostLinkKeepsDataAndReconnects()
@@ -613,35 +633,35 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
     options.port = link;
     options.protocol = ProtocolChoice::V2;
     m_window->connectTo(options);
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
-    QVERIFY(!m_window->simulatorDock()->isVisible()); // not the in-process simulator
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
+    QVERIFY(!find<QDockWidget>("simulatorDock")->isVisible()); // not the in-process simulator
     QVERIFY(waitForSamples(500));
 
     sim.terminate(); // the device vanishes
     QVERIFY(sim.waitForFinished(5000));
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Lost, kConnectMs);
-    QCOMPARE(m_window->linkStatus()->stateText(), QStringLiteral("LINK LOST"));
-    QVERIFY(m_window->linkBanner()->isVisible());
-    QVERIFY2(m_window->linkBanner()->text().contains(QStringLiteral("Reconnecting")),
-             qPrintable(m_window->linkBanner()->text()));
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Lost, kConnectMs);
+    QCOMPARE(linkStatus()->stateText(), QStringLiteral("LINK LOST"));
+    QVERIFY(find<LinkBanner>("linkBanner")->isVisible());
+    QVERIFY2(find<LinkBanner>("linkBanner")->text().contains(QStringLiteral("Reconnecting")),
+             qPrintable(find<LinkBanner>("linkBanner")->text()));
     // Said once, in the banner, not clipped again in the status bar.
     const QString message = m_window->statusBar()->currentMessage();
-    QVERIFY2(message.isEmpty() || !m_window->linkBanner()->text().contains(message),
+    QVERIFY2(message.isEmpty() || !find<LinkBanner>("linkBanner")->text().contains(message),
              qPrintable(message));
-    const qsizetype kept = m_window->liveBuffer().size();
+    const qsizetype kept = liveBuffer().size();
     QVERIFY(kept >= 500);
-    m_window->plotPanel()->repaintNow();
-    QVERIFY(m_window->plotPanel()->pointCount(Channel::Theta) > 0);
+    find<PlotPanel>("plotPanel")->repaintNow();
+    QVERIFY(find<PlotPanel>("plotPanel")->pointCount(Channel::Theta) > 0);
 
     // The port returns: the session reconnects by itself and the banner goes away.
     QProcess again;
     start(again);
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, 30000);
-    QVERIFY(!m_window->linkBanner()->isVisible());
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, 30000);
+    QVERIFY(!find<LinkBanner>("linkBanner")->isVisible());
     QVERIFY(waitForSamples(200));
-    QVERIFY(m_window->liveBuffer().size() > kept); // old and new data, one time axis
+    QVERIFY(liveBuffer().size() > kept); // old and new data, one time axis
     m_window->disconnectDevice();
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Disconnected, kConnectMs);
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Disconnected, kConnectMs);
     again.terminate();
     again.waitForFinished(5000);
 #endif
@@ -649,35 +669,35 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
 
 void TestMainWindow::degreesToggleReachesEveryView()
 {
-    QAction *degrees = m_window->degreesAction();
+    QAction *degrees = find<QAction>("degreesAction");
     QVERIFY(!degrees->isChecked());
     degrees->trigger();
-    QVERIFY(m_window->plotPanel()->angleInDegrees());
-    QVERIFY(m_window->stiffnessView()->angleInDegrees());
-    QVERIFY(m_window->parameterEditor()->angleInDegrees());
+    QVERIFY(find<PlotPanel>("plotPanel")->angleInDegrees());
+    QVERIFY(find<StiffnessView>("stiffnessView")->angleInDegrees());
+    QVERIFY(find<ParameterEditor>("parameterEditor")->angleInDegrees());
     // The editor's own check box drives the same switch.
-    m_window->parameterEditor()->setAngleInDegrees(false);
+    find<ParameterEditor>("parameterEditor")->setAngleInDegrees(false);
     QTRY_VERIFY(!degrees->isChecked());
 }
 
 void TestMainWindow::settingsPersist()
 {
-    m_window->connectionBar()->setOptions(QStringLiteral("/dev/ttyTEST0"), 115200,
-                                          ProtocolChoice::Legacy);
-    m_window->degreesAction()->setChecked(true);
-    m_window->plotPanel()->setWindowLength(30);
+    find<ConnectionBar>("connectionBar")
+        ->setOptions(QStringLiteral("/dev/ttyTEST0"), 115200, ProtocolChoice::Legacy);
+    find<QAction>("degreesAction")->setChecked(true);
+    find<PlotPanel>("plotPanel")->setWindowLength(30);
     const QString profile = m_dir.filePath(QStringLiteral("Persisted.json"));
-    QVERIFY(m_window->profileController()->saveTo(profile));
+    QVERIFY(find<ProfileController>("profileController")->saveTo(profile));
     QVERIFY(m_window->close());
 
     m_window = std::make_unique<MainWindow>();
-    ConnectionBar *bar = m_window->connectionBar();
+    ConnectionBar *bar = find<ConnectionBar>("connectionBar");
     QCOMPARE(bar->port(), QStringLiteral("/dev/ttyTEST0"));
     QCOMPARE(bar->baud(), 115200);
     QCOMPARE(bar->protocol(), ProtocolChoice::Legacy);
-    QVERIFY(m_window->plotPanel()->angleInDegrees());
-    QCOMPARE(m_window->plotPanel()->windowLength(), 30.0);
-    QCOMPARE(m_window->profileController()->filePath(), profile);
+    QVERIFY(find<PlotPanel>("plotPanel")->angleInDegrees());
+    QCOMPARE(find<PlotPanel>("plotPanel")->windowLength(), 30.0);
+    QCOMPARE(find<ProfileController>("profileController")->filePath(), profile);
 }
 
 void TestMainWindow::keyboardShortcuts()
@@ -707,20 +727,20 @@ void TestMainWindow::keyboardShortcuts()
     QVERIFY(has(QKeySequence(Qt::CTRL | Qt::Key_R)));
     QVERIFY(has(QKeySequence(Qt::CTRL | Qt::Key_Z)));
     QVERIFY(has(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)));
-    QVERIFY(has(m_window->profileController()->abToggleAction()->shortcut()));
+    QVERIFY(has(find<ProfileController>("profileController")->abToggleAction()->shortcut()));
 
     // Ctrl+K connects through the real shortcut machinery.
     m_window->activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
-    m_window->plotPanel()->customPlot()->setFocus();
+    find<PlotPanel>("plotPanel")->customPlot()->setFocus();
     QTest::keyClick(m_window.get(), Qt::Key_K, Qt::ControlModifier);
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Connected, kConnectMs);
-    QTest::keyClick(m_window->plotPanel()->customPlot(), Qt::Key_Space);
-    QVERIFY(m_window->isLivePaused());
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
+    QTest::keyClick(find<PlotPanel>("plotPanel")->customPlot(), Qt::Key_Space);
+    QVERIFY(find<PlotPanel>("plotPanel")->isPaused());
     QTest::keyClick(m_window.get(), Qt::Key_P, Qt::ControlModifier);
-    QVERIFY(!m_window->isLivePaused());
+    QVERIFY(!find<PlotPanel>("plotPanel")->isPaused());
     QTest::keyClick(m_window.get(), Qt::Key_K, Qt::ControlModifier);
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->client()->state(), SessionState::Disconnected, kConnectMs);
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Disconnected, kConnectMs);
 }
 
 void TestMainWindow::narrowWindowKeepsStateTagVisible()
@@ -732,7 +752,7 @@ void TestMainWindow::narrowWindowKeepsStateTagVisible()
     auto *tag = m_window->findChild<QLabel *>(QStringLiteral("linkState"));
     QVERIFY(tag);
     QCOMPARE(tag->text(), QStringLiteral("connected"));
-    QTRY_VERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("τ limit")));
+    QTRY_VERIFY(linkStatus()->identityText().contains(QStringLiteral("τ limit")));
     // Let the toolbars lay out the new identity (nested layouts: a few rounds).
     for (int i = 0; i < 4; ++i)
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
@@ -747,8 +767,8 @@ void TestMainWindow::narrowWindowKeepsStateTagVisible()
     QVERIFY(identity);
     QTRY_VERIFY(identity->isVisible());
     // The full identity stays available (tooltip, identityText()).
-    QVERIFY(m_window->linkStatus()->identityText().contains(QStringLiteral("τ limit")));
-    QCOMPARE(identity->toolTip(), m_window->linkStatus()->identityText());
+    QVERIFY(linkStatus()->identityText().contains(QStringLiteral("τ limit")));
+    QCOMPARE(identity->toolTip(), linkStatus()->identityText());
 }
 
 void TestMainWindow::narrowReplayBarKeepsItsSlider()
@@ -775,7 +795,7 @@ void TestMainWindow::narrowReplayBarKeepsItsSlider()
     m_window->resize(1000, 700);
     QString error;
     QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
-    ReplayBar *bar = m_window->replayBar();
+    ReplayBar *bar = find<ReplayBar>("replayBar");
     for (int i = 0; i < 4; ++i)
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
     QVERIFY(bar->isVisible());
@@ -820,11 +840,11 @@ void TestMainWindow::hugeReplaySpanKeepsTheWindow()
 
     QString error;
     QVERIFY2(m_window->openRecording(path, &error), qPrintable(error));
-    ReplayBar *bar = m_window->replayBar();
-    ReplayController *replay = m_window->replayController();
+    ReplayBar *bar = find<ReplayBar>("replayBar");
+    ReplayController *replay = find<ReplayController>("replayController");
     for (int i = 0; i < 4; ++i)
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-    m_window->plotPanel()->repaintNow();
+    find<PlotPanel>("plotPanel")->repaintNow();
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
 
     // Nothing widens the window: not the replay bar, not the plots' axis labels.
@@ -834,7 +854,7 @@ void TestMainWindow::hugeReplaySpanKeepsTheWindow()
     QVERIFY2(bar->minimumSizeHint().width() < 700,
              qPrintable(QString::number(bar->minimumSizeHint().width())));
     QVERIFY2(bar->positionText().size() <= 24, qPrintable(bar->positionText()));
-    auto *plot = m_window->plotPanel()->findChild<QCustomPlot *>();
+    auto *plot = find<PlotPanel>("plotPanel")->findChild<QCustomPlot *>();
     QVERIFY(plot);
     for (QCPAxisRect *rect : plot->axisRects()) {
         for (QCPAxis *axis : rect->axes()) {

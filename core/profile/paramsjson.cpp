@@ -1,0 +1,263 @@
+#include "paramsjson.h"
+
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+
+namespace hatpic {
+
+namespace {
+
+QString latin1(std::string_view text)
+{
+    return QString::fromLatin1(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+// The keys of a `host` object, in the order they are written.
+const char *const kHostMode = "mode";
+const char *const kHostVMax = "v_max";
+const char *const kHostRefDeadzone = "ref_deadzone";
+const char *const kHostTauLimit = "tau_limit";
+
+} // namespace
+
+QByteArray jsonNumber(double value)
+{
+    if (!std::isfinite(value))
+        return QByteArrayLiteral("null");
+    // Negative zero is written as 0.0: Qt's JSON reader keeps integral numbers as integers,
+    // which have no sign of zero, so "-0.0" would read back as +0.0 and then be rewritten
+    // differently. Every rule and formula of the model treats the two zeros alike.
+    if (value == 0.0)
+        return QByteArrayLiteral("0.0");
+
+    // Shortest round-trip digits, in scientific form: "-d.ddde±XX".
+    char buffer[64];
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific);
+    const std::string_view text(buffer, static_cast<std::size_t>(result.ptr - buffer));
+    const std::size_t ePos = text.find('e');
+    const bool negative = text.front() == '-';
+    std::string digits;
+    for (char c : text.substr(negative ? 1 : 0, ePos - (negative ? 1 : 0))) {
+        if (c != '.')
+            digits += c;
+    }
+    int exponent = 0;
+    const std::string_view expText = text.substr(ePos + 1);
+    std::from_chars(expText.data() + (expText.front() == '+' ? 1 : 0),
+                    expText.data() + expText.size(), exponent);
+
+    // value = 0.d1d2…dn × 10^(exponent+1)
+    std::string out = negative ? "-" : "";
+    const int count = static_cast<int>(digits.size());
+    if (exponent >= -5 && exponent < 16) {
+        if (exponent < 0) {
+            out += "0.";
+            out.append(static_cast<std::size_t>(-exponent - 1), '0');
+            out += digits;
+        } else if (exponent + 1 >= count) {
+            out += digits;
+            out.append(static_cast<std::size_t>(exponent + 1 - count), '0');
+            out += ".0";
+        } else {
+            out += digits.substr(0, static_cast<std::size_t>(exponent + 1));
+            out += '.';
+            out += digits.substr(static_cast<std::size_t>(exponent + 1));
+        }
+    } else {
+        out += digits.front();
+        if (count > 1) {
+            out += '.';
+            out += digits.substr(1);
+        }
+        out += 'e';
+        out += std::to_string(exponent);
+    }
+    return QByteArray::fromStdString(out);
+}
+
+QByteArray jsonString(const QString &text)
+{
+    QByteArray out;
+    out += '"';
+    const QByteArray utf8 = text.toUtf8();
+    for (const char c : utf8) {
+        const auto byte = static_cast<unsigned char>(c);
+        switch (c) {
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\b':
+            out += "\\b";
+            break;
+        case '\f':
+            out += "\\f";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        default:
+            if (byte < 0x20) {
+                static constexpr char kHex[] = "0123456789abcdef";
+                out += "\\u00";
+                out += kHex[byte >> 4];
+                out += kHex[byte & 0xf];
+            } else {
+                out += c;
+            }
+        }
+    }
+    out += '"';
+    return out;
+}
+
+QByteArray jsonBool(bool value)
+{
+    return value ? QByteArrayLiteral("true") : QByteArrayLiteral("false");
+}
+
+QString jsonValueText(const QJsonValue &value)
+{
+    switch (value.type()) {
+    case QJsonValue::Null:
+        return QStringLiteral("null");
+    case QJsonValue::Bool:
+        return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    case QJsonValue::Double:
+        return QString::fromStdString(formatNumber(value.toDouble()));
+    case QJsonValue::String: {
+        constexpr qsizetype kMaxShown = 40;
+        QString text = value.toString();
+        if (text.size() > kMaxShown)
+            text = text.left(kMaxShown) + u'…';
+        return u'"' + text + u'"';
+    }
+    case QJsonValue::Array:
+        return QStringLiteral("an array");
+    case QJsonValue::Object:
+        return QStringLiteral("an object");
+    case QJsonValue::Undefined:
+        break;
+    }
+    return QStringLiteral("nothing");
+}
+
+JsonObjectWriter &JsonObjectWriter::add(const char *key, const QByteArray &rawValue)
+{
+    m_items.append(QByteArray(m_indent + 2, ' ') + '"' + key + "\": " + rawValue);
+    return *this;
+}
+
+QByteArray JsonObjectWriter::text() const
+{
+    if (m_items.isEmpty())
+        return QByteArrayLiteral("{}");
+    return "{\n" + m_items.join(",\n") + '\n' + QByteArray(m_indent, ' ') + '}';
+}
+
+QByteArray deviceParamsJson(const DeviceParams &params, int indent)
+{
+    JsonObjectWriter writer(indent);
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        writer.add(deviceFieldName(i).data(), jsonNumber(params.field(i)));
+    return writer.text();
+}
+
+QByteArray hostParamsJson(const HostParams &params, int indent)
+{
+    return JsonObjectWriter(indent)
+        .add(kHostMode, jsonString(latin1(referenceModeName(params.mode))))
+        .add(kHostVMax, jsonNumber(params.v_max))
+        .add(kHostRefDeadzone, jsonBool(params.ref_deadzone))
+        .add(kHostTauLimit, jsonNumber(params.tau_limit))
+        .text();
+}
+
+std::array<bool, DeviceParams::kFieldCount>
+readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams &params,
+                 QStringList &errors, QStringList *warnings)
+{
+    std::array<bool, DeviceParams::kFieldCount> present{};
+    QStringList known;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        const QString name = latin1(deviceFieldName(i));
+        known.append(name);
+        const QJsonValue value = object.value(name);
+        if (value.isUndefined()) {
+            errors.append(prefix + name + u": missing, must be a number");
+        } else if (!value.isDouble()) {
+            errors.append(prefix + name + u": must be a number, got " + jsonValueText(value));
+        } else {
+            params.setField(i, value.toDouble());
+            present[static_cast<std::size_t>(i)] = true;
+        }
+    }
+    if (warnings)
+        warnUnknownKeys(object, known, prefix, *warnings);
+    return present;
+}
+
+QStringList readHostParams(const QJsonObject &object, const QString &prefix, HostParams &params,
+                           QStringList &errors, QStringList *warnings)
+{
+    const QString mode = QString::fromLatin1(kHostMode);
+    const QString vMax = QString::fromLatin1(kHostVMax);
+    const QString refDeadzone = QString::fromLatin1(kHostRefDeadzone);
+    const QString tauLimit = QString::fromLatin1(kHostTauLimit);
+    if (warnings)
+        warnUnknownKeys(object, {mode, vMax, refDeadzone, tauLimit}, prefix, *warnings);
+
+    if (const QJsonValue value = object.value(mode); !value.isUndefined()) {
+        const QString text = value.isString() ? value.toString() : QString();
+        if (text == latin1(referenceModeName(ReferenceMode::Translation)))
+            params.mode = ReferenceMode::Translation;
+        else if (text == latin1(referenceModeName(ReferenceMode::Rotation)))
+            params.mode = ReferenceMode::Rotation;
+        else
+            errors.append(prefix + mode + u": must be \"translation\" or \"rotation\", got " +
+                          jsonValueText(value));
+    }
+    if (const QJsonValue value = object.value(refDeadzone); !value.isUndefined()) {
+        if (value.isBool())
+            params.ref_deadzone = value.toBool();
+        else
+            errors.append(prefix + refDeadzone + u": must be true or false, got " +
+                          jsonValueText(value));
+    }
+    QStringList nonNumbers;
+    for (const auto &[key, target] :
+         {std::pair{vMax, &params.v_max}, std::pair{tauLimit, &params.tau_limit}}) {
+        const QJsonValue value = object.value(key);
+        if (value.isUndefined())
+            continue;
+        if (value.isDouble()) {
+            *target = value.toDouble();
+        } else {
+            errors.append(prefix + key + u": must be a number, got " + jsonValueText(value));
+            nonNumbers.append(key);
+        }
+    }
+    return nonNumbers;
+}
+
+void warnUnknownKeys(const QJsonObject &object, const QStringList &known, const QString &prefix,
+                     QStringList &warnings)
+{
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (!known.contains(it.key()))
+            warnings.append(u"unknown key \"" + prefix + it.key() + u"\" ignored");
+    }
+}
+
+} // namespace hatpic

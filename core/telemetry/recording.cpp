@@ -1,0 +1,29 @@
+#include "recording.h"
+
+#include "telemetry/samplecolumns.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+namespace hatpic {
+
+QStringList recordingColumns()
+{
+    QStringList columns;
+    for (const SampleColumn &column : kSampleColumns)
+        columns << QString::fromUtf8(column.name.data(),
+                                     static_cast<qsizetype>(column.name.size()));
+    columns << QStringLiteral("event");
+    return columns;
+}
+
+QString recordingMetadataPath(const QString &csvPath)
+{
+    const QFileInfo info(csvPath);
+    const QString base = info.suffix().compare(u"csv", Qt::CaseInsensitive) == 0
+                             ? info.completeBaseName()
+                             : info.fileName();
+    return info.dir().filePath(base + u".json");
+}
+
+} // namespace hatpic

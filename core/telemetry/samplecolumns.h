@@ -1,0 +1,66 @@
+// The columns of a Sample: one table that every sample CSV (recordings and their reader,
+// hatpicctl's `simulate` and `stream`, the plots' export) and the plots' channels read.
+// docs/recording.md describes the columns for people.
+#pragma once
+
+#include "telemetry/sample.h"
+
+#include <QByteArray>
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+namespace hatpic {
+
+//! One column of the sample CSV: a quantity of Sample, in SI units.
+struct SampleColumn
+{
+    std::string_view name;    //!< header name, e.g. "tau_rec"
+    std::string_view unit;    //!< SI unit, e.g. "N·m"; empty for the flags
+    std::string_view meaning; //!< what it is, in a few words
+    double Sample::*value;    //!< the quantity; nullptr for the flags (Sample::flags, a bit set)
+
+    constexpr bool isFlags() const { return value == nullptr; }
+};
+
+//! The sample columns in the order every CSV writes them.
+inline constexpr std::array<SampleColumn, 10> kSampleColumns = {{
+    {"t_s", "s", "session time: follows the device clock, monotonic", &Sample::t_s},
+    {"theta", "rad", "knob angle, absolute", &Sample::theta},
+    {"omega", "rad/s", "knob rate", &Sample::omega},
+    {"tau", "N·m", "interaction torque of eq. (1); the operator's torque is -tau", &Sample::tau},
+    {"tau_rec", "N·m", "re-centering torque", &Sample::tau_rec},
+    {"tau_ext", "N·m", "external feedback torque", &Sample::tau_ext},
+    {"tau_total", "N·m", "tau_rec + tau_ext as rendered, clamped to tau_limit", &Sample::tau_total},
+    {"v_ref", "m/s or rad/s", "reference velocity", &Sample::v_ref},
+    {"p_ref", "m or rad", "reference position", &Sample::p_ref},
+    {"flags", "", "device flags (low byte) | host flags (kFlag*), a decimal integer", nullptr},
+}};
+
+//! The quantities a plot shows (theta … p_ref) are the columns from this one on, in order.
+inline constexpr std::size_t kFirstQuantityColumn = 1;
+inline constexpr std::size_t kQuantityColumnCount = 8;
+
+//! Position of the column called `name` in kSampleColumns; kSampleColumns.size() if none.
+constexpr std::size_t sampleColumnIndex(std::string_view name)
+{
+    std::size_t i = 0;
+    while (i < kSampleColumns.size() && kSampleColumns[i].name != name)
+        ++i;
+    return i;
+}
+
+static_assert(sampleColumnIndex("t_s") == 0 &&
+              sampleColumnIndex("flags") + 1 == kSampleColumns.size());
+static_assert(kFirstQuantityColumn + kQuantityColumnCount == sampleColumnIndex("flags"));
+
+//! The header of the sample CSV, "t_s,theta,…,flags", without line end.
+QByteArray sampleCsvHeader();
+
+//! Appends the fields of one row, in column order and without line end, to `row`: numbers as
+//! compactNumberText() (the one number format), NaN (a quantity the protocol does not carry)
+//! as an empty field, the flags as a decimal integer.
+void appendSampleCsvRow(QByteArray &row, const Sample &sample);
+
+} // namespace hatpic

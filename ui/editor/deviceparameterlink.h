@@ -1,0 +1,69 @@
+// The round trip of the parameters between the editor and the device, in one place:
+// edit → push (SET_PARAMS) → ACK → read-back → in sync. It sends what the editor asks for,
+// hands the device's answers and read-backs back to the editor (which shows the sync state),
+// keeps the editor's host parameters in the session, and words the outcome of every parameter
+// command (push, read, ZERO, save in the device) for the status bar and the event markers.
+#pragma once
+
+#include "model/params.h"
+#include "session/sessiontypes.h"
+
+#include <QHash>
+#include <QObject>
+
+#include <optional>
+
+namespace hatpic {
+
+class DeviceClient;
+class ParameterEditor;
+
+class DeviceParameterLink : public QObject
+{
+    Q_OBJECT
+public:
+    //! Neither is owned; both must outlive the link (the window owns all three).
+    DeviceParameterLink(DeviceClient *client, ParameterEditor *editor, QObject *parent = nullptr);
+
+    //! Before a connection: the editor's host parameters go to the session, and its tau_limit
+    //! scales the feedback of a legacy device (which does not report its limit).
+    void prepare(ConnectOptions &options);
+
+    void readFromDevice(); //!< GET_PARAMS
+    void zero();           //!< ZERO: θ0 := the current angle, then a read-back
+    void saveInDevice();   //!< SAVE_PARAMS: the device restores them at power-up
+
+    //! The outcome of the last parameter command ("Pushed: K_max 0.4 → 0.6", "Read: done.").
+    QString lastMessage() const { return m_lastMessage; }
+
+Q_SIGNALS:
+    //! A parameter command finished; `text` is lastMessage().
+    void commandFinished(const QString &text);
+    //! The device's parameters were changed by a push or a ZERO ("K_max 0.4 → 0.6"): worth a
+    //! marker on the time axis.
+    void deviceChanged(const QString &what);
+
+private:
+    enum class Command { Read, Zero, Save };
+
+    void onStateChanged(SessionState state);
+    void onDeviceInfo(const DeviceInfo &info);
+    void onCommandFinished(quint64 id, const CommandResult &result);
+    void finishPush(const CommandResult &result);
+    void finishCommand(Command command, const CommandResult &result);
+
+    DeviceClient *m_client;
+    ParameterEditor *m_editor;
+    //! The push in flight (the editor sends one at a time) and what it changes.
+    struct Push
+    {
+        quint64 id = 0;
+        DeviceParams before; //!< the device's values when the push was sent
+        DeviceParams pushed;
+    };
+    std::optional<Push> m_push;
+    QHash<quint64, Command> m_commands; //!< other commands in flight
+    QString m_lastMessage;
+};
+
+} // namespace hatpic

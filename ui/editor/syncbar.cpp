@@ -1,0 +1,112 @@
+#include "editor/syncbar.h"
+
+#include "editor/undobutton.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QToolButton>
+
+namespace hatpic {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+QToolButton *actionButton(QAction *action, QWidget *parent)
+{
+    auto *button = new QToolButton(parent);
+    button->setDefaultAction(action);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    return button;
+}
+
+QString stateColour(SyncState state)
+{
+    switch (state) {
+    case SyncState::InSync:
+        return u"#2e7d32"_s;
+    case SyncState::Edited:
+        return u"#ef6c00"_s;
+    case SyncState::Pushing:
+    case SyncState::AwaitingReadback:
+        return u"#1565c0"_s;
+    case SyncState::ReadbackDiffers:
+    case SyncState::Rejected:
+    case SyncState::Timeout:
+    case SyncState::Failed:
+        return u"#c62828"_s;
+    case SyncState::NotConnected:
+    case SyncState::NotRead:
+        break;
+    }
+    return u"#757575"_s;
+}
+
+} // namespace
+
+SyncBar::SyncBar(QUndoStack *undo, QAction *read, QAction *revert, QAction *push, QWidget *parent)
+    : QWidget(parent)
+{
+    auto *grid = new QGridLayout(this);
+    grid->setContentsMargins(0, 0, 0, 0);
+
+    m_label = new QLabel(this);
+    m_label->setObjectName(u"sync_state"_s);
+    m_label->setWordWrap(true);
+    m_label->setToolTip(tr("Whether the device renders what the editor shows"));
+    grid->addWidget(m_label, 0, 0);
+
+    auto *buttons = new QHBoxLayout;
+    buttons->setSpacing(4);
+    buttons->addWidget(new UndoButton(undo, UndoButton::Direction::Undo, this));
+    buttons->addWidget(new UndoButton(undo, UndoButton::Direction::Redo, this));
+    buttons->addSpacing(8);
+    buttons->addWidget(actionButton(read, this));
+    buttons->addWidget(actionButton(revert, this));
+    auto *pushButton = actionButton(push, this);
+    pushButton->setObjectName(u"button_push"_s);
+    pushButton->setStyleSheet(QStringLiteral("QToolButton:enabled { font-weight: bold; }"));
+    buttons->addWidget(pushButton);
+    grid->addLayout(buttons, 0, 1, Qt::AlignRight);
+
+    auto *options = new QHBoxLayout;
+    m_liveCheck = new QCheckBox(tr("Live push while editing"), this);
+    m_liveCheck->setObjectName(u"check_live_push"_s);
+    m_liveCheck->setToolTip(tr("Push every change as you drag or type (at most 10 pushes per "
+                               "second, one at a time; the last value is always sent)"));
+    connect(m_liveCheck, &QCheckBox::toggled, this, &SyncBar::livePushToggled);
+    m_degreesCheck = new QCheckBox(tr("Angles in degrees"), this);
+    m_degreesCheck->setObjectName(u"check_degrees"_s);
+    m_degreesCheck->setToolTip(tr("Show θ0, N and Q_dz in degrees; files and the device stay "
+                                  "in radians"));
+    connect(m_degreesCheck, &QCheckBox::toggled, this, &SyncBar::angleInDegreesToggled);
+    options->addWidget(m_liveCheck);
+    options->addWidget(m_degreesCheck);
+    options->addStretch(1);
+    grid->addLayout(options, 1, 0, 1, 2);
+    grid->setColumnStretch(0, 1);
+}
+
+void SyncBar::setState(SyncState state, const QString &text)
+{
+    m_label->setText(u"<span style=\"color:"_s + stateColour(state) + u"\">●</span> <b>"_s +
+                     text.toHtmlEscaped() + u"</b>"_s);
+}
+
+void SyncBar::setLivePush(bool on)
+{
+    const QSignalBlocker block(m_liveCheck);
+    m_liveCheck->setChecked(on);
+}
+
+void SyncBar::setAngleInDegrees(bool on)
+{
+    const QSignalBlocker block(m_degreesCheck);
+    m_degreesCheck->setChecked(on);
+}
+
+} // namespace hatpic

@@ -1,0 +1,20 @@
+// The main window's rectangle in the settings: fitted into the screen both when saved and when
+// restored, so that no screen ever gets a window larger than itself (issue 10).
+#pragma once
+
+#include <QRect>
+
+class QMainWindow;
+class QSettings;
+
+namespace hatpic {
+
+//! `rect` made no larger than `available` and moved inside it.
+QRect fittedInto(const QRect &rect, const QRect &available);
+
+//! Restores the saved rectangle (or what versions before it saved), fitted into its screen;
+//! false when nothing was saved (the first launch).
+bool restoreWindowGeometry(QMainWindow *window, const QSettings &settings);
+void saveWindowGeometry(const QMainWindow *window, QSettings &settings);
+
+} // namespace hatpic
