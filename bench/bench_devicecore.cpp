@@ -8,7 +8,8 @@
 //           and parsing the READ and WRITE packets, and a TELEMETRY frame encoded per cycle,
 //           against a servo that answers from canned registers (no bus time);
 //   params: one parameter change (the coefficients computed in double).
-// Prints ns per operation (best of 5 runs).
+// Prints ns of CPU time per operation (best of 5 runs, bench/benchclock.h).
+#include "benchclock.h"
 #include "devicecoretest.h"
 
 #include "firmware/devicecore.h"
@@ -16,7 +17,6 @@
 #include "firmware/stsbus.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -55,17 +55,7 @@ private:
     T m_sink{};
 };
 
-template<typename F> double bestNsPer(long n, F &&run)
-{
-    double best = 1e300;
-    for (int r = 0; r < 5; ++r) {
-        const auto t0 = std::chrono::steady_clock::now();
-        run(n);
-        const auto t1 = std::chrono::steady_clock::now();
-        best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() / n);
-    }
-    return best;
-}
+using benchclock::bestNsPer;
 
 template<typename T> void measure(const char *name, long cycles)
 {

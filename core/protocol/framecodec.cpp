@@ -3,27 +3,22 @@
 #include "crc16.h"
 
 #include <bit>
+#include <cstring>
 #include <type_traits>
 
 namespace hatpic::v2 {
 
 namespace {
 
-//! Little-endian payload writer into a fixed buffer.
+//! Little-endian payload writer straight into the caller's frame buffer; the caller has
+//! checked the room (payloadSize()).
 class Writer
 {
 public:
-    void u8(std::uint8_t v) { m_bytes[m_size++] = v; }
-    void u16(std::uint16_t v)
-    {
-        u8(static_cast<std::uint8_t>(v));
-        u8(static_cast<std::uint8_t>(v >> 8));
-    }
-    void u32(std::uint32_t v)
-    {
-        u16(static_cast<std::uint16_t>(v));
-        u16(static_cast<std::uint16_t>(v >> 16));
-    }
+    explicit Writer(std::uint8_t *at) : m_at(at) {}
+    void u8(std::uint8_t v) { *m_at++ = v; }
+    void u16(std::uint16_t v) { put(v); }
+    void u32(std::uint32_t v) { put(v); }
     void f32(float v) { u32(std::bit_cast<std::uint32_t>(v)); }
     void params(const DeviceParams &p)
     {
@@ -39,16 +34,28 @@ public:
     }
     void text(std::string_view t, std::size_t padTo)
     {
-        for (const char c : t)
-            u8(static_cast<std::uint8_t>(c));
-        for (std::size_t i = t.size(); i < padTo; ++i)
-            u8(0);
+        std::memcpy(m_at, t.data(), t.size());
+        m_at += t.size();
+        if (t.size() < padTo) {
+            std::memset(m_at, 0, padTo - t.size());
+            m_at += padTo - t.size();
+        }
     }
-    std::span<const std::uint8_t> bytes() const { return {m_bytes.data(), m_size}; }
+    std::uint8_t *end() const { return m_at; }
 
 private:
-    std::array<std::uint8_t, kMaxPayload> m_bytes{};
-    std::size_t m_size = 0;
+    template<typename U> void put(U v)
+    {
+        if constexpr (std::endian::native == std::endian::little) {
+            std::memcpy(m_at, &v, sizeof v);
+            m_at += sizeof v;
+        } else {
+            for (std::size_t i = 0; i < sizeof v; ++i)
+                u8(static_cast<std::uint8_t>(v >> (8 * i)));
+        }
+    }
+
+    std::uint8_t *m_at;
 };
 
 //! Little-endian payload reader; callers check the length first.
@@ -57,16 +64,8 @@ class Reader
 public:
     explicit Reader(std::span<const std::uint8_t> bytes) : m_bytes(bytes) {}
     std::uint8_t u8() { return m_bytes[m_pos++]; }
-    std::uint16_t u16()
-    {
-        const std::uint16_t lo = u8();
-        return static_cast<std::uint16_t>(lo | (u8() << 8));
-    }
-    std::uint32_t u32()
-    {
-        const std::uint32_t lo = u16();
-        return lo | (static_cast<std::uint32_t>(u16()) << 16);
-    }
+    std::uint16_t u16() { return get<std::uint16_t>(); }
+    std::uint32_t u32() { return get<std::uint32_t>(); }
     float f32() { return std::bit_cast<float>(u32()); }
     DeviceParams params()
     {
@@ -91,6 +90,19 @@ public:
     }
 
 private:
+    template<typename U> U get()
+    {
+        U v = 0;
+        if constexpr (std::endian::native == std::endian::little) {
+            std::memcpy(&v, m_bytes.data() + m_pos, sizeof v);
+        } else {
+            for (std::size_t i = 0; i < sizeof v; ++i)
+                v = static_cast<U>(v | (U(m_bytes[m_pos + i]) << (8 * i)));
+        }
+        m_pos += sizeof v;
+        return v;
+    }
+
     std::span<const std::uint8_t> m_bytes;
     std::size_t m_pos = 0;
 };
@@ -100,59 +112,107 @@ std::string_view textOf(std::span<const std::uint8_t> bytes)
     return {reinterpret_cast<const char *>(bytes.data()), bytes.size()};
 }
 
-//! Writes the payload of `message`; false when it is not encodable.
-bool encodePayload(const Message &message, Writer &w)
+//! Payload length of a message on the wire, or -1 when it is not encodable.
+template<typename T> std::ptrdiff_t payloadSize(const T &m)
 {
-    return std::visit(
-        [&](const auto &m) {
-            using T = std::decay_t<decltype(m)>;
-            if constexpr (std::is_same_v<T, SetParams> || std::is_same_v<T, Params>) {
-                w.params(m.params);
-            } else if constexpr (std::is_same_v<T, SetEffects> || std::is_same_v<T, Effects>) {
-                w.effects(m.effects);
-            } else if constexpr (std::is_same_v<T, Vibrate>) {
-                w.f32(m.amplitude);
-                w.f32(m.frequency);
-                w.f32(m.duration);
-            } else if constexpr (std::is_same_v<T, SetStream>) {
-                w.u16(m.rateHz);
-            } else if constexpr (std::is_same_v<T, SetFeedback>) {
-                w.f32(m.tauExt);
-            } else if constexpr (std::is_same_v<T, Ping> || std::is_same_v<T, Pong>) {
-                w.u32(m.token);
-            } else if constexpr (std::is_same_v<T, HelloReply>) {
-                w.u8(m.protocolVersion);
-                w.u8(m.capabilities);
-                w.u16(m.maxStreamHz);
-                w.u32(m.deviceId);
-                w.f32(m.tauLimit);
-                w.text(m.firmware.view(), kFirmwareBytes);
-            } else if constexpr (std::is_same_v<T, Ack>) {
-                w.u8(m.ackedSeq);
-                w.u8(static_cast<std::uint8_t>(m.status));
-                w.u8(m.field);
-                w.u8(0); // reserved
-            } else if constexpr (std::is_same_v<T, Telemetry>) {
-                w.u32(m.t_us);
-                w.f32(m.theta);
-                w.f32(m.omega);
-                w.f32(m.tau);
-                w.f32(m.tau_rec);
-                w.f32(m.tau_ext);
-                w.u8(m.flags);
-                if (m.tau_fx)
-                    w.f32(*m.tau_fx);
-            } else if constexpr (std::is_same_v<T, Log>) {
-                if (m.text.empty())
-                    return false; // a LOG carries 1…240 bytes
-                w.text(m.text.view(), 0);
-            } else if constexpr (std::is_same_v<T, Refused>) {
-                return false;
-            }
-            // Hello, GetParams, SaveParams, Zero: no payload.
-            return true;
-        },
-        message);
+    if constexpr (std::is_same_v<T, SetParams> || std::is_same_v<T, Params>)
+        return std::ptrdiff_t(kParamBlockBytes);
+    else if constexpr (std::is_same_v<T, SetEffects> || std::is_same_v<T, Effects>)
+        return std::ptrdiff_t(kEffectBlockBytes);
+    else if constexpr (std::is_same_v<T, Vibrate>)
+        return std::ptrdiff_t(kVibrateBytes);
+    else if constexpr (std::is_same_v<T, SetStream>)
+        return 2;
+    else if constexpr (std::is_same_v<T, SetFeedback> || std::is_same_v<T, Ping> ||
+                       std::is_same_v<T, Pong>)
+        return 4;
+    else if constexpr (std::is_same_v<T, HelloReply>)
+        return std::ptrdiff_t(kHelloReplyBytes);
+    else if constexpr (std::is_same_v<T, Ack>)
+        return std::ptrdiff_t(kAckBytes);
+    else if constexpr (std::is_same_v<T, Telemetry>)
+        return std::ptrdiff_t(m.tau_fx ? kTelemetryFxBytes : kTelemetryBytes);
+    else if constexpr (std::is_same_v<T, Log>)
+        return m.text.empty() ? -1 : std::ptrdiff_t(m.text.size()); // a LOG carries 1…240 bytes
+    else
+        return 0; // Hello, GetParams, SaveParams, Zero, GetEffects: no payload
+}
+
+//! Writes the payload of `m` (payloadSize(m) bytes).
+template<typename T> void writePayload(const T &m, Writer &w)
+{
+    if constexpr (std::is_same_v<T, SetParams> || std::is_same_v<T, Params>) {
+        w.params(m.params);
+    } else if constexpr (std::is_same_v<T, SetEffects> || std::is_same_v<T, Effects>) {
+        w.effects(m.effects);
+    } else if constexpr (std::is_same_v<T, Vibrate>) {
+        w.f32(m.amplitude);
+        w.f32(m.frequency);
+        w.f32(m.duration);
+    } else if constexpr (std::is_same_v<T, SetStream>) {
+        w.u16(m.rateHz);
+    } else if constexpr (std::is_same_v<T, SetFeedback>) {
+        w.f32(m.tauExt);
+    } else if constexpr (std::is_same_v<T, Ping> || std::is_same_v<T, Pong>) {
+        w.u32(m.token);
+    } else if constexpr (std::is_same_v<T, HelloReply>) {
+        w.u8(m.protocolVersion);
+        w.u8(m.capabilities);
+        w.u16(m.maxStreamHz);
+        w.u32(m.deviceId);
+        w.f32(m.tauLimit);
+        w.text(m.firmware.view(), kFirmwareBytes);
+    } else if constexpr (std::is_same_v<T, Ack>) {
+        w.u8(m.ackedSeq);
+        w.u8(static_cast<std::uint8_t>(m.status));
+        w.u8(m.field);
+        w.u8(0); // reserved
+    } else if constexpr (std::is_same_v<T, Telemetry>) {
+        w.u32(m.t_us);
+        w.f32(m.theta);
+        w.f32(m.omega);
+        w.f32(m.tau);
+        w.f32(m.tau_rec);
+        w.f32(m.tau_ext);
+        w.u8(m.flags);
+        if (m.tau_fx)
+            w.f32(*m.tau_fx);
+    } else if constexpr (std::is_same_v<T, Log>) {
+        w.text(m.text.view(), 0);
+    }
+}
+
+//! Completes a frame whose packet body (`type | seq | payload`, `body` bytes) sits at out[1…]:
+//! appends the CRC, stuffs the packet in place (it fits one COBS block) and the delimiter.
+std::size_t finishFrame(std::span<std::uint8_t> out, std::size_t body)
+{
+    static_assert(kPacketOverhead + kMaxPayload <= kCobsBlockBytes);
+    const std::uint16_t crc = crc16(out.subspan(1, body));
+    out[1 + body] = static_cast<std::uint8_t>(crc);
+    out[2 + body] = static_cast<std::uint8_t>(crc >> 8);
+    const std::size_t n = cobsEncodeInPlace(out.first(body + 3));
+    out[n] = 0;
+    return n + 1;
+}
+
+template<typename T>
+std::size_t encodeMessage(std::uint8_t seq, const T &m, std::span<std::uint8_t> out)
+{
+    if constexpr (std::is_same_v<T, Refused>) {
+        return 0; // what a receiver made of a frame, not a message to send
+    } else {
+        const std::ptrdiff_t payload = payloadSize(m);
+        if (payload < 0)
+            return 0;
+        const std::size_t body = 2 + std::size_t(payload);
+        if (out.size() < body + 4) // code byte, body, CRC, delimiter
+            return 0;
+        out[1] = static_cast<std::uint8_t>(messageTypeOf<T>());
+        out[2] = seq;
+        Writer w(out.data() + 3);
+        writePayload(m, w);
+        return finishFrame(out, body);
+    }
 }
 
 //! Payload length a known type must have: >= 0 fixed, -1 unknown for this direction,
@@ -203,42 +263,53 @@ int expectedLength(std::uint8_t type, Direction direction)
     }
 }
 
-//! Payload of a known type with the right length → typed message.
-Message decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload)
+//! Payload of a known type with the right length → typed message in `out`, built in place.
+void decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload, Message &out)
 {
     Reader r(payload);
     switch (static_cast<MessageType>(type)) {
     case MessageType::Hello:
-        return Hello{};
+        out.emplace<Hello>();
+        return;
     case MessageType::GetParams:
-        return GetParams{};
+        out.emplace<GetParams>();
+        return;
     case MessageType::SetParams:
-        return SetParams{r.params()};
+        out.emplace<SetParams>(SetParams{r.params()});
+        return;
     case MessageType::SetStream:
-        return SetStream{r.u16()};
+        out.emplace<SetStream>(SetStream{r.u16()});
+        return;
     case MessageType::SetFeedback:
-        return SetFeedback{r.f32()};
+        out.emplace<SetFeedback>(SetFeedback{r.f32()});
+        return;
     case MessageType::SaveParams:
-        return SaveParams{};
+        out.emplace<SaveParams>();
+        return;
     case MessageType::Ping:
-        return Ping{r.u32()};
+        out.emplace<Ping>(Ping{r.u32()});
+        return;
     case MessageType::Zero:
-        return Zero{};
+        out.emplace<Zero>();
+        return;
     case MessageType::SetEffects:
-        return SetEffects{r.effects()};
+        out.emplace<SetEffects>(SetEffects{r.effects()});
+        return;
     case MessageType::GetEffects:
-        return GetEffects{};
+        out.emplace<GetEffects>();
+        return;
     case MessageType::Vibrate: {
-        Vibrate m;
+        Vibrate &m = out.emplace<Vibrate>();
         m.amplitude = r.f32();
         m.frequency = r.f32();
         m.duration = r.f32();
-        return m;
+        return;
     }
     case MessageType::Effects:
-        return Effects{r.effects()};
+        out.emplace<Effects>(Effects{r.effects()});
+        return;
     case MessageType::HelloReply: {
-        HelloReply m;
+        HelloReply &m = out.emplace<HelloReply>();
         m.protocolVersion = r.u8();
         m.capabilities = r.u8();
         m.maxStreamHz = r.u16();
@@ -247,21 +318,23 @@ Message decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload)
         std::string_view firmware = textOf(r.bytes(kFirmwareBytes));
         firmware = firmware.substr(0, firmware.find('\0'));
         m.firmware.assign(firmware);
-        return m;
+        return;
     }
     case MessageType::Params:
-        return Params{r.params()};
+        out.emplace<Params>(Params{r.params()});
+        return;
     case MessageType::Ack: {
-        Ack m;
+        Ack &m = out.emplace<Ack>();
         m.ackedSeq = r.u8();
         m.status = static_cast<AckStatus>(r.u8());
         m.field = r.u8();
-        return m; // reserved byte ignored
+        return; // reserved byte ignored
     }
     case MessageType::Pong:
-        return Pong{r.u32()};
+        out.emplace<Pong>(Pong{r.u32()});
+        return;
     case MessageType::Telemetry: {
-        Telemetry m;
+        Telemetry &m = out.emplace<Telemetry>();
         m.t_us = r.u32();
         m.theta = r.f32();
         m.omega = r.f32();
@@ -271,15 +344,13 @@ Message decodePayload(std::uint8_t type, std::span<const std::uint8_t> payload)
         m.flags = r.u8();
         if (r.remaining() >= 4)
             m.tau_fx = r.f32();
-        return m; // anything after τ_fx is for newer hosts
+        return; // anything after τ_fx is for newer hosts
     }
-    case MessageType::Log: {
-        Log m;
-        m.text.assign(textOf(payload));
-        return m;
+    case MessageType::Log:
+        out.emplace<Log>().text.assign(textOf(payload));
+        return;
     }
-    }
-    return Refused{type, AckStatus::UnknownType}; // not reached: callers check the type first
+    out = Refused{type, AckStatus::UnknownType}; // not reached: callers check the type first
 }
 
 } // namespace
@@ -289,17 +360,24 @@ std::size_t encodePacket(std::uint8_t type, std::uint8_t seq, std::span<const st
 {
     if (payload.size() > kMaxRawPayload)
         return 0;
+    const std::size_t body = 2 + payload.size();
+    const std::size_t length = body + 2;
+    if (out.size() < cobsMaxEncodedSize(length) + 1)
+        return 0;
+    if (length <= kCobsBlockBytes) {
+        out[1] = type;
+        out[2] = seq;
+        std::copy(payload.begin(), payload.end(), out.begin() + 3);
+        return finishFrame(out, body);
+    }
+    // Longer than any valid frame (tests build them): more than one COBS block.
     std::array<std::uint8_t, kPacketOverhead + kMaxRawPayload> packet;
     packet[0] = type;
     packet[1] = seq;
     std::copy(payload.begin(), payload.end(), packet.begin() + 2);
-    const std::size_t body = 2 + payload.size();
     const std::uint16_t crc = crc16({packet.data(), body});
     packet[body] = static_cast<std::uint8_t>(crc);
     packet[body + 1] = static_cast<std::uint8_t>(crc >> 8);
-    const std::size_t length = body + 2;
-    if (out.size() < cobsMaxEncodedSize(length) + 1)
-        return 0;
     const std::size_t n = cobsEncode({packet.data(), length}, out);
     out[n] = 0;
     return n + 1;
@@ -307,10 +385,7 @@ std::size_t encodePacket(std::uint8_t type, std::uint8_t seq, std::span<const st
 
 std::size_t encodeFrame(std::uint8_t seq, const Message &message, std::span<std::uint8_t> out)
 {
-    Writer w;
-    if (!encodePayload(message, w))
-        return 0;
-    return encodePacket(messageType(message), seq, w.bytes(), out);
+    return std::visit([&](const auto &m) { return encodeMessage(seq, m, out); }, message);
 }
 
 std::string_view dropReasonText(DropReason reason)
@@ -346,7 +421,7 @@ void WireDecoder::append(std::span<const std::uint8_t> part)
         return;
     if (m_size + part.size() > kMaxFrameBytes) {
         // Too long for any frame: drop what we hold and skip to the next delimiter.
-        ++m_stats.drops[static_cast<std::size_t>(DropReason::Overflow)];
+        overflow();
         m_size = 0;
         m_overflowing = true;
         return;
@@ -355,16 +430,20 @@ void WireDecoder::append(std::span<const std::uint8_t> part)
     m_size += part.size();
 }
 
-bool WireDecoder::finishFrame(Frame &out)
+void WireDecoder::overflow()
 {
-    const std::span<std::uint8_t> held{m_buffer.data(), m_size};
-    m_size = 0;
+    ++m_stats.drops[static_cast<std::size_t>(DropReason::Overflow)];
+}
+
+bool WireDecoder::decodeBody(std::span<const std::uint8_t> encoded, Frame &out)
+{
     const auto drop = [this](DropReason reason) {
         ++m_stats.drops[static_cast<std::size_t>(reason)];
         return false;
     };
-    // In place: the decoded packet is never longer than its encoding.
-    const std::optional<std::size_t> decoded = cobsDecode(held, held);
+    // Into m_buffer: from the caller's bytes, or in place when the body is m_buffer (the
+    // decoded packet is never longer than its encoding).
+    const std::optional<std::size_t> decoded = cobsDecodeBody(encoded, m_buffer);
     if (!decoded)
         return drop(DropReason::Cobs);
     const std::size_t length = *decoded;
@@ -397,7 +476,7 @@ bool WireDecoder::finishFrame(Frame &out)
         return true;
     }
     ++m_stats.frames;
-    out.message = decodePayload(type, payload);
+    decodePayload(type, payload, out.message);
     return true;
 }
 

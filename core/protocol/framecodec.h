@@ -101,19 +101,30 @@ public:
     {
         m_stats.bytes += bytes.size();
         while (!bytes.empty()) {
-            const void *zero = std::memchr(bytes.data(), 0, bytes.size());
-            const std::size_t part =
-                zero ? static_cast<std::size_t>(static_cast<const std::uint8_t *>(zero) -
-                                                bytes.data())
-                     : bytes.size();
-            append(bytes.first(part));
-            if (!zero)
+            const auto *zero =
+                static_cast<const std::uint8_t *>(std::memchr(bytes.data(), 0, bytes.size()));
+            if (!zero) {
+                append(bytes);
                 return;
-            if (m_overflowing) {
-                m_overflowing = false; // resynchronised
-            } else if (m_size > 0) {
+            }
+            const auto part = static_cast<std::size_t>(zero - bytes.data());
+            if (m_size > 0 || m_overflowing) {
+                append(bytes.first(part)); // completes the frame held, or overflows
+                if (m_overflowing) {
+                    m_overflowing = false; // resynchronised
+                } else {
+                    const std::size_t held = m_size;
+                    m_size = 0;
+                    Frame frame;
+                    if (decodeBody({m_buffer.data(), held}, frame))
+                        onFrame(static_cast<const Frame &>(frame));
+                }
+            } else if (part > kMaxFrameBytes) {
+                overflow(); // a run too long for any frame, ended by this delimiter
+            } else if (part > 0) {
+                // The whole frame is in `bytes`: decoded from there, never copied first.
                 Frame frame;
-                if (finishFrame(frame))
+                if (decodeBody(bytes.first(part), frame))
                     onFrame(static_cast<const Frame &>(frame));
             }
             // else: an empty frame (two delimiters in a row) — skipped, not a drop.
@@ -134,8 +145,10 @@ public:
 
 private:
     void append(std::span<const std::uint8_t> part);
-    //! Decodes the buffered frame (and empties the buffer); false when it was dropped.
-    bool finishFrame(Frame &out);
+    void overflow(); //!< counts a run too long for any frame
+    //! Decodes one frame body (the bytes between two delimiters: no 0x00, at most
+    //! kMaxFrameBytes; may be m_buffer itself); false when it was dropped.
+    bool decodeBody(std::span<const std::uint8_t> encoded, Frame &out);
 
     Direction m_direction;
     std::array<std::uint8_t, kMaxFrameBytes> m_buffer{};

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 
 namespace hatpic::v2 {
@@ -233,6 +234,49 @@ struct Refused
 using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback, SaveParams, Ping,
                              Zero, SetEffects, GetEffects, Vibrate, HelloReply, Params, Effects,
                              Ack, Pong, Telemetry, Log, Refused>;
+
+//! The wire type of each message type (Refused has none of its own: messageType() below).
+template<typename T> constexpr MessageType messageTypeOf()
+{
+    if constexpr (std::is_same_v<T, Hello>)
+        return MessageType::Hello;
+    else if constexpr (std::is_same_v<T, GetParams>)
+        return MessageType::GetParams;
+    else if constexpr (std::is_same_v<T, SetParams>)
+        return MessageType::SetParams;
+    else if constexpr (std::is_same_v<T, SetStream>)
+        return MessageType::SetStream;
+    else if constexpr (std::is_same_v<T, SetFeedback>)
+        return MessageType::SetFeedback;
+    else if constexpr (std::is_same_v<T, SaveParams>)
+        return MessageType::SaveParams;
+    else if constexpr (std::is_same_v<T, Ping>)
+        return MessageType::Ping;
+    else if constexpr (std::is_same_v<T, Zero>)
+        return MessageType::Zero;
+    else if constexpr (std::is_same_v<T, SetEffects>)
+        return MessageType::SetEffects;
+    else if constexpr (std::is_same_v<T, GetEffects>)
+        return MessageType::GetEffects;
+    else if constexpr (std::is_same_v<T, Vibrate>)
+        return MessageType::Vibrate;
+    else if constexpr (std::is_same_v<T, Effects>)
+        return MessageType::Effects;
+    else if constexpr (std::is_same_v<T, HelloReply>)
+        return MessageType::HelloReply;
+    else if constexpr (std::is_same_v<T, Params>)
+        return MessageType::Params;
+    else if constexpr (std::is_same_v<T, Ack>)
+        return MessageType::Ack;
+    else if constexpr (std::is_same_v<T, Pong>)
+        return MessageType::Pong;
+    else if constexpr (std::is_same_v<T, Telemetry>)
+        return MessageType::Telemetry;
+    else {
+        static_assert(std::is_same_v<T, Log>, "every message type needs a wire type");
+        return MessageType::Log;
+    }
+}
 
 //! The wire type of a message (Refused gives its original type).
 std::uint8_t messageType(const Message &message);

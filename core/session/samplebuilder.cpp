@@ -1,6 +1,5 @@
 #include "samplebuilder.h"
 
-#include "model/stiffness.h"
 #include "protocol/messages.h"
 
 #include <algorithm>
@@ -45,7 +44,7 @@ void SampleBuilder::addReference(Sample &sample)
 {
     // The reference integrates over device deltas within a connection and holds (counting a
     // gap) wherever t_s did not follow the device clock.
-    const auto out = m_reference.update(m_referenceUs, m_host, m_device, sample.theta);
+    const auto out = m_reference.update(m_referenceUs, m_referenceShape, sample.theta);
     sample.v_ref = out.v_ref;
     sample.p_ref = out.p_ref;
     if (out.gap)
@@ -80,11 +79,11 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     s.theta = conversion.ticksToRad(frame.a);
     s.omega = std::numeric_limits<double>::quiet_NaN();
     s.tau = std::numeric_limits<double>::quiet_NaN();
-    s.tau_rec = recenteringTorque(m_device, s.theta);
+    s.tau_rec = recenteringTorque(m_stiffness, s.theta);
     s.tau_ext = tauExt;
     const double total = s.tau_rec + s.tau_ext;
     s.tau_total = std::clamp(total, -m_tauLimit, m_tauLimit);
-    quint16 flags = kFlagModelEstimated | v2::zoneFlag(stiffnessZone(m_device, s.theta));
+    quint16 flags = kFlagModelEstimated | v2::zoneFlag(stiffnessZone(m_stiffness, s.theta));
     if (std::abs(total) > m_tauLimit)
         flags |= v2::kFlagSaturated;
     s.flags = flags;

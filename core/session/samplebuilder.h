@@ -5,6 +5,7 @@
 
 #include "model/params.h"
 #include "model/reference.h"
+#include "model/stiffness.h"
 #include "protocol/legacy.h"
 #include "protocol/messages.h"
 #include "telemetry/sample.h"
@@ -21,9 +22,18 @@ public:
 
     //! The device's parameters as the host believes them in force (θ0, Q_dz of the reference;
     //! the whole model for legacy estimation).
-    void setDeviceParams(const DeviceParams &params) { m_device = params; }
+    void setDeviceParams(const DeviceParams &params)
+    {
+        m_device = params;
+        m_stiffness = StiffnessShape<double>::from(params);
+        m_referenceShape = ReferenceShape::from(m_host, m_device);
+    }
     const DeviceParams &deviceParams() const { return m_device; }
-    void setHostParams(const HostParams &host) { m_host = host; }
+    void setHostParams(const HostParams &host)
+    {
+        m_host = host;
+        m_referenceShape = ReferenceShape::from(m_host, m_device);
+    }
     const HostParams &hostParams() const { return m_host; }
     //! Torque limit τ_total is clamped to [N·m].
     void setTauLimit(double tauLimit) { m_tauLimit = tauLimit; }
@@ -54,6 +64,9 @@ private:
 
     DeviceParams m_device;
     HostParams m_host;
+    // What a sample needs of the parameters, taken once per change.
+    StiffnessShape<double> m_stiffness = StiffnessShape<double>::from(m_device);
+    ReferenceShape m_referenceShape = ReferenceShape::from(m_host, m_device);
     double m_tauLimit = 0.44;
     ReferenceGenerator m_reference;
     bool m_started = false;

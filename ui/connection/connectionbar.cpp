@@ -181,6 +181,14 @@ void ConnectionBar::setState(SessionState state)
     m_port->setEnabled(idle);
     m_baud->setEnabled(idle);
     m_protocol->setEnabled(idle);
+    // The list is locked while a session runs: reading every tty in /sys each 1.5 s then was
+    // a few percent of the tuner's CPU for nothing.
+    if (idle && !m_refresh->isActive()) {
+        refreshPorts();
+        m_refresh->start();
+    } else if (!idle) {
+        m_refresh->stop();
+    }
 }
 
 void ConnectionBar::toggleConnection()

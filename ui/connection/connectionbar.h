@@ -16,7 +16,7 @@ class ConnectionBar : public QWidget
 {
     Q_OBJECT
 public:
-    static constexpr int kRefreshMs = 1500; //!< port list refresh period [ms]
+    static constexpr int kRefreshMs = 1500; //!< port list refresh period while disconnected [ms]
 
     explicit ConnectionBar(QWidget *parent = nullptr);
 
@@ -29,10 +29,11 @@ public:
     qint32 baud() const; //!< 0 = the protocol's default
     ProtocolChoice protocol() const;
 
-    //! Follows the session: the button says Connect or Disconnect, the choosers lock.
+    //! Follows the session: the button says Connect or Disconnect, the choosers lock, and the
+    //! port list is refreshed only while disconnected (at once when the session ends).
     void setState(SessionState state);
 
-    //! Re-reads the serial ports now (the timer does it every kRefreshMs).
+    //! Re-reads the serial ports now (the timer does it every kRefreshMs while disconnected).
     void refreshPorts();
     QStringList listedPorts() const; //!< "sim" first, then device paths
 

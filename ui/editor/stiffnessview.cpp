@@ -87,6 +87,11 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_limitLow = straightLine(m_plot, m_torqueRect, limitPen);
     m_cursor = straightLine(m_plot, m_stiffnessRect, QPen(kPointColour, 1.0, Qt::DotLine));
     m_cursor->setVisible(false);
+    // The live point moves with every batch of samples; on a buffered layer of its own it is
+    // redrawn alone, over the curves, axes and legend drawn before.
+    m_plot->layer(u"overlay"_s)->setMode(QCPLayer::lmBuffered);
+    m_point->setLayer(u"overlay"_s);
+    m_cursor->setLayer(u"overlay"_s);
 
     const QColor shades[] = {QColor(0x15, 0x65, 0xc0, 22), QColor(0x60, 0x60, 0x60, 40)};
     for (int i = 0; i < 4; ++i) {
@@ -110,7 +115,13 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_replotTimer = new QTimer(this);
     m_replotTimer->setSingleShot(true);
     m_replotTimer->setInterval(kRepaintIntervalMs);
-    connect(m_replotTimer, &QTimer::timeout, this, [this] { m_plot->replot(); });
+    connect(m_replotTimer, &QTimer::timeout, this, [this] {
+        if (m_fullReplot)
+            m_plot->replot();
+        else
+            m_plot->layer(u"overlay"_s)->replot(); // a full replot if the buffers are stale
+        m_fullReplot = false;
+    });
 
     m_plot->setToolTip(tr("Solid: the edited parameters. Dashed: the device's. Shaded: dead zone "
                           "(grey) and notch band (blue). Dotted red: ±tau_limit. The dot is the "
@@ -190,14 +201,14 @@ void StiffnessView::setOperatingPoint(double theta, double tauRec)
 {
     m_operatingPoint = std::make_pair(theta, tauRec);
     updateOperatingPoint();
-    requestReplot();
+    requestReplot(true);
 }
 
 void StiffnessView::clearOperatingPoint()
 {
     m_operatingPoint.reset();
     updateOperatingPoint();
-    requestReplot();
+    requestReplot(true);
 }
 
 void StiffnessView::setAngleInDegrees(bool degrees)
@@ -307,6 +318,11 @@ void StiffnessView::updateOperatingPoint()
     if (!m_operatingPoint) {
         m_point->data()->clear();
         m_cursor->setVisible(false);
+        // The live point moves with every batch of samples; on a buffered layer of its own it is
+        // redrawn alone, over the curves, axes and legend drawn before.
+        m_plot->layer(u"overlay"_s)->setMode(QCPLayer::lmBuffered);
+        m_point->setLayer(u"overlay"_s);
+        m_cursor->setLayer(u"overlay"_s);
         return;
     }
     const double x = m_operatingPoint->first * scale();
@@ -316,8 +332,10 @@ void StiffnessView::updateOperatingPoint()
     m_cursor->setVisible(true);
 }
 
-void StiffnessView::requestReplot()
+void StiffnessView::requestReplot(bool pointOnly)
 {
+    if (!pointOnly)
+        m_fullReplot = true;
     if (!m_replotTimer->isActive())
         m_replotTimer->start();
 }

@@ -63,7 +63,9 @@ private:
                     double center, double halfWidth);
     void updateShading();
     void updateOperatingPoint();
-    void requestReplot();
+    //! Replots within kRepaintIntervalMs: everything, or (`pointOnly`) just the live point's
+    //! layer when nothing else changed since the last replot.
+    void requestReplot(bool pointOnly = false);
     double scale() const;
 
     DeviceParams m_edited;
@@ -85,6 +87,7 @@ private:
     QCPItemStraightLine *m_limitLow = nullptr;
     QCPItemRect *m_shades[4] = {}; //!< notch and dead zone, in each of the two plots
     QTimer *m_replotTimer = nullptr;
+    bool m_fullReplot = true; //!< something besides the live point changed
 };
 
 } // namespace hatpic

@@ -11,47 +11,124 @@ namespace hatpic {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
-//! Min and max of one pixel column, with the times they occurred.
-struct Bucket
+//! Smallest and largest finite value seen.
+struct Range
 {
-    int index = -1;
-    double firstT = 0;
-    double minT = 0, minV = 0;
-    double maxT = 0, maxV = 0;
-    bool hasValue = false;
-    bool hasSample = false;
-
-    void reset(int i)
+    double lo = kInf;
+    double hi = -kInf;
+    void note(double v)
     {
-        index = i;
-        hasValue = false;
-        hasSample = false;
-    }
-    void add(double t, double v)
-    {
-        if (!hasSample) {
-            firstT = t;
-            hasSample = true;
-        }
-        if (std::isnan(v))
-            return;
-        if (!hasValue) {
-            minT = maxT = t;
-            minV = maxV = v;
-            hasValue = true;
-            return;
-        }
-        if (v < minV) {
-            minV = v;
-            minT = t;
-        }
-        if (v > maxV) {
-            maxV = v;
-            maxT = t;
+        if (std::isfinite(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
         }
     }
 };
+
+//! One pixel column's bucket: the min and max of its samples, with their times.
+struct Bucket
+{
+    int column = -1;     //!< −1: none open
+    qsizetype start = 0; //!< index of the first sample
+    double firstT = 0;   //!< [s]
+    double minT = 0, minV = 0;
+    double maxT = 0, maxV = 0;
+    bool hasValue = false; //!< min and max are set (not every sample was NaN)
+};
+
+//! The min/max pass over the samples [first, last) inside [t0, t1], one pixel column after
+//! another; `prevT` and `hasPrev` describe the sample before (the line's last point so far) and
+//! come back describing the last one. Written for the 60 000 samples of a full window: the
+//! samples are read run by run from the buffer's columns, the state stays in registers, the
+//! column index is computed only near a column's edge, and the range of values is taken from
+//! each bucket's extremes instead of from every sample.
+void scanColumns(const SampleBuffer &buffer, Channel channel, qsizetype first, qsizetype last,
+                 double t0, double t1, int pixels, double gap, double scale,
+                 QVector<QCPGraphData> &out, Range &range, double &prevT, bool &hasPrev)
+{
+    const double width = (t1 - t0) / pixels;
+    // Below `edge` a sample is certainly in the open column: the margin is far above the
+    // rounding of t − t0 and of the edge itself, so every sample at or past it gets the very
+    // column int((t − t0) / width) gives.
+    const double margin = width * 1e-6 + (std::abs(t0) + std::abs(t1)) * 1e-13;
+    Bucket b;
+    double edge = -kInf;
+    // Draws the open bucket (ending before index `end`): its min and max in time order (one
+    // point when they coincide), or a NaN point when all its samples are NaN.
+    auto flush = [&](qsizetype end) {
+        if (b.column < 0)
+            return;
+        b.column = -1;
+        if (!b.hasValue) {
+            out.append(QCPGraphData(b.firstT, kNaN));
+            return;
+        }
+        if (b.minT == b.maxT) {
+            out.append(QCPGraphData(b.minT, b.minV));
+        } else if (b.minT < b.maxT) {
+            out.append(QCPGraphData(b.minT, b.minV));
+            out.append(QCPGraphData(b.maxT, b.maxV));
+        } else {
+            out.append(QCPGraphData(b.maxT, b.maxV));
+            out.append(QCPGraphData(b.minT, b.minV));
+        }
+        if (std::isfinite(b.minV) && std::isfinite(b.maxV)) {
+            range.note(b.minV); // every other value of the bucket lies between them
+            range.note(b.maxV);
+        } else {
+            for (qsizetype i = b.start; i < end; ++i) // ±Inf: the finite ones, one by one
+                range.note(buffer.value(channel, i) * scale);
+        }
+    };
+
+    const double *times = buffer.timeSlots();
+    const double *values = buffer.valueSlots(channel);
+    for (const SampleBuffer::Run &run : buffer.runs(first, last)) {
+        const double *tRun = times + run.slot;
+        const double *vRun = values + run.slot;
+        for (qsizetype k = 0; k < run.count; ++k) {
+            const double t = tRun[k];
+            const double v = vRun[k] * scale;
+            if (hasPrev && t - prevT > gap) {
+                flush(run.index + k); // a gap closes the bucket and breaks the line
+                out.append(QCPGraphData((prevT + t) / 2, kNaN));
+                edge = -kInf;
+            }
+            prevT = t;
+            hasPrev = true;
+            if (!(t < edge)) {
+                const int column = std::clamp(static_cast<int>((t - t0) / width), 0, pixels - 1);
+                if (column != b.column) {
+                    flush(run.index + k);
+                    b.column = column;
+                    b.start = run.index + k;
+                    b.firstT = t;
+                    b.hasValue = false;
+                }
+                edge = column + 1 < pixels ? t0 + (column + 1) * width - margin : kInf;
+            }
+            if (std::isnan(v))
+                continue;
+            if (!b.hasValue) {
+                b.hasValue = true;
+                b.minT = b.maxT = t;
+                b.minV = b.maxV = v;
+                continue;
+            }
+            if (v < b.minV) {
+                b.minV = v;
+                b.minT = t;
+            }
+            if (v > b.maxV) {
+                b.maxV = v;
+                b.maxT = t;
+            }
+        }
+    }
+    flush(last);
+}
 
 } // namespace
 
@@ -78,22 +155,12 @@ DecimationResult Decimator::run(const SampleBuffer &buffer, Channel channel, dou
     result.decimated = result.rawCount > 2 * qsizetype(m_pixels);
     out.reserve(result.decimated ? 2 * m_pixels + 16 : (to - from) + 16);
 
-    double lo = std::numeric_limits<double>::infinity();
-    double hi = -lo;
-    auto note = [&](double v) {
-        if (std::isfinite(v)) {
-            lo = std::min(lo, v);
-            hi = std::max(hi, v);
-        }
-    };
-
+    Range range;
     double prevT = 0;
     bool hasPrev = false;
     auto gapBefore = [&](double t) {
-        const bool isGap = hasPrev && t - prevT > m_gap;
-        if (isGap)
+        if (hasPrev && t - prevT > m_gap)
             out.append(QCPGraphData((prevT + t) / 2, kNaN));
-        return isGap;
     };
 
     if (!result.decimated) {
@@ -103,53 +170,18 @@ DecimationResult Decimator::run(const SampleBuffer &buffer, Channel channel, dou
             gapBefore(t);
             out.append(QCPGraphData(t, v));
             if (i >= first && i < last)
-                note(v);
+                range.note(v);
             prevT = t;
             hasPrev = true;
         }
     } else {
-        const double width = (t1 - t0) / m_pixels;
-        Bucket bucket;
-        auto flush = [&] {
-            if (bucket.index < 0 || !bucket.hasSample)
-                return;
-            if (!bucket.hasValue) {
-                out.append(QCPGraphData(bucket.firstT, kNaN));
-            } else if (bucket.minT == bucket.maxT) {
-                out.append(QCPGraphData(bucket.minT, bucket.minV));
-            } else if (bucket.minT < bucket.maxT) {
-                out.append(QCPGraphData(bucket.minT, bucket.minV));
-                out.append(QCPGraphData(bucket.maxT, bucket.maxV));
-            } else {
-                out.append(QCPGraphData(bucket.maxT, bucket.maxV));
-                out.append(QCPGraphData(bucket.minT, bucket.minV));
-            }
-            bucket.reset(-1);
-        };
-
-        if (from < first) {
+        if (from < first) { // the neighbour before the range, so the line reaches the edge
             prevT = buffer.time(from);
             out.append(QCPGraphData(prevT, buffer.value(channel, from) * scale));
             hasPrev = true;
         }
-        for (qsizetype i = first; i < last; ++i) {
-            const double t = buffer.time(i);
-            const double v = buffer.value(channel, i) * scale;
-            if (hasPrev && t - prevT > m_gap) {
-                flush();
-                gapBefore(t);
-            }
-            const int column = std::clamp(static_cast<int>((t - t0) / width), 0, m_pixels - 1);
-            if (column != bucket.index) {
-                flush();
-                bucket.reset(column);
-            }
-            bucket.add(t, v);
-            note(v);
-            prevT = t;
-            hasPrev = true;
-        }
-        flush();
+        scanColumns(buffer, channel, first, last, t0, t1, m_pixels, m_gap, scale, out, range, prevT,
+                    hasPrev);
         if (last < to) {
             const double t = buffer.time(last);
             gapBefore(t);
@@ -157,9 +189,9 @@ DecimationResult Decimator::run(const SampleBuffer &buffer, Channel channel, dou
         }
     }
 
-    if (lo <= hi) {
-        result.min = lo;
-        result.max = hi;
+    if (range.lo <= range.hi) {
+        result.min = range.lo;
+        result.max = range.hi;
         result.hasValues = true;
     }
     return result;

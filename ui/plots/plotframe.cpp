@@ -129,7 +129,9 @@ void PlotFrame::addGraph(Channel channel, PlotKind plot, const QColor &color, bo
     QCPAxis *y = r->axis(rightAxis ? QCPAxis::atRight : QCPAxis::atLeft);
     auto *g = new QCPGraph(r->axis(QCPAxis::atBottom), y);
     g->setName(channelLabel(channel));
-    g->setPen(QPen(color, 1.4));
+    // 1 px: Qt draws it with its fast cosmetic stroker; a wider pen is outlined and filled
+    // as a polygon, which doubled the cost of a frame (docs/performance.md).
+    g->setPen(QPen(color, 1.0));
     g->setAdaptiveSampling(false); // the Decimator already reduced the data to the pixels
     g->removeFromLegend();
     g->addToLegend(legend(plot));

@@ -20,6 +20,9 @@ const QColor PlotOverlays::kNotchColor(255, 152, 0, 55);
 PlotOverlays::PlotOverlays(QCustomPlot *plot, const std::array<QCPAxisRect *, kPlotCount> &rects)
     : m_plot(plot), m_rects(rects)
 {
+    // The cursor is redrawn with everything else, so its layer needs no paint buffer of its
+    // own: one buffer fewer to clear at each replot and to blend at each paint.
+    m_plot->layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmLogical);
     m_plot->addLayer(QStringLiteral("bands"), m_plot->layer(QStringLiteral("grid")),
                      QCustomPlot::limBelow);
 

@@ -75,6 +75,23 @@ Sample SampleBuffer::sample(qsizetype index) const
     return s;
 }
 
+std::array<SampleBuffer::Run, 2> SampleBuffer::runs(qsizetype first, qsizetype last) const
+{
+    std::array<Run, 2> out{};
+    if (last <= first)
+        return out;
+    const qsizetype start = slot(first);
+    const qsizetype count = last - first;
+    const qsizetype untilEnd = m_capacity - start;
+    if (count <= untilEnd) {
+        out[0] = {first, start, count};
+    } else {
+        out[0] = {first, start, untilEnd};
+        out[1] = {first + untilEnd, 0, count - untilEnd};
+    }
+    return out;
+}
+
 double SampleBuffer::firstTime() const
 {
     return m_size > 0 ? time(0) : 0.0;

@@ -46,6 +46,24 @@ public:
     qsizetype upperBound(double t) const; //!< first index with time > t; size() if none
     qsizetype nearest(double t) const;    //!< index closest in time to t; −1 when empty
 
+    //! A stretch of indices whose slots are contiguous: the samples at indices
+    //! [index, index + count) sit in the slots [slot, slot + count) of timeSlots() and
+    //! valueSlots().
+    struct Run
+    {
+        qsizetype index = 0;
+        qsizetype slot = 0;
+        qsizetype count = 0;
+    };
+    //! The indices [first, last) as at most two runs (the second is empty unless they wrap
+    //! around the ring), for loops that read many samples in order. Indices are not checked.
+    std::array<Run, 2> runs(qsizetype first, qsizetype last) const;
+    const double *timeSlots() const { return m_time.data(); } //!< [s], by slot
+    const double *valueSlots(Channel channel) const           //!< SI, by slot
+    {
+        return m_values[channelIndex(channel)].data();
+    }
+
     //! Changes whenever the content changes, so a reader can tell it needs to redraw.
     quint64 generation() const { return m_generation; }
     quint64 appendedCount() const { return m_appended; }       //!< samples ever appended

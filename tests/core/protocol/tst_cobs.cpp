@@ -4,6 +4,10 @@
 #include <QRandomGenerator>
 #include <QTest>
 
+#include <algorithm>
+#include <optional>
+#include <span>
+
 using namespace hatpic::v2;
 
 namespace {
@@ -25,6 +29,36 @@ template<typename... Parts> QByteArray join(const Parts &...parts)
 {
     QByteArray out;
     (out.append(parts), ...);
+    return out;
+}
+
+std::span<std::uint8_t> bytesOf(QByteArray &b)
+{
+    return {reinterpret_cast<std::uint8_t *>(b.data()), std::size_t(b.size())};
+}
+
+//! The textbook decoder, one byte at a time, as the reference for the word-at-a-time one:
+//! nullopt for a malformed body or when `room` bytes are too few.
+std::optional<QByteArray> referenceDecode(const QByteArray &encoded, qsizetype room)
+{
+    QByteArray out;
+    qsizetype i = 0;
+    while (i < encoded.size()) {
+        const auto code = static_cast<std::uint8_t>(encoded[i]);
+        if (code == 0 || i + code > encoded.size())
+            return std::nullopt;
+        for (qsizetype k = i + 1; k < i + code; ++k) {
+            if (encoded[k] == 0 || out.size() >= room)
+                return std::nullopt;
+            out.append(encoded[k]);
+        }
+        i += code;
+        if (code != 0xFF && i < encoded.size()) {
+            if (out.size() >= room)
+                return std::nullopt;
+            out.append('\0');
+        }
+    }
     return out;
 }
 
@@ -124,6 +158,67 @@ private Q_SLOTS:
             QByteArray decoded;
             QVERIFY(cobsDecode(encoded, decoded));
             QCOMPARE(decoded, plain);
+        }
+    }
+
+    //! Encoding in place (what the frame encoder does) writes exactly cobsEncode()'s bytes,
+    //! for every length one block holds and zeros in every position of a machine word.
+    void inPlaceEncodingMatches()
+    {
+        QRandomGenerator rng(7);
+        for (int n = 0; n <= int(kCobsBlockBytes); ++n) {
+            for (const int zeroPercent : {0, 3, 30, 100}) {
+                QByteArray plain(n, Qt::Uninitialized);
+                for (char &c : plain)
+                    c = int(rng.bounded(100)) < zeroPercent
+                            ? '\0'
+                            : static_cast<char>(1 + rng.bounded(255));
+                QByteArray frame = QByteArray(1, 'x') + plain;
+                QCOMPARE(cobsEncodeInPlace(bytesOf(frame)), std::size_t(n + 1));
+                QCOMPARE(frame.toHex(' '), cobsEncode(plain).toHex(' '));
+            }
+        }
+        QByteArray tooLong(int(kCobsBlockBytes) + 2, '\x11');
+        QCOMPARE(cobsEncodeInPlace(bytesOf(tooLong)), std::size_t(0));
+        QCOMPARE(cobsEncodeInPlace({}), std::size_t(0));
+    }
+
+    //! Any body without a delimiter (valid or not, full blocks or not) decodes as the textbook
+    //! decoder says, into a separate buffer or in place, with room to spare or too little.
+    void decodeBodyMatchesReference()
+    {
+        QRandomGenerator rng(11);
+        for (int round = 0; round < 20000; ++round) {
+            const int n = int(rng.bounded(300));
+            QByteArray encoded(n, Qt::Uninitialized);
+            const bool codesFit = rng.bounded(2) == 0; // mostly valid chains, or pure noise
+            for (int i = 0; i < n; ++i)
+                encoded[i] = static_cast<char>(1 + rng.bounded(255));
+            if (codesFit) {
+                for (int at = 0; at < n;) {
+                    const int code = rng.bounded(8) == 0 ? 0xFF : 1 + int(rng.bounded(40));
+                    encoded[at] = static_cast<char>(std::min(code, n - at));
+                    at += std::max(1, std::min(code, n - at));
+                }
+            }
+            const qsizetype room = rng.bounded(4) == 0 ? qsizetype(rng.bounded(n + 1)) : n;
+            const std::optional<QByteArray> want = referenceDecode(encoded, room);
+
+            QByteArray out(room, '\x55');
+            const auto got = cobsDecodeBody(
+                {reinterpret_cast<const std::uint8_t *>(encoded.constData()), std::size_t(n)},
+                bytesOf(out));
+            QCOMPARE(got.has_value(), want.has_value());
+            if (got)
+                QCOMPARE(out.left(qsizetype(*got)).toHex(' '), want->toHex(' '));
+
+            if (room == n) {
+                QByteArray inPlace = encoded;
+                const auto same = cobsDecodeBody(bytesOf(inPlace), bytesOf(inPlace));
+                QCOMPARE(same.has_value(), want.has_value());
+                if (same)
+                    QCOMPARE(inPlace.left(qsizetype(*same)).toHex(' '), want->toHex(' '));
+            }
         }
     }
 };

@@ -53,7 +53,7 @@ private Q_SLOTS:
     void matchesBitwiseReference_data()
     {
         QTest::addColumn<int>("length");
-        for (const int n : {1, 2, 3, 7, 28, 29, 244, 1000})
+        for (const int n : {1, 2, 3, 7, 8, 9, 15, 16, 17, 28, 29, 244, 1000})
             QTest::addRow("%d random bytes", n) << n;
     }
     void matchesBitwiseReference()

@@ -4,6 +4,9 @@
 
 #include <QTest>
 
+#include <algorithm>
+#include <vector>
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -22,6 +25,113 @@ SampleBuffer rampBuffer(int count, double dt, qsizetype capacity = 0)
         buffer.append(s);
     }
     return buffer;
+}
+
+//! The decimation spelled out one sample at a time (column int((t − t0)/width), a bucket per
+//! column and per stretch between gaps, min and max in time order), as the reference for the
+//! Decimator's faster pass.
+DecimationResult referenceRun(const SampleBuffer &buffer, Channel channel, double t0, double t1,
+                              int pixels, double gap, double scale, QVector<QCPGraphData> &out)
+{
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    DecimationResult result;
+    out.clear();
+    if (buffer.isEmpty() || !(t1 > t0))
+        return result;
+    const qsizetype first = buffer.lowerBound(t0);
+    const qsizetype last = buffer.upperBound(t1);
+    const qsizetype from = std::max<qsizetype>(first - 1, 0);
+    const qsizetype to = std::min<qsizetype>(last + 1, buffer.size());
+    result.rawCount = last - first;
+    result.decimated = result.rawCount > 2 * qsizetype(pixels);
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -lo;
+    double prevT = 0;
+    bool hasPrev = false;
+    auto step = [&](double t) {
+        if (hasPrev && t - prevT > gap)
+            out.append(QCPGraphData((prevT + t) / 2, nan));
+    };
+    struct Point
+    {
+        double t, v;
+    };
+    std::vector<Point> bucket;
+    int bucketColumn = -1;
+    auto flush = [&] {
+        if (bucket.empty())
+            return;
+        const Point *mn = nullptr;
+        const Point *mx = nullptr;
+        for (const Point &p : bucket) {
+            if (std::isnan(p.v))
+                continue;
+            if (std::isfinite(p.v)) {
+                lo = std::min(lo, p.v);
+                hi = std::max(hi, p.v);
+            }
+            if (!mn || p.v < mn->v)
+                mn = &p;
+            if (!mx || p.v > mx->v)
+                mx = &p;
+        }
+        if (!mn)
+            out.append(QCPGraphData(bucket.front().t, nan));
+        else if (mn->t == mx->t)
+            out.append(QCPGraphData(mn->t, mn->v));
+        else if (mn->t < mx->t)
+            out << QCPGraphData(mn->t, mn->v) << QCPGraphData(mx->t, mx->v);
+        else
+            out << QCPGraphData(mx->t, mx->v) << QCPGraphData(mn->t, mn->v);
+        bucket.clear();
+        bucketColumn = -1;
+    };
+    const double width = (t1 - t0) / pixels;
+    for (qsizetype i = from; i < to; ++i) {
+        const double t = buffer.time(i);
+        const double v = buffer.value(channel, i) * scale;
+        const bool inside = i >= first && i < last;
+        if (!result.decimated || !inside) {
+            flush();
+            step(t);
+            out.append(QCPGraphData(t, v));
+            if (inside && std::isfinite(v)) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        } else {
+            if (hasPrev && t - prevT > gap) {
+                flush();
+                step(t);
+            }
+            const int column = std::clamp(int((t - t0) / width), 0, pixels - 1);
+            if (column != bucketColumn)
+                flush();
+            bucketColumn = column;
+            bucket.push_back({t, v});
+        }
+        prevT = t;
+        hasPrev = true;
+    }
+    flush();
+    if (lo <= hi) {
+        result.min = lo;
+        result.max = hi;
+        result.hasValues = true;
+    }
+    return result;
+}
+
+bool samePoints(const QVector<QCPGraphData> &a, const QVector<QCPGraphData> &b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        const bool bothNaN = std::isnan(a[i].value) && std::isnan(b[i].value);
+        if (a[i].key != b[i].key || (!bothNaN && a[i].value != b[i].value))
+            return false;
+    }
+    return true;
 }
 
 int rounds()
@@ -46,6 +156,7 @@ private Q_SLOTS:
     void breaksLineAtGaps();
     void scalesValuesAndRange();
     void allNaNChannelHasNoRange();
+    void matchesReference();
     void emptyInputs_data();
     void emptyInputs();
 };
@@ -232,6 +343,52 @@ void TestDecimator::allNaNChannelHasNoRange()
     QVERIFY(!out.isEmpty());
     for (const QCPGraphData &p : out)
         QVERIFY(std::isnan(p.value));
+}
+
+void TestDecimator::matchesReference()
+{
+    // Seeded random buffers that wrap around their ring, with gaps, NaN and ±Inf runs, large
+    // clock values, random views and scales: the Decimator draws exactly what the
+    // one-sample-at-a-time reference draws.
+    std::mt19937_64 rng(777);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    for (int round = 0; round < 10 * rounds(); ++round) {
+        const qsizetype capacity = 500 + qsizetype(rng() % 20000);
+        const qsizetype count = capacity / 2 + qsizetype(rng() % (2 * capacity));
+        const double offset = rng() % 4 == 0 ? 1e6 * unit(rng) : 0.0;
+        SampleBuffer buffer(capacity);
+        double t = offset;
+        double value = 0;
+        for (qsizetype i = 0; i < count; ++i) {
+            t += rng() % 500 == 0 ? 0.3 + unit(rng) : (rng() % 50 == 0 ? 0.0 : 0.001);
+            value += unit(rng) - 0.5;
+            Sample s;
+            s.t_s = t;
+            const auto kind = rng() % 1000;
+            s.tau = kind == 0 ? inf : kind == 1 ? -inf : kind < 5 ? std::nan("") : value;
+            buffer.append(s);
+        }
+        const double span = buffer.lastTime() - buffer.firstTime();
+        const double t0 = buffer.firstTime() + span * unit(rng) * 0.5 - 0.1;
+        const double t1 = t0 + span * unit(rng) + 0.01;
+        const int pixels = 1 + int(rng() % 1500);
+        const double scale = rng() % 2 ? 1.0 : 180.0 / 3.141592653589793;
+        QVector<QCPGraphData> got;
+        QVector<QCPGraphData> want;
+        const DecimationResult r = Decimator(pixels).run(buffer, Channel::Tau, t0, t1, scale, got);
+        const DecimationResult w =
+            referenceRun(buffer, Channel::Tau, t0, t1, pixels, Decimator::kDefaultGap, scale, want);
+        QVERIFY2(samePoints(got, want), qPrintable(QStringLiteral("round %1: %2 vs %3 points")
+                                                       .arg(round)
+                                                       .arg(got.size())
+                                                       .arg(want.size())));
+        QCOMPARE(r.rawCount, w.rawCount);
+        QCOMPARE(r.decimated, w.decimated);
+        QCOMPARE(r.hasValues, w.hasValues);
+        QCOMPARE(r.min, w.min);
+        QCOMPARE(r.max, w.max);
+    }
 }
 
 void TestDecimator::emptyInputs_data()

@@ -37,6 +37,7 @@ private Q_SLOTS:
     void generationChangesOnEveryChange();
     void copyIsIndependent();
     void roundTripsSample();
+    void runsCoverIndicesInOrder();
 };
 
 void TestSampleBuffer::keepsOrderAndOverwritesOldest_data()
@@ -184,6 +185,34 @@ void TestSampleBuffer::roundTripsSample()
     for (Channel channel : kAllChannels)
         QCOMPARE(channelValue(back, channel), channelValue(s, channel));
     QCOMPARE(back.flags, s.flags);
+}
+
+void TestSampleBuffer::runsCoverIndicesInOrder()
+{
+    // Before and after the ring wraps: the runs' slots hold the samples at their indices.
+    for (const int appended : {5, 10, 17, 23}) {
+        SampleBuffer buffer(10);
+        for (int i = 0; i < appended; ++i)
+            buffer.append(makeSample(i * 0.1, i));
+        for (qsizetype first = 0; first <= buffer.size(); ++first) {
+            for (qsizetype last = first; last <= buffer.size(); ++last) {
+                qsizetype next = first;
+                for (const SampleBuffer::Run &run : buffer.runs(first, last)) {
+                    if (run.count == 0)
+                        continue;
+                    QCOMPARE(run.index, next);
+                    QVERIFY(run.slot >= 0 && run.slot + run.count <= buffer.capacity());
+                    for (qsizetype k = 0; k < run.count; ++k) {
+                        QCOMPARE(buffer.timeSlots()[run.slot + k], buffer.time(next + k));
+                        QCOMPARE(buffer.valueSlots(Channel::Theta)[run.slot + k],
+                                 buffer.value(Channel::Theta, next + k));
+                    }
+                    next += run.count;
+                }
+                QCOMPARE(next, last);
+            }
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TestSampleBuffer)
