@@ -28,6 +28,25 @@ QString sessionStateName(SessionState state)
     return QStringLiteral("unknown");
 }
 
+QString commandName(CommandKind kind)
+{
+    switch (kind) {
+    case CommandKind::Hello:
+        return QStringLiteral("HELLO");
+    case CommandKind::GetParams:
+        return QStringLiteral("GET_PARAMS");
+    case CommandKind::SetParams:
+        return QStringLiteral("SET_PARAMS");
+    case CommandKind::SetStream:
+        return QStringLiteral("SET_STREAM");
+    case CommandKind::Zero:
+        return QStringLiteral("ZERO");
+    case CommandKind::SaveParams:
+        return QStringLiteral("SAVE_PARAMS");
+    }
+    return {};
+}
+
 quint64 LinkStats::totalDecoderDrops() const
 {
     return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));

@@ -34,6 +34,10 @@ struct ConnectOptions
     SimulatedDevice::Config sim; //!< used when port == "sim"
 };
 
+//! The commands of the v2 protocol the session sends (HELLO only while detecting).
+enum class CommandKind { Hello, GetParams, SetParams, SetStream, Zero, SaveParams };
+QString commandName(CommandKind kind); //!< the wire name: "SET_PARAMS", …
+
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
 QString sessionStateName(SessionState state); //!< "disconnected", "opening", …
 

@@ -721,7 +721,7 @@ void TestDeviceSession::helloOnPtyHasNoLetterI()
     QList<v2::Frame> frames;
     decoder.feed(sent, frames);
     // Each detection sends its HELLO kHelloSends times (led by a delimiter, issue 10 #6).
-    QCOMPARE(frames.size(), 2 * DeviceSession::kHelloSends);
+    QCOMPARE(frames.size(), 2 * ProtocolDetector::kHelloSends);
     for (const v2::Frame &f : frames)
         QVERIFY(std::holds_alternative<v2::Hello>(f.message));
 }
