@@ -1,7 +1,6 @@
 #include "commandqueue.h"
 
 #include "protocol/v2codec.h"
-#include "telemetry/numbertext.h"
 
 #include <QLoggingCategory>
 #include <QStringBuilder>
@@ -12,13 +11,8 @@ namespace hatpic {
 
 namespace {
 
-CommandResult result(CommandResult::Status status, const QString &message)
-{
-    CommandResult r;
-    r.status = status;
-    r.message = message;
-    return r;
-}
+using Status = CommandResult::Status;
+using Reason = CommandResult::Reason;
 
 QByteArray encode(const Command &cmd)
 {
@@ -60,10 +54,9 @@ void CommandQueue::setWriter(Writer writer)
 void CommandQueue::enqueue(Command command)
 {
     if (static_cast<int>(m_queue.size()) >= kMaxQueuedCommands) {
-        Q_EMIT finished(command, result(CommandResult::Status::Invalid,
-                                        u"Too many commands are waiting (" %
-                                            QString::number(kMaxQueuedCommands) % u"); " %
-                                            commandName(command.kind) % u" was not sent."));
+        CommandResult r = commandResult(command.kind, Status::Invalid, Reason::QueueFull);
+        r.limit = kMaxQueuedCommands;
+        Q_EMIT finished(command, r);
         return;
     }
     m_queue.push_back(std::move(command));
@@ -102,7 +95,6 @@ void CommandQueue::onTimeout()
         m_write(cmd.wire);
         return;
     }
-    const QString name = cmd.readBack ? commandName(cmd.origin) : commandName(cmd.kind);
     if (cmd.kind == CommandKind::Hello) {
         m_inflight.reset();
         Q_EMIT helloUnanswered();
@@ -110,15 +102,17 @@ void CommandQueue::onTimeout()
     }
     if (cmd.readBack) {
         // The device acknowledged the command; only its read-back went unanswered.
-        finishInflight(result(CommandResult::Status::Ok,
-                              u"The device acknowledged " % name %
-                                  u", but did not answer the GET_PARAMS read-back."));
+        CommandResult r = commandResult(cmd.origin, Status::Ok, Reason::ReadBackUnanswered);
+        r.sent = cmd.params;
+        finishInflight(r);
         return;
     }
-    finishInflight(result(CommandResult::Status::Timeout,
-                          u"The device did not answer " % name % u" (sent " %
-                              QString::number(kCommandRetries + 1) % u" times, " %
-                              QString::number(kCommandTimeoutMs) % u" ms apart)."));
+    CommandResult r = commandResult(cmd.kind, Status::Timeout);
+    r.sent = cmd.params;
+    r.rate = cmd.rate;
+    r.attempts = kCommandRetries + 1;
+    r.intervalMs = kCommandTimeoutMs;
+    finishInflight(r);
 }
 
 void CommandQueue::onAck(const v2::Ack &ack)
@@ -139,19 +133,12 @@ void CommandQueue::onAck(const v2::Ack &ack)
     m_timer.stop();
 
     if (ack.status != v2::AckStatus::Ok) {
-        CommandResult r;
-        r.status = CommandResult::Status::Rejected;
+        CommandResult r = commandResult(m_inflight->kind, Status::Rejected);
         r.ackStatus = ack.status;
-        const QString status = v2::ackStatusName(ack.status);
-        if (ack.field != v2::kNoField && ack.field < DeviceParams::kFieldCount) {
+        r.sent = m_inflight->params;
+        r.rate = m_inflight->rate;
+        if (ack.field != v2::kNoField && ack.field < DeviceParams::kFieldCount)
             r.field = ack.field;
-            r.message = u"The device rejected " % QString::fromLatin1(deviceFieldName(ack.field)) %
-                        u" (field " % QString::number(ack.field) % u"): " % status %
-                        u"; its parameters are unchanged.";
-        } else {
-            r.message =
-                u"The device rejected " % commandName(m_inflight->kind) % u": " % status % u'.';
-        }
         finishInflight(r);
         return;
     }
@@ -168,16 +155,15 @@ void CommandQueue::onAck(const v2::Ack &ack)
         cmd.retries = 0;
         sendInflight();
         return;
-    case CommandKind::SetStream:
+    case CommandKind::SetStream: {
         Q_EMIT acknowledged(cmd);
-        finishInflight(result(CommandResult::Status::Ok,
-                              cmd.rate ? u"Telemetry requested at " % QString::number(cmd.rate) %
-                                             u" Hz (the device may clamp it)."
-                                       : QStringLiteral("Telemetry stopped.")));
+        CommandResult r = commandResult(CommandKind::SetStream, Status::Ok);
+        r.rate = cmd.rate;
+        finishInflight(r);
         return;
+    }
     case CommandKind::SaveParams:
-        finishInflight(
-            result(CommandResult::Status::Ok, QStringLiteral("The device saved its parameters.")));
+        finishInflight(commandResult(CommandKind::SaveParams, Status::Ok));
         return;
     case CommandKind::Hello:
     case CommandKind::GetParams:
@@ -190,23 +176,14 @@ void CommandQueue::onParams(const DeviceParams &params)
     if (!m_inflight || m_inflight->kind != CommandKind::GetParams)
         return;
     m_timer.stop();
-    CommandResult r;
-    if (!m_inflight->readBack) {
-        r.message = QStringLiteral("Parameters read from the device.");
-    } else if (m_inflight->origin == CommandKind::Zero) {
+    const Command &cmd = *m_inflight;
+    CommandResult r = commandResult(cmd.readBack ? cmd.origin : cmd.kind, Status::Ok);
+    r.received = params;
+    if (cmd.readBack) {
         r.readBack = true;
-        r.readBackMatches = true;
-        r.message =
-            u"The device zeroed: theta0 is now " % compactNumberText(params.theta0) % u" rad.";
-    } else {
-        r.readBack = true;
-        r.readBackMatches = sameOnWire(m_inflight->params, params);
-        if (r.readBackMatches) {
-            r.message = QStringLiteral("The device applied the parameters; the read-back matches.");
-        } else {
-            r.message = u"The device acknowledged the parameters, but the read-back differs: " %
-                        describeParamChange(m_inflight->params, params) % u" (sent → read).";
-        }
+        r.sent = cmd.params;
+        // ZERO changes θ0 by design: its read-back is the new value, not a comparison.
+        r.readBackMatches = cmd.origin == CommandKind::Zero || sameOnWire(cmd.params, params);
     }
     finishInflight(r);
 }
@@ -216,6 +193,7 @@ void CommandQueue::onHelloReply()
     if (m_inflight && m_inflight->kind == CommandKind::Hello) {
         m_timer.stop();
         m_inflight.reset();
+        pump();
     }
 }
 
@@ -225,12 +203,13 @@ void CommandQueue::finishInflight(const CommandResult &r)
     const Command done = std::move(*m_inflight);
     m_inflight.reset();
     if (!done.id && !r.ok())
-        qCWarning(lcCommands) << commandName(done.kind) << "during connect:" << r.message;
+        qCWarning(lcCommands) << commandName(done.kind) << "during connect failed, status"
+                              << static_cast<int>(r.status);
     Q_EMIT finished(done, r);
     pump();
 }
 
-void CommandQueue::failAll(const QString &message)
+void CommandQueue::failAll(CommandResult::Reason reason)
 {
     m_timer.stop();
     std::deque<Command> failing;
@@ -241,7 +220,8 @@ void CommandQueue::failAll(const QString &message)
         failing.push_back(std::move(c));
     m_queue.clear();
     for (const Command &c : failing)
-        Q_EMIT finished(c, result(CommandResult::Status::NotConnected, message));
+        Q_EMIT finished(
+            c, commandResult(c.readBack ? c.origin : c.kind, Status::NotConnected, reason));
 }
 
 } // namespace hatpic

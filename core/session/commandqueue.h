@@ -47,7 +47,7 @@ public:
 
     //! Where frames go; an empty writer means no link (commands wait in the queue).
     void setWriter(Writer writer);
-    //! Queues `command`; a full queue finishes it at once (Invalid).
+    //! Queues `command`; a full queue finishes it at once (Invalid, QueueFull).
     void enqueue(Command command);
     //! A command waits for its answer (no PING may go out in between).
     bool busy() const { return m_inflight.has_value(); }
@@ -63,8 +63,8 @@ public:
     void onParams(const DeviceParams &params);
     //! HELLO_REPLY arrived: a HELLO in flight is answered (detection handles the reply).
     void onHelloReply();
-    //! Finishes every command (in flight and queued) as NotConnected with `message`.
-    void failAll(const QString &message);
+    //! Finishes every command (in flight and queued) as NotConnected for `reason`.
+    void failAll(CommandResult::Reason reason);
 
 Q_SIGNALS:
     //! A command ended; `command.id == 0` for the session's own.

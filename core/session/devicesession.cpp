@@ -5,7 +5,6 @@
 #include "session/v2driver.h"
 #include "sim/simlink.h"
 
-#include <QDateTime>
 #include <QLoggingCategory>
 #include <QStringBuilder>
 
@@ -15,29 +14,18 @@ namespace hatpic {
 
 namespace {
 
-CommandResult result(CommandResult::Status status, const QString &message)
-{
-    CommandResult r;
-    r.status = status;
-    r.message = message;
-    return r;
-}
+using Status = CommandResult::Status;
+using Reason = CommandResult::Reason;
 
 } // namespace
 
 DeviceSession::DeviceSession(QObject *parent)
-    : QObject(parent), m_reconnectTimer(this), m_statsTimer(this), m_batchTimer(this),
-      m_queue(this), m_detector(m_queue, m_statistics, this),
-      m_feedback(
-          [this](double tauExt) {
-              if (m_driver && m_link)
-                  m_driver->sendFeedback(tauExt);
-          },
-          this),
+    : QObject(parent), m_reconnectTimer(this), m_statsTimer(this), m_queue(this),
+      m_detector(m_queue, m_statistics, this),
+      m_feedback([this](double tauExt) { sendFeedback(tauExt); }, this),
       m_ping(
-          m_clock,
-          [this](quint32 token) { return m_driver && m_link && m_driver->sendPing(token); }, this),
-      m_recording(this)
+          m_clock, [this](quint32 token) { return sendPing(token); }, this),
+      m_samples(this)
 {
     registerSessionMetaTypes();
     m_clock.start();
@@ -45,15 +33,12 @@ DeviceSession::DeviceSession(QObject *parent)
     m_reconnectTimer.setSingleShot(true);
     m_reconnectTimer.setInterval(kReconnectIntervalMs);
     m_statsTimer.setInterval(kStatsIntervalMs);
-    m_batchTimer.setTimerType(Qt::PreciseTimer);
-    m_batchTimer.setInterval(kBatchIntervalMs);
 
     connect(&m_reconnectTimer, &QTimer::timeout, this, &DeviceSession::tryReconnect);
     connect(&m_statsTimer, &QTimer::timeout, this, &DeviceSession::onStatsTick);
-    connect(&m_batchTimer, &QTimer::timeout, this, &DeviceSession::flushBatch);
 
     connect(&m_detector, &ProtocolDetector::progress, this,
-            [this](const QString &detail) { setState(SessionState::Detecting, detail); });
+            [this](const StateDetail &detail) { setState(SessionState::Detecting, detail); });
     connect(&m_detector, &ProtocolDetector::foundLegacy, this, &DeviceSession::onFoundLegacy);
     connect(&m_detector, &ProtocolDetector::foundV2, this, &DeviceSession::onFoundV2);
     connect(&m_detector, &ProtocolDetector::failed, this, &DeviceSession::failDetection);
@@ -65,8 +50,10 @@ DeviceSession::DeviceSession(QObject *parent)
             m_options.streamRateHz = command.rate; // a reconnect asks for the same rate
     });
 
-    connect(&m_recording, &RecordingSink::statusChanged, this, &DeviceSession::recordingChanged);
-    connect(&m_recording, &RecordingSink::aboutToFlush, this, &DeviceSession::flushBatch);
+    connect(&m_samples, &SamplePipeline::samplesReady, this, &DeviceSession::samplesReady);
+    connect(&m_samples, &SamplePipeline::recordingChanged, this, &DeviceSession::recordingChanged);
+    connect(&m_samples, &SamplePipeline::deviceParamsChanged, this,
+            &DeviceSession::deviceParamsChanged);
 }
 
 DeviceSession::~DeviceSession()
@@ -87,7 +74,7 @@ void DeviceSession::connectDevice(const ConnectOptions &options)
     m_everConnected = false;
     m_statistics.clear();
     m_ping.clear();
-    m_builder.clear();
+    m_samples.clear();
     m_statsTimer.start();
     openLink();
 }
@@ -97,9 +84,8 @@ void DeviceSession::disconnectDevice()
     const bool wasActive = m_wanted || m_link || m_state != SessionState::Disconnected;
     m_wanted = false;
     m_reconnectTimer.stop();
-    flushBatch();
-    m_recording.close();
-    m_queue.failAll(QStringLiteral("The session was disconnected before the device answered."));
+    m_samples.stopRecording();
+    m_queue.failAll(Reason::Disconnected);
     closeLink();
     m_statsTimer.stop();
     if (wasActive) {
@@ -111,12 +97,12 @@ void DeviceSession::disconnectDevice()
 void DeviceSession::shutdown()
 {
     disconnectDevice();
-    m_batchTimer.stop();
+    m_samples.stop();
 }
 
-QString DeviceSession::portDescription() const
+StateDetail DeviceSession::detail(StateDetail::Kind kind) const
 {
-    return hatpic::portDescription(m_options, m_link);
+    return stateDetail(kind, m_options, m_link);
 }
 
 void DeviceSession::openLink()
@@ -130,9 +116,10 @@ void DeviceSession::openLink()
     connect(m_link, &ByteLink::failed, this, &DeviceSession::linkLost);
 
     if (!m_everConnected)
-        setState(SessionState::Opening, u"Opening " % portDescription());
+        setState(SessionState::Opening, detail(StateDetail::Kind::Opening));
     if (!m_link->open()) {
-        const QString error = u"Cannot open " % portDescription() % u": " % m_link->errorString();
+        StateDetail error = detail(StateDetail::Kind::OpenFailed);
+        error.error = m_link->errorString();
         closeLink();
         if (m_everConnected) {
             // Still lost: the port has not come back yet.
@@ -169,26 +156,39 @@ void DeviceSession::closeLink()
     }
 }
 
+void DeviceSession::sendFeedback(double tauExt)
+{
+    if (m_driver && m_link)
+        m_driver->sendFeedback(tauExt);
+}
+
+bool DeviceSession::sendPing(quint32 token)
+{
+    return m_driver && m_link && m_driver->sendPing(token);
+}
+
 void DeviceSession::write(const QByteArray &bytes)
 {
     if (m_link)
         m_link->write(bytes);
 }
 
-void DeviceSession::setState(SessionState state, const QString &detail)
+void DeviceSession::setState(SessionState state, const StateDetail &detail)
 {
     if (state == m_state && detail == m_stateDetail)
         return;
     m_state = state;
     m_stateDetail = detail;
-    qCInfo(lcSession) << sessionStateName(state) << detail;
+    qCInfo(lcSession) << sessionStateName(state) << static_cast<int>(detail.kind) << detail.port
+                      << detail.error;
     Q_EMIT stateChanged(state, detail);
 }
 
-void DeviceSession::failDetection(const QString &message)
+void DeviceSession::failDetection(const StateDetail &message)
 {
-    qCWarning(lcSession) << message;
-    m_queue.failAll(message);
+    qCWarning(lcSession) << "detection failed:" << static_cast<int>(message.kind) << message.port
+                         << message.error;
+    m_queue.failAll(Reason::DetectionFailed);
     closeLink();
     if (m_everConnected && m_wanted && m_options.autoReconnect) {
         // A port that came back without its device yet: keep trying.
@@ -204,8 +204,9 @@ void DeviceSession::failDetection(const QString &message)
 void DeviceSession::onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame> &rest)
 {
     if (const QString problem = helloReplyProblem(reply); !problem.isEmpty()) {
-        failDetection(u"Refused the device on " % portDescription() % u": " % problem %
-                      u". It does not behave as a HATPIC joystick; nothing was sent to it.");
+        StateDetail refused = detail(StateDetail::Kind::Refused);
+        refused.error = problem;
+        failDetection(refused);
         return;
     }
     auto driver = std::make_unique<V2Driver>(host(), m_queue, reply, m_options, m_link->baud(),
@@ -225,36 +226,41 @@ void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
 {
     m_driver = std::move(driver);
     m_info = m_driver->info();
-    m_paramsKnown = false;
     m_everConnected = true;
     Q_EMIT deviceInfoChanged(m_info);
-    setState(SessionState::Connected, m_driver->connectedDetail(portDescription()));
+    StateDetail connected = detail(m_driver->connectedKind());
+    connected.firmware = m_info.firmware;
+    setState(SessionState::Connected, connected);
     m_driver->start();
     if (!m_link)
         return; // lost while writing the first command
-    m_builder.markDiscontinuity();
+    m_samples.connectionStarted();
     m_statistics.markReceived(m_clock.nsecsElapsed());
     m_feedback.start(m_options.feedbackRateHz);
-    m_batchTimer.start();
     m_ping.start();
 }
 
 void DeviceSession::linkLost(const QString &reason)
 {
+    StateDetail lost = detail(StateDetail::Kind::LinkFailed);
+    lost.error = reason;
+    loseLink(lost);
+}
+
+void DeviceSession::loseLink(const StateDetail &lost)
+{
     if (!m_link)
         return;
-    const QString detail = u"Lost " % portDescription() % u": " % reason;
-    qCWarning(lcSession) << detail;
-    flushBatch();
-    if (m_recording.isOpen()) {
-        m_recording.close();
-        Q_EMIT deviceLog(QStringLiteral("Recording closed: the device was lost."));
+    qCWarning(lcSession) << "lost" << lost.port << lost.error;
+    if (m_samples.isRecording()) {
+        m_samples.stopRecording();
+        Q_EMIT notice({SessionNotice::Kind::RecordingClosedByLoss, {}});
     }
-    m_queue.failAll(QStringLiteral("The connection was lost before the device answered."));
+    m_queue.failAll(Reason::ConnectionLost);
     closeLink();
-    m_builder.markDiscontinuity();
+    m_samples.connectionEnded();
     Q_EMIT statsUpdated(stats()); // the final figures, before anyone reads them as such
-    setState(SessionState::Lost, detail);
+    setState(SessionState::Lost, lost);
     if (m_wanted && m_options.autoReconnect)
         m_reconnectTimer.start();
 }
@@ -282,7 +288,7 @@ LinkStats DeviceSession::stats() const
     s.rttLastMs = m_ping.rtt().last();
     s.rttMedianMs = m_ping.rtt().median();
     s.rttMaxMs = m_ping.rtt().max();
-    s.referenceGaps = m_builder.referenceGaps();
+    s.referenceGaps = m_samples.builder().referenceGaps();
     return s;
 }
 
@@ -291,8 +297,9 @@ void DeviceSession::onStatsTick()
     const qint64 now = m_clock.nsecsElapsed();
     m_statistics.tick(now);
     if (m_driver && now - m_statistics.lastReceivedNs() > qint64(kSilenceTimeoutMs) * 1'000'000) {
-        linkLost(u"no data from the device for " % QString::number(kSilenceTimeoutMs / 1000.0) %
-                 u" s");
+        StateDetail silent = detail(StateDetail::Kind::Silent);
+        silent.silenceMs = kSilenceTimeoutMs;
+        loseLink(silent);
     }
     Q_EMIT statsUpdated(stats());
 }
@@ -304,12 +311,12 @@ void DeviceSession::pushParams(quint64 id, const DeviceParams &params)
     if (m_validate) {
         const auto violations = validate(params);
         if (!violations.empty()) {
-            QStringList messages;
+            CommandResult r =
+                commandResult(CommandKind::SetParams, Status::Invalid, Reason::InvalidParams);
+            r.sent = params;
             for (const Violation &v : violations)
-                messages << QString::fromStdString(v.message());
-            Q_EMIT commandFinished(id, result(CommandResult::Status::Invalid,
-                                              u"The parameters are not valid: " %
-                                                  messages.join(QStringLiteral("; ")) % u'.'));
+                r.problems << QString::fromStdString(v.message());
+            Q_EMIT commandFinished(id, r);
             return;
         }
     }
@@ -357,15 +364,15 @@ void DeviceSession::submit(Command command)
 {
     if (!m_driver) {
         if (command.id) {
-            Q_EMIT commandFinished(command.id,
-                                   result(CommandResult::Status::NotConnected,
-                                          QStringLiteral("Not connected to a device.")));
+            Q_EMIT commandFinished(
+                command.id, commandResult(command.kind, Status::NotConnected, Reason::NoDevice));
         }
         return;
     }
-    if (const QString why = m_driver->refusal(command.kind); !why.isEmpty()) {
+    if (const Reason why = m_driver->refusal(command.kind); why != Reason::None) {
         if (command.id)
-            Q_EMIT commandFinished(command.id, result(CommandResult::Status::Unsupported, why));
+            Q_EMIT commandFinished(command.id,
+                                   commandResult(command.kind, Status::Unsupported, why));
         return;
     }
     m_queue.enqueue(std::move(command));
@@ -377,48 +384,7 @@ void DeviceSession::onCommandFinished(const Command &command, const CommandResul
         Q_EMIT commandFinished(command.id, result);
 }
 
-// ---------------------------------------------------------------- samples and events
-
-void DeviceSession::pushSample(const Sample &sample)
-{
-    m_batch.append(sample);
-    if (m_batch.size() >= kBatchMaxSamples)
-        flushBatch();
-}
-
-void DeviceSession::flushBatch()
-{
-    if (m_batch.isEmpty())
-        return;
-    SampleBatch batch;
-    batch.swap(m_batch);
-    m_batch.reserve(kBatchMaxSamples);
-    m_recording.append(batch);
-    Q_EMIT samplesReady(batch);
-}
-
-void DeviceSession::applyEffect(CommandKind kind, const DeviceParams &params)
-{
-    flushBatch(); // the event belongs to the next sample, not to those already waiting
-    if (kind == CommandKind::Zero) {
-        m_recording.zeroed(m_builder.deviceParams().theta0);
-        return;
-    }
-    m_recording.paramsApplied(m_builder.deviceParams(), params);
-    m_builder.setDeviceParams(params);
-}
-
-void DeviceSession::paramsReceived(const DeviceParams &params)
-{
-    const DeviceParams held = m_builder.deviceParams();
-    if (m_paramsKnown && !sameOnWire(held, params)) {
-        flushBatch();
-        m_recording.paramsReadBack(held, params);
-    }
-    m_builder.setDeviceParams(params);
-    m_paramsKnown = true;
-    Q_EMIT deviceParamsChanged(params);
-}
+// ---------------------------------------------------------------- host side
 
 void DeviceSession::setFeedback(double tauExt)
 {
@@ -429,28 +395,20 @@ void DeviceSession::setHostParams(const HostParams &host)
 {
     const auto violations = validate(host);
     if (!violations.empty()) {
-        QStringList messages;
+        SessionNotice refused{SessionNotice::Kind::HostParamsRefused, {}};
         for (const Violation &v : violations)
-            messages << QString::fromStdString(v.message());
-        qCWarning(lcSession) << "host parameters refused:" << messages;
-        Q_EMIT deviceLog(u"Host parameters refused: " % messages.join(QStringLiteral("; ")));
+            refused.problems << QString::fromStdString(v.message());
+        qCWarning(lcSession) << "host parameters refused:" << refused.problems;
+        Q_EMIT notice(refused);
         return;
     }
-    const HostParams old = m_builder.hostParams();
-    if (old == host)
-        return;
-    flushBatch();
-    m_builder.setHostParams(host);
-    if (m_driver)
+    if (m_samples.setHostParams(host) && m_driver)
         m_driver->hostParamsChanged(host);
-    m_recording.hostChanged(old, host);
 }
 
 void DeviceSession::resetReference()
 {
-    flushBatch();
-    m_builder.resetReference();
-    m_recording.referenceReset();
+    m_samples.resetReference();
 }
 
 void DeviceSession::setSimulatedHand(const HandInput &hand)
@@ -469,31 +427,17 @@ SimLink *DeviceSession::simLink() const
 
 void DeviceSession::startRecording(const QString &csvPath, const QString &source)
 {
-    if (m_recording.isOpen()) {
-        flushBatch();
-        m_recording.close();
-    }
     if (m_state != SessionState::Connected) {
-        m_recording.report(QStringLiteral("Not connected: a recording starts once a device is "
-                                          "connected."));
+        m_samples.stopRecording();
+        Q_EMIT notice({SessionNotice::Kind::RecordingNeedsDevice, {}});
         return;
     }
-    flushBatch(); // samples that arrived before the start are not part of the recording
-    RecordingMetadata meta;
-    meta.start = QDateTime::currentDateTimeUtc();
-    meta.device = m_info;
-    meta.params = m_builder.deviceParams();
-    meta.host = m_builder.hostParams();
-    meta.source = source;
-    m_recording.open(csvPath, meta);
+    m_samples.startRecording(csvPath, source, m_info);
 }
 
 void DeviceSession::stopRecording()
 {
-    if (!m_recording.isOpen())
-        return;
-    flushBatch();
-    m_recording.close();
+    m_samples.stopRecording();
 }
 
 } // namespace hatpic

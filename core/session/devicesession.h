@@ -1,6 +1,6 @@
 // The worker behind DeviceClient: owns the port and wires the session's parts together —
 // protocol detection, the command queue, one protocol driver while connected, the feedback
-// and PING streams, the link statistics, sample batching and the recording sink. A plain
+// and PING streams, the link statistics and the sample pipeline (batches, recording). A plain
 // QObject that lives on the session thread (DeviceClient moves it there); every method must
 // be called on that thread. It works on any thread with an event loop, which is how the tests
 // drive it directly.
@@ -10,8 +10,7 @@
 #include "session/linkstatistics.h"
 #include "session/protocoldetector.h"
 #include "session/protocoldriver.h"
-#include "session/recordingsink.h"
-#include "session/samplebuilder.h"
+#include "session/samplepipeline.h"
 #include "session/sessiontypes.h"
 #include "session/streams.h"
 #include "telemetry/sample.h"
@@ -33,8 +32,6 @@ class DeviceSession : public QObject, private DriverHost
 public:
     static constexpr int kReconnectIntervalMs = 500; //!< reopen attempts after a loss [ms]
     static constexpr int kStatsIntervalMs = 250;     //!< statsUpdated() period [ms]
-    static constexpr int kBatchIntervalMs = 20;      //!< samplesReady() at least this often [ms]
-    static constexpr int kBatchMaxSamples = 64;      //!< …or when this many samples wait
     static constexpr int kSilenceTimeoutMs =
         2000; //!< connected but no byte for this long → lost [ms]
 
@@ -73,65 +70,67 @@ public:
     void setValidateBeforeSending(bool validate) { m_validate = validate; }
 
 Q_SIGNALS:
-    void stateChanged(hatpic::SessionState state, const QString &detail);
+    void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
     void deviceParamsChanged(const hatpic::DeviceParams &params);
     void samplesReady(const hatpic::SampleBatch &batch);
     void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
     void recordingChanged(const hatpic::RecordingStatus &status);
+    //! What the device says for people (v2 LOG, legacy boot text).
     void deviceLog(const QString &line);
+    void notice(const hatpic::SessionNotice &notice);
 
 private:
     // connection
     void openLink();
     void closeLink();
-    void setState(SessionState state, const QString &detail = {});
-    void failDetection(const QString &message);
+    void setState(SessionState state, const StateDetail &detail = {});
+    StateDetail detail(StateDetail::Kind kind) const;
+    void failDetection(const StateDetail &detail);
     void onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame> &rest);
     void onFoundLegacy();
     void becomeConnected(std::unique_ptr<ProtocolDriver> driver);
-    void linkLost(const QString &reason);
+    void linkLost(const QString &reason); //!< the link failed
+    void loseLink(const StateDetail &lost);
     void tryReconnect();
-    QString portDescription() const;
     void onBytes(const QByteArray &bytes);
     void onStatsTick();
+    void sendFeedback(double tauExt); //!< through the driver, while connected
+    bool sendPing(quint32 token);     //!< through the driver; false when none went out
 
     // commands
     void submit(Command command);
     void onCommandFinished(const Command &command, const CommandResult &result);
 
-    // samples and events
-    void flushBatch();
-    void addEvent(const QString &text);
-
     // DriverHost
     DriverHost &host() { return *this; }
     void write(const QByteArray &bytes) override;
-    SampleBuilder &builder() override { return m_builder; }
+    SampleBuilder &builder() override { return m_samples.builder(); }
     LinkStatistics &statistics() override { return m_statistics; }
     qint64 hostUs() const override { return m_clock.nsecsElapsed() / 1000; }
-    void pushSample(const Sample &sample) override;
-    void applyEffect(CommandKind kind, const DeviceParams &params) override;
-    void paramsReceived(const DeviceParams &params) override;
+    void pushSample(const Sample &sample) override { m_samples.push(sample); }
+    void applyEffect(CommandKind kind, const DeviceParams &params) override
+    {
+        m_samples.applyEffect(kind, params);
+    }
+    void paramsReceived(const DeviceParams &params) override { m_samples.paramsReceived(params); }
     void pongReceived(quint32 token) override { m_ping.onPong(token); }
     void deviceText(const QString &line) override { Q_EMIT deviceLog(line); }
     bool linkOpen() const override { return m_link != nullptr; }
 
     ConnectOptions m_options;
     SessionState m_state = SessionState::Disconnected;
-    QString m_stateDetail;
+    StateDetail m_stateDetail;
     DeviceInfo m_info;
     bool m_wanted = false;        //!< the user asked to be connected
     bool m_everConnected = false; //!< since connectDevice(): losses reconnect
-    bool m_paramsKnown = false;   //!< a PARAMS arrived on this connection
     bool m_validate = true;
 
     ByteLink *m_link = nullptr;
     QElapsedTimer m_clock;
     QTimer m_reconnectTimer;
     QTimer m_statsTimer;
-    QTimer m_batchTimer;
 
     LinkStatistics m_statistics;
     CommandQueue m_queue;
@@ -140,10 +139,7 @@ private:
     std::unique_ptr<ProtocolDriver> m_retired; //!< the last one, closed (it may be on the stack)
     FeedbackStream m_feedback;
     PingProbe m_ping;
-
-    SampleBuilder m_builder;
-    SampleBatch m_batch;
-    RecordingSink m_recording;
+    SamplePipeline m_samples;
 };
 
 } // namespace hatpic

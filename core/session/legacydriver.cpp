@@ -3,8 +3,6 @@
 #include "session/linkstatistics.h"
 #include "session/samplebuilder.h"
 
-#include <QStringBuilder>
-
 namespace hatpic {
 
 LegacyDriver::LegacyDriver(DriverHost &host, const ConnectOptions &options, qint32 baud)
@@ -55,21 +53,11 @@ void LegacyDriver::sendFeedback(double tauExt)
     m_host.write(legacy::encodeFrame(legacy::Frame{m_field, 0, 0, 0}));
 }
 
-QString LegacyDriver::refusal(CommandKind kind) const
+CommandResult::Reason LegacyDriver::refusal(CommandKind kind) const
 {
-    switch (kind) {
-    case CommandKind::SetParams:
-    case CommandKind::GetParams:
-    case CommandKind::Zero:
-    case CommandKind::SaveParams:
-        return commandName(kind) %
-               u" is not available: the device runs the published firmware (legacy protocol), "
-               u"which cannot send or take parameters. Host settings still apply.";
-    default:
-        return commandName(kind) %
-               u" is not available: the device runs the published firmware (legacy protocol), "
-               u"which streams at its own fixed rate of about 5 Hz.";
-    }
+    // Host settings still apply; only the device side is fixed.
+    return kind == CommandKind::SetStream ? CommandResult::Reason::FixedRate
+                                          : CommandResult::Reason::NoParameters;
 }
 
 void LegacyDriver::hostParamsChanged(const HostParams &host)
@@ -84,11 +72,6 @@ void LegacyDriver::close()
     m_closed = true;
     m_host.statistics().absorb(m_decoder.stats());
     m_decoder.resetStats();
-}
-
-QString LegacyDriver::connectedDetail(const QString &port) const
-{
-    return u"Legacy HATPIC on " % port;
 }
 
 } // namespace hatpic

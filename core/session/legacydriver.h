@@ -21,11 +21,11 @@ public:
     void feed(const QByteArray &bytes) override;
     void sendFeedback(double tauExt) override;
     bool sendPing(quint32) override { return false; }
-    QString refusal(CommandKind kind) const override;
+    CommandResult::Reason refusal(CommandKind kind) const override;
     void hostParamsChanged(const HostParams &host) override;
     void close() override;
     const legacy::DecoderStats *legacyStats() const override { return &m_decoder.stats(); }
-    QString connectedDetail(const QString &port) const override;
+    StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedLegacy; }
 
 private:
     DriverHost &m_host;

@@ -4,8 +4,6 @@
 #include "session/commandqueue.h"
 #include "session/linkstatistics.h"
 
-#include <QStringBuilder>
-
 #include <utility>
 
 namespace hatpic {
@@ -28,12 +26,13 @@ quint8 safeHelloSeq(quint8 from)
 
 } // namespace
 
-QString portDescription(const ConnectOptions &options, const ByteLink *link)
+StateDetail stateDetail(StateDetail::Kind kind, const ConnectOptions &options, const ByteLink *link)
 {
-    if (options.port == QStringView(kSimPortName))
-        return QStringLiteral("the simulated joystick"); // no serial line, so no baud rate
-    const qint32 baud = link ? link->baud() : requestedBaud(options);
-    return options.port % u" at " % QString::number(baud) % u" baud";
+    StateDetail d;
+    d.kind = kind;
+    d.port = options.port;
+    d.baud = link ? link->baud() : requestedBaud(options);
+    return d;
 }
 
 qint32 requestedBaud(const ConnectOptions &options)
@@ -53,9 +52,9 @@ ProtocolDetector::ProtocolDetector(CommandQueue &queue, LinkStatistics &statisti
     connect(&m_queue, &CommandQueue::helloUnanswered, this, &ProtocolDetector::onHelloUnanswered);
 }
 
-QString ProtocolDetector::portDescription() const
+StateDetail ProtocolDetector::detail(StateDetail::Kind kind) const
 {
-    return hatpic::portDescription(m_options, m_link);
+    return stateDetail(kind, m_options, m_link);
 }
 
 bool ProtocolDetector::detectsAtTwoRates() const
@@ -72,11 +71,11 @@ void ProtocolDetector::start(ByteLink *link, const ConnectOptions &options)
     m_helloSeq.reset();
     switch (m_options.protocol) {
     case ProtocolChoice::Legacy:
-        Q_EMIT progress(u"Using the legacy protocol on " % portDescription());
+        Q_EMIT progress(detail(StateDetail::Kind::UsingLegacy));
         Q_EMIT foundLegacy();
         return;
     case ProtocolChoice::V2: {
-        Q_EMIT progress(u"Asking for HELLO on " % portDescription());
+        Q_EMIT progress(detail(StateDetail::Kind::AskingHello));
         m_phase = Phase::Hello;
         Command hello;
         hello.kind = CommandKind::Hello;
@@ -86,7 +85,7 @@ void ProtocolDetector::start(ByteLink *link, const ConnectOptions &options)
     case ProtocolChoice::Auto:
         break;
     }
-    Q_EMIT progress(u"Listening for a legacy device on " % portDescription());
+    Q_EMIT progress(detail(StateDetail::Kind::Listening));
     m_phase = Phase::Listening;
     m_timer.start(kListenMs);
 }
@@ -161,11 +160,13 @@ void ProtocolDetector::onListenTimeout()
     }
     // Step 2: HELLO with a seq whose frame holds no 'i', so a legacy device is never upset.
     if (detectsAtTwoRates() && !m_link->setBaud(kDefaultV2Baud)) {
-        fail(u"Cannot switch " % m_options.port % u" to " % QString::number(kDefaultV2Baud) %
-             u" baud: " % m_link->errorString());
+        StateDetail d = detail(StateDetail::Kind::BaudSwitchFailed);
+        d.targetBaud = kDefaultV2Baud;
+        d.error = m_link->errorString();
+        fail(d);
         return;
     }
-    Q_EMIT progress(u"Sending HELLO on " % portDescription());
+    Q_EMIT progress(detail(StateDetail::Kind::SendingHello));
     m_phase = Phase::Hello;
     m_helloSeq = safeHelloSeq(m_queue.peekSeq());
     m_queue.setNextSeq(static_cast<quint8>(*m_helloSeq + 1));
@@ -190,29 +191,30 @@ void ProtocolDetector::onHelloTimeout()
         sendHello();
         return;
     }
-    const QString listenBaud =
-        detectsAtTwoRates() ? u" at " % QString::number(kDefaultLegacyBaud) % u" baud" : QString();
-    fail(u"No HATPIC answered on " % portDescription() % u": listened " %
-         QString::number(kListenMs) % u" ms" % listenBaud % u" for legacy frames (got " %
-         QString::number(m_legacyFrames) % u" valid, " % QString::number(kLegacyFramesNeeded) %
-         u" needed), then sent HELLO and got no " % u"HELLO_REPLY within " %
-         QString::number(kHelloWaitMs) % u" ms.");
+    StateDetail d = detail(StateDetail::Kind::NoAnswer);
+    d.listenBaud = detectsAtTwoRates() ? kDefaultLegacyBaud : 0;
+    d.listenMs = kListenMs;
+    d.legacyFrames = m_legacyFrames;
+    d.legacyFramesNeeded = kLegacyFramesNeeded;
+    d.helloWaitMs = kHelloWaitMs;
+    fail(d);
 }
 
 void ProtocolDetector::onHelloUnanswered()
 {
     if (m_phase != Phase::Hello)
         return;
-    fail(u"No HATPIC v2 device answered on " % portDescription() % u": HELLO sent " %
-         QString::number(CommandQueue::kCommandRetries + 1) % u" times, " %
-         QString::number(CommandQueue::kCommandTimeoutMs) % u" ms apart, without a HELLO_REPLY.");
+    StateDetail d = detail(StateDetail::Kind::NoHelloReply);
+    d.attempts = CommandQueue::kCommandRetries + 1;
+    d.intervalMs = CommandQueue::kCommandTimeoutMs;
+    fail(d);
 }
 
-void ProtocolDetector::fail(const QString &message)
+void ProtocolDetector::fail(const StateDetail &detail)
 {
     m_timer.stop();
     m_phase = Phase::Idle;
-    Q_EMIT failed(message);
+    Q_EMIT failed(detail);
 }
 
 } // namespace hatpic

@@ -45,11 +45,11 @@ public:
 
 Q_SIGNALS:
     //! What detection is doing, for the Detecting state's detail.
-    void progress(const QString &detail);
+    void progress(const hatpic::StateDetail &detail);
     void foundLegacy();
     //! `rest`: the frames that came after the reply in the same read.
     void foundV2(const hatpic::v2::HelloReply &reply, const QList<hatpic::v2::Frame> &rest);
-    void failed(const QString &message);
+    void failed(const hatpic::StateDetail &detail);
 
 private:
     enum class Phase { Idle, Listening, Hello };
@@ -59,8 +59,8 @@ private:
     void sendHello();
     void onHelloTimeout();
     void onHelloUnanswered();
-    void fail(const QString &message);
-    QString portDescription() const;
+    void fail(const StateDetail &detail);
+    StateDetail detail(StateDetail::Kind kind) const;
     bool detectsAtTwoRates() const;
 
     CommandQueue &m_queue;
@@ -76,8 +76,9 @@ private:
     v2::FrameDecoder m_v2{v2::Direction::FromDevice};
 };
 
-//! "/dev/ttyUSB0 at 921600 baud", or "the simulated joystick"; `link` may be null.
-QString portDescription(const ConnectOptions &options, const ByteLink *link);
+//! A detail of `kind` naming the port and its rate (the link's, else the one it opens at).
+StateDetail stateDetail(StateDetail::Kind kind, const ConnectOptions &options,
+                        const ByteLink *link);
 //! The baud rate a link to `options` opens at.
 qint32 requestedBaud(const ConnectOptions &options);
 

@@ -56,8 +56,8 @@ public:
     virtual void sendFeedback(double tauExt) = 0;
     //! Sends a PING; false when the protocol has none or a command waits for its answer.
     virtual bool sendPing(quint32 token) = 0;
-    //! Empty when the protocol carries `kind`; else why not (one sentence).
-    virtual QString refusal(CommandKind kind) const = 0;
+    //! Reason::None when the protocol carries `kind`; else why not (Status::Unsupported).
+    virtual CommandResult::Reason refusal(CommandKind kind) const = 0;
     //! The host parameters changed (legacy: its τ limit is the host's).
     virtual void hostParamsChanged(const HostParams &host) = 0;
     //! Stops handling anything and hands its decoder's counts to the statistics.
@@ -65,8 +65,8 @@ public:
     //! The live decoder counts, for LinkStats (one of the two is null).
     virtual const v2::DecoderStats *v2Stats() const { return nullptr; }
     virtual const legacy::DecoderStats *legacyStats() const { return nullptr; }
-    //! The `Connected` state's detail, e.g. `HATPIC v2 "fw 1.0" on /dev/ttyUSB0 at 921600 baud`.
-    virtual QString connectedDetail(const QString &port) const = 0;
+    //! The `Connected` state's detail kind (ConnectedV2, ConnectedLegacy).
+    virtual StateDetail::Kind connectedKind() const = 0;
 };
 
 } // namespace hatpic

@@ -33,9 +33,6 @@ public:
     void zeroed(double theta0Before);                                      //!< ZERO took effect
     void hostChanged(const HostParams &from, const HostParams &to);
     void referenceReset();
-    //! Reports a status that is not the writer's own (a refused start).
-    void report(const QString &error);
-
 Q_SIGNALS:
     void statusChanged(const hatpic::RecordingStatus &status);
     //! Before each periodic flush: the samples waiting elsewhere belong in it (direct call).
@@ -43,6 +40,8 @@ Q_SIGNALS:
 
 private:
     void onFlushTick();
+    //! Emits the writer's status, with `error` when given.
+    void report(const QString &error);
 
     RecordingWriter m_writer;
     QTimer m_timer;

@@ -47,6 +47,16 @@ QString commandName(CommandKind kind)
     return {};
 }
 
+CommandResult commandResult(CommandKind command, CommandResult::Status status,
+                            CommandResult::Reason reason)
+{
+    CommandResult r;
+    r.command = command;
+    r.status = status;
+    r.reason = reason;
+    return r;
+}
+
 quint64 LinkStats::totalDecoderDrops() const
 {
     return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));
@@ -74,6 +84,8 @@ void registerSessionMetaTypes()
     qRegisterMetaType<hatpic::HandInput>();
     qRegisterMetaType<hatpic::ConnectOptions>();
     qRegisterMetaType<hatpic::SessionState>();
+    qRegisterMetaType<hatpic::StateDetail>();
+    qRegisterMetaType<hatpic::SessionNotice>();
     qRegisterMetaType<hatpic::DeviceInfo>();
     qRegisterMetaType<hatpic::CommandResult>();
     qRegisterMetaType<hatpic::LinkStats>();

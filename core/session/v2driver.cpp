@@ -5,7 +5,6 @@
 #include "session/samplebuilder.h"
 
 #include <QLoggingCategory>
-#include <QStringBuilder>
 
 #include <cmath>
 
@@ -131,8 +130,7 @@ void V2Driver::onAcknowledged(const Command &command)
         m_pendingEffect = PendingEffect{command.kind, command.params};
         return;
     case CommandKind::SetStream:
-        m_streamRateHz = command.rate;
-        m_host.statistics().restartSeq();
+        m_host.statistics().restartSeq(); // a new stream: no gap to count against the old
         return;
     default:
         return;
@@ -160,11 +158,6 @@ bool V2Driver::sendPing(quint32 token)
         return false;
     m_host.write(v2::encodeFrame(m_queue.nextSeq(), v2::Ping{token}));
     return true;
-}
-
-QString V2Driver::connectedDetail(const QString &port) const
-{
-    return u"HATPIC v2 \"" % m_info.firmware % u"\" on " % port;
 }
 
 } // namespace hatpic

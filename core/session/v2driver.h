@@ -32,11 +32,14 @@ public:
     void handleFrames(const QList<v2::Frame> &frames);
     void sendFeedback(double tauExt) override;
     bool sendPing(quint32 token) override;
-    QString refusal(CommandKind) const override { return {}; }
+    CommandResult::Reason refusal(CommandKind) const override
+    {
+        return CommandResult::Reason::None;
+    }
     void hostParamsChanged(const HostParams &) override {}
     void close() override;
     const v2::DecoderStats *v2Stats() const override { return &m_decoder.stats(); }
-    QString connectedDetail(const QString &port) const override;
+    StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedV2; }
 
 private:
     struct PendingEffect
@@ -54,7 +57,7 @@ private:
     DriverHost &m_host;
     CommandQueue &m_queue;
     DeviceInfo m_info;
-    quint16 m_streamRateHz;
+    quint16 m_streamRateHz; //!< asked for on start()
     v2::FrameDecoder m_decoder;
     quint8 m_feedbackSeq = 0;
     std::optional<PendingEffect> m_pendingEffect;
