@@ -2,6 +2,7 @@
 
 #include "console.h"
 #include "exitcode.h"
+#include "sessiontext.h"
 
 #include "model/params.h"
 #include "telemetry/numbertext.h"
@@ -35,7 +36,7 @@ DeviceRunner::DeviceRunner(const DeviceOptions &options) : m_options(options)
 {
     QObject::connect(
         &m_client, &DeviceClient::stateChanged, &m_context,
-        [this](SessionState state, const QString &detail) { onStateChanged(state, detail); });
+        [this](SessionState state, const StateDetail &detail) { onStateChanged(state, detail); });
 }
 
 DeviceRunner::~DeviceRunner()
@@ -45,14 +46,14 @@ DeviceRunner::~DeviceRunner()
         m_client.disconnectDevice();
 }
 
-void DeviceRunner::onStateChanged(SessionState state, const QString &detail)
+void DeviceRunner::onStateChanged(SessionState state, const StateDetail &detail)
 {
     if (!m_started || m_closing)
         return;
     const bool gone = state == SessionState::Lost || state == SessionState::Disconnected;
     if (gone && !m_lost) {
         m_lost = true;
-        m_lostDetail = detail;
+        m_lostDetail = stateDetailText(detail);
     }
 }
 
@@ -194,39 +195,13 @@ int DeviceRunner::runFor(double seconds, const std::function<bool()> &stop)
     return ExitNoDevice;
 }
 
-int DeviceRunner::reportResult(const CommandResult &result, const QString &what)
+int DeviceRunner::reportResult(const CommandResult &result)
 {
     using Status = CommandResult::Status;
     if (result.status == Status::Ok)
         return ExitSuccess;
 
-    QString sentence = result.message.trimmed();
-    if (sentence.isEmpty()) {
-        switch (result.status) {
-        case Status::Ok:
-            break;
-        case Status::Rejected: {
-            sentence =
-                u"The device rejected " + what + u" with " + v2::ackStatusName(result.ackStatus);
-            const auto field = deviceFieldName(result.field);
-            if (!field.empty())
-                sentence += u" for " + QString::fromUtf8(field.data(), field.size());
-            break;
-        }
-        case Status::Timeout:
-            sentence = u"The device did not answer " + what + u" after the retries";
-            break;
-        case Status::NotConnected:
-            sentence = QStringLiteral("The device is not connected");
-            break;
-        case Status::Unsupported:
-            sentence = u"The device's protocol cannot carry " + what;
-            break;
-        case Status::Invalid:
-            sentence = QStringLiteral("The parameters are not valid; nothing was sent");
-            break;
-        }
-    }
+    const QString sentence = commandFailureText(result).trimmed();
     printError(asSentence(sentence));
 
     switch (result.status) {

@@ -41,12 +41,12 @@ public:
     int reportLoss() const;
 
     //! Exit code for a command outcome (0, 2, 3 or 4); prints its sentence unless Ok.
-    static int reportResult(const CommandResult &result, const QString &what);
+    static int reportResult(const CommandResult &result);
 
 private:
     enum class Wait { Done, TimedOut, Lost };
     Wait wait(const std::function<bool()> &done, double seconds);
-    void onStateChanged(SessionState state, const QString &detail);
+    void onStateChanged(SessionState state, const StateDetail &detail);
 
     DeviceOptions m_options;
     DeviceClient m_client;

@@ -45,7 +45,7 @@ protected:
         CommandResult result;
         if (const int code = runner.runCommand(&DeviceClient::readParams, &result); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(result, QStringLiteral("GET_PARAMS")); code)
+        if (const int code = DeviceRunner::reportResult(result); code)
             return code;
         // A device reporting NaN or values that break model.md is not printed as a profile
         // (nor as a table that looks fine): it is refused with what is wrong.

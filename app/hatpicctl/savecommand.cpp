@@ -32,8 +32,7 @@ protected:
         CommandResult result;
         if (const int code = runner.runCommand(&DeviceClient::saveParams, &result); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(result, QStringLiteral("SAVE_PARAMS"));
-            code)
+        if (const int code = DeviceRunner::reportResult(result); code)
             return code;
         printNote(QStringLiteral("The device saved its parameters."));
         return ExitSuccess;

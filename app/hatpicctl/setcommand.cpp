@@ -138,8 +138,7 @@ protected:
             CommandResult read;
             if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
                 return code;
-            if (const int code = DeviceRunner::reportResult(read, QStringLiteral("GET_PARAMS"));
-                code)
+            if (const int code = DeviceRunner::reportResult(read); code)
                 return code;
             // The device's floats as their shortest decimals: the same floats go back, and any
             // violation names readable values (0.4, not 0.4000000059604645).
@@ -163,8 +162,7 @@ protected:
             [&params](DeviceClient &client) { return client.pushParams(params); }, &result);
         if (code)
             return code;
-        if (const int refused = DeviceRunner::reportResult(result, QStringLiteral("SET_PARAMS"));
-            refused)
+        if (const int refused = DeviceRunner::reportResult(result); refused)
             return refused;
 
         const DeviceParams readBack = runner.client().deviceParams();

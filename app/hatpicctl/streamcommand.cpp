@@ -4,6 +4,7 @@
 #include "devicecommand.h"
 #include "devicerunner.h"
 #include "exitcode.h"
+#include "sessiontext.h"
 
 #include "telemetry/recording.h"
 #include "telemetry/samplecolumns.h"
@@ -18,6 +19,7 @@
 #include <atomic>
 #include <cmath>
 #include <csignal>
+#include <optional>
 
 namespace hatpic::cli {
 
@@ -141,8 +143,7 @@ protected:
             CommandResult read;
             if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
                 return code;
-            if (const int code = DeviceRunner::reportResult(read, QStringLiteral("GET_PARAMS"));
-                code)
+            if (const int code = DeviceRunner::reportResult(read); code)
                 return code;
             params = client.deviceParams();
         }
@@ -158,14 +159,22 @@ protected:
                 printError(u"Cannot replace " + json + u'.');
                 return ExitBadUsage;
             }
+            // The session refuses a start with a notice (no device) or a status with an error.
+            std::optional<SessionNotice> refused;
+            QObject::connect(&client, &DeviceClient::notice, &context,
+                             [&](const SessionNotice &notice) {
+                                 if (notice.kind == SessionNotice::Kind::RecordingNeedsDevice)
+                                     refused = notice;
+                             });
             client.startRecording(m_csvPath, QStringLiteral("hatpicctl stream"));
             runner.runFor(kRecordingStartWaitS, [&] {
                 const RecordingStatus status = client.recordingStatus();
-                return status.active || !status.error.isEmpty();
+                return status.active || !status.error.isEmpty() || refused;
             });
             if (!client.recordingStatus().active) {
-                printError(u"Cannot write the recording " + m_csvPath + u": " +
-                           asSentence(client.recordingStatus().error));
+                printError(
+                    u"Cannot write the recording " + m_csvPath + u": " +
+                    asSentence(refused ? noticeText(*refused) : client.recordingStatus().error));
                 return ExitBadUsage;
             }
         } else {

@@ -43,7 +43,7 @@ protected:
         CommandResult result;
         if (const int code = runner.runCommand(&DeviceClient::zero, &result); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(result, QStringLiteral("ZERO")); code)
+        if (const int code = DeviceRunner::reportResult(result); code)
             return code;
         const DeviceParams params = runner.client().deviceParams();
         printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");

@@ -19,7 +19,7 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
     // Every connection below crosses threads, so it is queued: the slot runs on this
     // object's thread with a copy of the values, and the cache is updated before re-emitting.
     connect(m_session, &DeviceSession::stateChanged, this,
-            [this](SessionState state, const QString &detail) {
+            [this](SessionState state, const StateDetail &detail) {
                 m_state = state;
                 Q_EMIT stateChanged(state, detail);
             });
@@ -44,6 +44,7 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
         },
         Qt::DirectConnection);
     connect(m_session, &DeviceSession::commandFinished, this, &DeviceClient::commandFinished);
+    connect(m_session, &DeviceSession::notice, this, &DeviceClient::notice);
     connect(
         m_session, &DeviceSession::statsUpdated, this,
         [this](const LinkStats &stats) {

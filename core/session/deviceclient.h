@@ -60,14 +60,17 @@ public:
     quint64 droppedSampleBatches() const { return m_droppedBatches.load(); }
 
 Q_SIGNALS:
-    void stateChanged(hatpic::SessionState state, const QString &detail);
+    //! `detail` says why, in codes and numbers (ui/ and hatpicctl word it).
+    void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
     void deviceParamsChanged(const hatpic::DeviceParams &params); //!< the device's read-back
     void samplesReady(const hatpic::SampleBatch &batch);
     void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
     void recordingChanged(const hatpic::RecordingStatus &status);
-    void deviceLog(const QString &line);
+    void deviceLog(const QString &line); //!< what the device says for people
+    //! The session's own notes for people (a recording closed by a loss, …); never dropped.
+    void notice(const hatpic::SessionNotice &notice);
 
 private:
     quint64 nextId() { return ++m_lastId; }

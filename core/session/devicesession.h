@@ -1,50 +1,37 @@
-// The worker behind DeviceClient: owns the port, the protocol state machine, the reference
-// model and the recorder. A plain QObject that lives on the session thread (DeviceClient
-// moves it there); every method must be called on that thread. It works on any thread with
-// an event loop, which is how the tests drive it directly.
+// The worker behind DeviceClient: owns the port and wires the session's parts together —
+// protocol detection, the command queue, one protocol driver while connected, the feedback
+// and PING streams, the link statistics and the sample pipeline (batches, recording). A plain
+// QObject that lives on the session thread (DeviceClient moves it there); every method must
+// be called on that thread. It works on any thread with an event loop, which is how the tests
+// drive it directly.
 #pragma once
 
-#include "protocol/legacy.h"
-#include "protocol/v2codec.h"
-#include "session/rttstats.h"
-#include "session/samplebuilder.h"
+#include "session/commandqueue.h"
+#include "session/linkstatistics.h"
+#include "session/protocoldetector.h"
+#include "session/protocoldriver.h"
+#include "session/samplepipeline.h"
 #include "session/sessiontypes.h"
-#include "session/telemetrysequence.h"
-#include "telemetry/recordingwriter.h"
+#include "session/streams.h"
 #include "telemetry/sample.h"
 
 #include <QElapsedTimer>
-#include <QHash>
-#include <QList>
 #include <QObject>
-#include <QPointer>
 #include <QTimer>
 
-#include <deque>
-#include <optional>
+#include <memory>
 
 namespace hatpic {
 
 class ByteLink;
 class SimLink;
 
-class DeviceSession : public QObject
+class DeviceSession : public QObject, private DriverHost
 {
     Q_OBJECT
 public:
-    static constexpr int kListenMs = 500;            //!< detection: listen for legacy frames [ms]
-    static constexpr int kHelloWaitMs = 500;         //!< detection: wait for HELLO_REPLY [ms]
-    static constexpr int kHelloSends = 4;            //!< detection: HELLOs sent within the wait
-    static constexpr int kLegacyFramesNeeded = 2;    //!< legacy frames that decide "legacy"
-    static constexpr int kCommandTimeoutMs = 250;    //!< resend a command after this [ms]
-    static constexpr int kCommandRetries = 3;        //!< resends before Timeout
-    static constexpr int kMaxQueuedCommands = 16;    //!< commands waiting behind the one in flight
     static constexpr int kReconnectIntervalMs = 500; //!< reopen attempts after a loss [ms]
-    static constexpr int kPingIntervalMs = 1000;     //!< PING period (v2) [ms]
-    static constexpr int kMaxPendingPings = 16;      //!< unanswered PING tokens remembered
     static constexpr int kStatsIntervalMs = 250;     //!< statsUpdated() period [ms]
-    static constexpr int kBatchIntervalMs = 20;      //!< samplesReady() at least this often [ms]
-    static constexpr int kBatchMaxSamples = 64;      //!< …or when this many samples wait
     static constexpr int kSilenceTimeoutMs =
         2000; //!< connected but no byte for this long → lost [ms]
 
@@ -78,165 +65,81 @@ public:
     //! The in-process simulator's link while connected to "sim", else null.
     SimLink *simLink() const;
     //! Stops (or resumes) the feedback stream, e.g. to see the device's watchdog act.
-    void setFeedbackPaused(bool paused);
+    void setFeedbackPaused(bool paused) { m_feedback.setPaused(paused); }
     //! Off: pushParams() sends without host-side validation, to exercise device rejections.
     void setValidateBeforeSending(bool validate) { m_validate = validate; }
 
 Q_SIGNALS:
-    void stateChanged(hatpic::SessionState state, const QString &detail);
+    void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
     void deviceParamsChanged(const hatpic::DeviceParams &params);
     void samplesReady(const hatpic::SampleBatch &batch);
     void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
     void recordingChanged(const hatpic::RecordingStatus &status);
+    //! What the device says for people (v2 LOG, legacy boot text).
     void deviceLog(const QString &line);
+    void notice(const hatpic::SessionNotice &notice);
 
 private:
-    enum class Phase { Idle, Listening, Hello, Connected };
-    enum class CommandKind { Hello, GetParams, SetParams, SetStream, Zero, SaveParams };
-
-    struct Command
-    {
-        quint64 id = 0; //!< 0 = the session's own (connect sequence), not reported
-        CommandKind kind = CommandKind::GetParams;
-        DeviceParams params;   //!< SET_PARAMS: what was sent (float32-rounded)
-        quint16 rate = 0;      //!< SET_STREAM
-        bool readBack = false; //!< the GET_PARAMS stage after SET_PARAMS / ZERO
-        CommandKind origin = CommandKind::GetParams; //!< the command a read-back belongs to
-        quint8 seq = 0;
-        int retries = 0;
-        QByteArray wire;
-    };
-
-    struct PendingEffect
-    {
-        CommandKind kind = CommandKind::SetParams; //!< SetParams or Zero
-        DeviceParams params;
-    };
-
     // connection
     void openLink();
     void closeLink();
-    void setState(SessionState state, const QString &detail = {});
-    void startDetection();
-    void onListenTimeout();
-    void onHelloTimeout();
-    void sendDetectionHello();
-    void failDetection(const QString &message);
-    void becomeConnectedV2(const v2::HelloReply &reply);
-    void becomeConnectedLegacy();
-    void startConnectedTimers();
-    void linkLost(const QString &reason);
+    void setState(SessionState state, const StateDetail &detail = {});
+    StateDetail detail(StateDetail::Kind kind) const;
+    void failDetection(const StateDetail &detail);
+    void onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame> &rest);
+    void onFoundLegacy();
+    void becomeConnected(std::unique_ptr<ProtocolDriver> driver);
+    void linkLost(const QString &reason); //!< the link failed
+    void loseLink(const StateDetail &lost);
     void tryReconnect();
-    QString portDescription() const;
-    qint32 requestedBaud() const;
-    bool detectsAtTwoRates() const;
-
-    // bytes in
     void onBytes(const QByteArray &bytes);
-    void handleV2Frame(const v2::Frame &frame);
-    void handleTelemetry(quint8 seq, const v2::Telemetry &telemetry);
-    void handleLegacyFrame(const legacy::Frame &frame);
-    void handleAck(const v2::Ack &ack);
-    void handleParams(const DeviceParams &params);
-    void handlePong(quint32 token);
+    void onStatsTick();
+    void sendFeedback(double tauExt); //!< through the driver, while connected
+    bool sendPing(quint32 token);     //!< through the driver; false when none went out
 
     // commands
-    void enqueue(Command command);
-    void pump();
-    void sendInflight();
-    void onCommandTimeout();
-    void finishInflight(const CommandResult &result);
-    void failAllCommands(const QString &message);
-    static QString commandName(CommandKind kind);
-    quint8 nextSeq();
+    void submit(Command command);
+    void onCommandFinished(const Command &command, const CommandResult &result);
 
-    // streams
-    void sendFeedback();
-    void sendPing();
-    void onStatsTick();
-
-    // samples, events, recording
-    void pushSample(const Sample &sample);
-    void flushBatch();
-    void applyPendingEffect();
-    void addEvent(const QString &text);
-    void onRecordingFlushTick();
-    void closeRecording(const QString &error = {});
-    void emitRecordingStatus(const QString &error = {});
-
-    qint64 hostUs() const { return m_clock.nsecsElapsed() / 1000; }
+    // DriverHost
+    DriverHost &host() { return *this; }
+    void write(const QByteArray &bytes) override;
+    SampleBuilder &builder() override { return m_samples.builder(); }
+    LinkStatistics &statistics() override { return m_statistics; }
+    qint64 hostUs() const override { return m_clock.nsecsElapsed() / 1000; }
+    void pushSample(const Sample &sample) override { m_samples.push(sample); }
+    void applyEffect(CommandKind kind, const DeviceParams &params) override
+    {
+        m_samples.applyEffect(kind, params);
+    }
+    void paramsReceived(const DeviceParams &params) override { m_samples.paramsReceived(params); }
+    void pongReceived(quint32 token) override { m_ping.onPong(token); }
+    void deviceText(const QString &line) override { Q_EMIT deviceLog(line); }
+    bool linkOpen() const override { return m_link != nullptr; }
 
     ConnectOptions m_options;
     SessionState m_state = SessionState::Disconnected;
-    QString m_stateDetail;
-    Phase m_phase = Phase::Idle;
-    WireProtocol m_protocol = WireProtocol::V2;
+    StateDetail m_stateDetail;
     DeviceInfo m_info;
     bool m_wanted = false;        //!< the user asked to be connected
     bool m_everConnected = false; //!< since connectDevice(): losses reconnect
-    bool m_paramsKnown = false;   //!< a PARAMS arrived on this connection
     bool m_validate = true;
-    bool m_feedbackPaused = false;
 
     ByteLink *m_link = nullptr;
     QElapsedTimer m_clock;
-    QTimer m_detectTimer;
-    QTimer m_commandTimer;
     QTimer m_reconnectTimer;
-    QTimer m_feedbackTimer;
-    QTimer m_pingTimer;
     QTimer m_statsTimer;
-    QTimer m_batchTimer;
-    QTimer m_recordingTimer;
 
-    // detection
-    legacy::Decoder m_detectLegacy;
-    int m_detectLegacyFrames = 0;
-    std::optional<quint8> m_helloSeq;
-    int m_helloSends = 0;
-
-    // decoding
-    v2::FrameDecoder m_v2{v2::Direction::FromDevice};
-    legacy::Decoder m_legacy;
-    QList<v2::Frame> m_v2Frames;
-    QList<legacy::Frame> m_legacyFrames;
-    QStringList m_textLines;
-
-    // commands
-    std::optional<Command> m_inflight;
-    std::deque<Command> m_queue;
-    quint8 m_seq = 0;
-    quint8 m_feedbackSeq = 0;
-    std::optional<PendingEffect> m_pendingEffect;
-
-    // streams
-    double m_tauExt = 0;                                         //!< requested feedback [N·m]
-    int m_legacyField = legacy::Conversion().feedbackToField(0); //!< last legacy A sent
-    quint32 m_pingToken = 0;
-    QHash<quint32, qint64> m_pings; //!< token → send time [ns]
-    RttStats m_rtt;
-    TelemetrySequence m_telemetrySeq;
-    qint64 m_lastRxNs = 0;
-
-    // statistics
-    LinkStats m_stats; //!< counters; decoder drops of closed links are in m_dropBase
-    std::array<quint64, v2::kDropReasonCount> m_dropBase{};
-    quint64 m_legacyMalformedBase = 0;
-    struct RateMark
-    {
-        qint64 ns;
-        quint64 frames;
-        quint64 bytes;
-    };
-    std::deque<RateMark> m_rateMarks;
-
-    // samples
-    SampleBuilder m_builder;
-    SampleBatch m_batch;
-    RecordingWriter m_recorder;
-    QString m_recordingError;
+    LinkStatistics m_statistics;
+    CommandQueue m_queue;
+    ProtocolDetector m_detector;
+    std::unique_ptr<ProtocolDriver> m_driver;  //!< while connected
+    std::unique_ptr<ProtocolDriver> m_retired; //!< the last one, closed (it may be on the stack)
+    FeedbackStream m_feedback;
+    PingProbe m_ping;
+    SamplePipeline m_samples;
 };
 
 } // namespace hatpic

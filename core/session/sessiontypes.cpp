@@ -28,6 +28,35 @@ QString sessionStateName(SessionState state)
     return QStringLiteral("unknown");
 }
 
+QString commandName(CommandKind kind)
+{
+    switch (kind) {
+    case CommandKind::Hello:
+        return QStringLiteral("HELLO");
+    case CommandKind::GetParams:
+        return QStringLiteral("GET_PARAMS");
+    case CommandKind::SetParams:
+        return QStringLiteral("SET_PARAMS");
+    case CommandKind::SetStream:
+        return QStringLiteral("SET_STREAM");
+    case CommandKind::Zero:
+        return QStringLiteral("ZERO");
+    case CommandKind::SaveParams:
+        return QStringLiteral("SAVE_PARAMS");
+    }
+    return {};
+}
+
+CommandResult commandResult(CommandKind command, CommandResult::Status status,
+                            CommandResult::Reason reason)
+{
+    CommandResult r;
+    r.command = command;
+    r.status = status;
+    r.reason = reason;
+    return r;
+}
+
 quint64 LinkStats::totalDecoderDrops() const
 {
     return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));
@@ -55,6 +84,8 @@ void registerSessionMetaTypes()
     qRegisterMetaType<hatpic::HandInput>();
     qRegisterMetaType<hatpic::ConnectOptions>();
     qRegisterMetaType<hatpic::SessionState>();
+    qRegisterMetaType<hatpic::StateDetail>();
+    qRegisterMetaType<hatpic::SessionNotice>();
     qRegisterMetaType<hatpic::DeviceInfo>();
     qRegisterMetaType<hatpic::CommandResult>();
     qRegisterMetaType<hatpic::LinkStats>();

@@ -12,6 +12,7 @@
 
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
 
 #include <array>
 
@@ -34,8 +35,52 @@ struct ConnectOptions
     SimulatedDevice::Config sim; //!< used when port == "sim"
 };
 
+//! The commands of the v2 protocol the session sends (HELLO only while detecting).
+enum class CommandKind { Hello, GetParams, SetParams, SetStream, Zero, SaveParams };
+QString commandName(CommandKind kind); //!< the wire name: "SET_PARAMS", …
+
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
 QString sessionStateName(SessionState state); //!< "disconnected", "opening", …
+
+//! Why the session is in its state (stateChanged's detail), in codes, names and numbers. The
+//! session composes no sentence; ui/ (with tr()) and hatpicctl word it.
+struct StateDetail
+{
+    enum class Kind {
+        None,             //!< nothing to tell (e.g. disconnected by the user)
+        Opening,          //!< opening the port
+        OpenFailed,       //!< the port did not open: `error` is the system's reason
+        UsingLegacy,      //!< the legacy protocol was chosen: no detection
+        AskingHello,      //!< v2 was chosen: HELLO sent, waiting for HELLO_REPLY
+        Listening,        //!< auto, step 1: listening for legacy frames
+        SendingHello,     //!< auto, step 2: HELLO sent, waiting for HELLO_REPLY
+        BaudSwitchFailed, //!< auto: the port would not switch to `targetBaud`; `error`
+        NoAnswer,     //!< auto: neither protocol answered (listen…, legacyFrames…, helloWaitMs)
+        NoHelloReply, //!< v2 chosen: HELLO went unanswered (attempts, intervalMs)
+        Refused,      //!< HELLO_REPLY failed the checks; `error` says which (deviceinfo.h)
+        ConnectedV2,  //!< a v2 device answered; `firmware`
+        ConnectedLegacy, //!< a legacy device was found (or chosen)
+        LinkFailed,      //!< lost: `error` is the link's reason
+        Silent,          //!< lost: no byte for `silenceMs`
+    };
+    Kind kind = Kind::None;
+    QString port;               //!< as given; kSimPortName for the simulated joystick
+    qint32 baud = 0;            //!< the link's rate at the time [bit/s]
+    QString error;              //!< the system's, the link's or the check's own text
+    QString firmware;           //!< ConnectedV2: as the device reports it (printable)
+    qint32 targetBaud = 0;      //!< BaudSwitchFailed [bit/s]
+    qint32 listenBaud = 0;      //!< NoAnswer: the rate it listened at, if not `baud`; else 0
+    int listenMs = 0;           //!< NoAnswer: how long it listened [ms]
+    int legacyFrames = 0;       //!< NoAnswer: valid legacy frames heard
+    int legacyFramesNeeded = 0; //!< NoAnswer: frames that decide "legacy"
+    int helloWaitMs = 0;        //!< NoAnswer: how long it waited for HELLO_REPLY [ms]
+    int attempts = 0;           //!< NoHelloReply: HELLOs sent
+    int intervalMs = 0;         //!< NoHelloReply: between them [ms]
+    int silenceMs = 0;          //!< Silent [ms]
+
+    bool simulated() const { return port == QStringView(kSimPortName); }
+    friend bool operator==(const StateDetail &, const StateDetail &) = default;
+};
 
 //! "K_max 0.4 → 0.6; N 0.1 → 0.12": every device field that differs as it travels on the wire
 //! (the text of recording events and of the tuner's push markers). Empty when nothing does.
@@ -44,25 +89,65 @@ QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
 
-//! Outcome of one command (SET_PARAMS, SET_STREAM, ZERO, SAVE_PARAMS, GET_PARAMS).
+//! Outcome of one command (SET_PARAMS, SET_STREAM, ZERO, SAVE_PARAMS, GET_PARAMS): what
+//! happened, in codes and numbers. The session composes no sentence; ui/ (with tr()) and
+//! hatpicctl word it.
 struct CommandResult
 {
     enum class Status {
         Ok,       //!< ACK OK (or PARAMS for GET_PARAMS)
         Rejected, //!< device answered with a non-OK ACK: see ackStatus / field
-        Timeout,  //!< no answer after the retries
+        Timeout,  //!< no answer after the retries: see attempts, intervalMs
         NotConnected,
-        Unsupported, //!< the protocol cannot carry it (legacy)
-        Invalid,     //!< refused by host-side validation before sending
+        Unsupported, //!< the protocol cannot carry it (legacy): see reason
+        Invalid,     //!< refused before sending: see reason
+    };
+    //! The finer cause, where the status has several.
+    enum class Reason {
+        None,
+        ReadBackUnanswered, //!< Ok: acknowledged, but the GET_PARAMS read-back went unanswered
+        NoDevice,           //!< NotConnected: no device was connected
+        Disconnected,       //!< NotConnected: the session was disconnected before the answer
+        ConnectionLost,     //!< NotConnected: the link was lost before the answer
+        DetectionFailed,    //!< NotConnected: detection gave up (only the session's HELLO)
+        NoParameters,       //!< Unsupported: the legacy firmware cannot send or take parameters
+        FixedRate,          //!< Unsupported: the legacy firmware streams at its own rate
+        InvalidParams,      //!< Invalid: host-side validation refused; see problems
+        QueueFull,          //!< Invalid: `limit` commands were already waiting
     };
     Status status = Status::Ok;
+    Reason reason = Reason::None;
+    CommandKind command = CommandKind::GetParams; //!< the command (a rejection: the frame refused)
     v2::AckStatus ackStatus = v2::AckStatus::Ok;
     int field = -1;               //!< ParamBlock index the device named, or -1
-    QString message;              //!< one clear sentence for a person
     bool readBack = false;        //!< a GET_PARAMS read-back followed (SET_PARAMS, ZERO)
     bool readBackMatches = false; //!< SET_PARAMS: the read-back equals what was sent (float32)
+    DeviceParams sent;            //!< SET_PARAMS: what was sent (float32-rounded)
+    DeviceParams received;        //!< GET_PARAMS or a read-back: what the device holds
+    quint16 rate = 0;             //!< SET_STREAM: the rate asked for [Hz]; 0 = stop
+    int attempts = 0;             //!< Timeout: frames sent
+    int intervalMs = 0;           //!< Timeout: between them [ms]
+    int limit = 0;                //!< QueueFull: commands that may wait
+    QStringList problems;         //!< InvalidParams: the violations, as core/model words them
     bool ok() const { return status == Status::Ok; }
 };
+
+//! Something the session tells a person that is neither a state, a command's result nor the
+//! device's own text. ui/ and hatpicctl word it.
+struct SessionNotice
+{
+    enum class Kind {
+        RecordingNeedsDevice,  //!< startRecording() while not connected: nothing was opened
+        RecordingClosedByLoss, //!< the device was lost, so the recording was closed (files whole)
+        HostParamsRefused,     //!< setHostParams() refused: `problems`; the old ones stay
+    };
+    Kind kind = Kind::RecordingNeedsDevice;
+    QStringList problems; //!< HostParamsRefused: the violations, as core/model words them
+};
+
+//! A result for `command` with `status` and `reason`; the other fields at their defaults.
+CommandResult commandResult(CommandKind command, CommandResult::Status status,
+                            CommandResult::Reason reason = CommandResult::Reason::None);
 
 struct LinkStats
 {
@@ -87,6 +172,8 @@ struct LinkStats
 
 Q_DECLARE_METATYPE(hatpic::ConnectOptions)
 Q_DECLARE_METATYPE(hatpic::SessionState)
+Q_DECLARE_METATYPE(hatpic::StateDetail)
+Q_DECLARE_METATYPE(hatpic::SessionNotice)
 Q_DECLARE_METATYPE(hatpic::DeviceInfo)
 Q_DECLARE_METATYPE(hatpic::CommandResult)
 Q_DECLARE_METATYPE(hatpic::LinkStats)

@@ -1,5 +1,6 @@
 #include "editor/deviceparameterlink.h"
 
+#include "editor/commandtext.h"
 #include "editor/parametereditor.h"
 #include "session/deviceclient.h"
 
@@ -86,7 +87,7 @@ void DeviceParameterLink::finishPush(const CommandResult &result)
         if (!change.isEmpty())
             Q_EMIT deviceChanged(change);
     } else {
-        m_lastMessage = tr("Push failed: %1").arg(result.message);
+        m_lastMessage = tr("Push failed: %1").arg(CommandText::commandFailure(result));
     }
     Q_EMIT commandFinished(m_lastMessage);
 }
@@ -105,8 +106,9 @@ void DeviceParameterLink::finishCommand(Command command, const CommandResult &re
         what = tr("Save in device");
         break;
     }
-    m_lastMessage =
-        result.ok() ? tr("%1: done.").arg(what) : tr("%1 failed: %2").arg(what, result.message);
+    m_lastMessage = result.ok()
+                        ? tr("%1: done.").arg(what)
+                        : tr("%1 failed: %2").arg(what, CommandText::commandFailure(result));
     if (result.ok() && command == Command::Zero)
         Q_EMIT deviceChanged(tr("ZERO: θ0 := current angle"));
     Q_EMIT commandFinished(m_lastMessage);

@@ -73,9 +73,7 @@ bool SyncTracker::pushFinished(const CommandResult &result)
     switch (result.status) {
     case CommandResult::Status::Rejected: {
         m_failure = SyncState::Rejected;
-        QString reason = result.message;
-        if (reason.isEmpty())
-            reason = v2::ackStatusName(result.ackStatus);
+        QString reason = v2::ackStatusName(result.ackStatus);
         const QString name = QString::fromLatin1(deviceFieldName(result.field));
         if (!name.isEmpty() && !reason.contains(name))
             reason += u" ("_s + name + u')';
@@ -87,9 +85,19 @@ bool SyncTracker::pushFinished(const CommandResult &result)
         m_failure = SyncState::Timeout;
         m_failureText = tr("timeout: the device did not answer");
         break;
+    case CommandResult::Status::NotConnected:
+        m_failure = SyncState::Failed;
+        m_failureText = tr("push failed: not connected to the device");
+        break;
+    case CommandResult::Status::Unsupported:
+        m_failure = SyncState::Failed;
+        m_failureText = tr("push failed: the device's protocol cannot carry parameters");
+        break;
     default:
         m_failure = SyncState::Failed;
-        m_failureText = tr("push failed: %1").arg(result.message);
+        m_failureText = result.problems.isEmpty()
+                            ? tr("push failed: the command was not sent")
+                            : tr("push failed: %1").arg(result.problems.join(u"; "_s));
         break;
     }
     return true;

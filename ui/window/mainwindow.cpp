@@ -4,6 +4,7 @@
 #include "connection/linkbanner.h"
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
+#include "connection/sessiontext.h"
 #include "editor/deviceparameterlink.h"
 #include "editor/parametereditor.h"
 #include "editor/profilecontroller.h"
@@ -251,6 +252,11 @@ void MainWindow::connectParts()
         m_log->appendPlainText(line);
         showStatus(tr("Device: %1").arg(line));
     });
+    connect(m_client, &DeviceClient::notice, this, [this](const SessionNotice &notice) {
+        const QString text = SessionText::notice(notice);
+        m_log->appendPlainText(text);
+        showStatus(text);
+    });
 
     // What the plots and the stiffness view show: the feed, live or replay.
     connect(m_client, &DeviceClient::samplesReady, m_feed, &PlotFeed::appendLive);
@@ -315,8 +321,9 @@ void MainWindow::disconnectDevice()
     m_client->disconnectDevice();
 }
 
-void MainWindow::onStateChanged(SessionState state, const QString &detail)
+void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
 {
+    const QString detail = SessionText::stateDetail(event);
     m_connection->setState(state);
     m_linkStatus->setState(state);
     m_banner->setState(state, detail, m_port);

@@ -75,7 +75,7 @@ private:
     void readSettings();
     void writeSettings() const;
 
-    void onStateChanged(SessionState state, const QString &detail);
+    void onStateChanged(SessionState state, const StateDetail &event);
     void onDeviceInfo(const DeviceInfo &info);
     void setAngleInDegrees(bool degrees);
     void showStatus(const QString &message);

@@ -124,7 +124,7 @@ void TestDeviceClient::cacheIsUpdatedBeforeSignals()
 {
     DeviceClient client;
     int checks = 0;
-    connect(&client, &DeviceClient::stateChanged, this, [&](SessionState s, const QString &) {
+    connect(&client, &DeviceClient::stateChanged, this, [&](SessionState s, const StateDetail &) {
         QCOMPARE(client.state(), s);
         ++checks;
     });

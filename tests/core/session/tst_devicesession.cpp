@@ -39,6 +39,15 @@ ConnectOptions simOptions(WireProtocol protocol, ProtocolChoice choice = Protoco
     return o;
 }
 
+//! A failed result's codes, for a test's failure message.
+QString statusText(const CommandResult &r)
+{
+    return u"status %1, reason %2, ack %3, field %4"_s.arg(int(r.status))
+        .arg(int(r.reason))
+        .arg(int(r.ackStatus))
+        .arg(r.field);
+}
+
 //! Parameters as a device holds them: each field rounded to float32.
 DeviceParams asFloat(const DeviceParams &p)
 {
@@ -54,7 +63,7 @@ struct Harness
     DeviceSession session;
     QList<Sample> samples;
     QHash<quint64, CommandResult> results;
-    QList<QPair<SessionState, QString>> states;
+    QList<QPair<SessionState, StateDetail>> states;
     QList<DeviceParams> params;
     QList<RecordingStatus> recording;
     LinkStats lastStats;
@@ -67,7 +76,7 @@ struct Harness
         QObject::connect(&session, &DeviceSession::commandFinished,
                          [this](quint64 id, const CommandResult &r) { results.insert(id, r); });
         QObject::connect(&session, &DeviceSession::stateChanged,
-                         [this](SessionState s, const QString &d) {
+                         [this](SessionState s, const StateDetail &d) {
                              states.append({s, d});
                          });
         QObject::connect(&session, &DeviceSession::deviceParamsChanged,
@@ -82,7 +91,7 @@ struct Harness
         return std::any_of(states.cbegin(), states.cend(),
                            [s](const auto &p) { return p.first == s; });
     }
-    QString detailOf(SessionState s) const
+    StateDetail detailOf(SessionState s) const
     {
         for (auto it = states.crbegin(); it != states.crend(); ++it) {
             if (it->first == s)
@@ -298,7 +307,7 @@ void TestDeviceSession::pushParamsReadsBack()
     h.session.pushParams(7, p);
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(7), kCommandWaitMs);
     const CommandResult r = h.results.value(7);
-    QVERIFY2(r.ok(), qPrintable(r.message));
+    QVERIFY2(r.ok(), qPrintable(statusText(r)));
     QVERIFY(r.readBack);
     QVERIFY(r.readBackMatches);
     QCOMPARE(h.params.last().K_max, double(0.6f));
@@ -309,7 +318,7 @@ void TestDeviceSession::pushParamsReadsBack()
     // ZERO makes the current angle θ0; the read-back shows it.
     h.session.zero(8);
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(8), kCommandWaitMs);
-    QVERIFY2(h.results.value(8).ok(), qPrintable(h.results.value(8).message));
+    QVERIFY2(h.results.value(8).ok(), qPrintable(statusText(h.results.value(8))));
     QCOMPARE(h.params.last().theta0, h.session.simLink()->device()->params().theta0);
 
     h.session.saveParams(9);
@@ -333,7 +342,9 @@ void TestDeviceSession::invalidParamsAreRefusedOnTheHost()
     QTRY_VERIFY(h.results.contains(1));
     const CommandResult r = h.results.value(1);
     QCOMPARE(r.status, CommandResult::Status::Invalid);
-    QVERIFY2(r.message.contains(u"K_min") && r.message.contains(u"Q_dz"), qPrintable(r.message));
+    QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
+    const QString problems = r.problems.join(u"; "_s);
+    QVERIFY2(problems.contains(u"K_min") && problems.contains(u"Q_dz"), qPrintable(problems));
     QCOMPARE(h.session.simLink()->device()->params(), asFloat(DeviceParams()));
 }
 
@@ -358,8 +369,7 @@ void TestDeviceSession::rejectionLeavesDeviceParamsUnchanged()
     QCOMPARE(r.status, CommandResult::Status::Rejected);
     QCOMPARE(r.ackStatus, v2::AckStatus::OutOfRange);
     QCOMPARE(r.field, 3);
-    QVERIFY2(r.message.contains(u"The device rejected K_max (field 3): OUT_OF_RANGE"),
-             qPrintable(r.message));
+    QCOMPARE(r.command, CommandKind::SetParams);
 
     h.session.readParams(3);
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(3), kCommandWaitMs);
@@ -394,11 +404,13 @@ void TestDeviceSession::lostCommandIsRetried()
     QCOMPARE(h.session.simLink()->droppedHostFrames(), dropped);
     QCOMPARE(h.session.stats().retries - retriesBefore, quint64(std::min(dropped, 3)));
     if (succeeds) {
-        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY2(r.ok(), qPrintable(statusText(r)));
         QCOMPARE(h.session.simLink()->device()->params().K_max, double(0.7f));
     } else {
         QCOMPARE(r.status, CommandResult::Status::Timeout);
-        QVERIFY2(r.message.contains(u"SET_PARAMS"), qPrintable(r.message));
+        QCOMPARE(r.command, CommandKind::SetParams);
+        QCOMPARE(r.attempts, CommandQueue::kCommandRetries + 1);
+        QCOMPARE(r.intervalMs, CommandQueue::kCommandTimeoutMs);
         QCOMPARE(h.session.simLink()->device()->params().K_max,
                  double(float(DeviceParams().K_max)));
     }
@@ -432,8 +444,8 @@ void TestDeviceSession::legacyCommandsAreUnsupported()
         h.session.setStreamRate(1, 100);
     QTRY_VERIFY(h.results.contains(1));
     QCOMPARE(h.results.value(1).status, CommandResult::Status::Unsupported);
-    QVERIFY2(h.results.value(1).message.contains(u"published firmware"),
-             qPrintable(h.results.value(1).message));
+    QCOMPARE(h.results.value(1).reason, command == u"stream" ? CommandResult::Reason::FixedRate
+                                                             : CommandResult::Reason::NoParameters);
     // Host parameters still apply.
     HostParams host;
     host.v_max = 3;
@@ -646,7 +658,8 @@ void TestDeviceSession::severedLinkReconnects()
     h.session.simLink()->sever(QStringLiteral("unplugged by the test"));
     QCOMPARE(h.session.state(), SessionState::Lost);
     const double tLost = h.lastT(); // the loss flushed the samples still waiting in the batch
-    QVERIFY(h.detailOf(SessionState::Lost).contains(u"unplugged by the test"));
+    QCOMPARE(h.detailOf(SessionState::Lost).kind, StateDetail::Kind::LinkFailed);
+    QVERIFY(h.detailOf(SessionState::Lost).error.contains(u"unplugged by the test"));
     QVERIFY(!h.recording.last().active);
     QVERIFY(h.recording.last().error.isEmpty());
     const quint64 recorded = h.recording.last().samples;
@@ -680,8 +693,8 @@ void TestDeviceSession::silentLinkIsLostAndReconnects()
     h.session.simLink()->setSilenced(true); // the port stays, the device says nothing
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Lost,
                               DeviceSession::kSilenceTimeoutMs + 2000);
-    QVERIFY2(h.detailOf(SessionState::Lost).contains(u"no data"),
-             qPrintable(h.detailOf(SessionState::Lost)));
+    QCOMPARE(h.detailOf(SessionState::Lost).kind, StateDetail::Kind::Silent);
+    QCOMPARE(h.detailOf(SessionState::Lost).silenceMs, DeviceSession::kSilenceTimeoutMs);
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
 }
 
@@ -696,10 +709,15 @@ void TestDeviceSession::detectionFailsOnSilentPty()
     h.session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Disconnected, kConnectTimeoutMs);
     QVERIFY(h.sawState(SessionState::Detecting));
-    const QString error = h.detailOf(SessionState::Disconnected);
-    QVERIFY2(error.contains(peer.path()) && error.contains(u"115200") &&
-                 error.contains(u"legacy frames") && error.contains(u"HELLO_REPLY"),
-             qPrintable(error));
+    const StateDetail error = h.detailOf(SessionState::Disconnected);
+    QCOMPARE(error.kind, StateDetail::Kind::NoAnswer);
+    QCOMPARE(error.port, peer.path());
+    QCOMPARE(error.baud, 115200);
+    QCOMPARE(error.listenBaud, 0); // the baud was given: no second rate
+    QCOMPARE(error.legacyFrames, 0);
+    QCOMPARE(error.legacyFramesNeeded, ProtocolDetector::kLegacyFramesNeeded);
+    QCOMPARE(error.listenMs, ProtocolDetector::kListenMs);
+    QCOMPARE(error.helloWaitMs, ProtocolDetector::kHelloWaitMs);
 }
 
 void TestDeviceSession::helloOnPtyHasNoLetterI()
@@ -721,7 +739,7 @@ void TestDeviceSession::helloOnPtyHasNoLetterI()
     QList<v2::Frame> frames;
     decoder.feed(sent, frames);
     // Each detection sends its HELLO kHelloSends times (led by a delimiter, issue 10 #6).
-    QCOMPARE(frames.size(), 2 * DeviceSession::kHelloSends);
+    QCOMPARE(frames.size(), 2 * ProtocolDetector::kHelloSends);
     for (const v2::Frame &f : frames)
         QVERIFY(std::holds_alternative<v2::Hello>(f.message));
 }
@@ -733,9 +751,9 @@ void TestDeviceSession::autoDetectionListensAtLegacyRateThenAsksAtV2Rate()
     PtyPeer peer;
     QVERIFY(peer.isValid());
     Harness h;
-    QList<QPair<QString, speed_t>> seen;
+    QList<QPair<StateDetail, speed_t>> seen;
     QObject::connect(&h.session, &DeviceSession::stateChanged,
-                     [&](SessionState s, const QString &detail) {
+                     [&](SessionState s, const StateDetail &detail) {
                          if (s == SessionState::Detecting)
                              seen.append({detail, peer.baud()});
                      });
@@ -744,12 +762,14 @@ void TestDeviceSession::autoDetectionListensAtLegacyRateThenAsksAtV2Rate()
     h.session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Disconnected, kConnectTimeoutMs);
     QCOMPARE(seen.size(), 2);
-    QVERIFY2(seen[0].first.startsWith(u"Listening"_s), qPrintable(seen[0].first));
+    QCOMPARE(seen[0].first.kind, StateDetail::Kind::Listening);
     QCOMPARE(seen[0].second, speed_t(B115200));
-    QVERIFY2(seen[1].first.startsWith(u"Sending HELLO"_s), qPrintable(seen[1].first));
+    QCOMPARE(seen[1].first.kind, StateDetail::Kind::SendingHello);
     QCOMPARE(seen[1].second, speed_t(B921600));
-    const QString failure = h.detailOf(SessionState::Disconnected);
-    QVERIFY2(failure.contains(u"115200"_s) && failure.contains(u"921600"_s), qPrintable(failure));
+    const StateDetail failure = h.detailOf(SessionState::Disconnected);
+    QCOMPARE(failure.kind, StateDetail::Kind::NoAnswer);
+    QCOMPARE(failure.listenBaud, 115200);
+    QCOMPARE(failure.baud, 921600);
 }
 
 void TestDeviceSession::detectsOverPty_data()
@@ -790,8 +810,10 @@ void TestDeviceSession::openFailureNamesThePort()
     o.port = QStringLiteral("/dev/hatpic-does-not-exist");
     h.session.connectDevice(o);
     QCOMPARE(h.session.state(), SessionState::Disconnected);
-    const QString error = h.detailOf(SessionState::Disconnected);
-    QVERIFY2(error.contains(o.port), qPrintable(error));
+    const StateDetail error = h.detailOf(SessionState::Disconnected);
+    QCOMPARE(error.kind, StateDetail::Kind::OpenFailed);
+    QCOMPARE(error.port, o.port);
+    QVERIFY(!error.error.isEmpty());
     QVERIFY(h.sawState(SessionState::Opening));
 }
 

@@ -31,7 +31,7 @@ struct Session
     DeviceSession session;
     QList<Sample> samples;
     QList<DeviceInfo> infos;
-    QString lastDetail;
+    StateDetail lastDetail;
     LinkStats stats;
     Session()
     {
@@ -40,7 +40,7 @@ struct Session
         QObject::connect(&session, &DeviceSession::deviceInfoChanged,
                          [this](const DeviceInfo &i) { infos.append(i); });
         QObject::connect(&session, &DeviceSession::stateChanged,
-                         [this](SessionState, const QString &d) { lastDetail = d; });
+                         [this](SessionState, const StateDetail &d) { lastDetail = d; });
         QObject::connect(&session, &DeviceSession::statsUpdated,
                          [this](const LinkStats &s) { stats = s; });
     }
@@ -100,8 +100,9 @@ void TestSessionHostile::nonsenseHelloReplyIsRefused()
     QTRY_VERIFY_WITH_TIMEOUT(device.hellosAnswered() > 0, kTimeoutMs);
     QTRY_COMPARE_WITH_TIMEOUT(s.session.state(), SessionState::Disconnected, kTimeoutMs);
     QVERIFY2(s.infos.isEmpty(), "a nonsense device was taken as connected");
-    QVERIFY2(s.lastDetail.contains(field) && s.lastDetail.contains(device.path()),
-             qPrintable(s.lastDetail));
+    QCOMPARE(s.lastDetail.kind, StateDetail::Kind::Refused);
+    QCOMPARE(s.lastDetail.port, device.path());
+    QVERIFY2(s.lastDetail.error.contains(field), qPrintable(s.lastDetail.error));
 }
 
 void TestSessionHostile::firmwareNameIsMadePrintable()

@@ -1,0 +1,40 @@
+// The published firmware's text protocol (legacy): frames in at its fixed ~5 Hz, θ from
+// ticks and τ_rec estimated by the host; feedback as whole 'i…o' frames; no commands, no PING.
+#pragma once
+
+#include "protocol/legacy.h"
+#include "session/protocoldriver.h"
+
+#include <QList>
+#include <QStringList>
+
+namespace hatpic {
+
+class LegacyDriver : public ProtocolDriver
+{
+public:
+    //! @param feedbackOn whether feedback is streamed at all (else τ_ext is 0 in samples)
+    LegacyDriver(DriverHost &host, const ConnectOptions &options, qint32 baud);
+
+    DeviceInfo info() const override { return m_info; }
+    void start() override;
+    void feed(const QByteArray &bytes) override;
+    void sendFeedback(double tauExt) override;
+    bool sendPing(quint32) override { return false; }
+    CommandResult::Reason refusal(CommandKind kind) const override;
+    void hostParamsChanged(const HostParams &host) override;
+    void close() override;
+    const legacy::DecoderStats *legacyStats() const override { return &m_decoder.stats(); }
+    StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedLegacy; }
+
+private:
+    DriverHost &m_host;
+    legacy::Conversion m_conversion;
+    bool m_feedbackOn;
+    DeviceInfo m_info;
+    legacy::Decoder m_decoder;
+    int m_field; //!< last feedback field A sent
+    bool m_closed = false;
+};
+
+} // namespace hatpic

@@ -1,0 +1,121 @@
+#include "recordingsink.h"
+
+#include "session/sessiontypes.h"
+#include "telemetry/numbertext.h"
+
+#include <QStringBuilder>
+#include <QStringList>
+
+namespace hatpic {
+
+namespace {
+
+QString describeHostChange(const HostParams &from, const HostParams &to)
+{
+    QStringList parts;
+    auto onOff = [](bool on) { return on ? QStringLiteral("on") : QStringLiteral("off"); };
+    if (from.v_max != to.v_max)
+        parts << u"v_max " % compactNumberText(from.v_max) % u" → " % compactNumberText(to.v_max);
+    if (from.mode != to.mode) {
+        parts << u"mode " % QString::fromLatin1(referenceModeName(from.mode)) % u" → " %
+                     QString::fromLatin1(referenceModeName(to.mode));
+    }
+    if (from.ref_deadzone != to.ref_deadzone)
+        parts << u"ref_deadzone " % onOff(from.ref_deadzone) % u" → " % onOff(to.ref_deadzone);
+    if (from.tau_limit != to.tau_limit) {
+        parts << u"tau_limit " % compactNumberText(from.tau_limit) % u" → " %
+                     compactNumberText(to.tau_limit);
+    }
+    return parts.join(QStringLiteral("; "));
+}
+
+} // namespace
+
+RecordingSink::RecordingSink(QObject *parent) : QObject(parent), m_timer(this)
+{
+    m_timer.setInterval(RecordingWriter::kFlushIntervalMs);
+    connect(&m_timer, &QTimer::timeout, this, &RecordingSink::onFlushTick);
+}
+
+bool RecordingSink::open(const QString &csvPath, const RecordingMetadata &metadata)
+{
+    if (!m_writer.open(csvPath, metadata)) {
+        report(m_writer.error());
+        return false;
+    }
+    m_timer.start();
+    report({});
+    return true;
+}
+
+void RecordingSink::close(const QString &error)
+{
+    m_timer.stop();
+    const bool wasOpen = m_writer.isOpen();
+    m_writer.close();
+    if (wasOpen || !error.isEmpty())
+        report(error.isEmpty() ? m_writer.error() : error);
+}
+
+void RecordingSink::append(const SampleBatch &batch)
+{
+    if (m_writer.isOpen() && !m_writer.append(batch))
+        close(m_writer.error());
+}
+
+void RecordingSink::addEvent(const QString &text)
+{
+    if (m_writer.isOpen())
+        m_writer.addEvent(text);
+}
+
+void RecordingSink::paramsApplied(const DeviceParams &from, const DeviceParams &to)
+{
+    const QString change = describeParamChange(from, to);
+    addEvent(change.isEmpty() ? QStringLiteral("SET_PARAMS (no change)") : change);
+}
+
+void RecordingSink::paramsReadBack(const DeviceParams &from, const DeviceParams &to)
+{
+    addEvent(describeParamChange(from, to) % u" (read back)");
+}
+
+void RecordingSink::zeroed(double theta0Before)
+{
+    addEvent(u"ZERO: theta0 := current angle (was " % compactNumberText(theta0Before) % u')');
+}
+
+void RecordingSink::hostChanged(const HostParams &from, const HostParams &to)
+{
+    addEvent(describeHostChange(from, to));
+}
+
+void RecordingSink::referenceReset()
+{
+    addEvent(QStringLiteral("p_ref reset to 0"));
+}
+
+void RecordingSink::report(const QString &error)
+{
+    RecordingStatus status = m_writer.status();
+    if (!error.isEmpty())
+        status.error = error;
+    Q_EMIT statusChanged(status);
+}
+
+void RecordingSink::onFlushTick()
+{
+    if (!m_writer.isOpen()) {
+        m_timer.stop();
+        return;
+    }
+    Q_EMIT aboutToFlush();
+    if (m_writer.isOpen() && !m_writer.flush()) {
+        close(m_writer.error());
+        return;
+    }
+    if (m_writer.isOpen())
+        report({});
+}
+
+} // namespace hatpic

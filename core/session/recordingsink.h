@@ -1,0 +1,50 @@
+// The session's recording: a RecordingWriter on the session thread, its periodic flush, and
+// the status reports (recordingChanged) that go with opening, progress, errors and closing.
+#pragma once
+
+#include "model/params.h"
+#include "telemetry/recordingwriter.h"
+#include "telemetry/sample.h"
+
+#include <QObject>
+#include <QTimer>
+
+namespace hatpic {
+
+class RecordingSink : public QObject
+{
+    Q_OBJECT
+public:
+    explicit RecordingSink(QObject *parent = nullptr);
+
+    //! Opens `csvPath`; reports the status either way. False when the writer refused.
+    bool open(const QString &csvPath, const RecordingMetadata &metadata);
+    bool isOpen() const { return m_writer.isOpen(); }
+    //! Closes; reports the final status when it was open or when `error` is given.
+    void close(const QString &error = {});
+    //! Appends the samples; a write error closes the recording (and reports it).
+    void append(const SampleBatch &batch);
+    //! Attaches an event to the next sample (nothing when closed). The events' text is part
+    //! of the file format (recording.md), so it is composed here.
+    void addEvent(const QString &text);
+    void paramsApplied(const DeviceParams &from,
+                       const DeviceParams &to); //!< SET_PARAMS took effect
+    void paramsReadBack(const DeviceParams &from, const DeviceParams &to); //!< PARAMS differed
+    void zeroed(double theta0Before);                                      //!< ZERO took effect
+    void hostChanged(const HostParams &from, const HostParams &to);
+    void referenceReset();
+Q_SIGNALS:
+    void statusChanged(const hatpic::RecordingStatus &status);
+    //! Before each periodic flush: the samples waiting elsewhere belong in it (direct call).
+    void aboutToFlush();
+
+private:
+    void onFlushTick();
+    //! Emits the writer's status, with `error` when given.
+    void report(const QString &error);
+
+    RecordingWriter m_writer;
+    QTimer m_timer;
+};
+
+} // namespace hatpic

@@ -1,0 +1,164 @@
+#include "v2driver.h"
+
+#include "session/commandqueue.h"
+#include "session/linkstatistics.h"
+#include "session/samplebuilder.h"
+
+#include <QLoggingCategory>
+
+#include <cmath>
+
+Q_LOGGING_CATEGORY(lcV2, "hatpic.device.v2", QtWarningMsg)
+
+namespace hatpic {
+
+V2Driver::V2Driver(DriverHost &host, CommandQueue &queue, const v2::HelloReply &reply,
+                   const ConnectOptions &options, qint32 baud, v2::FrameDecoder decoder)
+    : m_host(host), m_queue(queue), m_streamRateHz(options.streamRateHz),
+      m_decoder(std::move(decoder))
+{
+    m_info.protocol = WireProtocol::V2;
+    m_info.port = options.port;
+    m_info.baud = baud;
+    m_info.protocolVersion = reply.protocolVersion;
+    m_info.maxStreamHz = reply.maxStreamHz;
+    m_info.deviceId = reply.deviceId;
+    m_info.tauLimit = reply.tauLimit;
+    m_info.firmware = printableDeviceText(v2::toQString(reply.firmware));
+    m_info.simulated = options.port == QStringView(kSimPortName);
+    if (reply.protocolVersion != v2::kProtocolVersion) {
+        qCWarning(lcV2) << "device reports protocol version" << reply.protocolVersion
+                        << "; this host speaks" << v2::kProtocolVersion;
+    }
+    connect(&m_queue, &CommandQueue::acknowledged, this, &V2Driver::onAcknowledged);
+    m_host.builder().setTauLimit(m_info.tauLimit);
+    m_host.statistics().restartSeq();
+    // Discard the detection's noise (e.g. the tail of a stream we opened in the middle of).
+    m_decoder.resetStats();
+}
+
+V2Driver::~V2Driver() = default;
+
+void V2Driver::start()
+{
+    Command get;
+    get.kind = CommandKind::GetParams;
+    m_queue.enqueue(get);
+    Command stream;
+    stream.kind = CommandKind::SetStream;
+    stream.rate = m_streamRateHz;
+    m_queue.enqueue(stream);
+}
+
+void V2Driver::close()
+{
+    if (m_closed)
+        return;
+    m_closed = true;
+    disconnect(&m_queue, nullptr, this, nullptr);
+    m_host.statistics().absorb(m_decoder.stats());
+    m_decoder.resetStats();
+}
+
+void V2Driver::feed(const QByteArray &bytes)
+{
+    QList<v2::Frame> frames;
+    m_decoder.feed(bytes, frames);
+    handleFrames(frames);
+}
+
+void V2Driver::handleFrames(const QList<v2::Frame> &frames)
+{
+    // Handlers may close the link (e.g. a write that fails); stop as soon as it is gone.
+    for (const v2::Frame &frame : frames) {
+        if (m_closed || !m_host.linkOpen())
+            break;
+        handleFrame(frame);
+    }
+}
+
+void V2Driver::handleFrame(const v2::Frame &frame)
+{
+    std::visit(
+        [&](const auto &message) {
+            using T = std::decay_t<decltype(message)>;
+            if constexpr (std::is_same_v<T, v2::Telemetry>)
+                handleTelemetry(frame.seq, message);
+            else if constexpr (std::is_same_v<T, v2::Ack>)
+                m_queue.onAck(message);
+            else if constexpr (std::is_same_v<T, v2::Params>)
+                handleParams(message.params);
+            else if constexpr (std::is_same_v<T, v2::Pong>)
+                m_host.pongReceived(message.token);
+            else if constexpr (std::is_same_v<T, v2::Log>)
+                m_host.deviceText(printableDeviceText(v2::toQString(message.text)));
+            else if constexpr (std::is_same_v<T, v2::HelloReply>)
+                qCInfo(lcV2) << "late HELLO_REPLY ignored";
+        },
+        frame.message);
+}
+
+void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &telemetry)
+{
+    if (!m_host.statistics().countTelemetry(seq, telemetry.t_us))
+        return;
+    // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:
+    // such a frame is counted and skipped, never integrated.
+    if (!std::isfinite(telemetry.theta) || !std::isfinite(telemetry.omega) ||
+        !std::isfinite(telemetry.tau) || !std::isfinite(telemetry.tau_rec) ||
+        !std::isfinite(telemetry.tau_ext)) {
+        m_host.statistics().countNonFinite();
+        return;
+    }
+    if (m_pendingEffect)
+        applyPendingEffect();
+    m_host.pushSample(m_host.builder().fromTelemetry(telemetry, m_host.hostUs()));
+}
+
+void V2Driver::handleParams(const DeviceParams &params)
+{
+    if (m_pendingEffect)
+        applyPendingEffect(); // streaming off: no telemetry carried the change
+    m_host.paramsReceived(params);
+    m_queue.onParams(params);
+}
+
+void V2Driver::onAcknowledged(const Command &command)
+{
+    switch (command.kind) {
+    case CommandKind::SetParams:
+    case CommandKind::Zero:
+        m_pendingEffect = PendingEffect{command.kind, command.params};
+        return;
+    case CommandKind::SetStream:
+        m_host.statistics().restartSeq(); // a new stream: no gap to count against the old
+        return;
+    default:
+        return;
+    }
+}
+
+void V2Driver::applyPendingEffect()
+{
+    const PendingEffect effect = *m_pendingEffect;
+    m_pendingEffect.reset();
+    m_host.applyEffect(effect.kind, effect.params);
+}
+
+void V2Driver::sendFeedback(double tauExt)
+{
+    m_host.write(v2::encodeFrame(m_feedbackSeq++, v2::SetFeedback{static_cast<float>(tauExt)}));
+}
+
+bool V2Driver::sendPing(quint32 token)
+{
+    // Not while a command waits for its answer: the device recognises a retry only when it
+    // is the very last command it saw, and a PING in between would make it apply a retried
+    // ZERO twice. The probe simply waits for the next tick.
+    if (m_queue.busy())
+        return false;
+    m_host.write(v2::encodeFrame(m_queue.nextSeq(), v2::Ping{token}));
+    return true;
+}
+
+} // namespace hatpic

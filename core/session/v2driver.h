@@ -1,0 +1,67 @@
+// The v2 protocol (protocol.md) of a connected device: frames in, telemetry to samples, ACKs
+// and PARAMS to the command queue, SET_FEEDBACK and PING out.
+#pragma once
+
+#include "protocol/v2codec.h"
+#include "session/protocoldriver.h"
+
+#include <QList>
+#include <QObject>
+
+#include <optional>
+
+namespace hatpic {
+
+class CommandQueue;
+struct Command;
+
+class V2Driver : public QObject, public ProtocolDriver
+{
+    Q_OBJECT
+public:
+    //! `reply` is the device's HELLO_REPLY (checked by the caller); `decoder` continues
+    //! detection's (the start of the frame after the reply may be in it).
+    V2Driver(DriverHost &host, CommandQueue &queue, const v2::HelloReply &reply,
+             const ConnectOptions &options, qint32 baud, v2::FrameDecoder decoder);
+    ~V2Driver() override;
+
+    DeviceInfo info() const override { return m_info; }
+    void start() override;
+    void feed(const QByteArray &bytes) override;
+    //! Frames decoded elsewhere (detection's chunk after HELLO_REPLY).
+    void handleFrames(const QList<v2::Frame> &frames);
+    void sendFeedback(double tauExt) override;
+    bool sendPing(quint32 token) override;
+    CommandResult::Reason refusal(CommandKind) const override
+    {
+        return CommandResult::Reason::None;
+    }
+    void hostParamsChanged(const HostParams &) override {}
+    void close() override;
+    const v2::DecoderStats *v2Stats() const override { return &m_decoder.stats(); }
+    StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedV2; }
+
+private:
+    struct PendingEffect
+    {
+        CommandKind kind = CommandKind::SetParams; //!< SetParams or Zero
+        DeviceParams params;
+    };
+
+    void handleFrame(const v2::Frame &frame);
+    void handleTelemetry(quint8 seq, const v2::Telemetry &telemetry);
+    void handleParams(const DeviceParams &params);
+    void onAcknowledged(const Command &command);
+    void applyPendingEffect();
+
+    DriverHost &m_host;
+    CommandQueue &m_queue;
+    DeviceInfo m_info;
+    quint16 m_streamRateHz; //!< asked for on start()
+    v2::FrameDecoder m_decoder;
+    quint8 m_feedbackSeq = 0;
+    std::optional<PendingEffect> m_pendingEffect;
+    bool m_closed = false;
+};
+
+} // namespace hatpic

@@ -1,0 +1,174 @@
+// The session's small parts on their own: LinkStatistics (seq gaps, decoder drops kept across
+// links, rates) and the two streams (FeedbackStream's rate and pause, PingProbe's RTT and its
+// bound on unanswered probes).
+#include "session/linkstatistics.h"
+#include "session/streams.h"
+
+#include <QElapsedTimer>
+#include <QTest>
+
+#include <cmath>
+#include <limits>
+
+namespace hatpic {
+
+class TestSessionParts : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void seqGapsCountModulo256();
+    void decoderDropsAddUpAcrossLinks();
+    void ratesCoverTheLastSecond();
+    void feedbackStreamsAtItsRateUnlessPaused();
+    void feedbackIsFinite();
+    void pingMeasuresTheRoundTrip();
+    void busyPingWaitsAndUnansweredAreBounded();
+};
+
+void TestSessionParts::seqGapsCountModulo256()
+{
+    LinkStatistics s;
+    QVERIFY(s.countTelemetry(250, 250'000));
+    QVERIFY(s.countTelemetry(251, 251'000));
+    QVERIFY(s.countTelemetry(2, 258'000)); // 252…255, 0, 1 missing
+    LinkStats out = s.snapshot(nullptr, nullptr);
+    QCOMPARE(out.frames, quint64(3));
+    QCOMPARE(out.seqDrops, quint64(6));
+    QVERIFY(!s.countTelemetry(2, 258'000)); // the same frame again: a duplicate, no sample
+    QCOMPARE(s.snapshot(nullptr, nullptr).duplicates, quint64(1));
+    QCOMPARE(s.snapshot(nullptr, nullptr).seqDrops, quint64(6));
+    s.restartSeq(); // a new stream: no gap to the previous one
+    QVERIFY(s.countTelemetry(100, 900'000));
+    QCOMPARE(s.snapshot(nullptr, nullptr).seqDrops, quint64(6));
+    s.clear();
+    QCOMPARE(s.snapshot(nullptr, nullptr).frames, quint64(0));
+}
+
+void TestSessionParts::decoderDropsAddUpAcrossLinks()
+{
+    LinkStatistics s;
+    v2::DecoderStats closed;
+    closed.drops[0] = 2;
+    s.absorb(closed);
+    legacy::DecoderStats legacyClosed;
+    legacyClosed.malformed = 3;
+    s.absorb(legacyClosed);
+    v2::DecoderStats live;
+    live.drops[0] = 5;
+    live.drops[1] = 1;
+    legacy::DecoderStats legacyLive;
+    legacyLive.malformed = 4;
+    const LinkStats out = s.snapshot(&live, &legacyLive);
+    QCOMPARE(out.decoderDrops[0], quint64(7));
+    QCOMPARE(out.decoderDrops[1], quint64(1));
+    QCOMPARE(out.totalDecoderDrops(), quint64(8));
+    QCOMPARE(out.legacyMalformed, quint64(7));
+    QCOMPARE(s.snapshot(nullptr, nullptr).totalDecoderDrops(), quint64(2));
+}
+
+void TestSessionParts::ratesCoverTheLastSecond()
+{
+    LinkStatistics s;
+    constexpr qint64 kSecond = 1'000'000'000;
+    s.tick(0);
+    for (int i = 1; i <= 8; ++i) { // 100 frames and 1000 bytes per 250 ms
+        for (int f = 0; f < 100; ++f)
+            s.countFrame();
+        s.countBytes(1000, i * kSecond / 4);
+        s.tick(i * kSecond / 4);
+    }
+    const LinkStats out = s.snapshot(nullptr, nullptr);
+    QCOMPARE(out.framesPerSecond, 400.0);
+    QCOMPARE(out.bytesPerSecond, 4000.0);
+    QCOMPARE(s.lastReceivedNs(), 2 * kSecond);
+}
+
+void TestSessionParts::feedbackStreamsAtItsRateUnlessPaused()
+{
+    QList<double> sent;
+    FeedbackStream stream([&](double tau) { sent.append(tau); });
+    stream.setTauExt(0.05);
+    stream.start(100); // every 10 ms, and once at once
+    QCOMPARE(sent.size(), 1);
+    QTRY_VERIFY(sent.size() >= 5);
+    QCOMPARE(sent.last(), 0.05);
+    stream.setPaused(true);
+    const qsizetype paused = sent.size();
+    QTest::qWait(50);
+    QCOMPARE(sent.size(), paused);
+    stream.setPaused(false);
+    QTRY_VERIFY(sent.size() > paused);
+    stream.stop();
+    const qsizetype stopped = sent.size();
+    QTest::qWait(50);
+    QCOMPARE(sent.size(), stopped);
+
+    stream.start(0); // no feedback at all
+    QTest::qWait(30);
+    QCOMPARE(sent.size(), stopped);
+}
+
+void TestSessionParts::feedbackIsFinite()
+{
+    FeedbackStream stream([](double) {});
+    stream.setTauExt(std::numeric_limits<double>::quiet_NaN());
+    QCOMPARE(stream.tauExt(), 0.0);
+    stream.setTauExt(-std::numeric_limits<double>::infinity());
+    QCOMPARE(stream.tauExt(), 0.0);
+    stream.setTauExt(-0.1);
+    QCOMPARE(stream.tauExt(), -0.1);
+}
+
+void TestSessionParts::pingMeasuresTheRoundTrip()
+{
+    QElapsedTimer clock;
+    clock.start();
+    QList<quint32> tokens;
+    PingProbe probe(clock, [&](quint32 token) {
+        tokens.append(token);
+        return true;
+    });
+    probe.start();
+    QCOMPARE(tokens.size(), 1);
+    QTest::qWait(20);
+    probe.onPong(tokens.first());
+    QCOMPARE(probe.rtt().count(), quint64(1));
+    QVERIFY(probe.rtt().last() >= 15);
+    probe.onPong(tokens.first()); // answered once only
+    probe.onPong(12345);          // never sent
+    QCOMPARE(probe.rtt().count(), quint64(1));
+    probe.clear();
+    QVERIFY(probe.rtt().isEmpty());
+}
+
+void TestSessionParts::busyPingWaitsAndUnansweredAreBounded()
+{
+    QElapsedTimer clock;
+    clock.start();
+    bool busy = true;
+    QList<quint32> tokens;
+    PingProbe probe(clock, [&](quint32 token) {
+        if (busy)
+            return false;
+        tokens.append(token);
+        return true;
+    });
+    probe.start();
+    QVERIFY(tokens.isEmpty()); // a command waits: no PING in between
+    busy = false;
+    probe.stop();
+    for (int i = 0; i < PingProbe::kMaxPendingPings + 5; ++i)
+        probe.start(); // each start pings at once
+    QCOMPARE(tokens.size(), PingProbe::kMaxPendingPings + 5);
+    QCOMPARE(tokens.first(), quint32(1)); // the refused probe used no token
+    // The oldest five were forgotten; the newest are still waiting for their PONG.
+    probe.onPong(tokens.first());
+    QVERIFY(probe.rtt().isEmpty());
+    probe.onPong(tokens.last());
+    QCOMPARE(probe.rtt().count(), quint64(1));
+}
+
+} // namespace hatpic
+
+QTEST_GUILESS_MAIN(hatpic::TestSessionParts)
+#include "tst_sessionparts.moc"
