@@ -78,12 +78,15 @@ void ParameterEditor::buildUi()
     column->setSpacing(10);
     column->addWidget(buildDeviceGroups());
     column->addWidget(buildHostGroup());
-    auto *derivedBox = new QGroupBox(tr("Derived figures (K = K_max)"), content);
+    column->addStretch(1);
+    // The derived figures and their warnings sit right under Push, outside the scrolling
+    // fields, so they are in sight at every window size.
+    auto *derivedBox = new QGroupBox(tr("Derived figures (K = K_max)"), this);
+    derivedBox->setObjectName(u"derivedFiguresBox"_s);
     auto *derivedLayout = new QVBoxLayout(derivedBox);
+    derivedLayout->setContentsMargins(6, 2, 6, 4);
     m_derived = new DerivedFiguresView(derivedBox);
     derivedLayout->addWidget(m_derived);
-    column->addWidget(derivedBox);
-    column->addStretch(1);
 
     // One column width for names and units across the groups, so the spin boxes line up.
     ParameterField::alignColumns(m_fields.values(),
@@ -101,6 +104,7 @@ void ParameterEditor::buildUi()
     connect(m_syncBar, &SyncBar::livePushToggled, this, &ParameterEditor::setLivePush);
     connect(m_syncBar, &SyncBar::angleInDegreesToggled, this, &ParameterEditor::setAngleInDegrees);
     layout->addWidget(m_syncBar);
+    layout->addWidget(derivedBox);
     layout->addWidget(scroll, 1);
 }
 

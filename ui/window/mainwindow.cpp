@@ -4,6 +4,7 @@
 #include "connection/linkbanner.h"
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
+#include "editor/chatterdetector.h"
 #include "editor/deviceparameterlink.h"
 #include "editor/parametereditor.h"
 #include "editor/profilecontroller.h"
@@ -254,6 +255,8 @@ void MainWindow::connectParts()
 
     // What the plots and the stiffness view show: the feed, live or replay.
     connect(m_client, &DeviceClient::samplesReady, m_feed, &PlotFeed::appendLive);
+    connect(m_client, &DeviceClient::samplesReady, new ChatterWatch(m_editor),
+            &ChatterWatch::addSamples); // warns in the derived figures
     connect(m_client, &DeviceClient::deviceParamsChanged, m_feed,
             [this](const DeviceParams &params) { m_feed->setLiveDeviceParams(params); });
     connect(m_editor, &ParameterEditor::hostParamsChanged, m_feed, &PlotFeed::setLiveHostParams);
@@ -447,7 +450,7 @@ void MainWindow::readSettings()
             settings.value(QStringLiteral("connection/protocol"), int(ProtocolChoice::Auto))
                 .toInt()));
     if (!restoreWindowGeometry(this, settings))
-        resize(1400, 900); // the first launch; what is saved on close is fitted
+        resizeToDefault(this); // the first launch; what is saved on close is fitted
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     setAngleInDegrees(settings.value(QStringLiteral("view/degrees"), false).toBool());
     setWindowSeconds(

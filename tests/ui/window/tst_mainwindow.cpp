@@ -128,6 +128,8 @@ private Q_SLOTS:
     void hugeReplaySpanKeepsTheWindow();
     void oversizedSettingsAreFitted_data();
     void oversizedSettingsAreFitted();
+    void derivedFiguresInSightAtEverySize_data();
+    void derivedFiguresInSightAtEverySize();
 
 private:
     void connectSim(ProtocolChoice protocol = ProtocolChoice::V2);
@@ -154,6 +156,8 @@ void TestMainWindow::init()
 {
     QSettings().clear();
     m_window = std::make_unique<MainWindow>();
+    // The size a first launch gets on a large screen (the offscreen screen is 800×600).
+    m_window->resize(1400, 900);
     find<ProfileController>("profileController")->setQuestion([](const QString &) {
         return QMessageBox::Discard;
     });
@@ -561,6 +565,13 @@ void TestMainWindow::replayShowsRecordingAndReturnsToLive()
     const QCPGraphData last = *(plots->graph(Channel::Theta)->data()->constEnd() - 1);
     QVERIFY(last.key <= 103.001);
     QVERIFY(bar->positionText().startsWith(QStringLiteral("3.00")));
+    // The slider counts from the recording's start, the plots' axis in session time: both
+    // are shown, each labelled, and the session time is the axis's.
+    QCOMPARE(find<QLabel>("replaySessionTime")->text(), QStringLiteral("t = 103.00 s"));
+    QCOMPARE(find<QLabel>("replaySessionTime")->text(),
+             ReplayBar::sessionTimeText(plots->dataEnd().value_or(0)));
+    QVERIFY(find<QLabel>("replayTime")->toolTip().contains(QStringLiteral("recording")));
+    QVERIFY(find<QLabel>("replaySessionTime")->toolTip().contains(QStringLiteral("axis")));
 
     // Play at 5×: the playhead moves; live samples keep arriving but are not shown.
     bar->speedBox()->setCurrentIndex(bar->speedBox()->findData(5.0));
@@ -929,4 +940,52 @@ void TestMainWindow::oversizedSettingsAreFitted()
 }
 
 QTEST_MAIN(TestMainWindow)
+void TestMainWindow::derivedFiguresInSightAtEverySize_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("1280x720") << QSize(1280, 720);
+    QTest::newRow("1400x900") << QSize(1400, 900);
+    QTest::newRow("1920x1080") << QSize(1920, 1080);
+}
+
+void TestMainWindow::derivedFiguresInSightAtEverySize()
+{
+    // Once, at 1280×720 the editor showed D_adm to K_max only; the figures and warnings were
+    // below, to be scrolled to. Now they sit under Push, wholly visible at every size.
+    QFETCH(QSize, size);
+    QVERIFY2(m_window->minimumSizeHint().width() <= 1280 &&
+                 m_window->minimumSizeHint().height() <= 720,
+             qPrintable(QStringLiteral("%1×%2")
+                            .arg(m_window->minimumSizeHint().width())
+                            .arg(m_window->minimumSizeHint().height())));
+    m_window->resize(size);
+    connectSim();
+    auto *editor = find<ParameterEditor>("parameterEditor");
+    // A set that both saturates and rings: both warnings show.
+    DeviceParams p = editor->params();
+    p.K_min = 1.0;
+    p.K_max = 4.0;
+    p.M_adm = 0.001;
+    editor->setParams(p, editor->hostParams(), QStringLiteral("test"));
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QCOMPARE(m_window->size(), size);
+
+    auto wholeInSight = [this](QWidget *w) {
+        if (!w->isVisible())
+            return false;
+        const QRect inWindow(w->mapTo(m_window.get(), QPoint(0, 0)), w->size());
+        return m_window->rect().contains(inWindow) && w->visibleRegion() == QRegion(w->rect());
+    };
+    auto *push = find<QWidget>("button_push");
+    QVERIFY(wholeInSight(push));
+    for (const char *name : {"derivedFiguresBox", "figure_zeta", "figure_peak_tau",
+                             "warning_saturation", "warning_ringing"})
+        QVERIFY2(wholeInSight(find<QWidget>(name)), name);
+    // Next to Push: right below its row.
+    const int pushBottom = push->mapTo(m_window.get(), QPoint(0, push->height())).y();
+    const int boxTop = find<QWidget>("derivedFiguresBox")->mapTo(m_window.get(), QPoint(0, 0)).y();
+    QVERIFY2(boxTop - pushBottom < 80, qPrintable(QString::number(boxTop - pushBottom)));
+}
+
 #include "tst_mainwindow.moc"
