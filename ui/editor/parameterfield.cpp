@@ -71,6 +71,7 @@ ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject 
     m_slider->setObjectName(u"slider_"_s + spec.key);
     m_slider->setRange(0, kSliderTicks);
     m_slider->setMinimumWidth(60);
+    m_slider->setFocusPolicy(Qt::ClickFocus); // Tab goes from field to field
     m_slider->setToolTip(tip);
 
     m_message = new QLabel(parentWidget);

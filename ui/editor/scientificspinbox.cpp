@@ -1,5 +1,6 @@
 #include "editor/scientificspinbox.h"
 
+#include <QKeyEvent>
 #include <QLineEdit>
 
 #include <algorithm>
@@ -16,6 +17,27 @@ ScientificSpinBox::ScientificSpinBox(QWidget *parent) : QDoubleSpinBox(parent)
     setAccelerated(true);
     setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
+}
+
+bool ScientificSpinBox::event(QEvent *event)
+{
+    // A number needs no space, and Ctrl+Z means the field's own undo only while there is
+    // uncommitted typing: otherwise the window's shortcuts get them (pause, undo the edit).
+    if (event->type() == QEvent::ShortcutOverride) {
+        const auto *key = static_cast<QKeyEvent *>(event);
+        if (key->key() == Qt::Key_Space && key->modifiers() == Qt::NoModifier) {
+            event->ignore();
+            return true;
+        }
+        // Typing not yet committed (Enter, leaving the field) is the field's to undo.
+        const bool typing =
+            lineEdit()->isUndoAvailable() && lineEdit()->text() != textFromValue(value());
+        if (key->matches(QKeySequence::Undo) && !typing) {
+            event->ignore();
+            return true;
+        }
+    }
+    return QDoubleSpinBox::event(event);
 }
 
 void ScientificSpinBox::setSignificantDigits(int digits)

@@ -25,6 +25,7 @@ public:
     int significantDigits() const { return m_digits; }
 
     void stepBy(int steps) override;
+    bool event(QEvent *event) override;
     QString textFromValue(double value) const override;
     double valueFromText(const QString &text) const override;
     QValidator::State validate(QString &input, int &pos) const override;

@@ -101,6 +101,7 @@ void MainWindow::createParts()
     m_stiffness = named(new StiffnessView(this), "stiffnessView");
     m_profiles = named(new ProfileController(m_editor, this, this), "profileController");
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
+    statusBar()->insertPermanentWidget(0, m_simPanel->statusLabel());
     m_stiffness->setEditedParams(m_editor->params());
     m_feed->setLiveHostParams(m_editor->hostParams());
     m_plotActions = new PlotActions(m_plots, this);
@@ -222,16 +223,16 @@ void MainWindow::createDocks()
                             Qt::RightDockWidgetArea);
     m_stiffnessDock = makeDock(tr("Stiffness"), QStringLiteral("stiffnessDock"), m_stiffness,
                                Qt::RightDockWidgetArea);
+    // Under the plots, so that the hand and the stiffness view are in sight together.
     m_simDock = makeDock(tr("Simulated hand"), QStringLiteral("simulatorDock"), m_simPanel,
-                         Qt::RightDockWidgetArea);
+                         Qt::BottomDockWidgetArea);
     m_log = new QPlainTextEdit(this);
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(2000);
     m_logDock =
         makeDock(tr("Device log"), QStringLiteral("logDock"), m_log, Qt::BottomDockWidgetArea);
     m_logDock->hide();
-    tabifyDockWidget(m_stiffnessDock, m_simDock);
-    m_stiffnessDock->raise();
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea); // the hand's dock: plots only
     // As wide as the editor wants (within reason): its rows are long.
     resizeDocks({m_editorDock}, {std::clamp(m_editor->sizeHint().width() + 24, 420, 600)},
                 Qt::Horizontal);
@@ -329,6 +330,7 @@ void MainWindow::onStateChanged(SessionState state, const QString &detail)
         m_linkStatus->setDeviceInfo(std::nullopt);
         m_simDock->hide();
         m_simDock->toggleViewAction()->setEnabled(false);
+        m_simPanel->statusLabel()->hide();
         m_feed->setLiveDeviceParams(std::nullopt);
     }
     // The banner already says why the link was lost or refused; the status bar, which clips a
@@ -343,6 +345,7 @@ void MainWindow::onDeviceInfo(const DeviceInfo &info)
     m_linkStatus->setDeviceInfo(info);
     m_simDock->toggleViewAction()->setEnabled(info.simulated);
     m_simDock->setVisible(info.simulated);
+    m_simPanel->statusLabel()->setVisible(info.simulated);
     updateActions();
 }
 
@@ -392,25 +395,26 @@ void MainWindow::updateActions()
 
 QList<QAction *> MainWindow::shortcutActions() const
 {
-    return {m_actions->connectDevice,
-            m_editor->pushAction(),
-            m_actions->pause,
-            m_recording->recordAction(),
-            m_editor->undoAction(),
-            m_editor->redoAction(),
-            m_profiles->abToggleAction(),
-            m_profiles->openAction(),
-            m_profiles->saveAction(),
-            m_profiles->saveAsAction(),
-            m_actions->openRecording,
-            m_actions->backToLive,
-            m_plotActions->autoscaleAction(),
-            m_actions->degrees,
-            m_actions->resetReference,
-            m_plotActions->exportImageAction(),
-            m_plotActions->exportCsvAction(),
-            m_actions->shortcuts,
-            m_actions->quit};
+    return QList<QAction *>{m_actions->connectDevice,
+                            m_editor->pushAction(),
+                            m_actions->pause,
+                            m_recording->recordAction(),
+                            m_editor->undoAction(),
+                            m_editor->redoAction(),
+                            m_profiles->abToggleAction(),
+                            m_profiles->openAction(),
+                            m_profiles->saveAction(),
+                            m_profiles->saveAsAction(),
+                            m_actions->openRecording,
+                            m_actions->backToLive,
+                            m_plotActions->autoscaleAction(),
+                            m_actions->degrees,
+                            m_actions->resetReference,
+                            m_plotActions->exportImageAction(),
+                            m_plotActions->exportCsvAction(),
+                            m_actions->shortcuts,
+                            m_actions->quit} +
+           m_editor->keyboardActions() + m_plotActions->windowActions();
 }
 
 void MainWindow::showShortcuts()

@@ -21,7 +21,9 @@
 #include "window/mainwindow.h"
 #include "window/shortcutsdialog.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
@@ -37,6 +39,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
 #include <QUndoStack>
 
 #include <cmath>
@@ -128,6 +131,8 @@ private Q_SLOTS:
     void hugeReplaySpanKeepsTheWindow();
     void oversizedSettingsAreFitted_data();
     void oversizedSettingsAreFitted();
+    void handAndStiffnessInSightTogether();
+    void keyboardReachesFieldsAndActions();
     void derivedFiguresInSightAtEverySize_data();
     void derivedFiguresInSightAtEverySize();
 
@@ -940,6 +945,90 @@ void TestMainWindow::oversizedSettingsAreFitted()
 }
 
 QTEST_MAIN(TestMainWindow)
+void TestMainWindow::handAndStiffnessInSightTogether()
+{
+    // Once tabs of one dock: the operating point could not be watched while the input changed.
+    m_window->resize(1280, 720);
+    connectSim();
+    QTRY_VERIFY(find<QDockWidget>("simulatorDock")->isVisible());
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    auto *stiffness = find<QWidget>("stiffness_plot");
+    auto *hand = find<QWidget>("simulatorPanel");
+    QVERIFY(stiffness->isVisible() && !stiffness->visibleRegion().isEmpty());
+    QVERIFY(hand->isVisible() && !hand->visibleRegion().isEmpty());
+    QVERIFY(m_window->tabifiedDockWidgets(find<QDockWidget>("simulatorDock")).isEmpty());
+    // The active input in the status bar, following the panel.
+    auto *status = find<QLabel>("handStatus");
+    QVERIFY(status->isVisible());
+    QCOMPARE(status->text(), QStringLiteral("Hand: sine 0.06 N·m at 0.2 Hz"));
+    HandInput still;
+    still.kind = HandInput::Kind::Constant;
+    still.amplitude = 0.01;
+    find<SimulatorPanel>("simulatorPanel")->setHand(still);
+    QCOMPARE(status->text(), QStringLiteral("Hand: constant 0.01 N·m"));
+    m_window->disconnectDevice();
+    QTRY_VERIFY(!status->isVisible());
+}
+
+void TestMainWindow::keyboardReachesFieldsAndActions()
+{
+    connectSim();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    auto *editor = find<ParameterEditor>("parameterEditor");
+
+    // Alt+4 goes to K_max; Tab goes from field to field (no sliders, no buttons between).
+    QTest::keyClick(m_window.get(), Qt::Key_4, Qt::AltModifier);
+    QCOMPARE(QApplication::focusWidget(), find<QWidget>("spin_K_max"));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+    QCOMPARE(QApplication::focusWidget(), find<QWidget>("spin_N"));
+    QTest::keyClick(m_window.get(), Qt::Key_1, Qt::AltModifier);
+    QCOMPARE(QApplication::focusWidget(), find<QWidget>("spin_D_adm"));
+    for (const char *next : {"spin_M_adm", "spin_K_min", "spin_K_max"}) {
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QCOMPARE(QApplication::focusWidget(), find<QWidget>(next));
+    }
+
+    // Space in a number field pauses; again resumes.
+    auto *plots = find<PlotPanel>("plotPanel");
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(plots->isPaused());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(!plots->isPaused());
+
+    // Ctrl+Z in a field: its own typing first, then the parameter edit.
+    const double before = editor->params().K_max;
+    auto *box = find<QAbstractSpinBox>("spin_K_max");
+    box->selectAll();
+    QTest::keyClicks(box, QStringLiteral("0.7"));
+    QTest::keyClick(box, Qt::Key_Return);
+    QCOMPARE(editor->params().K_max, 0.7);
+    QTest::keyClicks(box, QStringLiteral("5"));
+    QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier); // the field's own undo: the "5"
+    QCOMPARE(editor->params().K_max, 0.7);
+    QTest::keyClick(box, Qt::Key_Return);
+    for (int i = 0; i < 3 && editor->params().K_max != before; ++i)
+        QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(editor->params().K_max, before);
+
+    // Read and window length by key.
+    QSignalSpy reads(editor, &ParameterEditor::readRequested);
+    QTest::keyClick(m_window.get(), Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(reads.count(), 1);
+    QTest::keyClick(m_window.get(), Qt::Key_3, Qt::ControlModifier);
+    QCOMPARE(plots->windowLength(), 30.0);
+    const bool autoscale = plots->autoscale();
+    QTest::keyClick(m_window.get(), Qt::Key_A, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(plots->autoscale(), !autoscale);
+
+    // F1's dialog carries the user guide too.
+    ShortcutsDialog dialog(m_window->shortcutActions(), m_window.get());
+    auto *guide = dialog.findChild<QTextBrowser *>(QStringLiteral("userGuide"));
+    QVERIFY(guide);
+    QVERIFY(guide->toPlainText().contains(QStringLiteral("HATPIC Tuner — user guide")));
+}
+
 void TestMainWindow::derivedFiguresInSightAtEverySize_data()
 {
     QTest::addColumn<QSize>("size");
