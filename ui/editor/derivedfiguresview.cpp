@@ -1,6 +1,6 @@
 #include "editor/derivedfiguresview.h"
 
-#include <QFormLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QVBoxLayout>
@@ -47,9 +47,7 @@ QLabel *warningLabel(QWidget *parent, const QString &name)
 
 DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
 {
-    auto *form = new QFormLayout;
-    form->setLabelAlignment(Qt::AlignRight);
-    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    auto *form = new QGridLayout;
 
     m_omega = valueLabel(this, u"figure_omega_n"_s,
                          tr("Natural frequency √(K_max / D_adm) of the admittance filter with the "
@@ -70,20 +68,34 @@ DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
     m_peakBar->setMaximumHeight(14);
     m_peakBar->setToolTip(m_peak->toolTip());
 
-    form->addRow(tr("natural frequency ω_n"), m_omega);
-    form->addRow(tr("damping ratio ζ"), m_zeta);
-    form->addRow(tr("time constant D_adm/M_adm"), m_timeConstant);
-    form->addRow(tr("peak |τ_rec|"), m_peak);
-    form->addRow(QString(), m_peakBar);
+    // Two figures a row: the box sits next to Push, above the scrolling fields, and must stay
+    // in sight at 1280×720.
+    auto pair = [&](int row, int column, const QString &name, QWidget *value, int span = 1) {
+        auto *label = new QLabel(name, this);
+        label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        label->setStyleSheet(QStringLiteral("color: gray;"));
+        form->addWidget(label, row, 2 * column);
+        form->addWidget(value, row, 2 * column + 1, 1, span);
+    };
+    pair(0, 0, tr("ω_n"), m_omega);
+    pair(0, 1, tr("ζ"), m_zeta);
+    pair(1, 0, tr("D_adm/M_adm"), m_timeConstant, 3);
+    pair(2, 0, tr("peak |τ_rec|"), m_peak, 3);
+    form->addWidget(m_peakBar, 3, 1, 1, 3);
+    form->setColumnStretch(1, 1);
+    form->setColumnStretch(3, 1);
+    form->setVerticalSpacing(2);
 
     m_saturation = warningLabel(this, u"warning_saturation"_s);
     m_ringing = warningLabel(this, u"warning_ringing"_s);
+    m_chatter = warningLabel(this, u"warning_chatter"_s);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(form);
     layout->addWidget(m_saturation);
     layout->addWidget(m_ringing);
+    layout->addWidget(m_chatter);
     refresh();
 }
 
@@ -110,6 +122,22 @@ bool DerivedFiguresView::isShowingRinging() const
     return !m_ringing->isHidden();
 }
 
+bool DerivedFiguresView::isShowingChatter() const
+{
+    return !m_chatter->isHidden();
+}
+
+void DerivedFiguresView::setChatter(std::optional<double> frequency, double jump)
+{
+    m_chatter->setVisible(frequency.has_value());
+    if (!frequency)
+        return;
+    m_chatter->setText(tr("⚠ Chatters: the knob crosses the dead-zone edge back and forth "
+                          "about %1 times a second. The torque jumps by K_max·Q_dz = %2 N·m "
+                          "there, more than the hand holds. Lower K_max or Q_dz.")
+                           .arg(num(*frequency, 2), num(jump)));
+}
+
 QString DerivedFiguresView::warningText() const
 {
     QStringList lines;
@@ -117,6 +145,8 @@ QString DerivedFiguresView::warningText() const
         lines << m_saturation->text();
     if (isShowingRinging())
         lines << m_ringing->text();
+    if (isShowingChatter())
+        lines << m_chatter->text();
     return lines.join(u'\n');
 }
 

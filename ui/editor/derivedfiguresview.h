@@ -6,6 +6,8 @@
 
 #include <QWidget>
 
+#include <optional>
+
 class QLabel;
 class QProgressBar;
 
@@ -24,7 +26,11 @@ public:
     const DerivedFigures &figures() const { return m_figures; }
     bool isShowingSaturation() const; //!< the saturation warning is visible
     bool isShowingRinging() const;    //!< the ringing warning is visible
-    QString warningText() const;      //!< all warnings shown, one per line
+    //! Chatter seen in the telemetry (chatterdetector.h): its frequency [Hz] and the jump
+    //! K_max·Q_dz [N·m] of the device's parameters; nullopt hides the warning.
+    void setChatter(std::optional<double> frequency, double jump);
+    bool isShowingChatter() const;
+    QString warningText() const; //!< all warnings shown, one per line
 
 private:
     void refresh();
@@ -39,6 +45,7 @@ private:
     QProgressBar *m_peakBar = nullptr;
     QLabel *m_saturation = nullptr;
     QLabel *m_ringing = nullptr;
+    QLabel *m_chatter = nullptr;
 };
 
 } // namespace hatpic

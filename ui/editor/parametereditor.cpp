@@ -20,6 +20,8 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace hatpic {
 
 using namespace Qt::StringLiterals;
@@ -44,11 +46,14 @@ ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
     });
     m_readAction = new QAction(tr("Read"), this);
     m_readAction->setObjectName(u"action_read"_s);
-    m_readAction->setToolTip(tr("Read from device: ask the device for its current parameters"));
+    m_readAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    m_readAction->setToolTip(
+        tr("Read from device: ask the device for its current parameters (Ctrl+Shift+R)"));
     connect(m_readAction, &QAction::triggered, this, &ParameterEditor::readRequested);
     m_revertAction = new QAction(tr("Revert"), this);
     m_revertAction->setObjectName(u"action_revert"_s);
-    m_revertAction->setToolTip(tr("Revert to device values (undoable)"));
+    m_revertAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Backspace));
+    m_revertAction->setToolTip(tr("Revert to device values (undoable; Ctrl+Shift+Backspace)"));
     connect(m_revertAction, &QAction::triggered, this, [this] {
         if (!m_sync.device())
             return;
@@ -62,6 +67,7 @@ ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
     addAction(m_pushAction);
 
     buildUi();
+    addGoToActions();
     applyParams(DeviceParams{}, HostParams{});
     m_undo->clear();
     refreshSync();
@@ -69,6 +75,32 @@ ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
 }
 
 ParameterEditor::~ParameterEditor() = default;
+
+void ParameterEditor::addGoToActions()
+{
+    // Alt+1 … Alt+9 put the cursor in a field, in the order they are shown.
+    QStringList order;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        order << QString::fromLatin1(deviceFieldName(i));
+    order << u"v_max"_s << u"tau_limit"_s;
+    for (qsizetype i = 0; i < std::min<qsizetype>(order.size(), 9); ++i) {
+        ParameterField *f = m_fields.value(order[i]);
+        auto *go = new QAction(tr("Go to %1").arg(f->spec().symbol), this);
+        go->setObjectName(u"action_goto_"_s + order[i]);
+        go->setShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_1 + int(i))));
+        connect(go, &QAction::triggered, this, [f] {
+            f->spinBox()->setFocus(Qt::ShortcutFocusReason);
+            f->spinBox()->selectAll();
+        });
+        addAction(go);
+        m_goToActions << go;
+    }
+}
+
+QList<QAction *> ParameterEditor::keyboardActions() const
+{
+    return QList<QAction *>{m_readAction, m_revertAction} + m_goToActions;
+}
 
 void ParameterEditor::buildUi()
 {
@@ -78,12 +110,15 @@ void ParameterEditor::buildUi()
     column->setSpacing(10);
     column->addWidget(buildDeviceGroups());
     column->addWidget(buildHostGroup());
-    auto *derivedBox = new QGroupBox(tr("Derived figures (K = K_max)"), content);
+    column->addStretch(1);
+    // The derived figures and their warnings sit right under Push, outside the scrolling
+    // fields, so they are in sight at every window size.
+    auto *derivedBox = new QGroupBox(tr("Derived figures (K = K_max)"), this);
+    derivedBox->setObjectName(u"derivedFiguresBox"_s);
     auto *derivedLayout = new QVBoxLayout(derivedBox);
+    derivedLayout->setContentsMargins(6, 2, 6, 4);
     m_derived = new DerivedFiguresView(derivedBox);
     derivedLayout->addWidget(m_derived);
-    column->addWidget(derivedBox);
-    column->addStretch(1);
 
     // One column width for names and units across the groups, so the spin boxes line up.
     ParameterField::alignColumns(m_fields.values(),
@@ -101,6 +136,7 @@ void ParameterEditor::buildUi()
     connect(m_syncBar, &SyncBar::livePushToggled, this, &ParameterEditor::setLivePush);
     connect(m_syncBar, &SyncBar::angleInDegreesToggled, this, &ParameterEditor::setAngleInDegrees);
     layout->addWidget(m_syncBar);
+    layout->addWidget(derivedBox);
     layout->addWidget(scroll, 1);
 }
 

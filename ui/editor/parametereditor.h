@@ -92,6 +92,8 @@ public:
     //! The row of a numeric field by model name ("K_max", "v_max", …), or nullptr.
     ParameterField *field(const QString &key) const { return m_fields.value(key); }
     DerivedFiguresView *derivedFiguresView() const { return m_derived; }
+    //! Read, Revert and "Go to <field>" (Alt+1 … Alt+9), for the shortcut table.
+    QList<QAction *> keyboardActions() const;
 
 Q_SIGNALS:
     void paramsEdited(); //!< the edited set changed (edit, undo/redo, setParams)
@@ -104,6 +106,7 @@ Q_SIGNALS:
 
 private:
     void buildUi();
+    void addGoToActions();
     QWidget *buildDeviceGroups();
     QWidget *buildHostGroup();
     void onFieldEdited(const QString &key, double value);
@@ -137,6 +140,7 @@ private:
 
     QUndoStack *m_undo = nullptr;
     QHash<QString, ParameterField *> m_fields;
+    QList<QAction *> m_goToActions;
     QComboBox *m_mode = nullptr;
     QCheckBox *m_refDeadzone = nullptr;
     SyncBar *m_syncBar = nullptr;

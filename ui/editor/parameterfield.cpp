@@ -27,6 +27,9 @@ double roundSignificant(double value, int digits)
     return QString::number(value, 'g', digits).toDouble();
 }
 
+const QString kClampStyle = QStringLiteral("color: #8a6d00;");
+const QString kProblemStyle = QStringLiteral("color: #d32f2f;");
+
 const QString kInvalidStyle = QStringLiteral(
     "QAbstractSpinBox { border: 2px solid #d32f2f; border-radius: 3px; padding: 1px; }");
 
@@ -68,11 +71,12 @@ ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject 
     m_slider->setObjectName(u"slider_"_s + spec.key);
     m_slider->setRange(0, kSliderTicks);
     m_slider->setMinimumWidth(60);
+    m_slider->setFocusPolicy(Qt::ClickFocus); // Tab goes from field to field
     m_slider->setToolTip(tip);
 
     m_message = new QLabel(parentWidget);
     m_message->setObjectName(u"error_"_s + spec.key);
-    m_message->setStyleSheet(QStringLiteral("color: #d32f2f;"));
+    m_message->setStyleSheet(kProblemStyle);
     m_message->setWordWrap(true);
     m_message->hide();
 
@@ -83,17 +87,26 @@ ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject 
         const double v = shown / displayScale();
         if (v == m_value)
             return;
+        if (!m_note.isEmpty() && shown != m_spin->minimum() && shown != m_spin->maximum()) {
+            m_note.clear();
+            updateMessage();
+        }
         m_value = v;
         updateSlider();
         updateMarker();
         Q_EMIT edited(v);
     });
     connect(m_spin, &QAbstractSpinBox::editingFinished, this, &ParameterField::editFinished);
+    connect(m_spin, &ScientificSpinBox::clamped, this, &ParameterField::showClamp);
     connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
         const double v = sliderToValue(position);
         if (v == m_value)
             return;
         m_value = v;
+        if (!m_note.isEmpty()) {
+            m_note.clear();
+            updateMessage();
+        }
         {
             const QSignalBlocker block(m_spin);
             m_spin->setValue(v * displayScale());
@@ -220,13 +233,33 @@ void ParameterField::setProblem(const QString &problem)
     m_problem = problem;
     m_spin->setProperty("invalid", !problem.isEmpty());
     m_spin->setStyleSheet(problem.isEmpty() ? QString() : kInvalidStyle);
-    m_message->setText(problem);
-    m_message->setVisible(!problem.isEmpty());
+    updateMessage();
     const QString tip = u"<b>"_s + m_spec.symbol + u"</b> — "_s + m_spec.meaning + u" ["_s +
                         m_spec.unit + u"]<br>"_s + m_spec.toolTip;
     m_spin->setToolTip(problem.isEmpty() ? tip
                                          : tip + u"<br><span style=\"color:#d32f2f\">"_s + problem +
                                                u"</span>"_s);
+}
+
+void ParameterField::showClamp(double typed, double bound)
+{
+    // Every field treats out-of-range typing alike: the nearest bound, said out loud.
+    const bool above = typed > bound;
+    const QString unit = m_spec.angle && m_degrees ? QStringLiteral("°") : u" "_s + m_spec.unit;
+    m_note =
+        tr("%1: %2 is %3 the %4 %5%6, set to %5")
+            .arg(m_spec.symbol, QString::number(typed, 'g', 6), above ? tr("above") : tr("below"),
+                 above ? tr("maximum") : tr("minimum"), m_spin->textFromValue(bound), unit);
+    updateMessage();
+}
+
+void ParameterField::updateMessage()
+{
+    // A broken rule outranks the clamp note: it blocks the push.
+    const QString text = m_problem.isEmpty() ? m_note : m_problem;
+    m_message->setStyleSheet(m_problem.isEmpty() ? kClampStyle : kProblemStyle);
+    m_message->setText(text);
+    m_message->setVisible(!text.isEmpty());
 }
 
 void ParameterField::setDeviceValue(std::optional<double> deviceValue)

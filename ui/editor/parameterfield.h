@@ -62,6 +62,8 @@ public:
     //! The rule this field breaks (from validate()), or empty when fine.
     void setProblem(const QString &problem);
     QString problem() const { return m_problem; }
+    //! What the last out-of-range entry was clamped to, in words; empty when none.
+    QString clampNote() const { return m_note; }
 
     //! The device's value for the diff marker; nullopt hides the marker.
     void setDeviceValue(std::optional<double> deviceValue);
@@ -84,12 +86,15 @@ private:
     void updateSpinRange();
     void updateSlider();
     void updateMarker();
+    void updateMessage();
+    void showClamp(double typed, double bound);
     QString numberText(double value) const;
 
     Spec m_spec;
     double m_value = 0;
     bool m_degrees = false;
     QString m_problem;
+    QString m_note;
     std::optional<double> m_device;
 
     QLabel *m_marker = nullptr;

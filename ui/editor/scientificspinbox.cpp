@@ -1,5 +1,6 @@
 #include "editor/scientificspinbox.h"
 
+#include <QKeyEvent>
 #include <QLineEdit>
 
 #include <algorithm>
@@ -16,6 +17,27 @@ ScientificSpinBox::ScientificSpinBox(QWidget *parent) : QDoubleSpinBox(parent)
     setAccelerated(true);
     setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
+}
+
+bool ScientificSpinBox::event(QEvent *event)
+{
+    // A number needs no space, and Ctrl+Z means the field's own undo only while there is
+    // uncommitted typing: otherwise the window's shortcuts get them (pause, undo the edit).
+    if (event->type() == QEvent::ShortcutOverride) {
+        const auto *key = static_cast<QKeyEvent *>(event);
+        if (key->key() == Qt::Key_Space && key->modifiers() == Qt::NoModifier) {
+            event->ignore();
+            return true;
+        }
+        // Typing not yet committed (Enter, leaving the field) is the field's to undo.
+        const bool typing =
+            lineEdit()->isUndoAvailable() && lineEdit()->text() != textFromValue(value());
+        if (key->matches(QKeySequence::Undo) && !typing) {
+            event->ignore();
+            return true;
+        }
+    }
+    return QDoubleSpinBox::event(event);
 }
 
 void ScientificSpinBox::setSignificantDigits(int digits)
@@ -59,6 +81,11 @@ double ScientificSpinBox::valueFromText(const QString &text) const
     // Unchanged text keeps the exact value: the display shows fewer digits than it holds.
     if (text == textFromValue(value()))
         return value();
+    // A bound shows rounded (π/2 as 1.5708, just above it): its text stands for the bound.
+    if (text == textFromValue(maximum()))
+        return maximum();
+    if (text == textFromValue(minimum()))
+        return minimum();
     bool ok = false;
     const double v = text.trimmed().toDouble(&ok);
     return ok ? v : value();
@@ -78,6 +105,8 @@ QValidator::State ScientificSpinBox::validate(QString &input, int &pos) const
     const double v = t.toDouble(&ok);
     if (!ok || !std::isfinite(v))
         return QValidator::Intermediate; // "1e", "-", "0." while typing
+    if (t == textFromValue(minimum()) || t == textFromValue(maximum()))
+        return QValidator::Acceptable;
     if (v < minimum() || v > maximum())
         return QValidator::Intermediate;
     return QValidator::Acceptable;
@@ -87,7 +116,16 @@ void ScientificSpinBox::fixup(QString &input) const
 {
     bool ok = false;
     const double v = input.trimmed().toDouble(&ok);
-    input = textFromValue(ok && std::isfinite(v) ? std::clamp(v, minimum(), maximum()) : value());
+    if (!ok || !std::isfinite(v)) {
+        input = textFromValue(value());
+        return;
+    }
+    const double bound = std::clamp(v, minimum(), maximum());
+    input = textFromValue(bound);
+    if (bound != v) {
+        // fixup() is const by Qt's signature; telling the field it clamped changes nothing here.
+        Q_EMIT const_cast<ScientificSpinBox *>(this)->clamped(v, bound);
+    }
 }
 
 } // namespace hatpic

@@ -25,10 +25,15 @@ public:
     int significantDigits() const { return m_digits; }
 
     void stepBy(int steps) override;
+    bool event(QEvent *event) override;
     QString textFromValue(double value) const override;
     double valueFromText(const QString &text) const override;
     QValidator::State validate(QString &input, int &pos) const override;
     void fixup(QString &input) const override;
+
+Q_SIGNALS:
+    //! Typed text was outside the range and is replaced by the nearest bound (display units).
+    void clamped(double typed, double bound);
 
 private:
     //! Drops binary noise after arithmetic (0.00011000000000000002 → 0.00011).

@@ -49,6 +49,10 @@ SimulatorPanel::SimulatorPanel(QWidget *parent) : QWidget(parent)
     m_kind->addItem(tr("Chirp (linear sweep)"), int(Kind::Chirp));
     m_kind->addItem(tr("Virtual hand — drag the target"), int(Kind::VirtualHand));
 
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("handStatus"));
+    m_status->hide(); // until the window puts it in its status bar
+
     m_description = new QLabel(this);
     m_description->setWordWrap(true);
     m_description->setStyleSheet(QStringLiteral("color: gray;"));
@@ -209,8 +213,32 @@ void SimulatorPanel::setHand(const HandInput &hand)
     m_last = this->hand();
 }
 
+QString SimulatorPanel::describe(const HandInput &h)
+{
+    const auto n = [](double v) { return QString::number(v, 'g', 3); };
+    switch (h.kind) {
+    case Kind::Idle:
+        return tr("Hand: none");
+    case Kind::Constant:
+        return tr("Hand: constant %1 N·m").arg(n(h.amplitude));
+    case Kind::Step:
+        return tr("Hand: step %1 → %2 N·m").arg(n(h.offset), n(h.amplitude));
+    case Kind::Sine:
+        return tr("Hand: sine %1 N·m at %2 Hz").arg(n(h.amplitude), n(h.frequency));
+    case Kind::Chirp:
+        return tr("Hand: chirp %1 N·m, %2 → %3 Hz")
+            .arg(n(h.amplitude), n(h.frequency), n(h.frequency1));
+    case Kind::VirtualHand:
+        return tr("Hand: virtual hand to %1 rad").arg(n(h.angle));
+    }
+    return {};
+}
+
 void SimulatorPanel::updateVisibility()
 {
+    m_status->setText(describe(hand()));
+    m_status->setToolTip(
+        tr("The simulated hand's input (View → Simulated hand): %1").arg(hand().toSpec()));
     const auto kind = static_cast<Kind>(m_kind->currentData().toInt());
     const bool torque = kind != Kind::Idle && kind != Kind::VirtualHand;
     const bool periodic = kind == Kind::Sine || kind == Kind::Chirp;

@@ -38,6 +38,12 @@ public:
     //! requested one, else (idle requested) gentleHand().
     HandInput handToStartWith(const HandInput &requested);
 
+    //! The input in words for the status bar: "Hand: sine 0.06 N·m at 0.2 Hz".
+    static QString describe(const HandInput &hand);
+    //! A label that always says the active input (object name "handStatus"), for the window's
+    //! status bar.
+    QLabel *statusLabel() const { return m_status; }
+
 Q_SIGNALS:
     void handChanged(const hatpic::HandInput &hand);
 
@@ -49,6 +55,7 @@ private:
     bool m_chosen = false;
     QComboBox *m_kind = nullptr;
     QLabel *m_description = nullptr;
+    QLabel *m_status = nullptr;
     QLabel *m_amplitudeLabel = nullptr;
     QDoubleSpinBox *m_amplitude = nullptr;
     QLabel *m_offsetLabel = nullptr;

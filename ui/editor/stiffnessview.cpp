@@ -2,6 +2,7 @@
 
 #include "model/stiffness.h"
 
+#include "plots/palette.h"
 #include "plots/qcp.h"
 #include <QTimer>
 #include <QVBoxLayout>
@@ -18,9 +19,10 @@ using namespace Qt::StringLiterals;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-const QColor kEditedColour(0x15, 0x65, 0xc0);
-const QColor kDeviceColour(0xef, 0x6c, 0x00);
-const QColor kPointColour(0xc6, 0x28, 0x28);
+// The curves are τ_rec(θ) and K_rec(θ): τ_rec's colour, solid when edited, dashed when the
+// device's; the bands and the live point as in the time plots (plots/palette.h).
+const QColor kCurveColour = palette::channel(Channel::TauRec);
+const QColor kPointColour = palette::kLivePoint;
 
 QCPItemStraightLine *straightLine(QCustomPlot *plot, QCPAxisRect *rect, const QPen &pen)
 {
@@ -39,7 +41,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
 {
     m_plot = new QCustomPlot(this);
     m_plot->setObjectName(u"stiffness_plot"_s);
-    m_plot->setMinimumSize(320, 280);
+    m_plot->setMinimumSize(280, 200);
     m_plot->plotLayout()->clear();
     m_torqueRect = new QCPAxisRect(m_plot);
     m_stiffnessRect = new QCPAxisRect(m_plot);
@@ -57,8 +59,8 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
         g->setName(name);
         return g;
     };
-    QPen edited(kEditedColour, 2.0);
-    QPen device(kDeviceColour, 1.5, Qt::DashLine);
+    QPen edited(kCurveColour, 2.0);
+    QPen device(kCurveColour.darker(140), 1.5, Qt::DashLine);
     m_deviceTorque = graph(m_torqueRect, device, tr("device"));
     m_deviceStiffness = graph(m_stiffnessRect, device, tr("device"));
     m_torque = graph(m_torqueRect, edited, tr("edited"));
@@ -82,7 +84,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     for (QCPGraph *g : {m_torque, m_deviceTorque, m_point})
         g->addToLegend(legend);
 
-    QPen limitPen(QColor(0xd3, 0x2f, 0x2f), 1.0, Qt::DotLine);
+    QPen limitPen(palette::kLimit, 1.0, Qt::DotLine);
     m_limitHigh = straightLine(m_plot, m_torqueRect, limitPen);
     m_limitLow = straightLine(m_plot, m_torqueRect, limitPen);
     m_cursor = straightLine(m_plot, m_stiffnessRect, QPen(kPointColour, 1.0, Qt::DotLine));
@@ -93,7 +95,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_point->setLayer(u"overlay"_s);
     m_cursor->setLayer(u"overlay"_s);
 
-    const QColor shades[] = {QColor(0x15, 0x65, 0xc0, 22), QColor(0x60, 0x60, 0x60, 40)};
+    const QColor shades[] = {palette::kNotch, palette::kDeadZone};
     for (int i = 0; i < 4; ++i) {
         QCPAxisRect *rect = i < 2 ? m_torqueRect : m_stiffnessRect;
         auto *r = new QCPItemRect(m_plot);
@@ -124,7 +126,8 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     });
 
     m_plot->setToolTip(tr("Solid: the edited parameters. Dashed: the device's. Shaded: dead zone "
-                          "(grey) and notch band (blue). Dotted red: ±tau_limit. The dot is the "
+                          "(grey) and notch band (amber), as in the time plots. Dotted red: "
+                          "±tau_limit. The dot is the "
                           "live knob angle and the measured re-centering torque."));
 
     auto *layout = new QVBoxLayout(this);

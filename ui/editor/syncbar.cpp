@@ -89,6 +89,11 @@ SyncBar::SyncBar(QUndoStack *undo, QAction *read, QAction *revert, QAction *push
     options->addStretch(1);
     grid->addLayout(options, 1, 0, 1, 2);
     grid->setColumnStretch(0, 1);
+    // Only the fields are Tab stops; the buttons have shortcuts (Ctrl+Return, Ctrl+Shift+R, …).
+    for (QWidget *w : findChildren<QWidget *>()) {
+        if (w->focusPolicy() & Qt::TabFocus)
+            w->setFocusPolicy(Qt::ClickFocus);
+    }
 }
 
 void SyncBar::setState(SyncState state, const QString &text)

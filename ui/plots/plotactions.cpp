@@ -28,8 +28,12 @@ PlotActions::PlotActions(PlotPanel *plots, QWidget *dialogParent)
     : QObject(plots), m_plots(plots), m_dialogParent(dialogParent)
 {
     m_window = new QActionGroup(this);
+    int key = Qt::Key_1; // Ctrl+1 … Ctrl+4: the window lengths, shortest first
     for (double seconds : kWindowChoices) {
-        auto *action = new QAction(tr("%1 s").arg(seconds), m_window);
+        // "5 s" on the toolbar, the whole name in the menu and the shortcut table.
+        auto *action = new QAction(tr("Window length %1 s").arg(seconds), m_window);
+        action->setIconText(tr("%1 s").arg(seconds));
+        action->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(key++)));
         action->setCheckable(true);
         action->setData(seconds);
         action->setToolTip(tr("Show the last %1 seconds").arg(seconds));
@@ -41,6 +45,7 @@ PlotActions::PlotActions(PlotPanel *plots, QWidget *dialogParent)
     m_autoscale = new QAction(tr("&Autoscale"), this);
     m_autoscale->setCheckable(true);
     m_autoscale->setChecked(plots->autoscale());
+    m_autoscale->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
     m_autoscale->setToolTip(tr("Fit the vertical axes to the data; off keeps them fixed and the "
                                "mouse drags and zooms them"));
     connect(m_autoscale, &QAction::toggled, plots, &PlotPanel::setAutoscale);

@@ -1,6 +1,7 @@
 #include "plots/plotframe.h"
 
 #include "plots/displayunits.h"
+#include "plots/palette.h"
 #include "plots/plotoverlays.h"
 #include "plots/qcp.h"
 #include "plots/samplebuffer.h"
@@ -87,14 +88,18 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
     plot->plotLayout()->setColumnSpacing(0);
     plot->plotLayout()->setRowSpacing(0);
 
-    addGraph(Channel::Theta, PlotKind::Angle, QColor(21, 101, 192), false);
-    addGraph(Channel::Omega, PlotKind::Angle, QColor(0, 151, 167), true);
-    addGraph(Channel::Tau, PlotKind::Torque, QColor(97, 97, 97), false);
-    addGraph(Channel::TauRec, PlotKind::Torque, QColor(21, 101, 192), false);
-    addGraph(Channel::TauExt, PlotKind::Torque, QColor(46, 125, 50), false);
-    addGraph(Channel::TauTotal, PlotKind::Torque, QColor(230, 81, 0), false);
-    addGraph(Channel::VRef, PlotKind::Reference, QColor(123, 31, 162), false);
-    addGraph(Channel::PRef, PlotKind::Reference, QColor(0, 121, 107), true);
+    addGraph(Channel::Theta, PlotKind::Angle, false);
+    addGraph(Channel::Omega, PlotKind::Angle, true);
+    addGraph(Channel::Tau, PlotKind::Torque, false);
+    addGraph(Channel::TauRec, PlotKind::Torque, false);
+    addGraph(Channel::TauExt, PlotKind::Torque, false);
+    addGraph(Channel::TauTotal, PlotKind::Torque, false);
+    addGraph(Channel::VRef, PlotKind::Reference, false);
+    addGraph(Channel::PRef, PlotKind::Reference, true);
+    // τ_total = τ_rec + τ_ext lies exactly on τ_rec while τ_ext = 0: τ_rec goes wide underneath,
+    // τ_total dashed on top, so both stay visible.
+    graph(Channel::TauRec)->setPen(QPen(palette::channel(Channel::TauRec), 3.0));
+    graph(Channel::TauTotal)->setPen(QPen(palette::channel(Channel::TauTotal), 1.0, Qt::DashLine));
     graph(Channel::Omega)->setVisible(false);
 
     QCPAxisRect *angle = rect(PlotKind::Angle);
@@ -107,8 +112,8 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
         key->addToLegend(legend(PlotKind::Angle));
         return key;
     };
-    m_deadZoneKey = makeKey(tr("dead zone ±Q_dz"), PlotOverlays::kDeadZoneColor);
-    m_notchKey = makeKey(tr("notch band ±N"), PlotOverlays::kNotchColor);
+    m_deadZoneKey = makeKey(tr("dead zone ±Q_dz"), palette::kDeadZone);
+    m_notchKey = makeKey(tr("notch band ±N"), palette::kNotch);
     // Room below the text: the legend clips each item to its rect, which would cut the "_".
     for (QCPLegend *legend : m_legends) {
         for (int k = 0; k < legend->itemCount(); ++k)
@@ -123,7 +128,7 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
     rect(PlotKind::Reference)->axis(QCPAxis::atRight)->setRange(-0.5, 0.5);
 }
 
-void PlotFrame::addGraph(Channel channel, PlotKind plot, const QColor &color, bool rightAxis)
+void PlotFrame::addGraph(Channel channel, PlotKind plot, bool rightAxis)
 {
     QCPAxisRect *r = rect(plot);
     QCPAxis *y = r->axis(rightAxis ? QCPAxis::atRight : QCPAxis::atLeft);
@@ -131,7 +136,7 @@ void PlotFrame::addGraph(Channel channel, PlotKind plot, const QColor &color, bo
     g->setName(channelLabel(channel));
     // 1 px: Qt draws it with its fast cosmetic stroker; a wider pen is outlined and filled
     // as a polygon, which doubled the cost of a frame (docs/performance.md).
-    g->setPen(QPen(color, 1.0));
+    g->setPen(QPen(palette::channel(channel), 1.0));
     g->setAdaptiveSampling(false); // the Decimator already reduced the data to the pixels
     g->removeFromLegend();
     g->addToLegend(legend(plot));
@@ -143,9 +148,10 @@ void PlotFrame::setAxisLabels(const DisplayUnits &units)
     rect(PlotKind::Angle)
         ->axis(QCPAxis::atLeft)
         ->setLabel(tr("θ [%1]").arg(units.unit(Channel::Theta)));
-    rect(PlotKind::Angle)
-        ->axis(QCPAxis::atRight)
-        ->setLabel(tr("ω [%1]").arg(units.unit(Channel::Omega)));
+    // setupFullAxesBox hid the right axes' tick labels; ω and p_ref need theirs.
+    QCPAxis *omega = rect(PlotKind::Angle)->axis(QCPAxis::atRight);
+    omega->setLabel(tr("ω [%1]").arg(units.unit(Channel::Omega)));
+    omega->setTickLabels(true);
     rect(PlotKind::Torque)->axis(QCPAxis::atLeft)->setLabel(tr("torque [N·m]"));
     rect(PlotKind::Reference)
         ->axis(QCPAxis::atLeft)

@@ -64,7 +64,7 @@ public:
                        bool bandsVisible);
 
 private:
-    void addGraph(Channel channel, PlotKind plot, const QColor &color, bool rightAxis);
+    void addGraph(Channel channel, PlotKind plot, bool rightAxis);
 
     std::array<QCPAxisRect *, kPlotCount> m_rects{};
     std::array<QCPLegend *, kPlotCount> m_legends{};

@@ -1,21 +1,21 @@
 #include "plots/plotoverlays.h"
 
+#include "plots/eventmarkers.h"
+#include "plots/palette.h"
 #include "plots/qcp.h"
 
 #include <QFontMetrics>
+
+#include <cmath>
 
 namespace hatpic {
 
 namespace {
 
 const QColor kCenterColor(90, 90, 90);
-const QColor kEventColor(123, 31, 162);
 const QColor kCursorColor(40, 40, 40, 160);
 
 } // namespace
-
-const QColor PlotOverlays::kDeadZoneColor(84, 110, 122, 90);
-const QColor PlotOverlays::kNotchColor(255, 152, 0, 55);
 
 PlotOverlays::PlotOverlays(QCustomPlot *plot, const std::array<QCPAxisRect *, kPlotCount> &rects)
     : m_plot(plot), m_rects(rects)
@@ -45,8 +45,8 @@ PlotOverlays::PlotOverlays(QCustomPlot *plot, const std::array<QCPAxisRect *, kP
         place(band->bottomRight, 1);
         return band;
     };
-    m_deadZone = makeBand(kDeadZoneColor);
-    m_notch = {makeBand(kNotchColor), makeBand(kNotchColor)};
+    m_deadZone = makeBand(palette::kDeadZone);
+    m_notch = {makeBand(palette::kNotch), makeBand(palette::kNotch)};
     m_centerLine = new QCPItemLine(m_plot);
     m_centerLine->setLayer(QStringLiteral("bands"));
     m_centerLine->setClipAxisRect(angle);
@@ -117,11 +117,12 @@ void PlotOverlays::setEvents(const QList<RecordingEvent> &events, const QFont &f
         m_plot->removeItem(item);
     m_eventItems.clear();
     m_eventLabels.clear();
+    m_eventDetails.clear();
     QCPAxisRect *angle = m_rects[0];
-    for (const RecordingEvent &event : events) {
+    for (const EventMarker &event : groupEvents(events)) {
         for (int i = 0; i < kPlotCount; ++i) {
             QCPItemStraightLine *line = verticalLine(i, "bands");
-            line->setPen(QPen(kEventColor, 1, Qt::DashDotLine));
+            line->setPen(QPen(palette::kEvent, 1, Qt::DashDotLine));
             line->point1->setCoords(event.t_s, 0);
             line->point2->setCoords(event.t_s, 1);
             m_eventItems.append(line);
@@ -135,11 +136,12 @@ void PlotOverlays::setEvents(const QList<RecordingEvent> &events, const QFont &f
         label->position->setCoords(event.t_s, 0);
         label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
         label->setPadding(QMargins(3, 2, 3, 2));
-        label->setColor(kEventColor);
-        label->setText(event.text);
+        label->setColor(palette::kEvent);
+        label->setText(event.label);
         label->setFont(font);
         m_eventItems.append(label);
         m_eventLabels.append(label);
+        m_eventDetails.append(event.details);
     }
     fitEventLabels();
 }
@@ -158,6 +160,27 @@ void PlotOverlays::fitEventLabels()
         label->setPositionAlignment(Qt::AlignTop |
                                     (fitsRight || !fitsLeft ? Qt::AlignLeft : Qt::AlignRight));
     }
+}
+
+QString PlotOverlays::eventDetailsAt(const QPointF &pixel) const
+{
+    constexpr double kReach = 4; // [px] either side of a marker's line
+    for (qsizetype i = 0; i < m_eventLabels.size(); ++i) {
+        const QCPItemText *label = m_eventLabels[i];
+        const QRectF box(label->topLeft->pixelPosition(), label->bottomRight->pixelPosition());
+        if (box.normalized().contains(pixel))
+            return m_eventDetails[i];
+        const double t = label->position->coords().x();
+        for (QCPAxisRect *rect : m_rects) {
+            const double x = rect->axis(QCPAxis::atBottom)->coordToPixel(t);
+            // By height only: a live marker's line is at the plot's right edge.
+            const QRect r = rect->rect();
+            if (pixel.y() >= r.top() && pixel.y() <= r.bottom() &&
+                std::abs(pixel.x() - x) <= kReach)
+                return m_eventDetails[i];
+        }
+    }
+    return {};
 }
 
 void PlotOverlays::setCursor(std::optional<double> t)

@@ -11,6 +11,8 @@
 #include <QColor>
 #include <QFont>
 #include <QList>
+#include <QPointF>
+#include <QStringList>
 
 #include <array>
 #include <optional>
@@ -29,8 +31,6 @@ class PlotOverlays
 {
 public:
     static constexpr int kPlotCount = 3;
-    static const QColor kDeadZoneColor;
-    static const QColor kNotchColor;
 
     //! rects[0] is the angle plot; the bands go there. Adds the "bands" layer under the grid.
     PlotOverlays(QCustomPlot *plot, const std::array<QCPAxisRect *, kPlotCount> &rects);
@@ -38,13 +38,16 @@ public:
     //! θ0 line and bands from `params`, in display units (angles × `scale`); nullopt hides
     //! everything, `showBands` false keeps only the θ0 line.
     void setBands(const std::optional<DeviceParams> &params, double scale, bool showBands);
-    //! One marker per event; replaces the previous markers.
+    //! One marker per burst of events (eventmarkers.h), a short label on each; replaces the
+    //! previous markers.
     void setEvents(const QList<RecordingEvent> &events, const QFont &font);
     qsizetype eventItemCount() const { return m_eventItems.size(); }
     //! Puts each event label on the side of its line where it fits in the angle plot: right of
     //! the line, or left of it near the right edge (where live pushes land). Call before a
     //! replot, once the x range is set.
     void fitEventLabels();
+    //! The details of the marker whose label or line is at `pixel`; empty when none.
+    QString eventDetailsAt(const QPointF &pixel) const;
     //! The cursor at time t [s]; nullopt hides it.
     void setCursor(std::optional<double> t);
 
@@ -60,6 +63,7 @@ private:
     QCPItemText *m_cursorLabel = nullptr;
     QList<QCPAbstractItem *> m_eventItems;
     QList<QCPItemText *> m_eventLabels;
+    QStringList m_eventDetails; //!< per label, shown on hover
 };
 
 } // namespace hatpic

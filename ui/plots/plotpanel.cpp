@@ -8,6 +8,7 @@
 
 #include <QFileInfo>
 #include <QTimer>
+#include <QToolTip>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -59,6 +60,9 @@ void PlotPanel::buildPlots()
         [this](QCPLegend *, QCPAbstractLegendItem *item, QMouseEvent *) { onLegendClick(item); });
     connect(m_plot, &QCustomPlot::mouseMove, this, [this](QMouseEvent *event) {
         const QPointF pos = event->position();
+        const QString details = m_overlays->eventDetailsAt(pos);
+        if (!details.isEmpty())
+            QToolTip::showText(event->globalPosition().toPoint(), details, m_plot);
         for (QCPAxisRect *rect : m_frame->rects()) {
             if (rect->rect().contains(pos.toPoint())) {
                 setCursorTime(rect->axis(QCPAxis::atBottom)->pixelToCoord(pos.x()));

@@ -53,8 +53,16 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     connect(m_slider, &QSlider::valueChanged, this,
             [this](int value) { m_controller->setPosition(timeOfSliderValue(value)); });
 
+    // Two time bases, each labelled: the playhead into the recording (what the slider spans)
+    // and the session time the plots' time axis counts.
     m_time = new QLabel(this);
     m_time->setObjectName(QStringLiteral("replayTime"));
+    m_time->setToolTip(tr("Playhead into the recording / the recording's length"));
+    m_sessionTime = new QLabel(this);
+    m_sessionTime->setObjectName(QStringLiteral("replaySessionTime"));
+    m_sessionTime->setToolTip(
+        tr("Playhead in session time: the time axis of the plots and the cursor's t"));
+    m_sessionTime->setMinimumWidth(1); // gives way first in a narrow window
 
     m_live = new QPushButton(tr("Back to &live"), this);
     m_live->setObjectName(QStringLiteral("backToLive"));
@@ -69,6 +77,7 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     layout->addWidget(m_speed);
     layout->addWidget(m_slider, 2);
     layout->addWidget(m_time);
+    layout->addWidget(m_sessionTime);
     layout->addWidget(m_live);
 
     connect(controller, &ReplayController::activeChanged, this, &ReplayBar::onActiveChanged);
@@ -131,6 +140,7 @@ void ReplayBar::onPositionChanged(double t)
         m_slider->setValue(sliderValueOf(t));
     }
     m_time->setText(positionText());
+    m_sessionTime->setText(sessionTimeText(t));
 }
 
 void ReplayBar::onPlayingChanged(bool playing)
@@ -144,6 +154,11 @@ QString ReplayBar::positionText() const
     return tr("%1 / %2 s")
         .arg(compactSeconds(m_controller->position() - m_controller->startTime()),
              compactSeconds(m_controller->endTime() - m_controller->startTime()));
+}
+
+QString ReplayBar::sessionTimeText(double t)
+{
+    return tr("t = %1 s").arg(compactSeconds(t));
 }
 
 QString ReplayBar::compactSeconds(double seconds, int decimals)

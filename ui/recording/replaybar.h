@@ -35,6 +35,8 @@ public:
     QPushButton *liveButton() const { return m_live; }
     QToolButton *playButton() const { return m_play; }
     QString positionText() const;
+    //! The playhead `t` in session time, as the plots' time axis shows it: "t = 103.00 s".
+    static QString sessionTimeText(double t);
     //! The playhead time of slider value `value`, and the value nearest time `t` [s].
     double timeOfSliderValue(int value) const;
     int sliderValueOf(double t) const;
@@ -58,6 +60,7 @@ private:
     QComboBox *m_speed = nullptr;
     QSlider *m_slider = nullptr;
     QLabel *m_time = nullptr;
+    QLabel *m_sessionTime = nullptr;
     bool m_millisecondSteps = true; //!< the slider counts milliseconds (else equal fractions)
     QPushButton *m_live = nullptr;
 };

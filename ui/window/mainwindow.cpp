@@ -5,6 +5,7 @@
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
 #include "connection/sessiontext.h"
+#include "editor/chatterdetector.h"
 #include "editor/deviceparameterlink.h"
 #include "editor/parametereditor.h"
 #include "editor/profilecontroller.h"
@@ -101,6 +102,7 @@ void MainWindow::createParts()
     m_stiffness = named(new StiffnessView(this), "stiffnessView");
     m_profiles = named(new ProfileController(m_editor, this, this), "profileController");
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
+    statusBar()->insertPermanentWidget(0, m_simPanel->statusLabel());
     m_stiffness->setEditedParams(m_editor->params());
     m_feed->setLiveHostParams(m_editor->hostParams());
     m_plotActions = new PlotActions(m_plots, this);
@@ -134,80 +136,6 @@ void MainWindow::createActions()
         {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
 }
 
-void MainWindow::createMenus()
-{
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    file->addAction(m_profiles->openAction());
-    file->addMenu(m_profiles->recentMenu());
-    file->addMenu(m_profiles->presetsMenu());
-    file->addAction(m_profiles->saveAction());
-    file->addAction(m_profiles->saveAsAction());
-    file->addSeparator();
-    file->addAction(m_actions->openRecording);
-    file->addAction(m_plotActions->exportImageAction());
-    file->addAction(m_plotActions->exportCsvAction());
-    file->addSeparator();
-    file->addAction(m_actions->quit);
-
-    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    edit->addAction(m_editor->undoAction());
-    edit->addAction(m_editor->redoAction());
-    edit->addSeparator();
-    edit->addAction(m_profiles->abToggleAction());
-
-    QMenu *device = menuBar()->addMenu(tr("&Device"));
-    device->addAction(m_actions->connectDevice);
-    device->addSeparator();
-    device->addAction(m_editor->pushAction());
-    device->addAction(m_editor->readAction());
-    device->addAction(m_editor->revertAction());
-    device->addSeparator();
-    device->addAction(m_actions->resetReference);
-    device->addAction(m_actions->zero);
-    device->addAction(m_actions->saveInDevice);
-    device->addSeparator();
-    device->addAction(m_recording->recordAction());
-
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    m_viewMenu = view;
-    view->addAction(m_actions->pause);
-    view->addAction(m_actions->backToLive);
-    QMenu *window = view->addMenu(tr("&Window Length"));
-    window->addActions(m_plotActions->windowActions());
-    view->addAction(m_plotActions->autoscaleAction());
-    view->addAction(m_actions->degrees);
-    m_plotActions->addSeriesActions(view->addMenu(tr("&Series")));
-    view->addSeparator(); // the docks' toggles follow (createDocks)
-
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(m_actions->shortcuts);
-    help->addAction(m_actions->about);
-}
-
-void MainWindow::createToolBars()
-{
-    QToolBar *link = addToolBar(tr("Connection"));
-    link->setObjectName(QStringLiteral("connectionToolBar"));
-    link->addWidget(m_connection);
-    link->addSeparator();
-    link->addWidget(m_linkStatus);
-
-    addToolBarBreak();
-    QToolBar *plots = addToolBar(tr("Plots"));
-    plots->setObjectName(QStringLiteral("plotsToolBar"));
-    plots->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    plots->addAction(m_actions->pause);
-    plots->addSeparator();
-    plots->addActions(m_plotActions->windowActions());
-    plots->addSeparator();
-    plots->addAction(m_plotActions->autoscaleAction());
-    plots->addAction(m_actions->degrees);
-    plots->addAction(m_actions->resetReference);
-    plots->addSeparator();
-    plots->addWidget(m_recording);
-    plots->addAction(m_actions->openRecording);
-}
-
 void MainWindow::createDocks()
 {
     auto makeDock = [this](const QString &title, const QString &name, QWidget *widget,
@@ -222,16 +150,16 @@ void MainWindow::createDocks()
                             Qt::RightDockWidgetArea);
     m_stiffnessDock = makeDock(tr("Stiffness"), QStringLiteral("stiffnessDock"), m_stiffness,
                                Qt::RightDockWidgetArea);
+    // Under the plots, so that the hand and the stiffness view are in sight together.
     m_simDock = makeDock(tr("Simulated hand"), QStringLiteral("simulatorDock"), m_simPanel,
-                         Qt::RightDockWidgetArea);
+                         Qt::BottomDockWidgetArea);
     m_log = new QPlainTextEdit(this);
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(2000);
     m_logDock =
         makeDock(tr("Device log"), QStringLiteral("logDock"), m_log, Qt::BottomDockWidgetArea);
     m_logDock->hide();
-    tabifyDockWidget(m_stiffnessDock, m_simDock);
-    m_stiffnessDock->raise();
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea); // the hand's dock: plots only
     // As wide as the editor wants (within reason): its rows are long.
     resizeDocks({m_editorDock}, {std::clamp(m_editor->sizeHint().width() + 24, 420, 600)},
                 Qt::Horizontal);
@@ -260,6 +188,8 @@ void MainWindow::connectParts()
 
     // What the plots and the stiffness view show: the feed, live or replay.
     connect(m_client, &DeviceClient::samplesReady, m_feed, &PlotFeed::appendLive);
+    connect(m_client, &DeviceClient::samplesReady, new ChatterWatch(m_editor),
+            &ChatterWatch::addSamples); // warns in the derived figures
     connect(m_client, &DeviceClient::deviceParamsChanged, m_feed,
             [this](const DeviceParams &params) { m_feed->setLiveDeviceParams(params); });
     connect(m_editor, &ParameterEditor::hostParamsChanged, m_feed, &PlotFeed::setLiveHostParams);
@@ -333,6 +263,7 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
         m_linkStatus->setDeviceInfo(std::nullopt);
         m_simDock->hide();
         m_simDock->toggleViewAction()->setEnabled(false);
+        m_simPanel->statusLabel()->hide();
         m_feed->setLiveDeviceParams(std::nullopt);
     }
     // The banner already says why the link was lost or refused; the status bar, which clips a
@@ -347,6 +278,7 @@ void MainWindow::onDeviceInfo(const DeviceInfo &info)
     m_linkStatus->setDeviceInfo(info);
     m_simDock->toggleViewAction()->setEnabled(info.simulated);
     m_simDock->setVisible(info.simulated);
+    m_simPanel->statusLabel()->setVisible(info.simulated);
     updateActions();
 }
 
@@ -396,25 +328,26 @@ void MainWindow::updateActions()
 
 QList<QAction *> MainWindow::shortcutActions() const
 {
-    return {m_actions->connectDevice,
-            m_editor->pushAction(),
-            m_actions->pause,
-            m_recording->recordAction(),
-            m_editor->undoAction(),
-            m_editor->redoAction(),
-            m_profiles->abToggleAction(),
-            m_profiles->openAction(),
-            m_profiles->saveAction(),
-            m_profiles->saveAsAction(),
-            m_actions->openRecording,
-            m_actions->backToLive,
-            m_plotActions->autoscaleAction(),
-            m_actions->degrees,
-            m_actions->resetReference,
-            m_plotActions->exportImageAction(),
-            m_plotActions->exportCsvAction(),
-            m_actions->shortcuts,
-            m_actions->quit};
+    return QList<QAction *>{m_actions->connectDevice,
+                            m_editor->pushAction(),
+                            m_actions->pause,
+                            m_recording->recordAction(),
+                            m_editor->undoAction(),
+                            m_editor->redoAction(),
+                            m_profiles->abToggleAction(),
+                            m_profiles->openAction(),
+                            m_profiles->saveAction(),
+                            m_profiles->saveAsAction(),
+                            m_actions->openRecording,
+                            m_actions->backToLive,
+                            m_plotActions->autoscaleAction(),
+                            m_actions->degrees,
+                            m_actions->resetReference,
+                            m_plotActions->exportImageAction(),
+                            m_plotActions->exportCsvAction(),
+                            m_actions->shortcuts,
+                            m_actions->quit} +
+           m_editor->keyboardActions() + m_plotActions->windowActions();
 }
 
 void MainWindow::showShortcuts()
@@ -454,7 +387,7 @@ void MainWindow::readSettings()
             settings.value(QStringLiteral("connection/protocol"), int(ProtocolChoice::Auto))
                 .toInt()));
     if (!restoreWindowGeometry(this, settings))
-        resize(1400, 900); // the first launch; what is saved on close is fitted
+        resizeToDefault(this); // the first launch; what is saved on close is fitted
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     setAngleInDegrees(settings.value(QStringLiteral("view/degrees"), false).toBool());
     setWindowSeconds(

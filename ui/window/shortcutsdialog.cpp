@@ -2,8 +2,12 @@
 
 #include <QAction>
 #include <QDialogButtonBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
+#include <QTabWidget>
 #include <QTableWidget>
+#include <QTextBrowser>
+#include <QUrl>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -40,30 +44,51 @@ QStringList ShortcutsDialog::describe(const QList<QAction *> &actions)
 
 ShortcutsDialog::ShortcutsDialog(const QList<QAction *> &actions, QWidget *parent) : QDialog(parent)
 {
-    setWindowTitle(tr("Keyboard shortcuts"));
+    setWindowTitle(tr("Help"));
     const QStringList lines = describe(actions);
-    auto *table = new QTableWidget(int(lines.size()), 2, this);
-    table->setHorizontalHeaderLabels({tr("Keys"), tr("Action")});
-    table->verticalHeader()->hide();
-    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table->setSelectionMode(QAbstractItemView::NoSelection);
-    for (int row = 0; row < lines.size(); ++row) {
-        const QStringList parts = lines[row].split(u'\t');
-        table->setItem(row, 0, new QTableWidgetItem(parts.value(0)));
-        table->setItem(row, 1, new QTableWidgetItem(parts.value(1)));
+    // Two tables side by side, so that every shortcut is in view without scrolling.
+    auto *shortcuts = new QWidget(this);
+    auto *columns = new QHBoxLayout(shortcuts);
+    const qsizetype half = (lines.size() + 1) / 2;
+    int tallest = 0;
+    for (const QStringList &part : {lines.mid(0, half), lines.mid(half)}) {
+        auto *table = new QTableWidget(int(part.size()), 2, shortcuts);
+        table->setHorizontalHeaderLabels({tr("Keys"), tr("Action")});
+        table->verticalHeader()->hide();
+        table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        table->setSelectionMode(QAbstractItemView::NoSelection);
+        for (int row = 0; row < part.size(); ++row) {
+            const QStringList cells = part[row].split(u'\t');
+            table->setItem(row, 0, new QTableWidgetItem(cells.value(0)));
+            table->setItem(row, 1, new QTableWidgetItem(cells.value(1)));
+        }
+        table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+        table->horizontalHeader()->setStretchLastSection(true);
+        const int rows = table->verticalHeader()->length() +
+                         table->horizontalHeader()->sizeHint().height() + 2 * table->frameWidth();
+        tallest = std::max(tallest, rows);
+        columns->addWidget(table);
     }
-    table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    table->horizontalHeader()->setStretchLastSection(true);
+    for (QTableWidget *table : shortcuts->findChildren<QTableWidget *>())
+        table->setMinimumHeight(std::min(tallest, 700));
+
+    // The user guide ships inside the program (a resource), images and all.
+    auto *guide = new QTextBrowser(this);
+    guide->setObjectName(QStringLiteral("userGuide"));
+    guide->setSearchPaths({QStringLiteral(":/docs")});
+    guide->setOpenExternalLinks(true);
+    guide->setSource(QUrl(QStringLiteral("qrc:/docs/user-guide.md")),
+                     QTextDocument::MarkdownResource);
+
+    auto *tabs = new QTabWidget(this);
+    tabs->addTab(shortcuts, tr("Keyboard shortcuts"));
+    tabs->addTab(guide, tr("User guide"));
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
-    layout->addWidget(table);
+    layout->addWidget(tabs);
     layout->addWidget(buttons);
-    // Tall enough for every row without scrolling (there are about twenty), within reason.
-    const int rows = table->verticalHeader()->length() +
-                     table->horizontalHeader()->sizeHint().height() + 2 * table->frameWidth();
-    table->setMinimumHeight(std::min(rows, 700));
-    resize(460, 520);
+    resize(900, 640);
 }
 
 } // namespace hatpic

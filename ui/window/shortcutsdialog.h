@@ -1,4 +1,5 @@
-// Help → Keyboard shortcuts: every action of the window that has a shortcut, in one table.
+// Help (F1): every action of the window that has a shortcut, in a table, and the user guide
+// that ships inside the program.
 #pragma once
 
 #include <QDialog>

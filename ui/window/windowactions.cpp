@@ -47,7 +47,7 @@ WindowActions::WindowActions(QWidget *window) : QObject(window)
 
     quit = make(tr("&Quit"));
     quit->setShortcut(QKeySequence::Quit);
-    shortcuts = make(tr("&Keyboard Shortcuts"));
+    shortcuts = make(tr("&User Guide and Shortcuts"));
     shortcuts->setShortcut(QKeySequence(Qt::Key_F1));
     about = make(tr("&About HATPIC Tuner"));
 }

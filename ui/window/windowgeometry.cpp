@@ -56,6 +56,12 @@ bool restoreWindowGeometry(QMainWindow *window, const QSettings &settings)
     return false;
 }
 
+void resizeToDefault(QMainWindow *window)
+{
+    const QRect wanted(QPoint(0, 0), QSize(1400, 900));
+    window->resize(fittedInto(wanted, availableGeometryFor(window, QRect())).size());
+}
+
 void saveWindowGeometry(const QMainWindow *window, QSettings &settings)
 {
     const QRect normal = window->isMaximized() || window->isFullScreen() ? window->normalGeometry()

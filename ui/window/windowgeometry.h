@@ -17,4 +17,8 @@ QRect fittedInto(const QRect &rect, const QRect &available);
 bool restoreWindowGeometry(QMainWindow *window, const QSettings &settings);
 void saveWindowGeometry(const QMainWindow *window, QSettings &settings);
 
+//! The first launch's size: 1400×900, fitted into the window's screen (a 1280×720 screen gets
+//! a window no larger than itself).
+void resizeToDefault(QMainWindow *window);
+
 } // namespace hatpic

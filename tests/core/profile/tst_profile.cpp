@@ -1009,12 +1009,13 @@ void TestProfile::presetsFeelAsNamed()
     QVERIFY(fSoft.omega_n < fDef.omega_n);
     QVERIFY(fSoft.zeta >= 1.0);
     QVERIFY(fSoft.peakTauRec < fDef.peakTauRec);
-    // Notchy: a much larger K_max/K_min ratio, wider dead zone and notch, bigger notch step.
+    // Notchy: a much larger K_max/K_min ratio, a wider notch, a bigger notch step — but not
+    // so big that the knob chatters at the dead-zone edge (issue 12: a step of 0.06 N·m did,
+    // under the simulator's gentle hand; tst_chatterdetector runs every preset against it).
     QVERIFY(notchy.device.K_max / notchy.device.K_min >= 10.0);
     QVERIFY(notchy.device.K_max / notchy.device.K_min > 2 * def.device.K_max / def.device.K_min);
-    QVERIFY(notchy.device.Q_dz > def.device.Q_dz);
     QVERIFY(notchy.device.N > def.device.N);
-    QVERIFY(notchy.device.K_max * notchy.device.Q_dz > 3 * def.device.K_max * def.device.Q_dz);
+    QVERIFY(notchy.device.K_max * notchy.device.Q_dz > 1.25 * def.device.K_max * def.device.Q_dz);
     QVERIFY(fNotchy.zeta > 0.5);
 
     qInfo("preset   omega_n[rad/s]  zeta   T[s]     peak|tau_rec|[N·m] at[rad]  notch step[N·m]");

@@ -59,6 +59,8 @@ private Q_SLOTS:
     void invalidValueBlocksPush_data();
     void invalidValueBlocksPush();
     void nanCannotBeTyped();
+    void outOfRangeTypingClampsVisibly_data();
+    void outOfRangeTypingClampsVisibly();
     void pushEmitsExactValues();
     void ctrlReturnPushes();
     void inSyncAfterAckAndReadback_data();
@@ -187,6 +189,49 @@ void TestParameterEditor::nanCannotBeTyped()
     QTest::keyClicks(box, u"1.5e-1"_s);
     QTest::keyClick(box, Qt::Key_Enter);
     QCOMPARE(editor.params().K_max, 0.15);
+}
+
+void TestParameterEditor::outOfRangeTypingClampsVisibly_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("words");
+
+    // N's maximum π/2 shows as 1.5708, just above it: once set N to 0 instead.
+    QTest::newRow("N above π/2") << u"N"_s << u"1.6"_s << u"above the maximum 1.5708"_s;
+    QTest::newRow("K_max above 50") << u"K_max"_s << u"60"_s << u"above the maximum 50"_s;
+    QTest::newRow("K_min below 0") << u"K_min"_s << u"-1"_s << u"below the minimum 0"_s;
+    QTest::newRow("Q_dz above π/2") << u"Q_dz"_s << u"2"_s << u"above the maximum"_s;
+}
+
+void TestParameterEditor::outOfRangeTypingClampsVisibly()
+{
+    QFETCH(QString, key);
+    QFETCH(QString, typed);
+    QFETCH(QString, words);
+
+    ParameterEditor editor;
+    ScientificSpinBox *box = spin(editor, key);
+    box->selectAll();
+    QTest::keyClicks(box, typed);
+    QTest::keyClick(box, Qt::Key_Enter);
+
+    // The value is the nearest bound, never an unrelated one, and the field says so.
+    const double bound = words.contains(u"above"_s) ? box->maximum() : box->minimum();
+    QCOMPARE(editor.field(key)->value(), bound);
+    const QString note = editor.field(key)->clampNote();
+    QVERIFY2(note.contains(typed) && note.contains(words), qPrintable(note));
+    QLabel *message = label(editor, u"error_"_s + key);
+    QVERIFY(!message->isHidden());
+    // A rule the bound breaks (Q_dz = π/2 is not < N) outranks the note: it blocks the push.
+    const QString problem = editor.field(key)->problem();
+    QCOMPARE(message->text(), problem.isEmpty() ? note : problem);
+
+    // The next ordinary edit clears the note.
+    box->selectAll();
+    QTest::keyClicks(box, u"0.01"_s);
+    QTest::keyClick(box, Qt::Key_Enter);
+    QVERIFY(editor.field(key)->clampNote().isEmpty());
 }
 
 void TestParameterEditor::pushEmitsExactValues()

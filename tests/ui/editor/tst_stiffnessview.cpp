@@ -2,6 +2,7 @@
 // curve is dashed, and the live operating point moves.
 #include "editor/stiffnessview.h"
 #include "model/stiffness.h"
+#include "plots/palette.h"
 #include "plots/qcp.h"
 
 #include <QTest>
@@ -54,6 +55,7 @@ private Q_SLOTS:
     void rangeAroundCenter_data();
     void rangeAroundCenter();
     void deviceCurveDashed();
+    void coloursMatchTheTimePlots();
     void replayLegendNamesTheRecording();
     void operatingPointMoves();
     void degreesOnlyScaleTheAxis();
@@ -176,6 +178,36 @@ void TestStiffnessView::replayLegendNamesTheRecording()
     view.setReplaying(false);
     QCOMPARE(view.deviceTorqueGraph()->name(), u"device"_s);
     QVERIFY(view.operatingPointGraph()->name().startsWith(u"live"_s));
+}
+
+void TestStiffnessView::coloursMatchTheTimePlots()
+{
+    // τ_rec's colour for the τ_rec(θ) curves, the notch band amber as in the time plots (the
+    // stiffness view once shaded it blue and drew the device curve orange, τ_total's colour).
+    StiffnessView view;
+    view.setEditedParams(DeviceParams{});
+    view.setDeviceParams(DeviceParams{});
+    const QColor tauRec = palette::channel(Channel::TauRec);
+    QCOMPARE(view.torqueGraph()->pen().color(), tauRec);
+    QCOMPARE(view.deviceTorqueGraph()->pen().color().hue(), tauRec.hue());
+    for (const QCPGraph *g : {view.torqueGraph(), view.deviceTorqueGraph()}) {
+        for (Channel other : kAllChannels) {
+            if (other != Channel::TauRec)
+                QVERIFY(g->pen().color() != palette::channel(other));
+        }
+    }
+    QCustomPlot *plot = view.findChild<QCustomPlot *>(u"stiffness_plot"_s);
+    QVERIFY(plot);
+    int notch = 0;
+    int deadZone = 0;
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        if (auto *rect = qobject_cast<QCPItemRect *>(plot->item(i))) {
+            notch += rect->brush().color() == palette::kNotch;
+            deadZone += rect->brush().color() == palette::kDeadZone;
+        }
+    }
+    QCOMPARE(notch, 2);
+    QCOMPARE(deadZone, 2);
 }
 
 void TestStiffnessView::deviceCurveDashed()

@@ -1,11 +1,14 @@
 // PlotPanel: samples reach the graphs, repaint only on change, pause, units, legends, cursor,
 // bands, events and exports.
+#include "plots/palette.h"
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
 
+#include <QSet>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolTip>
 
 #include <cmath>
 #include <numbers>
@@ -57,6 +60,7 @@ private Q_SLOTS:
     void mouseMoveSetsCursor();
     void bandsFollowDeviceParams();
     void eventsAreMarked();
+    void oneColourPerQuantity();
     void eventLabelAtTheRightEdgeStaysReadable();
     void autoscaleFitsAndFixedStays();
     void exportsImage_data();
@@ -190,6 +194,15 @@ void TestPlotPanel::degreesConvertOnlyForDisplay()
     QCOMPARE(m_buffer->value(Channel::Theta, m_buffer->size() - 1), radians); // data stay SI
     // Torques are not angles.
     QVERIFY(m_panel->readout().contains(QStringLiteral("N·m")));
+
+    // ω, when shown, has its own axis with numbers on it, in degrees too.
+    m_panel->setChannelVisible(Channel::Omega, true);
+    m_panel->repaintNow();
+    QCPAxis *omega = m_panel->axisRect(PlotPanel::Plot::Angle)->axis(QCPAxis::atRight);
+    QVERIFY(omega->visible());
+    QVERIFY(omega->label().contains(QStringLiteral("°/s")));
+    QVERIFY(omega->tickLabels());
+    QVERIFY(!omega->tickVectorLabels().isEmpty());
 }
 
 void TestPlotPanel::legendClickTogglesSeries()
@@ -260,6 +273,27 @@ void TestPlotPanel::bandsFollowDeviceParams()
     m_panel->repaintNow();
 }
 
+void TestPlotPanel::oneColourPerQuantity()
+{
+    // θ and τ_rec once shared a blue.
+    QSet<QRgb> colours;
+    for (Channel channel : kAllChannels) {
+        QCOMPARE(m_panel->graph(channel)->pen().color(), palette::channel(channel));
+        colours.insert(palette::channel(channel).rgb());
+    }
+    QCOMPARE(colours.size(), qsizetype(kAllChannels.size()));
+    // τ_total = τ_rec while τ_ext = 0: τ_rec, drawn first, stays visible around and through
+    // the dashed τ_total on top.
+    const QPen rec = m_panel->graph(Channel::TauRec)->pen();
+    const QPen total = m_panel->graph(Channel::TauTotal)->pen();
+    QVERIFY(rec.widthF() > total.widthF() + 1);
+    QCOMPARE(total.style(), Qt::DashLine);
+    QCPLayer *layer = m_panel->graph(Channel::TauRec)->layer();
+    QCOMPARE(m_panel->graph(Channel::TauTotal)->layer(), layer);
+    QVERIFY(layer->children().indexOf(m_panel->graph(Channel::TauRec)) <
+            layer->children().indexOf(m_panel->graph(Channel::TauTotal)));
+}
+
 void TestPlotPanel::eventsAreMarked()
 {
     const int before = m_panel->customPlot()->itemCount();
@@ -281,9 +315,11 @@ void TestPlotPanel::eventLabelAtTheRightEdgeStaysReadable()
     fill(*m_buffer, 0, 15);
     m_panel->repaintNow();
     m_panel->repaintNow(); // laid out at this size
-    const QString late = QStringLiteral("K_max 0.3 → 0.6; N 0.1 → 0.12");
-    const QString early = QStringLiteral("K_max 0.4 → 0.3");
-    m_panel->setEvents({{m_panel->viewStart() + 1, early}, {m_buffer->lastTime(), late}});
+    // Labels are short (the names); the changes show on hover.
+    const QString late = QStringLiteral("K_max, N");
+    const QString early = QStringLiteral("K_max");
+    m_panel->setEvents({{m_panel->viewStart() + 1, QStringLiteral("K_max 0.4 → 0.3")},
+                        {m_buffer->lastTime(), QStringLiteral("K_max 0.3 → 0.6; N 0.1 → 0.12")}});
     m_panel->repaintNow();
     QCPAxisRect *angle = m_panel->axisRect(PlotPanel::Plot::Angle);
     QCPAxis *x = angle->axis(QCPAxis::atBottom);
@@ -307,6 +343,12 @@ void TestPlotPanel::eventLabelAtTheRightEdgeStaysReadable()
         ++checked;
     }
     QCOMPARE(checked, 2);
+
+    // Hovering a marker's line shows what it stands for.
+    const QPoint at(int(x->coordToPixel(m_buffer->lastTime())), int(angle->center().y()));
+    QTest::mouseMove(m_panel->customPlot(), at);
+    QTRY_VERIFY2(QToolTip::text().contains(QStringLiteral("N 0.1 → 0.12")),
+                 qPrintable(QToolTip::text()));
 }
 
 void TestPlotPanel::autoscaleFitsAndFixedStays()

@@ -21,7 +21,9 @@
 #include "window/mainwindow.h"
 #include "window/shortcutsdialog.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
@@ -37,6 +39,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
 #include <QUndoStack>
 
 #include <cmath>
@@ -128,6 +131,10 @@ private Q_SLOTS:
     void hugeReplaySpanKeepsTheWindow();
     void oversizedSettingsAreFitted_data();
     void oversizedSettingsAreFitted();
+    void handAndStiffnessInSightTogether();
+    void keyboardReachesFieldsAndActions();
+    void derivedFiguresInSightAtEverySize_data();
+    void derivedFiguresInSightAtEverySize();
 
 private:
     void connectSim(ProtocolChoice protocol = ProtocolChoice::V2);
@@ -154,6 +161,8 @@ void TestMainWindow::init()
 {
     QSettings().clear();
     m_window = std::make_unique<MainWindow>();
+    // The size a first launch gets on a large screen (the offscreen screen is 800×600).
+    m_window->resize(1400, 900);
     find<ProfileController>("profileController")->setQuestion([](const QString &) {
         return QMessageBox::Discard;
     });
@@ -561,6 +570,13 @@ void TestMainWindow::replayShowsRecordingAndReturnsToLive()
     const QCPGraphData last = *(plots->graph(Channel::Theta)->data()->constEnd() - 1);
     QVERIFY(last.key <= 103.001);
     QVERIFY(bar->positionText().startsWith(QStringLiteral("3.00")));
+    // The slider counts from the recording's start, the plots' axis in session time: both
+    // are shown, each labelled, and the session time is the axis's.
+    QCOMPARE(find<QLabel>("replaySessionTime")->text(), QStringLiteral("t = 103.00 s"));
+    QCOMPARE(find<QLabel>("replaySessionTime")->text(),
+             ReplayBar::sessionTimeText(plots->dataEnd().value_or(0)));
+    QVERIFY(find<QLabel>("replayTime")->toolTip().contains(QStringLiteral("recording")));
+    QVERIFY(find<QLabel>("replaySessionTime")->toolTip().contains(QStringLiteral("axis")));
 
     // Play at 5×: the playhead moves; live samples keep arriving but are not shown.
     bar->speedBox()->setCurrentIndex(bar->speedBox()->findData(5.0));
@@ -929,4 +945,136 @@ void TestMainWindow::oversizedSettingsAreFitted()
 }
 
 QTEST_MAIN(TestMainWindow)
+void TestMainWindow::handAndStiffnessInSightTogether()
+{
+    // Once tabs of one dock: the operating point could not be watched while the input changed.
+    m_window->resize(1280, 720);
+    connectSim();
+    QTRY_VERIFY(find<QDockWidget>("simulatorDock")->isVisible());
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    auto *stiffness = find<QWidget>("stiffness_plot");
+    auto *hand = find<QWidget>("simulatorPanel");
+    QVERIFY(stiffness->isVisible() && !stiffness->visibleRegion().isEmpty());
+    QVERIFY(hand->isVisible() && !hand->visibleRegion().isEmpty());
+    QVERIFY(m_window->tabifiedDockWidgets(find<QDockWidget>("simulatorDock")).isEmpty());
+    // The active input in the status bar, following the panel.
+    auto *status = find<QLabel>("handStatus");
+    QVERIFY(status->isVisible());
+    QCOMPARE(status->text(), QStringLiteral("Hand: sine 0.06 N·m at 0.2 Hz"));
+    HandInput still;
+    still.kind = HandInput::Kind::Constant;
+    still.amplitude = 0.01;
+    find<SimulatorPanel>("simulatorPanel")->setHand(still);
+    QCOMPARE(status->text(), QStringLiteral("Hand: constant 0.01 N·m"));
+    m_window->disconnectDevice();
+    QTRY_VERIFY(!status->isVisible());
+}
+
+void TestMainWindow::keyboardReachesFieldsAndActions()
+{
+    connectSim();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    auto *editor = find<ParameterEditor>("parameterEditor");
+
+    // Alt+4 goes to K_max; Tab goes from field to field (no sliders, no buttons between).
+    QTest::keyClick(m_window.get(), Qt::Key_4, Qt::AltModifier);
+    QCOMPARE(QApplication::focusWidget(), find<QWidget>("spin_K_max"));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+    QCOMPARE(QApplication::focusWidget(), find<QWidget>("spin_N"));
+    QTest::keyClick(m_window.get(), Qt::Key_1, Qt::AltModifier);
+    QCOMPARE(QApplication::focusWidget(), find<QWidget>("spin_D_adm"));
+    for (const char *next : {"spin_M_adm", "spin_K_min", "spin_K_max"}) {
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QCOMPARE(QApplication::focusWidget(), find<QWidget>(next));
+    }
+
+    // Space in a number field pauses; again resumes.
+    auto *plots = find<PlotPanel>("plotPanel");
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(plots->isPaused());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(!plots->isPaused());
+
+    // Ctrl+Z in a field: its own typing first, then the parameter edit.
+    const double before = editor->params().K_max;
+    auto *box = find<QAbstractSpinBox>("spin_K_max");
+    box->selectAll();
+    QTest::keyClicks(box, QStringLiteral("0.7"));
+    QTest::keyClick(box, Qt::Key_Return);
+    QCOMPARE(editor->params().K_max, 0.7);
+    QTest::keyClicks(box, QStringLiteral("5"));
+    QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier); // the field's own undo: the "5"
+    QCOMPARE(editor->params().K_max, 0.7);
+    QTest::keyClick(box, Qt::Key_Return);
+    for (int i = 0; i < 3 && editor->params().K_max != before; ++i)
+        QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(editor->params().K_max, before);
+
+    // Read and window length by key.
+    QSignalSpy reads(editor, &ParameterEditor::readRequested);
+    QTest::keyClick(m_window.get(), Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(reads.count(), 1);
+    QTest::keyClick(m_window.get(), Qt::Key_3, Qt::ControlModifier);
+    QCOMPARE(plots->windowLength(), 30.0);
+    const bool autoscale = plots->autoscale();
+    QTest::keyClick(m_window.get(), Qt::Key_A, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(plots->autoscale(), !autoscale);
+
+    // F1's dialog carries the user guide too.
+    ShortcutsDialog dialog(m_window->shortcutActions(), m_window.get());
+    auto *guide = dialog.findChild<QTextBrowser *>(QStringLiteral("userGuide"));
+    QVERIFY(guide);
+    QVERIFY(guide->toPlainText().contains(QStringLiteral("HATPIC Tuner — user guide")));
+}
+
+void TestMainWindow::derivedFiguresInSightAtEverySize_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("1280x720") << QSize(1280, 720);
+    QTest::newRow("1400x900") << QSize(1400, 900);
+    QTest::newRow("1920x1080") << QSize(1920, 1080);
+}
+
+void TestMainWindow::derivedFiguresInSightAtEverySize()
+{
+    // Once, at 1280×720 the editor showed D_adm to K_max only; the figures and warnings were
+    // below, to be scrolled to. Now they sit under Push, wholly visible at every size.
+    QFETCH(QSize, size);
+    QVERIFY2(m_window->minimumSizeHint().width() <= 1280 &&
+                 m_window->minimumSizeHint().height() <= 720,
+             qPrintable(QStringLiteral("%1×%2")
+                            .arg(m_window->minimumSizeHint().width())
+                            .arg(m_window->minimumSizeHint().height())));
+    m_window->resize(size);
+    connectSim();
+    auto *editor = find<ParameterEditor>("parameterEditor");
+    // A set that both saturates and rings: both warnings show.
+    DeviceParams p = editor->params();
+    p.K_min = 1.0;
+    p.K_max = 4.0;
+    p.M_adm = 0.001;
+    editor->setParams(p, editor->hostParams(), QStringLiteral("test"));
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QCOMPARE(m_window->size(), size);
+
+    auto wholeInSight = [this](QWidget *w) {
+        if (!w->isVisible())
+            return false;
+        const QRect inWindow(w->mapTo(m_window.get(), QPoint(0, 0)), w->size());
+        return m_window->rect().contains(inWindow) && w->visibleRegion() == QRegion(w->rect());
+    };
+    auto *push = find<QWidget>("button_push");
+    QVERIFY(wholeInSight(push));
+    for (const char *name : {"derivedFiguresBox", "figure_zeta", "figure_peak_tau",
+                             "warning_saturation", "warning_ringing"})
+        QVERIFY2(wholeInSight(find<QWidget>(name)), name);
+    // Next to Push: right below its row.
+    const int pushBottom = push->mapTo(m_window.get(), QPoint(0, push->height())).y();
+    const int boxTop = find<QWidget>("derivedFiguresBox")->mapTo(m_window.get(), QPoint(0, 0)).y();
+    QVERIFY2(boxTop - pushBottom < 80, qPrintable(QString::number(boxTop - pushBottom)));
+}
+
 #include "tst_mainwindow.moc"

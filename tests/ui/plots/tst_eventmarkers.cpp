@@ -1,0 +1,71 @@
+// Event markers: one per burst, a short label, every change in the details.
+#include "plots/eventmarkers.h"
+
+#include <QTest>
+
+using namespace hatpic;
+using namespace Qt::StringLiterals;
+
+class TestEventMarkers : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void separateEventsStaySeparate();
+    void dragIsOneMarker();
+    void multiParameterPushHasShortLabel();
+    void otherTextAppearsOnce();
+};
+
+void TestEventMarkers::separateEventsStaySeparate()
+{
+    const QList<EventMarker> m =
+        groupEvents({{0.5, u"K_max 0.4 → 0.6"_s}, {1.5, u"N 0.1 → 0.2"_s}});
+    QCOMPARE(m.size(), 2);
+    QCOMPARE(m[0].label, u"K_max"_s);
+    QCOMPARE(m[0].details, u"K_max 0.4 → 0.6"_s);
+    QCOMPARE(m[1].t_s, 1.5);
+    QCOMPARE(m[1].count, 1);
+}
+
+void TestEventMarkers::dragIsOneMarker()
+{
+    // A slider dragged with live push: a push every 100 ms, fifteen of them.
+    QList<RecordingEvent> events;
+    for (int i = 0; i < 15; ++i) {
+        events.append({2.0 + 0.1 * i, QStringLiteral("K_max %1 → %2")
+                                          .arg(0.4 + 0.01 * i, 0, 'g', 3)
+                                          .arg(0.41 + 0.01 * i, 0, 'g', 3)});
+    }
+    events.append({5.0, u"K_min 0.1 → 0.2"_s});
+    const QList<EventMarker> m = groupEvents(events);
+    QCOMPARE(m.size(), 2);
+    QCOMPARE(m[0].t_s, 2.0);
+    QCOMPARE(m[0].count, 15);
+    QCOMPARE(m[0].label, u"K_max"_s);
+    QCOMPARE(m[0].details, u"K_max 0.4 → 0.55\n(15 events)"_s);
+    QCOMPARE(m[1].label, u"K_min"_s);
+}
+
+void TestEventMarkers::multiParameterPushHasShortLabel()
+{
+    const QList<EventMarker> m =
+        groupEvents({{1.0, u"K_max 0.4 → 0.6; N 0.1 → 0.2; Q_dz 0.01 → 0.02"_s}});
+    QCOMPARE(m.size(), 1);
+    QCOMPARE(m[0].label, u"K_max +2"_s);
+    QCOMPARE(m[0].details, u"K_max 0.4 → 0.6\nN 0.1 → 0.2\nQ_dz 0.01 → 0.02"_s);
+
+    const QList<EventMarker> two = groupEvents({{1.0, u"K_max 0.4 → 0.6; N 0.1 → 0.2"_s}});
+    QCOMPARE(two[0].label, u"K_max, N"_s);
+}
+
+void TestEventMarkers::otherTextAppearsOnce()
+{
+    const QList<EventMarker> m = groupEvents(
+        {{1.0, u"p_ref reset to 0"_s}, {1.1, u"p_ref reset to 0"_s}, {1.2, u"K_max 1 → 2"_s}});
+    QCOMPARE(m.size(), 1);
+    QCOMPARE(m[0].label, u"p_ref, K_max"_s);
+    QCOMPARE(m[0].details, u"K_max 1 → 2\np_ref reset to 0\n(3 events)"_s);
+}
+
+QTEST_APPLESS_MAIN(TestEventMarkers)
+#include "tst_eventmarkers.moc"

@@ -1,0 +1,62 @@
+#include "editor/chatterdetector.h"
+
+#include "editor/derivedfiguresview.h"
+#include "editor/parametereditor.h"
+
+#include <cmath>
+
+namespace hatpic {
+
+void ChatterDetector::setParams(const std::optional<DeviceParams> &params)
+{
+    m_theta0 = params ? params->theta0 : 0.0;
+    m_qdz = params ? params->Q_dz : 0.0;
+    m_outside.reset();
+    m_crossings.clear();
+}
+
+void ChatterDetector::add(const Sample &sample)
+{
+    if (!(m_qdz > 0) || !std::isfinite(sample.theta) || !std::isfinite(sample.t_s))
+        return;
+    // Time going back is another session: start again.
+    if (m_outside && sample.t_s < m_last) {
+        m_outside.reset();
+        m_crossings.clear();
+    }
+    const bool outside = std::abs(sample.theta - m_theta0) >= m_qdz;
+    if (m_outside && *m_outside != outside)
+        m_crossings.push_back(sample.t_s);
+    m_outside = outside;
+    m_last = sample.t_s;
+    while (!m_crossings.empty() && m_crossings.front() < sample.t_s - kWindow)
+        m_crossings.pop_front();
+}
+
+std::optional<double> ChatterDetector::frequency() const
+{
+    const auto n = m_crossings.size();
+    if (n < std::size_t(kMinCrossings))
+        return std::nullopt;
+    const double span = m_crossings.back() - m_crossings.front();
+    if (!(span > 0))
+        return std::nullopt;
+    return double(n - 1) / 2.0 / span;
+}
+
+ChatterWatch::ChatterWatch(ParameterEditor *editor) : QObject(editor), m_editor(editor) {}
+
+void ChatterWatch::addSamples(const SampleBatch &batch)
+{
+    const std::optional<DeviceParams> params = m_editor->deviceParams();
+    if (params != m_params) {
+        m_params = params;
+        m_detector.setParams(params);
+    }
+    for (const Sample &s : batch)
+        m_detector.add(s);
+    m_editor->derivedFiguresView()->setChatter(m_detector.frequency(),
+                                               params ? params->K_max * params->Q_dz : 0.0);
+}
+
+} // namespace hatpic
