@@ -1,8 +1,12 @@
 #include "connection/linkbanner.h"
 
+#include "connection/sessiontext.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QStringBuilder>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 namespace hatpic {
 
@@ -12,42 +16,89 @@ LinkBanner::LinkBanner(QWidget *parent) : QFrame(parent)
     m_label = new QLabel(this);
     m_label->setWordWrap(true);
     m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_details = new QLabel(this);
+    m_details->setObjectName(QStringLiteral("linkBannerDetails"));
+    m_details->setWordWrap(true);
+    m_details->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_details->hide();
+    m_detailsButton = new QToolButton(this);
+    m_detailsButton->setObjectName(QStringLiteral("linkBannerDetailsButton"));
+    m_detailsButton->setText(tr("Details"));
+    m_detailsButton->setCheckable(true);
+    m_detailsButton->setAutoRaise(true);
+    m_detailsButton->setToolTip(tr("Show what the system reported"));
+    connect(m_detailsButton, &QToolButton::toggled, m_details, &QWidget::setVisible);
     auto *close = new QToolButton(this);
     close->setText(QStringLiteral("✕"));
     close->setAutoRaise(true);
     close->setToolTip(tr("Hide this message"));
     connect(close, &QToolButton::clicked, this, &QWidget::hide);
+    auto *texts = new QVBoxLayout;
+    texts->addWidget(m_label);
+    texts->addWidget(m_details);
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(10, 6, 6, 6);
-    layout->addWidget(m_label, 1);
+    layout->addLayout(texts, 1);
+    layout->addWidget(m_detailsButton, 0, Qt::AlignTop);
     layout->addWidget(close, 0, Qt::AlignTop);
     hide();
 }
 
-void LinkBanner::show(const QString &text, const char *background)
+void LinkBanner::show(const QString &text, const QString &details, const char *background)
 {
     m_label->setText(text);
+    m_details->setText(details);
+    m_details->setVisible(!details.isEmpty() && m_detailsButton->isChecked());
+    m_detailsButton->setVisible(!details.isEmpty());
+    m_label->setToolTip(details);
     setStyleSheet(QStringLiteral("#linkBanner { background: %1; border-radius: 4px; }"
-                                 "#linkBanner QLabel { color: white; font-weight: bold; }")
+                                 "#linkBanner QLabel { color: white; font-weight: bold; }"
+                                 "#linkBanner #linkBannerDetails { font-weight: normal; }")
                       .arg(QLatin1String(background)));
     setVisible(true);
 }
 
-void LinkBanner::setState(SessionState state, const QString &detail, const QString &port)
+namespace {
+
+QString lostSentence(const StateDetail &d, const QString &where)
+{
+    using Kind = StateDetail::Kind;
+    switch (d.kind) {
+    case Kind::Silent:
+        return LinkBanner::tr("The device on %1 stopped sending data.").arg(where);
+    case Kind::LinkFailed:
+        return LinkBanner::tr("The connection to %1 was cut: the cable may have come loose, or "
+                              "the device was reset or switched off.")
+            .arg(where);
+    default:
+        return LinkBanner::tr("The connection to %1 was lost.").arg(where);
+    }
+}
+
+} // namespace
+
+void LinkBanner::setState(SessionState state, const StateDetail &detail, const QString &port)
 {
     const QString where = port.isEmpty() ? tr("the device") : port;
+    // The session's full account (with the system's text, when there is one) is the details.
+    const QString details = SessionText::stateDetail(detail);
     switch (state) {
     case SessionState::Lost:
-        show(tr("Link lost on %1%2. Reconnecting as soon as the port returns; the plots keep "
-                "the data received so far.")
-                 .arg(where, detail.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(detail)),
-             "#c62828");
+        show(lostSentence(detail, where) %
+                 tr(" Reconnecting as soon as the port returns; the plots keep the data received "
+                    "so far."),
+             details, "#c62828");
         break;
     case SessionState::Disconnected:
-        if (detail.isEmpty())
+        if (detail.kind == StateDetail::Kind::None)
             hide();
+        else if (detail.kind == StateDetail::Kind::OpenFailed)
+            show(tr("Could not open %1: it may be missing, in use by another program, or not "
+                    "open to your user.")
+                     .arg(where),
+                 details, "#ef6c00");
         else
-            show(tr("Not connected to %1: %2").arg(where, detail), "#ef6c00");
+            show(tr("Not connected to %1: %2").arg(where, details), QString(), "#ef6c00");
         break;
     case SessionState::Connected:
         hide();
@@ -57,10 +108,14 @@ void LinkBanner::setState(SessionState state, const QString &detail, const QStri
         break; // keep a "lost" banner up while reconnecting
     }
 }
-
 QString LinkBanner::text() const
 {
     return isVisibleTo(parentWidget()) ? m_label->text() : QString();
+}
+
+QString LinkBanner::detailsText() const
+{
+    return m_details->text();
 }
 
 } // namespace hatpic

@@ -1,5 +1,7 @@
 // A plain-language banner above the plots when the link is lost (red, while the session tries
-// to reconnect) or when connecting failed (amber, with the reason). Hidden otherwise.
+// to reconnect) or when connecting failed (amber, with the reason). Hidden otherwise. It says
+// what happened in the user's words; the system's own text (e.g. "Inappropriate ioctl for
+// device") stays in the details, behind a "Details" button and in the tooltip.
 #pragma once
 
 #include "session/sessiontypes.h"
@@ -7,6 +9,7 @@
 #include <QFrame>
 
 class QLabel;
+class QToolButton;
 
 namespace hatpic {
 
@@ -16,14 +19,17 @@ class LinkBanner : public QFrame
 public:
     explicit LinkBanner(QWidget *parent = nullptr);
 
-    //! `port` names the port in the message; `detail` is the session's reason.
-    void setState(SessionState state, const QString &detail, const QString &port);
-    QString text() const;
+    //! `port` names the port in the message; `detail` is the session's structured reason.
+    void setState(SessionState state, const StateDetail &detail, const QString &port);
+    QString text() const;        //!< the sentence shown
+    QString detailsText() const; //!< the system's and the session's own text; may be empty
 
 private:
-    void show(const QString &text, const char *background);
+    void show(const QString &text, const QString &details, const char *background);
 
     QLabel *m_label = nullptr;
+    QLabel *m_details = nullptr;
+    QToolButton *m_detailsButton = nullptr;
 };
 
 } // namespace hatpic

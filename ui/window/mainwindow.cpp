@@ -256,7 +256,7 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
     const QString detail = SessionText::stateDetail(event);
     m_connection->setState(state);
     m_linkStatus->setState(state);
-    m_banner->setState(state, detail, m_port);
+    m_banner->setState(state, event, m_port);
     m_recording->setCanRecord(state == SessionState::Connected);
     if (state == SessionState::Disconnected) {
         m_stats->clear();

@@ -3,7 +3,9 @@
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
 
+#include <QLabel>
 #include <QTest>
+#include <QToolButton>
 
 using namespace hatpic;
 
@@ -84,31 +86,67 @@ void TestLinkWidgets::identity()
 void TestLinkWidgets::banner_data()
 {
     QTest::addColumn<SessionState>("state");
-    QTest::addColumn<QString>("detail");
+    QTest::addColumn<StateDetail>("detail");
     QTest::addColumn<QString>("contains"); // empty: hidden
-    QTest::newRow("lost") << SessionState::Lost << QStringLiteral("Lost /dev/ttyUSB0: gone")
-                          << QStringLiteral("Reconnecting");
-    QTest::newRow("failed to open")
-        << SessionState::Disconnected << QStringLiteral("Cannot open /dev/ttyUSB0")
-        << QStringLiteral("Cannot open /dev/ttyUSB0");
-    QTest::newRow("user disconnected") << SessionState::Disconnected << QString() << QString();
-    QTest::newRow("connected") << SessionState::Connected << QStringLiteral("HATPIC v2")
-                               << QString();
+    QTest::addColumn<QString>("details");  // the system's text, kept out of the sentence
+    StateDetail cut;
+    cut.kind = StateDetail::Kind::LinkFailed;
+    cut.port = QStringLiteral("/dev/ttyUSB0");
+    cut.baud = 921600;
+    cut.error = QStringLiteral("Inappropriate ioctl for device");
+    QTest::newRow("lost: link failed")
+        << SessionState::Lost << cut << QStringLiteral("was cut") << cut.error;
+    StateDetail silent;
+    silent.kind = StateDetail::Kind::Silent;
+    silent.port = cut.port;
+    silent.silenceMs = 2000;
+    QTest::newRow("lost: silent") << SessionState::Lost << silent
+                                  << QStringLiteral("stopped sending data") << QStringLiteral("2 s");
+    StateDetail open;
+    open.kind = StateDetail::Kind::OpenFailed;
+    open.port = cut.port;
+    open.error = QStringLiteral("Permission denied");
+    QTest::newRow("failed to open") << SessionState::Disconnected << open
+                                    << QStringLiteral("Could not open /dev/ttyUSB0") << open.error;
+    StateDetail none;
+    QTest::newRow("user disconnected") << SessionState::Disconnected << none << QString()
+                                       << QString();
+    StateDetail connected;
+    connected.kind = StateDetail::Kind::ConnectedV2;
+    QTest::newRow("connected") << SessionState::Connected << connected << QString() << QString();
 }
 
 void TestLinkWidgets::banner()
 {
     QFETCH(SessionState, state);
-    QFETCH(QString, detail);
+    QFETCH(StateDetail, detail);
     QFETCH(QString, contains);
+    QFETCH(QString, details);
     QWidget parent;
     auto *banner = new LinkBanner(&parent);
     parent.show();
-    banner->setState(SessionState::Lost, QStringLiteral("before"), QStringLiteral("/dev/x"));
+    StateDetail before;
+    before.kind = StateDetail::Kind::Silent;
+    banner->setState(SessionState::Lost, before, QStringLiteral("/dev/x"));
     banner->setState(state, detail, QStringLiteral("/dev/ttyUSB0"));
     QCOMPARE(banner->isVisible(), !contains.isEmpty());
-    if (!contains.isEmpty())
+    if (!contains.isEmpty()) {
         QVERIFY2(banner->text().contains(contains), qPrintable(banner->text()));
+        QVERIFY(banner->text().contains(u"Reconnecting") == (state == SessionState::Lost));
+    }
+    if (!details.isEmpty()) {
+        // The user's words in the sentence; the system's text only in the details.
+        QVERIFY2(!banner->text().contains(detail.error) || detail.error.isEmpty(),
+                 qPrintable(banner->text()));
+        QVERIFY2(banner->detailsText().contains(details), qPrintable(banner->detailsText()));
+        auto *button = banner->findChild<QToolButton *>(QStringLiteral("linkBannerDetailsButton"));
+        auto *label = banner->findChild<QLabel *>(QStringLiteral("linkBannerDetails"));
+        QVERIFY(button && label);
+        QVERIFY(button->isVisible());
+        QVERIFY(!label->isVisible());
+        button->click();
+        QVERIFY(label->isVisible());
+    }
     // Reconnecting keeps the "lost" banner up.
     if (state == SessionState::Lost) {
         banner->setState(SessionState::Opening, {}, {});
