@@ -15,8 +15,8 @@ namespace hatpic::bridge {
 
 struct AppOptions
 {
-    ConnectOptions connect;  //!< port, baud; reconnects
-    QString profilePath;     //!< --profile: pushed to the device, host block used
+    ConnectOptions connect;         //!< port, baud; reconnects
+    QString profilePath;            //!< --profile: pushed to the device, host block used
     std::optional<Profile> profile; //!< read from profilePath
     //! Everything ros.md lists: defaults, then ROS_DOMAIN_ID, the profile's host.bridge, the
     //! --config file and the command line, each over the one before.

@@ -17,22 +17,18 @@ namespace {
 
 // How a setting is held: text, a number, a whole number, or one of the special kinds below.
 struct AxisTag
-{
-}; // referenceAxis: "auto" or a twist component
+{}; // referenceAxis: "auto" or a twist component
 struct ComponentTag
-{
-}; // feedback.component: a wrench component
+{}; // feedback.component: a wrench component
 struct QosTag
-{
-};
+{};
 struct OriginTag
-{
-}; // poseOrigin: [x, y, z]
+{}; // poseOrigin: [x, y, z]
 
-using Place = std::variant<std::string BridgeSettings::*, double BridgeSettings::*,
-                           int BridgeSettings::*, std::string bridge::Topics::*,
-                           double bridge::FeedbackSettings::*, AxisTag, ComponentTag, QosTag,
-                           OriginTag>;
+using Place =
+    std::variant<std::string BridgeSettings::*, double BridgeSettings::*, int BridgeSettings::*,
+                 std::string bridge::Topics::*, double bridge::FeedbackSettings::*, AxisTag,
+                 ComponentTag, QosTag, OriginTag>;
 
 struct Key
 {
@@ -85,7 +81,10 @@ QByteArray valueJson(const BridgeSettings &s, const Place &place)
         {
             return text(s.referenceAxis ? s.referenceAxis->twistName() : kAuto);
         }
-        QByteArray operator()(ComponentTag) const { return text(s.feedback.component.wrenchName()); }
+        QByteArray operator()(ComponentTag) const
+        {
+            return text(s.feedback.component.wrenchName());
+        }
         QByteArray operator()(QosTag) const { return text(bridge::qosProfileName(s.qos)); }
         QByteArray operator()(OriginTag) const
         {

@@ -214,8 +214,7 @@ readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams 
 }
 
 QStringList readHostParams(const QJsonObject &object, const QString &prefix, HostParams &params,
-                           QStringList &errors, QStringList *warnings,
-                           const QStringList &otherKeys)
+                           QStringList &errors, QStringList *warnings, const QStringList &otherKeys)
 {
     const QString mode = QString::fromLatin1(kHostMode);
     const QString vMax = QString::fromLatin1(kHostVMax);

@@ -124,15 +124,14 @@ void readHost(const QJsonObject &root, HostParams &host, bridge::BridgeSettings 
     }
     const QString bridgeKey = QString::fromLatin1(kHostBridgeKey);
     const QJsonObject hostObject = hostValue.toObject();
-    const QStringList nonNumbers = readHostParams(hostObject, QStringLiteral("host."), host,
-                                                  errors, &warnings, {bridgeKey});
+    const QStringList nonNumbers =
+        readHostParams(hostObject, QStringLiteral("host."), host, errors, &warnings, {bridgeKey});
     // The bridge's settings: optional, each missing key keeps its default.
     if (const QJsonValue value = hostObject.value(bridgeKey); value.isObject())
         readBridgeSettings(value.toObject(), u"host."_s + bridgeKey + u'.', bridge, errors,
                            warnings);
     else if (!value.isUndefined())
-        errors.append(u"host."_s + bridgeKey + u": must be an object, got " +
-                      jsonValueText(value));
+        errors.append(u"host."_s + bridgeKey + u": must be an object, got " + jsonValueText(value));
     for (const Violation &v : validate(host)) {
         const QString message = QString::fromStdString(v.message());
         if (!nonNumbers.contains(QString::fromStdString(v.field)))

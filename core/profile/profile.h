@@ -20,7 +20,7 @@ struct Profile
     DeviceParams device;
     HostParams host;
     //! host.bridge of the file; its domainId is not part of a profile and stays at the default.
-    bridge::BridgeSettings bridge;
+    bridge::BridgeSettings bridge{}; // {}: aggregate initialisers may leave it out
 
     friend bool operator==(const Profile &, const Profile &) = default;
 };
