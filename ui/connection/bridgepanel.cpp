@@ -68,10 +68,12 @@ double taken(const QDoubleSpinBox *box, double original)
     return box->value() == shown ? original : box->value();
 }
 
+#ifdef HATPIC_HAVE_BRIDGE
 QString number(double value)
 {
     return std::isfinite(value) ? QString::number(value, 'g', 4) : u"–"_s;
 }
+#endif
 
 } // namespace
 
