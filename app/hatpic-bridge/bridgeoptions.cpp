@@ -278,21 +278,42 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
         }
         options.settings.domainId = *id;
     }
-    if (parser.isSet(configOption)) {
-        if (const QString problem = applyConfig(parser.value(configOption), options);
-            !problem.isEmpty()) {
-            *error = problem;
+    // The config file, then the command line. Run twice when a profile is named (by either):
+    // its bridge settings go under both.
+    const auto applyOptions = [&]() -> bool {
+        if (parser.isSet(configOption)) {
+            if (const QString problem = applyConfig(parser.value(configOption), options);
+                !problem.isEmpty()) {
+                *error = problem;
+                return false;
+            }
+        }
+        for (const Setting &s : settingTable()) {
+            const QString name = QString::fromLatin1(s.name);
+            if (!parser.isSet(name))
+                continue;
+            if (const QString problem = s.apply(options, parser.value(name)); !problem.isEmpty()) {
+                *error = optionError(s.name, parser.value(name), problem);
+                return false;
+            }
+        }
+        return true;
+    };
+    if (!applyOptions())
+        return std::nullopt;
+    if (!options.profilePath.isEmpty()) {
+        const ProfileReadResult read = readProfile(options.profilePath);
+        if (!read.ok()) {
+            *error = u"The profile " + options.profilePath + u" cannot be used: " +
+                     read.errors.join(QStringLiteral("; ")) + u'.';
             return std::nullopt;
         }
-    }
-    for (const Setting &s : settingTable()) {
-        const QString name = QString::fromLatin1(s.name);
-        if (!parser.isSet(name))
-            continue;
-        if (const QString problem = s.apply(options, parser.value(name)); !problem.isEmpty()) {
-            *error = optionError(s.name, parser.value(name), problem);
+        options.profile = read.profile;
+        const int domainId = options.settings.domainId; // a profile holds no domain
+        options.settings = read.profile->bridge;
+        options.settings.domainId = domainId;
+        if (!applyOptions())
             return std::nullopt;
-        }
     }
     options.connect.port = parser.value(portOption);
     if (options.connect.port.isEmpty()) {

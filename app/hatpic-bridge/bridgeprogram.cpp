@@ -43,14 +43,8 @@ BridgeProgram::BridgeProgram(const AppOptions &options, QObject *parent)
 
 QString BridgeProgram::start()
 {
-    if (!m_options.profilePath.isEmpty()) {
-        const ProfileReadResult read = readProfile(m_options.profilePath);
-        if (!read.ok())
-            return u"The profile " + m_options.profilePath + u" cannot be used: " +
-                   read.errors.join(QStringLiteral("; ")) + u'.';
-        m_profile = read.profile;
-        m_bridge.setReferenceMode(m_profile->host.mode);
-    }
+    if (m_options.profile)
+        m_bridge.setReferenceMode(m_options.profile->host.mode);
     if (const QString error = m_bridge.start(m_options.settings); !error.isEmpty())
         return error;
     m_client.connectDevice(m_options.connect);
@@ -73,13 +67,13 @@ void BridgeProgram::onStateChanged(SessionState state, const QString &detail)
 
 void BridgeProgram::onConnected()
 {
-    HostParams host = m_profile ? m_profile->host : HostParams();
+    HostParams host = m_options.profile ? m_options.profile->host : HostParams();
     const double limit = m_client.deviceInfo().tauLimit;
     if (std::isfinite(limit) && limit > 0 && limit <= 10)
         host.tau_limit = limit;
     m_client.setHostParams(host);
-    if (m_profile && m_client.deviceInfo().canSetParams())
-        m_client.pushParams(m_profile->device);
+    if (m_options.profile && m_client.deviceInfo().canSetParams())
+        m_client.pushParams(m_options.profile->device);
 }
 
 void BridgeProgram::printStats()

@@ -25,7 +25,7 @@ public:
 
     explicit BridgeProgram(const AppOptions &options, QObject *parent = nullptr);
 
-    //! Reads the profile, opens the DDS endpoints, starts connecting. Empty or one sentence.
+    //! Opens the DDS endpoints, starts connecting. Empty or one sentence.
     QString start();
     //! τ_ext 0 to the device (waiting until its telemetry shows it and /hatpic/feedback has
     //! published it, at most kZeroConfirmMs), then closes the endpoints and the port.
@@ -39,7 +39,6 @@ private:
     AppOptions m_options;
     DeviceClient m_client;
     Bridge m_bridge;
-    std::optional<Profile> m_profile;
     QTimer m_statsTimer;
     QTimer m_retryTimer;
     double m_lastDeviceTauExt = 0; //!< τ_ext of the newest sample [N·m]

@@ -70,6 +70,17 @@ void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
         applyTorque(m_feedback.torqueAt(now()));
 }
 
+bool Bridge::setPublishRate(double rateHz)
+{
+    BridgeSettings changed = m_settings;
+    changed.publishRateHz = rateHz;
+    if (!validate(changed).empty())
+        return false;
+    m_settings.publishRateHz = rateHz;
+    m_rate.setRate(rateHz);
+    return true;
+}
+
 BridgeStats Bridge::stats() const
 {
     BridgeStats s;

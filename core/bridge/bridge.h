@@ -4,7 +4,7 @@
 // flood of wrenches never queues more than one event.
 #pragma once
 
-#include "bridgesettings.h"
+#include "profile/bridgesettings.h"
 #include "referencemessages.h"
 #include "rosendpoints.h"
 #include "wrenchfeedback.h"
@@ -55,6 +55,9 @@ public:
 
     //! Gain, limit, component and staleness take effect at once, while running.
     void setFeedbackSettings(const FeedbackSettings &feedback);
+    //! Messages per topic per second from the next sample on, while running. A rate
+    //! validate() refuses is ignored (false).
+    bool setPublishRate(double rateHz);
     //! The reference mode picks the default axis (linear.x, or angular.z in rotation).
     void setReferenceMode(ReferenceMode mode) { m_mode = mode; }
 

@@ -3,7 +3,7 @@
 // DDS side only copies it.
 #pragma once
 
-#include "bridgesettings.h"
+#include "profile/bridgesettings.h"
 
 #include "telemetry/sample.h"
 

@@ -3,7 +3,7 @@
 // XCDR1). Only copies values between ReferenceMessages and the IDL-generated C types.
 #pragma once
 
-#include "bridgesettings.h"
+#include "profile/bridgesettings.h"
 #include "referencemessages.h"
 
 #include <array>

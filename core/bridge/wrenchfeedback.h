@@ -2,7 +2,7 @@
 // network is untrusted, so a non-finite value or a wrench that stopped coming gives 0.
 #pragma once
 
-#include "bridgesettings.h"
+#include "profile/bridgesettings.h"
 
 #include <cstdint>
 #include <limits>

@@ -174,14 +174,19 @@ QByteArray deviceParamsJson(const DeviceParams &params, int indent)
     return writer.text();
 }
 
-QByteArray hostParamsJson(const HostParams &params, int indent)
+JsonObjectWriter hostParamsWriter(const HostParams &params, int indent)
 {
-    return JsonObjectWriter(indent)
-        .add(kHostMode, jsonString(latin1(referenceModeName(params.mode))))
+    JsonObjectWriter writer(indent);
+    writer.add(kHostMode, jsonString(latin1(referenceModeName(params.mode))))
         .add(kHostVMax, jsonNumber(params.v_max))
         .add(kHostRefDeadzone, jsonBool(params.ref_deadzone))
-        .add(kHostTauLimit, jsonNumber(params.tau_limit))
-        .text();
+        .add(kHostTauLimit, jsonNumber(params.tau_limit));
+    return writer;
+}
+
+QByteArray hostParamsJson(const HostParams &params, int indent)
+{
+    return hostParamsWriter(params, indent).text();
 }
 
 std::array<bool, DeviceParams::kFieldCount>
@@ -209,14 +214,15 @@ readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams 
 }
 
 QStringList readHostParams(const QJsonObject &object, const QString &prefix, HostParams &params,
-                           QStringList &errors, QStringList *warnings)
+                           QStringList &errors, QStringList *warnings, const QStringList &otherKeys)
 {
     const QString mode = QString::fromLatin1(kHostMode);
     const QString vMax = QString::fromLatin1(kHostVMax);
     const QString refDeadzone = QString::fromLatin1(kHostRefDeadzone);
     const QString tauLimit = QString::fromLatin1(kHostTauLimit);
     if (warnings)
-        warnUnknownKeys(object, {mode, vMax, refDeadzone, tauLimit}, prefix, *warnings);
+        warnUnknownKeys(object, QStringList{mode, vMax, refDeadzone, tauLimit} + otherKeys, prefix,
+                        *warnings);
 
     if (const QJsonValue value = object.value(mode); !value.isUndefined()) {
         const QString text = value.isString() ? value.toString() : QString();

@@ -45,6 +45,8 @@ private:
 QByteArray deviceParamsJson(const DeviceParams &params, int indent);
 //! The `host` object of profile.md: mode, v_max, ref_deadzone, tau_limit.
 QByteArray hostParamsJson(const HostParams &params, int indent);
+//! The same object still open, for a profile to add its `bridge` object after those keys.
+JsonObjectWriter hostParamsWriter(const HostParams &params, int indent);
 
 //! Reads a `device` object into `params`. A field that is a number is set; one that is missing
 //! or not a number is left as it is and reported in `errors` ("<prefix>K_max: missing, must be a
@@ -54,10 +56,12 @@ std::array<bool, DeviceParams::kFieldCount>
 readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams &params,
                  QStringList &errors, QStringList *warnings);
 //! Reads a `host` object into `params` as readDeviceParams() does, except that a missing key is
-//! no error (it keeps its value). Returns the names of the number fields that held something
-//! else.
+//! no error (it keeps its value). `otherKeys` are keys the caller reads itself (a profile's
+//! `bridge`), so no warning names them. Returns the names of the number fields that held
+//! something else.
 QStringList readHostParams(const QJsonObject &object, const QString &prefix, HostParams &params,
-                           QStringList &errors, QStringList *warnings);
+                           QStringList &errors, QStringList *warnings,
+                           const QStringList &otherKeys = {});
 
 //! Reports every key of `object` that `known` does not hold as a warning: "unknown key
 //! \"<prefix>colour\" ignored".

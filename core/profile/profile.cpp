@@ -1,5 +1,6 @@
 #include "profile.h"
 
+#include "bridgejson.h"
 #include "jsonkeys.h"
 #include "profile/paramsjson.h"
 
@@ -111,7 +112,8 @@ void readDevice(const QJsonObject &root, DeviceParams &device, QStringList &erro
     }
 }
 
-void readHost(const QJsonObject &root, HostParams &host, QStringList &errors, QStringList &warnings)
+void readHost(const QJsonObject &root, HostParams &host, bridge::BridgeSettings &bridge,
+              QStringList &errors, QStringList &warnings)
 {
     const QJsonValue hostValue = root.value(u"host");
     if (hostValue.isUndefined())
@@ -120,13 +122,33 @@ void readHost(const QJsonObject &root, HostParams &host, QStringList &errors, QS
         errors.append(u"host: must be an object, got " + jsonValueText(hostValue));
         return;
     }
+    const QString bridgeKey = QString::fromLatin1(kHostBridgeKey);
+    const QJsonObject hostObject = hostValue.toObject();
     const QStringList nonNumbers =
-        readHostParams(hostValue.toObject(), QStringLiteral("host."), host, errors, &warnings);
+        readHostParams(hostObject, QStringLiteral("host."), host, errors, &warnings, {bridgeKey});
+    // The bridge's settings: optional, each missing key keeps its default.
+    if (const QJsonValue value = hostObject.value(bridgeKey); value.isObject())
+        readBridgeSettings(value.toObject(), u"host."_s + bridgeKey + u'.', bridge, errors,
+                           warnings);
+    else if (!value.isUndefined())
+        errors.append(u"host."_s + bridgeKey + u": must be an object, got " + jsonValueText(value));
     for (const Violation &v : validate(host)) {
         const QString message = QString::fromStdString(v.message());
         if (!nonNumbers.contains(QString::fromStdString(v.field)))
             errors.append(u"host." + message);
     }
+}
+
+// The host object; its bridge object only when a setting differs from its default, so the
+// files of everyone who never touches the bridge stay as they were.
+QByteArray hostJson(const Profile &profile)
+{
+    JsonObjectWriter writer = hostParamsWriter(profile.host, 2);
+    bridge::BridgeSettings defaults;
+    defaults.domainId = profile.bridge.domainId;
+    if (profile.bridge != defaults)
+        writer.add(kHostBridgeKey, bridgeSettingsJson(profile.bridge, 4));
+    return writer.text();
 }
 
 } // namespace
@@ -173,7 +195,7 @@ ProfileReadResult parseProfile(const QByteArray &json)
     readOptionalString(root, u"name", profile.name, result.errors);
     readOptionalString(root, u"notes", profile.notes, result.errors);
     readDevice(root, profile.device, result.errors, result.warnings);
-    readHost(root, profile.host, result.errors, result.warnings);
+    readHost(root, profile.host, profile.bridge, result.errors, result.warnings);
 
     if (result.errors.isEmpty())
         result.profile = profile;
@@ -215,7 +237,7 @@ QByteArray serializeProfile(const Profile &profile)
                .add("name", jsonString(profile.name))
                .add("notes", jsonString(profile.notes))
                .add("device", deviceParamsJson(profile.device, 2))
-               .add("host", hostParamsJson(profile.host, 2))
+               .add("host", hostJson(profile))
                .text() +
            '\n';
 }
@@ -228,6 +250,8 @@ QString writeProfile(const Profile &profile, const QString &path)
         problems.append(u"device." + QString::fromStdString(v.message()));
     for (const Violation &v : validate(profile.host))
         problems.append(u"host." + QString::fromStdString(v.message()));
+    for (const std::string &problem : bridge::validate(profile.bridge))
+        problems.append(u"host.bridge: " + QString::fromStdString(problem));
     if (!problems.isEmpty())
         return u"refusing to write an invalid profile to \"" + path + u"\": " +
                problems.join(u"; ");

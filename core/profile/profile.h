@@ -1,6 +1,8 @@
 // Profile files: one complete tuning as JSON (profile.md).
 #pragma once
 
+#include "bridgesettings.h"
+
 #include "model/params.h"
 
 #include <QByteArray>
@@ -17,6 +19,8 @@ struct Profile
     QString notes;
     DeviceParams device;
     HostParams host;
+    //! host.bridge of the file; its domainId is not part of a profile and stays at the default.
+    bridge::BridgeSettings bridge{}; // {}: aggregate initialisers may leave it out
 
     friend bool operator==(const Profile &, const Profile &) = default;
 };

@@ -3,6 +3,7 @@
 // wrench in as τ_ext, statistics, options, and SIGINT leaving the device with τ_ext 0.
 #include "rostestpeer.h"
 
+#include "profile/profile.h"
 #include "sim/simulatorhost.h"
 
 #include <QElapsedTimer>
@@ -105,6 +106,73 @@ private Q_SLOTS:
         const Run run = runBridge({u"--port"_s, u"sim"_s, u"--config"_s, path});
         QCOMPARE(run.code, 4);
         QVERIFY2(run.err.contains("unknown setting \"colour\""), run.err.constData());
+    }
+
+    void invalidProfileBridgeIsOneSentence()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"robot.json"_s);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(serializeProfile(Profile()).replace("\"tau_limit\": 0.44",
+                                                       "\"tau_limit\": 0.44, \"bridge\": "
+                                                       "{\"gain\": 1000}"));
+        file.close();
+        const Run run = runBridge({u"--port"_s, u"sim"_s, u"--profile"_s, path});
+        QCOMPARE(run.code, 4);
+        QVERIFY2(run.err.contains("cannot be used: host.bridge: gain: must be a finite number"),
+                 run.err.constData());
+        QCOMPARE(run.err.trimmed().count('\n'), 0);
+    }
+
+    // The profile's host.bridge sets gain, limit and the pose origin; --limit on the command
+    // line (over a --config file's) wins over the profile's.
+    void profileBridgeSettingsCommandLineWins()
+    {
+        QTemporaryDir dir;
+        Profile profile;
+        profile.bridge.feedback.gain = 0.5;
+        profile.bridge.feedback.limit = 0.3;
+        profile.bridge.poseOrigin = {0, 0, 2};
+        const QString profilePath = dir.filePath(u"robot.json"_s);
+        QCOMPARE(writeProfile(profile, profilePath), QString());
+        const QString configPath = dir.filePath(u"bridge.json"_s);
+        QFile config(configPath);
+        QVERIFY(config.open(QIODevice::WriteOnly));
+        config.write(R"({"limit": 0.2})");
+        config.close();
+
+        SimulatedDevice::Config simConfig;
+        simConfig.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
+        SimulatorHost host(simConfig);
+        QCOMPARE(host.start(), QString());
+        RosTestPeer peer(kDomain);
+        QVERIFY(peer.isValid());
+        QProcess bridge;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, QString::number(kDomain));
+        bridge.setProcessEnvironment(env);
+        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH),
+                     {u"--port"_s, host.slavePath(), u"--profile"_s, profilePath, u"--config"_s,
+                      configPath, u"--limit"_s, u"0.1"_s});
+        QVERIFY(bridge.waitForStarted());
+
+        QTRY_VERIFY_WITH_TIMEOUT((peer.take(), !peer.poses.empty()), 15000);
+        QCOMPARE(peer.poses.back().position[2], 2.0);
+        // 0.5 · 0.5 = 0.25 N·m, clamped to the command line's 0.1 (the profile says 0.3, the
+        // config 0.2).
+        QTRY_VERIFY_WITH_TIMEOUT(peer.wrenchMatched(), 10000);
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { peer.publishWrench(0.5); });
+        robot.start(20);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (peer.take(), !peer.feedbacks.empty() &&
+                              std::abs(peer.feedbacks.back().b[2] - 0.1) < kTauExtTolerance),
+            10000);
+        robot.stop();
+        ::kill(pid_t(bridge.processId()), SIGINT);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
+        QCOMPARE(bridge.exitCode(), 0);
     }
 
     void roundTripAndSigint()

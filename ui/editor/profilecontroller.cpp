@@ -101,6 +101,7 @@ Profile ProfileController::currentProfile(int slot) const
     if (slot == m_active) {
         p.device = m_editor->params();
         p.host = m_editor->hostParams();
+        p.bridge = m_bridge;
     }
     return p;
 }
@@ -110,7 +111,8 @@ bool ProfileController::isModified(int slot) const
     if (slot < 0 || slot >= kSlotCount || !m_slots[slot].used)
         return false;
     const Profile p = currentProfile(slot);
-    return p.device != m_slots[slot].saved.device || p.host != m_slots[slot].saved.host;
+    return p.device != m_slots[slot].saved.device || p.host != m_slots[slot].saved.host ||
+           p.bridge != m_slots[slot].saved.bridge;
 }
 
 bool ProfileController::isModified() const
@@ -151,6 +153,15 @@ void ProfileController::load(const Profile &profile, const QString &path, const 
     slot.saved = profile;
     slot.path = path;
     m_editor->setParams(profile.device, profile.host, undoText);
+    m_bridge = profile.bridge;
+    Q_EMIT bridgeSettingsLoaded(m_bridge);
+    updateTitle();
+}
+
+void ProfileController::setBridgeSettings(const bridge::BridgeSettings &settings)
+{
+    m_bridge = settings;
+    m_bridge.domainId = bridge::BridgeSettings().domainId;
     updateTitle();
 }
 
@@ -333,6 +344,8 @@ void ProfileController::activateSlot(int slot)
     m_active = slot;
     const Slot &to = m_slots[slot];
     m_editor->applyParams(to.working.device, to.working.host);
+    m_bridge = to.working.bridge;
+    Q_EMIT bridgeSettingsLoaded(m_bridge);
     updateTitle();
     Q_EMIT activeSlotChanged(slot);
     Q_EMIT statusMessage(tr("Slot %1: %2").arg(slotName(slot), profileName()));

@@ -73,10 +73,18 @@ public:
 
     void setQuestion(Question question) { m_question = std::move(question); }
 
+    //! The robot bridge's settings of the active slot (the profile's host.bridge), as the
+    //! Bridge panel holds them; Save writes them, the '*' counts them. The domain id is no
+    //! part of a profile and is dropped.
+    void setBridgeSettings(const bridge::BridgeSettings &settings);
+    const bridge::BridgeSettings &bridgeSettings() const { return m_bridge; }
+
 Q_SIGNALS:
     void titleChanged(const QString &title);
     void statusMessage(const QString &message);
     void activeSlotChanged(int slot);
+    //! A profile (or the other slot) brought its own bridge settings.
+    void bridgeSettingsLoaded(const hatpic::bridge::BridgeSettings &settings);
 
 private:
     struct Slot
@@ -101,6 +109,7 @@ private:
     QWidget *m_dialogParent;
     std::array<Slot, kSlotCount> m_slots;
     int m_active = 0;
+    bridge::BridgeSettings m_bridge; //!< the active slot's
     QString m_title;
     Question m_question;
 

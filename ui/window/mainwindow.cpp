@@ -17,6 +17,7 @@
 #include "recording/recordingcontrols.h"
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
+#include "window/bridgedock.h"
 #include "window/shortcutsdialog.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
@@ -160,12 +161,13 @@ void MainWindow::createDocks()
         makeDock(tr("Device log"), QStringLiteral("logDock"), m_log, Qt::BottomDockWidgetArea);
     m_logDock->hide();
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea); // the hand's dock: plots only
+    m_bridgeDock = addBridgeDock(this, m_client, m_profiles, m_editor, m_simDock);
     // As wide as the editor wants (within reason): its rows are long.
     resizeDocks({m_editorDock}, {std::clamp(m_editor->sizeHint().width() + 24, 420, 600)},
                 Qt::Horizontal);
     resizeDocks({m_editorDock, m_stiffnessDock}, {560, 300}, Qt::Vertical);
 
-    for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_logDock})
+    for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_bridgeDock, m_logDock})
         m_viewMenu->addAction(dock->toggleViewAction());
 }
 

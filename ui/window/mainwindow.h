@@ -104,6 +104,7 @@ private:
     QDockWidget *m_editorDock = nullptr;
     QDockWidget *m_stiffnessDock = nullptr;
     QDockWidget *m_simDock = nullptr;
+    QDockWidget *m_bridgeDock = nullptr;
     QDockWidget *m_logDock = nullptr;
 
     WindowActions *m_actions = nullptr;

@@ -1,8 +1,8 @@
 // The bridge's DDS-independent parts: wrench → τ_ext (gain, limit, stale, non-finite), the
 // outgoing messages' content, stamps, the rate limiter, and the settings' rules.
-#include "bridge/bridgesettings.h"
 #include "bridge/referencemessages.h"
 #include "bridge/wrenchfeedback.h"
+#include "profile/bridgesettings.h"
 
 #include <QTest>
 

@@ -56,6 +56,7 @@ private Q_SLOTS:
     void initTestCase();
     void init();
     void saveOpenRoundTrip();
+    void bridgeSettingsSavedAndLoaded();
     void refusedFileChangesNothing_data();
     void refusedFileChangesNothing();
     void invalidSetIsNotSaved();
@@ -123,6 +124,54 @@ void TestProfileController::saveOpenRoundTrip()
     QCOMPARE(controller.profileName(), u"mytuning"_s);
     QVERIFY(!controller.isModified());
     QCOMPARE(editor.undoStack()->count(), 1); // opening is one undo step
+}
+
+// The Bridge panel's settings go into the profile's host.bridge: Save writes them, the '*'
+// counts them, Open and the A/B switch hand the profile's back.
+void TestProfileController::bridgeSettingsSavedAndLoaded()
+{
+    const QString path = m_dir->filePath(u"robot.json"_s);
+    bridge::BridgeSettings s;
+    s.feedback.gain = 0.3;
+    s.topics.wrench = "/arm/wrench";
+    {
+        ParameterEditor editor;
+        ProfileController controller(&editor, nullptr);
+        QVERIFY(!controller.isModified());
+        bridge::BridgeSettings withDomain = s;
+        withDomain.domainId = 9; // no part of a profile
+        controller.setBridgeSettings(withDomain);
+        QVERIFY(controller.isModified());
+        QVERIFY(controller.windowTitle().contains(u'*'));
+        QCOMPARE(controller.bridgeSettings().domainId, 0);
+        QString error;
+        QVERIFY2(controller.saveTo(path, &error), qPrintable(error));
+        QVERIFY(!controller.isModified());
+    }
+    const auto read = readProfile(path);
+    QVERIFY(read.ok());
+    QVERIFY(read.profile->bridge == s);
+
+    ParameterEditor editor;
+    ProfileController controller(&editor, nullptr);
+    QSignalSpy loaded(&controller, &ProfileController::bridgeSettingsLoaded);
+    QVERIFY(controller.openFile(path));
+    QCOMPARE(loaded.size(), 1);
+    QVERIFY(loaded.last().at(0).value<bridge::BridgeSettings>() == s);
+    QVERIFY(controller.bridgeSettings() == s);
+    QVERIFY(!controller.isModified());
+
+    // Slot B starts as a copy; its own settings come back when it is active again.
+    controller.toggleSlot();
+    QCOMPARE(controller.activeSlot(), 1);
+    bridge::BridgeSettings b = s;
+    b.feedback.limit = 0.05;
+    controller.setBridgeSettings(b);
+    controller.toggleSlot();
+    QVERIFY(loaded.last().at(0).value<bridge::BridgeSettings>() == s);
+    controller.toggleSlot();
+    QVERIFY(loaded.last().at(0).value<bridge::BridgeSettings>() == b);
+    QVERIFY(controller.bridgeSettings() == b);
 }
 
 void TestProfileController::refusedFileChangesNothing_data()

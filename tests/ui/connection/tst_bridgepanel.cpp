@@ -1,0 +1,230 @@
+// The Bridge panel, real widgets offscreen, on a DeviceClient of the in-process simulated
+// joystick and real Cyclone DDS confined to loopback in this test's own domain: enable, the
+// references out, a wrench in shown as the last wrench and the τ_ext it produced (and felt by
+// the device), gain and limit tuned while running, rejected counts, topics and rate changed
+// live, bad input refused, disable leaving τ_ext 0.
+#include "rostestpeer.h"
+
+#include "connection/bridgepanel.h"
+#include "session/deviceclient.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTest>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+using namespace hatpic;
+using hatpic::test::RosTestPeer;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int kDomain = 73;               //!< this test's own DDS domain
+constexpr double kTauExtTolerance = 1e-6; //!< τ_ext travels as float32 [N·m]
+
+} // namespace
+
+class TestBridgePanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(BridgePanel::isBuilt());
+        hatpic::test::confineDdsToLoopback();
+        registerSessionMetaTypes();
+        ConnectOptions options;
+        options.port = QString::fromUtf16(kSimPortName);
+        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
+        connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
+            if (!batch.isEmpty())
+                m_deviceTauExt = batch.last().tau_ext;
+        });
+        m_client.connectDevice(options);
+        QTRY_COMPARE_WITH_TIMEOUT(m_client.state(), SessionState::Connected, 10000);
+        m_client.setHostParams(HostParams{});
+        m_peer = std::make_unique<RosTestPeer>(kDomain);
+        QVERIFY(m_peer->isValid());
+        m_panel = std::make_unique<BridgePanel>(m_client);
+        m_panel->show();
+    }
+
+    void offUntilEnabled()
+    {
+        QVERIFY(!m_panel->isRunning());
+        QCOMPARE(label(u"bridge_status"_s), u"Off"_s);
+        QSignalSpy edited(m_panel.get(), &BridgePanel::settingsEdited);
+        find<QSpinBox>(u"bridge_domain"_s)->setValue(kDomain);
+        QCOMPARE(m_panel->settings().domainId, kDomain);
+        QCOMPARE(edited.size(), 1);
+        QVERIFY(!m_panel->isRunning());
+
+        find<QCheckBox>(u"bridge_enable"_s)->click();
+        QVERIFY(m_panel->isRunning());
+        QCOMPARE(label(u"bridge_status"_s), u"Running on domain 73"_s);
+        QTRY_VERIFY_WITH_TIMEOUT((m_peer->take(), m_peer->twists.size() >= 20), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(label(u"bridge_published"_s).contains(u"twist "_s) &&
+                                     !label(u"bridge_published"_s).contains(u"twist 0,"_s),
+                                 5000);
+    }
+
+    void wrenchBecomesTauExt()
+    {
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 10000);
+        startRobot(0.5);
+        // The defaults: 0.154 N·m per N, ±0.154 N·m.
+        expectTauExt(0.077);
+        QCOMPARE(label(u"bridge_last_wrench"_s), u"force.z 0.5 N"_s);
+        QCOMPARE(label(u"bridge_tau_ext"_s), u"0.077 N·m"_s);
+    }
+
+    void gainAndLimitWhileRunning()
+    {
+        QSignalSpy edited(m_panel.get(), &BridgePanel::settingsEdited);
+        find<QDoubleSpinBox>(u"bridge_gain"_s)->setValue(0.5); // 0.25, clamped to 0.154
+        expectTauExt(0.154);
+        find<QDoubleSpinBox>(u"bridge_limit"_s)->setValue(0.2);
+        expectTauExt(0.2);
+        QVERIFY(m_panel->isRunning());
+        QCOMPARE(edited.size(), 2);
+        const auto last = edited.last().at(0).value<bridge::BridgeSettings>();
+        QCOMPARE(last.feedback.gain, 0.5);
+        QCOMPARE(last.feedback.limit, 0.2);
+        QVERIFY(label(u"bridge_counts"_s).contains(u"limited"_s));
+    }
+
+    void nonFiniteAndStaleAreCountedAndGiveZero()
+    {
+        m_robotValue = std::numeric_limits<double>::quiet_NaN();
+        expectTauExt(0);
+        QTRY_VERIFY_WITH_TIMEOUT(!label(u"bridge_counts"_s).contains(u" 0 non-finite"_s), 2000);
+        m_robotValue = 0.2; // 0.1 N·m
+        expectTauExt(0.1);
+        m_robot.stop(); // stale after 0.5 s
+        expectTauExt(0);
+        QTRY_VERIFY_WITH_TIMEOUT(!label(u"bridge_counts"_s).contains(u" 0 stale"_s), 2000);
+    }
+
+    void topicAndRateChangeLive()
+    {
+        // A new topic reopens the endpoints: the twist goes out under its new name.
+        QLineEdit *twist = find<QLineEdit>(u"bridge_topic_twist"_s);
+        twist->setText(u"/arm/twist"_s);
+        Q_EMIT twist->editingFinished();
+        QVERIFY(m_panel->isRunning());
+        QCOMPARE(m_panel->settings().topics.twist, std::string("/arm/twist"));
+        QTRY_VERIFY_WITH_TIMEOUT(hasPublication("rt/arm/twist"), 10000);
+
+        // The rate, at once: 10 Hz gives about 10 joint states a second.
+        find<QDoubleSpinBox>(u"bridge_rate"_s)->setValue(10);
+        QTest::qWait(300);
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(1000);
+        m_peer->take();
+        QVERIFY2(m_peer->joints.size() >= 5 && m_peer->joints.size() <= 15,
+                 qPrintable(QString::number(m_peer->joints.size())));
+    }
+
+    void badInputIsRefusedAndKeepsTheSettings()
+    {
+        const bridge::BridgeSettings before = m_panel->settings();
+        QLineEdit *pose = find<QLineEdit>(u"bridge_topic_pose"_s);
+        pose->setText(u"/9pose"_s);
+        Q_EMIT pose->editingFinished();
+        QCOMPARE(label(u"bridge_status"_s),
+                 u"Not applied: pose topic: '/9pose' is not a ROS topic name (letters, digits "
+                 u"and '_' between single '/', not starting with a digit)."_s);
+        QVERIFY(m_panel->settings() == before);
+        QVERIFY(m_panel->isRunning());
+        pose->setText(QString::fromStdString(before.topics.pose));
+        Q_EMIT pose->editingFinished();
+    }
+
+    void profileSettingsShownAndApplied()
+    {
+        bridge::BridgeSettings s;
+        s.feedback.gain = 0.12345678; // more digits than the box shows: kept on other edits
+        s.feedback.limit = 0.3;
+        s.domainId = 5; // no part of a profile: the panel keeps its own
+        m_panel->setSettings(s);
+        QCOMPARE(m_panel->settings().domainId, kDomain);
+        QCOMPARE(find<QDoubleSpinBox>(u"bridge_gain"_s)->value(), 0.1235);
+        QCOMPARE(find<QLineEdit>(u"bridge_topic_twist"_s)->text(), u"/hatpic/twist"_s);
+        QVERIFY(m_panel->isRunning());
+        find<QDoubleSpinBox>(u"bridge_stale"_s)->setValue(0.4);
+        QCOMPARE(m_panel->settings().feedback.gain, 0.12345678);
+        QCOMPARE(m_panel->settings().feedback.staleAfter, 0.4);
+        startRobot(1);
+        expectTauExt(0.12345678);
+    }
+
+    void disableLeavesZero()
+    {
+        find<QCheckBox>(u"bridge_enable"_s)->click();
+        QVERIFY(!m_panel->isRunning());
+        QCOMPARE(label(u"bridge_status"_s), u"Off"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt) < kTauExtTolerance, 5000);
+        m_robot.stop();
+    }
+
+    void cleanupTestCase()
+    {
+        m_panel.reset();
+        m_peer.reset();
+        m_client.disconnectDevice();
+    }
+
+private:
+    template<typename T> T *find(const QString &name)
+    {
+        T *widget = m_panel->findChild<T *>(name);
+        if (!widget)
+            qFatal("no widget %s", qPrintable(name));
+        return widget;
+    }
+    QString label(const QString &name) { return find<QLabel>(name)->text(); }
+
+    void startRobot(double value)
+    {
+        m_robotValue = value;
+        m_robot.disconnect();
+        connect(&m_robot, &QTimer::timeout, this, [this] { m_peer->publishWrench(m_robotValue); });
+        m_robot.start(20);
+    }
+
+    // τ_ext reaches the device's telemetry and the panel's readout.
+    void expectTauExt(double tau)
+    {
+        QTRY_VERIFY2_WITH_TIMEOUT(std::abs(m_deviceTauExt - tau) < kTauExtTolerance,
+                                  qPrintable(QString::number(m_deviceTauExt)), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(label(u"bridge_tau_ext"_s),
+                                  QString::number(tau, 'g', 4) + u" N·m"_s, 2000);
+    }
+
+    bool hasPublication(const std::string &topic)
+    {
+        const auto p = m_peer->publications();
+        return std::any_of(p.begin(), p.end(), [&](const auto &e) { return e.first == topic; });
+    }
+
+    DeviceClient m_client;
+    std::unique_ptr<RosTestPeer> m_peer;
+    std::unique_ptr<BridgePanel> m_panel;
+    QTimer m_robot;
+    double m_robotValue = 0;
+    double m_deviceTauExt = std::numeric_limits<double>::quiet_NaN();
+};
+
+QTEST_MAIN(TestBridgePanel)
+#include "tst_bridgepanel.moc"

@@ -1,0 +1,354 @@
+#include "connection/bridgepanel.h"
+
+#ifdef HATPIC_HAVE_BRIDGE
+#include "bridge/bridge.h"
+#endif
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace hatpic {
+
+using namespace Qt::StringLiterals;
+using bridge::BridgeSettings;
+using bridge::Component;
+
+namespace {
+
+// The topic fields, in the order of the form.
+struct TopicField
+{
+    const char *label; //!< translated
+    const char16_t *name;
+    std::string bridge::Topics::*topic;
+};
+constexpr TopicField kTopicFields[] = {
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Joint states (out)"), u"bridge_topic_joint_states",
+     &bridge::Topics::jointStates},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Twist (out)"), u"bridge_topic_twist",
+     &bridge::Topics::twist},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Pose (out)"), u"bridge_topic_pose",
+     &bridge::Topics::pose},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Feedback (out)"), u"bridge_topic_feedback",
+     &bridge::Topics::feedback},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Wrench (in)"), u"bridge_topic_wrench",
+     &bridge::Topics::wrench},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Wrench, unstamped (in)"),
+     u"bridge_topic_wrench_unstamped", &bridge::Topics::wrenchUnstamped},
+};
+static_assert(std::size(kTopicFields) == 6);
+
+QDoubleSpinBox *spin(QWidget *parent, const QString &name, double low, double high, int decimals,
+                     const QString &suffix)
+{
+    auto *box = new QDoubleSpinBox(parent);
+    box->setObjectName(name);
+    box->setRange(low, high);
+    box->setDecimals(decimals);
+    box->setSuffix(suffix);
+    box->setKeyboardTracking(false);
+    return box;
+}
+
+// The box's value, or `original` when the box still shows it (rounded to its decimals): an
+// edit elsewhere in the panel keeps every digit the profile had.
+double taken(const QDoubleSpinBox *box, double original)
+{
+    const double shown = QString::number(original, 'f', box->decimals()).toDouble();
+    return box->value() == shown ? original : box->value();
+}
+
+#ifdef HATPIC_HAVE_BRIDGE
+QString number(double value)
+{
+    return std::isfinite(value) ? QString::number(value, 'g', 4) : u"–"_s;
+}
+#endif
+
+} // namespace
+
+bool BridgePanel::isBuilt()
+{
+#ifdef HATPIC_HAVE_BRIDGE
+    return true;
+#else
+    return false;
+#endif
+}
+
+BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent), m_client(client)
+{
+    auto *layout = new QVBoxLayout(this);
+    m_status = new QLabel(this);
+    m_status->setObjectName(u"bridge_status"_s);
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+    if (!isBuilt()) {
+        setStatus(tr("The robot bridge is not built into this tuner (configure with "
+                     "-DHATPIC_BUILD_BRIDGE=ON; it needs Cyclone DDS). See docs/ros.md."),
+                  true);
+        layout->addStretch();
+        return;
+    }
+    const QByteArray domain = qgetenv("ROS_DOMAIN_ID");
+    bool ok = false;
+    const int id = QString::fromLocal8Bit(domain).trimmed().toInt(&ok);
+    if (ok && id >= 0 && id <= bridge::kMaxDomainId)
+        m_settings.domainId = id;
+#ifdef HATPIC_HAVE_BRIDGE
+    m_bridge = new bridge::Bridge(m_client, this);
+    connect(m_bridge, &bridge::Bridge::feedbackChanged, this, &BridgePanel::refresh);
+#endif
+    buildForm();
+    showSettings();
+    m_refresh.setInterval(kRefreshMs);
+    connect(&m_refresh, &QTimer::timeout, this, &BridgePanel::refresh);
+    setStatus(tr("Off"), false);
+    refresh();
+}
+
+BridgePanel::~BridgePanel()
+{
+    setBridgeEnabled(false);
+}
+
+void BridgePanel::buildForm()
+{
+    auto *layout = static_cast<QVBoxLayout *>(this->layout());
+    auto *top = new QFormLayout;
+    m_enable = new QCheckBox(tr("Publish on ROS 2 and feed the wrench back"), this);
+    m_enable->setObjectName(u"bridge_enable"_s);
+    top->addRow(m_enable);
+    m_domain = new QSpinBox(this);
+    m_domain->setObjectName(u"bridge_domain"_s);
+    m_domain->setRange(0, bridge::kMaxDomainId);
+    m_domain->setKeyboardTracking(false);
+    m_domain->setToolTip(tr("DDS domain (ROS_DOMAIN_ID); not saved in profiles"));
+    top->addRow(tr("Domain"), m_domain);
+    m_rate = spin(this, u"bridge_rate"_s, 0.01, bridge::kMaxPublishRateHz, 2, u" Hz"_s);
+    m_rate->setToolTip(tr("Messages per topic per second, at most"));
+    top->addRow(tr("Rate"), m_rate);
+    layout->addLayout(top);
+
+    auto *topics = new QGroupBox(tr("Topics (empty: not used)"), this);
+    auto *topicForm = new QFormLayout(topics);
+    for (std::size_t i = 0; i < std::size(kTopicFields); ++i) {
+        m_topics[i] = new QLineEdit(topics);
+        m_topics[i]->setObjectName(QString::fromUtf16(kTopicFields[i].name));
+        topicForm->addRow(tr(kTopicFields[i].label), m_topics[i]);
+        connect(m_topics[i], &QLineEdit::editingFinished, this, [this] { edited(true); });
+    }
+    layout->addWidget(topics);
+
+    auto *feedback = new QGroupBox(tr("Wrench → τ_ext (live)"), this);
+    auto *feedbackForm = new QFormLayout(feedback);
+    m_component = new QComboBox(feedback);
+    m_component->setObjectName(u"bridge_component"_s);
+    for (const bool angular : {false, true}) {
+        for (int index = 0; index < 3; ++index)
+            m_component->addItem(QString::fromStdString(Component{angular, index}.wrenchName()));
+    }
+    feedbackForm->addRow(tr("Component"), m_component);
+    m_gain = spin(feedback, u"bridge_gain"_s, -bridge::kMaxFeedbackGain, bridge::kMaxFeedbackGain,
+                  4, u" N·m/N"_s);
+    m_gain->setSingleStep(0.01);
+    feedbackForm->addRow(tr("Gain"), m_gain);
+    m_limit = spin(feedback, u"bridge_limit"_s, 0, bridge::kMaxFeedbackLimit, 3, u" N·m"_s);
+    m_limit->setSingleStep(0.01);
+    feedbackForm->addRow(tr("Limit"), m_limit);
+    m_stale = spin(feedback, u"bridge_stale"_s, 0.001, bridge::kMaxStaleAfter, 3, u" s"_s);
+    m_stale->setToolTip(tr("A wrench older than this gives τ_ext 0"));
+    feedbackForm->addRow(tr("Stale after"), m_stale);
+    m_wrench = new QLabel(feedback);
+    m_wrench->setObjectName(u"bridge_last_wrench"_s);
+    feedbackForm->addRow(tr("Last wrench"), m_wrench);
+    m_tauExt = new QLabel(feedback);
+    m_tauExt->setObjectName(u"bridge_tau_ext"_s);
+    feedbackForm->addRow(tr("τ_ext"), m_tauExt);
+    m_counts = new QLabel(feedback);
+    m_counts->setObjectName(u"bridge_counts"_s);
+    m_counts->setWordWrap(true);
+    feedbackForm->addRow(tr("Wrenches"), m_counts);
+    layout->addWidget(feedback);
+    m_published = new QLabel(this);
+    m_published->setObjectName(u"bridge_published"_s);
+    m_published->setWordWrap(true);
+    layout->addWidget(m_published);
+    layout->addStretch();
+
+    connect(m_enable, &QCheckBox::toggled, this, &BridgePanel::setBridgeEnabled);
+    connect(m_domain, &QSpinBox::valueChanged, this, [this] { edited(true); });
+    connect(m_rate, &QDoubleSpinBox::valueChanged, this, [this] { edited(false); });
+    for (QDoubleSpinBox *box : {m_gain, m_limit, m_stale})
+        connect(box, &QDoubleSpinBox::valueChanged, this, [this] { edited(false); });
+    connect(m_component, &QComboBox::currentIndexChanged, this, [this] { edited(false); });
+}
+
+void BridgePanel::showSettings()
+{
+    if (!m_bridge)
+        return;
+    const QSignalBlocker b1(m_domain), b2(m_rate), b3(m_component), b4(m_gain), b5(m_limit),
+        b6(m_stale);
+    m_domain->setValue(m_settings.domainId);
+    m_rate->setValue(m_settings.publishRateHz);
+    const Component c = m_settings.feedback.component;
+    m_component->setCurrentIndex((c.angular ? 3 : 0) + c.index);
+    m_gain->setValue(m_settings.feedback.gain);
+    m_limit->setValue(m_settings.feedback.limit);
+    m_stale->setValue(m_settings.feedback.staleAfter);
+    for (std::size_t i = 0; i < std::size(kTopicFields); ++i)
+        m_topics[i]->setText(QString::fromStdString(m_settings.topics.*kTopicFields[i].topic));
+}
+
+void BridgePanel::setSettings(const BridgeSettings &settings)
+{
+    if (!m_bridge)
+        return;
+    const int domain = m_settings.domainId;
+    m_settings = settings;
+    m_settings.domainId = domain;
+    showSettings();
+    if (isRunning())
+        setBridgeEnabled(true); // reopens with the new settings
+}
+
+void BridgePanel::edited(bool reopen)
+{
+    BridgeSettings s = m_settings;
+    s.domainId = m_domain->value();
+    s.publishRateHz = taken(m_rate, m_settings.publishRateHz);
+    const int c = m_component->currentIndex();
+    s.feedback.component = Component{c >= 3, c % 3};
+    s.feedback.gain = taken(m_gain, m_settings.feedback.gain);
+    s.feedback.limit = taken(m_limit, m_settings.feedback.limit);
+    s.feedback.staleAfter = taken(m_stale, m_settings.feedback.staleAfter);
+    for (std::size_t i = 0; i < std::size(kTopicFields); ++i)
+        s.topics.*kTopicFields[i].topic = m_topics[i]->text().trimmed().toStdString();
+    if (s == m_settings)
+        return;
+    if (const auto errors = bridge::validate(s); !errors.empty()) {
+        setStatus(tr("Not applied: %1.").arg(QString::fromStdString(errors.front())), true);
+        return;
+    }
+    const bool feedbackChanged = s.feedback != m_settings.feedback;
+    const bool rateChanged = s.publishRateHz != m_settings.publishRateHz;
+    m_settings = s;
+#ifdef HATPIC_HAVE_BRIDGE
+    if (isRunning()) {
+        if (reopen) {
+            setBridgeEnabled(true);
+        } else {
+            if (feedbackChanged)
+                m_bridge->setFeedbackSettings(s.feedback);
+            if (rateChanged)
+                m_bridge->setPublishRate(s.publishRateHz);
+            setStatus(tr("Running on domain %1").arg(s.domainId), false);
+        }
+    } else {
+        setStatus(tr("Off"), false);
+    }
+#else
+    Q_UNUSED(reopen);
+    Q_UNUSED(feedbackChanged);
+    Q_UNUSED(rateChanged);
+#endif
+    Q_EMIT settingsEdited(m_settings);
+}
+
+void BridgePanel::setReferenceMode(ReferenceMode mode)
+{
+#ifdef HATPIC_HAVE_BRIDGE
+    if (m_bridge)
+        m_bridge->setReferenceMode(mode);
+#else
+    Q_UNUSED(mode);
+#endif
+}
+
+bool BridgePanel::isRunning() const
+{
+#ifdef HATPIC_HAVE_BRIDGE
+    return m_bridge && m_bridge->isRunning();
+#else
+    return false;
+#endif
+}
+
+void BridgePanel::setBridgeEnabled(bool on)
+{
+#ifdef HATPIC_HAVE_BRIDGE
+    if (!m_bridge)
+        return;
+    QString error;
+    if (on)
+        error = m_bridge->start(m_settings); // stops first: a running bridge reopens
+    else
+        m_bridge->stop();
+    const bool running = m_bridge->isRunning();
+    {
+        const QSignalBlocker blocker(m_enable);
+        m_enable->setChecked(running);
+    }
+    if (running) {
+        m_refresh.start();
+        setStatus(tr("Running on domain %1").arg(m_settings.domainId), false);
+    } else {
+        m_refresh.stop();
+        setStatus(error.isEmpty() ? tr("Off") : tr("Cannot start: %1").arg(error),
+                  !error.isEmpty());
+    }
+    refresh();
+#else
+    Q_UNUSED(on);
+#endif
+}
+
+void BridgePanel::refresh()
+{
+#ifdef HATPIC_HAVE_BRIDGE
+    if (!m_bridge)
+        return;
+    const bridge::BridgeStats s = m_bridge->stats();
+    const Component c = m_settings.feedback.component;
+    m_wrench->setText(QString::fromStdString(c.wrenchName()) + u' ' + number(s.lastWrench) +
+                      (c.angular ? u" N·m"_s : u" N"_s));
+    m_tauExt->setText(number(s.tauExt) + u" N·m"_s);
+    m_counts->setText(tr("%1 received, %2 non-finite, %3 stale, %4 limited")
+                          .arg(s.wrenches.received)
+                          .arg(s.wrenches.nonFinite)
+                          .arg(s.wrenches.stale)
+                          .arg(s.wrenches.limited));
+    QString out = tr("Published:");
+    for (int i = 0; i < bridge::kOutTopicCount; ++i)
+        out += u' ' + QString::fromLatin1(bridge::outTopicKey(bridge::OutTopic(i))) + u' ' +
+               QString::number(s.published[i]) + (i + 1 < bridge::kOutTopicCount ? u","_s : u""_s);
+    m_published->setText(out);
+#endif
+}
+
+QString BridgePanel::statusText() const
+{
+    if (!m_bridge)
+        return m_status->text();
+    return m_status->text() + u" | "_s + m_wrench->text() + u" → τ_ext "_s + m_tauExt->text() +
+           u" | "_s + m_counts->text() + u" | "_s + m_published->text();
+}
+
+void BridgePanel::setStatus(const QString &text, bool error)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(error ? u"color: #b00020;"_s : QString());
+}
+
+} // namespace hatpic

@@ -1,0 +1,87 @@
+// The Bridge panel (ros.md § In the tuner): the robot bridge inside the tuner, on the window's
+// DeviceClient. Enable/disable; topics, rate and domain (a change reopens the endpoints while
+// running); gain, limit, component and staleness applied at once, so the feel can be tuned
+// while the robot runs; the last wrench, the τ_ext it produced and the rejected counts.
+// Without HATPIC_BUILD_BRIDGE the panel only says that the bridge is not built.
+#pragma once
+
+#include "model/params.h"
+#include "profile/bridgesettings.h"
+
+#include <QTimer>
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+
+namespace hatpic {
+
+class DeviceClient;
+
+namespace bridge {
+class Bridge;
+}
+
+class BridgePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr int kRefreshMs = 200; //!< readouts while running
+    //! Whether this build has the bridge (HATPIC_BUILD_BRIDGE).
+    static bool isBuilt();
+
+    explicit BridgePanel(DeviceClient &client, QWidget *parent = nullptr);
+    ~BridgePanel() override; //!< stops the bridge: τ_ext 0 to the device
+
+    //! The settings shown (the domain from ROS_DOMAIN_ID, else 0, until edited).
+    const bridge::BridgeSettings &settings() const { return m_settings; }
+    bool isRunning() const;
+    //! The bridge's own readouts and counters, as text (for the status line and tests).
+    QString statusText() const;
+
+public Q_SLOTS:
+    //! New settings (a profile was opened); the domain stays. While running they take effect
+    //! at once.
+    void setSettings(const hatpic::bridge::BridgeSettings &settings);
+    //! Picks the default axis of the references (linear.x, or angular.z in rotation).
+    void setReferenceMode(hatpic::ReferenceMode mode);
+    //! Starts or stops the bridge, as the Enable box does.
+    void setBridgeEnabled(bool on);
+
+Q_SIGNALS:
+    //! The user changed a setting (valid as a whole): for the profile.
+    void settingsEdited(const hatpic::bridge::BridgeSettings &settings);
+
+private:
+    void buildForm();
+    void showSettings();
+    //! Takes an edit: checks the whole, applies it (live, or by reopening), tells the profile.
+    void edited(bool reopen);
+    void refresh();
+    void setStatus(const QString &text, bool error);
+
+    DeviceClient &m_client;
+    bridge::Bridge *m_bridge = nullptr; //!< a child; null when not built
+    bridge::BridgeSettings m_settings;
+    QTimer m_refresh;
+
+    QLabel *m_status = nullptr;
+    QCheckBox *m_enable = nullptr;
+    QSpinBox *m_domain = nullptr;
+    QLineEdit *m_topics[6] = {};
+    QDoubleSpinBox *m_rate = nullptr;
+    QComboBox *m_component = nullptr;
+    QDoubleSpinBox *m_gain = nullptr;
+    QDoubleSpinBox *m_limit = nullptr;
+    QDoubleSpinBox *m_stale = nullptr;
+    QLabel *m_wrench = nullptr;
+    QLabel *m_tauExt = nullptr;
+    QLabel *m_counts = nullptr;
+    QLabel *m_published = nullptr;
+};
+
+} // namespace hatpic

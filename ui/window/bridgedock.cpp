@@ -1,0 +1,37 @@
+#include "window/bridgedock.h"
+
+#include "connection/bridgepanel.h"
+#include "editor/parametereditor.h"
+#include "editor/profilecontroller.h"
+
+#include <QDockWidget>
+#include <QMainWindow>
+
+namespace hatpic {
+
+QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileController *profiles,
+                           ParameterEditor *editor, QDockWidget *tabWith)
+{
+    auto *panel = new BridgePanel(*client, window);
+    panel->setObjectName(QStringLiteral("bridgePanel"));
+    auto *dock = new QDockWidget(QObject::tr("Bridge"), window);
+    dock->setObjectName(QStringLiteral("bridgeDock"));
+    dock->setWidget(panel);
+    window->addDockWidget(Qt::RightDockWidgetArea, dock);
+    if (tabWith)
+        window->tabifyDockWidget(tabWith, dock);
+
+    // The profile's host.bridge: a profile opened (or the other slot) sets the panel; the
+    // user's edits go to the profile, so Save profile writes them.
+    panel->setSettings(profiles->bridgeSettings());
+    QObject::connect(panel, &BridgePanel::settingsEdited, profiles,
+                     &ProfileController::setBridgeSettings);
+    QObject::connect(profiles, &ProfileController::bridgeSettingsLoaded, panel,
+                     &BridgePanel::setSettings);
+    panel->setReferenceMode(editor->hostParams().mode);
+    QObject::connect(editor, &ParameterEditor::hostParamsChanged, panel,
+                     [panel](const HostParams &host) { panel->setReferenceMode(host.mode); });
+    return dock;
+}
+
+} // namespace hatpic

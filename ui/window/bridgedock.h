@@ -1,0 +1,18 @@
+// The Bridge panel in the window: its dock, tabbed with another, and its wiring to the
+// profile (host.bridge: opened, edited, saved) and to the reference mode.
+#pragma once
+
+class QDockWidget;
+class QMainWindow;
+
+namespace hatpic {
+
+class DeviceClient;
+class ParameterEditor;
+class ProfileController;
+
+//! Adds the dock "bridgeDock" (its panel "bridgePanel") to `window`, tabbed behind `tabWith`.
+QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileController *profiles,
+                           ParameterEditor *editor, QDockWidget *tabWith);
+
+} // namespace hatpic
