@@ -10,7 +10,6 @@ add_executable(hatpicctl
   hatpicctl/devicecommand.cpp hatpicctl/devicecommand.h
   hatpicctl/paramtext.cpp hatpicctl/paramtext.h
   hatpicctl/profileinput.cpp hatpicctl/profileinput.h
-  hatpicctl/sessiontext.cpp hatpicctl/sessiontext.h
   hatpicctl/curvetable.cpp hatpicctl/curvetable.h
   hatpicctl/portscommand.cpp
   hatpicctl/infocommand.cpp

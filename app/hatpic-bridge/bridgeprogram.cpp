@@ -1,5 +1,7 @@
 #include "bridgeprogram.h"
 
+#include "common/sessiontext.h"
+
 #include <QElapsedTimer>
 #include <QEventLoop>
 
@@ -52,10 +54,11 @@ QString BridgeProgram::start()
     return {};
 }
 
-void BridgeProgram::onStateChanged(SessionState state, const QString &detail)
+void BridgeProgram::onStateChanged(SessionState state, const StateDetail &event)
 {
     if (m_closing)
         return;
+    const QString detail = cli::stateDetailText(event);
     printLine(stderr, u"hatpic-bridge: " + sessionStateName(state) +
                           (detail.isEmpty() ? QString() : u": " + detail));
     if (state == SessionState::Connected)

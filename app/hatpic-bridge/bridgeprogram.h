@@ -32,7 +32,7 @@ public:
     void shutdown();
 
 private:
-    void onStateChanged(SessionState state, const QString &detail);
+    void onStateChanged(SessionState state, const StateDetail &detail);
     void onConnected();
     void printStats();
 

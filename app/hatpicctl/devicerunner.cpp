@@ -2,7 +2,7 @@
 
 #include "console.h"
 #include "exitcode.h"
-#include "sessiontext.h"
+#include "common/sessiontext.h"
 
 #include "model/params.h"
 #include "telemetry/numbertext.h"

@@ -4,7 +4,7 @@
 #include "devicecommand.h"
 #include "devicerunner.h"
 #include "exitcode.h"
-#include "sessiontext.h"
+#include "common/sessiontext.h"
 
 #include "telemetry/recording.h"
 #include "telemetry/samplecolumns.h"

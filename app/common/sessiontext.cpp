@@ -1,4 +1,4 @@
-#include "sessiontext.h"
+#include "common/sessiontext.h"
 
 #include <QStringBuilder>
 
