@@ -21,7 +21,7 @@ add_executable(hatpicctl
   hatpicctl/curvecommand.cpp
   hatpicctl/simulatecommand.cpp
   hatpicctl/validatecommand.cpp)
-target_link_libraries(hatpicctl PRIVATE hatpic::core hatpic::build_settings)
+target_link_libraries(hatpicctl PRIVATE hatpic::core hatpic_appcommon hatpic::build_settings)
 target_compile_definitions(hatpicctl PRIVATE HATPIC_VERSION="${PROJECT_VERSION}")
 set_target_properties(hatpicctl PROPERTIES AUTOMOC ON)
 install(TARGETS hatpicctl RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
