@@ -1,5 +1,6 @@
-// The command-line programs' words (hatpicctl, hatpic-bridge) for what the device session reports in codes and numbers: the state's
-// detail, a command's failure and the session's notices. One sentence each, as printed.
+// The command-line programs' words (hatpicctl, hatpic-bridge) for what the device session reports
+// in codes and numbers: the state's detail, a command's failure and the session's notices. One
+// sentence each, as printed.
 #pragma once
 
 #include "session/sessiontypes.h"

@@ -1,8 +1,8 @@
 #include "devicerunner.h"
 
+#include "common/sessiontext.h"
 #include "console.h"
 #include "exitcode.h"
-#include "common/sessiontext.h"
 
 #include "model/params.h"
 #include "telemetry/numbertext.h"

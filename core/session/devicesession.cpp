@@ -84,6 +84,7 @@ void DeviceSession::disconnectDevice()
     const bool wasActive = m_wanted || m_link || m_state != SessionState::Disconnected;
     m_wanted = false;
     m_reconnectTimer.stop();
+    m_samples.flush(); // every sample received reaches samplesReady (and the recording)
     m_samples.stopRecording();
     m_queue.failAll(Reason::Disconnected);
     closeLink();

@@ -6,6 +6,7 @@
 
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QScrollArea>
 
 namespace hatpic {
 
@@ -16,8 +17,14 @@ QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileCon
     panel->setObjectName(QStringLiteral("bridgePanel"));
     auto *dock = new QDockWidget(QObject::tr("Bridge"), window);
     dock->setObjectName(QStringLiteral("bridgeDock"));
-    dock->setWidget(panel);
-    window->addDockWidget(Qt::RightDockWidgetArea, dock);
+    // Scrolled, so that its many fields never set the window's minimum height (the window fits
+    // a 1280×720 screen).
+    auto *scroll = new QScrollArea(dock);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(panel);
+    dock->setWidget(scroll);
+    window->addDockWidget(Qt::BottomDockWidgetArea, dock);
     if (tabWith)
         window->tabifyDockWidget(tabWith, dock);
 

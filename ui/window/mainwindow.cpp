@@ -161,7 +161,10 @@ void MainWindow::createDocks()
         makeDock(tr("Device log"), QStringLiteral("logDock"), m_log, Qt::BottomDockWidgetArea);
     m_logDock->hide();
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea); // the hand's dock: plots only
-    m_bridgeDock = addBridgeDock(this, m_client, m_profiles, m_editor, m_simDock);
+    // The robot bridge is opened from View → Bridge, beside the device log: never in front of
+    // the hand, which must stay in sight with the stiffness view.
+    m_bridgeDock = addBridgeDock(this, m_client, m_profiles, m_editor, m_logDock);
+    m_bridgeDock->hide();
     // As wide as the editor wants (within reason): its rows are long.
     resizeDocks({m_editorDock}, {std::clamp(m_editor->sizeHint().width() + 24, 420, 600)},
                 Qt::Horizontal);

@@ -101,7 +101,8 @@ void TestLinkWidgets::banner_data()
     silent.port = cut.port;
     silent.silenceMs = 2000;
     QTest::newRow("lost: silent") << SessionState::Lost << silent
-                                  << QStringLiteral("stopped sending data") << QStringLiteral("2 s");
+                                  << QStringLiteral("stopped sending data")
+                                  << QStringLiteral("2 s");
     StateDetail open;
     open.kind = StateDetail::Kind::OpenFailed;
     open.port = cut.port;
@@ -109,8 +110,8 @@ void TestLinkWidgets::banner_data()
     QTest::newRow("failed to open") << SessionState::Disconnected << open
                                     << QStringLiteral("Could not open /dev/ttyUSB0") << open.error;
     StateDetail none;
-    QTest::newRow("user disconnected") << SessionState::Disconnected << none << QString()
-                                       << QString();
+    QTest::newRow("user disconnected")
+        << SessionState::Disconnected << none << QString() << QString();
     StateDetail connected;
     connected.kind = StateDetail::Kind::ConnectedV2;
     QTest::newRow("connected") << SessionState::Connected << connected << QString() << QString();
