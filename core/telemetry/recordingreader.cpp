@@ -182,8 +182,14 @@ void applyMetadata(const QByteArray &text, const QString &fileName, Recording &r
                      m.params, problems, nullptr);
     readHostParams(params.value(u"host").toObject(), QStringLiteral("parameters.host."), m.host,
                    problems, nullptr);
-    for (const QString &problem : std::as_const(problems))
-        warnings << fileName % u": " % problem % u"; the default is used.";
+    // Bounded: the first few are named, the rest counted in one line.
+    constexpr qsizetype kNamedProblems = 3;
+    for (qsizetype i = 0; i < std::min(problems.size(), kNamedProblems); ++i)
+        warnings << fileName % u": " % problems.at(i) % u"; the default is used.";
+    if (problems.size() > kNamedProblems) {
+        warnings << fileName % u": " % QString::number(problems.size() - kNamedProblems) %
+                        u" more parameters missing or not numbers; their defaults are used.";
+    }
     rec.hasMetadata = true;
 
     // Events the CSV lost (e.g. a cut-off last line) are taken from the metadata. The CSV's
