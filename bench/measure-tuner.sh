@@ -33,4 +33,4 @@ xvfb-run -a -s "-screen 0 1400x900x24" sh -c '
     awk -v a="$start" -v b="$end" -v hz="$hz" -v s="$seconds" \
         "BEGIN { printf \"CPU: %.1f s in %d s = %.1f %% of one core\n\", (b-a)/hz, s, 100*(b-a)/hz/s }"
 ' sh "$build/app/hatpic-tuner" "$seconds" "$tmp/log" "$warmup" "$@"
-grep "repaint rate" "$tmp/log" | tail -n 6 | sed 's/^.*repaint rate/repaint rate/'
+grep -E "repaint rate|latency arrival" "$tmp/log" | tail -n 8 | sed -E "s/^.*(repaint rate|latency arrival)/\1/"

@@ -109,7 +109,12 @@ private:
     SampleBuilder &builder() override { return m_samples.builder(); }
     LinkStatistics &statistics() override { return m_statistics; }
     qint64 hostUs() const override { return m_clock.nsecsElapsed() / 1000; }
-    void pushSample(const Sample &sample) override { m_samples.push(sample); }
+    void pushSample(const Sample &sample) override
+    {
+        Sample stamped = sample;
+        stamped.arrival_ns = sampleClockNs();
+        m_samples.push(stamped);
+    }
     void applyEffect(CommandKind kind, const DeviceParams &params) override
     {
         m_samples.applyEffect(kind, params);

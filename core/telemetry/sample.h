@@ -5,6 +5,8 @@
 #include <QMetaType>
 #include <QtGlobal>
 
+#include <chrono>
+
 namespace hatpic {
 
 //! Host-side flag bits, above the device's 8 telemetry flag bits (v2::kFlag*).
@@ -25,9 +27,20 @@ struct Sample
     double v_ref = 0;     //!< reference velocity [m/s or rad/s]
     double p_ref = 0;     //!< reference position [m or rad]
     quint16 flags = 0;    //!< device flags (low byte) | host flags (kFlag*)
+    //! When the frame that carried it was decoded, on sampleClockNs(); 0 when not known
+    //! (replay, offline simulation). Not recorded: it measures the host, not the knob [ns].
+    qint64 arrival_ns = 0;
 };
 
 using SampleBatch = QList<Sample>;
+
+//! The host's steady clock that Sample::arrival_ns is read from [ns].
+inline qint64 sampleClockNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
 } // namespace hatpic
 

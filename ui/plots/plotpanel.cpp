@@ -339,6 +339,10 @@ void PlotPanel::repaintIfNeeded()
     clock.start();
     if (m_dataDirty)
         rebuildData();
+    if (followsLatest())
+        m_latency.drawn(); // every live sample arrived so far is in this frame
+    else
+        m_latency.discard(); // paused: they are not shown
     m_stats.lastDecimateMs = clock.nsecsElapsed() / 1e6;
     if (m_autoscale)
         m_frame->autoscale(m_ranges, m_units, m_bandsVisible ? m_params : std::nullopt);
@@ -462,6 +466,8 @@ qsizetype PlotPanel::exportCsv(const QString &path, QString *error) const
 
 bool PlotPanel::eventFilter(QObject *watched, QEvent *event)
 {
+    if (watched == m_plot && event->type() == QEvent::Paint)
+        m_latency.painted(sampleClockNs());
     if (watched == m_plot && event->type() == QEvent::Leave)
         setCursorTime(std::nullopt);
     return QWidget::eventFilter(watched, event);
@@ -476,6 +482,13 @@ void PlotPanel::logRate()
     qCDebug(lcPlots).nospace() << "repaint rate " << rate << " Hz; last decimate "
                                << m_stats.lastDecimateMs << " ms, replot " << m_stats.lastReplotMs
                                << " ms, " << m_stats.lastPoints << " points";
+    const LatencyProbe::Summary latency = m_latency.summary();
+    if (latency.count > 0)
+        qCDebug(lcPlots).nospace()
+            << "latency arrival to frame: median " << latency.medianMs << " ms, p95 "
+            << latency.p95Ms << " ms, max " << latency.maxMs << " ms over " << latency.count
+            << " samples (" << latency.dropped << " not shown)";
+    m_latency.resetSummary();
     m_rateReplots = m_stats.replots;
     m_rateClock.restart();
 }

@@ -12,6 +12,7 @@
 #include "plots/channel.h"
 #include "plots/decimator.h"
 #include "plots/displayunits.h"
+#include "plots/latencyprobe.h"
 #include "plots/plotframe.h"
 #include "plots/samplebuffer.h"
 #include "telemetry/recording.h"
@@ -113,6 +114,10 @@ public:
     void setRepaintRate(double hz);
     double repaintRate() const;
     RepaintStats repaintStats() const { return m_stats; }
+    //! Live samples arrived (they wait for the frame that shows them: the latency probe).
+    void noteArrivals(const SampleBatch &batch) { m_latency.arrived(batch); }
+    //! Arrival → painted frame, since the last rate log line (every 5 s) [ms].
+    LatencyProbe::Summary latency() const { return m_latency.summary(); }
     //! Points currently drawn for a channel (after decimation).
     qsizetype pointCount(Channel channel) const;
     //! Repaints now if anything changed (what the timer does).
@@ -179,6 +184,7 @@ private:
     QSize m_laidOutSize; //!< widget size at the last replot (when the rects were laid out)
 
     RepaintStats m_stats;
+    LatencyProbe m_latency;
     QElapsedTimer m_rateClock;
     quint64 m_rateReplots = 0;
 };

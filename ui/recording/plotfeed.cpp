@@ -38,6 +38,7 @@ void PlotFeed::appendLive(const SampleBatch &batch)
         return;
     m_live.append(batch);
     if (!isReplaying()) {
+        m_plots->noteArrivals(batch);
         const Sample &last = batch.constLast();
         Q_EMIT operatingPoint(last.theta, last.tau_rec);
     }

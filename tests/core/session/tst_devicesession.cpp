@@ -252,10 +252,15 @@ void TestDeviceSession::v2SamplesAreComplete()
     h.session.connectDevice(o);
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() >= 500, kConnectTimeoutMs);
     double lastT = -1;
+    qint64 lastArrival = 0;
     bool moved = false;
     for (const Sample &s : std::as_const(h.samples)) {
         QVERIFY2(s.t_s >= lastT, "t_s must not go back");
         lastT = s.t_s;
+        // Stamped when decoded, on the host's steady clock (the plots' latency probe).
+        QVERIFY(s.arrival_ns > 0 && s.arrival_ns >= lastArrival);
+        QVERIFY(s.arrival_ns <= sampleClockNs());
+        lastArrival = s.arrival_ns;
         for (double v :
              {s.theta, s.omega, s.tau, s.tau_rec, s.tau_ext, s.tau_total, s.v_ref, s.p_ref})
             QVERIFY(std::isfinite(v));
