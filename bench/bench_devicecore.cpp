@@ -9,6 +9,7 @@
 //           against a servo that answers from canned registers (no bus time);
 //   params: one parameter change (the coefficients computed in double).
 // Prints ns of CPU time per operation (best of 5 runs, bench/benchclock.h).
+#include "benchactuator.h"
 #include "benchclock.h"
 #include "devicecoretest.h"
 
@@ -26,40 +27,17 @@ using namespace devicecoretest;
 
 namespace {
 
-template<typename T> class Replay : public fw::Actuator<T>
+//! θ of the k-th cycle: a ramp over −0.1 … 0.099 rad, over and over.
+double angleAt(std::size_t k)
 {
-public:
-    bool start(T &theta) override
-    {
-        theta = T(0);
-        return true;
-    }
-    bool measure(fw::Measurement<T> &m) override
-    {
-        ++m_k;
-        m.theta = T((m_k % 200) * 1e-3 - 0.1);
-        m.omega = T(0.3);
-        m.tau = T(-0.02);
-        return true;
-    }
-    bool command(T theta, T omega) override
-    {
-        m_sink = theta + omega;
-        return true;
-    }
-    void disable() override {}
-    T sink() const { return m_sink; }
-
-private:
-    unsigned m_k = 0;
-    T m_sink{};
-};
+    return double(k % 200) * 1e-3 - 0.1;
+}
 
 using benchclock::bestNsPer;
 
 template<typename T> void measure(const char *name, long cycles)
 {
-    Replay<T> replay;
+    bench::CannedActuator<T, double (*)(std::size_t)> replay(angleAt);
     fw::Controller<T> controller({}, replay);
     controller.start(DeviceParams{}, 0);
     std::uint32_t now = 0;

@@ -14,6 +14,7 @@
 //           session thread runs for each frame.
 // The angles sweep the dead zone, the notch band and the outer zone. Prints ns of CPU time
 // per step (best of 5 runs).
+#include "benchactuator.h"
 #include "benchclock.h"
 
 #include "firmware/controller.h"
@@ -43,34 +44,11 @@ std::array<double, kAngles> angles()
     return a;
 }
 
-template<typename T> class Replay : public fw::Actuator<T>
+//! θ of the k-th cycle: the sweep of angles(), over and over.
+struct AngleAt
 {
-public:
-    explicit Replay(const std::array<double, kAngles> &theta) : m_theta(theta) {}
-    bool start(T &theta) override
-    {
-        theta = T(0);
-        return true;
-    }
-    bool measure(fw::Measurement<T> &m) override
-    {
-        m.theta = T(m_theta[m_k++ % kAngles]);
-        m.omega = T(0.3);
-        m.tau = T(-0.02);
-        return true;
-    }
-    bool command(T theta, T omega) override
-    {
-        m_sink = theta + omega;
-        return true;
-    }
-    void disable() override {}
-    T sink() const { return m_sink; }
-
-private:
-    const std::array<double, kAngles> &m_theta;
-    std::size_t m_k = 0;
-    T m_sink{};
+    const std::array<double, kAngles> *theta;
+    double operator()(std::size_t k) const { return (*theta)[k % kAngles]; }
 };
 
 double g_sink = 0; //!< keeps results alive
@@ -95,7 +73,7 @@ template<typename T> double precomputed(const std::array<double, kAngles> &theta
 
 template<typename T> double deviceCycle(const std::array<double, kAngles> &theta, long steps)
 {
-    Replay<T> replay(theta);
+    bench::CannedActuator<T, AngleAt> replay(AngleAt{&theta});
     fw::Controller<T> controller({}, replay);
     controller.start(DeviceParams{}, 0);
     std::uint32_t now = 0;
