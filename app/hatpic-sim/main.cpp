@@ -216,8 +216,16 @@ int main(int argc, char *argv[])
                  options->config.throttle ? "" : " (not throttled)");
 
     auto printFaults = [&host, &options] {
-        if (const FaultInjector *faults = host.faults())
+        if (const FaultInjector *faults = host.faults()) {
             printFaultReport("hatpic-sim", *faults, options->config.seed);
+            // Losses that are not faults: the device's transmit queue was full (the simulator
+            // fell behind real time), or the pty was (nobody read for a long while).
+            std::fprintf(
+                stderr, "hatpic-sim:   not sent: telemetry_dropped=%llu pty_discarded_bytes=%llu\n",
+                static_cast<unsigned long long>(host.device().telemetryDropped()),
+                static_cast<unsigned long long>(host.bytesDiscarded()));
+            std::fflush(stderr);
+        }
     };
     if (host.faults() && !reportOnSignal(printFaults)) {
         printError(QStringLiteral("Cannot set up signal handling."));
