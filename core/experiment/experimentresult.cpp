@@ -58,7 +58,7 @@ void analyseStep(ExperimentResult &r)
 {
     const ExperimentPlan &plan = r.plan;
     const StepSeries measured =
-        stepSeries(plan, r.samples, r.deviceStart + plan.settle / 2, plan.settle);
+        stepSeries(plan, r.samples, r.clock.deviceTime(plan.settle / 2), plan.settle);
     if (measured.t.empty()) {
         r.problem = QStringLiteral("No step appears in the device's τ_ext column: the feedback "
                                    "did not reach the device.");
@@ -89,9 +89,10 @@ void analyseFrequency(ExperimentResult &r)
     QStringList missing;
     for (const SineSegment &segment : r.plan.segments()) {
         std::vector<double> t, u, y;
+        const double from = r.clock.deviceTime(segment.analyseFrom);
+        const double to = r.clock.deviceTime(segment.analyseTo + ExperimentPlan::kGuard / 2);
         for (const Sample &s : r.samples) {
-            const double p = s.t_s - r.deviceStart;
-            if (p >= segment.analyseFrom && p <= segment.analyseTo + ExperimentPlan::kGuard / 2) {
+            if (s.t_s >= from && s.t_s <= to) {
                 t.push_back(s.t_s);
                 u.push_back(s.tau_ext);
                 y.push_back(s.theta);
@@ -113,6 +114,26 @@ void analyseFrequency(ExperimentResult &r)
 
 } // namespace
 
+void ClockMap::add(double planTime, double offset)
+{
+    if (m_points.size() < kMaxPoints)
+        m_points.emplace_back(planTime, offset);
+}
+
+double ClockMap::deviceTime(double planTime) const
+{
+    double best = -std::numeric_limits<double>::infinity();
+    double overall = best;
+    for (const auto &[p, offset] : m_points) {
+        overall = std::max(overall, offset);
+        if (std::abs(p - planTime) <= kWindow)
+            best = std::max(best, offset);
+    }
+    if (m_points.empty())
+        return planTime;
+    return planTime + (std::isfinite(best) ? best : overall);
+}
+
 void spectraOf(const QList<Sample> &samples, analysis::Spectrum &theta, analysis::Spectrum &tau)
 {
     std::vector<double> t, th, ta;
@@ -127,7 +148,8 @@ void spectraOf(const QList<Sample> &samples, analysis::Spectrum &theta, analysis
 }
 
 ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sample> &samples,
-                                   double deviceStart, const DeviceParams &params, double tauLimit)
+                                   const ClockMap &clock, const DeviceParams &params,
+                                   double tauLimit)
 {
     ExperimentResult r;
     r.plan = plan;
@@ -137,7 +159,7 @@ ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sampl
     host.tau_limit = tauLimit;
     r.figures = deriveFigures(params, host);
     r.samples = samples;
-    r.deviceStart = deviceStart;
+    r.clock = clock;
     r.stepAt = r.idealStepAt = r.bandwidth = r.modelBandwidth = kNaN;
     std::vector<double> t;
     t.reserve(static_cast<std::size_t>(samples.size()));
@@ -153,8 +175,10 @@ ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sampl
         break;
     case ExperimentKind::Spectrum: {
         QList<Sample> window;
+        const double from = clock.deviceTime(plan.settle);
+        const double to = clock.deviceTime(plan.totalDuration());
         for (const Sample &s : samples) {
-            if (s.t_s >= deviceStart + plan.settle && s.t_s <= deviceStart + plan.totalDuration())
+            if (s.t_s >= from && s.t_s < to)
                 window.append(s);
         }
         spectraOf(window, r.thetaSpectrum, r.tauSpectrum);

@@ -18,6 +18,28 @@
 
 namespace hatpic {
 
+//! Device time for plan time, from the pairs (plan time, device time − plan time) the runner
+//! notes as batches arrive. A batch's newest sample was taken at most at its arrival, so each
+//! pair bounds the offset from below and the batch that came fastest bounds it best: the
+//! largest offset within kWindow of a plan time is used. Local, so a device clock that runs
+//! slower or faster than the host's (a starved simulator) is followed.
+class ClockMap
+{
+public:
+    static constexpr double kWindow = 0.5; //!< [s]
+    static constexpr std::size_t kMaxPoints = 100'000;
+
+    ClockMap() = default;
+    //! A device clock `offset` ahead of plan time, everywhere.
+    explicit ClockMap(double offset) { add(0, offset); }
+    void add(double planTime, double offset);
+    //! [s]; plan time when nothing was noted.
+    double deviceTime(double planTime) const;
+
+private:
+    std::vector<std::pair<double, double>> m_points; //!< (plan time, offset), ascending
+};
+
 struct ExperimentResult
 {
     enum class Outcome { Completed, Cancelled, Failed };
@@ -30,7 +52,7 @@ struct ExperimentResult
     double tauLimit = 0.44; //!< the device's torque limit [N·m]
     DerivedFigures figures; //!< the model's figures for `params`
     QList<Sample> samples;  //!< everything received during the run (device time)
-    double deviceStart = 0; //!< device time of plan time 0 (estimated) [s]
+    ClockMap clock;         //!< device time of plan time (estimated)
     double sampleRate = 0;  //!< measured telemetry rate [Hz]
 
     // Step
@@ -54,12 +76,13 @@ struct ExperimentResult
     bool completed() const { return outcome == Outcome::Completed; }
 };
 
-//! Analyses `samples` recorded while `plan` ran, plan time 0 being device time `deviceStart`:
+//! Analyses `samples` recorded while `plan` ran, `clock` mapping plan time to device time:
 //! the step's figures and fit (and the ideal model's run of the same plan), the frequency
 //! points, or the spectra. The result's outcome is Completed; `problem` names what could not
 //! be analysed (e.g. no step in the τ_ext column).
 ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sample> &samples,
-                                   double deviceStart, const DeviceParams &params, double tauLimit);
+                                   const ClockMap &clock, const DeviceParams &params,
+                                   double tauLimit);
 
 //! The spectra of θ and τ over samples (e.g. a plot's visible window); uniform spacing is
 //! assumed at the median rate.

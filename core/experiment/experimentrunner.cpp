@@ -63,7 +63,7 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
     m_params = params;
     m_tauLimit = tauLimit;
     m_samples.clear();
-    m_haveStart = false;
+    m_deviceClock = ClockMap();
     m_lastProgress = -1;
     m_phase = Phase::Running;
     m_clock.start();
@@ -107,16 +107,12 @@ void ExperimentRunner::onSamples(const QList<Sample> &batch)
 {
     if (!running() || batch.isEmpty())
         return;
-    // The batch's newest sample was taken at most now: its device time minus the plan time
-    // bounds the device time of plan time 0 from below; the batch that came fastest is best.
-    const double candidate = batch.last().t_s - elapsed();
-    if (!m_haveStart || candidate > m_deviceStart) {
-        m_deviceStart = candidate;
-        m_haveStart = true;
-    }
+    const double now = elapsed();
+    m_deviceClock.add(now, batch.last().t_s - now);
     const qsizetype room = kMaxSamples - m_samples.size();
     m_samples.append(batch.mid(0, std::min(room, batch.size())));
-    if (m_phase == Phase::Draining && batch.last().t_s >= m_deviceStart + m_plan.totalDuration())
+    if (m_phase == Phase::Draining &&
+        batch.last().t_s >= m_deviceClock.deviceTime(m_plan.totalDuration()))
         end(ExperimentResult::Outcome::Completed, {});
 }
 
@@ -130,13 +126,13 @@ void ExperimentRunner::end(ExperimentResult::Outcome outcome, const QString &pro
     m_phase = Phase::Idle;
     ExperimentResult result;
     if (outcome == ExperimentResult::Outcome::Completed) {
-        result = analyseExperiment(m_plan, m_samples, m_deviceStart, m_params, m_tauLimit);
+        result = analyseExperiment(m_plan, m_samples, m_deviceClock, m_params, m_tauLimit);
     } else {
         result.plan = m_plan;
         result.params = m_params;
         result.tauLimit = m_tauLimit;
         result.samples = m_samples;
-        result.deviceStart = m_deviceStart;
+        result.clock = m_deviceClock;
         result.problem = problem;
     }
     result.outcome = outcome;

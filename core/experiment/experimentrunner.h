@@ -59,8 +59,7 @@ private:
     DeviceParams m_params;
     double m_tauLimit = 0;
     QList<Sample> m_samples;
-    double m_deviceStart = 0; //!< max over batches of (device time − plan time) [s]
-    bool m_haveStart = false;
+    ClockMap m_deviceClock;  //!< plan time → device time, from the batches' arrivals
     int m_lastProgress = -1; //!< percent last reported
 };
 

@@ -25,6 +25,7 @@ private Q_SLOTS:
     void idealSinesGiveTheModelGain();
     void stepMissingFromTheSamplesIsAProblem();
     void spectrumOfAnIdealKnobAtRest();
+    void clockMapFollowsTheFastestBatches();
 };
 
 void TestExperimentPlan::stepDefaultsStayInTheNotchBand()
@@ -174,7 +175,7 @@ void TestExperimentPlan::idealStepGivesTheModelFigures()
     QList<Sample> shifted = samples;
     for (Sample &s : shifted)
         s.t_s += 12.5;
-    const ExperimentResult r = analyseExperiment(plan, shifted, 12.5, p, 0.44);
+    const ExperimentResult r = analyseExperiment(plan, shifted, ClockMap(12.5), p, 0.44);
     QVERIFY2(r.problem.isEmpty(), qPrintable(r.problem));
     // The step shows on the first control step at or after the settle time.
     QVERIFY(r.stepAt - 12.5 - plan.settle > -1e-9 && r.stepAt - 12.5 - plan.settle < 1e-3 + 1e-9);
@@ -199,7 +200,7 @@ void TestExperimentPlan::idealSinesGiveTheModelGain()
     plan.frequencies = {2, 6, 10, 20};
     plan.cycles = 3;
     const QList<Sample> samples = idealResponse(plan, p, 0.44, 1000);
-    const ExperimentResult r = analyseExperiment(plan, samples, 0, p, 0.44);
+    const ExperimentResult r = analyseExperiment(plan, samples, ClockMap(0), p, 0.44);
     QVERIFY2(r.problem.isEmpty(), qPrintable(r.problem));
     QCOMPARE(r.points.size(), std::size_t(4));
     for (const auto &point : r.points) {
@@ -220,7 +221,7 @@ void TestExperimentPlan::stepMissingFromTheSamplesIsAProblem()
     QList<Sample> flat(500);
     for (qsizetype i = 0; i < flat.size(); ++i)
         flat[i].t_s = i * 1e-3;
-    const ExperimentResult r = analyseExperiment(plan, flat, 0, p, 0.44);
+    const ExperimentResult r = analyseExperiment(plan, flat, ClockMap(0), p, 0.44);
     QCOMPARE(r.problem, QStringLiteral("No step appears in the device's τ_ext column: the feedback "
                                        "did not reach the device."));
     QVERIFY(!r.fitMeasured.ok);
@@ -237,11 +238,33 @@ void TestExperimentPlan::spectrumOfAnIdealKnobAtRest()
         s.tau = 0.002 * std::sin(2 * std::numbers::pi * 125 * s.t_s);
         samples.append(s);
     }
-    const ExperimentResult r = analyseExperiment(plan, samples, 0, {}, 0.44);
+    const ExperimentResult r = analyseExperiment(plan, samples, ClockMap(0), {}, 0.44);
     QVERIFY(r.problem.isEmpty());
     QVERIFY(std::abs(analysis::dominantPeak(r.thetaSpectrum).frequency - 40) < 1e-6);
     QVERIFY(std::abs(analysis::dominantPeak(r.tauSpectrum).frequency - 125) < 1e-6);
     QVERIFY(std::abs(analysis::dominantPeak(r.thetaSpectrum).magnitudeDb + 40) < 0.1);
+}
+
+void TestExperimentPlan::clockMapFollowsTheFastestBatches()
+{
+    QCOMPARE(ClockMap().deviceTime(2.0), 2.0); // nothing noted: plan time
+    ClockMap map;
+    // A device clock 100 s ahead that runs 1 % slow; batches arrive 5 to 25 ms late, every
+    // 50 ms, the fastest every fifth.
+    for (int i = 0; i < 200; ++i) {
+        const double p = i * 0.05;
+        const double latency = i % 5 == 0 ? 0.005 : 0.025;
+        map.add(p, 100 - 0.01 * p - latency);
+    }
+    for (double p : {0.5, 3.0, 7.5}) {
+        const double truth = p + 100 - 0.01 * p;
+        // Off by at most the fastest latency (late) or the drift over the window (early); one
+        // offset for the whole run would be 75 ms off at 7.5 s.
+        QVERIFY2(std::abs(map.deviceTime(p) - truth) <= 0.005 + 1e-9,
+                 qPrintable(QString::number(map.deviceTime(p) - truth)));
+    }
+    // Beyond every noted point: the best offset of all.
+    QVERIFY(std::abs(map.deviceTime(50) - (50 + 100 - 0.005)) < 1e-9);
 }
 
 QTEST_APPLESS_MAIN(TestExperimentPlan)
