@@ -8,7 +8,7 @@
 namespace hatpic {
 
 ExperimentRunner::ExperimentRunner(DeviceClient &client, QObject *parent)
-    : QObject(parent), m_client(client)
+    : QObject(parent), m_client(&client)
 {
     qRegisterMetaType<ExperimentResult>();
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -28,8 +28,8 @@ ExperimentRunner::ExperimentRunner(DeviceClient &client, QObject *parent)
 
 ExperimentRunner::~ExperimentRunner()
 {
-    if (running())
-        m_client.setFeedback(0);
+    if (running() && m_client)
+        m_client->setFeedback(0);
 }
 
 QString ExperimentRunner::refusal(const DeviceClient &client)
@@ -50,13 +50,15 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
 {
     if (running())
         return QStringLiteral("An experiment is already running.");
-    if (QString why = refusal(m_client); !why.isEmpty())
+    if (!m_client)
+        return QStringLiteral("No device is connected.");
+    if (QString why = refusal(*m_client); !why.isEmpty())
         return why;
-    const DeviceParams params = m_client.deviceParams();
+    const DeviceParams params = m_client->deviceParams();
     if (plan.kind != ExperimentKind::Spectrum && !(params.K_max > 0))
         return QStringLiteral("The knob has no re-centering stiffness (K_max = 0), so it has no "
                               "second-order response to measure.");
-    const double tauLimit = m_client.deviceInfo().tauLimit;
+    const double tauLimit = m_client->deviceInfo().tauLimit;
     if (QString why = plan.check(tauLimit); !why.isEmpty())
         return why;
     m_plan = plan;
@@ -67,7 +69,7 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
     m_lastProgress = -1;
     m_phase = Phase::Running;
     m_clock.start();
-    m_client.setFeedback(m_plan.tauExt(0));
+    m_client->setFeedback(m_plan.tauExt(0));
     m_timer.start();
     return {};
 }
@@ -85,17 +87,22 @@ double ExperimentRunner::elapsed() const
 
 void ExperimentRunner::tick()
 {
+    if (!m_client) {
+        end(ExperimentResult::Outcome::Failed, QStringLiteral("The device was closed."));
+        return;
+    }
     const double t = elapsed();
     if (t >= m_plan.totalDuration()) {
         // The plan is over: τ_ext back to 0 at once, then wait for its last samples.
         m_timer.stop();
-        m_client.setFeedback(0);
+        if (m_client)
+            m_client->setFeedback(0);
         m_phase = Phase::Draining;
         m_drainTimer.start();
         Q_EMIT progress(1.0);
         return;
     }
-    m_client.setFeedback(m_plan.tauExt(t));
+    m_client->setFeedback(m_plan.tauExt(t));
     const int percent = static_cast<int>(100 * t / m_plan.totalDuration());
     if (percent != m_lastProgress) {
         m_lastProgress = percent;
@@ -122,7 +129,8 @@ void ExperimentRunner::end(ExperimentResult::Outcome outcome, const QString &pro
         return;
     m_timer.stop();
     m_drainTimer.stop();
-    m_client.setFeedback(0);
+    if (m_client)
+        m_client->setFeedback(0);
     m_phase = Phase::Idle;
     ExperimentResult result;
     if (outcome == ExperimentResult::Outcome::Completed) {

@@ -6,14 +6,14 @@
 #pragma once
 
 #include "experiment/experimentresult.h"
+#include "session/deviceclient.h"
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
 
 namespace hatpic {
-
-class DeviceClient;
 
 class ExperimentRunner : public QObject
 {
@@ -50,7 +50,7 @@ private:
     void end(ExperimentResult::Outcome outcome, const QString &problem);
     double elapsed() const; //!< plan time [s]
 
-    DeviceClient &m_client;
+    QPointer<DeviceClient> m_client; //!< null once the client is gone
     QTimer m_timer;
     QTimer m_drainTimer;
     QElapsedTimer m_clock;
