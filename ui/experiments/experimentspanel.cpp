@@ -59,7 +59,7 @@ ExperimentsPanel::ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidg
         if (!running() && !m_result)
             fillDefaults();
     });
-    fillDefaults();
+    onKindChanged(); // enables the kind's fields and fills its defaults
     updateButtons();
 }
 
