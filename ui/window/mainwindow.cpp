@@ -11,6 +11,7 @@
 #include "editor/profilecontroller.h"
 #include "editor/simulatorpanel.h"
 #include "editor/stiffnessview.h"
+#include "experiments/experimentspanel.h"
 #include "plots/plotactions.h"
 #include "plots/plotpanel.h"
 #include "recording/plotfeed.h"
@@ -165,6 +166,13 @@ void MainWindow::createDocks()
     // the hand, which must stay in sight with the stiffness view.
     m_bridgeDock = addBridgeDock(this, m_client, m_profiles, m_editor, m_logDock);
     m_bridgeDock->hide();
+    // Tuning experiments (docs/experiments.md): View → Experiments, beside the device log.
+    auto *experimentsPanel = new ExperimentsPanel(m_client, m_plots, this);
+    experimentsPanel->setObjectName(QStringLiteral("experimentsPanel"));
+    QDockWidget *experiments = makeDock(tr("Experiments"), QStringLiteral("experimentsDock"),
+                                        experimentsPanel, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(m_logDock, experiments);
+    experiments->hide();
     // As wide as the editor wants (within reason): its rows are long.
     resizeDocks({m_editorDock}, {std::clamp(m_editor->sizeHint().width() + 24, 420, 600)},
                 Qt::Horizontal);
@@ -172,6 +180,7 @@ void MainWindow::createDocks()
 
     for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_bridgeDock, m_logDock})
         m_viewMenu->addAction(dock->toggleViewAction());
+    m_viewMenu->addAction(experiments->toggleViewAction());
 }
 
 void MainWindow::connectParts()

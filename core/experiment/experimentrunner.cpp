@@ -1,0 +1,151 @@
+#include "experimentrunner.h"
+
+#include "session/deviceclient.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hatpic {
+
+ExperimentRunner::ExperimentRunner(DeviceClient &client, QObject *parent)
+    : QObject(parent), m_client(&client)
+{
+    qRegisterMetaType<ExperimentResult>();
+    m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setInterval(kTickMs);
+    connect(&m_timer, &QTimer::timeout, this, &ExperimentRunner::tick);
+    m_drainTimer.setSingleShot(true);
+    m_drainTimer.setInterval(kDrainTimeoutMs);
+    connect(&m_drainTimer, &QTimer::timeout, this,
+            [this] { end(ExperimentResult::Outcome::Completed, {}); });
+    connect(&client, &DeviceClient::samplesReady, this, &ExperimentRunner::onSamples);
+    connect(&client, &DeviceClient::stateChanged, this, [this](SessionState state) {
+        if (running() && state != SessionState::Connected)
+            end(ExperimentResult::Outcome::Failed,
+                QStringLiteral("The device was lost during the experiment."));
+    });
+}
+
+ExperimentRunner::~ExperimentRunner()
+{
+    if (running() && m_client)
+        m_client->setFeedback(0);
+}
+
+QString ExperimentRunner::refusal(const DeviceClient &client)
+{
+    if (client.state() != SessionState::Connected)
+        return QStringLiteral("No device is connected.");
+    if (client.deviceInfo().protocol == WireProtocol::Legacy)
+        return QStringLiteral(
+            "Experiments need a protocol v2 device: the legacy firmware has no telemetry rate to "
+            "ask for (it streams at its own few hertz) and reports no τ_ext, too little to "
+            "measure a response.");
+    if (!client.hasDeviceParams())
+        return QStringLiteral("The device's parameters have not been read yet.");
+    return {};
+}
+
+QString ExperimentRunner::start(const ExperimentPlan &plan)
+{
+    if (running())
+        return QStringLiteral("An experiment is already running.");
+    if (!m_client)
+        return QStringLiteral("No device is connected.");
+    if (QString why = refusal(*m_client); !why.isEmpty())
+        return why;
+    const DeviceParams params = m_client->deviceParams();
+    if (plan.kind != ExperimentKind::Spectrum && !(params.K_max > 0))
+        return QStringLiteral("The knob has no re-centering stiffness (K_max = 0), so it has no "
+                              "second-order response to measure.");
+    const double tauLimit = m_client->deviceInfo().tauLimit;
+    if (QString why = plan.check(tauLimit); !why.isEmpty())
+        return why;
+    m_plan = plan;
+    m_params = params;
+    m_tauLimit = tauLimit;
+    m_samples.clear();
+    m_deviceClock = ClockMap();
+    m_lastProgress = -1;
+    m_phase = Phase::Running;
+    m_clock.start();
+    m_client->setFeedback(m_plan.tauExt(0));
+    m_timer.start();
+    return {};
+}
+
+void ExperimentRunner::cancel()
+{
+    if (running())
+        end(ExperimentResult::Outcome::Cancelled, QStringLiteral("The experiment was cancelled."));
+}
+
+double ExperimentRunner::elapsed() const
+{
+    return static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+}
+
+void ExperimentRunner::tick()
+{
+    if (!m_client) {
+        end(ExperimentResult::Outcome::Failed, QStringLiteral("The device was closed."));
+        return;
+    }
+    const double t = elapsed();
+    if (t >= m_plan.totalDuration()) {
+        // The plan is over: τ_ext back to 0 at once, then wait for its last samples.
+        m_timer.stop();
+        if (m_client)
+            m_client->setFeedback(0);
+        m_phase = Phase::Draining;
+        m_drainTimer.start();
+        Q_EMIT progress(1.0);
+        return;
+    }
+    m_client->setFeedback(m_plan.tauExt(t));
+    const int percent = static_cast<int>(100 * t / m_plan.totalDuration());
+    if (percent != m_lastProgress) {
+        m_lastProgress = percent;
+        Q_EMIT progress(percent / 100.0);
+    }
+}
+
+void ExperimentRunner::onSamples(const QList<Sample> &batch)
+{
+    if (!running() || batch.isEmpty())
+        return;
+    const double now = elapsed();
+    m_deviceClock.add(now, batch.last().t_s - now);
+    const qsizetype room = kMaxSamples - m_samples.size();
+    m_samples.append(batch.mid(0, std::min(room, batch.size())));
+    if (m_phase == Phase::Draining &&
+        batch.last().t_s >= m_deviceClock.deviceTime(m_plan.totalDuration()))
+        end(ExperimentResult::Outcome::Completed, {});
+}
+
+void ExperimentRunner::end(ExperimentResult::Outcome outcome, const QString &problem)
+{
+    if (!running())
+        return;
+    m_timer.stop();
+    m_drainTimer.stop();
+    if (m_client)
+        m_client->setFeedback(0);
+    m_phase = Phase::Idle;
+    ExperimentResult result;
+    if (outcome == ExperimentResult::Outcome::Completed) {
+        result = analyseExperiment(m_plan, m_samples, m_deviceClock, m_params, m_tauLimit);
+    } else {
+        result.plan = m_plan;
+        result.params = m_params;
+        result.tauLimit = m_tauLimit;
+        result.samples = m_samples;
+        result.clock = m_deviceClock;
+        result.problem = problem;
+    }
+    result.outcome = outcome;
+    m_samples.clear();
+    Q_EMIT finished(result);
+}
+
+} // namespace hatpic

@@ -1,0 +1,66 @@
+// Carries out an ExperimentPlan on a connected device through its DeviceClient: streams the
+// plan's τ_ext with SET_FEEDBACK, collects the samples, and analyses them. τ_ext goes back to
+// 0 whenever the run ends — completed, cancelled, failed or destroyed.
+//
+// Lives on the client's thread; every method returns at once.
+#pragma once
+
+#include "experiment/experimentresult.h"
+#include "session/deviceclient.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+namespace hatpic {
+
+class ExperimentRunner : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kTickMs = 1; //!< how often τ_ext is updated [ms]
+    //! Longest wait after the plan for its last samples to arrive [ms].
+    static constexpr int kDrainTimeoutMs = 1000;
+    //! Samples kept per run: the longest plan at 4 kHz; beyond it the newest are dropped.
+    static constexpr qsizetype kMaxSamples = 480'000;
+
+    explicit ExperimentRunner(DeviceClient &client, QObject *parent = nullptr);
+    ~ExperimentRunner() override; //!< a running experiment is cancelled: τ_ext = 0
+
+    //! Why no experiment can start on the client's device now; empty when one can.
+    static QString refusal(const DeviceClient &client);
+
+    //! Starts `plan`; returns why not (refusal(), the plan's check(), already running), or
+    //! empty when it started.
+    QString start(const ExperimentPlan &plan);
+    //! Stops a running experiment; finished() reports it Cancelled.
+    void cancel();
+    bool running() const { return m_phase != Phase::Idle; }
+
+Q_SIGNALS:
+    void progress(double fraction); //!< 0 … 1 of the plan
+    void finished(const hatpic::ExperimentResult &result);
+
+private:
+    enum class Phase { Idle, Running, Draining };
+
+    void tick();
+    void onSamples(const QList<Sample> &batch);
+    void end(ExperimentResult::Outcome outcome, const QString &problem);
+    double elapsed() const; //!< plan time [s]
+
+    QPointer<DeviceClient> m_client; //!< null once the client is gone
+    QTimer m_timer;
+    QTimer m_drainTimer;
+    QElapsedTimer m_clock;
+    Phase m_phase = Phase::Idle;
+    ExperimentPlan m_plan;
+    DeviceParams m_params;
+    double m_tauLimit = 0;
+    QList<Sample> m_samples;
+    ClockMap m_deviceClock;  //!< plan time → device time, from the batches' arrivals
+    int m_lastProgress = -1; //!< percent last reported
+};
+
+} // namespace hatpic

@@ -1,0 +1,266 @@
+// `hatpicctl experiment`, run as a real process against the in-process simulated joystick:
+// its usage errors, the three experiments' tables and CSV files, and the refusals.
+#include <QFile>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int kTimeoutMs = 60000;
+
+struct Outcome
+{
+    int exitCode = -1;
+    QString out;
+    QString err;
+    QString text() const
+    {
+        return u"exit %1\n--- stderr\n%2--- stdout\n%3"_s.arg(exitCode).arg(err, out.left(600));
+    }
+};
+
+Outcome hatpicctl(QStringList arguments)
+{
+    arguments.prepend(u"experiment"_s);
+    QProcess p;
+    p.start(QStringLiteral(HATPICCTL_PATH), arguments);
+    Outcome o;
+    if (p.waitForFinished(kTimeoutMs) && p.exitStatus() == QProcess::NormalExit)
+        o.exitCode = p.exitCode();
+    else
+        p.kill();
+    o.out = QString::fromUtf8(p.readAllStandardOutput());
+    o.err = QString::fromUtf8(p.readAllStandardError());
+    return o;
+}
+
+//! The measured and model columns of a table row that starts with `name`.
+std::pair<double, double> figures(const QString &table, const QString &name)
+{
+    const QRegularExpression re(u"^"_s + QRegularExpression::escape(name) +
+                                    u"\\s+(\\S+)\\s+(\\S+)\\s*$"_s,
+                                QRegularExpression::MultilineOption);
+    const auto m = re.match(table);
+    return m.hasMatch() ? std::pair{m.captured(1).toDouble(), m.captured(2).toDouble()}
+                        : std::pair{std::nan(""), std::nan("")};
+}
+
+QStringList csvLines(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QString::fromUtf8(f.readAll()).split(u'\n', Qt::SkipEmptyParts);
+}
+
+//! hatpic-sim on a pseudo-terminal with `arguments`; its first line of output is the
+//! terminal's path.
+class PtySimulator
+{
+public:
+    explicit PtySimulator(const QStringList &arguments)
+    {
+#ifdef HATPIC_SIM_PATH
+        m_process.start(QStringLiteral(HATPIC_SIM_PATH), arguments);
+        if (m_process.waitForStarted(kTimeoutMs)) {
+            while (!m_process.canReadLine() && m_process.waitForReadyRead(kTimeoutMs)) {
+            }
+            m_path = QString::fromUtf8(m_process.readLine()).trimmed();
+        }
+#else
+        Q_UNUSED(arguments);
+#endif
+    }
+    ~PtySimulator()
+    {
+        m_process.terminate();
+        if (!m_process.waitForFinished(kTimeoutMs))
+            m_process.kill();
+    }
+    QString path() const
+    {
+        return m_path;
+    }
+
+private:
+    QProcess m_process;
+    QString m_path;
+};
+
+} // namespace
+
+class TestHatpicCtlExperiment : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void help();
+    void badUsage_data();
+    void badUsage();
+    void stepOnTheSimulator();
+    void bodeOnTheSimulator();
+    void spectrumOnTheSimulator();
+    void spectrumOfAConstantKnob();
+    void refusesALegacyDevice();
+    void keepsAnExistingCsv();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestHatpicCtlExperiment::help()
+{
+    const Outcome o = hatpicctl({u"--help"_s});
+    QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
+    QVERIFY(o.out.startsWith(u"Usage: hatpicctl experiment"_s));
+    for (const QString &option : {u"--frequencies"_s, u"--from"_s, u"--csv"_s, u"--cycles"_s})
+        QVERIFY2(o.out.contains(option), qPrintable(option));
+}
+
+void TestHatpicCtlExperiment::badUsage_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("no kind") << QStringList{u"--port"_s, u"sim"_s} << u"Name one experiment"_s;
+    QTest::newRow("unknown kind") << QStringList{u"jump"_s, u"--port"_s, u"sim"_s}
+                                  << u"Name one experiment"_s;
+    QTest::newRow("two kinds") << QStringList{u"step"_s, u"bode"_s, u"--port"_s, u"sim"_s}
+                               << u"Name one experiment"_s;
+    QTest::newRow("bad number") << QStringList{u"step"_s, u"--port"_s, u"sim"_s, u"--to"_s, u"x"_s}
+                                << u"--to must be a number, got 'x'."_s;
+    QTest::newRow("bad frequency")
+        << QStringList{u"bode"_s, u"--port"_s, u"sim"_s, u"--frequencies"_s, u"3,fast"_s}
+        << u"--frequencies must list numbers of Hz separated by commas, got 'fast'."_s;
+    QTest::newRow("bad cycles") << QStringList{u"bode"_s, u"--port"_s, u"sim"_s, u"--cycles"_s,
+                                               u"2.5"_s}
+                                << u"--cycles must be a whole number, got '2.5'."_s;
+    // Checked against the device's torque limit once connected.
+    QTest::newRow("beyond the limit")
+        << QStringList{u"step"_s, u"--port"_s, u"sim"_s, u"--to"_s, u"0.5"_s}
+        << u"A step level must lie within the torque limit ±0.44 N·m, got 0.5 N·m."_s;
+    QTest::newRow("descending") << QStringList{u"bode"_s, u"--port"_s, u"sim"_s, u"--frequencies"_s,
+                                               u"5,3"_s}
+                                << u"The frequencies must ascend, each one above the last."_s;
+}
+
+void TestHatpicCtlExperiment::badUsage()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, error);
+    const Outcome o = hatpicctl(arguments);
+    QVERIFY2(o.exitCode == 4, qPrintable(o.text()));
+    QVERIFY2(o.err.trimmed().count(u'\n') == 0 && o.err.contains(error), qPrintable(o.text()));
+    QVERIFY(o.out.isEmpty());
+}
+
+void TestHatpicCtlExperiment::stepOnTheSimulator()
+{
+#ifndef HATPIC_SIM_PATH
+    QSKIP("hatpic-sim is not part of this build");
+#endif
+    // A knob the simulated servo follows closely: D_adm 2e-3, M_adm 0.04, K_max 0.4 give
+    // ω_n = 14.14 rad/s and ζ = 0.707 (docs/experiments.md, the tolerance).
+    const QString state = m_dir.filePath(u"slow.json"_s);
+    {
+        QFile f(state);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "hatpic-profile", "version": 1, "name": "Slow",
+  "device": {"D_adm": 0.002, "M_adm": 0.04, "K_min": 0.15, "K_max": 0.4, "N": 0.1,
+             "Q_dz": 0.02, "theta0": 0.0}})");
+    }
+    PtySimulator sim({u"--state"_s, state});
+    QVERIFY(!sim.path().isEmpty());
+    const QString csv = m_dir.filePath(u"step.csv"_s);
+    const Outcome o = hatpicctl({u"step"_s, u"--port"_s, sim.path(), u"--csv"_s, csv});
+    QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
+    QVERIFY(o.err.contains(u"keep hands off the knob"_s));
+    const auto [omegaN, omegaModel] = figures(o.out, u"omega_n [rad/s]"_s);
+    const auto [zeta, zetaModel] = figures(o.out, u"zeta"_s);
+    QCOMPARE(omegaModel, 14.14);
+    QCOMPARE(zetaModel, 0.707);
+    QVERIFY2(std::abs(omegaN / omegaModel - 1) < 0.1, qPrintable(o.text()));
+    QVERIFY2(std::abs(zeta / zetaModel - 1) < 0.1, qPrintable(o.text()));
+    for (const QString &row : {u"rise time [s]"_s, u"overshoot [%]"_s, u"settling time [s]"_s})
+        QVERIFY2(std::isfinite(figures(o.out, row).first), qPrintable(row));
+    const QStringList lines = csvLines(csv);
+    QVERIFY(lines.size() > 100);
+    QCOMPARE(lines.first(), u"t_s,theta,tau_ext,model_theta"_s);
+}
+
+void TestHatpicCtlExperiment::bodeOnTheSimulator()
+{
+    const QString csv = m_dir.filePath(u"bode.csv"_s);
+    const Outcome o = hatpicctl({u"bode"_s, u"--port"_s, u"sim"_s, u"--frequencies"_s, u"4,8,16"_s,
+                                 u"--cycles"_s, u"2"_s, u"--csv"_s, csv});
+    QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
+    QVERIFY(o.out.contains(u"bandwidth [Hz]"_s));
+    const QStringList lines = csvLines(csv);
+    QCOMPARE(lines.size(), 4);
+    QCOMPARE(lines.first(), u"frequency_hz,magnitude,phase,model_magnitude,model_phase"_s);
+    // At 4 Hz, well below the bandwidth, the measured gain is the model's within 1.5 dB.
+    const QStringList first = lines[1].split(u',');
+    QCOMPARE(first[0], u"4"_s);
+    QVERIFY2(std::abs(20 * std::log10(first[1].toDouble() / first[3].toDouble())) < 1.5,
+             qPrintable(lines[1]));
+}
+
+void TestHatpicCtlExperiment::spectrumOnTheSimulator()
+{
+#ifndef HATPIC_SIM_PATH
+    QSKIP("hatpic-sim is not part of this build");
+#endif
+    // hatpic-sim's knob dithers by a tick at rest and its load reading is noisy: both show.
+    PtySimulator sim({});
+    QVERIFY(!sim.path().isEmpty());
+    const Outcome o =
+        hatpicctl({u"spectrum"_s, u"--port"_s, sim.path(), u"--duration"_s, u"0.5"_s});
+    QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
+    QVERIFY2(o.out.contains(u"theta: strongest line"_s) && o.out.contains(u"tau: strongest line"_s),
+             qPrintable(o.text()));
+    QVERIFY2(o.out.startsWith(u"samples: 500 at 1000.0 Hz, resolution 2.000 Hz\n"_s),
+             qPrintable(o.text()));
+}
+
+void TestHatpicCtlExperiment::spectrumOfAConstantKnob()
+{
+    // The in-process simulator has no load noise: at rest nothing moves.
+    const Outcome o = hatpicctl({u"spectrum"_s, u"--port"_s, u"sim"_s, u"--duration"_s, u"0.5"_s});
+    QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
+    QVERIFY2(o.out.contains(u"theta: no line (the signal is constant)"_s), qPrintable(o.text()));
+}
+
+void TestHatpicCtlExperiment::refusesALegacyDevice()
+{
+#ifndef HATPIC_SIM_PATH
+    QSKIP("hatpic-sim is not part of this build");
+#endif
+    PtySimulator sim({u"--protocol"_s, u"legacy"_s});
+    QVERIFY(!sim.path().isEmpty());
+    const Outcome o = hatpicctl({u"step"_s, u"--port"_s, sim.path(), u"--protocol"_s, u"legacy"_s});
+    QVERIFY2(o.exitCode == 2, qPrintable(o.text()));
+    QVERIFY2(o.err.contains(u"Experiments need a protocol v2 device"_s), qPrintable(o.text()));
+    QVERIFY(o.out.isEmpty());
+}
+
+void TestHatpicCtlExperiment::keepsAnExistingCsv()
+{
+    const QString csv = m_dir.filePath(u"kept.csv"_s);
+    {
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("mine\n");
+    }
+    const Outcome o = hatpicctl({u"spectrum"_s, u"--port"_s, u"sim"_s, u"--csv"_s, csv});
+    QVERIFY2(o.exitCode == 4, qPrintable(o.text()));
+    QVERIFY(o.err.contains(u"add --force"_s));
+    QCOMPARE(csvLines(csv), QStringList{u"mine"_s});
+}
+
+QTEST_GUILESS_MAIN(TestHatpicCtlExperiment)
+#include "tst_hatpicctlexperiment.moc"

@@ -1,0 +1,254 @@
+// ExperimentRunner end to end: a DeviceClient on a real pseudo-terminal whose other side is the
+// simulated joystick with its real plant (servo lag, quantisation, load noise), hosted as
+// hatpic-sim hosts it (SimulatorHost). The measured figures must come out near the model's.
+#include "experiment/experimentrunner.h"
+#include "session/deviceclient.h"
+#include "sim/simulatorhost.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace hatpic;
+
+namespace {
+
+constexpr int kConnectMs = 5000;
+constexpr int kRunMs = 15000;
+constexpr double kHatpicSimNoise = 0.0005; //!< what hatpic-sim runs with [N·m]
+
+SimulatedDevice::Config deviceConfig(WireProtocol protocol = WireProtocol::V2)
+{
+    SimulatedDevice::Config c;
+    c.protocol = protocol;
+    c.noise = kHatpicSimNoise;
+    return c;
+}
+
+//! A simulated joystick on a pty and a connected client.
+struct Bench
+{
+    explicit Bench(WireProtocol protocol = WireProtocol::V2) : host(deviceConfig(protocol)) {}
+
+    bool connect()
+    {
+        if (const QString error = host.start(); !error.isEmpty()) {
+            qWarning("%s", qPrintable(error));
+            return false;
+        }
+        ConnectOptions o;
+        o.port = host.slavePath();
+        o.protocol = host.device().config().protocol == WireProtocol::V2 ? ProtocolChoice::V2
+                                                                         : ProtocolChoice::Legacy;
+        o.autoReconnect = false;
+        QObject::connect(&client, &DeviceClient::samplesReady,
+                         [this](const SampleBatch &b) { samples.append(b); });
+        client.connectDevice(o);
+        return QTest::qWaitFor([this] { return client.state() == SessionState::Connected; },
+                               kConnectMs);
+    }
+
+    //! Sends `params` and waits for the device's acknowledgement.
+    bool push(const DeviceParams &params)
+    {
+        QSignalSpy done(&client, &DeviceClient::commandFinished);
+        client.pushParams(params);
+        return done.wait(kConnectMs) && done.first().at(1).value<CommandResult>().ok();
+    }
+
+    SimulatorHost host;
+    DeviceClient client;
+    QList<Sample> samples;
+};
+
+ExperimentResult run(ExperimentRunner &runner, const ExperimentPlan &plan)
+{
+    QSignalSpy finished(&runner, &ExperimentRunner::finished);
+    const QString why = runner.start(plan);
+    if (!why.isEmpty())
+        qFatal("%s", qPrintable(why));
+    if (!finished.wait(kRunMs))
+        qFatal("the experiment did not finish");
+    return finished.first().first().value<ExperimentResult>();
+}
+
+} // namespace
+
+class TestExperimentRunner : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void stepRecoversTheModel_data();
+    void stepRecoversTheModel();
+    void bodeMatchesTheModelBelowTheBandwidth();
+    void spectrumShowsTheKnobAtRest();
+    void cancelRestoresZeroFeedback();
+    void lostDeviceFailsTheRun();
+    void refusesALegacyDevice();
+    void refusesWithoutADevice();
+};
+
+void TestExperimentRunner::stepRecoversTheModel_data()
+{
+    QTest::addColumn<double>("D");
+    QTest::addColumn<double>("M");
+    // ω_n = √(0.4/2e-3) = 14.1 rad/s, ζ = 0.04/(2·√(0.4·2e-3)) = 0.707: a knob well within
+    // what the servo follows (see the tolerance below).
+    QTest::newRow("slow knob") << 2e-3 << 4e-2;
+}
+
+void TestExperimentRunner::stepRecoversTheModel()
+{
+    QFETCH(double, D);
+    QFETCH(double, M);
+    Bench bench;
+    QVERIFY(bench.connect());
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    DeviceParams params = bench.client.deviceParams();
+    params.D_adm = D;
+    params.M_adm = M;
+    QVERIFY(bench.push(params));
+    ExperimentRunner runner(bench.client);
+    const ExperimentPlan plan = ExperimentPlan::defaults(ExperimentKind::Step, params);
+    const ExperimentResult r = run(runner, plan);
+    QVERIFY2(r.completed() && r.problem.isEmpty(), qPrintable(r.problem));
+    QVERIFY(r.fitMeasured.ok);
+    const double omegaN = r.fitMeasured.omegaN, zeta = r.fitMeasured.zeta;
+    qInfo("model ω_n %.2f rad/s ζ %.3f; measured ω_n %.2f rad/s ζ %.3f (rms %.2g rad); ideal "
+          "ω_n %.2f ζ %.3f; rise %.4f s overshoot %.3f settling %.4f s",
+          r.figures.omega_n, r.figures.zeta, omegaN, zeta, r.fitMeasured.rmsResidual,
+          r.fitIdeal.omegaN, r.fitIdeal.zeta, r.stepMeasured.riseTime, r.stepMeasured.overshoot,
+          r.stepMeasured.settlingTime);
+    // The tolerance, 10 %: the knob is a servo tracking the admittance's command, not the
+    // admittance itself. The simulated STS3032 follows it about 9 ms late, which makes the knob
+    // slower than the model by roughly 0.45 % per rad/s of ω_n (measured: −6 % at 14 rad/s,
+    // −8 % at 20, −13 % at 28, −30 % at the defaults' 63 rad/s; ζ within 3 % throughout;
+    // docs/experiments.md). The fit itself adds nothing measurable (the ideal model's run fits
+    // to 0.1 %). So on a knob the servo can follow, 10 % holds with a margin, and it is about
+    // what a user can tell apart from a deliberate change (20 % on D_adm moves ω_n by 10 %).
+    QVERIFY2(std::abs(omegaN / r.figures.omega_n - 1) < 0.10, qPrintable(QString::number(omegaN)));
+    QVERIFY2(std::abs(zeta / r.figures.zeta - 1) < 0.10, qPrintable(QString::number(zeta)));
+    QVERIFY(std::abs(r.fitIdeal.omegaN / r.figures.omega_n - 1) < 0.01);
+    QVERIFY(std::abs(r.fitIdeal.zeta / r.figures.zeta - 1) < 0.05);
+    // The model's gain: the step moves θ by Δτ/K_max.
+    QVERIFY(std::abs(r.fitMeasured.gain / ((plan.tauTo - plan.tauFrom) / params.K_max) - 1) < 0.1);
+    // When it ends, τ_ext is back to 0 on the device.
+    QTRY_VERIFY_WITH_TIMEOUT(!bench.samples.isEmpty() && bench.samples.last().tau_ext == 0,
+                             kConnectMs);
+}
+
+void TestExperimentRunner::bodeMatchesTheModelBelowTheBandwidth()
+{
+    Bench bench;
+    QVERIFY(bench.connect());
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    ExperimentRunner runner(bench.client);
+    const DeviceParams params = bench.client.deviceParams();
+    ExperimentPlan plan = ExperimentPlan::defaults(ExperimentKind::Frequency, params);
+    // Fewer, higher points than the defaults (which start at a tenth of the bandwidth), so
+    // the run stays short.
+    plan.frequencies = {3, 5, 8, 12, 18};
+    plan.cycles = 3;
+    const ExperimentResult r = run(runner, plan);
+    QVERIFY2(r.completed() && r.problem.isEmpty(), qPrintable(r.problem));
+    QCOMPARE(r.points.size(), std::size_t(5));
+    for (const analysis::FrequencyPoint &p : r.points) {
+        const std::complex<double> model = analysis::modelGain(params, p.frequency);
+        qInfo("%5.1f Hz: measured %.3f rad/Nm %.1f°, model %.3f rad/Nm %.1f°", p.frequency,
+              p.magnitude, p.phase * 180 / std::numbers::pi, std::abs(model),
+              std::arg(model) * 180 / std::numbers::pi);
+        // Below the bandwidth the magnitude is within 1.5 dB (19 %) of the model's: the
+        // servo's lag adds phase and a little gain near ω_n, the ticks and the noise a little
+        // error on the small swings.
+        if (p.frequency < r.modelBandwidth)
+            QVERIFY2(std::abs(20 * std::log10(p.magnitude / std::abs(model))) < 1.5,
+                     qPrintable(QString::number(p.frequency)));
+    }
+    qInfo("bandwidth measured %.2f Hz, model %.2f Hz", r.bandwidth, r.modelBandwidth);
+    QVERIFY(std::abs(r.bandwidth / r.modelBandwidth - 1) < 0.2);
+}
+
+void TestExperimentRunner::spectrumShowsTheKnobAtRest()
+{
+    Bench bench;
+    QVERIFY(bench.connect());
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    ExperimentRunner runner(bench.client);
+    ExperimentPlan plan = ExperimentPlan::defaults(ExperimentKind::Spectrum, {});
+    plan.duration = 0.5;
+    const ExperimentResult r = run(runner, plan);
+    QVERIFY2(r.completed() && r.problem.isEmpty(), qPrintable(r.problem));
+    QVERIFY(std::abs(r.sampleRate - 1000) < 1);
+    // Half a second at 1 kHz: 2 Hz bins up to 500 Hz.
+    QVERIFY(std::abs(r.thetaSpectrum.resolution - 2) < 0.1);
+    QVERIFY(r.tauSpectrum.frequency.back() > 495);
+}
+
+void TestExperimentRunner::cancelRestoresZeroFeedback()
+{
+    Bench bench;
+    QVERIFY(bench.connect());
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    ExperimentRunner runner(bench.client);
+    ExperimentPlan plan =
+        ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceParams());
+    plan.duration = 10; // would run for 10 s
+    QSignalSpy finished(&runner, &ExperimentRunner::finished);
+    QVERIFY(runner.start(plan).isEmpty());
+    QVERIFY(!runner.start(plan).isEmpty()); // one at a time
+    QTRY_VERIFY_WITH_TIMEOUT(!bench.samples.isEmpty() && bench.samples.last().tau_ext > 0,
+                             kConnectMs);
+    runner.cancel();
+    QCOMPARE(finished.size(), 1);
+    const auto r = finished.first().first().value<ExperimentResult>();
+    QCOMPARE(r.outcome, ExperimentResult::Outcome::Cancelled);
+    QVERIFY(!r.samples.isEmpty());
+    QVERIFY(!runner.running());
+    QTRY_VERIFY_WITH_TIMEOUT(bench.samples.last().tau_ext == 0, kConnectMs);
+}
+
+void TestExperimentRunner::lostDeviceFailsTheRun()
+{
+    Bench bench;
+    QVERIFY(bench.connect());
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    ExperimentRunner runner(bench.client);
+    ExperimentPlan plan =
+        ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceParams());
+    plan.duration = 10;
+    QSignalSpy finished(&runner, &ExperimentRunner::finished);
+    QVERIFY(runner.start(plan).isEmpty());
+    QTRY_VERIFY_WITH_TIMEOUT(!bench.samples.isEmpty() && bench.samples.last().tau_ext > 0,
+                             kConnectMs);
+    bench.host.stop();
+    QVERIFY(finished.wait(kRunMs));
+    const auto r = finished.first().first().value<ExperimentResult>();
+    QCOMPARE(r.outcome, ExperimentResult::Outcome::Failed);
+    QCOMPARE(r.problem, QStringLiteral("The device was lost during the experiment."));
+    QVERIFY(!runner.running());
+}
+
+void TestExperimentRunner::refusesALegacyDevice()
+{
+    Bench bench(WireProtocol::Legacy);
+    QVERIFY(bench.connect());
+    ExperimentRunner runner(bench.client);
+    const QString why = runner.start(ExperimentPlan::defaults(ExperimentKind::Step, {}));
+    QVERIFY2(why.contains(QStringLiteral("legacy")), qPrintable(why));
+    QCOMPARE(ExperimentRunner::refusal(bench.client), why);
+    QVERIFY(!runner.running());
+}
+
+void TestExperimentRunner::refusesWithoutADevice()
+{
+    DeviceClient client;
+    ExperimentRunner runner(client);
+    QCOMPARE(runner.start(ExperimentPlan::defaults(ExperimentKind::Step, {})),
+             QStringLiteral("No device is connected."));
+}
+
+QTEST_GUILESS_MAIN(TestExperimentRunner)
+#include "tst_experimentrunner.moc"

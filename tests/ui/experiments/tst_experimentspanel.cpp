@@ -1,0 +1,186 @@
+// The Experiments panel with real widgets (offscreen) on the built-in simulated joystick: a
+// short step experiment from the Run button to the figures, the overlay and the exports; the
+// refusal on a legacy device; Cancel; the spectrum of the plots' visible window.
+#include "experiments/experimentplots.h"
+#include "experiments/experimentspanel.h"
+#include "plots/plotpanel.h"
+#include "plots/qcp.h"
+#include "plots/samplebuffer.h"
+#include "session/deviceclient.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace hatpic;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int kConnectMs = 5000;
+constexpr int kRunMs = 15000;
+
+bool connectSim(DeviceClient &client, ProtocolChoice protocol = ProtocolChoice::V2)
+{
+    ConnectOptions o;
+    o.port = QString::fromUtf16(kSimPortName);
+    o.protocol = protocol;
+    o.sim.protocol = protocol == ProtocolChoice::Legacy ? WireProtocol::Legacy : WireProtocol::V2;
+    client.connectDevice(o);
+    return QTest::qWaitFor([&] { return client.state() == SessionState::Connected; }, kConnectMs);
+}
+
+//! The figures table's cell (row named `name`, column 1 measured or 2 model) as a number.
+double figure(const QTableWidget *table, const QString &name, int column)
+{
+    for (int row = 0; row < table->rowCount(); ++row) {
+        if (table->item(row, 0)->text() == name)
+            return table->item(row, column)->text().toDouble();
+    }
+    return std::nan("");
+}
+
+} // namespace
+
+class TestExperimentsPanel : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void stepFromTheRunButton();
+    void refusesALegacyDevice();
+    void cancelStopsTheRun();
+    void spectrumOfTheVisibleWindow();
+};
+
+void TestExperimentsPanel::stepFromTheRunButton()
+{
+    DeviceClient client;
+    QVERIFY(connectSim(client));
+    ExperimentsPanel panel(&client, nullptr);
+    panel.resize(1000, 600);
+    panel.show();
+    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectMs);
+    // A knob the simulated servo follows closely (docs/experiments.md, the tolerance):
+    // ω_n = 14.14 rad/s, ζ = 0.707.
+    DeviceParams slow = client.deviceParams();
+    slow.D_adm = 2e-3;
+    slow.M_adm = 4e-2;
+    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
+    client.pushParams(slow);
+    QVERIFY(pushed.wait(kConnectMs));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(client.deviceParams().D_adm - 2e-3) < 1e-9, kConnectMs);
+    panel.fillDefaults();
+    // The defaults for the device's parameters (K_max 0.4, band [0.02, 0.1]).
+    auto *to = panel.findChild<QDoubleSpinBox *>(u"stepTo"_s);
+    QVERIFY(std::abs(to->value() - 0.4 * 0.08) < 1e-5);
+    auto *run = panel.findChild<QPushButton *>(u"runExperiment"_s);
+    QVERIFY(run->isEnabled());
+    QSignalSpy finished(&panel, &ExperimentsPanel::finished);
+    QTest::mouseClick(run, Qt::LeftButton);
+    QVERIFY(panel.running());
+    QVERIFY(!run->isEnabled());
+    QVERIFY(panel.findChild<QPushButton *>(u"cancelExperiment"_s)->isEnabled());
+    QVERIFY(finished.wait(kRunMs));
+    QVERIFY2(panel.result() && panel.result()->completed(), qPrintable(panel.status()));
+
+    // Measured next to the model's derived figures (within 10 %, docs/experiments.md).
+    const QTableWidget *table = panel.figures();
+    const double omegaN = figure(table, u"ω_n [rad/s]"_s, 1);
+    const double omegaModel = figure(table, u"ω_n [rad/s]"_s, 2);
+    QCOMPARE(omegaModel, 14.14);
+    QVERIFY2(std::abs(omegaN / omegaModel - 1) < 0.1, qPrintable(QString::number(omegaN)));
+    QVERIFY(std::abs(figure(table, u"ζ"_s, 1) / figure(table, u"ζ"_s, 2) - 1) < 0.1);
+
+    // The overlay: the measured step and the ideal model's, both rising to Δτ/K_max = 0.04 rad.
+    QCustomPlot *step = panel.plots()->plot(ExperimentPlots::StepTab);
+    QCOMPARE(panel.plots()->currentWidget(), step);
+    QCOMPARE(step->graphCount(), 2);
+    for (int i = 0; i < 2; ++i) {
+        const auto data = step->graph(i)->data();
+        QVERIFY(data->size() > 100);
+        QVERIFY2(std::abs((data->end() - 1)->value - 0.04) < 0.004,
+                 qPrintable(QString::number((data->end() - 1)->value)));
+    }
+
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY2(panel.exportCsv(dir.filePath(u"step.csv"_s), &error), qPrintable(error));
+    QFile csv(dir.filePath(u"step.csv"_s));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    QCOMPARE(csv.readLine(), QByteArray("t_s,theta,tau_ext,model_theta\n"));
+    for (const QString &name : {u"step.png"_s, u"step.svg"_s}) {
+        QVERIFY2(panel.exportImage(dir.filePath(name), &error), qPrintable(error));
+        QVERIFY(QFile(dir.filePath(name)).size() > 1000);
+    }
+    QFile svg(dir.filePath(u"step.svg"_s));
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    QVERIFY(svg.readAll().contains("<svg"));
+}
+
+void TestExperimentsPanel::refusesALegacyDevice()
+{
+    DeviceClient client;
+    QVERIFY(connectSim(client, ProtocolChoice::Legacy));
+    ExperimentsPanel panel(&client, nullptr);
+    QVERIFY(!panel.run());
+    QVERIFY2(panel.status().contains(u"legacy"_s), qPrintable(panel.status()));
+    QVERIFY(!panel.running());
+}
+
+void TestExperimentsPanel::cancelStopsTheRun()
+{
+    DeviceClient client;
+    QVERIFY(connectSim(client));
+    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectMs);
+    ExperimentsPanel panel(&client, nullptr);
+    panel.findChild<QDoubleSpinBox *>(u"duration"_s)->setValue(20);
+    QVERIFY(panel.run());
+    QTest::mouseClick(panel.findChild<QPushButton *>(u"cancelExperiment"_s), Qt::LeftButton);
+    QVERIFY(!panel.running());
+    QCOMPARE(panel.status(), u"The experiment was cancelled."_s);
+    QVERIFY(!panel.result()); // nothing half-measured is shown as a result
+}
+
+void TestExperimentsPanel::spectrumOfTheVisibleWindow()
+{
+    DeviceClient client;
+    PlotPanel plots;
+    SampleBuffer buffer;
+    // One second of a knob chattering at 50 Hz, 1 mrad, on the plots.
+    for (int i = 0; i < 1000; ++i) {
+        Sample s;
+        s.t_s = i * 1e-3;
+        s.theta = 1e-3 * std::sin(2 * std::numbers::pi * 50 * s.t_s);
+        s.tau = 1e-3 * std::sin(2 * std::numbers::pi * 120 * s.t_s);
+        buffer.append(s);
+    }
+    plots.setSource(&buffer);
+    plots.setWindowLength(1.0);
+    plots.setViewEnd(0.999);
+    ExperimentsPanel panel(&client, &plots);
+    panel.showVisibleSpectrum();
+    QCustomPlot *spectrum = panel.plots()->plot(ExperimentPlots::SpectrumTab);
+    QCOMPARE(panel.plots()->currentWidget(), spectrum);
+    QCOMPARE(spectrum->graphCount(), 2);
+    // The θ line at 50 Hz reads 20·log10(1e-3) = −60 dB.
+    const auto theta = spectrum->graph(0)->data();
+    auto peak = theta->begin();
+    for (auto it = theta->begin(); it != theta->end(); ++it)
+        peak = it->value > peak->value ? it : peak;
+    QVERIFY2(std::abs(peak->key - 50) < 1.01, qPrintable(QString::number(peak->key)));
+    QVERIFY(std::abs(peak->value + 60) < 1.5);
+}
+
+QTEST_MAIN(TestExperimentsPanel)
+#include "tst_experimentspanel.moc"

@@ -1,0 +1,243 @@
+#include "experimentplots.h"
+
+#include "plots/palette.h"
+#include "plots/qcp.h"
+
+#include <QFileInfo>
+#include <QSvgGenerator>
+
+#include <cmath>
+#include <numbers>
+
+namespace hatpic {
+
+namespace {
+
+constexpr double kDegrees = 180 / std::numbers::pi;
+
+QCustomPlot *makePlot(QWidget *parent, const QString &name)
+{
+    auto *plot = new QCustomPlot(parent);
+    plot->setObjectName(name);
+    plot->setMinimumSize(360, 240);
+    plot->legend->setVisible(true);
+    plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    return plot;
+}
+
+QCPGraph *addGraph(QCustomPlot *plot, QCPAxis *x, QCPAxis *y, const QString &name,
+                   const QColor &colour, Qt::PenStyle style = Qt::SolidLine)
+{
+    QCPGraph *g = plot->addGraph(x, y);
+    g->setName(name);
+    QPen pen(colour, 1.5);
+    pen.setStyle(style);
+    g->setPen(pen);
+    return g;
+}
+
+void logAxis(QCPAxis *axis)
+{
+    axis->setScaleType(QCPAxis::stLogarithmic);
+    axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+}
+
+} // namespace
+
+ExperimentPlots::ExperimentPlots(QWidget *parent) : QTabWidget(parent)
+{
+    m_step = makePlot(this, QStringLiteral("stepPlot"));
+    m_step->xAxis->setLabel(tr("time since the step [s]"));
+    m_step->yAxis->setLabel(tr("θ − θ before the step [rad]"));
+    addTab(m_step, tr("Step"));
+
+    m_bode = makePlot(this, QStringLiteral("bodePlot"));
+    m_bode->plotLayout()->clear();
+    auto *magnitude = new QCPAxisRect(m_bode);
+    auto *phase = new QCPAxisRect(m_bode);
+    m_bode->plotLayout()->addElement(0, 0, magnitude);
+    m_bode->plotLayout()->addElement(1, 0, phase);
+    for (QCPAxisRect *rect : {magnitude, phase}) {
+        logAxis(rect->axis(QCPAxis::atBottom));
+        rect->axis(QCPAxis::atBottom)->setLabel(tr("frequency [Hz]"));
+        rect->setRangeZoomAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    }
+    magnitude->axis(QCPAxis::atLeft)->setLabel(tr("|θ/τ_ext| [dB re 1 rad/(N·m)]"));
+    phase->axis(QCPAxis::atLeft)->setLabel(tr("phase [°]"));
+    auto *legend = new QCPLegend;
+    magnitude->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    legend->setLayer(QStringLiteral("legend"));
+    m_bode->legend = legend;
+    addTab(m_bode, tr("Bode"));
+
+    m_spectrum = makePlot(this, QStringLiteral("spectrumPlot"));
+    m_spectrum->xAxis->setLabel(tr("frequency [Hz]"));
+    m_spectrum->yAxis->setLabel(tr("θ [dB re 1 rad]"));
+    m_spectrum->yAxis2->setVisible(true);
+    m_spectrum->yAxis2->setLabel(tr("τ [dB re 1 N·m]"));
+    addTab(m_spectrum, tr("Spectrum"));
+}
+
+QCustomPlot *ExperimentPlots::plot(Tab tab) const
+{
+    switch (tab) {
+    case StepTab:
+        return m_step;
+    case BodeTab:
+        return m_bode;
+    case SpectrumTab:
+        return m_spectrum;
+    }
+    return nullptr;
+}
+
+void ExperimentPlots::showResult(const ExperimentResult &result)
+{
+    switch (result.plan.kind) {
+    case ExperimentKind::Step:
+        showStep(result);
+        break;
+    case ExperimentKind::Frequency:
+        showBode(result);
+        break;
+    case ExperimentKind::Spectrum:
+        showSpectra(result.thetaSpectrum, result.tauSpectrum, tr("at rest"));
+        break;
+    }
+}
+
+void ExperimentPlots::showStep(const ExperimentResult &r)
+{
+    m_step->clearGraphs();
+    QCPGraph *measured = addGraph(m_step, m_step->xAxis, m_step->yAxis, tr("θ measured"),
+                                  palette::channel(Channel::Theta));
+    QCPGraph *model = addGraph(m_step, m_step->xAxis, m_step->yAxis, tr("θ ideal model"),
+                               palette::channel(Channel::Theta), Qt::DashLine);
+    const double before = r.stepMeasured.initial;
+    QVector<double> t, y;
+    for (const Sample &s : r.samples) {
+        const double since = s.t_s - r.stepAt;
+        if (since >= -r.plan.settle / 4 && since <= r.plan.duration) {
+            t.append(since);
+            y.append(s.theta - before);
+        }
+    }
+    measured->setData(t, y, true);
+    t.clear();
+    y.clear();
+    for (const Sample &s : r.ideal) {
+        const double since = s.t_s - r.idealStepAt;
+        if (since >= -r.plan.settle / 4 && since <= r.plan.duration) {
+            t.append(since);
+            y.append(s.theta - r.stepIdeal.initial);
+        }
+    }
+    model->setData(t, y, true);
+    m_step->rescaleAxes();
+    m_step->replot();
+    setCurrentWidget(m_step);
+}
+
+void ExperimentPlots::showBode(const ExperimentResult &r)
+{
+    m_bode->clearGraphs();
+    QCPAxisRect *magnitude = m_bode->axisRect(0);
+    QCPAxisRect *phase = m_bode->axisRect(1);
+    auto axes = [](QCPAxisRect *rect) {
+        return std::pair{rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)};
+    };
+    const QColor colour = palette::channel(Channel::Theta);
+    const auto [mx, my] = axes(magnitude);
+    const auto [px, py] = axes(phase);
+    QCPGraph *modelMag = addGraph(m_bode, mx, my, tr("model"), colour, Qt::DashLine);
+    QCPGraph *measuredMag = addGraph(m_bode, mx, my, tr("measured"), colour);
+    QCPGraph *modelPhase = addGraph(m_bode, px, py, tr("model"), colour, Qt::DashLine);
+    QCPGraph *measuredPhase = addGraph(m_bode, px, py, tr("measured"), colour);
+    modelPhase->removeFromLegend();
+    measuredPhase->removeFromLegend();
+    for (QCPGraph *g : {measuredMag, measuredPhase})
+        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
+    if (r.points.empty()) {
+        m_bode->replot();
+        return;
+    }
+    const double lo = r.points.front().frequency / 2;
+    const double hi = r.points.back().frequency * 2;
+    QVector<double> f, mag, ph;
+    for (int i = 0; i <= 200; ++i) {
+        const double fi = lo * std::pow(hi / lo, i / 200.0);
+        const std::complex<double> h = analysis::modelGain(r.params, fi);
+        f.append(fi);
+        mag.append(20 * std::log10(std::abs(h)));
+        ph.append(std::arg(h) * kDegrees);
+    }
+    modelMag->setData(f, mag, true);
+    modelPhase->setData(f, ph, true);
+    f.clear();
+    mag.clear();
+    ph.clear();
+    for (const analysis::FrequencyPoint &p : r.points) {
+        f.append(p.frequency);
+        mag.append(20 * std::log10(p.magnitude));
+        ph.append(p.phase * kDegrees);
+    }
+    measuredMag->setData(f, mag, true);
+    measuredPhase->setData(f, ph, true);
+    for (QCPAxisRect *rect : {magnitude, phase}) {
+        rect->axis(QCPAxis::atBottom)->setRange(lo, hi);
+        rect->axis(QCPAxis::atLeft)->rescale();
+        rect->axis(QCPAxis::atLeft)->scaleRange(1.1);
+    }
+    m_bode->replot();
+    setCurrentWidget(m_bode);
+}
+
+void ExperimentPlots::showSpectra(const analysis::Spectrum &theta, const analysis::Spectrum &tau,
+                                  const QString &title)
+{
+    m_spectrum->clearGraphs();
+    QCPGraph *th = addGraph(m_spectrum, m_spectrum->xAxis, m_spectrum->yAxis,
+                            tr("θ (%1)").arg(title), palette::channel(Channel::Theta));
+    QCPGraph *ta = addGraph(m_spectrum, m_spectrum->xAxis, m_spectrum->yAxis2,
+                            tr("τ (%1)").arg(title), palette::channel(Channel::Tau));
+    // Bin 0 (the mean, taken out) carries nothing to see.
+    auto fill = [](QCPGraph *g, const analysis::Spectrum &s) {
+        QVector<double> f, db;
+        for (std::size_t k = 1; k < s.frequency.size(); ++k) {
+            f.append(s.frequency[k]);
+            db.append(s.magnitudeDb[k]);
+        }
+        g->setData(f, db, true);
+        g->rescaleAxes();
+    };
+    fill(th, theta);
+    fill(ta, tau);
+    m_spectrum->replot();
+    setCurrentWidget(m_spectrum);
+}
+
+bool ExperimentPlots::exportImage(const QString &path, QString *error) const
+{
+    auto *plot = qobject_cast<QCustomPlot *>(currentWidget());
+    bool ok = false;
+    if (QFileInfo(path).suffix().compare(u"svg", Qt::CaseInsensitive) == 0) {
+        QSvgGenerator svg;
+        svg.setFileName(path);
+        svg.setSize(plot->size());
+        svg.setViewBox(QRect(QPoint(0, 0), plot->size()));
+        svg.setTitle(tabText(currentIndex()));
+        QCPPainter painter;
+        ok = painter.begin(&svg);
+        if (ok) {
+            plot->toPainter(&painter, plot->width(), plot->height());
+            ok = painter.end();
+        }
+    } else {
+        ok = plot->savePng(path);
+    }
+    if (!ok && error)
+        *error = tr("Could not write %1.").arg(path);
+    return ok;
+}
+
+} // namespace hatpic
