@@ -17,6 +17,8 @@ SamplePipeline::SamplePipeline(QObject *parent)
 void SamplePipeline::connectionStarted()
 {
     m_paramsKnown = false;
+    m_effectsKnown = false;
+    m_effects = {};
     m_builder.markDiscontinuity();
     m_batchTimer.start();
 }
@@ -71,6 +73,24 @@ void SamplePipeline::paramsReceived(const DeviceParams &params)
     m_builder.setDeviceParams(params);
     m_paramsKnown = true;
     Q_EMIT deviceParamsChanged(params);
+}
+
+void SamplePipeline::effectsApplied(const EffectParams &effects)
+{
+    flush(); // the event belongs to the next sample, not to those already waiting
+    m_recording.effectsApplied(m_effects, effects);
+    m_effects = effects;
+}
+
+void SamplePipeline::effectsReceived(const EffectParams &effects)
+{
+    if (m_effectsKnown && !sameOnWire(m_effects, effects)) {
+        flush();
+        m_recording.effectsReadBack(m_effects, effects);
+    }
+    m_effects = effects;
+    m_effectsKnown = true;
+    Q_EMIT deviceEffectsChanged(effects);
 }
 
 bool SamplePipeline::setHostParams(const HostParams &host)
