@@ -105,6 +105,8 @@ bool parseDouble(const QByteArray &text, double &value)
 constexpr std::size_t kColT = sampleColumnIndex("t_s");
 constexpr std::size_t kColTheta = sampleColumnIndex("theta");
 constexpr std::size_t kColFlags = sampleColumnIndex("flags");
+//! Recordings made before effects.md have no tau_fx: its values read as empty, unremarked.
+constexpr std::size_t kColTauFx = sampleColumnIndex("tau_fx");
 constexpr std::size_t kColEvent = kSampleColumns.size();
 constexpr std::size_t kColCount = kColEvent + 1;
 
@@ -350,7 +352,7 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
                             columns.join(u',') % u')');
             }
             for (std::size_t k = 0; k < kColEvent; ++k) {
-                if (index[k] < 0) {
+                if (index[k] < 0 && k != kColTauFx) {
                     warn(u"line 1: column \"" % columns[static_cast<qsizetype>(k)] %
                          u"\" missing; its values read as empty.");
                 }

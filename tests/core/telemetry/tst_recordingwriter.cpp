@@ -75,7 +75,7 @@ bool writeFile(const QString &path, const QByteArray &bytes)
 }
 
 const QByteArray kHeader =
-    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,event\n";
+    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event\n";
 
 } // namespace
 
@@ -110,9 +110,9 @@ private Q_SLOTS:
 
 void TestRecordingWriter::columns()
 {
-    QCOMPARE(
-        recordingColumns().join(u','),
-        QStringLiteral("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,event"));
+    QCOMPARE(recordingColumns().join(u','),
+             QStringLiteral(
+                 "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event"));
 }
 
 void TestRecordingWriter::metadataPathBesideCsv_data()

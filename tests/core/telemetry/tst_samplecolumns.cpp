@@ -83,7 +83,7 @@ void TestSampleColumns::headerIsTheTable()
     QCOMPARE(QString::fromLatin1(sampleCsvHeader()), names.join(u','));
     // The documented header (docs/cli.md, docs/recording.md), in the order of today's files.
     QCOMPARE(sampleCsvHeader(),
-             QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags"));
+             QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx"));
 }
 
 void TestSampleColumns::recordingColumnsAreTheTableAndEvent()
