@@ -20,7 +20,8 @@ add_executable(hatpicctl
   hatpicctl/streamcommand.cpp
   hatpicctl/curvecommand.cpp
   hatpicctl/simulatecommand.cpp
-  hatpicctl/validatecommand.cpp)
+  hatpicctl/validatecommand.cpp
+  hatpicctl/vibratecommand.cpp)
 target_link_libraries(hatpicctl PRIVATE hatpic::core hatpic_appcommon hatpic::build_settings)
 target_compile_definitions(hatpicctl PRIVATE HATPIC_VERSION="${PROJECT_VERSION}")
 set_target_properties(hatpicctl PROPERTIES AUTOMOC ON)

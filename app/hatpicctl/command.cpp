@@ -56,6 +56,7 @@ std::vector<std::unique_ptr<Command>> allCommands()
     commands.push_back(makeCurveCommand());
     commands.push_back(makeSimulateCommand());
     commands.push_back(makeValidateCommand());
+    commands.push_back(makeVibrateCommand());
     return commands;
 }
 

@@ -17,5 +17,6 @@ std::unique_ptr<Command> makeStreamCommand();
 std::unique_ptr<Command> makeCurveCommand();
 std::unique_ptr<Command> makeSimulateCommand();
 std::unique_ptr<Command> makeValidateCommand();
+std::unique_ptr<Command> makeVibrateCommand();
 
 } // namespace hatpic::cli

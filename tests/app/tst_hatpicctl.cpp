@@ -348,7 +348,7 @@ void TestHatpicCtl::curveDefaults()
     const Run run = runCtl({u"curve"_s, u"--profile"_s, m_default});
     QVERIFY2(run.code == 0, qPrintable(describe(run)));
     QString problem;
-    const auto rows = parseCsv(run.out, "theta,K_rec,tau_rec", &problem);
+    const auto rows = parseCsv(run.out, "theta,K_rec,tau_rec,tau_det,tau_wall", &problem);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
 
     // −π/2 + i·0.01 while below π/2 (i = 0…314), then π/2 itself.
@@ -391,7 +391,7 @@ void TestHatpicCtl::curveValues()
                             u"--step"_s, QString::number(step, 'g', 17)});
     QVERIFY2(run.code == 0, qPrintable(describe(run)));
     QString problem;
-    const auto table = parseCsv(run.out, "theta,K_rec,tau_rec", &problem);
+    const auto table = parseCsv(run.out, "theta,K_rec,tau_rec,tau_det,tau_wall", &problem);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
     QCOMPARE(table.size(), qsizetype(rows));
 
@@ -448,7 +448,7 @@ void TestHatpicCtl::curveBadRange()
 // ---- simulate ----
 
 static const QByteArray kSampleHeader =
-    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags";
+    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx";
 
 void TestHatpicCtl::simulateInputs_data()
 {
