@@ -19,6 +19,15 @@ namespace {
 using Status = CommandResult::Status;
 using Reason = CommandResult::Reason;
 
+//! A command of `kind` for request `id`, its other fields at their defaults.
+Command command(quint64 id, CommandKind kind)
+{
+    Command cmd;
+    cmd.id = id;
+    cmd.kind = kind;
+    return cmd;
+}
+
 } // namespace
 
 DeviceSession::DeviceSession(QObject *parent)
@@ -325,51 +334,36 @@ void DeviceSession::pushParams(quint64 id, const DeviceParams &params)
             return;
         }
     }
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::SetParams;
+    Command cmd = command(id, CommandKind::SetParams);
     cmd.params = roundedForWire(params);
     submit(cmd);
 }
 
 void DeviceSession::readParams(quint64 id)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::GetParams;
-    submit(cmd);
+    submit(command(id, CommandKind::GetParams));
 }
 
 void DeviceSession::zero(quint64 id)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::Zero;
-    submit(cmd);
+    submit(command(id, CommandKind::Zero));
 }
 
 void DeviceSession::saveParams(quint64 id)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::SaveParams;
-    submit(cmd);
+    submit(command(id, CommandKind::SaveParams));
 }
 
 void DeviceSession::setStreamRate(quint64 id, quint16 hz)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::SetStream;
+    Command cmd = command(id, CommandKind::SetStream);
     cmd.rate = hz;
     submit(cmd);
 }
 
 void DeviceSession::pushEffects(quint64 id, const EffectParams &effects)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::SetEffects;
+    Command cmd = command(id, CommandKind::SetEffects);
     cmd.effects = effects;
     // Validated only once the device (its tau_limit) is known: submit() refuses before then.
     if (m_driver && m_validate && refuseInvalid(cmd, validate(effects, m_info.tauLimit)))
@@ -380,17 +374,12 @@ void DeviceSession::pushEffects(quint64 id, const EffectParams &effects)
 
 void DeviceSession::readEffects(quint64 id)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::GetEffects;
-    submit(cmd);
+    submit(command(id, CommandKind::GetEffects));
 }
 
 void DeviceSession::vibrate(quint64 id, const Vibration &vibration)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::Vibrate;
+    Command cmd = command(id, CommandKind::Vibrate);
     cmd.vibration = vibration;
     // The control rate is the device's: an infinite one leaves f < rate/2 to the device.
     if (m_driver && m_validate &&

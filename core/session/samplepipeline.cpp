@@ -120,6 +120,8 @@ void SamplePipeline::startRecording(const QString &csvPath, const QString &sourc
     meta.start = QDateTime::currentDateTimeUtc();
     meta.device = device;
     meta.params = m_builder.deviceParams();
+    if (m_effectsKnown)
+        meta.effects = m_effects;
     meta.host = m_builder.hostParams();
     meta.source = source;
     m_recording.open(csvPath, meta);

@@ -184,6 +184,12 @@ void applyMetadata(const QByteArray &text, const QString &fileName, Recording &r
                      m.params, problems, nullptr);
     readHostParams(params.value(u"host").toObject(), QStringLiteral("parameters.host."), m.host,
                    problems, nullptr);
+    if (const QJsonValue effects = params.value(u"effects"); effects.isObject()) {
+        QStringList ignored; // unknown keys: as for the other objects, not worth a warning
+        m.effects.emplace();
+        readEffectParams(effects.toObject(), QStringLiteral("parameters.effects."), *m.effects,
+                         problems, ignored);
+    }
     // Bounded: the first few are named, the rest counted in one line.
     constexpr qsizetype kNamedProblems = 3;
     for (qsizetype i = 0; i < std::min(problems.size(), kNamedProblems); ++i)

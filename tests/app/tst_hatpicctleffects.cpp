@@ -1,12 +1,12 @@
 // hatpicctl and the haptic effects (effects.md), run as a real process: curve's tau_det and
 // tau_wall against the formulas written out again, simulate --ideal with an effects profile
 // against the model with τ_fx row by row, and set / get / vibrate against the in-process
-// simulated joystick (`--port sim`), its legacy emulation included.
+// simulated joystick (`--port sim`) and hatpic-sim's legacy emulation on a pty.
+#include "ctlprocess.h"
 #include "model/admittance.h"
 #include "model/effects.h"
 #include "profile/profile.h"
 
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -14,86 +14,24 @@
 #include <numbers>
 
 using namespace hatpic;
+using namespace hatpic::test;
 using namespace Qt::StringLiterals;
 
 namespace {
-
-constexpr int kProcessTimeoutMs = 60000;
-
-struct Run
-{
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runCtl(const QStringList &arguments)
-{
-    QProcess process;
-    process.setProgram(QStringLiteral(HATPICCTL_PATH));
-    process.setArguments(arguments);
-    process.start();
-    Run run;
-    if (!process.waitForStarted(10000) || !process.waitForFinished(kProcessTimeoutMs)) {
-        process.kill();
-        process.waitForFinished(5000);
-        run.err = "did not run: " + process.readAllStandardError();
-        return run;
-    }
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    return run;
-}
-
-QString describe(const Run &run)
-{
-    return u"exit "_s + QString::number(run.code) + u"\nstderr: "_s + QString::fromUtf8(run.err) +
-           u"\nstdout: "_s + QString::fromUtf8(run.out.left(600));
-}
-
-//! Rows of a CSV with `header`; empty cells are NaN. Empty list when the header differs.
-QList<QList<double>> parseCsv(const QByteArray &text, const QByteArray &header)
-{
-    QList<QByteArray> lines = text.split('\n');
-    if (lines.isEmpty() || lines.first() != header)
-        return {};
-    QList<QList<double>> rows;
-    for (qsizetype i = 1; i < lines.size(); ++i) {
-        if (lines[i].isEmpty())
-            continue;
-        QList<double> row;
-        for (const QByteArray &cell : lines[i].split(','))
-            row << (cell.isEmpty() ? std::nan("") : cell.toDouble());
-        rows << row;
-    }
-    return rows;
-}
-
-bool closeTo(double actual, double expected, double tolerance)
-{
-    return std::abs(actual - expected) <= tolerance * std::max(1.0, std::abs(expected));
-}
 
 //! Every value exactly a float, so the device's float32 block is the same numbers.
 Profile effectsProfile()
 {
     Profile p;
     p.name = u"fx"_s;
-    p.device.D_adm = 0.0001220703125; // 2^-13
-    p.device.M_adm = 0.0078125;       // 2^-7
-    p.device.K_min = 0.125;
-    p.device.K_max = 0.375;
-    p.device.N = 0.125;
-    p.device.Q_dz = 0.015625;
-    p.device.theta0 = 0.0625;
-    p.effects.detent_strength = 0.03125;
-    p.effects.detent_spacing = 0.25;
-    p.effects.detent_range = 0.5;
-    p.effects.wall_min = -0.5;
-    p.effects.wall_max = 0.375;
-    p.effects.wall_stiffness = 2;
-    p.effects.wall_damping = 0.015625;
+    p.device = exactParams();
+    p.effects = EffectParams{.detent_strength = 0.03125,
+                             .detent_spacing = 0.25,
+                             .detent_range = 0.5,
+                             .wall_min = -0.5,
+                             .wall_max = 0.375,
+                             .wall_stiffness = 2,
+                             .wall_damping = 0.015625};
     return p;
 }
 
@@ -116,17 +54,6 @@ double expectedWall(const EffectParams &fx, double e, double omega)
         return 0;
     const double spring = -fx.wall_stiffness * beyond;
     return omega * beyond > 0 ? spring - fx.wall_damping * omega : spring;
-}
-
-double expectedStiffness(const DeviceParams &p, double theta)
-{
-    const double a = std::abs(theta - p.theta0);
-    if (a < p.Q_dz)
-        return 0;
-    if (a <= p.N)
-        return p.K_max;
-    const double kT = p.K_min + (p.K_max - p.K_min) * (1 - (a - p.N) / p.N);
-    return std::clamp(kT, p.K_min, p.K_max);
 }
 
 } // namespace
@@ -165,7 +92,9 @@ void TestHatpicCtlEffects::curveHasStaticEffectTorques()
     const Run run = runCtl({u"curve"_s, u"--profile"_s, m_profile, u"--from"_s, u"-1"_s, u"--to"_s,
                             u"1"_s, u"--step"_s, u"0.001"_s});
     QVERIFY2(run.code == 0, qPrintable(describe(run)));
-    const auto rows = parseCsv(run.out, "theta,K_rec,tau_rec,tau_det,tau_wall");
+    QString problem;
+    const auto rows = parseCsv(run.out, "theta,K_rec,tau_rec,tau_det,tau_wall", &problem);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
     QCOMPARE(rows.size(), 2001);
     const Profile p = effectsProfile();
     bool sawDetent = false;
@@ -197,8 +126,11 @@ void TestHatpicCtlEffects::simulateIdealWithEffectsMatchesModel()
     const Run run = runCtl({u"simulate"_s, u"--profile"_s, m_profile, u"--input"_s, spec,
                             u"--ideal"_s, u"--duration"_s, u"1"_s});
     QVERIFY2(run.code == 0, qPrintable(describe(run)));
+    QString problem;
     const auto table =
-        parseCsv(run.out, "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx");
+        parseCsv(run.out, "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx",
+                 &problem);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
     QCOMPARE(table.size(), 1001);
     const Profile pr = effectsProfile();
     const DeviceParams &p = pr.device;

@@ -26,15 +26,13 @@ QByteArray profileText(const QByteArray &effects)
 
 EffectParams someEffects()
 {
-    EffectParams fx;
-    fx.detent_strength = 0.05;
-    fx.detent_spacing = 0.25;
-    fx.detent_range = 1.0;
-    fx.wall_min = -0.7;
-    fx.wall_max = 0.6;
-    fx.wall_stiffness = 3;
-    fx.wall_damping = 0.01;
-    return fx;
+    return EffectParams{.detent_strength = 0.05,
+                        .detent_spacing = 0.25,
+                        .detent_range = 1.0,
+                        .wall_min = -0.7,
+                        .wall_max = 0.6,
+                        .wall_stiffness = 3,
+                        .wall_damping = 0.01};
 }
 
 } // namespace

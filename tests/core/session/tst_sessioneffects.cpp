@@ -4,9 +4,9 @@
 #include "scripteddevice.h"
 #include "session/deviceclient.h"
 #include "session/devicesession.h"
+#include "simprocess.h"
 #include "telemetry/recordingreader.h"
 
-#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -15,57 +15,35 @@
 
 using namespace hatpic;
 using hatpic::test::ScriptedDevice;
+using hatpic::test::SimProcess;
 
 namespace {
 
 constexpr int kTimeoutMs = 5000;
 
-//! hatpic-sim as a child process; the first line it prints is the pty's slave path.
-class SimProcess
-{
-public:
-    explicit SimProcess(const QStringList &arguments)
-    {
-#ifdef HATPIC_SIM_PATH
-        m_process.setProgram(QStringLiteral(HATPIC_SIM_PATH));
-        m_process.setArguments(arguments);
-        m_process.start();
-#else
-        Q_UNUSED(arguments);
-#endif
-    }
-    ~SimProcess()
-    {
-        if (m_process.state() == QProcess::NotRunning)
-            return;
-        m_process.terminate();
-        if (!m_process.waitForFinished(kTimeoutMs))
-            m_process.kill();
-        m_process.waitForFinished(kTimeoutMs);
-    }
-    QString path()
-    {
-        while (!m_process.canReadLine() && m_process.waitForReadyRead(kTimeoutMs)) {
-        }
-        return m_process.canReadLine() ? QString::fromLocal8Bit(m_process.readLine().trimmed())
-                                       : QString();
-    }
-
-private:
-    QProcess m_process;
-};
-
 EffectParams detentsAndWalls()
 {
-    EffectParams fx;
-    fx.detent_strength = 0.05;
-    fx.detent_spacing = 0.2;
-    fx.detent_range = 0.8;
-    fx.wall_min = -0.5;
-    fx.wall_max = 0.5;
-    fx.wall_stiffness = 2;
-    fx.wall_damping = 0.01;
-    return fx;
+    return EffectParams{.detent_strength = 0.05,
+                        .detent_spacing = 0.2,
+                        .detent_range = 0.8,
+                        .wall_min = -0.5,
+                        .wall_max = 0.5,
+                        .wall_stiffness = 2,
+                        .wall_damping = 0.01};
+}
+
+//! Connects `client` to `sim`; false when the simulator did not start.
+bool connectTo(DeviceClient &client, SimProcess &sim,
+               ProtocolChoice protocol = ProtocolChoice::Auto)
+{
+    const QString path = sim.path();
+    if (path.isEmpty())
+        return false;
+    ConnectOptions o;
+    o.port = path;
+    o.protocol = protocol;
+    client.connectDevice(o);
+    return true;
 }
 
 //! The result of the command `id` once it finished.
@@ -111,16 +89,12 @@ void TestSessionEffects::initTestCase()
 void TestSessionEffects::effectsOverPty()
 {
     SimProcess sim({});
-    const QString path = sim.path();
-    QVERIFY(!path.isEmpty());
     DeviceClient client;
     QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QList<Sample> samples;
     connect(&client, &DeviceClient::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
-    ConnectOptions o;
-    o.port = path;
-    client.connectDevice(o);
+    QVERIFY(connectTo(client, sim));
     // The connect sequence reads the block back: defaults, which render nothing.
     QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceEffects(), kTimeoutMs);
     QVERIFY(client.deviceInfo().hasEffects());
@@ -161,13 +135,9 @@ void TestSessionEffects::effectsOverPty()
 void TestSessionEffects::invalidEffectsAreRefusedBeforeSending()
 {
     SimProcess sim({});
-    const QString path = sim.path();
-    QVERIFY(!path.isEmpty());
     DeviceClient client;
     QSignalSpy finished(&client, &DeviceClient::commandFinished);
-    ConnectOptions o;
-    o.port = path;
-    client.connectDevice(o);
+    QVERIFY(connectTo(client, sim));
     QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceEffects(), kTimeoutMs);
 
     EffectParams bad;
@@ -191,13 +161,9 @@ void TestSessionEffects::deviceRejectsVibrationAboveNyquist()
     // The simulator controls at 1 kHz: 500 Hz passes the table (≤ 500) but not f < rate/2,
     // which only the device can check.
     SimProcess sim({});
-    const QString path = sim.path();
-    QVERIFY(!path.isEmpty());
     DeviceClient client;
     QSignalSpy finished(&client, &DeviceClient::commandFinished);
-    ConnectOptions o;
-    o.port = path;
-    client.connectDevice(o);
+    QVERIFY(connectTo(client, sim));
     QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceEffects(), kTimeoutMs);
     const CommandResult r = waitFor(finished, client.vibrate({0.1, 500, 1}));
     QCOMPARE(r.status, CommandResult::Status::Rejected);
@@ -208,17 +174,12 @@ void TestSessionEffects::deviceRejectsVibrationAboveNyquist()
 void TestSessionEffects::legacyDeviceHasNoEffects()
 {
     SimProcess sim({QStringLiteral("--protocol"), QStringLiteral("legacy")});
-    const QString path = sim.path();
-    QVERIFY(!path.isEmpty());
     DeviceClient client;
     QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QList<Sample> samples;
     connect(&client, &DeviceClient::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
-    ConnectOptions o;
-    o.port = path;
-    o.protocol = ProtocolChoice::Legacy;
-    client.connectDevice(o);
+    QVERIFY(connectTo(client, sim, ProtocolChoice::Legacy));
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), SessionState::Connected, kTimeoutMs);
     QVERIFY(!client.deviceInfo().hasEffects());
     for (const quint64 id : {client.pushEffects(detentsAndWalls()), client.readEffects(),
@@ -301,6 +262,9 @@ void TestSessionEffects::pushedEffectsAreRecordedEvents()
     QVERIFY2(read.recording, qPrintable(read.error));
     QVERIFY2(read.warnings.isEmpty(), qPrintable(read.warnings.join(u'\n')));
     const Recording &rec = *read.recording;
+    // The block at the start is in the metadata: the device's defaults (±π one float inside).
+    QVERIFY(rec.metadata.effects.has_value());
+    QVERIFY(sameOnWire(*rec.metadata.effects, roundedForWire(EffectParams{}, 0.44)));
     QCOMPARE(rec.events.size(), 1);
     QCOMPARE(rec.events.first().text,
              QStringLiteral("detent_strength 0 → 0.05; detent_range 0 → 0.8"));
