@@ -19,10 +19,12 @@ struct Profile
     QString name;
     QString notes;
     DeviceParams device;
-    EffectParams effects; //!< device.effects of the file; defaults (nothing) when absent
     HostParams host;
     //! host.bridge of the file; its domainId is not part of a profile and stays at the default.
     bridge::BridgeSettings bridge{}; // {}: aggregate initialisers may leave it out
+    //! device.effects of the file; the defaults (which render nothing) when it has none. Last,
+    //! so that aggregate initialisers written before it still mean what they meant.
+    EffectParams effects{};
 
     friend bool operator==(const Profile &, const Profile &) = default;
 };
