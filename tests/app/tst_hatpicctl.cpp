@@ -939,8 +939,9 @@ void TestHatpicCtl::ptyLegacySimulator()
     const QList<QByteArray> lines = out.out.trimmed().split('\n');
     QVERIFY2(lines.size() >= 2, qPrintable(describe(out)));
     const QList<QByteArray> fields = lines[1].split(',');
-    QCOMPARE(fields.size(), 10);
+    QCOMPARE(fields.size(), 11);
     QVERIFY2(fields[2].isEmpty() && fields[3].isEmpty(), lines[1].constData());
+    QVERIFY2(fields[10].isEmpty(), lines[1].constData()); // no effects: τ_fx unknown
     QVERIFY(!fields[1].isEmpty());
 
     sim.terminate();
