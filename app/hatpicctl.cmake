@@ -22,7 +22,8 @@ add_executable(hatpicctl
   hatpicctl/simulatecommand.cpp
   hatpicctl/validatecommand.cpp
   hatpicctl/experimentcommand.cpp
-  hatpicctl/experimenttext.cpp hatpicctl/experimenttext.h)
+  hatpicctl/experimenttext.cpp hatpicctl/experimenttext.h
+  hatpicctl/vibratecommand.cpp)
 target_link_libraries(hatpicctl PRIVATE hatpic::core hatpic_appcommon hatpic::build_settings)
 target_compile_definitions(hatpicctl PRIVATE HATPIC_VERSION="${PROJECT_VERSION}")
 set_target_properties(hatpicctl PROPERTIES AUTOMOC ON)

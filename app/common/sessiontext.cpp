@@ -78,6 +78,15 @@ QString commandFailureText(const CommandResult &r)
         return {};
     case Status::Rejected: {
         const QString status = v2::ackStatusName(r.ackStatus);
+        if (r.field >= 0 && r.command == CommandKind::SetEffects) {
+            return u"The device rejected " % QString::fromLatin1(effectFieldName(r.field)) %
+                   u" (field " % number(r.field) % u"): " % status %
+                   u"; its effects are unchanged.";
+        }
+        if (r.field >= 0 && r.command == CommandKind::Vibrate) {
+            return u"The device rejected VIBRATE (field " % number(r.field) % u"): " % status %
+                   u'.';
+        }
         if (r.field >= 0) {
             return u"The device rejected " % QString::fromLatin1(deviceFieldName(r.field)) %
                    u" (field " % number(r.field) % u"): " % status %
@@ -98,6 +107,12 @@ QString commandFailureText(const CommandResult &r)
             return QStringLiteral("Not connected to a device.");
         }
     case Status::Unsupported:
+        if (r.reason == Reason::NoEffects)
+            return name % u" is not available: the device runs the published firmware (legacy "
+                          u"protocol), which cannot render effects.";
+        if (r.reason == Reason::NoEffectsCapability)
+            return name % u" is not available: this device's firmware does not announce the "
+                          u"effects capability, so it cannot render effects.";
         return name %
                u" is not available: the device runs the published firmware (legacy protocol), " %
                (r.reason == Reason::FixedRate
@@ -108,6 +123,12 @@ QString commandFailureText(const CommandResult &r)
         if (r.reason == Reason::QueueFull)
             return u"Too many commands are waiting (" % number(r.limit) % u"); " % name %
                    u" was not sent.";
+        if (r.command == CommandKind::Vibrate)
+            return u"The vibration cue is not valid: " % r.problems.join(QStringLiteral("; ")) %
+                   u"; nothing was sent.";
+        if (r.command == CommandKind::SetEffects)
+            return u"The effects are not valid: " % r.problems.join(QStringLiteral("; ")) %
+                   u"; nothing was sent.";
         return u"The parameters are not valid: " % r.problems.join(QStringLiteral("; ")) % u'.';
     }
     return {};

@@ -57,6 +57,7 @@ std::vector<std::unique_ptr<Command>> allCommands()
     commands.push_back(makeSimulateCommand());
     commands.push_back(makeValidateCommand());
     commands.push_back(makeExperimentCommand());
+    commands.push_back(makeVibrateCommand());
     return commands;
 }
 

@@ -18,5 +18,6 @@ std::unique_ptr<Command> makeCurveCommand();
 std::unique_ptr<Command> makeSimulateCommand();
 std::unique_ptr<Command> makeValidateCommand();
 std::unique_ptr<Command> makeExperimentCommand();
+std::unique_ptr<Command> makeVibrateCommand();
 
 } // namespace hatpic::cli

@@ -19,7 +19,8 @@ public:
     QString name() const override { return QStringLiteral("curve"); }
     QString summary() const override
     {
-        return QStringLiteral("Print K_rec and tau_rec of a profile over an angle range (CSV).");
+        return QStringLiteral(
+            "Print K_rec, tau_rec and the static effect torques of a profile (CSV).");
     }
     QString synopsis() const override
     {
@@ -29,9 +30,11 @@ public:
     {
         return QStringLiteral(
             "Computes the model offline (no device). Prints CSV with the header\n"
-            "theta,K_rec,tau_rec: theta is the absolute knob angle [rad], K_rec the\n"
-            "re-centering stiffness [N·m/rad] and tau_rec = -K_rec·(theta - theta0) [N·m]\n"
-            "with the profile's theta0. Rows: theta = FROM + i·STEP while below TO, then TO\n"
+            "theta,K_rec,tau_rec,tau_det,tau_wall: theta is the absolute knob angle [rad],\n"
+            "K_rec the re-centering stiffness [N·m/rad], tau_rec = -K_rec·(theta - theta0)\n"
+            "[N·m] with the profile's theta0, and tau_det, tau_wall the detent and end-stop\n"
+            "torques of the profile's effects at rest (omega = 0) [N·m]; 0 without effects.\n"
+            "Rows: theta = FROM + i·STEP while below TO, then TO\n"
             "itself. Defaults: from -pi/2 to pi/2, step 0.01. Numbers are printed with\n"
             "the shortest digits that read back as the identical double.");
     }
@@ -84,7 +87,7 @@ public:
         writeOut(curveHeader());
         QByteArray chunk;
         for (qint64 i = 0; i < *rows; ++i) {
-            chunk += curveRow(profile->device, grid.angle(i, *rows));
+            chunk += curveRow(profile->device, profile->effects, grid.angle(i, *rows));
             if (chunk.size() > 1 << 16) {
                 writeOut(chunk);
                 chunk.clear();

@@ -52,14 +52,17 @@ double AngleGrid::angle(qint64 i, qint64 rows) const
 
 QByteArray curveHeader()
 {
-    return QByteArrayLiteral("theta,K_rec,tau_rec\n");
+    return QByteArrayLiteral("theta,K_rec,tau_rec,tau_det,tau_wall\n");
 }
 
-QByteArray curveRow(const DeviceParams &params, double theta)
+QByteArray curveRow(const DeviceParams &params, const EffectParams &effects, double theta)
 {
+    const double e = theta - params.theta0;
     return compactNumberText(theta).toLatin1() + ',' +
            compactNumberText(recenteringStiffness(params, theta)).toLatin1() + ',' +
-           compactNumberText(recenteringTorque(params, theta)).toLatin1() + '\n';
+           compactNumberText(recenteringTorque(params, theta)).toLatin1() + ',' +
+           compactNumberText(detentTorque(effects, e)).toLatin1() + ',' +
+           compactNumberText(wallTorque(effects, e, 0.0)).toLatin1() + '\n';
 }
 
 } // namespace hatpic::cli

@@ -1,6 +1,8 @@
-// The table `hatpicctl curve` prints: K_rec(θ) and τ_rec(θ) over a grid of angles.
+// The table `hatpicctl curve` prints: K_rec(θ), τ_rec(θ) and the static effect torques τ_det(θ),
+// τ_wall(θ) (ω = 0) over a grid of angles.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 
 #include <QByteArray>
@@ -28,9 +30,10 @@ struct AngleGrid
     double angle(qint64 i, qint64 rows) const;
 };
 
-//! "theta,K_rec,tau_rec\n"
+//! "theta,K_rec,tau_rec,tau_det,tau_wall\n"
 QByteArray curveHeader();
-//! One CSV row for angle θ with the profile's device parameters (θ0 from them).
-QByteArray curveRow(const DeviceParams &params, double theta);
+//! One CSV row for angle θ with the profile's device parameters (θ0 from them) and effects,
+//! at rest (ω = 0: the walls' damping does not act).
+QByteArray curveRow(const DeviceParams &params, const EffectParams &effects, double theta);
 
 } // namespace hatpic::cli

@@ -29,7 +29,10 @@ public:
                    "parameter: name, value, unit, meaning. --json prints a complete profile\n"
                    "that 'hatpicctl set --profile' accepts (host settings are defaults, with\n"
                    "the device's tau_limit). The device holds 32-bit floats; each is shown\n"
-                   "as the shortest decimal that gives back that float.\n\n") +
+                   "as the shortest decimal that gives back that float. A device with the\n"
+                   "effects capability is also asked for its effect block (GET_EFFECTS): seven\n"
+                   "more lines, and the profile's device.effects when they are not the\n"
+                   "defaults.\n\n") +
                portHelp();
     }
 
@@ -54,7 +57,21 @@ protected:
             printError(u"The device reported parameters that are not valid: " + problem + u'.');
             return ExitNoDevice;
         }
-        writeOut(parameterOutput(runner.client().deviceParams(), runner.client().deviceInfo(),
+        std::optional<EffectParams> effects;
+        const DeviceInfo info = runner.client().deviceInfo();
+        if (info.hasEffects()) {
+            if (const int code = runner.runCommand(&DeviceClient::readEffects, &result); code)
+                return code;
+            if (const int code = DeviceRunner::reportResult(result); code)
+                return code;
+            effects = result.effectsReceived;
+            if (const QString problem = deviceEffectsProblem(*effects, info.tauLimit);
+                !problem.isEmpty()) {
+                printError(u"The device reported effects that are not valid: " + problem + u'.');
+                return ExitNoDevice;
+            }
+        }
+        writeOut(parameterOutput(runner.client().deviceParams(), effects, info,
                                  parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;
     }

@@ -55,7 +55,37 @@ QString parameterTable(const DeviceParams &params)
     return text;
 }
 
-QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info)
+EffectParams tidyEffectParams(const EffectParams &effects)
+{
+    EffectParams tidy = effects;
+    for (int i = 0; i < EffectParams::kFieldCount; ++i)
+        tidy.setField(i, shortestFloatDecimal(effects.field(i)));
+    return tidy;
+}
+
+QString effectTable(const EffectParams &effects)
+{
+    QString out;
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        const EffectFieldSpec &spec = kEffectFields[static_cast<std::size_t>(i)];
+        out += text(spec.name).leftJustified(16) +
+               compactNumberText(effects.field(i)).leftJustified(14) + u' ' +
+               text(spec.unit).leftJustified(11) + text(spec.meaning) + u'\n';
+    }
+    return out;
+}
+
+QString deviceEffectsProblem(const EffectParams &effects, double tauLimit)
+{
+    QStringList problems;
+    for (const Violation &v : validate(effects, tauLimit))
+        problems << QString::fromStdString(v.message());
+    return problems.join(QStringLiteral("; "));
+}
+
+namespace {
+
+Profile profileFromDevice(const DeviceParams &params, const DeviceInfo &info)
 {
     Profile profile;
     profile.name = QStringLiteral("Read from device");
@@ -65,7 +95,14 @@ QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info)
     profile.device = tidyDeviceParams(params);
     if (std::isfinite(info.tauLimit) && info.tauLimit > 0 && info.tauLimit <= 10)
         profile.host.tau_limit = shortestFloatDecimal(info.tauLimit);
-    return serializeProfile(profile);
+    return profile;
+}
+
+} // namespace
+
+QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info)
+{
+    return serializeProfile(profileFromDevice(params, info));
 }
 
 QString deviceParamsProblem(const DeviceParams &params)
@@ -79,6 +116,18 @@ QString deviceParamsProblem(const DeviceParams &params)
 QByteArray parameterOutput(const DeviceParams &params, const DeviceInfo &info, bool json)
 {
     return json ? parameterProfile(params, info) : parameterTable(params).toUtf8();
+}
+
+QByteArray parameterOutput(const DeviceParams &params, const std::optional<EffectParams> &effects,
+                           const DeviceInfo &info, bool json)
+{
+    if (!effects)
+        return parameterOutput(params, info, json);
+    if (!json)
+        return (parameterTable(params) + effectTable(*effects)).toUtf8();
+    Profile profile = profileFromDevice(params, info);
+    profile.effects = tidyEffectParams(*effects);
+    return serializeProfile(profile);
 }
 
 } // namespace hatpic::cli

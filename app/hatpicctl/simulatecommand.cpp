@@ -54,8 +54,11 @@ public:
                    "  hand:ANGLE       a virtual hand (spring 2 N·m/rad, damper 0.05 N·m·s/rad)\n"
                    "                   holding the knob toward ANGLE [rad, absolute]\n"
                    "\n"
+                   "The profile's effects (device.effects, docs/effects.md) are rendered too and\n"
+                   "reported in tau_fx.\n"
+                   "\n"
                    "--ideal removes the servo's lag, tick quantisation and load-reading noise, so\n"
-                   "the rows are the model of docs/model.md alone.");
+                   "the rows are the model of docs/model.md (with its effects) alone.");
     }
     void addOptions(QCommandLineParser &parser) override
     {
@@ -132,6 +135,7 @@ public:
         if (!profile)
             return ExitBadUsage;
         config.device = profile->device;
+        config.effects = profile->effects;
         config.host = profile->host;
 
         if (const QString problem = OfflineSimulation::check(config); !problem.isEmpty()) {

@@ -22,6 +22,7 @@ bool ProfileParamStore::load(fw::StoredSettings &out)
         return false;
     }
     out.params = read.profile->device;
+    out.effects = read.profile->effects;
     return true;
 }
 
@@ -31,6 +32,7 @@ bool ProfileParamStore::save(const fw::StoredSettings &settings)
     profile.name = QStringLiteral("hatpic-fw-host state");
     profile.notes = QStringLiteral("Parameters saved by hatpic-fw-host (SAVE_PARAMS).");
     profile.device = settings.params;
+    profile.effects = settings.effects;
     profile.host.tau_limit = m_tauLimit;
     m_warning = writeProfile(profile, m_path);
     return m_warning.isEmpty();

@@ -64,6 +64,15 @@ EffectParams roundedForWire(const EffectParams &effects, double tauLimit)
     return out;
 }
 
+bool sameOnWire(const EffectParams &a, const EffectParams &b)
+{
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        if (static_cast<float>(a.field(i)) != static_cast<float>(b.field(i)))
+            return false;
+    }
+    return true;
+}
+
 namespace {
 
 //! The table's rules plus f < controlRate/2 (a cue above Nyquist would alias).

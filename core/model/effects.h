@@ -59,6 +59,8 @@ int firstViolatingField(const Vibration &vibration, double tauLimit, double cont
 //! inward where rounding alone would leave a bound it satisfied (the defaults ±π are not
 //! floats: float(π) > π). detent_strength's bound is `tauLimit` [N·m].
 EffectParams roundedForWire(const EffectParams &effects, double tauLimit);
+//! True when both blocks are the same float32 fields (what "in sync" means for a read-back).
+bool sameOnWire(const EffectParams &a, const EffectParams &b);
 
 //! The torque-relevant fields in the scalar type that evaluates them.
 template<typename T> struct EffectShape

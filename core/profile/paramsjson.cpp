@@ -166,11 +166,24 @@ QByteArray JsonObjectWriter::text() const
     return "{\n" + m_items.join(",\n") + '\n' + QByteArray(m_indent, ' ') + '}';
 }
 
-QByteArray deviceParamsJson(const DeviceParams &params, int indent)
+JsonObjectWriter deviceParamsWriter(const DeviceParams &params, int indent)
 {
     JsonObjectWriter writer(indent);
     for (int i = 0; i < DeviceParams::kFieldCount; ++i)
         writer.add(deviceFieldName(i).data(), jsonNumber(params.field(i)));
+    return writer;
+}
+
+QByteArray deviceParamsJson(const DeviceParams &params, int indent)
+{
+    return deviceParamsWriter(params, indent).text();
+}
+
+QByteArray effectParamsJson(const EffectParams &effects, int indent)
+{
+    JsonObjectWriter writer(indent);
+    for (int i = 0; i < EffectParams::kFieldCount; ++i)
+        writer.add(effectFieldName(i).data(), jsonNumber(effects.field(i)));
     return writer.text();
 }
 
@@ -191,10 +204,10 @@ QByteArray hostParamsJson(const HostParams &params, int indent)
 
 std::array<bool, DeviceParams::kFieldCount>
 readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams &params,
-                 QStringList &errors, QStringList *warnings)
+                 QStringList &errors, QStringList *warnings, const QStringList &otherKeys)
 {
     std::array<bool, DeviceParams::kFieldCount> present{};
-    QStringList known;
+    QStringList known = otherKeys;
     for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
         const QString name = latin1(deviceFieldName(i));
         known.append(name);
@@ -210,6 +223,29 @@ readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams 
     }
     if (warnings)
         warnUnknownKeys(object, known, prefix, *warnings);
+    return present;
+}
+
+std::array<bool, EffectParams::kFieldCount>
+readEffectParams(const QJsonObject &object, const QString &prefix, EffectParams &effects,
+                 QStringList &errors, QStringList &warnings)
+{
+    std::array<bool, EffectParams::kFieldCount> present{};
+    QStringList known;
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        const QString name = latin1(effectFieldName(i));
+        known.append(name);
+        const QJsonValue value = object.value(name);
+        if (value.isUndefined())
+            continue;
+        if (value.isDouble()) {
+            effects.setField(i, value.toDouble());
+            present[static_cast<std::size_t>(i)] = true;
+        } else {
+            errors.append(prefix + name + u": must be a number, got " + jsonValueText(value));
+        }
+    }
+    warnUnknownKeys(object, known, prefix, warnings);
     return present;
 }
 

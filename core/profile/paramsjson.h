@@ -3,6 +3,7 @@
 // hold, profile.md's `device` and `host`. Written and read here, and nowhere else.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 
 #include <QByteArray>
@@ -43,6 +44,10 @@ private:
 
 //! The `device` object of profile.md: every field of the parameter table, in table order.
 QByteArray deviceParamsJson(const DeviceParams &params, int indent);
+//! The same object still open, for a profile to add its `effects` object after those keys.
+JsonObjectWriter deviceParamsWriter(const DeviceParams &params, int indent);
+//! The `effects` object (effects.md § 2): every field of the effect block, in wire order.
+QByteArray effectParamsJson(const EffectParams &effects, int indent);
 //! The `host` object of profile.md: mode, v_max, ref_deadzone, tau_limit.
 QByteArray hostParamsJson(const HostParams &params, int indent);
 //! The same object still open, for a profile to add its `bridge` object after those keys.
@@ -52,9 +57,16 @@ JsonObjectWriter hostParamsWriter(const HostParams &params, int indent);
 //! or not a number is left as it is and reported in `errors` ("<prefix>K_max: missing, must be a
 //! number"). Keys that name no field are reported in `warnings`, when given. No rule of
 //! model.md is checked here. Returns which fields were set.
+//! `otherKeys` are keys the caller reads itself (a profile's `effects`).
 std::array<bool, DeviceParams::kFieldCount>
 readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams &params,
-                 QStringList &errors, QStringList *warnings);
+                 QStringList &errors, QStringList *warnings, const QStringList &otherKeys = {});
+//! Reads an `effects` object into `effects`: a missing key keeps its value (the default), one
+//! that is not a number is an error; unknown keys are warnings. No rule of effects.md is
+//! checked here. Returns which fields were set.
+std::array<bool, EffectParams::kFieldCount>
+readEffectParams(const QJsonObject &object, const QString &prefix, EffectParams &effects,
+                 QStringList &errors, QStringList &warnings);
 //! Reads a `host` object into `params` as readDeviceParams() does, except that a missing key is
 //! no error (it keeps its value). `otherKeys` are keys the caller reads itself (a profile's
 //! `bridge`), so no warning names them. Returns the names of the number fields that held

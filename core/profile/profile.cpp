@@ -37,11 +37,15 @@ struct PresetEntry
     const char16_t *path;
 };
 
-constexpr std::array<PresetEntry, 3> kPresets = {{
+constexpr std::array<PresetEntry, 5> kPresets = {{
     {u"Default", u":/presets/default.json"},
     {u"Soft", u":/presets/soft.json"},
     {u"Notchy", u":/presets/notchy.json"},
+    {u"Detents", u":/presets/detents.json"},
+    {u"Walled", u":/presets/walled.json"},
 }};
+
+const QString kEffectsKey = QStringLiteral("effects");
 
 // Checks format and version. Returns false when the document is not a profile this build can
 // read, in which case nothing else is examined.
@@ -103,12 +107,33 @@ void readDevice(const QJsonObject &root, DeviceParams &device, QStringList &erro
     for (int i = 0; i < DeviceParams::kFieldCount; ++i)
         device.setField(i, std::nan(""));
     const auto present = readDeviceParams(deviceValue.toObject(), QStringLiteral("device."), device,
-                                          errors, &warnings);
+                                          errors, &warnings, {kEffectsKey});
 
     // Range and cross-field rules.
     for (const Violation &v : validate(device)) {
         if (v.index >= 0 && present[static_cast<std::size_t>(v.index)])
             errors.append(u"device." + QString::fromStdString(v.message()));
+    }
+}
+
+// device.effects: optional; each missing key keeps its default. Checked against the profile's
+// tau_limit (host), the actuator limit the detents may not exceed.
+void readEffects(const QJsonObject &root, double tauLimit, EffectParams &effects,
+                 QStringList &errors, QStringList &warnings)
+{
+    const QJsonValue value = root.value(u"device").toObject().value(kEffectsKey);
+    if (value.isUndefined())
+        return;
+    const QString prefix = u"device."_s + kEffectsKey + u'.';
+    if (!value.isObject()) {
+        errors.append(u"device."_s + kEffectsKey + u": must be an object, got " +
+                      jsonValueText(value));
+        return;
+    }
+    const auto present = readEffectParams(value.toObject(), prefix, effects, errors, warnings);
+    for (const Violation &v : validate(effects, tauLimit)) {
+        if (v.index >= 0 && present[static_cast<std::size_t>(v.index)])
+            errors.append(prefix + QString::fromStdString(v.message()));
     }
 }
 
@@ -148,6 +173,18 @@ QByteArray hostJson(const Profile &profile)
     defaults.domainId = profile.bridge.domainId;
     if (profile.bridge != defaults)
         writer.add(kHostBridgeKey, bridgeSettingsJson(profile.bridge, 4));
+    return writer.text();
+}
+
+// The device object; its effects object only when the block travels differently from the
+// defaults (a device's read-back of them is ±π moved inside by one float), so profiles
+// without effects stay as they were.
+QByteArray deviceJson(const Profile &profile)
+{
+    JsonObjectWriter writer = deviceParamsWriter(profile.device, 2);
+    const double tauLimit = profile.host.tau_limit;
+    if (roundedForWire(profile.effects, tauLimit) != roundedForWire(EffectParams{}, tauLimit))
+        writer.add("effects", effectParamsJson(profile.effects, 4));
     return writer.text();
 }
 
@@ -196,6 +233,7 @@ ProfileReadResult parseProfile(const QByteArray &json)
     readOptionalString(root, u"notes", profile.notes, result.errors);
     readDevice(root, profile.device, result.errors, result.warnings);
     readHost(root, profile.host, profile.bridge, result.errors, result.warnings);
+    readEffects(root, profile.host.tau_limit, profile.effects, result.errors, result.warnings);
 
     if (result.errors.isEmpty())
         result.profile = profile;
@@ -236,7 +274,7 @@ QByteArray serializeProfile(const Profile &profile)
                .add("version", QByteArray::number(kProfileVersion))
                .add("name", jsonString(profile.name))
                .add("notes", jsonString(profile.notes))
-               .add("device", deviceParamsJson(profile.device, 2))
+               .add("device", deviceJson(profile))
                .add("host", hostJson(profile))
                .text() +
            '\n';
@@ -250,6 +288,8 @@ QString writeProfile(const Profile &profile, const QString &path)
         problems.append(u"device." + QString::fromStdString(v.message()));
     for (const Violation &v : validate(profile.host))
         problems.append(u"host." + QString::fromStdString(v.message()));
+    for (const Violation &v : validate(profile.effects, profile.host.tau_limit))
+        problems.append(u"device.effects." + QString::fromStdString(v.message()));
     for (const std::string &problem : bridge::validate(profile.bridge))
         problems.append(u"host.bridge: " + QString::fromStdString(problem));
     if (!problems.isEmpty())

@@ -3,6 +3,7 @@
 
 #include "bridgesettings.h"
 
+#include "model/effects.h"
 #include "model/params.h"
 
 #include <QByteArray>
@@ -21,6 +22,9 @@ struct Profile
     HostParams host;
     //! host.bridge of the file; its domainId is not part of a profile and stays at the default.
     bridge::BridgeSettings bridge{}; // {}: aggregate initialisers may leave it out
+    //! device.effects of the file; the defaults (which render nothing) when it has none. Last,
+    //! so that aggregate initialisers written before it still mean what they meant.
+    EffectParams effects{};
 
     friend bool operator==(const Profile &, const Profile &) = default;
 };
@@ -48,7 +52,8 @@ QByteArray serializeProfile(const Profile &profile);
 //! Writes atomically with QSaveFile. Returns an empty string on success, else the error.
 QString writeProfile(const Profile &profile, const QString &path);
 
-//! Built-in presets from the resource system (":/presets/…"): "Default", "Soft", "Notchy".
+//! Built-in presets from the resource system (":/presets/…"): "Default", "Soft", "Notchy",
+//! "Detents", "Walled".
 QStringList presetNames();
 //! A preset by name; std::nullopt for an unknown name.
 std::optional<Profile> preset(const QString &name);

@@ -30,7 +30,13 @@ struct DeviceInfo
     double tauLimit = 0.44;     //!< [N·m]
     QString firmware;           //!< legacy: "published firmware (legacy)"
     bool simulated = false;     //!< the in-process simulator
+    quint8 capabilities = 0;    //!< HELLO_REPLY's v2::kCapability* bits; legacy: 0
     bool canSetParams() const { return protocol == WireProtocol::V2; }
+    //! SET_EFFECTS, GET_EFFECTS, VIBRATE and τ_fx in TELEMETRY (effects.md § 3).
+    bool hasEffects() const
+    {
+        return protocol == WireProtocol::V2 && (capabilities & v2::kCapabilityEffects) != 0;
+    }
 };
 
 //! Text a device sent, safe to print: control characters (ESC, CR, LF, …, DEL and C1) become

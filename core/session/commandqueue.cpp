@@ -30,8 +30,57 @@ QByteArray encode(const Command &cmd)
         return v2::encodeFrame(cmd.seq, v2::Zero{});
     case CommandKind::SaveParams:
         return v2::encodeFrame(cmd.seq, v2::SaveParams{});
+    case CommandKind::SetEffects:
+        return v2::encodeFrame(cmd.seq, v2::SetEffects{cmd.effects});
+    case CommandKind::GetEffects:
+        return v2::encodeFrame(cmd.seq, v2::GetEffects{});
+    case CommandKind::Vibrate:
+        return v2::encodeFrame(cmd.seq, v2::Vibrate{static_cast<float>(cmd.vibration.amplitude),
+                                                    static_cast<float>(cmd.vibration.frequency),
+                                                    static_cast<float>(cmd.vibration.duration)});
     }
     return {};
+}
+
+//! Fields of the block a command carries: an ACK's `field` beyond them names nothing.
+int fieldCount(CommandKind kind)
+{
+    switch (kind) {
+    case CommandKind::SetParams:
+        return DeviceParams::kFieldCount;
+    case CommandKind::SetEffects:
+        return EffectParams::kFieldCount;
+    case CommandKind::Vibrate:
+        return 3; // a, f, d
+    default:
+        return 0;
+    }
+}
+
+//! The read-back that follows an acknowledged `kind`, if any.
+std::optional<CommandKind> readBackOf(CommandKind kind)
+{
+    switch (kind) {
+    case CommandKind::SetParams:
+    case CommandKind::Zero:
+        return CommandKind::GetParams;
+    case CommandKind::SetEffects:
+        return CommandKind::GetEffects;
+    default:
+        return std::nullopt;
+    }
+}
+
+//! A result for `cmd` carrying what it sent.
+CommandResult resultFor(const Command &cmd, CommandKind kind, Status status,
+                        Reason reason = Reason::None)
+{
+    CommandResult r = commandResult(kind, status, reason);
+    r.sent = cmd.params;
+    r.effectsSent = cmd.effects;
+    r.vibration = cmd.vibration;
+    r.rate = cmd.rate;
+    return r;
 }
 
 } // namespace
@@ -102,14 +151,10 @@ void CommandQueue::onTimeout()
     }
     if (cmd.readBack) {
         // The device acknowledged the command; only its read-back went unanswered.
-        CommandResult r = commandResult(cmd.origin, Status::Ok, Reason::ReadBackUnanswered);
-        r.sent = cmd.params;
-        finishInflight(r);
+        finishInflight(resultFor(cmd, cmd.origin, Status::Ok, Reason::ReadBackUnanswered));
         return;
     }
-    CommandResult r = commandResult(cmd.kind, Status::Timeout);
-    r.sent = cmd.params;
-    r.rate = cmd.rate;
+    CommandResult r = resultFor(cmd, cmd.kind, Status::Timeout);
     r.attempts = kCommandRetries + 1;
     r.intervalMs = kCommandTimeoutMs;
     finishInflight(r);
@@ -122,8 +167,9 @@ void CommandQueue::onAck(const v2::Ack &ack)
     switch (m_inflight->kind) {
     case CommandKind::Hello:
     case CommandKind::GetParams:
-        // HELLO and GET_PARAMS are answered by their reply, not an ACK; an ACK here is a
-        // refusal (UNKNOWN_TYPE, BAD_LENGTH, …).
+    case CommandKind::GetEffects:
+        // HELLO, GET_PARAMS and GET_EFFECTS are answered by their reply, not an ACK; an ACK
+        // here is a refusal (UNKNOWN_TYPE, BAD_LENGTH, …).
         if (ack.status == v2::AckStatus::Ok)
             return;
         break;
@@ -133,40 +179,36 @@ void CommandQueue::onAck(const v2::Ack &ack)
     m_timer.stop();
 
     if (ack.status != v2::AckStatus::Ok) {
-        CommandResult r = commandResult(m_inflight->kind, Status::Rejected);
+        CommandResult r = resultFor(*m_inflight, m_inflight->kind, Status::Rejected);
         r.ackStatus = ack.status;
-        r.sent = m_inflight->params;
-        r.rate = m_inflight->rate;
-        if (ack.field != v2::kNoField && ack.field < DeviceParams::kFieldCount)
+        if (ack.field != v2::kNoField && ack.field < fieldCount(m_inflight->kind))
             r.field = ack.field;
         finishInflight(r);
         return;
     }
 
     Command &cmd = *m_inflight;
-    switch (cmd.kind) {
-    case CommandKind::SetParams:
-    case CommandKind::Zero:
+    if (const auto readBack = readBackOf(cmd.kind)) {
         Q_EMIT acknowledged(cmd);
         // Read back what the device now holds, under the same request id.
         cmd.origin = cmd.kind;
-        cmd.kind = CommandKind::GetParams;
+        cmd.kind = *readBack;
         cmd.readBack = true;
         cmd.retries = 0;
         sendInflight();
         return;
-    case CommandKind::SetStream: {
+    }
+    switch (cmd.kind) {
+    case CommandKind::SetStream:
+    case CommandKind::Vibrate: {
         Q_EMIT acknowledged(cmd);
-        CommandResult r = commandResult(CommandKind::SetStream, Status::Ok);
-        r.rate = cmd.rate;
-        finishInflight(r);
+        finishInflight(resultFor(cmd, cmd.kind, Status::Ok));
         return;
     }
     case CommandKind::SaveParams:
         finishInflight(commandResult(CommandKind::SaveParams, Status::Ok));
         return;
-    case CommandKind::Hello:
-    case CommandKind::GetParams:
+    default: // HELLO, GET_PARAMS, GET_EFFECTS: answered above
         return;
     }
 }
@@ -184,6 +226,22 @@ void CommandQueue::onParams(const DeviceParams &params)
         r.sent = cmd.params;
         // ZERO changes θ0 by design: its read-back is the new value, not a comparison.
         r.readBackMatches = cmd.origin == CommandKind::Zero || sameOnWire(cmd.params, params);
+    }
+    finishInflight(r);
+}
+
+void CommandQueue::onEffects(const EffectParams &effects)
+{
+    if (!m_inflight || m_inflight->kind != CommandKind::GetEffects)
+        return;
+    m_timer.stop();
+    const Command &cmd = *m_inflight;
+    CommandResult r = commandResult(cmd.readBack ? cmd.origin : cmd.kind, Status::Ok);
+    r.effectsReceived = effects;
+    if (cmd.readBack) {
+        r.readBack = true;
+        r.effectsSent = cmd.effects;
+        r.readBackMatches = sameOnWire(cmd.effects, effects);
     }
     finishInflight(r);
 }

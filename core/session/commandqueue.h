@@ -1,7 +1,7 @@
 // The v2 command channel: one command in flight, a bounded queue behind it, resends on a
 // timeout (same bytes, same seq, so the device answers a retry without applying it twice),
-// matching of ACKs and PARAMS to the command in flight, and the GET_PARAMS read-back that
-// follows SET_PARAMS and ZERO under the same request id.
+// matching of ACKs, PARAMS and EFFECTS to the command in flight, and the read-back that follows
+// SET_PARAMS and ZERO (GET_PARAMS) and SET_EFFECTS (GET_EFFECTS) under the same request id.
 //
 // Writes through a function it is given; knows nothing of links, drivers or the session.
 #pragma once
@@ -24,9 +24,12 @@ struct Command
 {
     quint64 id = 0; //!< 0 = the session's own (connect sequence), not reported
     CommandKind kind = CommandKind::GetParams;
-    DeviceParams params;                         //!< SET_PARAMS: what was sent (float32-rounded)
-    quint16 rate = 0;                            //!< SET_STREAM
-    bool readBack = false;                       //!< the GET_PARAMS stage after SET_PARAMS / ZERO
+    DeviceParams params;  //!< SET_PARAMS: what was sent (float32-rounded)
+    EffectParams effects; //!< SET_EFFECTS: what was sent (float32-rounded)
+    Vibration vibration;  //!< VIBRATE
+    quint16 rate = 0;     //!< SET_STREAM
+    bool readBack =
+        false; //!< the GET_PARAMS (GET_EFFECTS) stage after SET_PARAMS, ZERO (SET_EFFECTS)
     CommandKind origin = CommandKind::GetParams; //!< the command a read-back belongs to
     quint8 seq = 0;
     int retries = 0;
@@ -61,6 +64,8 @@ public:
     void onAck(const v2::Ack &ack);
     //! A PARAMS arrived: answers a GET_PARAMS (or a read-back) in flight.
     void onParams(const DeviceParams &params);
+    //! An EFFECTS arrived: answers a GET_EFFECTS (or SET_EFFECTS' read-back) in flight.
+    void onEffects(const EffectParams &effects);
     //! HELLO_REPLY arrived: a HELLO in flight is answered (detection handles the reply).
     void onHelloReply();
     //! Finishes every command (in flight and queued) as NotConnected for `reason`.
@@ -69,8 +74,8 @@ public:
 Q_SIGNALS:
     //! A command ended; `command.id == 0` for the session's own.
     void finished(const hatpic::Command &command, const hatpic::CommandResult &result);
-    //! The device acknowledged `command` (OK): SET_PARAMS and ZERO before their read-back,
-    //! SET_STREAM before finished().
+    //! The device acknowledged `command` (OK): SET_PARAMS, ZERO and SET_EFFECTS before their
+    //! read-back, SET_STREAM and VIBRATE before finished().
     void acknowledged(const hatpic::Command &command);
     //! A command frame was sent again.
     void retried();

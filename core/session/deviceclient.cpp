@@ -33,6 +33,12 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
                 m_hasParams = true;
                 Q_EMIT deviceParamsChanged(params);
             });
+    connect(m_session, &DeviceSession::deviceEffectsChanged, this,
+            [this](const EffectParams &effects) {
+                m_effects = effects;
+                m_hasEffects = true;
+                Q_EMIT deviceEffectsChanged(effects);
+            });
     // The streams below are forwarded from the session thread (direct connections) and
     // posted here only while few of their kind wait, so a frozen thread's queue stays bounded.
     connect(
@@ -105,6 +111,7 @@ bool DeviceClient::post(std::atomic<int> &pending, int cap, Deliver deliver)
 void DeviceClient::connectDevice(const ConnectOptions &options)
 {
     m_hasParams = false;
+    m_hasEffects = false;
     QMetaObject::invokeMethod(m_session, [s = m_session, options] { s->connectDevice(options); });
 }
 
@@ -146,6 +153,29 @@ quint64 DeviceClient::setStreamRate(quint16 hz)
 {
     const quint64 id = nextId();
     QMetaObject::invokeMethod(m_session, [s = m_session, id, hz] { s->setStreamRate(id, hz); });
+    return id;
+}
+
+quint64 DeviceClient::pushEffects(const EffectParams &effects)
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session,
+                              [s = m_session, id, effects] { s->pushEffects(id, effects); });
+    return id;
+}
+
+quint64 DeviceClient::readEffects()
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->readEffects(id); });
+    return id;
+}
+
+quint64 DeviceClient::vibrate(const Vibration &vibration)
+{
+    const quint64 id = nextId();
+    QMetaObject::invokeMethod(m_session,
+                              [s = m_session, id, vibration] { s->vibrate(id, vibration); });
     return id;
 }
 

@@ -32,11 +32,14 @@ public:
     void disconnectDevice();
 
     //! Commands; each returns a request id that commandFinished() reports back.
-    quint64 pushParams(const DeviceParams &params); //!< SET_PARAMS, then GET_PARAMS read-back
-    quint64 readParams();                           //!< GET_PARAMS
-    quint64 zero();                                 //!< ZERO, then GET_PARAMS
-    quint64 saveParams();                           //!< SAVE_PARAMS
-    quint64 setStreamRate(quint16 hz);              //!< SET_STREAM
+    quint64 pushParams(const DeviceParams &params);   //!< SET_PARAMS, then GET_PARAMS read-back
+    quint64 readParams();                             //!< GET_PARAMS
+    quint64 zero();                                   //!< ZERO, then GET_PARAMS
+    quint64 saveParams();                             //!< SAVE_PARAMS
+    quint64 setStreamRate(quint16 hz);                //!< SET_STREAM
+    quint64 pushEffects(const EffectParams &effects); //!< SET_EFFECTS, then GET_EFFECTS
+    quint64 readEffects();                            //!< GET_EFFECTS
+    quint64 vibrate(const Vibration &vibration);      //!< VIBRATE (fire-and-forget, ACKed)
 
     void setFeedback(double tauExt);              //!< τ_ext streamed to the device [N·m]
     void setHostParams(const HostParams &host);   //!< reference model settings
@@ -53,6 +56,9 @@ public:
     DeviceInfo deviceInfo() const { return m_info; }
     DeviceParams deviceParams() const { return m_params; }
     bool hasDeviceParams() const { return m_hasParams; }
+    EffectParams deviceEffects() const { return m_effects; }
+    //! An EFFECTS arrived on this connection (a device with the effects capability).
+    bool hasDeviceEffects() const { return m_hasEffects; }
     LinkStats stats() const { return m_stats; }
     RecordingStatus recordingStatus() const { return m_recording; }
     //! Sample batches never delivered because kMaxPendingBatches were already waiting (the
@@ -63,7 +69,8 @@ Q_SIGNALS:
     //! `detail` says why, in codes and numbers (ui/ and hatpicctl word it).
     void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
-    void deviceParamsChanged(const hatpic::DeviceParams &params); //!< the device's read-back
+    void deviceParamsChanged(const hatpic::DeviceParams &params);   //!< the device's read-back
+    void deviceEffectsChanged(const hatpic::EffectParams &effects); //!< the device's read-back
     void samplesReady(const hatpic::SampleBatch &batch);
     void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
@@ -85,6 +92,8 @@ private:
     DeviceInfo m_info;
     DeviceParams m_params;
     bool m_hasParams = false;
+    EffectParams m_effects;
+    bool m_hasEffects = false;
     LinkStats m_stats;
     RecordingStatus m_recording;
     // Shared with the session thread: only these atomics are touched from both threads.

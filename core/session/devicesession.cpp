@@ -8,6 +8,8 @@
 #include <QLoggingCategory>
 #include <QStringBuilder>
 
+#include <limits>
+
 Q_LOGGING_CATEGORY(lcSession, "hatpic.device.session", QtWarningMsg)
 
 namespace hatpic {
@@ -16,6 +18,15 @@ namespace {
 
 using Status = CommandResult::Status;
 using Reason = CommandResult::Reason;
+
+//! A command of `kind` for request `id`, its other fields at their defaults.
+Command command(quint64 id, CommandKind kind)
+{
+    Command cmd;
+    cmd.id = id;
+    cmd.kind = kind;
+    return cmd;
+}
 
 } // namespace
 
@@ -54,6 +65,8 @@ DeviceSession::DeviceSession(QObject *parent)
     connect(&m_samples, &SamplePipeline::recordingChanged, this, &DeviceSession::recordingChanged);
     connect(&m_samples, &SamplePipeline::deviceParamsChanged, this,
             &DeviceSession::deviceParamsChanged);
+    connect(&m_samples, &SamplePipeline::deviceEffectsChanged, this,
+            &DeviceSession::deviceEffectsChanged);
 }
 
 DeviceSession::~DeviceSession()
@@ -321,44 +334,72 @@ void DeviceSession::pushParams(quint64 id, const DeviceParams &params)
             return;
         }
     }
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::SetParams;
+    Command cmd = command(id, CommandKind::SetParams);
     cmd.params = roundedForWire(params);
     submit(cmd);
 }
 
 void DeviceSession::readParams(quint64 id)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::GetParams;
-    submit(cmd);
+    submit(command(id, CommandKind::GetParams));
 }
 
 void DeviceSession::zero(quint64 id)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::Zero;
-    submit(cmd);
+    submit(command(id, CommandKind::Zero));
 }
 
 void DeviceSession::saveParams(quint64 id)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::SaveParams;
-    submit(cmd);
+    submit(command(id, CommandKind::SaveParams));
 }
 
 void DeviceSession::setStreamRate(quint64 id, quint16 hz)
 {
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = CommandKind::SetStream;
+    Command cmd = command(id, CommandKind::SetStream);
     cmd.rate = hz;
     submit(cmd);
+}
+
+void DeviceSession::pushEffects(quint64 id, const EffectParams &effects)
+{
+    Command cmd = command(id, CommandKind::SetEffects);
+    cmd.effects = effects;
+    // Validated only once the device (its tau_limit) is known: submit() refuses before then.
+    if (m_driver && m_validate && refuseInvalid(cmd, validate(effects, m_info.tauLimit)))
+        return;
+    cmd.effects = roundedForWire(effects, m_info.tauLimit);
+    submit(cmd);
+}
+
+void DeviceSession::readEffects(quint64 id)
+{
+    submit(command(id, CommandKind::GetEffects));
+}
+
+void DeviceSession::vibrate(quint64 id, const Vibration &vibration)
+{
+    Command cmd = command(id, CommandKind::Vibrate);
+    cmd.vibration = vibration;
+    // The control rate is the device's: an infinite one leaves f < rate/2 to the device.
+    if (m_driver && m_validate &&
+        refuseInvalid(
+            cmd, validate(vibration, m_info.tauLimit, std::numeric_limits<double>::infinity())))
+        return;
+    submit(cmd);
+}
+
+bool DeviceSession::refuseInvalid(const Command &cmd, const std::vector<Violation> &violations)
+{
+    if (violations.empty() || m_driver->refusal(cmd.kind) != Reason::None)
+        return false; // nothing wrong, or submit() gives the better reason (unsupported)
+    CommandResult r = commandResult(cmd.kind, Status::Invalid, Reason::InvalidParams);
+    r.effectsSent = cmd.effects;
+    r.vibration = cmd.vibration;
+    for (const Violation &v : violations)
+        r.problems << QString::fromStdString(v.message());
+    Q_EMIT commandFinished(cmd.id, r);
+    return true;
 }
 
 void DeviceSession::submit(Command command)

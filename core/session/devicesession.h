@@ -48,6 +48,12 @@ public:
     void zero(quint64 id);
     void saveParams(quint64 id);
     void setStreamRate(quint64 id, quint16 hz);
+    //! SET_EFFECTS, then GET_EFFECTS read-back; validated against the device's tau_limit.
+    void pushEffects(quint64 id, const EffectParams &effects);
+    void readEffects(quint64 id); //!< GET_EFFECTS
+    //! VIBRATE; validated against the device's tau_limit (the device alone knows its control
+    //! rate, so f < rate/2 is its check: OUT_OF_RANGE, field 1).
+    void vibrate(quint64 id, const Vibration &vibration);
 
     void setFeedback(double tauExt);
     void setHostParams(const HostParams &host);
@@ -66,13 +72,15 @@ public:
     SimLink *simLink() const;
     //! Stops (or resumes) the feedback stream, e.g. to see the device's watchdog act.
     void setFeedbackPaused(bool paused) { m_feedback.setPaused(paused); }
-    //! Off: pushParams() sends without host-side validation, to exercise device rejections.
+    //! Off: pushParams(), pushEffects() and vibrate() send without host-side validation, to
+    //! exercise device rejections.
     void setValidateBeforeSending(bool validate) { m_validate = validate; }
 
 Q_SIGNALS:
     void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
     void deviceParamsChanged(const hatpic::DeviceParams &params);
+    void deviceEffectsChanged(const hatpic::EffectParams &effects);
     void samplesReady(const hatpic::SampleBatch &batch);
     void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
@@ -101,6 +109,8 @@ private:
 
     // commands
     void submit(Command command);
+    //! Emits Invalid (InvalidParams) with `violations` for `cmd`; false when there are none.
+    bool refuseInvalid(const Command &cmd, const std::vector<Violation> &violations);
     void onCommandFinished(const Command &command, const CommandResult &result);
 
     // DriverHost
@@ -120,6 +130,11 @@ private:
         m_samples.applyEffect(kind, params);
     }
     void paramsReceived(const DeviceParams &params) override { m_samples.paramsReceived(params); }
+    void effectsApplied(const EffectParams &effects) override { m_samples.effectsApplied(effects); }
+    void effectsReceived(const EffectParams &effects) override
+    {
+        m_samples.effectsReceived(effects);
+    }
     void pongReceived(quint32 token) override { m_ping.onPong(token); }
     void deviceText(const QString &line) override { Q_EMIT deviceLog(line); }
     bool linkOpen() const override { return m_link != nullptr; }

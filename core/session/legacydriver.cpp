@@ -56,6 +56,8 @@ void LegacyDriver::sendFeedback(double tauExt)
 CommandResult::Reason LegacyDriver::refusal(CommandKind kind) const
 {
     // Host settings still apply; only the device side is fixed.
+    if (isEffectCommand(kind))
+        return CommandResult::Reason::NoEffects;
     return kind == CommandKind::SetStream ? CommandResult::Reason::FixedRate
                                           : CommandResult::Reason::NoParameters;
 }

@@ -32,6 +32,10 @@ public:
     virtual void applyEffect(CommandKind kind, const DeviceParams &params) = 0;
     //! A PARAMS message arrived.
     virtual void paramsReceived(const DeviceParams &params) = 0;
+    //! The device now holds `effects` (SET_EFFECTS): takes effect from the next sample on.
+    virtual void effectsApplied(const EffectParams &effects) = 0;
+    //! An EFFECTS message arrived.
+    virtual void effectsReceived(const EffectParams &effects) = 0;
     virtual void pongReceived(quint32 token) = 0;
     //! Text the device sent for people (v2 LOG, legacy boot lines).
     virtual void deviceText(const QString &line) = 0;
@@ -49,7 +53,8 @@ public:
 
     //! What the device told (or what is known of it).
     virtual DeviceInfo info() const = 0;
-    //! The connection is established: the connect sequence (v2: GET_PARAMS, SET_STREAM).
+    //! The connection is established: the connect sequence (v2: GET_PARAMS, GET_EFFECTS when
+    //! the device has effects, SET_STREAM).
     virtual void start() = 0;
     virtual void feed(const QByteArray &bytes) = 0;
     //! One feedback frame with τ_ext [N·m].

@@ -80,6 +80,17 @@ void RecordingSink::paramsReadBack(const DeviceParams &from, const DeviceParams 
     addEvent(describeParamChange(from, to) % u" (read back)");
 }
 
+void RecordingSink::effectsApplied(const EffectParams &from, const EffectParams &to)
+{
+    const QString change = describeEffectChange(from, to);
+    addEvent(change.isEmpty() ? QStringLiteral("SET_EFFECTS (no change)") : change);
+}
+
+void RecordingSink::effectsReadBack(const EffectParams &from, const EffectParams &to)
+{
+    addEvent(describeEffectChange(from, to) % u" (read back)");
+}
+
 void RecordingSink::zeroed(double theta0Before)
 {
     addEvent(u"ZERO: theta0 := current angle (was " % compactNumberText(theta0Before) % u')');

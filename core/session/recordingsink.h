@@ -2,6 +2,7 @@
 // the status reports (recordingChanged) that go with opening, progress, errors and closing.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 #include "telemetry/recordingwriter.h"
 #include "telemetry/sample.h"
@@ -31,6 +32,9 @@ public:
                        const DeviceParams &to); //!< SET_PARAMS took effect
     void paramsReadBack(const DeviceParams &from, const DeviceParams &to); //!< PARAMS differed
     void zeroed(double theta0Before);                                      //!< ZERO took effect
+    void effectsApplied(const EffectParams &from,
+                        const EffectParams &to); //!< SET_EFFECTS took effect
+    void effectsReadBack(const EffectParams &from, const EffectParams &to); //!< EFFECTS differed
     void hostChanged(const HostParams &from, const HostParams &to);
     void referenceReset();
 Q_SIGNALS:

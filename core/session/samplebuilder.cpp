@@ -62,7 +62,10 @@ Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostU
     s.tau = telemetry.tau;
     s.tau_rec = telemetry.tau_rec;
     s.tau_ext = telemetry.tau_ext;
-    s.tau_total = std::clamp(s.tau_rec + s.tau_ext, -m_tauLimit, m_tauLimit);
+    s.tau_fx =
+        telemetry.tau_fx ? double(*telemetry.tau_fx) : std::numeric_limits<double>::quiet_NaN();
+    const double fx = telemetry.tau_fx ? s.tau_fx : 0.0;
+    s.tau_total = std::clamp(s.tau_rec + fx + s.tau_ext, -m_tauLimit, m_tauLimit);
     s.flags = telemetry.flags;
     addReference(s);
     return s;
@@ -81,6 +84,7 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     s.tau = std::numeric_limits<double>::quiet_NaN();
     s.tau_rec = recenteringTorque(m_stiffness, s.theta);
     s.tau_ext = tauExt;
+    s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // the published firmware has no effects
     const double total = s.tau_rec + s.tau_ext;
     s.tau_total = std::clamp(total, -m_tauLimit, m_tauLimit);
     quint16 flags = kFlagModelEstimated | v2::zoneFlag(stiffnessZone(m_stiffness, s.theta));

@@ -17,6 +17,8 @@ SamplePipeline::SamplePipeline(QObject *parent)
 void SamplePipeline::connectionStarted()
 {
     m_paramsKnown = false;
+    m_effectsKnown = false;
+    m_effects = {};
     m_builder.markDiscontinuity();
     m_batchTimer.start();
 }
@@ -73,6 +75,24 @@ void SamplePipeline::paramsReceived(const DeviceParams &params)
     Q_EMIT deviceParamsChanged(params);
 }
 
+void SamplePipeline::effectsApplied(const EffectParams &effects)
+{
+    flush(); // the event belongs to the next sample, not to those already waiting
+    m_recording.effectsApplied(m_effects, effects);
+    m_effects = effects;
+}
+
+void SamplePipeline::effectsReceived(const EffectParams &effects)
+{
+    if (m_effectsKnown && !sameOnWire(m_effects, effects)) {
+        flush();
+        m_recording.effectsReadBack(m_effects, effects);
+    }
+    m_effects = effects;
+    m_effectsKnown = true;
+    Q_EMIT deviceEffectsChanged(effects);
+}
+
 bool SamplePipeline::setHostParams(const HostParams &host)
 {
     const HostParams old = m_builder.hostParams();
@@ -100,6 +120,8 @@ void SamplePipeline::startRecording(const QString &csvPath, const QString &sourc
     meta.start = QDateTime::currentDateTimeUtc();
     meta.device = device;
     meta.params = m_builder.deviceParams();
+    if (m_effectsKnown)
+        meta.effects = m_effects;
     meta.host = m_builder.hostParams();
     meta.source = source;
     m_recording.open(csvPath, meta);

@@ -43,6 +43,11 @@ public:
     void applyEffect(CommandKind kind, const DeviceParams &params);
     //! A PARAMS message: the copy follows it (an event when it differs from what was held).
     void paramsReceived(const DeviceParams &params);
+    //! SET_EFFECTS (`effects`) took effect on the device: from the next sample on.
+    void effectsApplied(const EffectParams &effects);
+    //! An EFFECTS message: the copy follows it (an event when it differs from what was held).
+    void effectsReceived(const EffectParams &effects);
+    const EffectParams &deviceEffects() const { return m_effects; }
     //! False when `host` equals the parameters in force (nothing changed).
     bool setHostParams(const HostParams &host);
     void resetReference();
@@ -56,13 +61,16 @@ Q_SIGNALS:
     void samplesReady(const hatpic::SampleBatch &batch);
     void recordingChanged(const hatpic::RecordingStatus &status);
     void deviceParamsChanged(const hatpic::DeviceParams &params);
+    void deviceEffectsChanged(const hatpic::EffectParams &effects);
 
 private:
     SampleBuilder m_builder;
     SampleBatch m_batch;
     QTimer m_batchTimer;
     RecordingSink m_recording;
-    bool m_paramsKnown = false; //!< a PARAMS arrived on this connection
+    bool m_paramsKnown = false;  //!< a PARAMS arrived on this connection
+    EffectParams m_effects;      //!< the device's effect block as the host believes it
+    bool m_effectsKnown = false; //!< an EFFECTS arrived on this connection
 };
 
 } // namespace hatpic

@@ -43,6 +43,12 @@ QString commandName(CommandKind kind)
         return QStringLiteral("ZERO");
     case CommandKind::SaveParams:
         return QStringLiteral("SAVE_PARAMS");
+    case CommandKind::SetEffects:
+        return QStringLiteral("SET_EFFECTS");
+    case CommandKind::GetEffects:
+        return QStringLiteral("GET_EFFECTS");
+    case CommandKind::Vibrate:
+        return QStringLiteral("VIBRATE");
     }
     return {};
 }
@@ -77,6 +83,21 @@ QString describeParamChange(const DeviceParams &from, const DeviceParams &to)
     return parts.join(QStringLiteral("; "));
 }
 
+QString describeEffectChange(const EffectParams &from, const EffectParams &to)
+{
+    QStringList parts;
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        const double a = static_cast<float>(from.field(i));
+        const double b = static_cast<float>(to.field(i));
+        if (a != b) {
+            const std::string_view name = effectFieldName(i);
+            parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
+                         compactNumberText(a) % u" → " % compactNumberText(b);
+        }
+    }
+    return parts.join(QStringLiteral("; "));
+}
+
 void registerSessionMetaTypes()
 {
     qRegisterMetaType<hatpic::Sample>();
@@ -92,6 +113,8 @@ void registerSessionMetaTypes()
     qRegisterMetaType<hatpic::RecordingStatus>();
     qRegisterMetaType<hatpic::DeviceParams>();
     qRegisterMetaType<hatpic::HostParams>();
+    qRegisterMetaType<hatpic::EffectParams>();
+    qRegisterMetaType<hatpic::Vibration>();
 }
 
 } // namespace hatpic

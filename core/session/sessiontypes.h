@@ -1,6 +1,7 @@
 // Value types that cross the session thread boundary.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 #include "protocol/deviceinfo.h"
 #include "protocol/legacy.h"
@@ -36,7 +37,23 @@ struct ConnectOptions
 };
 
 //! The commands of the v2 protocol the session sends (HELLO only while detecting).
-enum class CommandKind { Hello, GetParams, SetParams, SetStream, Zero, SaveParams };
+enum class CommandKind {
+    Hello,
+    GetParams,
+    SetParams,
+    SetStream,
+    Zero,
+    SaveParams,
+    SetEffects, //!< effects.md § 3
+    GetEffects,
+    Vibrate,
+};
+//! True for the commands only a device with the effects capability takes.
+constexpr bool isEffectCommand(CommandKind kind)
+{
+    return kind == CommandKind::SetEffects || kind == CommandKind::GetEffects ||
+           kind == CommandKind::Vibrate;
+}
 QString commandName(CommandKind kind); //!< the wire name: "SET_PARAMS", …
 
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
@@ -85,6 +102,8 @@ struct StateDetail
 //! "K_max 0.4 → 0.6; N 0.1 → 0.12": every device field that differs as it travels on the wire
 //! (the text of recording events and of the tuner's push markers). Empty when nothing does.
 QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
+//! "detent_strength 0 → 0.05": the same for the effect block (float32 on the wire).
+QString describeEffectChange(const EffectParams &from, const EffectParams &to);
 
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
@@ -105,25 +124,30 @@ struct CommandResult
     //! The finer cause, where the status has several.
     enum class Reason {
         None,
-        ReadBackUnanswered, //!< Ok: acknowledged, but the GET_PARAMS read-back went unanswered
-        NoDevice,           //!< NotConnected: no device was connected
-        Disconnected,       //!< NotConnected: the session was disconnected before the answer
-        ConnectionLost,     //!< NotConnected: the link was lost before the answer
-        DetectionFailed,    //!< NotConnected: detection gave up (only the session's HELLO)
-        NoParameters,       //!< Unsupported: the legacy firmware cannot send or take parameters
-        FixedRate,          //!< Unsupported: the legacy firmware streams at its own rate
-        InvalidParams,      //!< Invalid: host-side validation refused; see problems
-        QueueFull,          //!< Invalid: `limit` commands were already waiting
+        ReadBackUnanswered,  //!< Ok: acknowledged, but the read-back went unanswered
+        NoDevice,            //!< NotConnected: no device was connected
+        Disconnected,        //!< NotConnected: the session was disconnected before the answer
+        ConnectionLost,      //!< NotConnected: the link was lost before the answer
+        DetectionFailed,     //!< NotConnected: detection gave up (only the session's HELLO)
+        NoParameters,        //!< Unsupported: the legacy firmware cannot send or take parameters
+        FixedRate,           //!< Unsupported: the legacy firmware streams at its own rate
+        NoEffects,           //!< Unsupported: the legacy firmware cannot render effects
+        NoEffectsCapability, //!< Unsupported: a v2 device without the effects capability bit
+        InvalidParams,       //!< Invalid: host-side validation refused; see problems
+        QueueFull,           //!< Invalid: `limit` commands were already waiting
     };
     Status status = Status::Ok;
     Reason reason = Reason::None;
     CommandKind command = CommandKind::GetParams; //!< the command (a rejection: the frame refused)
     v2::AckStatus ackStatus = v2::AckStatus::Ok;
-    int field = -1;               //!< ParamBlock index the device named, or -1
-    bool readBack = false;        //!< a GET_PARAMS read-back followed (SET_PARAMS, ZERO)
-    bool readBackMatches = false; //!< SET_PARAMS: the read-back equals what was sent (float32)
+    int field = -1;        //!< ParamBlock (effect block, VIBRATE) index the device named, or -1
+    bool readBack = false; //!< a read-back followed (SET_PARAMS, ZERO: GET_PARAMS; SET_EFFECTS)
+    bool readBackMatches = false; //!< SET_PARAMS/EFFECTS: the read-back equals what was sent
     DeviceParams sent;            //!< SET_PARAMS: what was sent (float32-rounded)
     DeviceParams received;        //!< GET_PARAMS or a read-back: what the device holds
+    EffectParams effectsSent;     //!< SET_EFFECTS: what was sent (float32-rounded)
+    EffectParams effectsReceived; //!< GET_EFFECTS or SET_EFFECTS' read-back
+    Vibration vibration;          //!< VIBRATE: what was sent
     quint16 rate = 0;             //!< SET_STREAM: the rate asked for [Hz]; 0 = stop
     int attempts = 0;             //!< Timeout: frames sent
     int intervalMs = 0;           //!< Timeout: between them [ms]
@@ -180,3 +204,5 @@ Q_DECLARE_METATYPE(hatpic::LinkStats)
 Q_DECLARE_METATYPE(hatpic::RecordingStatus)
 Q_DECLARE_METATYPE(hatpic::DeviceParams)
 Q_DECLARE_METATYPE(hatpic::HostParams)
+Q_DECLARE_METATYPE(hatpic::EffectParams)
+Q_DECLARE_METATYPE(hatpic::Vibration)

@@ -26,6 +26,7 @@ V2Driver::V2Driver(DriverHost &host, CommandQueue &queue, const v2::HelloReply &
     m_info.tauLimit = reply.tauLimit;
     m_info.firmware = printableDeviceText(v2::toQString(reply.firmware));
     m_info.simulated = options.port == QStringView(kSimPortName);
+    m_info.capabilities = reply.capabilities;
     if (reply.protocolVersion != v2::kProtocolVersion) {
         qCWarning(lcV2) << "device reports protocol version" << reply.protocolVersion
                         << "; this host speaks" << v2::kProtocolVersion;
@@ -44,6 +45,11 @@ void V2Driver::start()
     Command get;
     get.kind = CommandKind::GetParams;
     m_queue.enqueue(get);
+    if (m_info.hasEffects()) {
+        Command effects;
+        effects.kind = CommandKind::GetEffects;
+        m_queue.enqueue(effects);
+    }
     Command stream;
     stream.kind = CommandKind::SetStream;
     stream.rate = m_streamRateHz;
@@ -88,6 +94,8 @@ void V2Driver::handleFrame(const v2::Frame &frame)
                 m_queue.onAck(message);
             else if constexpr (std::is_same_v<T, v2::Params>)
                 handleParams(message.params);
+            else if constexpr (std::is_same_v<T, v2::Effects>)
+                handleEffects(message.effects);
             else if constexpr (std::is_same_v<T, v2::Pong>)
                 m_host.pongReceived(message.token);
             else if constexpr (std::is_same_v<T, v2::Log>)
@@ -98,15 +106,20 @@ void V2Driver::handleFrame(const v2::Frame &frame)
         frame.message);
 }
 
-void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &telemetry)
+void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &received)
 {
+    // τ_fx is read only from a device that announced the effects capability: the bytes after
+    // the flags of any other device are not ours to interpret (effects.md § 3).
+    v2::Telemetry telemetry = received;
+    if (!m_info.hasEffects())
+        telemetry.tau_fx.reset();
     if (!m_host.statistics().countTelemetry(seq, telemetry.t_us))
         return;
     // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:
     // such a frame is counted and skipped, never integrated.
     if (!std::isfinite(telemetry.theta) || !std::isfinite(telemetry.omega) ||
         !std::isfinite(telemetry.tau) || !std::isfinite(telemetry.tau_rec) ||
-        !std::isfinite(telemetry.tau_ext)) {
+        !std::isfinite(telemetry.tau_ext) || !std::isfinite(telemetry.tau_fx.value_or(0.0f))) {
         m_host.statistics().countNonFinite();
         return;
     }
@@ -123,12 +136,21 @@ void V2Driver::handleParams(const DeviceParams &params)
     m_queue.onParams(params);
 }
 
+void V2Driver::handleEffects(const EffectParams &effects)
+{
+    if (m_pendingEffect)
+        applyPendingEffect(); // streaming off: no telemetry carried the change
+    m_host.effectsReceived(effects);
+    m_queue.onEffects(effects);
+}
+
 void V2Driver::onAcknowledged(const Command &command)
 {
     switch (command.kind) {
     case CommandKind::SetParams:
     case CommandKind::Zero:
-        m_pendingEffect = PendingEffect{command.kind, command.params};
+    case CommandKind::SetEffects:
+        m_pendingEffect = PendingEffect{command.kind, command.params, command.effects};
         return;
     case CommandKind::SetStream:
         m_host.statistics().restartSeq(); // a new stream: no gap to count against the old
@@ -142,7 +164,10 @@ void V2Driver::applyPendingEffect()
 {
     const PendingEffect effect = *m_pendingEffect;
     m_pendingEffect.reset();
-    m_host.applyEffect(effect.kind, effect.params);
+    if (effect.kind == CommandKind::SetEffects)
+        m_host.effectsApplied(effect.effects);
+    else
+        m_host.applyEffect(effect.kind, effect.params);
 }
 
 void V2Driver::sendFeedback(double tauExt)

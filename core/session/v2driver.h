@@ -32,9 +32,11 @@ public:
     void handleFrames(const QList<v2::Frame> &frames);
     void sendFeedback(double tauExt) override;
     bool sendPing(quint32 token) override;
-    CommandResult::Reason refusal(CommandKind) const override
+    CommandResult::Reason refusal(CommandKind kind) const override
     {
-        return CommandResult::Reason::None;
+        return isEffectCommand(kind) && !m_info.hasEffects()
+                   ? CommandResult::Reason::NoEffectsCapability
+                   : CommandResult::Reason::None;
     }
     void hostParamsChanged(const HostParams &) override {}
     void close() override;
@@ -44,13 +46,15 @@ public:
 private:
     struct PendingEffect
     {
-        CommandKind kind = CommandKind::SetParams; //!< SetParams or Zero
+        CommandKind kind = CommandKind::SetParams; //!< SetParams, Zero or SetEffects
         DeviceParams params;
+        EffectParams effects;
     };
 
     void handleFrame(const v2::Frame &frame);
     void handleTelemetry(quint8 seq, const v2::Telemetry &telemetry);
     void handleParams(const DeviceParams &params);
+    void handleEffects(const EffectParams &effects);
     void onAcknowledged(const Command &command);
     void applyPendingEffect();
 

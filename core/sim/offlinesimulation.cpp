@@ -16,8 +16,8 @@ constexpr double kMaxRateHz = 65535; // the simulated device's highest control r
 
 bool isFinite(const Sample &s)
 {
-    for (double value :
-         {s.t_s, s.theta, s.omega, s.tau, s.tau_rec, s.tau_ext, s.tau_total, s.v_ref, s.p_ref}) {
+    for (double value : {s.t_s, s.theta, s.omega, s.tau, s.tau_rec, s.tau_ext, s.tau_fx,
+                         s.tau_total, s.v_ref, s.p_ref}) {
         if (!std::isfinite(value))
             return false;
     }
@@ -57,6 +57,10 @@ QString OfflineSimulation::check(const OfflineSimulationConfig &config)
     if (const auto violations = validate(config.host); !violations.empty())
         return u"The host settings are not valid: " +
                QString::fromStdString(violations.front().message()) + u'.';
+    if (const auto violations = validate(config.effects, config.host.tau_limit);
+        !violations.empty())
+        return u"The effects are not valid: " +
+               QString::fromStdString(violations.front().message()) + u'.';
     return {};
 }
 
@@ -77,6 +81,13 @@ OfflineSimulation::OfflineSimulation(const OfflineSimulationConfig &config)
     m_rendered = m_device->params();
     // A host that streams τ_ext = 0, so the device's feedback watchdog stays quiet.
     m_feedback = v2::encodeFrame(0, v2::SetFeedback{0.0f});
+    // The effects travel as a host sends them: SET_EFFECTS, rounded for the wire (±π are not
+    // floats), before the first cycle, which renders them (its ACK waits in the output nobody
+    // takes; no stream was asked for).
+    if (config.effects != EffectParams{}) {
+        const EffectParams wire = roundedForWire(config.effects, config.host.tau_limit);
+        m_device->receive(v2::encodeFrame(1, v2::SetEffects{wire}));
+    }
 }
 
 OfflineSimulation::~OfflineSimulation() = default;
@@ -96,6 +107,7 @@ Sample OfflineSimulation::next()
     sample.tau = cycle.tau;
     sample.tau_rec = cycle.tau_rec;
     sample.tau_ext = cycle.tau_ext;
+    sample.tau_fx = cycle.tau_fx;
     sample.tau_total = cycle.tau_total;
     const auto reference = m_reference.update(sample.t_us, m_config.host, m_rendered, cycle.theta);
     sample.v_ref = reference.v_ref;

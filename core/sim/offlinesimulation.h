@@ -2,6 +2,7 @@
 // as fast as the CPU allows (no link, no clock). Used by `hatpicctl simulate`.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 #include "model/reference.h"
 #include "sim/handinput.h"
@@ -20,6 +21,7 @@ class SimulatedDevice;
 struct OfflineSimulationConfig
 {
     DeviceParams device;   //!< rendered parameters
+    EffectParams effects;  //!< rendered effects (effects.md); the defaults render nothing
     HostParams host;       //!< tau_limit and the reference model settings
     HandInput hand;        //!< the operator's torque on the knob
     double rateHz = 1000;  //!< control rate: one row per step [Hz]

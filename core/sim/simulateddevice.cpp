@@ -71,6 +71,7 @@ public:
             return false;
         }
         out.params = read.profile->device;
+        out.effects = read.profile->effects;
         return true;
     }
     bool save(const fw::StoredSettings &settings) override
@@ -79,6 +80,7 @@ public:
         profile.name = QStringLiteral("hatpic-sim state");
         profile.notes = QStringLiteral("Parameters saved by the simulated device (SAVE_PARAMS).");
         profile.device = settings.params;
+        profile.effects = settings.effects;
         profile.host.tau_limit = m_tauLimit;
         return writeProfile(profile, m_path).isEmpty();
     }
@@ -362,6 +364,7 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
     c.tau = r.tau;
     c.tau_rec = r.tau_rec;
     c.tau_ext = r.tau_ext;
+    c.tau_fx = r.tau_fx;
     c.tau_total = r.tau_total;
     c.flags = r.flags;
 

@@ -52,6 +52,7 @@ public:
         double tau = 0;       //!< measured interaction torque [N·m]
         double tau_rec = 0;   //!< [N·m]
         double tau_ext = 0;   //!< [N·m]
+        double tau_fx = 0;    //!< τ_det + τ_wall + τ_vib (effects.md; legacy: 0) [N·m]
         double tau_total = 0; //!< clamped to tau_limit [N·m]
         quint8 flags = 0;     //!< v2::kFlag* bits
     };

@@ -3,6 +3,7 @@
 // (recordingreader.h) reads them back; docs/recording.md describes the format.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 #include "protocol/deviceinfo.h"
 #include "telemetry/sample.h"
@@ -11,6 +12,8 @@
 #include <QMetaType>
 #include <QString>
 #include <QStringList>
+
+#include <optional>
 
 namespace hatpic {
 
@@ -23,6 +26,8 @@ struct RecordingMetadata
     QDateTime start; //!< wall-clock start (UTC)
     DeviceInfo device;
     DeviceParams params; //!< parameters at start
+    //! The effect block at start (effects.md); none for a device without the effects capability
+    std::optional<EffectParams> effects;
     HostParams host;
     QString source; //!< "hatpic-tuner", "hatpicctl stream", …
 };

@@ -152,10 +152,12 @@ QByteArray RecordingWriter::Private::metadataText(bool closing) const
         }
         events_ = items.isEmpty() ? QByteArrayLiteral("[]") : "[\n" + items.join(",\n") + "\n  ]";
     }
-    const QByteArray parameters = JsonObjectWriter(2)
-                                      .add("device", deviceParamsJson(metadata.params, 4))
-                                      .add("host", hostParamsJson(metadata.host, 4))
-                                      .text();
+    JsonObjectWriter parametersWriter(2);
+    parametersWriter.add("device", deviceParamsJson(metadata.params, 4))
+        .add("host", hostParamsJson(metadata.host, 4));
+    if (metadata.effects)
+        parametersWriter.add("effects", effectParamsJson(*metadata.effects, 4));
+    const QByteArray parameters = parametersWriter.text();
     JsonObjectWriter root(0);
     root.add("format", jsonString(QString::fromLatin1(kFormatTag)))
         .add("version", QByteArray::number(kFormatVersion))

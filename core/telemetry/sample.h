@@ -23,10 +23,13 @@ struct Sample
     double tau = 0;       //!< interaction torque of eq. (1); operator torque is −tau [N·m]
     double tau_rec = 0;   //!< re-centering torque [N·m]
     double tau_ext = 0;   //!< external feedback torque [N·m]
-    double tau_total = 0; //!< τ_rec + τ_ext as rendered, clamped to tau_limit [N·m]
+    double tau_total = 0; //!< τ_rec + τ_fx + τ_ext as rendered, clamped to tau_limit [N·m]
     double v_ref = 0;     //!< reference velocity [m/s or rad/s]
     double p_ref = 0;     //!< reference position [m or rad]
-    quint16 flags = 0;    //!< device flags (low byte) | host flags (kFlag*)
+    //! τ_det + τ_wall + τ_vib rendered (effects.md) [N·m]; NaN when the device does not send it
+    //! (legacy, or a v2 device without the effects capability): unknown, not zero.
+    double tau_fx = 0;
+    quint16 flags = 0; //!< device flags (low byte) | host flags (kFlag*)
     //! When the frame that carried it was decoded, on sampleClockNs(); 0 when not known
     //! (replay, offline simulation). Not recorded: it measures the host, not the knob [ns].
     qint64 arrival_ns = 0;

@@ -25,20 +25,27 @@ struct SampleColumn
 };
 
 //! The sample columns in the order every CSV writes them.
-inline constexpr std::array<SampleColumn, 10> kSampleColumns = {{
+//! tau_fx (effects.md) came after the flags, so older files and programs that read columns by
+//! position keep theirs: it is last in `simulate` and `stream`, and before `event` in recordings.
+inline constexpr std::array<SampleColumn, 11> kSampleColumns = {{
     {"t_s", "s", "session time: follows the device clock, monotonic", &Sample::t_s},
     {"theta", "rad", "knob angle, absolute", &Sample::theta},
     {"omega", "rad/s", "knob rate", &Sample::omega},
     {"tau", "N·m", "interaction torque of eq. (1); the operator's torque is -tau", &Sample::tau},
     {"tau_rec", "N·m", "re-centering torque", &Sample::tau_rec},
     {"tau_ext", "N·m", "external feedback torque", &Sample::tau_ext},
-    {"tau_total", "N·m", "tau_rec + tau_ext as rendered, clamped to tau_limit", &Sample::tau_total},
+    {"tau_total", "N·m", "tau_rec + tau_fx + tau_ext as rendered, clamped to tau_limit",
+     &Sample::tau_total},
     {"v_ref", "m/s or rad/s", "reference velocity", &Sample::v_ref},
     {"p_ref", "m or rad", "reference position", &Sample::p_ref},
     {"flags", "", "device flags (low byte) | host flags (kFlag*), a decimal integer", nullptr},
+    {"tau_fx", "N·m",
+     "effect torque tau_det + tau_wall + tau_vib; empty when the device does not send it",
+     &Sample::tau_fx},
 }};
 
-//! The quantities a plot shows (theta … p_ref) are the columns from this one on, in order.
+//! The quantities a plot shows (theta … p_ref) are the columns from this one on, in order
+//! (tau_fx, after the flags, is not one of them yet).
 inline constexpr std::size_t kFirstQuantityColumn = 1;
 inline constexpr std::size_t kQuantityColumnCount = 8;
 
@@ -52,10 +59,10 @@ constexpr std::size_t sampleColumnIndex(std::string_view name)
 }
 
 static_assert(sampleColumnIndex("t_s") == 0 &&
-              sampleColumnIndex("flags") + 1 == kSampleColumns.size());
+              sampleColumnIndex("tau_fx") + 1 == kSampleColumns.size());
 static_assert(kFirstQuantityColumn + kQuantityColumnCount == sampleColumnIndex("flags"));
 
-//! The header of the sample CSV, "t_s,theta,…,flags", without line end.
+//! The header of the sample CSV, "t_s,theta,…,flags,tau_fx", without line end.
 QByteArray sampleCsvHeader();
 
 //! Appends the fields of one row, in column order and without line end, to `row`: numbers as

@@ -1,6 +1,7 @@
 // hatpicctl, run as a real process: argument handling, exit codes, the CSV forms against an
 // independent computation of model.md, and the device commands against the in-process
 // simulated joystick, a hatpic-sim child on a pseudo-terminal and a port that does not exist.
+#include "ctlprocess.h"
 #include "model/admittance.h"
 #include "model/params.h"
 #include "profile/profile.h"
@@ -24,122 +25,10 @@
 #include <unistd.h>
 
 using namespace hatpic;
+using namespace hatpic::test;
 using namespace Qt::StringLiterals;
 
 namespace {
-
-constexpr int kProcessTimeoutMs = 60000;
-
-struct Run
-{
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runCtl(const QStringList &arguments, int timeoutMs = kProcessTimeoutMs)
-{
-    QProcess process;
-    process.setProgram(QStringLiteral(HATPICCTL_PATH));
-    process.setArguments(arguments);
-    process.start();
-    Run run;
-    if (!process.waitForStarted(10000)) {
-        run.err = "did not start: " + process.errorString().toUtf8();
-        return run;
-    }
-    process.closeWriteChannel();
-    if (!process.waitForFinished(timeoutMs)) {
-        process.kill();
-        process.waitForFinished(5000);
-        run.err = "timed out; stderr so far: " + process.readAllStandardError();
-        return run;
-    }
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    return run;
-}
-
-QString describe(const Run &run)
-{
-    return u"exit "_s + QString::number(run.code) + u"\nstderr: "_s + QString::fromUtf8(run.err) +
-           u"\nstdout (first 400 bytes): "_s + QString::fromUtf8(run.out.left(400));
-}
-
-// A failure must be told in one sentence: exactly one non-empty line on stderr.
-bool isOneLine(const QByteArray &err)
-{
-    const QByteArray trimmed = err.trimmed();
-    return !trimmed.isEmpty() && !trimmed.contains('\n');
-}
-
-QList<QList<double>> parseCsv(const QByteArray &text, const QByteArray &expectedHeader,
-                              QString *problem)
-{
-    QList<QByteArray> lines = text.split('\n');
-    if (!lines.isEmpty() && lines.last().isEmpty())
-        lines.removeLast();
-    if (lines.isEmpty() || lines.first() != expectedHeader) {
-        *problem = u"header is \""_s + QString::fromUtf8(lines.value(0)) + u'"';
-        return {};
-    }
-    const qsizetype columns = expectedHeader.count(',') + 1;
-    QList<QList<double>> rows;
-    for (qsizetype i = 1; i < lines.size(); ++i) {
-        const QList<QByteArray> cells = lines[i].split(',');
-        if (cells.size() != columns) {
-            *problem = u"line "_s + QString::number(i + 1) + u" has "_s +
-                       QString::number(cells.size()) + u" cells"_s;
-            return {};
-        }
-        QList<double> row;
-        for (const QByteArray &cell : cells) {
-            bool ok = false;
-            row << cell.toDouble(&ok);
-            if (!ok) {
-                *problem = u"line "_s + QString::number(i + 1) + u": not a number: "_s +
-                           QString::fromUtf8(cell);
-                return {};
-            }
-        }
-        rows << row;
-    }
-    return rows;
-}
-
-// |actual − expected| within `tolerance`, relative above 1 and absolute below.
-bool closeTo(double actual, double expected, double tolerance)
-{
-    return std::abs(actual - expected) <= tolerance * std::max(1.0, std::abs(expected));
-}
-
-// K_rec of model.md § 2, written out again here so that the test does not trust the library.
-double expectedStiffness(const DeviceParams &p, double theta)
-{
-    const double a = std::abs(theta - p.theta0);
-    if (a < p.Q_dz)
-        return 0.0;
-    if (a <= p.N)
-        return p.K_max;
-    const double kT = p.K_min + (p.K_max - p.K_min) * (1.0 - (a - p.N) / p.N);
-    return std::clamp(kT, p.K_min, p.K_max);
-}
-
-// Parameters every one of which is exactly a 32-bit float, so the device's rounding does not
-// enter the comparison with the model.
-DeviceParams exactParams()
-{
-    DeviceParams p;
-    p.D_adm = 0.0001220703125; // 2^-13
-    p.M_adm = 0.0078125;       // 2^-7
-    p.K_min = 0.125;
-    p.K_max = 0.375;
-    p.N = 0.125;
-    p.Q_dz = 0.015625;
-    p.theta0 = 0.0625;
-    return p;
-}
 
 QString stiffnessName(double theta, const DeviceParams &p)
 {
@@ -348,7 +237,7 @@ void TestHatpicCtl::curveDefaults()
     const Run run = runCtl({u"curve"_s, u"--profile"_s, m_default});
     QVERIFY2(run.code == 0, qPrintable(describe(run)));
     QString problem;
-    const auto rows = parseCsv(run.out, "theta,K_rec,tau_rec", &problem);
+    const auto rows = parseCsv(run.out, "theta,K_rec,tau_rec,tau_det,tau_wall", &problem);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
 
     // −π/2 + i·0.01 while below π/2 (i = 0…314), then π/2 itself.
@@ -391,7 +280,7 @@ void TestHatpicCtl::curveValues()
                             u"--step"_s, QString::number(step, 'g', 17)});
     QVERIFY2(run.code == 0, qPrintable(describe(run)));
     QString problem;
-    const auto table = parseCsv(run.out, "theta,K_rec,tau_rec", &problem);
+    const auto table = parseCsv(run.out, "theta,K_rec,tau_rec,tau_det,tau_wall", &problem);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
     QCOMPARE(table.size(), qsizetype(rows));
 
@@ -448,7 +337,7 @@ void TestHatpicCtl::curveBadRange()
 // ---- simulate ----
 
 static const QByteArray kSampleHeader =
-    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags";
+    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx";
 
 void TestHatpicCtl::simulateInputs_data()
 {
@@ -1050,8 +939,9 @@ void TestHatpicCtl::ptyLegacySimulator()
     const QList<QByteArray> lines = out.out.trimmed().split('\n');
     QVERIFY2(lines.size() >= 2, qPrintable(describe(out)));
     const QList<QByteArray> fields = lines[1].split(',');
-    QCOMPARE(fields.size(), 10);
+    QCOMPARE(fields.size(), 11);
     QVERIFY2(fields[2].isEmpty() && fields[3].isEmpty(), lines[1].constData());
+    QVERIFY2(fields[10].isEmpty(), lines[1].constData()); // no effects: τ_fx unknown
     QVERIFY(!fields[1].isEmpty());
 
     sim.terminate();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hatpic {
 
@@ -72,6 +73,7 @@ Sample SampleBuffer::sample(qsizetype index) const
     for (Channel channel : kAllChannels)
         s.*channelColumn(channel).value = value(channel, index);
     s.flags = flags(index);
+    s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // not a channel: not kept, so unknown
     return s;
 }
 

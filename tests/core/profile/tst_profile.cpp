@@ -966,7 +966,8 @@ void TestProfile::readEndlessFileStopsAtLimit()
 
 void TestProfile::presetsLoadAndValidate()
 {
-    QCOMPARE(hatpic::presetNames(), (QStringList{u"Default"_s, u"Soft"_s, u"Notchy"_s}));
+    QCOMPARE(hatpic::presetNames(),
+             (QStringList{u"Default"_s, u"Soft"_s, u"Notchy"_s, u"Detents"_s, u"Walled"_s}));
     for (const QString &name : hatpic::presetNames()) {
         const QString path = u":/presets/"_s + name.toLower() + u".json"_s;
         const auto result = hatpic::readProfile(path);

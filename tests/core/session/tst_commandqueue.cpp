@@ -6,6 +6,8 @@
 
 #include <QTest>
 
+#include <tuple>
+
 using namespace Qt::StringLiterals;
 
 namespace hatpic {
@@ -78,6 +80,11 @@ class TestCommandQueue : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void oneInFlightTheRestWait();
+    void setEffectsIsReadBack();
+    void effectsReadBackThatDiffersIsReported();
+    void vibrateFinishesOnItsAck();
+    void effectRejectionsNameTheirField();
+    void okAckDoesNotAnswerGetEffects();
     void retriesResendTheSameBytesThenTimeOut();
     void lateAnswerToARetryIsIgnored();
     void setParamsIsReadBack();
@@ -230,6 +237,101 @@ void TestCommandQueue::rejectionNamesTheField()
     QCOMPARE(r.command, CommandKind::SetParams);
     QVERIFY(h.acknowledged.isEmpty()); // nothing to apply, nothing read back
     QCOMPARE(h.link.writes.size(), 1);
+}
+
+void TestCommandQueue::setEffectsIsReadBack()
+{
+    Harness h;
+    Command c;
+    c.id = 11;
+    c.kind = CommandKind::SetEffects;
+    c.effects.detent_strength = 0.05;
+    h.queue.enqueue(c);
+    const v2::Frame sent = h.link.last();
+    const auto *set = std::get_if<v2::SetEffects>(&sent.message);
+    QVERIFY(set && set->effects.detent_strength == double(0.05f));
+    h.ack(h.lastSeq());
+    QCOMPARE(h.acknowledged.size(), 1);
+    QCOMPARE(h.acknowledged[0].kind, CommandKind::SetEffects);
+    QVERIFY(h.finished.isEmpty());
+    // Read back under the same request id with GET_EFFECTS; a PARAMS does not answer it.
+    QVERIFY(std::holds_alternative<v2::GetEffects>(h.link.last().message));
+    h.queue.onParams(DeviceParams{});
+    QVERIFY(h.finished.isEmpty());
+    h.queue.onEffects(set->effects);
+    QCOMPARE(h.finished.size(), 1);
+    QCOMPARE(h.finished[0].first.id, quint64(11));
+    const CommandResult r = h.finished[0].second;
+    QVERIFY(r.ok());
+    QCOMPARE(r.command, CommandKind::SetEffects);
+    QVERIFY(r.readBack && r.readBackMatches);
+    QCOMPARE(r.effectsReceived.detent_strength, double(0.05f));
+}
+
+void TestCommandQueue::effectsReadBackThatDiffersIsReported()
+{
+    Harness h;
+    Command c;
+    c.id = 12;
+    c.kind = CommandKind::SetEffects;
+    c.effects.wall_max = 0.5;
+    h.queue.enqueue(c);
+    h.ack(h.lastSeq());
+    EffectParams held = c.effects;
+    held.wall_max = 0.25;
+    h.queue.onEffects(held);
+    const CommandResult r = h.finished.value(0).second;
+    QVERIFY(r.ok() && r.readBack && !r.readBackMatches);
+    QCOMPARE(r.effectsSent.wall_max, 0.5);
+    QCOMPARE(r.effectsReceived.wall_max, 0.25);
+}
+
+void TestCommandQueue::vibrateFinishesOnItsAck()
+{
+    Harness h;
+    Command c;
+    c.id = 13;
+    c.kind = CommandKind::Vibrate;
+    c.vibration = {0.1, 80, 0.5};
+    h.queue.enqueue(c);
+    const v2::Frame sent = h.link.last();
+    const auto *cue = std::get_if<v2::Vibrate>(&sent.message);
+    QVERIFY(cue);
+    QCOMPARE(*cue, (v2::Vibrate{0.1f, 80.0f, 0.5f}));
+    h.ack(h.lastSeq());
+    QCOMPARE(h.finished.size(), 1); // no read-back: fire and forget
+    QCOMPARE(h.link.writes.size(), 1);
+    const CommandResult r = h.finished[0].second;
+    QVERIFY(r.ok());
+    QCOMPARE(r.command, CommandKind::Vibrate);
+    QCOMPARE(r.vibration, (Vibration{0.1, 80, 0.5}));
+}
+
+void TestCommandQueue::effectRejectionsNameTheirField()
+{
+    // A field the block has is named; one beyond it (VIBRATE has three) names nothing.
+    for (const auto &[kind, field, named] : {std::tuple{CommandKind::SetEffects, quint8(6), 6},
+                                             std::tuple{CommandKind::Vibrate, quint8(1), 1},
+                                             std::tuple{CommandKind::Vibrate, quint8(5), -1}}) {
+        Harness h;
+        h.enqueue(14, kind);
+        h.ack(h.lastSeq(), v2::AckStatus::OutOfRange, field);
+        const CommandResult r = h.finished.value(0).second;
+        QCOMPARE(r.status, CommandResult::Status::Rejected);
+        QCOMPARE(r.command, kind);
+        QCOMPARE(r.field, named);
+        QVERIFY(h.acknowledged.isEmpty());
+    }
+}
+
+void TestCommandQueue::okAckDoesNotAnswerGetEffects()
+{
+    Harness h;
+    h.enqueue(15, CommandKind::GetEffects);
+    h.ack(h.lastSeq());
+    QVERIFY(h.finished.isEmpty()); // only EFFECTS answers it
+    h.ack(h.lastSeq(), v2::AckStatus::UnknownType);
+    QCOMPARE(h.finished.value(0).second.status, CommandResult::Status::Rejected);
 }
 
 void TestCommandQueue::okAckDoesNotAnswerGetParams()

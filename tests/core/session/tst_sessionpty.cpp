@@ -1,5 +1,6 @@
 // End to end: DeviceClient against the hatpic-sim program over a real pseudo-terminal.
 #include "session/deviceclient.h"
+#include "simprocess.h"
 #include "telemetry/recordingreader.h"
 
 #include <QElapsedTimer>
@@ -11,65 +12,11 @@
 #include <memory>
 
 using namespace hatpic;
+using hatpic::test::SimProcess;
 
 namespace {
 
-constexpr int kStartTimeoutMs = 5000;
 constexpr int kConnectTimeoutMs = 5000;
-
-//! hatpic-sim as a child process; the first line it prints is the pty's slave path.
-class SimProcess
-{
-public:
-    explicit SimProcess(const QStringList &arguments)
-    {
-#ifdef HATPIC_SIM_PATH
-        m_process.setProgram(QStringLiteral(HATPIC_SIM_PATH));
-        m_process.setArguments(arguments);
-        m_process.setProcessChannelMode(QProcess::SeparateChannels);
-        m_process.start();
-#else
-        Q_UNUSED(arguments);
-#endif
-    }
-    ~SimProcess()
-    {
-        stop();
-    }
-
-    //! Waits for the slave path; empty when the program did not start.
-    QString path()
-    {
-        if (!m_path.isEmpty())
-            return m_path;
-        while (!m_process.canReadLine() && m_process.waitForReadyRead(kStartTimeoutMs)) {
-        }
-        if (m_process.canReadLine())
-            m_path = QString::fromLocal8Bit(m_process.readLine().trimmed());
-        return m_path;
-    }
-    void kill()
-    {
-        m_process.kill();
-        m_process.waitForFinished(kStartTimeoutMs);
-    }
-    void stop()
-    {
-        if (m_process.state() == QProcess::NotRunning)
-            return;
-        m_process.terminate();
-        if (!m_process.waitForFinished(kStartTimeoutMs))
-            kill();
-    }
-    QString errors()
-    {
-        return QString::fromLocal8Bit(m_process.readAllStandardError());
-    }
-
-private:
-    QProcess m_process;
-    QString m_path;
-};
 
 struct Collector
 {

@@ -74,6 +74,11 @@ bool writeFile(const QString &path, const QByteArray &bytes)
     return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
+//! The header the writer writes.
+const QByteArray kWrittenHeader =
+    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event\n";
+//! The header of a recording made before tau_fx existed: the hand-written files below use it,
+//! so they also check that such recordings still read (without a word about tau_fx).
 const QByteArray kHeader =
     "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,event\n";
 
@@ -110,9 +115,9 @@ private Q_SLOTS:
 
 void TestRecordingWriter::columns()
 {
-    QCOMPARE(
-        recordingColumns().join(u','),
-        QStringLiteral("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,event"));
+    QCOMPARE(recordingColumns().join(u','),
+             QStringLiteral(
+                 "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event"));
 }
 
 void TestRecordingWriter::metadataPathBesideCsv_data()
@@ -149,13 +154,14 @@ void TestRecordingWriter::headerAndRows()
     b.tau = kNaN;
     b.flags = 0;
     b.v_ref = -1e-7;
+    b.tau_fx = kNaN; // a device without effects
     QVERIFY(rec.append({a, b}));
     rec.close();
     QVERIFY(!rec.isOpen());
     const QByteArray text = readAll(csv);
-    QCOMPARE(text, QByteArray(kHeader +
-                              "0.001,0.05,0.5,-0.01,-0.02,0,-0.02,0.025,0.3333333333333333,258,\n"
-                              "1234.567891,0.05,,,-0.02,0,-0.02,-1e-07,0.3333333333333333,0,\n"));
+    QCOMPARE(text, QByteArray(kWrittenHeader +
+                              "0.001,0.05,0.5,-0.01,-0.02,0,-0.02,0.025,0.3333333333333333,258,0,\n"
+                              "1234.567891,0.05,,,-0.02,0,-0.02,-1e-07,0.3333333333333333,0,,\n"));
     QCOMPARE(rec.status().samples, quint64(2));
     QCOMPARE(rec.status().bytes, qint64(text.size()));
     QCOMPARE(rec.status().seconds, 1234.567891 - 0.001);
@@ -175,10 +181,10 @@ void TestRecordingWriter::eventsAreQuoted()
     rec.close();
     const QList<QByteArray> lines = readAll(csv).split('\n');
     QCOMPARE(lines.size(), 5); // header, 3 rows, empty after the last '\n'
-    QVERIFY(lines[1].endsWith(",258,"));
-    QCOMPARE(lines[2].mid(lines[2].indexOf(",258,") + 5),
+    QVERIFY(lines[1].endsWith(",258,0,"));
+    QCOMPARE(lines[2].mid(lines[2].indexOf(",258,0,") + 7),
              QStringLiteral("\"K_max 0.4 → 0.6; note \"\"soft\"\", then more\"").toUtf8());
-    QVERIFY(lines[3].endsWith(",258,"));
+    QVERIFY(lines[3].endsWith(",258,0,"));
 }
 
 void TestRecordingWriter::jsonContent()
@@ -234,12 +240,12 @@ void TestRecordingWriter::flushPutsRowsOnDiskWithoutClose()
     const QString csv = dir.filePath(QStringLiteral("f.csv"));
     RecordingWriter rec;
     QVERIFY(rec.open(csv, metadata()));
-    QCOMPARE(readAll(csv), kHeader); // the header is on disk at once
+    QCOMPARE(readAll(csv), kWrittenHeader); // the header is on disk at once
     QVERIFY(rec.append({sample(0.001)}));
-    QCOMPARE(readAll(csv), kHeader); // rows wait for the next flush…
+    QCOMPARE(readAll(csv), kWrittenHeader); // rows wait for the next flush…
     QVERIFY(rec.flush());
-    QVERIFY(
-        readAll(csv).startsWith(QByteArray(kHeader + "0.001,"))); // …and are there without close()
+    QVERIFY(readAll(csv).startsWith(
+        QByteArray(kWrittenHeader + "0.001,"))); // …and are there without close()
     QVERIFY(rec.isOpen());
     // A large batch goes out without waiting for the flush.
     SampleBatch many;

@@ -412,11 +412,12 @@ void TestPlotPanel::exportsVisibleCsv()
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
     const QList<QByteArray> lines = file.readAll().split('\n');
-    QCOMPARE(lines.first(),
-             QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,event"));
+    QCOMPARE(
+        lines.first(),
+        QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event"));
     QCOMPARE(lines.size(), rows + 2); // header, rows, empty after the last newline
     const QList<QByteArray> firstRow = lines.at(1).split(',');
-    QCOMPARE(firstRow.size(), 11);
+    QCOMPARE(firstRow.size(), 12);
     QVERIFY(firstRow.at(0).toDouble() >= m_panel->viewStart());
 }
 
