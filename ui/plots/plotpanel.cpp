@@ -2,6 +2,7 @@
 
 #include "plots/logging.h"
 #include "plots/plotframe.h"
+#include "plots/plotghost.h"
 #include "plots/plotoverlays.h"
 #include "plots/qcp.h"
 #include "plots/samplecsvwriter.h"
@@ -54,6 +55,7 @@ void PlotPanel::buildPlots()
                     [this] { m_replotNeeded = true; });
     }
     m_overlays = std::make_unique<PlotOverlays>(m_plot, m_frame->rects());
+    m_ghost = std::make_unique<PlotGhost>(*m_frame);
 
     connect(
         m_plot, &QCustomPlot::legendClick, this,
@@ -387,6 +389,14 @@ void PlotPanel::rebuildData()
         g->data()->set(m_points, true);
         m_stats.lastPoints += m_points.size();
     }
+    m_ghost->rebuild(*m_frame, m_decimator, t0, t1, m_units);
+}
+
+void PlotPanel::setOverlaySource(const SampleBuffer *buffer)
+{
+    m_ghost->setSource(buffer);
+    m_dataDirty = true;
+    m_replotNeeded = true;
 }
 
 void PlotPanel::updateLegendTexts()

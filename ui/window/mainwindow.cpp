@@ -15,6 +15,7 @@
 #include "plots/plotpanel.h"
 #include "recording/plotfeed.h"
 #include "recording/recordingcontrols.h"
+#include "recording/recordingplandialog.h"
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
 #include "window/bridgedock.h"
@@ -211,7 +212,8 @@ void MainWindow::connectParts()
     connect(m_plotActions, &PlotActions::statusMessage, this, &MainWindow::showStatus);
 
     connect(m_recording, &RecordingControls::startRequested, m_client,
-            [this](const QString &path) { m_client->startRecording(path); });
+            [this](const QString &path) { m_client->startRecording(path, m_recording->plan()); });
+    connect(m_replayBar, &ReplayBar::overlayRequested, this, &MainWindow::overlayInteractive);
     connect(m_recording, &RecordingControls::stopRequested, m_client, &DeviceClient::stopRecording);
     connect(m_client, &DeviceClient::recordingChanged, this, [this](const RecordingStatus &s) {
         m_recording->setStatus(s);
@@ -382,6 +384,15 @@ void MainWindow::openRecordingInteractive()
                              tr("Cannot replay %1:\n%2").arg(path, error));
 }
 
+void MainWindow::overlayInteractive()
+{
+    const QString path = m_recording->chooseRecordingToOpen();
+    QString error;
+    if (!path.isEmpty() && !m_feed->replay()->openOverlay(path, &error))
+        QMessageBox::warning(this, tr("Overlay recording"),
+                             tr("Cannot overlay %1:\n%2").arg(path, error));
+}
+
 void MainWindow::readSettings()
 {
     QSettings settings;
@@ -400,6 +411,7 @@ void MainWindow::readSettings()
     m_plotActions->autoscaleAction()->setChecked(
         settings.value(QStringLiteral("view/autoscale"), true).toBool());
     m_recording->setDirectory(settings.value(QStringLiteral("recording/dir")).toString());
+    m_recording->setPlan(RecordingPlanDialog::loadPlan(settings));
     const QString profile = settings.value(QStringLiteral("profiles/last")).toString();
     if (!profile.isEmpty() && QFileInfo::exists(profile)) {
         QString error;
@@ -422,6 +434,7 @@ void MainWindow::writeSettings() const
     if (!m_recording->directory().isEmpty())
         settings.setValue(QStringLiteral("recording/dir"), m_recording->directory());
     settings.setValue(QStringLiteral("profiles/last"), m_profiles->filePath());
+    RecordingPlanDialog::savePlan(settings, m_recording->plan());
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -80,6 +80,7 @@ private:
     void setAngleInDegrees(bool degrees);
     void showStatus(const QString &message);
     void openRecordingInteractive();
+    void overlayInteractive();
     void showShortcuts();
     void showAbout();
     void updateActions();

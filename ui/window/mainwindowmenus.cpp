@@ -49,6 +49,7 @@ void MainWindow::createMenus()
     device->addAction(m_actions->saveInDevice);
     device->addSeparator();
     device->addAction(m_recording->recordAction());
+    device->addAction(m_recording->planAction());
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     m_viewMenu = view;
