@@ -4,6 +4,7 @@
 #include "plots/plotframe.h"
 #include "plots/plotghost.h"
 #include "plots/plotoverlays.h"
+#include "plots/plottheme.h"
 #include "plots/qcp.h"
 #include "plots/samplecsvwriter.h"
 
@@ -31,6 +32,7 @@ PlotPanel::PlotPanel(QWidget *parent) : QWidget(parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
     buildPlots();
+    plottheme::follow(m_plot);
 
     m_timer = new QTimer(this);
     m_timer->setTimerType(Qt::PreciseTimer);

@@ -20,6 +20,7 @@
 #include "recording/replaycontroller.h"
 #include "window/bridgedock.h"
 #include "window/shortcutsdialog.h"
+#include "window/theme.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
 
@@ -96,6 +97,7 @@ void MainWindow::createParts()
     m_connection = named(new ConnectionBar(this), "connectionBar");
     m_linkStatus = named(new LinkStatusWidget(this), "linkStatus");
     m_recording = named(new RecordingControls(this), "recordingControls");
+    m_theme = named(new ThemeController(this), "themeController");
     m_stats = new LinkStatsWidget(this);
     statusBar()->addPermanentWidget(m_stats);
 
@@ -412,6 +414,8 @@ void MainWindow::readSettings()
         settings.value(QStringLiteral("view/autoscale"), true).toBool());
     m_recording->setDirectory(settings.value(QStringLiteral("recording/dir")).toString());
     m_recording->setPlan(RecordingPlanDialog::loadPlan(settings));
+    m_theme->setChoice(
+        ThemeController::fromKey(settings.value(QStringLiteral("view/theme")).toString()));
     const QString profile = settings.value(QStringLiteral("profiles/last")).toString();
     if (!profile.isEmpty() && QFileInfo::exists(profile)) {
         QString error;
@@ -435,6 +439,7 @@ void MainWindow::writeSettings() const
         settings.setValue(QStringLiteral("recording/dir"), m_recording->directory());
     settings.setValue(QStringLiteral("profiles/last"), m_profiles->filePath());
     RecordingPlanDialog::savePlan(settings, m_recording->plan());
+    settings.setValue(QStringLiteral("view/theme"), ThemeController::key(m_theme->choice()));
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -8,6 +8,7 @@
 #include "editor/profilecontroller.h"
 #include "plots/plotactions.h"
 #include "recording/recordingcontrols.h"
+#include "window/theme.h"
 #include "window/windowactions.h"
 
 #include <QMenu>
@@ -60,6 +61,7 @@ void MainWindow::createMenus()
     view->addAction(m_plotActions->autoscaleAction());
     view->addAction(m_actions->degrees);
     m_plotActions->addSeriesActions(view->addMenu(tr("&Series")));
+    view->addMenu(m_theme->menu());
     view->addSeparator(); // the docks' toggles follow (createDocks)
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
