@@ -22,7 +22,10 @@ install(FILES ${_hatpic_docs} DESTINATION ${CMAKE_INSTALL_DOCDIR})
 set(CPACK_GENERATOR "DEB")
 set(CPACK_PACKAGE_NAME "hatpic-tuner")
 set(CPACK_PACKAGE_VENDOR "HATPIC")
-set(CPACK_PACKAGE_CONTACT "HATPIC Tuner developers <hatpic@localhost>")
+# Debian requires a Maintainer ("Name <email>"); whoever publishes a package sets theirs.
+set(HATPIC_PACKAGE_MAINTAINER "HATPIC Tuner developers <hatpic@localhost>" CACHE STRING
+    "The .deb's Maintainer field")
+set(CPACK_PACKAGE_CONTACT "${HATPIC_PACKAGE_MAINTAINER}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
 set(CPACK_PACKAGE_INSTALL_DIRECTORY "/usr")
 set(CPACK_PACKAGING_INSTALL_PREFIX "/usr")

@@ -5,6 +5,8 @@
 #include "plots/qcp.h"
 #include "plots/samplebuffer.h"
 
+#include <algorithm>
+
 namespace hatpic {
 
 PlotGhost::PlotGhost(const PlotFrame &frame)
