@@ -71,11 +71,13 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
 
     m_overlayOpen = new QToolButton(this);
     m_overlayOpen->setObjectName(QStringLiteral("overlayOpen"));
-    m_overlayOpen->setText(tr("O&verlay…"));
-    m_overlayOpen->setToolTip(tr("Draw a second recording fainter on the same plots"));
+    // Compact ("+"), so that the strip keeps its minimum width; the tooltip says what it does.
+    m_overlayOpen->setText(tr("+"));
+    m_overlayOpen->setToolTip(tr("Overlay a second recording: drawn fainter on the same plots"));
     connect(m_overlayOpen, &QToolButton::clicked, this, &ReplayBar::overlayRequested);
     m_overlayTitle = new QLabel(this);
     m_overlayTitle->setObjectName(QStringLiteral("overlayTitle"));
+    m_overlayTitle->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // gives way
     m_overlayAlign = new QComboBox(this);
     m_overlayAlign->setObjectName(QStringLiteral("overlayAlign"));
     m_overlayAlign->addItem(tr("aligned at the trigger"), int(ReplayController::Align::Trigger));

@@ -13,6 +13,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
@@ -111,6 +113,16 @@ void TestTheme::switchingChangesThePlots()
     auto *theme = window.findChild<ThemeController *>(QStringLiteral("themeController"));
     QVERIFY(theme);
     QCOMPARE(theme->choice(), ThemeController::Choice::System);
+    // View → Theme.
+    QMenu *view = nullptr;
+    for (QAction *a : window.menuBar()->actions()) {
+        if (a->menu() && a->menu()->objectName().isEmpty() &&
+            a->text().remove(u'&') == QStringLiteral("View"))
+            view = a->menu();
+    }
+    QVERIFY(view);
+    QVERIFY(view->actions().contains(theme->menu()->menuAction()));
+    QCOMPARE(theme->menu()->actions().size(), 3);
     const QColor systemWindow = QApplication::palette().color(QPalette::Window);
     QCustomPlot *plot = window.findChild<PlotPanel *>(QStringLiteral("plotPanel"))->customPlot();
 
