@@ -13,24 +13,18 @@ namespace hatpic {
 
 namespace {
 
-//! What the platform gave before any theme was chosen: captured once, at the first use.
-struct SystemLook
+//! The style the platform gave before any theme was chosen: captured once, at the first use.
+const QString &systemStyle()
 {
-    QPalette palette;
-    QString style;
-};
-
-const SystemLook &systemLook()
-{
-    static const SystemLook look{QApplication::palette(), QApplication::style()->name()};
-    return look;
+    static const QString style = QApplication::style()->name();
+    return style;
 }
 
 } // namespace
 
 ThemeController::ThemeController(QWidget *window) : QObject(window)
 {
-    systemLook();
+    systemStyle();
     m_menu = new QMenu(tr("&Theme"), window);
     m_menu->setObjectName(QStringLiteral("menu_theme"));
     m_group = new QActionGroup(this);
@@ -73,18 +67,20 @@ bool ThemeController::isDark() const
     case Choice::System:
         break;
     }
-    return plottheme::isDark(systemLook().palette);
+    return plottheme::isDark(QApplication::palette());
 }
 
 void ThemeController::apply()
 {
-    const QString style =
-        m_choice == Choice::System ? systemLook().style : QStringLiteral("Fusion");
+    const QString style = m_choice == Choice::System ? systemStyle() : QStringLiteral("Fusion");
     if (QApplication::style()->name().compare(style, Qt::CaseInsensitive) != 0)
         QApplication::setStyle(style);
     switch (m_choice) {
     case Choice::System:
-        QApplication::setPalette(systemLook().palette);
+        // A palette that sets no role (QPalette() is the current one with an empty resolve
+        // mask) resolves entirely against the platform's, and again whenever the platform's
+        // changes: the look keeps following the system.
+        QApplication::setPalette(QPalette());
         break;
     case Choice::Light:
         QApplication::setPalette(lightPalette());
