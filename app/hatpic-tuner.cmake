@@ -10,3 +10,8 @@ install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/hatpic-tuner.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
 install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/hatpic-tuner.png
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/256x256/apps)
+foreach(size 16 24 32 48 64 128)
+  install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/png/hatpic-tuner-${size}.png
+          DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/${size}x${size}/apps
+          RENAME hatpic-tuner.png)
+endforeach()

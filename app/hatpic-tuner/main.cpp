@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 using namespace hatpic;
 
@@ -25,6 +26,14 @@ void fail(const QString &message)
 
 int main(int argc, char *argv[])
 {
+    // --version answers without a display (over ssh, in a package check): before QApplication,
+    // which needs one. The same text as QCommandLineParser's.
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--version") == 0 || std::strcmp(argv[i], "-v") == 0) {
+            std::printf("hatpic-tuner %s\n", HATPIC_VERSION);
+            return 0;
+        }
+    }
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("HATPIC"));
     QApplication::setApplicationName(QStringLiteral("hatpic-tuner"));

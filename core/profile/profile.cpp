@@ -4,7 +4,10 @@
 #include "jsonkeys.h"
 #include "profile/paramsjson.h"
 
+#include <QCoreApplication>
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -38,11 +41,11 @@ struct PresetEntry
 };
 
 constexpr std::array<PresetEntry, 5> kPresets = {{
-    {u"Default", u":/presets/default.json"},
-    {u"Soft", u":/presets/soft.json"},
-    {u"Notchy", u":/presets/notchy.json"},
-    {u"Detents", u":/presets/detents.json"},
-    {u"Walled", u":/presets/walled.json"},
+    {u"Default", u"default.json"},
+    {u"Soft", u"soft.json"},
+    {u"Notchy", u"notchy.json"},
+    {u"Detents", u"detents.json"},
+    {u"Walled", u"walled.json"},
 }};
 
 const QString kEffectsKey = QStringLiteral("effects");
@@ -325,19 +328,41 @@ QStringList presetNames()
     return names;
 }
 
-std::optional<Profile> preset(const QString &name)
+QStringList presetDirectories()
 {
     // The resources live in the static hatpic_core library; registering them explicitly keeps
     // them working for any consumer, whatever its linker does with unreferenced objects.
     static const bool registered = (initPresetResources(), true);
     Q_UNUSED(registered);
+    QStringList dirs;
+    if (QCoreApplication::instance()) {
+        dirs.append(QDir::cleanPath(QCoreApplication::applicationDirPath() + u'/' +
+                                    QStringLiteral(HATPIC_PRESETS_FROM_BINDIR)));
+    }
+    dirs.append(u":/presets"_s);
+    return dirs;
+}
+
+QString presetFile(const QString &name, const QStringList &dirs)
+{
     for (const PresetEntry &entry : kPresets) {
         if (name.compare(QString::fromUtf16(entry.name), Qt::CaseInsensitive) != 0)
             continue;
-        ProfileReadResult result = readProfile(QString::fromUtf16(entry.path));
-        return result.profile;
+        for (const QString &dir : dirs) {
+            const QString path = QDir(dir).filePath(QString::fromUtf16(entry.path));
+            if (QFileInfo::exists(path))
+                return path;
+        }
     }
-    return std::nullopt;
+    return {};
+}
+
+std::optional<Profile> preset(const QString &name)
+{
+    const QString path = presetFile(name);
+    if (path.isEmpty())
+        return std::nullopt;
+    return readProfile(path).profile;
 }
 
 } // namespace hatpic

@@ -52,10 +52,18 @@ QByteArray serializeProfile(const Profile &profile);
 //! Writes atomically with QSaveFile. Returns an empty string on success, else the error.
 QString writeProfile(const Profile &profile, const QString &path);
 
-//! Built-in presets from the resource system (":/presets/…"): "Default", "Soft", "Notchy",
-//! "Detents", "Walled".
+//! Built-in presets: "Default", "Soft", "Notchy", "Detents", "Walled". Their files
+//! (resources/presets) are installed to <prefix>/share/hatpic-tuner/presets and also compiled
+//! in (":/presets/…").
 QStringList presetNames();
-//! A preset by name; std::nullopt for an unknown name.
+//! A preset by name, read from presetFile(); std::nullopt for an unknown name.
 std::optional<Profile> preset(const QString &name);
+//! Where preset files are looked for, first match wins: the installed presets folder found
+//! from the program's own folder (so a relocated install finds its own), then ":/presets" (the
+//! copy compiled in, for a program run from its build tree).
+QStringList presetDirectories();
+//! The file of preset `name` in the first of `dirs` that holds it; empty when none does (or
+//! the name is not a preset's).
+QString presetFile(const QString &name, const QStringList &dirs = presetDirectories());
 
 } // namespace hatpic

@@ -201,8 +201,15 @@ void DeviceClient::setSimulatedHand(const HandInput &hand)
 
 void DeviceClient::startRecording(const QString &csvPath, const QString &source)
 {
-    QMetaObject::invokeMethod(
-        m_session, [s = m_session, csvPath, source] { s->startRecording(csvPath, source); });
+    startRecording(csvPath, RecordingPlan{}, source);
+}
+
+void DeviceClient::startRecording(const QString &csvPath, const RecordingPlan &plan,
+                                  const QString &source)
+{
+    QMetaObject::invokeMethod(m_session, [s = m_session, csvPath, plan, source] {
+        s->startRecording(csvPath, source, plan);
+    });
 }
 
 void DeviceClient::stopRecording()

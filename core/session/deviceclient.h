@@ -3,6 +3,7 @@
 #pragma once
 
 #include "session/sessiontypes.h"
+#include "telemetry/recordingtrigger.h"
 #include "telemetry/sample.h"
 
 #include <QObject>
@@ -49,6 +50,11 @@ public:
     //! Records to `csvPath` (+ NAME.json); `source` names the program in the metadata.
     void startRecording(const QString &csvPath,
                         const QString &source = QStringLiteral("hatpic-tuner"));
+    //! Records as `plan` says: now or armed until its trigger, with a pre-trigger span and a
+    //! length (recordingtrigger.h). recordingChanged reports the armed state.
+    void startRecording(const QString &csvPath, const RecordingPlan &plan,
+                        const QString &source = QStringLiteral("hatpic-tuner"));
+    //! Stops the recording or calls off an armed one.
     void stopRecording();
 
     // Last values seen on this thread (updated before the matching signal is emitted).

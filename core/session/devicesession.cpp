@@ -270,6 +270,7 @@ void DeviceSession::loseLink(const StateDetail &lost)
         m_samples.stopRecording();
         Q_EMIT notice({SessionNotice::Kind::RecordingClosedByLoss, {}});
     }
+    m_samples.stopRecording(); // an armed recording waits for no lost device
     m_queue.failAll(Reason::ConnectionLost);
     closeLink();
     m_samples.connectionEnded();
@@ -467,14 +468,15 @@ SimLink *DeviceSession::simLink() const
 
 // ---------------------------------------------------------------- recording
 
-void DeviceSession::startRecording(const QString &csvPath, const QString &source)
+void DeviceSession::startRecording(const QString &csvPath, const QString &source,
+                                   const RecordingPlan &plan)
 {
     if (m_state != SessionState::Connected) {
         m_samples.stopRecording();
         Q_EMIT notice({SessionNotice::Kind::RecordingNeedsDevice, {}});
         return;
     }
-    m_samples.startRecording(csvPath, source, m_info);
+    m_samples.startRecording(csvPath, source, m_info, plan);
 }
 
 void DeviceSession::stopRecording()

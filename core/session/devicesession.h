@@ -60,7 +60,8 @@ public:
     void resetReference();
     void setSimulatedHand(const HandInput &hand);
 
-    void startRecording(const QString &csvPath, const QString &source);
+    void startRecording(const QString &csvPath, const QString &source,
+                        const RecordingPlan &plan = {});
     void stopRecording();
 
     SessionState state() const { return m_state; }

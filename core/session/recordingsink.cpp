@@ -48,6 +48,22 @@ bool RecordingSink::open(const QString &csvPath, const RecordingMetadata &metada
     return true;
 }
 
+void RecordingSink::reportArmed(const QString &csvPath, const QString &trigger)
+{
+    RecordingStatus status;
+    status.armed = true;
+    status.path = csvPath;
+    status.trigger = trigger;
+    Q_EMIT statusChanged(status);
+}
+
+void RecordingSink::reportDisarmed(const QString &csvPath)
+{
+    RecordingStatus status;
+    status.path = csvPath;
+    Q_EMIT statusChanged(status);
+}
+
 void RecordingSink::close(const QString &error)
 {
     m_timer.stop();

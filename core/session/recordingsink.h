@@ -21,6 +21,10 @@ public:
     //! Opens `csvPath`; reports the status either way. False when the writer refused.
     bool open(const QString &csvPath, const RecordingMetadata &metadata);
     bool isOpen() const { return m_writer.isOpen(); }
+    //! Reports that a recording to `csvPath` waits for `trigger` (nothing is written yet).
+    void reportArmed(const QString &csvPath, const QString &trigger);
+    //! Reports that an armed recording was called off.
+    void reportDisarmed(const QString &csvPath);
     //! Closes; reports the final status when it was open or when `error` is given.
     void close(const QString &error = {});
     //! Appends the samples; a write error closes the recording (and reports it).

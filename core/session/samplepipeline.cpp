@@ -2,6 +2,8 @@
 
 #include <QDateTime>
 
+#include <algorithm>
+
 namespace hatpic {
 
 SamplePipeline::SamplePipeline(QObject *parent)
@@ -36,6 +38,9 @@ void SamplePipeline::stop()
 
 void SamplePipeline::push(const Sample &sample)
 {
+    if (m_armed && m_armed->trigger.feed(sample))
+        fire(sample.t_s);
+    keepRecent(sample);
     m_batch.append(sample);
     if (m_batch.size() >= kBatchMaxSamples)
         flush();
@@ -48,8 +53,41 @@ void SamplePipeline::flush()
     SampleBatch batch;
     batch.swap(m_batch);
     m_batch.reserve(kBatchMaxSamples);
-    m_recording.append(batch);
+    record(batch);
     Q_EMIT samplesReady(batch);
+}
+
+void SamplePipeline::keepRecent(const Sample &sample)
+{
+    m_recent.push_back(sample);
+    const double oldest = sample.t_s - RecordingPlan::kMaxPreTrigger_s;
+    while (!m_recent.empty() && (m_recent.front().t_s < oldest ||
+                                 static_cast<qsizetype>(m_recent.size()) > kMaxRecentSamples))
+        m_recent.pop_front();
+}
+
+void SamplePipeline::record(const SampleBatch &batch)
+{
+    if (!m_recording.isOpen() || batch.isEmpty())
+        return;
+    if (m_pendingDuration_s > 0) {
+        m_stopAt = batch.constFirst().t_s + m_pendingDuration_s;
+        m_pendingDuration_s = 0;
+    }
+    if (!m_stopAt) {
+        m_recording.append(batch);
+        return;
+    }
+    const double stopAt = *m_stopAt;
+    const auto end = std::find_if(batch.cbegin(), batch.cend(),
+                                  [stopAt](const Sample &s) { return s.t_s > stopAt; });
+    if (end == batch.cend()) {
+        m_recording.append(batch);
+        return;
+    }
+    m_recording.append(batch.first(end - batch.cbegin()));
+    m_stopAt.reset();
+    m_recording.close();
 }
 
 void SamplePipeline::applyEffect(CommandKind kind, const DeviceParams &params)
@@ -59,6 +97,8 @@ void SamplePipeline::applyEffect(CommandKind kind, const DeviceParams &params)
         m_recording.zeroed(m_builder.deviceParams().theta0);
         return;
     }
+    if (m_armed && m_armed->trigger.plan().start == RecordingPlan::Start::NextPush)
+        fire(m_recent.empty() ? std::nullopt : std::optional(m_recent.back().t_s));
     m_recording.paramsApplied(m_builder.deviceParams(), params);
     m_builder.setDeviceParams(params);
 }
@@ -112,26 +152,64 @@ void SamplePipeline::resetReference()
 }
 
 void SamplePipeline::startRecording(const QString &csvPath, const QString &source,
-                                    const DeviceInfo &device)
+                                    const DeviceInfo &device, const RecordingPlan &plan)
 {
     stopRecording();
-    flush(); // samples that arrived before the start are not part of the recording
+    m_armed = Armed{csvPath, source, device, RecordingTrigger(plan)};
+    if (plan.start == RecordingPlan::Start::Now)
+        fire(m_recent.empty() ? std::nullopt : std::optional(m_recent.back().t_s));
+    else
+        m_recording.reportArmed(csvPath, triggerEventText(m_armed->trigger.plan()));
+}
+
+void SamplePipeline::fire(std::optional<double> anchor)
+{
+    const Armed armed = *m_armed;
+    m_armed.reset();
+    const RecordingPlan &plan = armed.trigger.plan();
+    flush(); // samples that arrived before the start are only recorded as pre-trigger span
     RecordingMetadata meta;
     meta.start = QDateTime::currentDateTimeUtc();
-    meta.device = device;
+    meta.device = armed.device;
     meta.params = m_builder.deviceParams();
     if (m_effectsKnown)
         meta.effects = m_effects;
     meta.host = m_builder.hostParams();
-    meta.source = source;
-    m_recording.open(csvPath, meta);
+    meta.source = armed.source;
+    if (!m_recording.open(armed.csvPath, meta))
+        return;
+    m_stopAt.reset();
+    m_pendingDuration_s = 0;
+    if (anchor && plan.preTrigger_s > 0) {
+        SampleBatch before;
+        for (const Sample &s : m_recent) {
+            if (s.t_s > *anchor - plan.preTrigger_s)
+                before.append(s);
+        }
+        m_recording.append(before);
+    }
+    if (plan.start != RecordingPlan::Start::Now || plan.preTrigger_s > 0)
+        m_recording.addEvent(triggerEventText(plan));
+    if (plan.duration_s > 0) {
+        if (anchor)
+            m_stopAt = *anchor + plan.duration_s;
+        else
+            m_pendingDuration_s = plan.duration_s;
+    }
 }
 
 void SamplePipeline::stopRecording()
 {
+    if (m_armed) {
+        const QString path = m_armed->csvPath;
+        m_armed.reset();
+        m_recording.reportDisarmed(path);
+    }
     if (!m_recording.isOpen())
         return;
     flush();
+    m_stopAt.reset();
+    m_pendingDuration_s = 0;
     m_recording.close();
 }
 

@@ -7,10 +7,14 @@
 #include "session/recordingsink.h"
 #include "session/samplebuilder.h"
 #include "session/sessiontypes.h"
+#include "telemetry/recordingtrigger.h"
 #include "telemetry/sample.h"
 
 #include <QObject>
 #include <QTimer>
+
+#include <deque>
+#include <optional>
 
 namespace hatpic {
 
@@ -20,6 +24,9 @@ class SamplePipeline : public QObject
 public:
     static constexpr int kBatchIntervalMs = 20; //!< samplesReady() at least this often [ms]
     static constexpr int kBatchMaxSamples = 64; //!< …or when this many samples wait
+    //! Recent samples kept for a recording's pre-trigger span: those of the last
+    //! RecordingPlan::kMaxPreTrigger_s, and never more than this many.
+    static constexpr qsizetype kMaxRecentSamples = 50'000;
 
     explicit SamplePipeline(QObject *parent = nullptr);
 
@@ -27,7 +34,11 @@ public:
     const SampleBuilder &builder() const { return m_builder; }
 
     //! A new connectDevice(): t_s, p_ref and the gap count start over.
-    void clear() { m_builder.clear(); }
+    void clear()
+    {
+        m_builder.clear();
+        m_recent.clear();
+    }
     //! A connection began: its first PARAMS sets the copy without an event; batches flow.
     void connectionStarted();
     //! The link is gone: hands on the samples waiting; t_s follows host time across the gap.
@@ -52,10 +63,15 @@ public:
     bool setHostParams(const HostParams &host);
     void resetReference();
 
-    //! Starts a recording of `device`; a running one is closed first.
-    void startRecording(const QString &csvPath, const QString &source, const DeviceInfo &device);
+    //! Starts a recording of `device` as `plan` says (now, or armed until its trigger, with
+    //! its pre-trigger span from the recent samples and its length); a running or armed one is
+    //! closed first. A recording with a length closes itself after its last sample.
+    void startRecording(const QString &csvPath, const QString &source, const DeviceInfo &device,
+                        const RecordingPlan &plan = {});
+    //! Closes the recording, or calls off an armed one.
     void stopRecording();
     bool isRecording() const { return m_recording.isOpen(); }
+    bool isArmed() const { return m_armed.has_value(); }
 
 Q_SIGNALS:
     void samplesReady(const hatpic::SampleBatch &batch);
@@ -64,6 +80,20 @@ Q_SIGNALS:
     void deviceEffectsChanged(const hatpic::EffectParams &effects);
 
 private:
+    struct Armed
+    {
+        QString csvPath;
+        QString source;
+        DeviceInfo device;
+        RecordingTrigger trigger;
+    };
+    //! Opens the armed recording: the recent samples after `anchor` − pre-trigger span, then
+    //! (for a trigger) its event on the next sample; the length counts from `anchor`.
+    void fire(std::optional<double> anchor);
+    void keepRecent(const Sample &sample);
+    //! Appends to the recording up to its end time, and closes it there.
+    void record(const SampleBatch &batch);
+
     SampleBuilder m_builder;
     SampleBatch m_batch;
     QTimer m_batchTimer;
@@ -71,6 +101,11 @@ private:
     bool m_paramsKnown = false;  //!< a PARAMS arrived on this connection
     EffectParams m_effects;      //!< the device's effect block as the host believes it
     bool m_effectsKnown = false; //!< an EFFECTS arrived on this connection
+    bool m_paramsKnown = false; //!< a PARAMS arrived on this connection
+    std::deque<Sample> m_recent;
+    std::optional<Armed> m_armed;
+    std::optional<double> m_stopAt; //!< the recording closes after its last sample here [s]
+    double m_pendingDuration_s = 0; //!< a length to count from the first sample recorded [s]
 };
 
 } // namespace hatpic

@@ -47,6 +47,8 @@ struct RecordingStatus
     qint64 bytes = 0;          //!< bytes written to the CSV so far
     quint64 eventsDropped = 0; //!< events left out by the recorder's bounds
     QString error;             //!< why the recording stopped, if it failed
+    bool armed = false;        //!< waiting for its trigger (no file written yet)
+    QString trigger;           //!< what an armed recording waits for (triggerEventText)
 };
 
 //! NAME.csv → NAME.json: where a recording's metadata lives.

@@ -18,11 +18,11 @@ StateLook look(SessionState state)
 {
     switch (state) {
     case SessionState::Disconnected:
-        return {LinkStatusWidget::tr("disconnected"), "#9e9e9e"};
+        return {LinkStatusWidget::tr("disconnected"), "#616161"};
     case SessionState::Opening:
-        return {LinkStatusWidget::tr("opening…"), "#f9a825"};
+        return {LinkStatusWidget::tr("opening…"), "#b26a00"};
     case SessionState::Detecting:
-        return {LinkStatusWidget::tr("detecting…"), "#f9a825"};
+        return {LinkStatusWidget::tr("detecting…"), "#b26a00"};
     case SessionState::Connected:
         return {LinkStatusWidget::tr("connected"), "#2e7d32"};
     case SessionState::Lost:

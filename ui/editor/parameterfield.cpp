@@ -287,7 +287,7 @@ void ParameterField::updateMarker()
 {
     const bool differs = differsFromDevice();
     m_marker->setVisible(differs);
-    m_marker->setToolTip(differs ? u"device: "_s + numberText(*m_device) : QString());
+    m_marker->setToolTip(differs ? tr("device: %1").arg(numberText(*m_device)) : QString());
 }
 
 } // namespace hatpic

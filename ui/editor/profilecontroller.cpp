@@ -123,7 +123,7 @@ bool ProfileController::isModified() const
 QString ProfileController::profileName() const
 {
     const QString name = m_slots[m_active].saved.name;
-    return name.isEmpty() ? kUntitled : name;
+    return name.isEmpty() ? tr("Untitled") : name;
 }
 
 QString ProfileController::filePath() const
@@ -297,7 +297,7 @@ bool ProfileController::maybeSaveSlot(int slot)
         return true;
     const QString text =
         tr("Profile \"%1\" (slot %2) has unsaved changes. Save them?")
-            .arg(m_slots[slot].saved.name.isEmpty() ? kUntitled : m_slots[slot].saved.name,
+            .arg(m_slots[slot].saved.name.isEmpty() ? tr("Untitled") : m_slots[slot].saved.name,
                  slotName(slot));
     switch (m_question(text)) {
     case QMessageBox::Save:

@@ -3,6 +3,7 @@
 #include "model/stiffness.h"
 
 #include "plots/palette.h"
+#include "plots/plottheme.h"
 #include "plots/qcp.h"
 #include <QTimer>
 #include <QVBoxLayout>
@@ -133,6 +134,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
+    plottheme::follow(m_plot);
     rebuild();
 }
 

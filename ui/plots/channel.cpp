@@ -1,5 +1,7 @@
 #include "plots/channel.h"
 
+#include <QCoreApplication>
+
 namespace hatpic {
 
 QString channelLabel(Channel channel)
@@ -10,7 +12,7 @@ QString channelLabel(Channel channel)
     case Channel::Omega:
         return QStringLiteral("ω");
     case Channel::Tau:
-        return QStringLiteral("τ (measured)");
+        return QCoreApplication::translate("hatpic::Channel", "τ (measured)");
     case Channel::TauRec:
         return QStringLiteral("τ_rec");
     case Channel::TauExt:

@@ -1,6 +1,9 @@
 // One colour per quantity, in every view (time plots, legends, stiffness view): θ is blue
 // wherever θ is drawn, the notch band amber wherever the notch band is shaded. Views pick a
 // line style (solid, dashed) to tell variants of one quantity apart, never another colour.
+// Every colour reads on the light and on the dark theme's plot background alike (contrast at
+// least 3:1 against white and against the dark base, tests/ui/window/tst_theme.cpp), so no
+// colour changes with the theme.
 #pragma once
 
 #include "plots/channel.h"
@@ -14,29 +17,29 @@ inline QColor channel(Channel c)
 {
     switch (c) {
     case Channel::Theta:
-        return {21, 101, 192}; // blue
+        return {22, 105, 199}; // blue
     case Channel::Omega:
         return {0, 151, 167}; // cyan
     case Channel::Tau:
-        return {97, 97, 97}; // grey
+        return {106, 106, 106}; // grey
     case Channel::TauRec:
-        return {173, 20, 87}; // crimson: also the stiffness view's τ_rec(θ) curves
+        return {203, 23, 102}; // crimson: also the stiffness view's τ_rec(θ) curves
     case Channel::TauExt:
         return {46, 125, 50}; // green
     case Channel::TauTotal:
         return {230, 81, 0}; // orange
     case Channel::VRef:
-        return {123, 31, 162}; // purple
+        return {163, 41, 214}; // purple
     case Channel::PRef:
-        return {109, 76, 65}; // brown
+        return {137, 96, 82}; // brown
     }
     return Qt::black;
 }
 
 inline const QColor kDeadZone(84, 110, 122, 90); //!< dead-zone band ±Q_dz (translucent)
 inline const QColor kNotch(255, 160, 0, 60);     //!< notch band Q_dz … N (translucent)
-inline const QColor kEvent(55, 71, 79);          //!< event markers (pushes, resets)
-inline const QColor kLivePoint(33, 33, 33);      //!< the operating point (θ, τ_rec) now
+inline const QColor kEvent(85, 109, 122);        //!< event markers (pushes, resets)
+inline const QColor kLivePoint(117, 117, 117);   //!< the operating point (θ, τ_rec) now
 inline const QColor kLimit(211, 47, 47);         //!< ±tau_limit
 
 } // namespace hatpic::palette

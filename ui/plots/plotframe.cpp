@@ -3,6 +3,7 @@
 #include "plots/displayunits.h"
 #include "plots/palette.h"
 #include "plots/plotoverlays.h"
+#include "plots/plottheme.h"
 #include "plots/qcp.h"
 #include "plots/samplebuffer.h"
 
@@ -243,7 +244,8 @@ void PlotFrame::updateLegends(const SampleBuffer *source, qsizetype index,
                 continue;
             const QCPAbstractPlottable *p = item->plottable();
             const bool on = isBandKey(p) ? bandsVisible : p->visible();
-            item->setTextColor(on ? QColor(Qt::black) : QColor(160, 160, 160));
+            item->setTextColor(on ? legend->parentPlot()->palette().color(QPalette::Text)
+                                  : plottheme::kHiddenLegendText);
         }
     }
 }

@@ -2,7 +2,9 @@
 
 #include "plots/logging.h"
 #include "plots/plotframe.h"
+#include "plots/plotghost.h"
 #include "plots/plotoverlays.h"
+#include "plots/plottheme.h"
 #include "plots/qcp.h"
 #include "plots/samplecsvwriter.h"
 
@@ -30,6 +32,7 @@ PlotPanel::PlotPanel(QWidget *parent) : QWidget(parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
     buildPlots();
+    plottheme::follow(m_plot);
 
     m_timer = new QTimer(this);
     m_timer->setTimerType(Qt::PreciseTimer);
@@ -54,6 +57,7 @@ void PlotPanel::buildPlots()
                     [this] { m_replotNeeded = true; });
     }
     m_overlays = std::make_unique<PlotOverlays>(m_plot, m_frame->rects());
+    m_ghost = std::make_unique<PlotGhost>(*m_frame);
 
     connect(
         m_plot, &QCustomPlot::legendClick, this,
@@ -391,6 +395,14 @@ void PlotPanel::rebuildData()
         g->data()->set(m_points, true);
         m_stats.lastPoints += m_points.size();
     }
+    m_ghost->rebuild(*m_frame, m_decimator, t0, t1, m_units);
+}
+
+void PlotPanel::setOverlaySource(const SampleBuffer *buffer)
+{
+    m_ghost->setSource(buffer);
+    m_dataDirty = true;
+    m_replotNeeded = true;
 }
 
 void PlotPanel::updateLegendTexts()

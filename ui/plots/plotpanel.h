@@ -33,6 +33,7 @@ class QTimer;
 
 namespace hatpic {
 
+class PlotGhost;
 class PlotOverlays;
 
 class PlotPanel : public QWidget
@@ -58,6 +59,11 @@ public:
     //! The buffer to draw (not owned; must outlive the panel or be replaced). nullptr: nothing.
     void setSource(const SampleBuffer *buffer);
     const SampleBuffer *source() const { return m_source; }
+
+    //! A second buffer drawn fainter on the same plots (a recording overlaid on the replay;
+    //! not owned, must outlive the panel or be replaced). nullptr: none.
+    void setOverlaySource(const SampleBuffer *buffer);
+    const PlotGhost *overlay() const { return m_ghost.get(); }
 
     //! Length of the visible time range [s].
     void setWindowLength(double seconds);
@@ -159,6 +165,7 @@ private:
     std::unique_ptr<PlotFrame> m_frame;
     QTimer *m_timer = nullptr;
     std::unique_ptr<PlotOverlays> m_overlays;
+    std::unique_ptr<PlotGhost> m_ghost;
     DisplayUnits m_units;
 
     const SampleBuffer *m_source = nullptr;

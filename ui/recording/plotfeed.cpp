@@ -16,6 +16,9 @@ PlotFeed::PlotFeed(PlotPanel *plots, QObject *parent) : QObject(parent), m_plots
     // The replay bar's ▶ and the end of the recording change the state too.
     connect(m_replay, &ReplayController::playingChanged, this, &PlotFeed::pausedChanged);
     connect(m_plots, &PlotPanel::pausedChanged, this, &PlotFeed::pausedChanged);
+    connect(m_replay, &ReplayController::overlayChanged, this, [this] {
+        m_plots->setOverlaySource(m_replay->hasOverlay() ? &m_replay->overlayBuffer() : nullptr);
+    });
     m_plots->setSource(&m_live);
     m_plots->setHostParams(m_liveHost);
 }
@@ -23,8 +26,10 @@ PlotFeed::PlotFeed(PlotPanel *plots, QObject *parent) : QObject(parent), m_plots
 PlotFeed::~PlotFeed()
 {
     // The panel may outlive the buffers it draws.
-    if (m_plots)
+    if (m_plots) {
         m_plots->setSource(nullptr);
+        m_plots->setOverlaySource(nullptr);
+    }
 }
 
 bool PlotFeed::isReplaying() const

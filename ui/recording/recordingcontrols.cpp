@@ -1,5 +1,7 @@
 #include "recording/recordingcontrols.h"
 
+#include "recording/recordingplandialog.h"
+
 #include <QAction>
 #include <QDateTime>
 #include <QDir>
@@ -39,9 +41,26 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     m_action->setToolTip(tr("Record the live data to a CSV file (Ctrl+R); again to stop"));
     connect(m_action, &QAction::triggered, this, &RecordingControls::onTriggered);
 
+    m_planAction = new QAction(tr("Recording &Options…"), this);
+    m_planAction->setObjectName(QStringLiteral("recordingPlanAction"));
+    m_planAction->setToolTip(
+        tr("Start now, on the next push or at a threshold; time before the trigger; length"));
+    connect(m_planAction, &QAction::triggered, this, &RecordingControls::onPlanTriggered);
+    m_planChooser = [this](const RecordingPlan &plan) -> std::optional<RecordingPlan> {
+        RecordingPlanDialog dialog(this);
+        dialog.setPlan(plan);
+        if (dialog.exec() != QDialog::Accepted)
+            return std::nullopt;
+        return dialog.plan();
+    };
+
     m_button = new QToolButton(this);
     m_button->setDefaultAction(m_action);
     m_button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    auto *planButton = new QToolButton(this);
+    planButton->setObjectName(QStringLiteral("recordingPlanButton"));
+    planButton->setDefaultAction(m_planAction);
+    planButton->setText(QStringLiteral("⚙"));
     m_label = new QLabel(this);
     m_label->setObjectName(QStringLiteral("recordingStatus"));
     m_label->setMinimumWidth(m_label->fontMetrics().horizontalAdvance(
@@ -49,6 +68,7 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 0, 4, 0);
     layout->addWidget(m_button);
+    layout->addWidget(planButton);
     layout->addWidget(m_label, 1);
 
     m_chooser = [this](const QString &suggested) {
@@ -92,9 +112,23 @@ QString RecordingControls::chooseRecordingToOpen()
     return path;
 }
 
+void RecordingControls::setPlan(const RecordingPlan &plan)
+{
+    m_plan = plan.sanitized();
+    refresh();
+}
+
+void RecordingControls::onPlanTriggered()
+{
+    if (!m_planChooser)
+        return;
+    if (const std::optional<RecordingPlan> plan = m_planChooser(m_plan))
+        setPlan(*plan);
+}
+
 void RecordingControls::onTriggered()
 {
-    if (m_status.active) {
+    if (m_status.active || m_status.armed) {
         Q_EMIT stopRequested();
     } else {
         QString path = m_chooser ? m_chooser(suggestedPath(m_directory)) : QString();
@@ -122,17 +156,29 @@ void RecordingControls::setCanRecord(bool connected)
 
 void RecordingControls::refresh()
 {
-    m_action->setChecked(m_status.active);
-    m_action->setEnabled(m_canRecord || m_status.active);
-    m_action->setText(m_status.active ? tr("Stop &recording") : tr("&Record…"));
+    const bool busy = m_status.active || m_status.armed;
+    m_action->setChecked(busy);
+    m_action->setEnabled(m_canRecord || busy);
+    m_action->setText(m_status.active  ? tr("Stop &recording")
+                      : m_status.armed ? tr("Cancel &recording")
+                                       : tr("&Record…"));
+    m_planAction->setEnabled(!busy);
     m_label->setText(statusText());
     m_label->setToolTip(m_status.path);
-    m_label->setStyleSheet(m_status.active ? QStringLiteral("color: #c62828; font-weight: bold;")
-                                           : QString());
+    // A red that reads at 3:1 on the light and on the dark theme's window.
+    m_label->setStyleSheet(busy ? QStringLiteral("color: #e53935; font-weight: bold;") : QString());
 }
 
 QString RecordingControls::statusText() const
 {
+    if (m_status.armed)
+        return tr("◌ Armed: waiting for %1").arg(RecordingPlanDialog::describeTrigger(m_plan));
+    if (m_status.active && m_plan.duration_s > 0) {
+        return tr("● %1 of %2 · %3 · %4 samples")
+            .arg(formatDuration(m_status.seconds), formatDuration(m_plan.duration_s),
+                 formatBytes(m_status.bytes))
+            .arg(m_status.samples);
+    }
     if (m_status.active) {
         return tr("● %1 · %2 · %3 samples")
             .arg(formatDuration(m_status.seconds), formatBytes(m_status.bytes))

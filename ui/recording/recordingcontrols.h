@@ -5,10 +5,12 @@
 #pragma once
 
 #include "session/sessiontypes.h"
+#include "telemetry/recordingtrigger.h"
 
 #include <QWidget>
 
 #include <functional>
+#include <optional>
 
 class QAction;
 class QLabel;
@@ -23,6 +25,9 @@ public:
     //! Asks where to record, given a suggested path; empty = cancelled. Replaceable for tests.
     using PathChooser = std::function<QString(const QString &suggested)>;
 
+    //! Asks how to record, given the current plan; nullopt = cancelled. Replaceable for tests.
+    using PlanChooser = std::function<std::optional<RecordingPlan>(const RecordingPlan &)>;
+
     explicit RecordingControls(QWidget *parent = nullptr);
 
     //! hatpic-YYYYMMDD-HHMMSS.csv in `directory` (the documents folder when empty).
@@ -33,6 +38,10 @@ public:
     static QString inExistingFolder(const QString &path);
 
     void setPathChooser(PathChooser chooser) { m_chooser = std::move(chooser); }
+    void setPlanChooser(PlanChooser chooser) { m_planChooser = std::move(chooser); }
+    //! How the next recording starts and how long it runs (the session carries it out).
+    void setPlan(const RecordingPlan &plan);
+    RecordingPlan plan() const { return m_plan; }
     void setDirectory(const QString &directory) { m_directory = directory; }
     QString directory() const { return m_directory; } //!< of the last recording chosen
     //! Asks which recording to replay, starting in the folder of the last recording made or
@@ -43,7 +52,8 @@ public:
     RecordingStatus status() const { return m_status; }
     void setCanRecord(bool connected);
 
-    QAction *recordAction() const { return m_action; } //!< Ctrl+R, checkable
+    QAction *recordAction() const { return m_action; }   //!< Ctrl+R, checkable
+    QAction *planAction() const { return m_planAction; } //!< opens the recording options
     QString statusText() const;
 
     //! Human sizes: "812 B", "3.4 kB", "12.1 MB".
@@ -57,9 +67,13 @@ Q_SIGNALS:
 
 private:
     void onTriggered();
+    void onPlanTriggered();
     void refresh();
 
     QAction *m_action = nullptr;
+    QAction *m_planAction = nullptr;
+    PlanChooser m_planChooser;
+    RecordingPlan m_plan;
     QToolButton *m_button = nullptr;
     QLabel *m_label = nullptr;
     PathChooser m_chooser;

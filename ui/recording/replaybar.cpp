@@ -69,6 +69,32 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     m_live->setToolTip(tr("Leave the replay and show the live data again"));
     connect(m_live, &QPushButton::clicked, this, &ReplayBar::backToLiveRequested);
 
+    m_overlayOpen = new QToolButton(this);
+    m_overlayOpen->setObjectName(QStringLiteral("overlayOpen"));
+    // Compact ("+"), so that the strip keeps its minimum width; the tooltip says what it does.
+    m_overlayOpen->setText(tr("+"));
+    m_overlayOpen->setToolTip(tr("Overlay a second recording: drawn fainter on the same plots"));
+    connect(m_overlayOpen, &QToolButton::clicked, this, &ReplayBar::overlayRequested);
+    m_overlayTitle = new QLabel(this);
+    m_overlayTitle->setObjectName(QStringLiteral("overlayTitle"));
+    m_overlayTitle->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // gives way
+    m_overlayAlign = new QComboBox(this);
+    m_overlayAlign->setObjectName(QStringLiteral("overlayAlign"));
+    m_overlayAlign->addItem(tr("aligned at the trigger"), int(ReplayController::Align::Trigger));
+    m_overlayAlign->addItem(tr("aligned at the start"), int(ReplayController::Align::Start));
+    m_overlayAlign->setToolTip(
+        tr("Trigger: the first trigger or other event of each recording; start: their first "
+           "samples"));
+    connect(m_overlayAlign, &QComboBox::currentIndexChanged, this, [this] {
+        m_controller->setOverlayAlign(
+            static_cast<ReplayController::Align>(m_overlayAlign->currentData().toInt()));
+    });
+    m_overlayClose = new QToolButton(this);
+    m_overlayClose->setObjectName(QStringLiteral("overlayClose"));
+    m_overlayClose->setText(QStringLiteral("✕"));
+    m_overlayClose->setToolTip(tr("Remove the overlay"));
+    connect(m_overlayClose, &QToolButton::clicked, controller, &ReplayController::closeOverlay);
+
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(8, 4, 8, 4);
     layout->addWidget(tag);
@@ -78,11 +104,17 @@ ReplayBar::ReplayBar(ReplayController *controller, QWidget *parent)
     layout->addWidget(m_slider, 2);
     layout->addWidget(m_time);
     layout->addWidget(m_sessionTime);
+    layout->addWidget(m_overlayOpen);
+    layout->addWidget(m_overlayTitle);
+    layout->addWidget(m_overlayAlign);
+    layout->addWidget(m_overlayClose);
     layout->addWidget(m_live);
 
     connect(controller, &ReplayController::activeChanged, this, &ReplayBar::onActiveChanged);
     connect(controller, &ReplayController::positionChanged, this, &ReplayBar::onPositionChanged);
     connect(controller, &ReplayController::playingChanged, this, &ReplayBar::onPlayingChanged);
+    connect(controller, &ReplayController::overlayChanged, this, &ReplayBar::onOverlayChanged);
+    onOverlayChanged();
     onPlayingChanged(false);
     onActiveChanged(controller->isActive());
 }
@@ -147,6 +179,22 @@ void ReplayBar::onPlayingChanged(bool playing)
 {
     m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     m_play->setToolTip(playing ? tr("Pause the replay") : tr("Play the replay"));
+}
+
+void ReplayBar::onOverlayChanged()
+{
+    const bool has = m_controller->hasOverlay();
+    m_overlayTitle->setVisible(has);
+    m_overlayAlign->setVisible(has);
+    m_overlayClose->setVisible(has);
+    if (!has)
+        return;
+    m_overlayTitle->setText(tr("+ %1").arg(QFileInfo(m_controller->overlayPath()).fileName()));
+    m_overlayTitle->setToolTip(
+        tr("%1, drawn fainter, moved by %2 s")
+            .arg(m_controller->overlayPath(), compactSeconds(m_controller->overlayOffset(), 3)));
+    const QSignalBlocker blocker(m_overlayAlign);
+    m_overlayAlign->setCurrentIndex(m_overlayAlign->findData(int(m_controller->overlayAlign())));
 }
 
 QString ReplayBar::positionText() const

@@ -1,5 +1,6 @@
 // The replay strip shown above the plots in replay mode: what is replayed, play/pause, speed,
-// a scrub slider, the playhead time, and one button back to live.
+// a scrub slider, the playhead time, a second recording to overlay (and where it is aligned),
+// and one button back to live.
 #pragma once
 
 #include <QFrame>
@@ -33,6 +34,8 @@ public:
     QSlider *slider() const { return m_slider; }
     QComboBox *speedBox() const { return m_speed; }
     QPushButton *liveButton() const { return m_live; }
+    QToolButton *overlayButton() const { return m_overlayOpen; }
+    QComboBox *overlayAlignBox() const { return m_overlayAlign; }
     QToolButton *playButton() const { return m_play; }
     QString positionText() const;
     //! The playhead `t` in session time, as the plots' time axis shows it: "t = 103.00 s".
@@ -43,6 +46,8 @@ public:
 
 Q_SIGNALS:
     void backToLiveRequested();
+    //! The person asked to overlay a second recording (the window asks which).
+    void overlayRequested();
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -52,6 +57,7 @@ private:
     void onActiveChanged(bool active);
     void onPositionChanged(double t);
     void onPlayingChanged(bool playing);
+    void onOverlayChanged();
 
     ReplayController *m_controller;
     QLabel *m_title = nullptr;
@@ -63,6 +69,10 @@ private:
     QLabel *m_sessionTime = nullptr;
     bool m_millisecondSteps = true; //!< the slider counts milliseconds (else equal fractions)
     QPushButton *m_live = nullptr;
+    QToolButton *m_overlayOpen = nullptr;
+    QLabel *m_overlayTitle = nullptr;
+    QComboBox *m_overlayAlign = nullptr;
+    QToolButton *m_overlayClose = nullptr;
 };
 
 } // namespace hatpic

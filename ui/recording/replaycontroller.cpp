@@ -7,7 +7,8 @@
 namespace hatpic {
 
 ReplayController::ReplayController(QObject *parent)
-    : QObject(parent), m_buffer(std::make_unique<SampleBuffer>(1))
+    : QObject(parent), m_buffer(std::make_unique<SampleBuffer>(1)),
+      m_overlay(std::make_unique<SampleBuffer>(1))
 {
     m_timer = new QTimer(this);
     m_timer->setInterval(kTickMs);
@@ -39,6 +40,8 @@ bool ReplayController::open(const QString &csvPath, QString *error)
     m_recording.samples.clear(); // the buffer holds them now
     m_recording.samples.squeeze();
     m_position = startTime();
+    if (hasOverlay())
+        placeOverlay(); // on the new recording's time base
     const bool wasActive = m_active;
     m_active = true;
     if (!wasActive)
@@ -52,12 +55,90 @@ void ReplayController::close()
     if (!m_active)
         return;
     pause();
+    closeOverlay();
     m_active = false;
     Q_EMIT activeChanged(false);
     m_buffer = std::make_unique<SampleBuffer>(1);
     m_recording = Recording();
     m_path.clear();
     m_warnings.clear();
+}
+
+bool ReplayController::openOverlay(const QString &csvPath, QString *error)
+{
+    if (!m_active) {
+        if (error)
+            *error = tr("Open a recording to replay first.");
+        return false;
+    }
+    RecordingReadResult result = readRecording(csvPath);
+    if (!result.recording) {
+        if (error)
+            *error = result.error;
+        return false;
+    }
+    if (result.recording->samples.isEmpty()) {
+        if (error)
+            *error = tr("%1 holds no samples.").arg(csvPath);
+        return false;
+    }
+    m_overlayRecording = std::move(*result.recording);
+    m_overlayPath = csvPath;
+    placeOverlay();
+    return true;
+}
+
+void ReplayController::closeOverlay()
+{
+    if (!hasOverlay())
+        return;
+    m_overlayPath.clear();
+    m_overlayRecording = Recording();
+    m_overlay = std::make_unique<SampleBuffer>(1);
+    m_overlayOffset = 0;
+    Q_EMIT overlayChanged();
+}
+
+void ReplayController::setOverlayAlign(Align align)
+{
+    if (align == m_align)
+        return;
+    m_align = align;
+    if (hasOverlay())
+        placeOverlay();
+}
+
+double ReplayController::anchorTime(const QList<Sample> &samples,
+                                    const QList<RecordingEvent> &events, Align align)
+{
+    if (align == Align::Trigger) {
+        for (const RecordingEvent &e : events) {
+            if (e.text.startsWith(QLatin1String("trigger:")))
+                return e.t_s;
+        }
+        if (!events.isEmpty())
+            return events.constFirst().t_s;
+    }
+    return samples.isEmpty() ? 0.0 : samples.constFirst().t_s;
+}
+
+void ReplayController::placeOverlay()
+{
+    // The replayed recording's samples live in m_buffer only; its first sample and events
+    // give its anchor.
+    QList<Sample> first;
+    if (!m_buffer->isEmpty())
+        first.append(m_buffer->sample(0));
+    const double mine = anchorTime(first, m_recording.events, m_align);
+    const double theirs =
+        anchorTime(m_overlayRecording.samples, m_overlayRecording.events, m_align);
+    m_overlayOffset = mine - theirs;
+    QList<Sample> moved = m_overlayRecording.samples;
+    for (Sample &sample : moved)
+        sample.t_s += m_overlayOffset;
+    m_overlay = std::make_unique<SampleBuffer>(moved.size());
+    m_overlay->append(moved);
+    Q_EMIT overlayChanged();
 }
 
 double ReplayController::startTime() const

@@ -16,10 +16,12 @@
 #include "plots/plotpanel.h"
 #include "recording/plotfeed.h"
 #include "recording/recordingcontrols.h"
+#include "recording/recordingplandialog.h"
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
 #include "window/bridgedock.h"
 #include "window/shortcutsdialog.h"
+#include "window/theme.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
 
@@ -96,6 +98,7 @@ void MainWindow::createParts()
     m_connection = named(new ConnectionBar(this), "connectionBar");
     m_linkStatus = named(new LinkStatusWidget(this), "linkStatus");
     m_recording = named(new RecordingControls(this), "recordingControls");
+    m_theme = named(new ThemeController(this), "themeController");
     m_stats = new LinkStatsWidget(this);
     statusBar()->addPermanentWidget(m_stats);
 
@@ -220,7 +223,8 @@ void MainWindow::connectParts()
     connect(m_plotActions, &PlotActions::statusMessage, this, &MainWindow::showStatus);
 
     connect(m_recording, &RecordingControls::startRequested, m_client,
-            [this](const QString &path) { m_client->startRecording(path); });
+            [this](const QString &path) { m_client->startRecording(path, m_recording->plan()); });
+    connect(m_replayBar, &ReplayBar::overlayRequested, this, &MainWindow::overlayInteractive);
     connect(m_recording, &RecordingControls::stopRequested, m_client, &DeviceClient::stopRecording);
     connect(m_client, &DeviceClient::recordingChanged, this, [this](const RecordingStatus &s) {
         m_recording->setStatus(s);
@@ -391,6 +395,15 @@ void MainWindow::openRecordingInteractive()
                              tr("Cannot replay %1:\n%2").arg(path, error));
 }
 
+void MainWindow::overlayInteractive()
+{
+    const QString path = m_recording->chooseRecordingToOpen();
+    QString error;
+    if (!path.isEmpty() && !m_feed->replay()->openOverlay(path, &error))
+        QMessageBox::warning(this, tr("Overlay recording"),
+                             tr("Cannot overlay %1:\n%2").arg(path, error));
+}
+
 void MainWindow::readSettings()
 {
     QSettings settings;
@@ -409,6 +422,9 @@ void MainWindow::readSettings()
     m_plotActions->autoscaleAction()->setChecked(
         settings.value(QStringLiteral("view/autoscale"), true).toBool());
     m_recording->setDirectory(settings.value(QStringLiteral("recording/dir")).toString());
+    m_recording->setPlan(RecordingPlanDialog::loadPlan(settings));
+    m_theme->setChoice(
+        ThemeController::fromKey(settings.value(QStringLiteral("view/theme")).toString()));
     const QString profile = settings.value(QStringLiteral("profiles/last")).toString();
     if (!profile.isEmpty() && QFileInfo::exists(profile)) {
         QString error;
@@ -431,6 +447,8 @@ void MainWindow::writeSettings() const
     if (!m_recording->directory().isEmpty())
         settings.setValue(QStringLiteral("recording/dir"), m_recording->directory());
     settings.setValue(QStringLiteral("profiles/last"), m_profiles->filePath());
+    RecordingPlanDialog::savePlan(settings, m_recording->plan());
+    settings.setValue(QStringLiteral("view/theme"), ThemeController::key(m_theme->choice()));
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

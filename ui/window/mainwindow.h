@@ -28,6 +28,7 @@ class PlotPanel;
 class ProfileController;
 class RecordingControls;
 class ReplayBar;
+class ThemeController;
 class SimulatorPanel;
 class StiffnessView;
 class WindowActions;
@@ -80,6 +81,7 @@ private:
     void setAngleInDegrees(bool degrees);
     void showStatus(const QString &message);
     void openRecordingInteractive();
+    void overlayInteractive();
     void showShortcuts();
     void showAbout();
     void updateActions();
@@ -109,6 +111,7 @@ private:
 
     WindowActions *m_actions = nullptr;
     QMenu *m_viewMenu = nullptr;
+    ThemeController *m_theme = nullptr;
 
     QString m_port; //!< port of the current or last connection
 };

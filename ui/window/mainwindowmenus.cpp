@@ -8,6 +8,7 @@
 #include "editor/profilecontroller.h"
 #include "plots/plotactions.h"
 #include "recording/recordingcontrols.h"
+#include "window/theme.h"
 #include "window/windowactions.h"
 
 #include <QMenu>
@@ -49,6 +50,7 @@ void MainWindow::createMenus()
     device->addAction(m_actions->saveInDevice);
     device->addSeparator();
     device->addAction(m_recording->recordAction());
+    device->addAction(m_recording->planAction());
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     m_viewMenu = view;
@@ -59,6 +61,7 @@ void MainWindow::createMenus()
     view->addAction(m_plotActions->autoscaleAction());
     view->addAction(m_actions->degrees);
     m_plotActions->addSeriesActions(view->addMenu(tr("&Series")));
+    view->addMenu(m_theme->menu());
     view->addSeparator(); // the docks' toggles follow (createDocks)
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));

@@ -1,0 +1,236 @@
+// The light/dark theme on the real MainWindow (offscreen): View → Theme switches the widgets'
+// palette and the plots' background, axes and legends with it; every visible text-bearing
+// widget stays readable (its text against its background on a grab, at least 3:1) in both;
+// the data colours read on both plot backgrounds; the choice is saved and restored.
+#include "plots/palette.h"
+#include "plots/plotpanel.h"
+#include "plots/plottheme.h"
+#include "plots/qcp.h"
+#include "window/mainwindow.h"
+#include "window/theme.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+#include <QToolButton>
+
+#include <cmath>
+
+using namespace hatpic;
+
+namespace {
+
+double luminance(QRgb rgb)
+{
+    auto lin = [](int c) {
+        const double v = c / 255.0;
+        return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+    };
+    return 0.2126 * lin(qRed(rgb)) + 0.7152 * lin(qGreen(rgb)) + 0.0722 * lin(qBlue(rgb));
+}
+
+double contrast(double a, double b)
+{
+    return (std::max(a, b) + 0.05) / (std::min(a, b) + 0.05);
+}
+
+//! Contrast of the most contrasting pixel against the most common one (the background).
+double textContrast(const QImage &image)
+{
+    QHash<QRgb, int> counts;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x)
+            ++counts[image.pixel(x, y) | 0xff000000];
+    }
+    QRgb background = 0;
+    int most = -1;
+    for (auto it = counts.cbegin(); it != counts.cend(); ++it) {
+        if (it.value() > most) {
+            most = it.value();
+            background = it.key();
+        }
+    }
+    const double lb = luminance(background);
+    double best = 1;
+    for (auto it = counts.cbegin(); it != counts.cend(); ++it)
+        best = std::max(best, contrast(lb, luminance(it.key())));
+    return best;
+}
+
+QString textOf(const QWidget *w)
+{
+    if (const auto *label = qobject_cast<const QLabel *>(w))
+        return label->pixmap().isNull() ? label->text() : QString();
+    if (const auto *button = qobject_cast<const QAbstractButton *>(w)) {
+        if (const auto *tool = qobject_cast<const QToolButton *>(w);
+            tool && tool->toolButtonStyle() == Qt::ToolButtonIconOnly && !tool->icon().isNull())
+            return {};
+        return button->text();
+    }
+    return {};
+}
+
+} // namespace
+
+class TestTheme : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanup();
+    void switchingChangesThePlots();
+    void widgetsStayReadable_data();
+    void widgetsStayReadable();
+    void dataColoursReadOnBoth();
+    void choiceIsSaved();
+};
+
+void TestTheme::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("hatpic-test"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_theme"));
+    QSettings().clear();
+}
+
+void TestTheme::cleanup()
+{
+    QSettings().clear();
+}
+
+void TestTheme::switchingChangesThePlots()
+{
+    MainWindow window;
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *theme = window.findChild<ThemeController *>(QStringLiteral("themeController"));
+    QVERIFY(theme);
+    QCOMPARE(theme->choice(), ThemeController::Choice::System);
+    // View → Theme.
+    QMenu *view = nullptr;
+    for (QAction *a : window.menuBar()->actions()) {
+        if (a->menu() && a->menu()->objectName().isEmpty() &&
+            a->text().remove(u'&') == QStringLiteral("View"))
+            view = a->menu();
+    }
+    QVERIFY(view);
+    QVERIFY(view->actions().contains(theme->menu()->menuAction()));
+    QCOMPARE(theme->menu()->actions().size(), 3);
+    const QColor systemWindow = QApplication::palette().color(QPalette::Window);
+    QCustomPlot *plot = window.findChild<PlotPanel *>(QStringLiteral("plotPanel"))->customPlot();
+
+    auto background = [plot] {
+        QApplication::processEvents();
+        plot->replot();
+        return QColor(plot->grab().toImage().pixel(3, 3)).lightness();
+    };
+    window.findChild<QAction *>(QStringLiteral("theme_dark"))->trigger();
+    QVERIFY(theme->isDark());
+    QVERIFY(plottheme::isDark(QApplication::palette()));
+    QVERIFY2(background() < 60, "the plots' background follows the dark theme");
+    QCPAxis *y =
+        window.findChild<PlotPanel *>()->axisRect(PlotPanel::Plot::Angle)->axis(QCPAxis::atLeft);
+    QCOMPARE(y->tickLabelColor(), QApplication::palette().color(QPalette::Text));
+    QCOMPARE(window.findChild<PlotPanel *>()->legend(PlotPanel::Plot::Angle)->textColor(),
+             QApplication::palette().color(QPalette::Text));
+
+    window.findChild<QAction *>(QStringLiteral("theme_light"))->trigger();
+    QVERIFY(!theme->isDark());
+    QVERIFY2(background() > 200, "the plots' background follows the light theme");
+    QCOMPARE(y->tickLabelColor(), QApplication::palette().color(QPalette::Text));
+
+    window.findChild<QAction *>(QStringLiteral("theme_system"))->trigger();
+    QCOMPARE(QApplication::palette().color(QPalette::Window), systemWindow);
+    QCOMPARE(theme->isDark(), systemWindow.lightness() < 128);
+}
+
+void TestTheme::widgetsStayReadable_data()
+{
+    QTest::addColumn<int>("choice");
+    QTest::newRow("light") << int(ThemeController::Choice::Light);
+    QTest::newRow("dark") << int(ThemeController::Choice::Dark);
+}
+
+void TestTheme::widgetsStayReadable()
+{
+    QFETCH(int, choice);
+    MainWindow window;
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *theme = window.findChild<ThemeController *>(QStringLiteral("themeController"));
+    theme->setChoice(static_cast<ThemeController::Choice>(choice));
+    QApplication::processEvents();
+    int checked = 0;
+    // The plots' legends: their text against their own background.
+    auto *panel = window.findChild<PlotPanel *>(QStringLiteral("plotPanel"));
+    panel->customPlot()->replot();
+    const QImage plots = panel->customPlot()->grab().toImage();
+    for (PlotPanel::Plot kind :
+         {PlotPanel::Plot::Angle, PlotPanel::Plot::Torque, PlotPanel::Plot::Reference}) {
+        const QRect r = panel->legend(kind)->outerRect().adjusted(2, 2, -2, -2);
+        const double ratio = textContrast(plots.copy(r));
+        QVERIFY2(
+            ratio >= 3.0,
+            qPrintable(
+                QStringLiteral("legend %1: contrast %2").arg(int(kind)).arg(ratio, 0, 'f', 2)));
+        ++checked;
+    }
+    for (QWidget *w : window.findChildren<QWidget *>()) {
+        if (!w->isVisibleTo(&window) || !w->isEnabled() || w->width() < 4 || w->height() < 4)
+            continue;
+        if (textOf(w).trimmed().isEmpty())
+            continue;
+        const double ratio = textContrast(w->grab().toImage());
+        QVERIFY2(ratio >= 3.0,
+                 qPrintable(QStringLiteral("%1 \"%2\" (%3): contrast %4")
+                                .arg(QString::fromLatin1(w->metaObject()->className()), textOf(w),
+                                     w->objectName())
+                                .arg(ratio, 0, 'f', 2)));
+        ++checked;
+    }
+    QVERIFY2(checked >= 10, qPrintable(QString::number(checked)));
+    theme->setChoice(ThemeController::Choice::System);
+}
+
+void TestTheme::dataColoursReadOnBoth()
+{
+    const QRgb light = ThemeController::lightPalette().color(QPalette::Base).rgb();
+    const QRgb dark = ThemeController::darkPalette().color(QPalette::Base).rgb();
+    QList<QColor> colours{palette::kEvent, palette::kLivePoint, palette::kLimit};
+    for (Channel c : kAllChannels)
+        colours.append(palette::channel(c));
+    for (const QColor &c : colours) {
+        const double l = luminance(c.rgb());
+        QVERIFY2(contrast(l, luminance(light)) >= 3.0, qPrintable(c.name()));
+        QVERIFY2(contrast(l, luminance(dark)) >= 3.0, qPrintable(c.name()));
+    }
+}
+
+void TestTheme::choiceIsSaved()
+{
+    {
+        MainWindow window;
+        window.findChild<QAction *>(QStringLiteral("theme_dark"))->trigger();
+        window.close(); // saves the settings
+    }
+    QCOMPARE(QSettings().value(QStringLiteral("view/theme")).toString(), QStringLiteral("dark"));
+    {
+        MainWindow window;
+        auto *theme = window.findChild<ThemeController *>(QStringLiteral("themeController"));
+        QCOMPARE(theme->choice(), ThemeController::Choice::Dark);
+        QVERIFY(window.findChild<QAction *>(QStringLiteral("theme_dark"))->isChecked());
+        theme->setChoice(ThemeController::Choice::System);
+    }
+    QCOMPARE(ThemeController::fromKey(QStringLiteral("nonsense")), ThemeController::Choice::System);
+}
+
+QTEST_MAIN(TestTheme)
+#include "tst_theme.moc"
