@@ -17,6 +17,7 @@
 #include "recording/recordingcontrols.h"
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
+#include "window/abdock.h"
 #include "window/bridgedock.h"
 #include "window/shortcutsdialog.h"
 #include "window/windowactions.h"
@@ -171,6 +172,9 @@ void MainWindow::createDocks()
     resizeDocks({m_editorDock, m_stiffnessDock}, {560, 300}, Qt::Vertical);
 
     for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_bridgeDock, m_logDock})
+        m_viewMenu->addAction(dock->toggleViewAction());
+    // A/B comparison and the profile's notes, opened from the View menu, beside the log.
+    for (QDockWidget *dock : addAbDocks(this, m_profiles, m_editor, m_stiffness, m_logDock))
         m_viewMenu->addAction(dock->toggleViewAction());
 }
 
