@@ -12,6 +12,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <numbers>
 
 namespace hatpic {
@@ -68,11 +69,18 @@ AbComparePanel::AbComparePanel(ProfileController *profiles, QWidget *parent)
     m_table->setObjectName(u"ab_differences"_s);
     m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("A"), tr("B"), tr("Δ (B − A)")});
     m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
     m_table->setFocusPolicy(Qt::NoFocus);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    // Fits a narrow dock without a horizontal scroll bar: the values share what is left.
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_all = new QCheckBox(tr("All parameters"), this);
+    m_all->setObjectName(u"ab_all_parameters"_s);
+    m_all->setToolTip(tr("Also list the parameters that are the same in A and B"));
+    connect(m_all, &QCheckBox::toggled, this, &AbComparePanel::refresh);
 
     auto *pushOnSwitch = new QCheckBox(tr("Push on switch"), this);
     pushOnSwitch->setObjectName(u"ab_push_on_switch"_s);
@@ -92,6 +100,7 @@ AbComparePanel::AbComparePanel(ProfileController *profiles, QWidget *parent)
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(toggle);
     buttons->addWidget(pushOnSwitch);
+    buttons->addWidget(m_all);
     buttons->addStretch(1);
     buttons->addWidget(m_blind);
     auto *layout = new QVBoxLayout(this);
@@ -144,12 +153,14 @@ void AbComparePanel::refresh()
     }
     const Profile a = m_profiles->slotProfile(0);
     const Profile b = m_profiles->slotProfile(1);
-    const QList<Row> list = rows(a, b, m_degrees);
+    QList<Row> list = rows(a, b, m_degrees);
+    const auto differing =
+        std::count_if(list.cbegin(), list.cend(), [](const Row &row) { return row.differs; });
+    if (!m_all->isChecked())
+        list.removeIf([](const Row &row) { return !row.differs; });
     m_table->setRowCount(int(list.size()));
-    int differing = 0;
     for (int r = 0; r < list.size(); ++r) {
         const Row &row = list[r];
-        differing += row.differs ? 1 : 0;
         const QString cells[] = {row.parameter, row.a, row.b, row.delta};
         for (int c = 0; c < 4; ++c) {
             auto *item = new QTableWidgetItem(cells[c]);
@@ -161,10 +172,9 @@ void AbComparePanel::refresh()
             m_table->setItem(r, c, item);
         }
     }
-    const QString active = ProfileController::slotName(m_profiles->activeSlot());
+    // One line, so the table keeps its room in a low dock; the title says which slot is edited.
     m_summary->setText(
-        tr("A: %1   B: %2   (%3 in the editor) — %n parameter(s) differ", "", differing)
-            .arg(a.name, b.name, active));
+        tr("%n parameter(s) differ. A: %1, B: %2", "", int(differing)).arg(a.name, b.name));
 }
 
 } // namespace hatpic

@@ -1,6 +1,6 @@
-// The A/B comparison: a table of the two slots' parameters side by side with their differences
-// (in display units), "push on switch", and the door to a blind test. Reads the slots from the
-// ProfileController and follows it; edits nothing itself.
+// The A/B comparison: a table of the parameters in which the two slots differ (or of all of
+// them), side by side with the difference (in display units), "push on switch", and the door to a
+// blind test. Reads the slots from the ProfileController and follows it; edits nothing itself.
 #pragma once
 
 #include "profile/profile.h"
@@ -8,6 +8,7 @@
 #include <QList>
 #include <QWidget>
 
+class QCheckBox;
 class QLabel;
 class QPushButton;
 class QTableWidget;
@@ -49,6 +50,7 @@ private:
     bool m_degrees = false;
     QLabel *m_summary = nullptr;
     QTableWidget *m_table = nullptr;
+    QCheckBox *m_all = nullptr; //!< every parameter, not only those that differ
     QPushButton *m_blind = nullptr;
 };
 

@@ -142,7 +142,8 @@ void BlindDialog::prepare(const QString &suggestedFile)
 {
     if (m_runner->isRunning())
         return;
-    if (m_file->text().isEmpty())
+    // A new file for a new study (the last study's stays as it was written).
+    if (m_file->text().isEmpty() || QFileInfo::exists(m_file->text()))
         m_file->setText(suggestedFile);
     const QString readiness = m_runner->readiness();
     m_setupMessage->setText(readiness);

@@ -2,6 +2,7 @@
 
 #include "editor/profilecontroller.h"
 
+#include <QKeyEvent>
 #include <QSignalBlocker>
 
 namespace hatpic {
@@ -25,6 +26,18 @@ ProfileNotesEdit::ProfileNotesEdit(ProfileController *profiles, QWidget *parent)
 QSize ProfileNotesEdit::sizeHint() const
 {
     return {QPlainTextEdit::sizeHint().width(), fontMetrics().lineSpacing() * 4 + 12};
+}
+
+bool ProfileNotesEdit::event(QEvent *event)
+{
+    if (event->type() == QEvent::ShortcutOverride) {
+        const auto *key = static_cast<QKeyEvent *>(event);
+        if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) {
+            event->ignore(); // the shortcut goes to the window's Undo / Redo
+            return false;
+        }
+    }
+    return QPlainTextEdit::event(event);
 }
 
 void ProfileNotesEdit::showNotes(const QString &notes)

@@ -17,6 +17,10 @@ public:
 
     QSize sizeHint() const override;
 
+protected:
+    //! Leaves Undo and Redo to the window's actions (the notes' typing is on their stack).
+    bool event(QEvent *event) override;
+
 private:
     void showNotes(const QString &notes);
 
