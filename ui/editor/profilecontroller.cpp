@@ -1,6 +1,7 @@
 #include "editor/profilecontroller.h"
 
 #include "editor/abswitchcommand.h"
+#include "editor/noteseditcommand.h"
 #include "editor/parametereditor.h"
 
 #include <QAction>
@@ -72,6 +73,13 @@ ProfileController::ProfileController(ParameterEditor *editor, QWidget *dialogPar
     m_abAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     m_abAction->setToolTip(tr("Switch between the two loaded profiles A and B (Ctrl+B)"));
     connect(m_abAction, &QAction::triggered, this, &ProfileController::toggleSlot);
+    m_pushOnSwitchAction = new QAction(tr("Push on A/B Switch"), this);
+    m_pushOnSwitchAction->setObjectName(u"action_push_on_switch"_s);
+    m_pushOnSwitchAction->setCheckable(true);
+    m_pushOnSwitchAction->setChecked(QSettings().value(settingsKey(kPushOnSwitchKey)).toBool());
+    m_pushOnSwitchAction->setToolTip(tr("Switching A/B also pushes the slot to the device"));
+    connect(m_pushOnSwitchAction, &QAction::toggled, this,
+            [](bool on) { QSettings().setValue(settingsKey(kPushOnSwitchKey), on); });
     if (m_dialogParent)
         m_dialogParent->addActions({m_openAction, m_saveAction, m_saveAsAction, m_abAction});
 
@@ -97,8 +105,8 @@ Profile ProfileController::currentProfile(int slot) const
 {
     Profile p = slot == m_active ? m_slots[slot].saved : m_slots[slot].working;
     p.name = m_slots[slot].saved.name;
-    p.notes = m_slots[slot].saved.notes;
     if (slot == m_active) {
+        p.notes = m_notes;
         p.device = m_editor->params();
         p.host = m_editor->hostParams();
         p.bridge = m_bridge;
@@ -112,7 +120,7 @@ bool ProfileController::isModified(int slot) const
         return false;
     const Profile p = currentProfile(slot);
     return p.device != m_slots[slot].saved.device || p.host != m_slots[slot].saved.host ||
-           p.bridge != m_slots[slot].saved.bridge;
+           p.bridge != m_slots[slot].saved.bridge || p.notes != m_slots[slot].saved.notes;
 }
 
 bool ProfileController::isModified() const
@@ -145,6 +153,7 @@ void ProfileController::updateTitle()
         m_title = title;
         Q_EMIT titleChanged(title);
     }
+    Q_EMIT slotsChanged();
 }
 
 void ProfileController::load(const Profile &profile, const QString &path, const QString &undoText)
@@ -155,6 +164,23 @@ void ProfileController::load(const Profile &profile, const QString &path, const 
     m_editor->setParams(profile.device, profile.host, undoText);
     m_bridge = profile.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
+    m_notes = profile.notes;
+    Q_EMIT notesChanged(m_notes);
+    updateTitle();
+}
+
+void ProfileController::setNotes(const QString &notes)
+{
+    if (notes != m_notes)
+        m_editor->undoStack()->push(new NotesEditCommand(this, m_notes, notes));
+}
+
+void ProfileController::applyNotes(const QString &notes)
+{
+    if (notes == m_notes)
+        return;
+    m_notes = notes;
+    Q_EMIT notesChanged(m_notes);
     updateTitle();
 }
 
@@ -335,7 +361,12 @@ void ProfileController::toggleSlot()
     m_editor->undoStack()->push(new AbSwitchCommand(this, m_active, to));
 }
 
-void ProfileController::activateSlot(int slot)
+bool ProfileController::isSlotUsed(int slot) const
+{
+    return slot >= 0 && slot < kSlotCount && m_slots[slot].used;
+}
+
+void ProfileController::activateSlot(int slot, bool pushOnSwitch)
 {
     if (slot == m_active || slot < 0 || slot >= kSlotCount)
         return;
@@ -346,9 +377,18 @@ void ProfileController::activateSlot(int slot)
     m_editor->applyParams(to.working.device, to.working.host);
     m_bridge = to.working.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
+    m_notes = to.working.notes;
+    Q_EMIT notesChanged(m_notes);
     updateTitle();
     Q_EMIT activeSlotChanged(slot);
     Q_EMIT statusMessage(tr("Slot %1: %2").arg(slotName(slot), profileName()));
+    if (pushOnSwitch && m_pushOnSwitchAction->isChecked()) {
+        if (m_editor->pushAction()->isEnabled())
+            m_editor->pushAction()->trigger();
+        else
+            Q_EMIT statusMessage(
+                tr("Slot %1 not pushed on switch: %2").arg(slotName(slot), m_editor->syncText()));
+    }
 }
 
 QStringList ProfileController::recentFiles() const

@@ -29,6 +29,8 @@ public:
     //! QSettings key of the recent-file list (most recent first).
     static constexpr char16_t kRecentKey[] = u"profiles/recent";
     static constexpr char16_t kLastDirKey[] = u"profiles/lastDir";
+    //! QSettings key of "push on switch" (bool).
+    static constexpr char16_t kPushOnSwitchKey[] = u"profiles/pushOnSwitch";
 
     //! Answers "save changes to X?" with Save, Discard or Cancel. Replaceable for tests.
     using Question = std::function<QMessageBox::StandardButton(const QString &text)>;
@@ -40,6 +42,9 @@ public:
     QAction *saveAction() const { return m_saveAction; }     //!< Ctrl+S
     QAction *saveAsAction() const { return m_saveAsAction; } //!< Ctrl+Shift+S
     QAction *abToggleAction() const { return m_abAction; }   //!< Ctrl+B
+    //! Checkable, remembered: switching slots (Ctrl+B, or undo past a switch) also pushes the
+    //! slot that becomes active, through the editor's Push, when Push is possible.
+    QAction *pushOnSwitchAction() const { return m_pushOnSwitchAction; }
     QMenu *recentMenu() const { return m_recentMenu.get(); }
     QMenu *presetsMenu() const { return m_presetsMenu.get(); }
 
@@ -68,8 +73,21 @@ public:
 
     //! Switches A ↔ B as one undo step. The first switch to B starts B as a copy of A.
     void toggleSlot();
-    //! Makes `slot` active without an undo step (used by the undo command).
-    void activateSlot(int slot);
+    //! Makes `slot` active without an undo step (used by the undo command and the blind
+    //! study). `pushOnSwitch` false: never pushes, whatever pushOnSwitchAction() says.
+    void activateSlot(int slot, bool pushOnSwitch = true);
+    //! Whether `slot` holds a profile (B does after the first switch).
+    bool isSlotUsed(int slot) const;
+    //! A slot's profile as it is now (the active slot's from the editor), unsaved changes in.
+    Profile slotProfile(int slot) const { return currentProfile(slot); }
+
+    //! The active slot's notes (the profile's "notes"), as edited.
+    QString notes() const { return m_notes; }
+    //! Edits the active slot's notes as an undo step (typing merges into one); the '*' counts
+    //! them and Save writes them.
+    void setNotes(const QString &notes);
+    //! Sets the notes without an undo step (used by the undo command).
+    void applyNotes(const QString &notes);
 
     void setQuestion(Question question) { m_question = std::move(question); }
 
@@ -83,6 +101,10 @@ Q_SIGNALS:
     void titleChanged(const QString &title);
     void statusMessage(const QString &message);
     void activeSlotChanged(int slot);
+    //! Anything in either slot may have changed (an edit, a load, a save, a switch).
+    void slotsChanged();
+    //! The active slot's notes changed (an edit, undo, a load, a switch).
+    void notesChanged(const QString &notes);
     //! A profile (or the other slot) brought its own bridge settings.
     void bridgeSettingsLoaded(const hatpic::bridge::BridgeSettings &settings);
 
@@ -110,6 +132,7 @@ private:
     std::array<Slot, kSlotCount> m_slots;
     int m_active = 0;
     bridge::BridgeSettings m_bridge; //!< the active slot's
+    QString m_notes;                 //!< the active slot's
     QString m_title;
     Question m_question;
 
@@ -117,6 +140,7 @@ private:
     QAction *m_saveAction = nullptr;
     QAction *m_saveAsAction = nullptr;
     QAction *m_abAction = nullptr;
+    QAction *m_pushOnSwitchAction = nullptr;
     std::unique_ptr<QMenu> m_recentMenu;
     std::unique_ptr<QMenu> m_presetsMenu;
 };

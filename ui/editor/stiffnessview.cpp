@@ -62,6 +62,8 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     };
     QPen edited(kCurveColour, 2.0);
     QPen device(kCurveColour.darker(140), 1.5, Qt::DashLine);
+    m_otherTorque = graph(m_torqueRect, edited, QString());
+    m_otherStiffness = graph(m_stiffnessRect, edited, QString());
     m_deviceTorque = graph(m_torqueRect, device, tr("device"));
     m_deviceStiffness = graph(m_stiffnessRect, device, tr("device"));
     m_torque = graph(m_torqueRect, edited, tr("edited"));
@@ -72,7 +74,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
         QCPScatterStyle(QCPScatterStyle::ssDisc, kPointColour, kPointColour, 9));
 
     // One compact row above the plots, so it never hides the curve or the live point.
-    auto *legend = new QCPLegend;
+    auto *legend = m_legend = new QCPLegend;
     m_plot->plotLayout()->insertRow(0);
     m_plot->plotLayout()->addElement(0, 0, legend);
     m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
@@ -82,7 +84,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     legend->setBorderPen(Qt::NoPen);
     legend->setBrush(Qt::NoBrush);
     legend->setMargins(QMargins(4, 2, 4, 0));
-    for (QCPGraph *g : {m_torque, m_deviceTorque, m_point})
+    for (QCPGraph *g : {m_torque, m_otherTorque, m_deviceTorque, m_point})
         g->addToLegend(legend);
 
     QPen limitPen(palette::kLimit, 1.0, Qt::DotLine);
@@ -129,12 +131,14 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_plot->setToolTip(tr("Solid: the edited parameters. Dashed: the device's. Shaded: dead zone "
                           "(grey) and notch band (amber), as in the time plots. Dotted red: "
                           "±tau_limit. The dot is the "
-                          "live knob angle and the measured re-centering torque."));
+                          "live knob angle and the measured re-centering torque. With two "
+                          "profile slots: A crimson, B olive, the edited one wider."));
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
     plottheme::follow(m_plot);
+    updateComparisonStyle();
     rebuild();
 }
 
@@ -144,6 +148,56 @@ void StiffnessView::setReplaying(bool replaying)
     m_deviceStiffness->setName(m_deviceTorque->name());
     m_point->setName(replaying ? tr("at the playhead (θ, τ_rec)") : tr("live (θ, measured τ_rec)"));
     requestReplot();
+}
+
+void StiffnessView::setComparison(const std::optional<DeviceParams> &other, int activeSlot)
+{
+    m_other = other;
+    m_activeSlot = activeSlot == 1 ? 1 : 0;
+    updateComparisonStyle();
+    rebuild();
+}
+
+QCPGraph *StiffnessView::slotTorqueGraph(int slot) const
+{
+    if (!m_other)
+        return nullptr;
+    return slot == m_activeSlot ? m_torque : m_otherTorque;
+}
+
+QCPGraph *StiffnessView::slotStiffnessGraph(int slot) const
+{
+    if (!m_other)
+        return nullptr;
+    return slot == m_activeSlot ? m_stiffness : m_otherStiffness;
+}
+
+void StiffnessView::updateComparisonStyle()
+{
+    // Slot A keeps τ_rec's colour, B has its own; the edited slot's line is the wider one.
+    auto colour = [](int slot) { return slot == 0 ? kCurveColour : palette::kSlotB; };
+    const QString names[] = {tr("A"), tr("B")};
+    const int other = 1 - m_activeSlot;
+    const QColor editedColour = m_other ? colour(m_activeSlot) : kCurveColour;
+    for (QCPGraph *g : {m_torque, m_stiffness}) {
+        g->setPen(QPen(editedColour, 2.0));
+        g->setName(m_other ? tr("%1 (edited)").arg(names[m_activeSlot]) : tr("edited"));
+    }
+    for (QCPGraph *g : {m_otherTorque, m_otherStiffness}) {
+        g->setPen(QPen(colour(other), 1.5));
+        g->setName(names[other]);
+        g->setVisible(m_other.has_value());
+    }
+    if (m_other && !m_legend->hasItemWithPlottable(m_otherTorque)) {
+        m_otherTorque->addToLegend(m_legend);
+        // Keep the legend's order: edited, other, device, live.
+        for (QCPGraph *g : {m_deviceTorque, m_point}) {
+            g->removeFromLegend(m_legend);
+            g->addToLegend(m_legend);
+        }
+    } else if (!m_other) {
+        m_otherTorque->removeFromLegend(m_legend);
+    }
 }
 
 double StiffnessView::halfRange(const DeviceParams &params)
@@ -255,8 +309,15 @@ void StiffnessView::fillCurves(const DeviceParams &params, QCPGraph *torque, QCP
 void StiffnessView::rebuild()
 {
     const double center = m_edited.theta0;
-    const double half = halfRange(m_edited);
+    const double half =
+        m_other ? std::max(halfRange(m_edited), halfRange(*m_other)) : halfRange(m_edited);
     fillCurves(m_edited, m_torque, m_stiffness, center, half);
+    if (m_other) {
+        fillCurves(*m_other, m_otherTorque, m_otherStiffness, center, half);
+    } else {
+        m_otherTorque->data()->clear();
+        m_otherStiffness->data()->clear();
+    }
     if (m_device) {
         fillCurves(*m_device, m_deviceTorque, m_deviceStiffness, center, half);
     } else {
@@ -276,13 +337,13 @@ void StiffnessView::rebuild()
     // Symmetric torque range; ±tau_limit shows when it is within reach of the curves.
     double tauMax = 0;
     double kMax = 0;
-    for (QCPGraph *g : {m_torque, m_deviceTorque}) {
+    for (QCPGraph *g : {m_torque, m_deviceTorque, m_otherTorque}) {
         for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) {
             if (std::isfinite(it->value))
                 tauMax = std::max(tauMax, std::abs(it->value));
         }
     }
-    for (QCPGraph *g : {m_stiffness, m_deviceStiffness}) {
+    for (QCPGraph *g : {m_stiffness, m_deviceStiffness, m_otherStiffness}) {
         for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) {
             if (std::isfinite(it->value))
                 kMax = std::max(kMax, it->value);

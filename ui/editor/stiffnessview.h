@@ -13,6 +13,7 @@ class QCPAxisRect;
 class QCPGraph;
 class QCPItemRect;
 class QCPItemStraightLine;
+class QCPLegend;
 class QCustomPlot;
 class QTimer;
 
@@ -41,6 +42,13 @@ public:
     //! In replay the dashed curve is the recording's parameters and the dot the sample at the
     //! playhead: the legend says so instead of "device" and "live".
     void setReplaying(bool replaying);
+    //! A/B comparison: the other slot's parameters, drawn beside the edited (active) slot's;
+    //! each slot in its own colour (A: τ_rec's crimson, B: palette::kSlotB), labelled "A" and
+    //! "B". nullopt hides them (and the edited curve is "edited" again).
+    void setComparison(const std::optional<DeviceParams> &other, int activeSlot);
+    //! The τ_rec(θ) / K_rec(θ) curve of slot 0 (A) or 1 (B) while compared, else nullptr.
+    QCPGraph *slotTorqueGraph(int slot) const;
+    QCPGraph *slotStiffnessGraph(int slot) const;
 
     //! Half-width of the shown θ range around θ0: max(2.5·N, 0.5) rad, at most π/2 [rad].
     static double halfRange(const DeviceParams &params);
@@ -62,6 +70,7 @@ private:
     void fillCurves(const DeviceParams &params, QCPGraph *torque, QCPGraph *stiffness,
                     double center, double halfWidth);
     void updateShading();
+    void updateComparisonStyle();
     void updateOperatingPoint();
     //! Replots within kRepaintIntervalMs: everything, or (`pointOnly`) just the live point's
     //! layer when nothing else changed since the last replot.
@@ -70,6 +79,8 @@ private:
 
     DeviceParams m_edited;
     std::optional<DeviceParams> m_device;
+    std::optional<DeviceParams> m_other; //!< the other A/B slot, when compared
+    int m_activeSlot = 0;
     std::optional<std::pair<double, double>> m_operatingPoint; //!< θ [rad], τ_rec [N·m]
     double m_tauLimit = 0.44;
     bool m_degrees = false;
@@ -82,6 +93,9 @@ private:
     QCPGraph *m_deviceTorque = nullptr;
     QCPGraph *m_deviceStiffness = nullptr;
     QCPGraph *m_point = nullptr;
+    QCPGraph *m_otherTorque = nullptr;
+    QCPGraph *m_otherStiffness = nullptr;
+    QCPLegend *m_legend = nullptr;
     QCPItemStraightLine *m_cursor = nullptr;
     QCPItemStraightLine *m_limitHigh = nullptr;
     QCPItemStraightLine *m_limitLow = nullptr;

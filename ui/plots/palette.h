@@ -41,5 +41,8 @@ inline const QColor kNotch(255, 160, 0, 60);     //!< notch band Q_dz … N (tra
 inline const QColor kEvent(85, 109, 122);        //!< event markers (pushes, resets)
 inline const QColor kLivePoint(117, 117, 117);   //!< the operating point (θ, τ_rec) now
 inline const QColor kLimit(211, 47, 47);         //!< ±tau_limit
+//! Profile slot B's curves beside slot A's when the two are compared (slot A keeps τ_rec's
+//! crimson): olive, unlike every quantity's colour.
+inline const QColor kSlotB(128, 118, 0);
 
 } // namespace hatpic::palette

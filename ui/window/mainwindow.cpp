@@ -19,6 +19,7 @@
 #include "recording/recordingplandialog.h"
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
+#include "window/abdock.h"
 #include "window/bridgedock.h"
 #include "window/shortcutsdialog.h"
 #include "window/theme.h"
@@ -184,6 +185,9 @@ void MainWindow::createDocks()
     for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_bridgeDock, m_logDock})
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addAction(experiments->toggleViewAction());
+    // A/B comparison and the profile's notes, opened from the View menu, beside the log.
+    for (QDockWidget *dock : addAbDocks(this, m_profiles, m_editor, m_stiffness, m_logDock))
+        m_viewMenu->addAction(dock->toggleViewAction());
 }
 
 void MainWindow::connectParts()

@@ -37,6 +37,7 @@ void MainWindow::createMenus()
     edit->addAction(m_editor->redoAction());
     edit->addSeparator();
     edit->addAction(m_profiles->abToggleAction());
+    edit->addAction(m_profiles->pushOnSwitchAction());
 
     QMenu *device = menuBar()->addMenu(tr("&Device"));
     device->addAction(m_actions->connectDevice);
