@@ -101,7 +101,6 @@ private:
     bool m_paramsKnown = false;  //!< a PARAMS arrived on this connection
     EffectParams m_effects;      //!< the device's effect block as the host believes it
     bool m_effectsKnown = false; //!< an EFFECTS arrived on this connection
-    bool m_paramsKnown = false; //!< a PARAMS arrived on this connection
     std::deque<Sample> m_recent;
     std::optional<Armed> m_armed;
     std::optional<double> m_stopAt; //!< the recording closes after its last sample here [s]
