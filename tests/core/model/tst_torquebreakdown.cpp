@@ -52,11 +52,21 @@ void TestTorqueBreakdown::clippedIsWhatTheLimitRemoved()
     in.tauRec = -0.5;
     in.tauExt = -0.1;
     in.tauTotal = -0.44; // clamped to tau_limit
+    in.saturated = true;
     QVERIFY(std::abs(torqueTerms(p, in).clipped - (-0.16)) < 1e-15);
     in.tauRec = 0.4;
     in.tauExt = 0.3;
     in.tauTotal = 0.44;
     QVERIFY(std::abs(torqueTerms(p, in).clipped - 0.26) < 1e-15);
+    // With effects: the clamp took what τ_rec + τ_fx + τ_ext exceeded.
+    in.tauFx = 0.1;
+    QVERIFY(std::abs(torqueTerms(p, in).clipped - 0.36) < 1e-15);
+    // An effect torque on a sample the clamp left alone is not clipped.
+    in.saturated = false;
+    in.tauRec = 0.1;
+    in.tauExt = 0;
+    in.tauTotal = 0.2; // τ_rec + τ_fx
+    QCOMPARE(torqueTerms(p, in).clipped, 0.0);
 }
 
 void TestTorqueBreakdown::rateOfChange()
@@ -96,9 +106,10 @@ void TestTorqueBreakdown::balanceClosesOnTheFilter()
     for (std::size_t k = 1; k + 1 < rows.size(); ++k) {
         TorqueBalanceInput in;
         in.omega = rows[k].omega;
-        // The central difference, as the breakdown plot estimates ω̇ from samples.
-        in.omegaDot = hatpic::rateOfChange(rows[k - 1].t, rows[k - 1].omega, rows[k + 1].t,
-                                           rows[k + 1].omega);
+        // The forward difference, as the breakdown plot estimates ω̇: the sample's u holds over
+        // [t_k, t_k+1).
+        in.omegaDot =
+            hatpic::rateOfChange(rows[k].t, rows[k].omega, rows[k + 1].t, rows[k + 1].omega);
         in.tau = rows[k].tau;
         in.tauRec = rows[k].tauRec;
         in.tauTotal = rows[k].tauTotal;
@@ -107,7 +118,7 @@ void TestTorqueBreakdown::balanceClosesOnTheFilter()
         scale = std::max(scale, std::abs(t.tauOp));
     }
     QVERIFY(scale > 0.04);
-    // The central difference averages two steps' slopes: off by about half a step's change.
+    // The mean slope over the step is u/D − α·(mean ω), against ω_k: off by about α·Δω/2.
     QVERIFY2(worst < 0.05 * scale, qPrintable(QString::number(worst)));
 }
 
