@@ -7,6 +7,7 @@
 #include <QVector>
 #include <QWidget>
 
+#include <memory>
 #include <optional>
 
 class QCPAxisRect;
@@ -18,6 +19,9 @@ class QTimer;
 
 namespace hatpic {
 
+class FadingTrail;
+class PlotPanel;
+
 class StiffnessView : public QWidget
 {
     Q_OBJECT
@@ -25,7 +29,10 @@ public:
     static constexpr int kUniformSamples = 601;   //!< evenly spaced samples per curve
     static constexpr int kRepaintIntervalMs = 33; //!< the live point repaints at ≤ 30 Hz
 
+    static constexpr double kTrailSeconds = 3; //!< length of the operating point's trail [s]
+
     explicit StiffnessView(QWidget *parent = nullptr);
+    ~StiffnessView() override;
 
     void setEditedParams(const DeviceParams &params);
     //! The device's parameters, drawn dashed; nullopt hides them.
@@ -41,6 +48,12 @@ public:
     //! In replay the dashed curve is the recording's parameters and the dot the sample at the
     //! playhead: the legend says so instead of "device" and "live".
     void setReplaying(bool replaying);
+    //! Draws the trail of (θ, measured τ) over the last kTrailSeconds of what `panel` shows
+    //! (live, paused or replayed), older points fainter, after each of its repaints. τ lies on
+    //! τ_rec(θ) at rest and leaves it with the admittance's inertia and damping, so loops show
+    //! hysteresis and back-and-forth jumps at the dead-zone edge show chatter.
+    void followTrail(const PlotPanel *panel);
+    const FadingTrail *trail() const { return m_trail.get(); }
 
     //! Half-width of the shown θ range around θ0: max(2.5·N, 0.5) rad, at most π/2 [rad].
     static double halfRange(const DeviceParams &params);
@@ -63,6 +76,7 @@ private:
                     double center, double halfWidth);
     void updateShading();
     void updateOperatingPoint();
+    void updateTrail(const PlotPanel *panel);
     //! Replots within kRepaintIntervalMs: everything, or (`pointOnly`) just the live point's
     //! layer when nothing else changed since the last replot.
     void requestReplot(bool pointOnly = false);
@@ -82,6 +96,7 @@ private:
     QCPGraph *m_deviceTorque = nullptr;
     QCPGraph *m_deviceStiffness = nullptr;
     QCPGraph *m_point = nullptr;
+    std::unique_ptr<FadingTrail> m_trail;
     QCPItemStraightLine *m_cursor = nullptr;
     QCPItemStraightLine *m_limitHigh = nullptr;
     QCPItemStraightLine *m_limitLow = nullptr;

@@ -38,5 +38,9 @@ inline const QColor kNotch(255, 160, 0, 60);     //!< notch band Q_dz … N (tra
 inline const QColor kEvent(55, 71, 79);          //!< event markers (pushes, resets)
 inline const QColor kLivePoint(33, 33, 33);      //!< the operating point (θ, τ_rec) now
 inline const QColor kLimit(211, 47, 47);         //!< ±tau_limit
+inline const QColor kMeasure(38, 50, 56);        //!< the measuring cursors A and B
+inline const QColor kInertialTerm(158, 157, 36); //!< D_adm·ω̇ in the torque breakdown
+inline const QColor kDampingTerm(57, 73, 171);   //!< M_adm·ω in the torque breakdown
+inline const QColor kSaturated(211, 47, 47, 40); //!< samples where tau_limit clamped (shaded)
 
 } // namespace hatpic::palette

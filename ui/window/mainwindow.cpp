@@ -18,6 +18,7 @@
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
 #include "window/bridgedock.h"
+#include "window/measuredocks.h"
 #include "window/shortcutsdialog.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
@@ -172,6 +173,8 @@ void MainWindow::createDocks()
 
     for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_bridgeDock, m_logDock})
         m_viewMenu->addAction(dock->toggleViewAction());
+    addMeasureDocks(this, m_plots, m_plotActions, m_profiles, m_editor, m_stiffness, m_viewMenu,
+                    m_logDock);
 }
 
 void MainWindow::connectParts()
@@ -350,6 +353,7 @@ QList<QAction *> MainWindow::shortcutActions() const
                             m_actions->resetReference,
                             m_plotActions->exportImageAction(),
                             m_plotActions->exportCsvAction(),
+                            m_plotActions->measureAction(),
                             m_actions->shortcuts,
                             m_actions->quit} +
            m_editor->keyboardActions() + m_plotActions->windowActions();
