@@ -54,6 +54,9 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_torqueRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
     m_stiffnessRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
     m_torqueRect->axis(QCPAxis::atLeft)->setLabel(tr("τ_rec [N·m]"));
+    // Few ticks: the dock may be short (1280×720), and its numbers must not overlap.
+    for (QCPAxisRect *rect : {m_torqueRect, m_stiffnessRect})
+        rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3);
     m_stiffnessRect->axis(QCPAxis::atLeft)->setLabel(tr("K_rec [N·m/rad]"));
 
     auto graph = [this](QCPAxisRect *rect, const QPen &pen, const QString &name) {

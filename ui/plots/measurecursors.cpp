@@ -161,7 +161,7 @@ void MeasureCursors::nameGraphs() const
     for (const Delta &d : r->deltas) {
         // format() takes SI: undo the display scale it applies again.
         const QString value = units.format(d.channel, d.delta / units.scale(d.channel));
-        m_panel->graph(d.channel)->setName(channelLabel(d.channel) % tr("  Δ ") %
+        m_panel->graph(d.channel)->setName(channelLabel(d.channel) % tr(" Δ ") %
                                            signedText(d.delta, value));
     }
 }

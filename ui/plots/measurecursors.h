@@ -66,7 +66,7 @@ public:
     std::optional<Readout> readout() const;
     //! "Δt = 0.500 s (2.00 Hz)"; empty when there is no readout.
     QString dtText() const;
-    //! Names the visible graphs "θ  Δ +3.21 °" (call after the panel named them).
+    //! Names the visible graphs "θ Δ +3.21 °" (call after the panel named them).
     void nameGraphs() const;
 
     //! The panel's event filter passes the plot's events here; true when used up.

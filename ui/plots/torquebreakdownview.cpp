@@ -65,17 +65,17 @@ QString TorqueBreakdownView::termLabel(Term term)
 {
     switch (term) {
     case Term::Inertial:
-        return tr("D_adm·ω̇ (inertial)");
+        return tr("D_adm·ω̇");
     case Term::Damping:
-        return tr("M_adm·ω (damping)");
+        return tr("M_adm·ω");
     case Term::TauOp:
-        return tr("τ_op = −τ (operator)");
+        return tr("τ_op = −τ");
     case Term::TauRec:
         return tr("τ_rec");
     case Term::TauExt:
         return tr("τ_ext");
     case Term::Clipped:
-        return tr("clipped by tau_limit");
+        return tr("clipped");
     }
     return {};
 }
@@ -93,7 +93,7 @@ TorqueBreakdownView::TorqueBreakdownView(PlotPanel *panel, QWidget *parent)
     hidden->setRange(0, 1);
 
     m_saturation = m_plot->addGraph(rect->axis(QCPAxis::atBottom), hidden);
-    m_saturation->setName(tr("saturated (shaded)"));
+    m_saturation->setName(tr("saturated"));
     m_saturation->setLineStyle(QCPGraph::lsStepLeft);
     m_saturation->setPen(Qt::NoPen);
     m_saturation->setBrush(palette::kSaturated);
@@ -110,8 +110,8 @@ TorqueBreakdownView::TorqueBreakdownView(PlotPanel *panel, QWidget *parent)
     m_plot->plotLayout()->insertRow(0);
     m_plot->plotLayout()->addElement(0, 0, legend);
     m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     legend->setWrap(3);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst); // rearranges the entries by the wrap
     legend->setFont(font());
     legend->setBorderPen(Qt::NoPen);
     legend->setBrush(Qt::NoBrush);
@@ -126,8 +126,9 @@ TorqueBreakdownView::TorqueBreakdownView(PlotPanel *panel, QWidget *parent)
     layout->addWidget(m_plot, 1);
     setToolTip(tr("The terms of eq. (1), D_adm·ω̇ + M_adm·ω = τ_op + τ_total, over the time "
                   "plots' range. D_adm is the virtual inertia, M_adm the virtual damping; ω̇ "
-                  "is the forward difference of ω. Shaded: the device clamped τ_total to "
-                  "tau_limit."));
+                  "is the forward difference of ω; τ_op = −τ is the operator's torque; "
+                  "clipped: what the tau_limit clamp removed. Shaded: saturated samples, "
+                  "where the device clamped τ_total to tau_limit."));
 
     connect(panel, &PlotPanel::repainted, this, [this] {
         if (isVisible())

@@ -33,7 +33,8 @@ public:
     //! Recomputes the terms from what the panel shows, over its visible range.
     void refresh();
 
-    //! "D_adm·ω̇ (inertial)", "τ_op = −τ", …
+    //! "D_adm·ω̇", "τ_op = −τ", … (short: the legend sits in three columns above the plot;
+    //! the tooltip says D_adm·ω̇ is the inertial term and M_adm·ω the damping term)
     static QString termLabel(Term term);
 
     QCustomPlot *plot() const { return m_plot; }

@@ -130,7 +130,7 @@ void TestMeasure::cursorsGiveDeltaOfEveryVisibleSeries()
         QVERIFY2(std::abs(d.delta - expected) < 1e-12, qPrintable(channelLabel(d.channel)));
     }
     QVERIFY(std::abs(r->deltas[0].delta - 0.05) < 1e-12); // θ: 0.1 rad/s × 0.5 s
-    // The legends say it: "θ  Δ +0.0500 rad", "τ (measured)  Δ −0.0250 N·m".
+    // The legends say it: "θ Δ +0.0500 rad", "τ (measured) Δ −0.0250 N·m".
     m_panel->repaintNow();
     QVERIFY2(m_panel->graph(Channel::Theta)->name().contains(QStringLiteral("Δ +0.0500")),
              qPrintable(m_panel->graph(Channel::Theta)->name()));
