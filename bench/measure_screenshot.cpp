@@ -40,8 +40,19 @@ int main(int argc, char *argv[])
     ConnectOptions options;
     options.port = QStringLiteral("sim");
     window.connectTo(options);
-    for (const char *dock : {"xyDock", "breakdownDock"})
-        window.findChild<QDockWidget *>(QString::fromLatin1(dock))->show();
+    auto *xy = window.findChild<QDockWidget *>(QStringLiteral("xyDock"));
+    auto *breakdown = window.findChild<QDockWidget *>(QStringLiteral("breakdownDock"));
+    xy->show();
+    breakdown->show();
+    if (size.width() >= 1600) { // room for both side by side; else they stay tabs
+        // (A dock in a tab group would take the other as a tab: out of it first.)
+        window.removeDockWidget(xy);
+        window.removeDockWidget(breakdown);
+        window.addDockWidget(Qt::BottomDockWidgetArea, xy);
+        window.splitDockWidget(xy, breakdown, Qt::Horizontal);
+        xy->show();
+        breakdown->show();
+    }
 
     QTimer::singleShot(9000, &window, [&window] {
         window.findChild<PlotFeed *>(QStringLiteral("plotFeed"))->togglePause();
