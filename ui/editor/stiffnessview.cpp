@@ -95,6 +95,9 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     for (QCPGraph *g : {m_torque, m_deviceTorque, m_point})
         g->addToLegend(legend);
     m_trail->piece(FadingTrail::kPieces - 1)->addToLegend(legend);
+    // Room below the text (the legend clips each item to its rect, which would cut the "_").
+    for (int k = 0; k < legend->itemCount(); ++k)
+        legend->item(k)->setMargins(QMargins(2, 1, 2, 3));
 
     QPen limitPen(palette::kLimit, 1.0, Qt::DotLine);
     m_limitHigh = straightLine(m_plot, m_torqueRect, limitPen);

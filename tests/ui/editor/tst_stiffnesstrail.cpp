@@ -33,6 +33,21 @@ void fill(SampleBuffer &buffer, int count)
     }
 }
 
+//! A panel drawing a buffer, and a stiffness view following its trail.
+struct Rig
+{
+    SampleBuffer buffer;
+    PlotPanel panel;
+    StiffnessView view;
+
+    explicit Rig(int samples)
+    {
+        panel.setSource(&buffer);
+        view.followTrail(&panel);
+        fill(buffer, samples);
+    }
+};
+
 QCPCurveData newest(const FadingTrail &trail)
 {
     return *(trail.piece(FadingTrail::kPieces - 1)->data()->constEnd() - 1);
@@ -51,14 +66,13 @@ private Q_SLOTS:
 
 void TestStiffnessTrail::trailCoversTheLastSecondsAndFades()
 {
-    SampleBuffer buffer;
-    PlotPanel panel;
-    panel.setSource(&buffer);
-    StiffnessView view;
-    view.followTrail(&panel);
+    Rig rig(0);
+    SampleBuffer &buffer = rig.buffer;
+    StiffnessView &view = rig.view;
+    rig.panel.repaintNow();
     QCOMPARE(view.trail()->pointCount(), 0);
     fill(buffer, 5000); // 0 … 4.999 s
-    panel.repaintNow();
+    rig.panel.repaintNow();
     // [4.999 − 3, 4.999] at 1 kHz: 3001 samples.
     QCOMPARE(view.trail()->pointCount(), qsizetype(StiffnessView::kTrailSeconds * kRate + 1));
     const QCPCurveData last = newest(*view.trail());
@@ -78,7 +92,7 @@ void TestStiffnessTrail::trailCoversTheLastSecondsAndFades()
             overlay->children().indexOf(view.operatingPointGraph()));
     // Degrees on the θ axis.
     view.setAngleInDegrees(true);
-    panel.repaintNow();
+    rig.panel.repaintNow();
     QCOMPARE(newest(*view.trail()).key,
              buffer.value(Channel::Theta, 4999) * 180 / std::numbers::pi);
 }
@@ -87,17 +101,12 @@ void TestStiffnessTrail::trailShowsTheLoop()
 {
     // Over a period, at the same θ = 0 the trail passes twice with different τ: a loop, not
     // the τ_rec curve.
-    SampleBuffer buffer;
-    PlotPanel panel;
-    panel.setSource(&buffer);
-    StiffnessView view;
-    view.followTrail(&panel);
-    fill(buffer, 4001);
-    panel.repaintNow();
+    Rig rig(4001);
+    rig.panel.repaintNow();
     double up = NAN;
     double down = NAN;
     for (int i = 0; i < FadingTrail::kPieces; ++i) {
-        const auto data = view.trail()->piece(i)->data();
+        const auto data = rig.view.trail()->piece(i)->data();
         for (auto it = data->constBegin(); it != data->constEnd(); ++it) {
             if (std::abs(it->key) < 1e-4)
                 (it->value < 0 ? up : down) = it->value;
@@ -109,21 +118,16 @@ void TestStiffnessTrail::trailShowsTheLoop()
 
 void TestStiffnessTrail::trailEndsAtThePlayhead()
 {
-    SampleBuffer buffer;
-    PlotPanel panel;
-    panel.setSource(&buffer);
-    StiffnessView view;
-    view.followTrail(&panel);
-    fill(buffer, 5000);
-    panel.setFollowLatest(false);
-    panel.setViewEnd(3.0);
-    panel.setDataEnd(2.0); // a replay's playhead
-    panel.repaintNow();
-    QCOMPARE(newest(*view.trail()).value, buffer.value(Channel::Tau, 2000));
-    QCOMPARE(view.trail()->pointCount(), qsizetype(2001)); // 0 … 2 s: less than the length
-    buffer.clear();
-    panel.repaintNow();
-    QCOMPARE(view.trail()->pointCount(), 0);
+    Rig rig(5000);
+    rig.panel.setFollowLatest(false);
+    rig.panel.setViewEnd(3.0);
+    rig.panel.setDataEnd(2.0); // a replay's playhead
+    rig.panel.repaintNow();
+    QCOMPARE(newest(*rig.view.trail()).value, rig.buffer.value(Channel::Tau, 2000));
+    QCOMPARE(rig.view.trail()->pointCount(), qsizetype(2001)); // 0 … 2 s: less than the length
+    rig.buffer.clear();
+    rig.panel.repaintNow();
+    QCOMPARE(rig.view.trail()->pointCount(), 0);
 }
 
 QTEST_MAIN(TestStiffnessTrail)

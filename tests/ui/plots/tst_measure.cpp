@@ -19,6 +19,7 @@
 #include <QXmlStreamReader>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 using namespace hatpic;
@@ -82,28 +83,28 @@ private Q_SLOTS:
     void refusesAnAbsurdSize();
 
 private:
-    PlotPanel *m_panel = nullptr;
-    SampleBuffer *m_buffer = nullptr;
+    std::unique_ptr<SampleBuffer> m_buffer;
+    std::unique_ptr<PlotPanel> m_panel;
 };
 
 void TestMeasure::init()
 {
-    m_buffer = new SampleBuffer;
-    m_panel = new PlotPanel;
-    m_panel->resize(1000, 700);
-    m_panel->setSource(m_buffer);
-    m_panel->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_panel));
+    m_buffer = std::make_unique<SampleBuffer>();
     fill(*m_buffer, 0, 3000); // 0 … 2.999 s
+    m_panel = std::make_unique<PlotPanel>();
+    m_panel->setSource(m_buffer.get());
     m_panel->setWindowLength(3);
+    m_panel->resize(1000, 700);
+    m_panel->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_panel.get()));
     m_panel->repaintNow();
     m_panel->repaintNow(); // laid out at this size
 }
 
 void TestMeasure::cleanup()
 {
-    delete m_panel;
-    delete m_buffer;
+    m_panel.reset(); // before the buffer it reads
+    m_buffer.reset();
 }
 
 void TestMeasure::cursorsGiveDeltaOfEveryVisibleSeries()
@@ -221,7 +222,7 @@ void TestMeasure::cursorsByKeyboard()
 void TestMeasure::xyViewDrawsTheChosenPair()
 {
     m_panel->setChannelVisible(Channel::Omega, true);
-    XyView xy(m_panel);
+    XyView xy(m_panel.get());
     xy.resize(500, 400);
     xy.show();
     QVERIFY(QTest::qWaitForWindowExposed(&xy));
@@ -260,7 +261,7 @@ void TestMeasure::breakdownMatchesHandComputedTerms()
     params.D_adm = 2e-3;
     params.M_adm = 0.05;
     m_panel->setDeviceParams(params);
-    TorqueBreakdownView view(m_panel);
+    TorqueBreakdownView view(m_panel.get());
     view.resize(600, 400);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
@@ -300,7 +301,7 @@ void TestMeasure::breakdownMatchesHandComputedTerms()
 
 void TestMeasure::breakdownWithoutParameters()
 {
-    TorqueBreakdownView view(m_panel);
+    TorqueBreakdownView view(m_panel.get());
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
     m_panel->repaintNow();
