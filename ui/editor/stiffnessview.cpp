@@ -2,9 +2,12 @@
 
 #include "model/stiffness.h"
 
+#include "plots/fadingtrail.h"
 #include "plots/palette.h"
+#include "plots/plotpanel.h"
 #include "plots/plottheme.h"
 #include "plots/qcp.h"
+
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -52,6 +55,9 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_torqueRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
     m_stiffnessRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
     m_torqueRect->axis(QCPAxis::atLeft)->setLabel(tr("τ_rec [N·m]"));
+    // Few ticks: the dock may be short (1280×720), and its numbers must not overlap.
+    for (QCPAxisRect *rect : {m_torqueRect, m_stiffnessRect})
+        rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3);
     m_stiffnessRect->axis(QCPAxis::atLeft)->setLabel(tr("K_rec [N·m/rad]"));
 
     auto graph = [this](QCPAxisRect *rect, const QPen &pen, const QString &name) {
@@ -68,6 +74,10 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_deviceStiffness = graph(m_stiffnessRect, device, tr("device"));
     m_torque = graph(m_torqueRect, edited, tr("edited"));
     m_stiffness = graph(m_stiffnessRect, edited, tr("edited"));
+    m_trail = std::make_unique<FadingTrail>(
+        m_torqueRect->axis(QCPAxis::atBottom), m_torqueRect->axis(QCPAxis::atLeft),
+        palette::channel(Channel::Tau), tr("τ (measured), last %1 s").arg(kTrailSeconds));
+    m_trail->piece(FadingTrail::kPieces - 1)->removeFromLegend();
     m_point = graph(m_torqueRect, QPen(kPointColour), tr("live (θ, measured τ_rec)"));
     m_point->setLineStyle(QCPGraph::lsNone);
     m_point->setScatterStyle(
@@ -84,8 +94,13 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     legend->setBorderPen(Qt::NoPen);
     legend->setBrush(Qt::NoBrush);
     legend->setMargins(QMargins(4, 2, 4, 0));
+    legend->setWrap(2);
     for (QCPGraph *g : {m_torque, m_otherTorque, m_deviceTorque, m_point})
         g->addToLegend(legend);
+    m_trail->piece(FadingTrail::kPieces - 1)->addToLegend(legend);
+    // Room below the text (the legend clips each item to its rect, which would cut the "_").
+    for (int k = 0; k < legend->itemCount(); ++k)
+        legend->item(k)->setMargins(QMargins(2, 1, 2, 3));
 
     QPen limitPen(palette::kLimit, 1.0, Qt::DotLine);
     m_limitHigh = straightLine(m_plot, m_torqueRect, limitPen);
@@ -95,6 +110,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     // The live point moves with every batch of samples; on a buffered layer of its own it is
     // redrawn alone, over the curves, axes and legend drawn before.
     m_plot->layer(u"overlay"_s)->setMode(QCPLayer::lmBuffered);
+    m_trail->setLayer(u"overlay"_s); // under the live point
     m_point->setLayer(u"overlay"_s);
     m_cursor->setLayer(u"overlay"_s);
 
@@ -140,6 +156,29 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     plottheme::follow(m_plot);
     updateComparisonStyle();
     rebuild();
+}
+
+StiffnessView::~StiffnessView() = default;
+
+void StiffnessView::followTrail(const PlotPanel *panel)
+{
+    connect(panel, &PlotPanel::repainted, this, [this, panel] { updateTrail(panel); });
+}
+
+void StiffnessView::updateTrail(const PlotPanel *panel)
+{
+    const SampleBuffer *src = panel->shownSource();
+    if (!src || src->isEmpty()) {
+        if (m_trail->pointCount() > 0) {
+            m_trail->clear();
+            requestReplot(true);
+        }
+        return;
+    }
+    const double end = std::min(src->lastTime(), panel->dataEnd().value_or(src->lastTime()));
+    m_trail->setFromBuffer(*src, end - kTrailSeconds, end, Channel::Theta, scale(), Channel::Tau,
+                           1.0);
+    requestReplot(true);
 }
 
 void StiffnessView::setReplaying(bool replaying)

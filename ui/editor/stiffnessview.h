@@ -7,6 +7,7 @@
 #include <QVector>
 #include <QWidget>
 
+#include <memory>
 #include <optional>
 
 class QCPAxisRect;
@@ -19,6 +20,9 @@ class QTimer;
 
 namespace hatpic {
 
+class FadingTrail;
+class PlotPanel;
+
 class StiffnessView : public QWidget
 {
     Q_OBJECT
@@ -26,7 +30,10 @@ public:
     static constexpr int kUniformSamples = 601;   //!< evenly spaced samples per curve
     static constexpr int kRepaintIntervalMs = 33; //!< the live point repaints at ≤ 30 Hz
 
+    static constexpr double kTrailSeconds = 3; //!< length of the operating point's trail [s]
+
     explicit StiffnessView(QWidget *parent = nullptr);
+    ~StiffnessView() override;
 
     void setEditedParams(const DeviceParams &params);
     //! The device's parameters, drawn dashed; nullopt hides them.
@@ -49,6 +56,12 @@ public:
     //! The τ_rec(θ) / K_rec(θ) curve of slot 0 (A) or 1 (B) while compared, else nullptr.
     QCPGraph *slotTorqueGraph(int slot) const;
     QCPGraph *slotStiffnessGraph(int slot) const;
+    //! Draws the trail of (θ, measured τ) over the last kTrailSeconds of what `panel` shows
+    //! (live, paused or replayed), older points fainter, after each of its repaints. τ lies on
+    //! τ_rec(θ) at rest and leaves it with the admittance's inertia and damping, so loops show
+    //! hysteresis and back-and-forth jumps at the dead-zone edge show chatter.
+    void followTrail(const PlotPanel *panel);
+    const FadingTrail *trail() const { return m_trail.get(); }
 
     //! Half-width of the shown θ range around θ0: max(2.5·N, 0.5) rad, at most π/2 [rad].
     static double halfRange(const DeviceParams &params);
@@ -72,6 +85,7 @@ private:
     void updateShading();
     void updateComparisonStyle();
     void updateOperatingPoint();
+    void updateTrail(const PlotPanel *panel);
     //! Replots within kRepaintIntervalMs: everything, or (`pointOnly`) just the live point's
     //! layer when nothing else changed since the last replot.
     void requestReplot(bool pointOnly = false);
@@ -96,6 +110,7 @@ private:
     QCPGraph *m_otherTorque = nullptr;
     QCPGraph *m_otherStiffness = nullptr;
     QCPLegend *m_legend = nullptr;
+    std::unique_ptr<FadingTrail> m_trail;
     QCPItemStraightLine *m_cursor = nullptr;
     QCPItemStraightLine *m_limitHigh = nullptr;
     QCPItemStraightLine *m_limitLow = nullptr;

@@ -44,5 +44,9 @@ inline const QColor kLimit(211, 47, 47);         //!< ±tau_limit
 //! Profile slot B's curves beside slot A's when the two are compared (slot A keeps τ_rec's
 //! crimson): olive, unlike every quantity's colour.
 inline const QColor kSlotB(128, 118, 0);
+inline const QColor kMeasure(38, 50, 56);        //!< the measuring cursors A and B
+inline const QColor kInertialTerm(158, 157, 36); //!< D_adm·ω̇ in the torque breakdown
+inline const QColor kDampingTerm(57, 73, 171);   //!< M_adm·ω in the torque breakdown
+inline const QColor kSaturated(211, 47, 47, 40); //!< samples where tau_limit clamped (shaded)
 
 } // namespace hatpic::palette

@@ -1,5 +1,7 @@
 #include "plots/plotactions.h"
 
+#include "plots/imagesizedialog.h"
+#include "plots/measurecursors.h"
 #include "plots/plotpanel.h"
 
 #include <QAction>
@@ -67,9 +69,20 @@ PlotActions::PlotActions(PlotPanel *plots, QWidget *dialogParent)
     connect(m_bands, &QAction::toggled, plots, &PlotPanel::setBandsVisible);
     connect(plots, &PlotPanel::bandsVisibilityChanged, m_bands, &QAction::setChecked);
 
+    m_measure = new QAction(tr("&Measure (Cursors A and B)"), this);
+    m_measure->setIconText(tr("Measure"));
+    m_measure->setObjectName(QStringLiteral("measureAction"));
+    m_measure->setCheckable(true);
+    m_measure->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+    m_measure->setToolTip(tr("Two cursors A and B with Δt and the Δ of every series (Ctrl+M). "
+                             "Click: A, Shift+click: B, drag a line to move it; on the plots, "
+                             "A or B picks one, ← → move it (Shift: by ten)"));
+    connect(m_measure, &QAction::toggled, plots->measure(), &MeasureCursors::setEnabled);
+
     m_exportImage = new QAction(tr("Export View as &Image…"), this);
     m_exportImage->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
-    m_exportImage->setToolTip(tr("Save the three plots as PNG or PDF (Ctrl+E)"));
+    m_exportImage->setToolTip(tr("Save the three plots as PNG (at a chosen size), SVG or PDF, "
+                                 "noted with the profile and parameters (Ctrl+E)"));
     connect(m_exportImage, &QAction::triggered, this, &PlotActions::exportImage);
     m_exportCsv = new QAction(tr("Export Visible &Data as CSV…"), this);
     m_exportCsv->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
@@ -99,11 +112,20 @@ void PlotActions::exportImage()
 {
     const QString path = QFileDialog::getSaveFileName(
         m_dialogParent, tr("Export view"), suggestedExport(QStringLiteral("hatpic-view.png")),
-        tr("PNG image (*.png);;PDF document (*.pdf)"));
+        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"));
     if (path.isEmpty())
         return;
+    PlotImageOptions options{m_plots->customPlot()->size(), 1.0, {}};
+    if (plotImageFormat(path) != PlotImageFormat::Pdf) {
+        ImageSizeDialog size(m_plots->customPlot()->size(), plotImageFormat(path), m_dialogParent);
+        if (size.exec() != QDialog::Accepted)
+            return;
+        options = size.options();
+    }
+    if (m_caption)
+        options.caption = m_caption();
     QString error;
-    if (!m_plots->exportImage(path, &error))
+    if (!m_plots->exportImage(path, options, &error))
         QMessageBox::warning(m_dialogParent, tr("Export view"), error);
     else
         Q_EMIT statusMessage(tr("Saved %1").arg(path));

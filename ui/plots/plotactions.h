@@ -6,6 +6,7 @@
 #include <QObject>
 
 #include <array>
+#include <functional>
 
 class QAction;
 class QActionGroup;
@@ -30,6 +31,9 @@ public:
     QAction *autoscaleAction() const { return m_autoscale; }
     QAction *exportImageAction() const { return m_exportImage; } //!< Ctrl+E
     QAction *exportCsvAction() const { return m_exportCsv; }     //!< Ctrl+Shift+E
+    QAction *measureAction() const { return m_measure; }         //!< Ctrl+M, the two cursors
+    //! What an exported picture is noted with (profile, parameters), asked at each export.
+    void setCaptionSource(std::function<QString()> caption) { m_caption = std::move(caption); }
     //! One checkable entry per series, then the bands.
     void addSeriesActions(QMenu *menu) const;
 
@@ -47,6 +51,8 @@ private:
     QAction *m_autoscale = nullptr;
     QAction *m_exportImage = nullptr;
     QAction *m_exportCsv = nullptr;
+    QAction *m_measure = nullptr;
+    std::function<QString()> m_caption;
     QList<QAction *> m_series;
     QAction *m_bands = nullptr;
 };

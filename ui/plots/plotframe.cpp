@@ -7,6 +7,8 @@
 #include "plots/qcp.h"
 #include "plots/samplebuffer.h"
 
+#include <QFontMetrics>
+
 #include <algorithm>
 #include <limits>
 
@@ -38,13 +40,18 @@ void fit(QCPAxis *axis, double lo, double hi, double minSpan)
     axis->setRange(lo - 2 * margin, hi + 2 * margin);
 }
 
-constexpr int kLegendWidth = 200; //!< [px], fixed so that changing values do not reflow
+constexpr int kLegendWidth = 200; //!< [px] at least, fixed so that changing values do not reflow
 
 } // namespace
 
 PlotFrame::PlotFrame(QCustomPlot *plot)
 {
     plot->plotLayout()->clear();
+    // Wide enough for the longest entry, a Δ of the measuring cursors: icon, gaps, text.
+    const int legendWidth = std::max(
+        kLegendWidth,
+        QFontMetrics(plot->font()).horizontalAdvance(QStringLiteral("τ (measured) Δ −0.0000 N·m")) +
+            18 + 36);
     auto *margins = new QCPMarginGroup(plot);
     for (int i = 0; i < kPlotCount; ++i) {
         auto *rect = new QCPAxisRect(plot);
@@ -71,8 +78,8 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
         legend->setVisible(true);
         legend->setBorderPen(Qt::NoPen);
         legend->setBrush(Qt::NoBrush);
-        legend->setMinimumSize(kLegendWidth, 0);
-        legend->setMaximumSize(kLegendWidth, QWIDGETSIZE_MAX);
+        legend->setMinimumSize(legendWidth, 0);
+        legend->setMaximumSize(legendWidth, QWIDGETSIZE_MAX);
         legend->setMargins(QMargins(6, 8, 4, 4));
         legend->setRowSpacing(2);
         legend->setIconSize(18, 10);

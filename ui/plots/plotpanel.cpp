@@ -1,6 +1,7 @@
 #include "plots/plotpanel.h"
 
 #include "plots/logging.h"
+#include "plots/measurecursors.h"
 #include "plots/plotframe.h"
 #include "plots/plotghost.h"
 #include "plots/plotoverlays.h"
@@ -8,7 +9,6 @@
 #include "plots/qcp.h"
 #include "plots/samplecsvwriter.h"
 
-#include <QFileInfo>
 #include <QTimer>
 #include <QToolTip>
 #include <QVBoxLayout>
@@ -58,6 +58,11 @@ void PlotPanel::buildPlots()
     }
     m_overlays = std::make_unique<PlotOverlays>(m_plot, m_frame->rects());
     m_ghost = std::make_unique<PlotGhost>(*m_frame);
+    m_measure = new MeasureCursors(this);
+    connect(m_measure, &MeasureCursors::changed, this, [this] {
+        updateLegendTexts();
+        m_replotNeeded = true;
+    });
 
     connect(
         m_plot, &QCustomPlot::legendClick, this,
@@ -418,6 +423,7 @@ void PlotPanel::updateLegendTexts()
         }
     }
     m_frame->updateLegends(src, index, m_units, m_bandsVisible);
+    m_measure->nameGraphs(); // Δ between the measuring cursors, when they are on
 }
 
 QString PlotPanel::readout() const
@@ -457,12 +463,13 @@ void PlotPanel::onLegendClick(QCPAbstractLegendItem *item)
 
 bool PlotPanel::exportImage(const QString &path, QString *error)
 {
+    return exportImage(path, PlotImageOptions{m_plot->size(), 1.0, {}}, error);
+}
+
+bool PlotPanel::exportImage(const QString &path, const PlotImageOptions &options, QString *error)
+{
     repaintIfNeeded();
-    const bool pdf = QFileInfo(path).suffix().compare(u"pdf", Qt::CaseInsensitive) == 0;
-    const bool ok = pdf ? m_plot->savePdf(path) : m_plot->savePng(path);
-    if (!ok && error)
-        *error = tr("Could not write %1.").arg(path);
-    return ok;
+    return writePlotImage(m_plot, path, options, error);
 }
 
 qsizetype PlotPanel::exportCsv(const QString &path, QString *error) const
@@ -482,6 +489,8 @@ bool PlotPanel::eventFilter(QObject *watched, QEvent *event)
         m_latency.painted(sampleClockNs());
     if (watched == m_plot && event->type() == QEvent::Leave)
         setCursorTime(std::nullopt);
+    if (watched == m_plot && m_measure && m_measure->handleEvent(event)) // (built after)
+        return true;
     return QWidget::eventFilter(watched, event);
 }
 

@@ -13,6 +13,7 @@
 #include "plots/decimator.h"
 #include "plots/displayunits.h"
 #include "plots/latencyprobe.h"
+#include "plots/plotexport.h"
 #include "plots/plotframe.h"
 #include "plots/samplebuffer.h"
 #include "telemetry/recording.h"
@@ -34,6 +35,7 @@ class QTimer;
 namespace hatpic {
 
 class PlotGhost;
+class MeasureCursors;
 class PlotOverlays;
 
 class PlotPanel : public QWidget
@@ -112,8 +114,12 @@ public:
     //! "t = 12.345 s; θ = 3.21°; …".
     QString readout() const;
 
-    //! Saves the three plots as an image: PDF for a ".pdf" path, else PNG.
+    //! Saves the three plots as an image at the widget's size: PDF for a ".pdf" path, SVG for
+    //! ".svg", else PNG.
     bool exportImage(const QString &path, QString *error = nullptr);
+    //! The same at the size and with the caption of `options` (plots/plotexport.h).
+    bool exportImage(const QString &path, const PlotImageOptions &options,
+                     QString *error = nullptr);
     //! Writes the raw samples of the visible time range as CSV; rows written or −1.
     qsizetype exportCsv(const QString &path, QString *error = nullptr) const;
 
@@ -130,6 +136,13 @@ public:
     void repaintIfNeeded();
     //! Forces a full rebuild and repaint now.
     void repaintNow();
+
+    //! The two measuring cursors (off until enabled).
+    MeasureCursors *measure() const { return m_measure; }
+    //! What the plots draw: the source, or its snapshot while paused; nullptr: nothing.
+    const SampleBuffer *shownSource() const { return drawSource(); }
+    const DisplayUnits &units() const { return m_units; }
+    const std::optional<DeviceParams> &deviceParams() const { return m_params; }
 
     QCustomPlot *customPlot() const { return m_plot; }
     QCPAxisRect *axisRect(Plot plot) const { return m_frame->rect(plot); }
@@ -166,6 +179,7 @@ private:
     QTimer *m_timer = nullptr;
     std::unique_ptr<PlotOverlays> m_overlays;
     std::unique_ptr<PlotGhost> m_ghost;
+    MeasureCursors *m_measure = nullptr;
     DisplayUnits m_units;
 
     const SampleBuffer *m_source = nullptr;

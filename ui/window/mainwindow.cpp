@@ -21,6 +21,7 @@
 #include "recording/replaycontroller.h"
 #include "window/abdock.h"
 #include "window/bridgedock.h"
+#include "window/measuredocks.h"
 #include "window/shortcutsdialog.h"
 #include "window/theme.h"
 #include "window/windowactions.h"
@@ -188,6 +189,8 @@ void MainWindow::createDocks()
     // A/B comparison and the profile's notes, opened from the View menu, beside the log.
     for (QDockWidget *dock : addAbDocks(this, m_profiles, m_editor, m_stiffness, m_logDock))
         m_viewMenu->addAction(dock->toggleViewAction());
+    addMeasureDocks(this, m_plots, m_plotActions, m_profiles, m_editor, m_stiffness, m_viewMenu,
+                    m_logDock);
 }
 
 void MainWindow::connectParts()
@@ -367,6 +370,7 @@ QList<QAction *> MainWindow::shortcutActions() const
                             m_actions->resetReference,
                             m_plotActions->exportImageAction(),
                             m_plotActions->exportCsvAction(),
+                            m_plotActions->measureAction(),
                             m_actions->shortcuts,
                             m_actions->quit} +
            m_editor->keyboardActions() + m_plotActions->windowActions();

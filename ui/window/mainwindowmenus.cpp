@@ -61,6 +61,7 @@ void MainWindow::createMenus()
     window->addActions(m_plotActions->windowActions());
     view->addAction(m_plotActions->autoscaleAction());
     view->addAction(m_actions->degrees);
+    view->addAction(m_plotActions->measureAction());
     m_plotActions->addSeriesActions(view->addMenu(tr("&Series")));
     view->addMenu(m_theme->menu());
     view->addSeparator(); // the docks' toggles follow (createDocks)
@@ -88,6 +89,7 @@ void MainWindow::createToolBars()
     plots->addSeparator();
     plots->addAction(m_plotActions->autoscaleAction());
     plots->addAction(m_actions->degrees);
+    plots->addAction(m_plotActions->measureAction());
     plots->addAction(m_actions->resetReference);
     plots->addSeparator();
     plots->addWidget(m_recording);

@@ -1,0 +1,63 @@
+#include "window/measuredocks.h"
+
+#include "editor/parametereditor.h"
+#include "editor/profilecontroller.h"
+#include "editor/stiffnessview.h"
+#include "plots/plotactions.h"
+#include "plots/plotexport.h"
+#include "plots/plotpanel.h"
+#include "plots/torquebreakdownview.h"
+#include "plots/xyview.h"
+
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QMenu>
+
+namespace hatpic {
+
+MeasureDocks addMeasureDocks(QMainWindow *window, PlotPanel *plots, PlotActions *plotActions,
+                             ProfileController *profiles, ParameterEditor *editor,
+                             StiffnessView *stiffness, QMenu *view, QDockWidget *tabWith)
+{
+    auto dock = [&](const QString &title, const QString &name, QWidget *widget) {
+        auto *d = new QDockWidget(title, window);
+        d->setObjectName(name);
+        d->setWidget(widget);
+        window->addDockWidget(Qt::BottomDockWidgetArea, d);
+        if (tabWith)
+            window->tabifyDockWidget(tabWith, d);
+        d->hide();
+        view->addAction(d->toggleViewAction());
+        return d;
+    };
+    auto *xy = new XyView(plots, window);
+    xy->setObjectName(QStringLiteral("xyView"));
+    auto *breakdown = new TorqueBreakdownView(plots, window);
+    breakdown->setObjectName(QStringLiteral("torqueBreakdown"));
+    MeasureDocks docks;
+    docks.xy = dock(QObject::tr("XY view"), QStringLiteral("xyDock"), xy);
+    docks.breakdown =
+        dock(QObject::tr("Torque breakdown"), QStringLiteral("breakdownDock"), breakdown);
+    // Shown again: draw at once rather than at the next repaint.
+    QObject::connect(docks.xy, &QDockWidget::visibilityChanged, xy, [xy](bool on) {
+        if (on)
+            xy->refresh();
+    });
+    QObject::connect(docks.breakdown, &QDockWidget::visibilityChanged, breakdown,
+                     [breakdown](bool on) {
+                         if (on)
+                             breakdown->refresh();
+                     });
+
+    stiffness->followTrail(plots);
+    // Pictures are noted with the profile and the parameters of what the plots show (the
+    // device's, or the recording's in replay; the editor's when there are none).
+    plotActions->setCaptionSource([plots, profiles, editor] {
+        const std::optional<DeviceParams> shown = plots->deviceParams();
+        return plotCaption(profiles->profileName(), shown ? shown : editor->params(),
+                           editor->hostParams());
+    });
+    return docks;
+}
+
+} // namespace hatpic
