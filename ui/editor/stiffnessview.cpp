@@ -100,7 +100,8 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_trail->piece(FadingTrail::kPieces - 1)->addToLegend(legend);
     // Room below the text (the legend clips each item to its rect, which would cut the "_").
     for (int k = 0; k < legend->itemCount(); ++k)
-        legend->item(k)->setMargins(QMargins(2, 1, 2, 3));
+        if (QCPAbstractLegendItem *item = legend->item(k)) // a wrapped grid may hold gaps
+            item->setMargins(QMargins(2, 1, 2, 3));
 
     QPen limitPen(palette::kLimit, 1.0, Qt::DotLine);
     m_limitHigh = straightLine(m_plot, m_torqueRect, limitPen);

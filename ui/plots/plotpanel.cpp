@@ -39,7 +39,6 @@ PlotPanel::PlotPanel(QWidget *parent) : QWidget(parent)
     connect(m_timer, &QTimer::timeout, this, &PlotPanel::repaintIfNeeded);
     setRepaintRate(kDefaultRepaintHz);
     m_timer->start();
-    m_rateClock.start();
 }
 
 PlotPanel::~PlotPanel() = default;
@@ -492,26 +491,6 @@ bool PlotPanel::eventFilter(QObject *watched, QEvent *event)
     if (watched == m_plot && m_measure && m_measure->handleEvent(event)) // (built after)
         return true;
     return QWidget::eventFilter(watched, event);
-}
-
-void PlotPanel::logRate()
-{
-    const qint64 ms = m_rateClock.elapsed();
-    if (ms < 5000)
-        return;
-    const double rate = (m_stats.replots - m_rateReplots) * 1000.0 / ms;
-    qCDebug(lcPlots).nospace() << "repaint rate " << rate << " Hz; last decimate "
-                               << m_stats.lastDecimateMs << " ms, replot " << m_stats.lastReplotMs
-                               << " ms, " << m_stats.lastPoints << " points";
-    const LatencyProbe::Summary latency = m_latency.summary();
-    if (latency.count > 0)
-        qCDebug(lcPlots).nospace()
-            << "latency arrival to frame: median " << latency.medianMs << " ms, p95 "
-            << latency.p95Ms << " ms, max " << latency.maxMs << " ms over " << latency.count
-            << " samples (" << latency.dropped << " not shown)";
-    m_latency.resetSummary();
-    m_rateReplots = m_stats.replots;
-    m_rateClock.restart();
 }
 
 } // namespace hatpic

@@ -13,6 +13,7 @@
 #include "plots/decimator.h"
 #include "plots/displayunits.h"
 #include "plots/latencyprobe.h"
+#include "plots/logging.h"
 #include "plots/plotexport.h"
 #include "plots/plotframe.h"
 #include "plots/samplebuffer.h"
@@ -170,7 +171,11 @@ private:
     void updateLegendTexts();
     void onLegendClick(QCPAbstractLegendItem *item);
     void onXRangeChanged(int plotIndex);
-    void logRate();
+    void logRate()
+    {
+        m_repaintLog.tick(m_stats.replots, m_stats.lastDecimateMs, m_stats.lastReplotMs,
+                          m_stats.lastPoints, m_latency);
+    }
     const SampleBuffer *drawSource() const;
     double dataEdge() const; //!< right end of the drawn data: view end or data end [s]
 
@@ -206,8 +211,7 @@ private:
 
     RepaintStats m_stats;
     LatencyProbe m_latency;
-    QElapsedTimer m_rateClock;
-    quint64 m_rateReplots = 0;
+    RepaintLog m_repaintLog;
 };
 
 } // namespace hatpic

@@ -72,8 +72,8 @@ void apply(QCustomPlot *plot, const QPalette &palette)
         legend->setBorderPen(QPen(grid, 0));
         legend->setTextColor(text);
         for (int i = 0; i < legend->itemCount(); ++i) {
-            QCPAbstractLegendItem *item = legend->item(i);
-            if (item->textColor() != kHiddenLegendText)
+            QCPAbstractLegendItem *item = legend->item(i); // null: a gap in a wrapped grid
+            if (item && item->textColor() != kHiddenLegendText)
                 item->setTextColor(text);
         }
     }
