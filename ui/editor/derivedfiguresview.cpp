@@ -1,5 +1,7 @@
 #include "editor/derivedfiguresview.h"
 
+#include "plots/palette.h"
+
 #include <QGridLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -169,10 +171,11 @@ void DerivedFiguresView::refresh()
     m_omega->setText(
         tr("%1 rad/s  (%2 Hz)").arg(num(f.omega_n), num(f.omega_n / (2.0 * std::numbers::pi))));
     const QString zeta = num(f.zeta);
-    m_zeta->setText(f.rings() ? tr("<span style=\"color:#d32f2f\"><b>%1</b></span>"
-                                   "&nbsp;&nbsp;(&lt; %2: rings)")
-                                    .arg(zeta, num(DerivedFigures::kRingingZeta))
-                              : zeta);
+    m_zeta->setText(
+        f.rings() ? tr("<span style=\"color:%3\"><b>%1</b></span>"
+                       "&nbsp;&nbsp;(&lt; %2: rings)")
+                        .arg(zeta, num(DerivedFigures::kRingingZeta), palette::kProblemText.name())
+                  : zeta);
     m_timeConstant->setText(f.timeConstant < 1.0 ? tr("%1 ms").arg(num(f.timeConstant * 1e3))
                                                  : tr("%1 s").arg(num(f.timeConstant)));
 

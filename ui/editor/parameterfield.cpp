@@ -2,6 +2,7 @@
 
 #include "editor/scientificspinbox.h"
 #include "model/params.h"
+#include "plots/palette.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -27,8 +28,8 @@ double roundSignificant(double value, int digits)
     return QString::number(value, 'g', digits).toDouble();
 }
 
-const QString kClampStyle = QStringLiteral("color: #8a6d00;");
-const QString kProblemStyle = QStringLiteral("color: #d32f2f;");
+const QString kClampStyle = QStringLiteral("color: %1;").arg(palette::kCautionText.name());
+const QString kProblemStyle = QStringLiteral("color: %1;").arg(palette::kProblemText.name());
 
 const QString kInvalidStyle = QStringLiteral(
     "QAbstractSpinBox { border: 2px solid #d32f2f; border-radius: 3px; padding: 1px; }");
@@ -44,7 +45,7 @@ ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject 
     m_marker = new QLabel(parentWidget);
     m_marker->setObjectName(u"diff_"_s + spec.key);
     m_marker->setText(QStringLiteral("●"));
-    m_marker->setStyleSheet(QStringLiteral("color: #f57c00;"));
+    m_marker->setStyleSheet(QStringLiteral("color: %1;").arg(palette::kEditedMark.name()));
     QSizePolicy keep = m_marker->sizePolicy();
     keep.setRetainSizeWhenHidden(true);
     m_marker->setSizePolicy(keep);
@@ -236,9 +237,10 @@ void ParameterField::setProblem(const QString &problem)
     updateMessage();
     const QString tip = u"<b>"_s + m_spec.symbol + u"</b> — "_s + m_spec.meaning + u" ["_s +
                         m_spec.unit + u"]<br>"_s + m_spec.toolTip;
-    m_spin->setToolTip(problem.isEmpty() ? tip
-                                         : tip + u"<br><span style=\"color:#d32f2f\">"_s + problem +
-                                               u"</span>"_s);
+    m_spin->setToolTip(problem.isEmpty()
+                           ? tip
+                           : tip + u"<br><span style=\"color:"_s + palette::kProblemText.name() +
+                                 u"\">"_s + problem + u"</span>"_s);
 }
 
 void ParameterField::showClamp(double typed, double bound)

@@ -1,6 +1,7 @@
 #include "editor/syncbar.h"
 
 #include "editor/undobutton.h"
+#include "plots/palette.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -38,7 +39,7 @@ QString stateColour(SyncState state)
     case SyncState::Rejected:
     case SyncState::Timeout:
     case SyncState::Failed:
-        return u"#c62828"_s;
+        return palette::kProblemText.name();
     case SyncState::NotConnected:
     case SyncState::NotRead:
         break;

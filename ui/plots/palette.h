@@ -44,9 +44,14 @@ inline const QColor kLimit(211, 47, 47);         //!< ±tau_limit
 //! Profile slot B's curves beside slot A's when the two are compared (slot A keeps τ_rec's
 //! crimson): olive, unlike every quantity's colour.
 inline const QColor kSlotB(128, 118, 0);
-inline const QColor kMeasure(38, 50, 56);        //!< the measuring cursors A and B
-inline const QColor kInertialTerm(158, 157, 36); //!< D_adm·ω̇ in the torque breakdown
-inline const QColor kDampingTerm(57, 73, 171);   //!< M_adm·ω in the torque breakdown
+inline const QColor kMeasure(170, 90, 210);      //!< the measuring cursors A and B (violet)
+inline const QColor kInertialTerm(140, 140, 20); //!< D_adm·ω̇ in the torque breakdown
+inline const QColor kDampingTerm(83, 109, 254);  //!< M_adm·ω in the torque breakdown
 inline const QColor kSaturated(211, 47, 47, 40); //!< samples where tau_limit clamped (shaded)
+
+// Status text in the editor, on the window's background of either theme (3:1 or more).
+inline const QColor kProblemText(229, 57, 53); //!< a rejected value, ringing, a failed push
+inline const QColor kCautionText(170, 122, 0); //!< a value clamped to its range
+inline const QColor kEditedMark(230, 81, 0);   //!< a field edited but not pushed
 
 } // namespace hatpic::palette

@@ -204,13 +204,23 @@ void TestTheme::dataColoursReadOnBoth()
 {
     const QRgb light = ThemeController::lightPalette().color(QPalette::Base).rgb();
     const QRgb dark = ThemeController::darkPalette().color(QPalette::Base).rgb();
-    QList<QColor> colours{palette::kEvent, palette::kLivePoint, palette::kLimit};
+    QList<QColor> colours{palette::kEvent,      palette::kLivePoint, palette::kLimit,
+                          palette::kSlotB,      palette::kMeasure,   palette::kInertialTerm,
+                          palette::kDampingTerm};
     for (Channel c : kAllChannels)
         colours.append(palette::channel(c));
     for (const QColor &c : colours) {
         const double l = luminance(c.rgb());
         QVERIFY2(contrast(l, luminance(light)) >= 3.0, qPrintable(c.name()));
         QVERIFY2(contrast(l, luminance(dark)) >= 3.0, qPrintable(c.name()));
+    }
+    // The editor's status texts, on the window colour of either theme.
+    const QRgb lightWindow = ThemeController::lightPalette().color(QPalette::Window).rgb();
+    const QRgb darkWindow = ThemeController::darkPalette().color(QPalette::Window).rgb();
+    for (const QColor &c : {palette::kProblemText, palette::kCautionText, palette::kEditedMark}) {
+        const double l = luminance(c.rgb());
+        QVERIFY2(contrast(l, luminance(lightWindow)) >= 3.0, qPrintable(c.name()));
+        QVERIFY2(contrast(l, luminance(darkWindow)) >= 3.0, qPrintable(c.name()));
     }
 }
 
