@@ -94,7 +94,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     legend->setBorderPen(Qt::NoPen);
     legend->setBrush(Qt::NoBrush);
     legend->setMargins(QMargins(4, 2, 4, 0));
-    legend->setWrap(2);
+    legend->setWrap(3);
     for (QCPGraph *g : {m_torque, m_otherTorque, m_deviceTorque, m_point})
         g->addToLegend(legend);
     m_trail->piece(FadingTrail::kPieces - 1)->addToLegend(legend);

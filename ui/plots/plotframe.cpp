@@ -48,7 +48,7 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
 {
     plot->plotLayout()->clear();
     // Wide enough for the longest entry, a Δ of the measuring cursors: icon, gaps, text.
-    const int legendWidth = std::max(
+    m_wideLegendWidth = std::max(
         kLegendWidth,
         QFontMetrics(plot->font()).horizontalAdvance(QStringLiteral("τ (measured) Δ −0.0000 N·m")) +
             18 + 36);
@@ -78,8 +78,8 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
         legend->setVisible(true);
         legend->setBorderPen(Qt::NoPen);
         legend->setBrush(Qt::NoBrush);
-        legend->setMinimumSize(legendWidth, 0);
-        legend->setMaximumSize(legendWidth, QWIDGETSIZE_MAX);
+        legend->setMinimumSize(kLegendWidth, 0);
+        legend->setMaximumSize(kLegendWidth, QWIDGETSIZE_MAX);
         legend->setMargins(QMargins(6, 8, 4, 4));
         legend->setRowSpacing(2);
         legend->setIconSize(18, 10);
@@ -218,6 +218,15 @@ void PlotFrame::autoscale(const std::array<DecimationResult, kChannelCount> &ran
     collect({Channel::PRef});
     fit(rect(PlotKind::Reference)->axis(QCPAxis::atRight), lo, hi,
         kMinSpan[2] * units.scale(Channel::PRef));
+}
+
+void PlotFrame::setWideLegends(bool wide)
+{
+    const int width = wide ? m_wideLegendWidth : kLegendWidth;
+    for (QCPLegend *legend : m_legends) {
+        legend->setMinimumSize(width, 0);
+        legend->setMaximumSize(width, QWIDGETSIZE_MAX);
+    }
 }
 
 bool PlotFrame::isBandKey(const QCPAbstractPlottable *plottable) const

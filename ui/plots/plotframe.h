@@ -48,6 +48,10 @@ public:
     //! The channel a graph draws; nullopt for anything else.
     std::optional<Channel> channelOf(const QCPAbstractPlottable *plottable) const;
 
+    //! Legends wide enough for the measuring cursors' Δ entries, or the narrower default that
+    //! leaves the plots more room.
+    void setWideLegends(bool wide);
+
     //! Axis labels with the units of `units` ("θ [°]", "v_ref [m/s]", …).
     void setAxisLabels(const DisplayUnits &units);
     //! Keeps the y ranges on the same physical values when the display units change.
@@ -68,6 +72,7 @@ private:
 
     std::array<QCPAxisRect *, kPlotCount> m_rects{};
     std::array<QCPLegend *, kPlotCount> m_legends{};
+    int m_wideLegendWidth = 0; //!< [px]
     std::array<QCPGraph *, kChannelCount> m_graphs{};
     QCPGraph *m_deadZoneKey = nullptr; //!< legend entries of the bands (no data)
     QCPGraph *m_notchKey = nullptr;

@@ -59,6 +59,7 @@ void PlotPanel::buildPlots()
     m_ghost = std::make_unique<PlotGhost>(*m_frame);
     m_measure = new MeasureCursors(this);
     connect(m_measure, &MeasureCursors::changed, this, [this] {
+        m_frame->setWideLegends(m_measure->isEnabled());
         updateLegendTexts();
         m_replotNeeded = true;
     });
