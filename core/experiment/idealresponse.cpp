@@ -25,15 +25,8 @@ QList<Sample> idealResponse(const ExperimentPlan &plan, const DeviceParams &para
         const double t = static_cast<double>(i) / rateHz;
         device.receive(v2::encodeFrame(0, v2::SetFeedback{static_cast<float>(plan.tauExt(t))}));
         const SimulatedDevice::Cycle cycle = device.step();
-        Sample s;
-        s.t_s = t;
-        s.theta = cycle.theta;
-        s.omega = cycle.omega;
-        s.tau = cycle.tau;
-        s.tau_rec = cycle.tau_rec;
-        s.tau_ext = cycle.tau_ext;
-        s.tau_total = cycle.tau_total;
-        s.flags = cycle.flags;
+        Sample s = cycle.toSample();
+        s.t_s = t; // the plan's time, as the measured run's samples are aligned to it
         out.append(s);
     }
     return out;

@@ -98,21 +98,10 @@ Sample OfflineSimulation::next()
     const SimulatedDevice::Cycle cycle = m_device->step();
     ++m_done;
 
-    Sample sample;
-    sample.t_s = cycle.t;
-    // Device timestamps are 32-bit microseconds that wrap (protocol.md); so do these.
-    sample.t_us = static_cast<quint32>(static_cast<quint64>(std::llround(cycle.t * 1e6)));
-    sample.theta = cycle.theta;
-    sample.omega = cycle.omega;
-    sample.tau = cycle.tau;
-    sample.tau_rec = cycle.tau_rec;
-    sample.tau_ext = cycle.tau_ext;
-    sample.tau_fx = cycle.tau_fx;
-    sample.tau_total = cycle.tau_total;
+    Sample sample = cycle.toSample();
     const auto reference = m_reference.update(sample.t_us, m_config.host, m_rendered, cycle.theta);
     sample.v_ref = reference.v_ref;
     sample.p_ref = reference.p_ref;
-    sample.flags = cycle.flags;
     if (reference.gap)
         sample.flags |= kFlagReferenceGap;
     if (!isFinite(sample)) {

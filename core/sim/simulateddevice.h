@@ -13,10 +13,12 @@
 #include "protocol/legacy.h"
 #include "protocol/v2codec.h"
 #include "sim/handinput.h"
+#include "telemetry/sample.h"
 
 #include <QByteArray>
 #include <QString>
 
+#include <cmath>
 #include <memory>
 #include <random>
 
@@ -55,6 +57,26 @@ public:
         double tau_fx = 0;    //!< τ_det + τ_wall + τ_vib (effects.md; legacy: 0) [N·m]
         double tau_total = 0; //!< clamped to tau_limit [N·m]
         quint8 flags = 0;     //!< v2::kFlag* bits
+
+        //! The sample of this cycle as TELEMETRY would carry it: t_s = t, t_us the wrapping
+        //! 32-bit microseconds of t, the torques and flags; no reference model (v_ref,
+        //! p_ref 0), no arrival time.
+        Sample toSample() const
+        {
+            Sample sample;
+            sample.t_s = t;
+            // Device timestamps are 32-bit microseconds that wrap (protocol.md); so do these.
+            sample.t_us = static_cast<quint32>(static_cast<quint64>(std::llround(t * 1e6)));
+            sample.theta = theta;
+            sample.omega = omega;
+            sample.tau = tau;
+            sample.tau_rec = tau_rec;
+            sample.tau_ext = tau_ext;
+            sample.tau_fx = tau_fx;
+            sample.tau_total = tau_total;
+            sample.flags = flags;
+            return sample;
+        }
     };
 
     explicit SimulatedDevice(const Config &config);
