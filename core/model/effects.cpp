@@ -116,7 +116,14 @@ EffectFigures deriveEffectFigures(const EffectParams &effects, const DeviceParam
         effects.detent_strength * 2.0 * std::numbers::pi / effects.detent_spacing;
     f.wallPassivityMargin = physicalDamping - effects.wall_stiffness * period / 2.0;
     f.detentsStifferThanNotch = effects.detent_range > 0 && f.detentPeakStiffness > device.K_max;
+    f.detentPassivityMargin = physicalDamping - f.detentPeakStiffness * period / 2.0;
     return f;
+}
+
+double servoStiffnessLimit(const DeviceParams &device, double servoBandwidthHz)
+{
+    const double omega = 2.0 * std::numbers::pi * servoBandwidthHz;
+    return device.D_adm * omega * omega;
 }
 
 } // namespace hatpic

@@ -130,11 +130,18 @@ struct EffectFigures
     double wallPassivityMargin =
         0; //!< b − K_w·h/2 (Colgate & Schenkel): < 0 may chatter [N·m·s/rad]
     bool detentsStifferThanNotch = false; //!< A·2π/s > K_max
+    //! b − (A·2π/s)·h/2: the passivity check with the detents' peak stiffness [N·m·s/rad]
+    double detentPassivityMargin = 0;
 };
 
 //! @param physicalDamping b, the device's own viscous damping [N·m·s/rad]
 //! @param period h, the control period [s]
 EffectFigures deriveEffectFigures(const EffectParams &effects, const DeviceParams &device,
                                   double physicalDamping, double period);
+
+//! The stiffest spring the servo's position loop follows on the device's virtual inertia:
+//! D_adm·(2π·f)², with f the loop's natural frequency [Hz] (docs/effects.md, "When a wall or a
+//! detent chatters"). A wall, or K_max plus the detents' peak stiffness, above it bounces.
+double servoStiffnessLimit(const DeviceParams &device, double servoBandwidthHz);
 
 } // namespace hatpic

@@ -19,6 +19,12 @@ QString CommandText::rejection(const CommandResult &r)
         .arg(QString::fromLatin1(deviceFieldName(r.field)), QString::number(r.field), status);
 }
 
+QString CommandText::noEffectsReason(bool legacy)
+{
+    return legacy ? tr("it runs the published firmware, legacy protocol")
+                  : tr("its firmware does not announce the effects capability");
+}
+
 QString CommandText::commandFailure(const CommandResult &r)
 {
     using Status = CommandResult::Status;
@@ -32,15 +38,10 @@ QString CommandText::commandFailure(const CommandResult &r)
         return tr("The device did not answer %1 (sent %2 times, %3 ms apart).")
             .arg(name, QString::number(r.attempts), QString::number(r.intervalMs));
     }
-    if (r.status == Status::Unsupported && r.reason == Reason::NoEffects) {
-        return tr("%1 is not available: the device runs the published firmware (legacy "
-                  "protocol), which cannot render effects.")
-            .arg(name);
-    }
-    if (r.status == Status::Unsupported && r.reason == Reason::NoEffectsCapability) {
-        return tr("%1 is not available: this device's firmware does not announce the effects "
-                  "capability, so it cannot render effects.")
-            .arg(name);
+    if (r.status == Status::Unsupported &&
+        (r.reason == Reason::NoEffects || r.reason == Reason::NoEffectsCapability)) {
+        return tr("%1 is not available: this device cannot render effects (%2).")
+            .arg(name, noEffectsReason(r.reason == Reason::NoEffects));
     }
     if (r.status == Status::Unsupported) {
         const QString why = r.reason == Reason::FixedRate

@@ -16,6 +16,9 @@ public:
     //! e.g. "The device rejected K_max (field 3): OUT_OF_RANGE; its parameters are unchanged.";
     //! empty for Ok.
     static QString commandFailure(const CommandResult &result);
+    //! Why a device cannot render effects, as a clause: "it runs the published firmware
+    //! (legacy protocol)" or "its firmware does not announce the effects capability".
+    static QString noEffectsReason(bool legacy);
 
 private:
     static QString rejection(const CommandResult &result);

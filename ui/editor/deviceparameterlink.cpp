@@ -10,9 +10,9 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
                                          QObject *parent)
     : QObject(parent), m_client(client), m_editor(editor)
 {
-    connect(m_editor, &ParameterEditor::pushRequested, this, [this](const DeviceParams &params) {
-        const DeviceParams before = m_client->deviceParams();
-        m_push = Push{m_client->pushParams(params), before, params};
+    connect(m_editor, &ParameterEditor::pushRequested, this, &DeviceParameterLink::onPushRequested);
+    connect(m_editor, &ParameterEditor::vibrateRequested, this, [this](const Vibration &v) {
+        m_commands.insert(m_client->vibrate(v), Command::Vibrate);
     });
     connect(m_editor, &ParameterEditor::readRequested, this, &DeviceParameterLink::readFromDevice);
     connect(m_editor, &ParameterEditor::hostParamsChanged, m_client, &DeviceClient::setHostParams);
@@ -21,6 +21,8 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
     connect(m_client, &DeviceClient::deviceInfoChanged, this, &DeviceParameterLink::onDeviceInfo);
     connect(m_client, &DeviceClient::deviceParamsChanged, m_editor,
             &ParameterEditor::setDeviceParams);
+    connect(m_client, &DeviceClient::deviceEffectsChanged, m_editor,
+            [this](const EffectParams &effects) { m_editor->setDeviceEffects(effects); });
     connect(m_client, &DeviceClient::commandFinished, this,
             &DeviceParameterLink::onCommandFinished);
     onStateChanged(m_client->state());
@@ -35,9 +37,26 @@ void DeviceParameterLink::prepare(ConnectOptions &options)
     m_client->setHostParams(m_editor->hostParams());
 }
 
+void DeviceParameterLink::onPushRequested(const DeviceParams &params,
+                                          const std::optional<EffectParams> &effects)
+{
+    Push push;
+    push.before = m_client->deviceParams();
+    push.pushed = params;
+    push.id = m_client->pushParams(params);
+    if (effects) {
+        push.effectsBefore = m_client->deviceEffects();
+        push.effectsPushed = *effects;
+        push.effectsId = m_client->pushEffects(*effects);
+    }
+    m_push = push;
+}
+
 void DeviceParameterLink::readFromDevice()
 {
     m_commands.insert(m_client->readParams(), Command::Read);
+    if (m_client->deviceInfo().hasEffects())
+        m_commands.insert(m_client->readEffects(), Command::ReadEffects);
 }
 
 void DeviceParameterLink::zero()
@@ -57,18 +76,37 @@ void DeviceParameterLink::onStateChanged(SessionState state)
                          connected ? tr("the legacy protocol cannot carry parameters") : QString());
     if (state == SessionState::Disconnected)
         m_editor->clearDeviceParams();
+    refreshEffectsAvailability();
 }
 
 void DeviceParameterLink::onDeviceInfo(const DeviceInfo &info)
 {
     if (info.protocol == WireProtocol::V2) // a legacy device reports no limit
         m_editor->setTauLimit(shortestFloatDecimal(info.tauLimit));
+    refreshEffectsAvailability();
+}
+
+void DeviceParameterLink::refreshEffectsAvailability()
+{
+    const DeviceInfo &info = m_client->deviceInfo();
+    const bool connected = m_client->state() == SessionState::Connected;
+    const bool available = connected && info.hasEffects();
+    // Our device core streams at most at its control rate, so max_stream_hz is that rate.
+    const double rate = available ? double(info.maxStreamHz) : 0.0;
+    m_editor->setEffectsAvailable(
+        available,
+        connected && !available
+            ? CommandText::noEffectsReason(info.protocol == WireProtocol::Legacy)
+            : QString(),
+        rate);
 }
 
 void DeviceParameterLink::onCommandFinished(quint64 id, const CommandResult &result)
 {
-    if (m_push && m_push->id == id) {
-        finishPush(result);
+    if (m_push && (m_push->id == id || (m_push->effectsId != 0 && m_push->effectsId == id))) {
+        (m_push->id == id ? m_push->result : m_push->effectsResult) = result;
+        if (m_push->result && (m_push->effectsId == 0 || m_push->effectsResult))
+            finishPush();
     } else if (const auto it = m_commands.constFind(id); it != m_commands.cend()) {
         const Command command = it.value();
         m_commands.erase(it);
@@ -76,13 +114,24 @@ void DeviceParameterLink::onCommandFinished(quint64 id, const CommandResult &res
     }
 }
 
-void DeviceParameterLink::finishPush(const CommandResult &result)
+void DeviceParameterLink::finishPush()
 {
     const Push push = *m_push;
     m_push.reset();
+    // The first failure is the push's outcome; SET_EFFECTS follows SET_PARAMS on the wire.
+    const CommandResult &result =
+        !push.result->ok() || !push.effectsResult ? *push.result : *push.effectsResult;
     m_editor->pushFinished(result);
     if (result.ok()) {
-        const QString change = describeParamChange(push.before, push.pushed);
+        QStringList changes;
+        if (const QString p = describeParamChange(push.before, push.pushed); !p.isEmpty())
+            changes << p;
+        if (push.effectsResult) {
+            const QString fx = describeEffectChange(push.effectsBefore, push.effectsPushed);
+            if (!fx.isEmpty())
+                changes << fx;
+        }
+        const QString change = changes.join(u"; ");
         m_lastMessage = change.isEmpty() ? tr("Pushed (no change).") : tr("Pushed: %1").arg(change);
         if (!change.isEmpty())
             Q_EMIT deviceChanged(change);
@@ -98,6 +147,14 @@ void DeviceParameterLink::finishCommand(Command command, const CommandResult &re
     switch (command) {
     case Command::Read:
         what = tr("Read");
+        break;
+    case Command::ReadEffects:
+        if (result.ok())
+            return; // the parameters' read says "done"
+        what = tr("Read effects");
+        break;
+    case Command::Vibrate:
+        what = result.vibration.amplitude > 0 ? tr("Vibrate") : tr("Stop vibration");
         break;
     case Command::Zero:
         what = tr("ZERO");

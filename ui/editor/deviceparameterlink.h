@@ -1,5 +1,6 @@
-// The round trip of the parameters between the editor and the device, in one place:
-// edit → push (SET_PARAMS) → ACK → read-back → in sync. It sends what the editor asks for,
+// The round trip of the parameters and the effect block between the editor and the device, in
+// one place: edit → push (SET_PARAMS, and SET_EFFECTS when the device renders effects) → ACK →
+// read-back → in sync. It sends what the editor asks for (and its vibration tests),
 // hands the device's answers and read-backs back to the editor (which shows the sync state),
 // keeps the editor's host parameters in the session, and words the outcome of every parameter
 // command (push, read, ZERO, save in the device) for the status bar and the event markers.
@@ -29,7 +30,7 @@ public:
     //! scales the feedback of a legacy device (which does not report its limit).
     void prepare(ConnectOptions &options);
 
-    void readFromDevice(); //!< GET_PARAMS
+    void readFromDevice(); //!< GET_PARAMS, and GET_EFFECTS when the device renders effects
     void zero();           //!< ZERO: θ0 := the current angle, then a read-back
     void saveInDevice();   //!< SAVE_PARAMS: the device restores them at power-up
 
@@ -44,22 +45,30 @@ Q_SIGNALS:
     void deviceChanged(const QString &what);
 
 private:
-    enum class Command { Read, Zero, Save };
+    enum class Command { Read, ReadEffects, Zero, Save, Vibrate };
 
     void onStateChanged(SessionState state);
     void onDeviceInfo(const DeviceInfo &info);
+    void refreshEffectsAvailability();
+    void onPushRequested(const DeviceParams &params, const std::optional<EffectParams> &effects);
     void onCommandFinished(quint64 id, const CommandResult &result);
-    void finishPush(const CommandResult &result);
+    void finishPush();
     void finishCommand(Command command, const CommandResult &result);
 
     DeviceClient *m_client;
     ParameterEditor *m_editor;
-    //! The push in flight (the editor sends one at a time) and what it changes.
+    //! The push in flight (the editor sends one at a time) and what it changes: SET_PARAMS,
+    //! and SET_EFFECTS when the effects go along. It finishes when both have answered.
     struct Push
     {
         quint64 id = 0;
         DeviceParams before; //!< the device's values when the push was sent
         DeviceParams pushed;
+        quint64 effectsId = 0; //!< 0: no SET_EFFECTS
+        EffectParams effectsBefore;
+        EffectParams effectsPushed;
+        std::optional<CommandResult> result;        //!< SET_PARAMS' answer, once there
+        std::optional<CommandResult> effectsResult; //!< SET_EFFECTS' answer, once there
     };
     std::optional<Push> m_push;
     QHash<quint64, Command> m_commands; //!< other commands in flight

@@ -4,26 +4,22 @@
 
 namespace hatpic {
 
-ParameterEditCommand::ParameterEditCommand(ParameterEditor *editor,
-                                           const DeviceParams &beforeDevice,
-                                           const HostParams &beforeHost,
-                                           const DeviceParams &afterDevice,
-                                           const HostParams &afterHost, const QString &text,
+ParameterEditCommand::ParameterEditCommand(ParameterEditor *editor, const Tuning &before,
+                                           const Tuning &after, const QString &text,
                                            const QString &field, quint64 gesture)
-    : m_editor(editor), m_beforeDevice(beforeDevice), m_beforeHost(beforeHost),
-      m_afterDevice(afterDevice), m_afterHost(afterHost), m_field(field), m_gesture(gesture)
+    : m_editor(editor), m_before(before), m_after(after), m_field(field), m_gesture(gesture)
 {
     setText(text);
 }
 
 void ParameterEditCommand::undo()
 {
-    m_editor->applyParams(m_beforeDevice, m_beforeHost);
+    m_editor->applyTuning(m_before);
 }
 
 void ParameterEditCommand::redo()
 {
-    m_editor->applyParams(m_afterDevice, m_afterHost);
+    m_editor->applyTuning(m_after);
 }
 
 int ParameterEditCommand::id() const
@@ -38,11 +34,10 @@ bool ParameterEditCommand::mergeWith(const QUndoCommand *other)
     const auto *next = static_cast<const ParameterEditCommand *>(other);
     if (next->m_field != m_field || next->m_gesture != m_gesture || next->m_editor != m_editor)
         return false;
-    m_afterDevice = next->m_afterDevice;
-    m_afterHost = next->m_afterHost;
+    m_after = next->m_after;
     setText(next->text());
     // Dragging back to where the gesture started leaves nothing to undo.
-    setObsolete(m_afterDevice == m_beforeDevice && m_afterHost == m_beforeHost);
+    setObsolete(m_after == m_before);
     return true;
 }
 

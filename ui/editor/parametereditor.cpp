@@ -1,24 +1,19 @@
 #include "editor/parametereditor.h"
 
 #include "editor/derivedfiguresview.h"
+#include "editor/effectssection.h"
 #include "editor/parametereditcommand.h"
 #include "editor/parameterfield.h"
-#include "editor/parameterspecs.h"
-#include "editor/scientificspinbox.h"
 #include "editor/syncbar.h"
+#include "firmware/controller.h"
 #include "model/derived.h"
 
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QGridLayout>
-#include <QGroupBox>
-#include <QLabel>
-#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QTimer>
 #include <QUndoStack>
-#include <QVBoxLayout>
 
 #include <algorithm>
 
@@ -26,7 +21,18 @@ namespace hatpic {
 
 using namespace Qt::StringLiterals;
 
-ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
+namespace {
+
+//! The device core's control rate, for a device that has not told its own [Hz].
+double defaultControlRate()
+{
+    return fw::Controller<double>::Config{}.rateHz;
+}
+
+} // namespace
+
+ParameterEditor::ParameterEditor(QWidget *parent)
+    : QWidget(parent), m_controlRate(defaultControlRate())
 {
     m_undo = new QUndoStack(this);
     m_liveTimer = new QTimer(this);
@@ -54,14 +60,7 @@ ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
     m_revertAction->setObjectName(u"action_revert"_s);
     m_revertAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Backspace));
     m_revertAction->setToolTip(tr("Revert to device values (undoable; Ctrl+Shift+Backspace)"));
-    connect(m_revertAction, &QAction::triggered, this, [this] {
-        if (!m_sync.device())
-            return;
-        DeviceParams d;
-        for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-            d.setField(i, shortestFloatDecimal(m_sync.device()->field(i)));
-        setParams(d, m_host, tr("Revert to device values"));
-    });
+    connect(m_revertAction, &QAction::triggered, this, &ParameterEditor::revert);
     m_undoAction = m_undo->createUndoAction(this, tr("Undo"));
     m_redoAction = m_undo->createRedoAction(this, tr("Redo"));
     addAction(m_pushAction);
@@ -76,202 +75,87 @@ ParameterEditor::ParameterEditor(QWidget *parent) : QWidget(parent)
 
 ParameterEditor::~ParameterEditor() = default;
 
-void ParameterEditor::addGoToActions()
+void ParameterEditor::revert()
 {
-    // Alt+1 … Alt+9 put the cursor in a field, in the order they are shown.
-    QStringList order;
+    if (!m_sync.device())
+        return;
+    Tuning t = tuning();
     for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        order << QString::fromLatin1(deviceFieldName(i));
-    order << u"v_max"_s << u"tau_limit"_s;
-    for (qsizetype i = 0; i < std::min<qsizetype>(order.size(), 9); ++i) {
-        ParameterField *f = m_fields.value(order[i]);
-        auto *go = new QAction(tr("Go to %1").arg(f->spec().symbol), this);
-        go->setObjectName(u"action_goto_"_s + order[i]);
-        go->setShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_1 + int(i))));
-        connect(go, &QAction::triggered, this, [f] {
-            f->spinBox()->setFocus(Qt::ShortcutFocusReason);
-            f->spinBox()->selectAll();
-        });
-        addAction(go);
-        m_goToActions << go;
+        t.device.setField(i, shortestFloatDecimal(m_sync.device()->field(i)));
+    // The device's float32 effects, unless they are the edited ones as sent: the defaults ±π
+    // travel as the float just inside π and need no revert.
+    if (const auto &fx = m_sync.deviceEffects(); fx && !sameOnWire(effectsOnWire(), *fx)) {
+        for (int i = 0; i < EffectParams::kFieldCount; ++i)
+            t.effects.setField(i, shortestFloatDecimal(fx->field(i)));
     }
+    setTuning(t, tr("Revert to device values"));
 }
 
-QList<QAction *> ParameterEditor::keyboardActions() const
+EffectParams ParameterEditor::effectsOnWire() const
 {
-    return QList<QAction *>{m_readAction, m_revertAction} + m_goToActions;
-}
-
-void ParameterEditor::buildUi()
-{
-    auto *content = new QWidget;
-    auto *column = new QVBoxLayout(content);
-    column->setContentsMargins(0, 0, 0, 0);
-    column->setSpacing(10);
-    column->addWidget(buildDeviceGroups());
-    column->addWidget(buildHostGroup());
-    column->addStretch(1);
-    // The derived figures and their warnings sit right under Push, outside the scrolling
-    // fields, so they are in sight at every window size.
-    auto *derivedBox = new QGroupBox(tr("Derived figures (K = K_max)"), this);
-    derivedBox->setObjectName(u"derivedFiguresBox"_s);
-    auto *derivedLayout = new QVBoxLayout(derivedBox);
-    derivedLayout->setContentsMargins(6, 2, 6, 4);
-    m_derived = new DerivedFiguresView(derivedBox);
-    derivedLayout->addWidget(m_derived);
-
-    // One column width for names and units across the groups, so the spin boxes line up.
-    ParameterField::alignColumns(m_fields.values(),
-                                 content->findChildren<QLabel *>(u"label_mode"_s));
-
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(content);
-
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(6, 6, 6, 6);
-    layout->setSpacing(8);
-    m_syncBar = new SyncBar(m_undo, m_readAction, m_revertAction, m_pushAction, this);
-    connect(m_syncBar, &SyncBar::livePushToggled, this, &ParameterEditor::setLivePush);
-    connect(m_syncBar, &SyncBar::angleInDegreesToggled, this, &ParameterEditor::setAngleInDegrees);
-    layout->addWidget(m_syncBar);
-    layout->addWidget(derivedBox);
-    layout->addWidget(scroll, 1);
-}
-
-QWidget *ParameterEditor::buildDeviceGroups()
-{
-    auto *box = new QWidget;
-    auto *column = new QVBoxLayout(box);
-    column->setContentsMargins(0, 0, 0, 0);
-    column->setSpacing(10);
-
-    const QList<ParameterField::Spec> specs = deviceFieldSpecs();
-    const struct
-    {
-        QString title;
-        int first;
-        int last;
-    } groups[] = {{tr("Admittance filter — device"), 0, 1},
-                  {tr("Re-centering stiffness — device"), 2, 6}};
-    for (const auto &g : groups) {
-        auto *group = new QGroupBox(g.title, box);
-        auto *grid = new QGridLayout(group);
-        grid->setHorizontalSpacing(8);
-        grid->setVerticalSpacing(2);
-        grid->setColumnStretch(4, 1);
-        for (int i = g.first; i <= g.last; ++i) {
-            auto *field = new ParameterField(specs[i], group, this);
-            field->addToGrid(grid, 2 * (i - g.first));
-            m_fields.insert(specs[i].key, field);
-            const QString key = specs[i].key;
-            connect(field, &ParameterField::edited, this,
-                    [this, key](double v) { onFieldEdited(key, v); });
-            connect(field, &ParameterField::editFinished, this, [this] { ++m_gesture; });
-        }
-        column->addWidget(group);
-    }
-    return box;
-}
-
-QWidget *ParameterEditor::buildHostGroup()
-{
-    auto *group = new QGroupBox(tr("Reference model — host only, not sent to the device"));
-    auto *grid = new QGridLayout(group);
-    grid->setHorizontalSpacing(8);
-    grid->setVerticalSpacing(2);
-    grid->setColumnStretch(4, 1);
-
-    auto *modeLabel = new QLabel(tr("<b>mode</b>&nbsp;&nbsp;<span style=\"color:gray\">unit "
-                                    "family of v_ref, p_ref</span>"),
-                                 group);
-    modeLabel->setObjectName(u"label_mode"_s);
-    m_mode = new QComboBox(group);
-    m_mode->setObjectName(u"combo_mode"_s);
-    m_mode->addItem(tr("translation (m, m/s)"), int(ReferenceMode::Translation));
-    m_mode->addItem(tr("rotation (rad, rad/s)"), int(ReferenceMode::Rotation));
-    m_mode->setToolTip(tr("Translation: v_ref in m/s and p_ref in m; rotation: ω_ref in rad/s "
-                          "and yaw_ref in rad"));
-    modeLabel->setBuddy(m_mode);
-    grid->addWidget(modeLabel, 0, 1);
-    grid->addWidget(m_mode, 0, 2, 1, 3, Qt::AlignLeft);
-    connect(m_mode, &QComboBox::currentIndexChanged, this, [this](int index) {
-        HostParams h = m_host;
-        h.mode = static_cast<ReferenceMode>(m_mode->itemData(index).toInt());
-        recordEdit(m_params, h, tr("Change mode"), u"mode"_s);
-        ++m_gesture;
-    });
-
-    const ParameterField::Spec specs[] = {vMaxSpec(), tauLimitSpec()};
-    int row = 1;
-    for (const auto &spec : specs) {
-        auto *field = new ParameterField(spec, group, this);
-        field->addToGrid(grid, row);
-        row += 2;
-        m_fields.insert(spec.key, field);
-        const QString key = spec.key;
-        connect(field, &ParameterField::edited, this,
-                [this, key](double v) { onFieldEdited(key, v); });
-        connect(field, &ParameterField::editFinished, this, [this] { ++m_gesture; });
-    }
-
-    m_refDeadzone =
-        new QCheckBox(tr("Hold v_ref at 0 inside the dead zone (|θ−θ0| < Q_dz)"), group);
-    m_refDeadzone->setObjectName(u"check_ref_deadzone"_s);
-    m_refDeadzone->setToolTip(tr("ref_deadzone: the robot does not drift while the stick rests"));
-    grid->addWidget(m_refDeadzone, row, 1, 1, 4);
-    connect(m_refDeadzone, &QCheckBox::toggled, this, [this](bool on) {
-        HostParams h = m_host;
-        h.ref_deadzone = on;
-        recordEdit(m_params, h, tr("Change dead-zone hold"), u"ref_deadzone"_s);
-        ++m_gesture;
-    });
-    return group;
+    return roundedForWire(m_effects, m_host.tau_limit);
 }
 
 void ParameterEditor::onFieldEdited(const QString &key, double value)
 {
-    DeviceParams d = m_params;
-    HostParams h = m_host;
-    const int index = deviceFieldIndex(key.toStdString());
-    if (index >= 0)
-        d.setField(index, value);
+    Tuning t = tuning();
+    const std::string name = key.toStdString();
+    if (const int index = deviceFieldIndex(name); index >= 0)
+        t.device.setField(index, value);
+    else if (const int fx = effectFieldIndex(name); fx >= 0)
+        t.effects.setField(fx, value);
     else if (key == u"v_max")
-        h.v_max = value;
+        t.host.v_max = value;
     else if (key == u"tau_limit")
-        h.tau_limit = value;
-    recordEdit(d, h, tr("Change %1 to %2").arg(key, QString::number(value, 'g', 6)), key);
+        t.host.tau_limit = value;
+    recordEdit(t, tr("Change %1 to %2").arg(key, QString::number(value, 'g', 6)), key);
 }
 
-void ParameterEditor::recordEdit(const DeviceParams &device, const HostParams &host,
-                                 const QString &text, const QString &field)
+void ParameterEditor::recordEdit(const Tuning &tuning, const QString &text, const QString &field)
 {
-    if (device == m_params && host == m_host)
+    if (tuning == this->tuning())
         return;
-    m_undo->push(
-        new ParameterEditCommand(this, m_params, m_host, device, host, text, field, m_gesture));
+    m_undo->push(new ParameterEditCommand(this, this->tuning(), tuning, text, field, m_gesture));
+}
+
+void ParameterEditor::setTuning(const Tuning &tuning, const QString &undoText)
+{
+    ++m_gesture;
+    recordEdit(tuning, undoText, QString());
+    ++m_gesture;
 }
 
 void ParameterEditor::setParams(const DeviceParams &device, const HostParams &host,
                                 const QString &undoText)
 {
-    ++m_gesture;
-    recordEdit(device, host, undoText, QString());
-    ++m_gesture;
+    setTuning({device, host, m_effects}, undoText);
 }
 
 void ParameterEditor::applyParams(const DeviceParams &device, const HostParams &host)
 {
+    applyTuning({device, host, m_effects});
+}
+
+void ParameterEditor::applyTuning(const Tuning &tuning)
+{
+    const DeviceParams &device = tuning.device;
+    const HostParams &host = tuning.host;
     const bool deviceChanged = device != m_params;
     const bool hostChanged = host != m_host;
+    const bool effectsChanged = tuning.effects != m_effects;
     m_params = device;
     m_host = host;
+    m_effects = tuning.effects;
 
     for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
         ParameterField *f = m_fields.value(QString::fromLatin1(deviceFieldName(i)));
         if (f->value() != device.field(i))
             f->setValue(device.field(i));
+    }
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        ParameterField *f = m_fields.value(QString::fromLatin1(effectFieldName(i)));
+        if (f->value() != m_effects.field(i))
+            f->setValue(m_effects.field(i));
     }
     if (m_fields.value(u"v_max"_s)->value() != host.v_max)
         m_fields.value(u"v_max"_s)->setValue(host.v_max);
@@ -286,7 +170,7 @@ void ParameterEditor::applyParams(const DeviceParams &device, const HostParams &
         m_refDeadzone->setChecked(host.ref_deadzone);
     }
 
-    if (deviceChanged || hostChanged)
+    if (deviceChanged || hostChanged || effectsChanged)
         m_sync.edited();
     revalidate();
     refreshDiff();
@@ -295,9 +179,9 @@ void ParameterEditor::applyParams(const DeviceParams &device, const HostParams &
     refreshActions();
     if (hostChanged)
         Q_EMIT hostParamsChanged(m_host);
-    if (deviceChanged || hostChanged)
+    if (deviceChanged || hostChanged || effectsChanged)
         Q_EMIT paramsEdited();
-    if (deviceChanged && m_livePush) {
+    if ((deviceChanged || effectsChanged) && m_livePush) {
         m_livePending = true;
         scheduleLivePush();
     }
@@ -316,6 +200,25 @@ void ParameterEditor::clearDeviceParams()
     m_sync.setDevice(std::nullopt);
     revalidate();
     refreshDiff();
+    refreshSync();
+    refreshActions();
+}
+
+void ParameterEditor::setDeviceEffects(const std::optional<EffectParams> &effects)
+{
+    m_sync.setDeviceEffects(effects);
+    refreshDiff();
+    refreshSync();
+    refreshActions();
+}
+
+void ParameterEditor::setEffectsAvailable(bool available, const QString &reason, double controlRate)
+{
+    m_sync.setEffectsTracked(available);
+    m_controlRate = controlRate > 0 ? controlRate : defaultControlRate();
+    m_effectsSection->setAvailable(available, reason);
+    refreshDiff();
+    refreshDerived();
     refreshSync();
     refreshActions();
 }
@@ -353,12 +256,18 @@ void ParameterEditor::pushFinished(const CommandResult &result)
 
 void ParameterEditor::startPush()
 {
-    m_sync.pushStarted(m_params);
+    // The effects go along while the device renders them and its read-back is not them yet.
+    std::optional<EffectParams> effects;
+    const EffectParams onWire = effectsOnWire();
+    if (m_sync.effectsTracked() &&
+        (!m_sync.deviceEffects() || !sameOnWire(onWire, *m_sync.deviceEffects())))
+        effects = m_effects;
+    m_sync.pushStarted(m_params, effects ? std::optional(onWire) : std::nullopt);
     m_sinceLastPush.start();
     revalidate();
     refreshSync();
     refreshActions();
-    Q_EMIT pushRequested(m_params);
+    Q_EMIT pushRequested(m_params, effects);
 }
 
 void ParameterEditor::scheduleLivePush()
@@ -408,12 +317,14 @@ void ParameterEditor::revalidate()
     std::vector<Violation> violations = validate(m_params);
     for (Violation &v : validate(m_host))
         violations.push_back(std::move(v));
+    for (Violation &v : validate(m_effects, m_host.tau_limit))
+        violations.push_back(std::move(v));
     for (const Violation &v : violations) {
         const QString text = QString::fromStdString(v.message());
         perField[QString::fromStdString(v.field)] << text;
         all << text;
     }
-    const QString rejected = QString::fromLatin1(deviceFieldName(m_sync.rejectedField()));
+    const QString rejected = m_sync.rejectedField();
     if (!rejected.isEmpty() && !perField.contains(rejected))
         perField[rejected] << tr("%1: the device refused this value").arg(rejected);
     for (auto it = m_fields.cbegin(); it != m_fields.cend(); ++it)
@@ -434,17 +345,32 @@ void ParameterEditor::refreshDiff()
         const auto &device = m_sync.device();
         f->setDeviceValue(device ? std::optional<double>(device->field(i)) : std::nullopt);
     }
+    // An effect field differs when what it sends differs from the read-back; the marker then
+    // shows the device's value.
+    const auto &fx = m_sync.deviceEffects();
+    const EffectParams onWire = effectsOnWire();
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        ParameterField *f = m_fields.value(QString::fromLatin1(effectFieldName(i)));
+        if (!fx)
+            f->setDeviceValue(std::nullopt);
+        else if (float(fx->field(i)) == float(onWire.field(i)))
+            f->setDeviceValue(m_effects.field(i));
+        else
+            f->setDeviceValue(fx->field(i));
+    }
 }
 
 void ParameterEditor::refreshDerived()
 {
     m_derived->setFigures(deriveFigures(m_params, m_host), m_valid);
+    m_effectsSection->setFigures(m_effects, m_params, m_host.tau_limit, m_controlRate, m_valid);
 }
 
 void ParameterEditor::refreshSync()
 {
-    const SyncState state = m_sync.state(m_params);
-    const QString text = m_sync.text(m_params);
+    const EffectParams onWire = effectsOnWire();
+    const SyncState state = m_sync.state(m_params, onWire);
+    const QString text = m_sync.text(m_params, onWire);
     m_syncBar->setState(state, text);
 
     if (state != m_syncState || text != m_syncText) {
@@ -463,7 +389,10 @@ void ParameterEditor::refreshActions()
                 : tr("Fix the invalid fields first:\n%1").arg(m_problems.join(u'\n')));
     m_readAction->setEnabled(m_sync.canPush() && !pushing);
     const auto &device = m_sync.device();
-    m_revertAction->setEnabled(device && !pushing && !sameOnWire(m_params, *device));
+    const auto &fx = m_sync.deviceEffects();
+    const bool differs =
+        device && (!sameOnWire(m_params, *device) || (fx && !sameOnWire(effectsOnWire(), *fx)));
+    m_revertAction->setEnabled(!pushing && differs);
 }
 
 } // namespace hatpic

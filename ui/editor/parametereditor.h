@@ -1,13 +1,14 @@
-// The parameter editor: every device and host parameter with its meaning, unit and valid range,
-// whole-set validation at the fields, undo/redo, diff markers against the device, push/read
-// with a visible sync state, optional rate-limited live push, and the derived figures.
+// The parameter editor: every device and host parameter and the device's effect block with
+// its meaning, unit and valid range, whole-set validation at the fields, undo/redo, diff
+// markers against the device, push/read with a visible sync state, optional rate-limited live
+// push, the derived figures, and the effects' warnings and vibration test.
 // "Push" means sending to the device, only; edits go onto the undo stack (recordEdit).
 // It does not talk to the device itself: DeviceParameterLink carries its pushes and reads to
 // the DeviceClient and brings back the answers and read-backs.
 #pragma once
 
 #include "editor/synctracker.h"
-#include "model/params.h"
+#include "editor/tuning.h"
 #include "session/sessiontypes.h"
 
 #include <QElapsedTimer>
@@ -26,6 +27,7 @@ class QUndoStack;
 namespace hatpic {
 
 class DerivedFiguresView;
+class EffectsSection;
 class ParameterField;
 class SyncBar;
 
@@ -42,10 +44,15 @@ public:
 
     DeviceParams params() const { return m_params; }
     HostParams hostParams() const { return m_host; }
+    EffectParams effects() const { return m_effects; }
+    Tuning tuning() const { return {m_params, m_host, m_effects}; }
 
-    //! Replaces the whole set as one undo step named `undoText`.
+    //! Replaces the whole tuning as one undo step named `undoText`.
+    void setTuning(const Tuning &tuning, const QString &undoText);
+    //! Shows a tuning without touching the undo stack (used by undo commands and A/B).
+    void applyTuning(const Tuning &tuning);
+    //! setTuning / applyTuning with the effects as they are.
     void setParams(const DeviceParams &device, const HostParams &host, const QString &undoText);
-    //! Shows a set without touching the undo stack (used by undo commands and A/B switching).
     void applyParams(const DeviceParams &device, const HostParams &host);
 
     //! The device's read-back: drives the diff markers and the sync state.
@@ -53,6 +60,13 @@ public:
     //! Disconnected: no diff markers, no sync state.
     void clearDeviceParams();
     std::optional<DeviceParams> deviceParams() const { return m_sync.device(); }
+    //! The device's effect block as read back; nullopt: unknown (or no effects).
+    void setDeviceEffects(const std::optional<EffectParams> &effects);
+    std::optional<EffectParams> deviceEffects() const { return m_sync.deviceEffects(); }
+    //! Whether the connected device renders effects (the effects are then pushed and kept in
+    //! sync with the parameters); `reason` says why not. `controlRate` [Hz] is the device's
+    //! control rate, for the passivity figures and the vibration test's Nyquist rule.
+    void setEffectsAvailable(bool available, const QString &reason, double controlRate);
 
     //! False while disconnected or for a legacy device; `reason` replaces "not connected".
     void setCanPush(bool deviceAcceptsParams, const QString &reason = {});
@@ -61,7 +75,8 @@ public:
     void setTauLimit(double tauLimit);
 
     bool isValid() const { return m_valid; }
-    //! Every violated rule of the edited set ("K_min: must be ≤ K_max (0.4), got 0.9").
+    //! Every violated rule of the edited set ("K_min: must be ≤ K_max (0.4), got 0.9"),
+    //! parameters first, then effects.
     QStringList problems() const { return m_problems; }
 
     QUndoStack *undoStack() const { return m_undo; }
@@ -89,16 +104,22 @@ public:
     void setAngleInDegrees(bool degrees);
     bool angleInDegrees() const { return m_degrees; }
 
-    //! The row of a numeric field by model name ("K_max", "v_max", …), or nullptr.
+    //! The row of a numeric field by model name ("K_max", "v_max", "wall_max", …), or nullptr.
     ParameterField *field(const QString &key) const { return m_fields.value(key); }
     DerivedFiguresView *derivedFiguresView() const { return m_derived; }
+    EffectsSection *effectsSection() const { return m_effectsSection; }
     //! Read, Revert and "Go to <field>" (Alt+1 … Alt+9), for the shortcut table.
     QList<QAction *> keyboardActions() const;
 
 Q_SIGNALS:
     void paramsEdited(); //!< the edited set changed (edit, undo/redo, setParams)
     void hostParamsChanged(const hatpic::HostParams &host);
-    void pushRequested(const hatpic::DeviceParams &params); //!< Push or a live-push tick
+    //! Push or a live-push tick: the parameters, and the effects when the device renders
+    //! effects and its read-back differs from them (nullopt: not sent).
+    void pushRequested(const hatpic::DeviceParams &params,
+                       const std::optional<hatpic::EffectParams> &effects);
+    //! The vibration test's Vibrate or Stop (already valid).
+    void vibrateRequested(const hatpic::Vibration &vibration);
     void readRequested();
     void validityChanged(bool valid);
     void syncStateChanged(hatpic::SyncState state, const QString &text);
@@ -109,10 +130,14 @@ private:
     void addGoToActions();
     QWidget *buildDeviceGroups();
     QWidget *buildHostGroup();
+    QWidget *buildEffectsGroup();
+    void connectField(ParameterField *field);
     void onFieldEdited(const QString &key, double value);
     //! Puts the change on the undo stack (merged within one gesture) and applies it.
-    void recordEdit(const DeviceParams &device, const HostParams &host, const QString &text,
-                    const QString &field);
+    void recordEdit(const Tuning &tuning, const QString &text, const QString &field);
+    //! The effects as SET_EFFECTS carries them (what the device's read-back must equal).
+    EffectParams effectsOnWire() const;
+    void revert();
     void startPush();
     void scheduleLivePush();
     void revalidate();
@@ -123,7 +148,9 @@ private:
 
     DeviceParams m_params;
     HostParams m_host;
+    EffectParams m_effects;
     SyncTracker m_sync;
+    double m_controlRate; //!< [Hz]
     bool m_valid = true;
     QStringList m_problems;
     SyncState m_syncState = SyncState::NotConnected;
@@ -145,6 +172,7 @@ private:
     QCheckBox *m_refDeadzone = nullptr;
     SyncBar *m_syncBar = nullptr;
     DerivedFiguresView *m_derived = nullptr;
+    EffectsSection *m_effectsSection = nullptr;
     QAction *m_pushAction = nullptr;
     QAction *m_readAction = nullptr;
     QAction *m_revertAction = nullptr;

@@ -60,7 +60,30 @@ ParameterField::Spec hostSpec(const HostFieldSpec &f, const char *explanation)
     QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "center angle"),
     QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "max. reference velocity"),
     QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "actuator torque limit"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "detent strength"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "detent spacing"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "detent range"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "lower end stop"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "upper end stop"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "wall stiffness"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "wall damping"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "amplitude"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "frequency"),
+    QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "duration"),
 };
+
+//! An upper bound given when validating (tau_limit) is not a number of the table: the spin
+//! box goes up to the largest tau_limit there can be.
+double spinMaximum(const FieldBound &upper)
+{
+    return upper.external ? kHostFields[1].upper.value : upper.value;
+}
+
+template<typename Params>
+ParameterField::Spec tableSpec(const FieldSpec<Params> &f, const char *explanation)
+{
+    return fromTable(f, f.lower.value, spinMaximum(f.upper), explanation);
+}
 
 } // namespace
 
@@ -164,6 +187,80 @@ ParameterField::Spec tauLimitSpec()
     s.sliderMax = 2.0;
     s.step = 0.01;
     return s;
+}
+
+QList<ParameterField::Spec> effectFieldSpecs()
+{
+    const char *const explanations[] = {
+        QT_TRANSLATE_NOOP(
+            "hatpic::ParameterSpecs",
+            "Torque of the <b>detents</b>: τ_det = −A·sin(2π·(θ−θ0)/s) pulls the knob "
+            "into rest positions θ0 + i·s. 0 turns detents off."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Distance between two detent rest positions (one click)."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Detents act while |θ−θ0| ≤ R_det (at R_det exactly still). 0 turns "
+                          "detents off."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Lower <b>end stop</b>, relative to θ0: below it a spring K_w pushes "
+                          "the knob back. −π: no wall."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Upper <b>end stop</b>, relative to θ0: beyond it a spring K_w pushes "
+                          "the knob back. π: no wall."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Stiffness of the end stops. Too stiff a wall chatters: see the "
+                          "warnings below the fields."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Damping of the end stops, only while the knob moves further in, so "
+                          "a wall never pulls the knob back."),
+    };
+    // Practical slider ranges: a clearly felt detent is 0.02–0.1 N·m on the STS3032, and a
+    // wall stiffer than about 2.5 N·m/rad bounces there (docs/effects.md).
+    const struct
+    {
+        double sliderMin, sliderMax, step;
+    } ranges[] = {{0.0, 0.44, 0.005},
+                  {0.01, 1.0, 0.01},
+                  {0.0, paramtable::kPi, 0.01},
+                  {-paramtable::kPi, 0.0, 0.01},
+                  {0.0, paramtable::kPi, 0.01},
+                  {0.0, 10.0, 0.05},
+                  {0.0, 0.1, 0.001}};
+    QList<ParameterField::Spec> specs;
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        ParameterField::Spec s = tableSpec(kEffectFields[std::size_t(i)], explanations[i]);
+        s.sliderMin = ranges[i].sliderMin;
+        s.sliderMax = ranges[i].sliderMax;
+        s.step = ranges[i].step;
+        specs << s;
+    }
+    return specs;
+}
+
+QList<ParameterField::Spec> vibrationFieldSpecs()
+{
+    const char *const explanations[] = {
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Peak torque of the cue: τ_vib = a·sin(2π·f·t). 0.02–0.1 N·m are "
+                          "clearly felt."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs",
+                          "Frequency of the cue; below half the device's control rate."),
+        QT_TRANSLATE_NOOP("hatpic::ParameterSpecs", "How long the cue lasts."),
+    };
+    const struct
+    {
+        double sliderMin, sliderMax, step;
+    } ranges[] = {{0.0, 0.44, 0.005}, {1.0, 500.0, 1.0}, {0.0, 2.0, 0.05}};
+    QList<ParameterField::Spec> specs;
+    for (std::size_t i = 0; i < kVibrationFields.size(); ++i) {
+        ParameterField::Spec s = tableSpec(kVibrationFields[i], explanations[i]);
+        s.key = u"vibrate_"_s + s.key; // object names apart from the effect fields
+        s.sliderMin = ranges[i].sliderMin;
+        s.sliderMax = ranges[i].sliderMax;
+        s.step = ranges[i].step;
+        specs << s;
+    }
+    return specs;
 }
 
 } // namespace hatpic

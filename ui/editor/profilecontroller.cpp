@@ -109,6 +109,7 @@ Profile ProfileController::currentProfile(int slot) const
         p.notes = m_notes;
         p.device = m_editor->params();
         p.host = m_editor->hostParams();
+        p.effects = m_editor->effects();
         p.bridge = m_bridge;
     }
     return p;
@@ -119,8 +120,9 @@ bool ProfileController::isModified(int slot) const
     if (slot < 0 || slot >= kSlotCount || !m_slots[slot].used)
         return false;
     const Profile p = currentProfile(slot);
-    return p.device != m_slots[slot].saved.device || p.host != m_slots[slot].saved.host ||
-           p.bridge != m_slots[slot].saved.bridge || p.notes != m_slots[slot].saved.notes;
+    const Profile &saved = m_slots[slot].saved;
+    return p.device != saved.device || p.host != saved.host || p.effects != saved.effects ||
+           p.bridge != saved.bridge || p.notes != saved.notes;
 }
 
 bool ProfileController::isModified() const
@@ -161,7 +163,7 @@ void ProfileController::load(const Profile &profile, const QString &path, const 
     Slot &slot = m_slots[m_active];
     slot.saved = profile;
     slot.path = path;
-    m_editor->setParams(profile.device, profile.host, undoText);
+    m_editor->setTuning({profile.device, profile.host, profile.effects}, undoText);
     m_bridge = profile.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
     m_notes = profile.notes;
@@ -231,15 +233,14 @@ bool ProfileController::openFile(const QString &path, QString *error)
 bool ProfileController::saveSlot(int slot, const QString &path, QString *error)
 {
     Profile profile = currentProfile(slot);
-    const bool valid = slot == m_active
-                           ? m_editor->isValid()
-                           : validate(profile.device).empty() && validate(profile.host).empty();
-    if (!valid) {
-        QStringList problems;
-        for (const auto &v : validate(profile.device))
-            problems << QString::fromStdString(v.message());
-        for (const auto &v : validate(profile.host))
-            problems << QString::fromStdString(v.message());
+    QStringList problems;
+    for (const auto &v : validate(profile.device))
+        problems << QString::fromStdString(v.message());
+    for (const auto &v : validate(profile.host))
+        problems << QString::fromStdString(v.message());
+    for (const auto &v : validate(profile.effects, profile.host.tau_limit))
+        problems << QString::fromStdString(v.message());
+    if (!problems.isEmpty()) {
         const QString text = tr("The parameters are not valid, so they were not saved:\n%1")
                                  .arg(problems.join(u'\n'));
         if (error)
@@ -374,7 +375,7 @@ void ProfileController::activateSlot(int slot, bool pushOnSwitch)
     from.working = currentProfile(m_active);
     m_active = slot;
     const Slot &to = m_slots[slot];
-    m_editor->applyParams(to.working.device, to.working.host);
+    m_editor->applyTuning({to.working.device, to.working.host, to.working.effects});
     m_bridge = to.working.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
     m_notes = to.working.notes;

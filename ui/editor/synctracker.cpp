@@ -31,9 +31,11 @@ void SyncTracker::setDevice(const std::optional<DeviceParams> &device)
     if (!device) {
         m_pushing = false;
         m_awaitingReadback = false;
+        m_awaitingEffectsReadback = false;
         m_pushedOk = false;
         m_failure.reset();
-        m_rejectedField = -1;
+        m_rejectedField.clear();
+        m_deviceEffects.reset();
     } else if (m_pushing) {
         // The read-back of this push may arrive before the push's own result.
         m_readbackDuringPush = true;
@@ -42,21 +44,43 @@ void SyncTracker::setDevice(const std::optional<DeviceParams> &device)
     }
 }
 
+void SyncTracker::setEffectsTracked(bool tracked)
+{
+    m_effectsTracked = tracked;
+    if (!tracked) {
+        m_deviceEffects.reset();
+        m_awaitingEffectsReadback = false;
+    }
+}
+
+void SyncTracker::setDeviceEffects(const std::optional<EffectParams> &effects)
+{
+    m_deviceEffects = effects;
+    if (m_pushing)
+        m_effectsReadbackDuringPush = true; // it may arrive before the push's own result
+    else
+        m_awaitingEffectsReadback = false;
+}
+
 void SyncTracker::edited()
 {
     m_failure.reset();
-    m_rejectedField = -1;
+    m_rejectedField.clear();
 }
 
-void SyncTracker::pushStarted(const DeviceParams &pushed)
+void SyncTracker::pushStarted(const DeviceParams &pushed,
+                              const std::optional<EffectParams> &effects)
 {
     m_pushing = true;
     m_awaitingReadback = true;
+    m_awaitingEffectsReadback = effects.has_value();
     m_readbackDuringPush = false;
+    m_effectsReadbackDuringPush = false;
     m_pushedOk = false;
     m_failure.reset();
-    m_rejectedField = -1;
+    m_rejectedField.clear();
     m_lastPushed = pushed;
+    m_lastPushedEffects = effects;
 }
 
 bool SyncTracker::pushFinished(const CommandResult &result)
@@ -67,18 +91,24 @@ bool SyncTracker::pushFinished(const CommandResult &result)
     if (result.ok()) {
         m_pushedOk = true;
         m_awaitingReadback = !m_readbackDuringPush;
+        m_awaitingEffectsReadback = m_awaitingEffectsReadback && !m_effectsReadbackDuringPush;
         return true;
     }
     m_awaitingReadback = false;
+    m_awaitingEffectsReadback = false;
+    const bool effects = isEffectCommand(result.command);
     switch (result.status) {
     case CommandResult::Status::Rejected: {
         m_failure = SyncState::Rejected;
         QString reason = v2::ackStatusName(result.ackStatus);
-        const QString name = QString::fromLatin1(deviceFieldName(result.field));
+        const std::string_view field =
+            effects ? effectFieldName(result.field) : deviceFieldName(result.field);
+        const QString name = QString::fromLatin1(field.data(), qsizetype(field.size()));
         if (!name.isEmpty() && !reason.contains(name))
             reason += u" ("_s + name + u')';
-        m_failureText = tr("device rejected: %1").arg(reason);
-        m_rejectedField = result.field;
+        m_failureText = effects ? tr("device rejected the effects: %1").arg(reason)
+                                : tr("device rejected: %1").arg(reason);
+        m_rejectedField = name;
         break;
     }
     case CommandResult::Status::Timeout:
@@ -91,7 +121,8 @@ bool SyncTracker::pushFinished(const CommandResult &result)
         break;
     case CommandResult::Status::Unsupported:
         m_failure = SyncState::Failed;
-        m_failureText = tr("push failed: the device's protocol cannot carry parameters");
+        m_failureText = effects ? tr("push failed: this device cannot render effects")
+                                : tr("push failed: the device's protocol cannot carry parameters");
         break;
     default:
         m_failure = SyncState::Failed;
@@ -103,7 +134,14 @@ bool SyncTracker::pushFinished(const CommandResult &result)
     return true;
 }
 
-SyncState SyncTracker::state(const DeviceParams &edited) const
+bool SyncTracker::inSync(const DeviceParams &edited, const EffectParams &editedEffects) const
+{
+    if (!sameOnWire(edited, *m_device))
+        return false;
+    return !m_effectsTracked || (m_deviceEffects && sameOnWire(editedEffects, *m_deviceEffects));
+}
+
+SyncState SyncTracker::state(const DeviceParams &edited, const EffectParams &editedEffects) const
 {
     if (!m_canPush)
         return SyncState::NotConnected;
@@ -111,20 +149,22 @@ SyncState SyncTracker::state(const DeviceParams &edited) const
         return SyncState::Pushing;
     if (m_failure)
         return *m_failure;
-    if (!m_device)
+    if (!m_device || (m_effectsTracked && !m_deviceEffects))
         return SyncState::NotRead;
-    if (m_awaitingReadback)
+    if (m_awaitingReadback || m_awaitingEffectsReadback)
         return SyncState::AwaitingReadback;
-    if (sameOnWire(edited, *m_device))
+    if (inSync(edited, editedEffects))
         return SyncState::InSync;
-    if (m_pushedOk && edited == m_lastPushed)
+    const bool effectsAsPushed =
+        !m_effectsTracked || (m_lastPushedEffects && *m_lastPushedEffects == editedEffects);
+    if (m_pushedOk && edited == m_lastPushed && effectsAsPushed)
         return SyncState::ReadbackDiffers;
     return SyncState::Edited;
 }
 
-QString SyncTracker::text(const DeviceParams &edited) const
+QString SyncTracker::text(const DeviceParams &edited, const EffectParams &editedEffects) const
 {
-    switch (state(edited)) {
+    switch (state(edited, editedEffects)) {
     case SyncState::NotConnected:
         return m_cannotPushReason.isEmpty() ? tr("not connected") : m_cannotPushReason;
     case SyncState::NotRead:

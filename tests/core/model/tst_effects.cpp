@@ -211,8 +211,24 @@ private Q_SLOTS:
         QVERIFY(std::abs(f.detentPeakStiffness - 0.05 * 2 * kPi / 0.2) < 1e-12);
         QVERIFY(std::abs(f.wallPassivityMargin - (0.0049 - 5 * 1e-3 / 2)) < 1e-15);
         QVERIFY(f.detentsStifferThanNotch); // 1.57 N·m/rad > K_max 0.4
+        // b − 1.5708·0.001/2 = 0.0049 − 0.000785398
+        QVERIFY(std::abs(f.detentPassivityMargin - (0.0049 - 0.05 * kPi / 0.2 * 1e-3)) < 1e-15);
+        // 0.0049 < 20·π·0.001/2: detents of 2 N·m every 0.2 rad (62.8 N·m/rad) are not passive.
+        QVERIFY(deriveEffectFigures(detents(2, 0.2, 0.8), d, 0.0049, 1e-3).detentPassivityMargin <
+                0);
         p.detent_range = 0;
         QVERIFY(!deriveEffectFigures(p, d, 0.0049, 1e-3).detentsStifferThanNotch);
+    }
+
+    void servoLimit()
+    {
+        DeviceParams d;
+        d.D_adm = 1e-4;
+        // 1e-4·(2π·25)² = 1e-4·24674.011 = 2.4674011 N·m/rad (docs/effects.md's "near 2.5").
+        QVERIFY(std::abs(servoStiffnessLimit(d, 25) - 2.4674011002723395) < 1e-12);
+        d.D_adm = 4e-4;
+        QVERIFY(std::abs(servoStiffnessLimit(d, 25) - 4 * 2.4674011002723395) < 1e-12);
+        QCOMPARE(servoStiffnessLimit(d, 0), 0.0);
     }
 
     void tableNames()

@@ -1,0 +1,269 @@
+#include "editor/effectssection.h"
+
+#include "editor/parameterfield.h"
+#include "editor/parameterspecs.h"
+#include "model/paramtable.h"
+#include "plots/palette.h"
+#include "sim/servoplant.h"
+
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <numbers>
+
+namespace hatpic {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+QString num(double v)
+{
+    return QString::number(v, 'g', 3);
+}
+
+QString colored(const QColor &color, const QString &text)
+{
+    return u"<span style=\"color:%1\">%2</span>"_s.arg(color.name(), text.toHtmlEscaped());
+}
+
+QString vibrationKey(const ParameterField *field)
+{
+    return QString::fromUtf16(EffectsSection::kVibrationKey) + u'/' + field->spec().key;
+}
+
+} // namespace
+
+EffectsSection::EffectsSection(QWidget *parent) : QWidget(parent)
+{
+    auto *column = new QVBoxLayout(this);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(4);
+
+    m_unavailable = new QLabel(this);
+    m_unavailable->setObjectName(u"label_effects_unavailable"_s);
+    m_unavailable->setWordWrap(true);
+    column->addWidget(m_unavailable);
+
+    auto *grid = new QGridLayout;
+    grid->setHorizontalSpacing(8);
+    grid->setVerticalSpacing(2);
+    grid->setColumnStretch(4, 1);
+    const QList<ParameterField::Spec> specs = effectFieldSpecs();
+    for (int i = 0; i < specs.size(); ++i) {
+        auto *field = new ParameterField(specs[i], this, this);
+        field->addToGrid(grid, 2 * i);
+        m_fields << field;
+        const QString key = specs[i].key;
+        connect(field, &ParameterField::edited, this,
+                [this, key](double v) { Q_EMIT edited(key, v); });
+        connect(field, &ParameterField::editFinished, this, &EffectsSection::editFinished);
+    }
+    column->addLayout(grid);
+
+    m_figures = new QLabel(this);
+    m_figures->setObjectName(u"label_effect_figures"_s);
+    m_figures->setWordWrap(true);
+    m_figures->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_figures->setToolTip(
+        tr("A·2π/s is the detents' stiffness at a rest position. b − K·h/2 is the passivity "
+           "margin of a spring K rendered every h seconds on a knob with damping b (Colgate "
+           "and Schenkel): below 0 it may chatter. b is the STS3032's identified viscous "
+           "friction, h the device's control period."));
+    column->addWidget(m_figures);
+    m_warnings = new QLabel(this);
+    m_warnings->setObjectName(u"label_effect_warnings"_s);
+    m_warnings->setWordWrap(true);
+    m_warnings->hide();
+    column->addWidget(m_warnings);
+
+    column->addWidget(buildVibrationGroup());
+    setAvailable(false, QString());
+}
+
+QWidget *EffectsSection::buildVibrationGroup()
+{
+    auto *group = new QGroupBox(tr("Vibration test — sent now, not part of the profile"), this);
+    group->setObjectName(u"group_vibration"_s);
+    auto *grid = new QGridLayout(group);
+    grid->setHorizontalSpacing(8);
+    grid->setVerticalSpacing(2);
+    grid->setColumnStretch(4, 1);
+    const QList<ParameterField::Spec> specs = vibrationFieldSpecs();
+    for (int i = 0; i < specs.size(); ++i) {
+        auto *field = new ParameterField(specs[i], group, this);
+        field->addToGrid(grid, 2 * i);
+        m_vibrationFields << field;
+        connect(field, &ParameterField::edited, this, [this] {
+            revalidateVibration();
+            rememberVibration();
+        });
+    }
+    const QSettings settings;
+    const double defaults[] = {kDefaultVibration.amplitude, kDefaultVibration.frequency,
+                               kDefaultVibration.duration};
+    for (int i = 0; i < m_vibrationFields.size(); ++i) {
+        ParameterField *f = m_vibrationFields[i];
+        const double v = settings.value(vibrationKey(f), defaults[i]).toDouble();
+        f->setValue(std::isfinite(v) ? v : defaults[i]);
+    }
+
+    m_vibrate = new QPushButton(tr("Vibrate"), group);
+    m_vibrate->setObjectName(u"button_vibrate"_s);
+    connect(m_vibrate, &QPushButton::clicked, this,
+            [this] { Q_EMIT vibrateRequested(vibration()); });
+    m_stop = new QPushButton(tr("Stop"), group);
+    m_stop->setObjectName(u"button_vibrate_stop"_s);
+    m_stop->setToolTip(tr("Stop a running cue (VIBRATE with a = 0)"));
+    connect(m_stop, &QPushButton::clicked, this, [this] {
+        Vibration v = vibration();
+        v.amplitude = 0;
+        Q_EMIT vibrateRequested(v);
+    });
+    auto *buttons = new QHBoxLayout;
+    buttons->addStretch(1);
+    buttons->addWidget(m_stop);
+    buttons->addWidget(m_vibrate);
+    grid->addLayout(buttons, 2 * int(specs.size()), 1, 1, 4);
+    revalidateVibration();
+    return group;
+}
+
+void EffectsSection::setAvailable(bool available, const QString &reason)
+{
+    m_available = available;
+    m_unavailable->setText(
+        colored(palette::kCautionText,
+                reason.isEmpty() ? tr("Not connected: effects are edited here and saved in the "
+                                      "profile, and pushed with the parameters to a device "
+                                      "that renders them.")
+                                 : tr("This device cannot render effects: %1. They stay in "
+                                      "the profile and are not sent.")
+                                       .arg(reason)));
+    m_unavailable->setVisible(!available);
+    refreshButtons();
+}
+
+void EffectsSection::setFigures(const EffectParams &effects, const DeviceParams &device,
+                                double tauLimit, double controlRate, bool valid)
+{
+    m_tauLimit = tauLimit;
+    m_controlRate = controlRate;
+    revalidateVibration();
+    if (!valid) {
+        m_figures->setText(tr("Figures: — (fix the invalid fields first)"));
+        m_warningList.clear();
+        m_warnings->clear();
+        m_warnings->hide();
+        return;
+    }
+    const double b = ServoPlant::kViscousFriction;
+    const double h = 1.0 / controlRate;
+    const EffectFigures f = deriveEffectFigures(effects, device, b, h);
+    const bool detents = effects.detent_strength > 0 && effects.detent_range > 0;
+    const bool walls = effects.wall_stiffness > 0 && (effects.wall_min > -std::numbers::pi ||
+                                                      effects.wall_max < std::numbers::pi);
+    QStringList figures;
+    figures << tr("detent peak stiffness A·2π/s = %1 N·m/rad")
+                   .arg(detents ? num(f.detentPeakStiffness) : tr("— (off)"));
+    figures << tr("wall passivity margin b − K_w·h/2 = %1 N·m·s/rad (b = %2, h = %3 ms)")
+                   .arg(num(f.wallPassivityMargin), num(b), num(h * 1e3));
+    m_figures->setText(figures.join(u"; "));
+
+    QStringList warnings;
+    if (walls && f.wallPassivityMargin < 0)
+        warnings << tr("K_w·h/2 = %1 N·m·s/rad exceeds the knob's damping b = %2: the wall "
+                       "may chatter (not passive).")
+                        .arg(num(effects.wall_stiffness * h / 2), num(b));
+    if (detents && f.detentPassivityMargin < 0)
+        warnings << tr("The detents' peak stiffness %1 N·m/rad times h/2 exceeds the knob's "
+                       "damping b = %2: the detents may chatter (not passive).")
+                        .arg(num(f.detentPeakStiffness), num(b));
+    const double servoLimit = servoStiffnessLimit(device, ServoPlant::kBandwidthHz);
+    if (walls && effects.wall_stiffness > servoLimit)
+        warnings << tr("K_w = %1 N·m/rad is above what the STS3032's position loop follows "
+                       "with this inertia, D_adm·(2π·%2 Hz)² = %3 N·m/rad: the wall is likely "
+                       "to bounce. Try it on the simulator first, or raise D_adm.")
+                        .arg(num(effects.wall_stiffness), num(ServoPlant::kBandwidthHz),
+                             num(servoLimit));
+    if (detents && device.K_max + f.detentPeakStiffness > servoLimit)
+        warnings << tr("K_max + A·2π/s = %1 N·m/rad is above what the STS3032's position loop "
+                       "follows with this inertia (%2 N·m/rad): the detents are likely to "
+                       "buzz.")
+                        .arg(num(device.K_max + f.detentPeakStiffness), num(servoLimit));
+    if (f.detentsStifferThanNotch && effects.detent_strength > 0)
+        warnings << tr("The detents (%1 N·m/rad at a rest position) are stiffer than the "
+                       "notch K_max = %2 N·m/rad: near θ0 they, not the notch, set the feel.")
+                        .arg(num(f.detentPeakStiffness), num(device.K_max));
+    m_warningList = warnings;
+    QStringList lines;
+    for (const QString &w : std::as_const(warnings))
+        lines << colored(palette::kProblemText, u"⚠ "_s + w);
+    m_warnings->setText(lines.join(u"<br>"));
+    m_warnings->setVisible(!warnings.isEmpty());
+}
+
+QString EffectsSection::warningText() const
+{
+    return m_warningList.join(u'\n');
+}
+
+Vibration EffectsSection::vibration() const
+{
+    return Vibration{m_vibrationFields[0]->value(), m_vibrationFields[1]->value(),
+                     m_vibrationFields[2]->value()};
+}
+
+void EffectsSection::setVibration(const Vibration &vibration)
+{
+    m_vibrationFields[0]->setValue(vibration.amplitude);
+    m_vibrationFields[1]->setValue(vibration.frequency);
+    m_vibrationFields[2]->setValue(vibration.duration);
+    revalidateVibration();
+}
+
+void EffectsSection::revalidateVibration()
+{
+    const std::vector<Violation> violations = validate(vibration(), m_tauLimit, m_controlRate);
+    m_vibrationProblems.clear();
+    QStringList perField[3];
+    for (const Violation &v : violations) {
+        const QString text = QString::fromStdString(v.message());
+        m_vibrationProblems << text;
+        for (int i = 0; i < 3; ++i) {
+            if (v.field == kVibrationFields[std::size_t(i)].name)
+                perField[i] << text;
+        }
+    }
+    for (int i = 0; i < 3; ++i)
+        m_vibrationFields[i]->setProblem(perField[i].join(u'\n'));
+    refreshButtons();
+}
+
+void EffectsSection::refreshButtons()
+{
+    if (!m_vibrate)
+        return;
+    const bool valid = m_vibrationProblems.isEmpty();
+    m_vibrate->setEnabled(m_available && valid);
+    m_stop->setEnabled(m_available);
+    m_vibrate->setToolTip(!m_available ? tr("Needs a device that renders effects")
+                          : valid
+                              ? tr("Send the cue τ_vib = a·sin(2π·f·t) for d seconds (VIBRATE)")
+                              : tr("Fix the cue first:\n%1").arg(m_vibrationProblems.join(u'\n')));
+}
+
+void EffectsSection::rememberVibration() const
+{
+    QSettings settings;
+    for (const ParameterField *f : m_vibrationFields)
+        settings.setValue(vibrationKey(f), f->value());
+}
+
+} // namespace hatpic
