@@ -141,7 +141,7 @@ EffectFigures deriveEffectFigures(const EffectParams &effects, const DeviceParam
 
 //! The stiffest spring the servo's position loop follows on the device's virtual inertia:
 //! D_adm·(2π·f)², with f the loop's natural frequency [Hz] (docs/effects.md, "When a wall or a
-//! detent chatters"). A wall, or K_max plus the detents' peak stiffness, above it bounces.
+//! detent chatters"). A wall, or detents whose peak stiffness A·2π/s is above it, bounce.
 double servoStiffnessLimit(const DeviceParams &device, double servoBandwidthHz);
 
 } // namespace hatpic

@@ -192,11 +192,11 @@ void EffectsSection::setFigures(const EffectParams &effects, const DeviceParams 
                        "to bounce. Try it on the simulator first, or raise D_adm.")
                         .arg(num(effects.wall_stiffness), num(ServoPlant::kBandwidthHz),
                              num(servoLimit));
-    if (detents && device.K_max + f.detentPeakStiffness > servoLimit)
-        warnings << tr("K_max + A·2π/s = %1 N·m/rad is above what the STS3032's position loop "
-                       "follows with this inertia (%2 N·m/rad): the detents are likely to "
-                       "buzz.")
-                        .arg(num(device.K_max + f.detentPeakStiffness), num(servoLimit));
+    if (detents && f.detentPeakStiffness > servoLimit)
+        warnings << tr("The detents' peak stiffness A·2π/s = %1 N·m/rad is above what the "
+                       "STS3032's position loop follows with this inertia (%2 N·m/rad): the "
+                       "detents are likely to buzz.")
+                        .arg(num(f.detentPeakStiffness), num(servoLimit));
     if (f.detentsStifferThanNotch && effects.detent_strength > 0)
         warnings << tr("The detents (%1 N·m/rad at a rest position) are stiffer than the "
                        "notch K_max = %2 N·m/rad: near θ0 they, not the notch, set the feel.")

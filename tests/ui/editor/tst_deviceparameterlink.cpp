@@ -1,11 +1,17 @@
 // DeviceParameterLink against the in-process simulator: the whole round trip (edit → push →
 // ACK → read-back → in sync) through a real DeviceClient, the words for each outcome, the
-// marker-worthy changes, a legacy device that cannot take parameters, and a disconnect.
+// marker-worthy changes, the effect block pushed and kept in sync with them, the vibration
+// test, a legacy device that can take neither, and a disconnect.
 #include "editor/deviceparameterlink.h"
+#include "editor/effectssection.h"
 #include "editor/parametereditor.h"
+#include "editor/parameterfield.h"
+#include "editor/scientificspinbox.h"
 #include "session/deviceclient.h"
 
 #include <QAction>
+#include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -55,6 +61,8 @@ class TestDeviceParameterLink : public QObject
 private Q_SLOTS:
     void pushReachesTheDeviceAndComesBackInSync();
     void commandsAreWorded();
+    void effectsArePushedWithTheParameters();
+    void vibrationTestIsAcknowledged();
     void legacyDeviceCannotTakeParameters();
     void disconnectForgetsTheDevice();
 };
@@ -120,6 +128,92 @@ void TestDeviceParameterLink::commandsAreWorded()
     QVERIFY(rig.disconnect());
 }
 
+void TestDeviceParameterLink::effectsArePushedWithTheParameters()
+{
+    Rig rig;
+    rig.client.connectDevice(simOptions(WireProtocol::V2));
+    // In sync means the effects too: the default ±π walls read back as the float inside π.
+    QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
+    QVERIFY(rig.client.deviceInfo().hasEffects());
+    QVERIFY(rig.editor.effectsSection()->isAvailable());
+    QVERIFY(rig.editor.deviceEffects().has_value());
+    QVERIFY(!rig.editor.field(QStringLiteral("wall_max"))->differsFromDevice());
+
+    QSignalSpy finished(&rig.link, &DeviceParameterLink::commandFinished);
+    QSignalSpy changed(&rig.link, &DeviceParameterLink::deviceChanged);
+    QSignalSpy pushes(&rig.editor, &ParameterEditor::pushRequested);
+    Tuning t = rig.editor.tuning();
+    t.device.K_max = 0.5;
+    t.effects.detent_strength = 0.05;
+    t.effects.detent_range = 0.8;
+    rig.editor.setTuning(t, QStringLiteral("detents"));
+    QCOMPARE(rig.editor.syncState(), SyncState::Edited);
+    QVERIFY(rig.editor.field(QStringLiteral("detent_strength"))->differsFromDevice());
+    rig.editor.pushAction()->trigger();
+    QCOMPARE(pushes.size(), 1);
+    QVERIFY(pushes.constFirst().at(1).value<std::optional<EffectParams>>().has_value());
+    QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
+    QCOMPARE(finished.size(), 1); // one push, one outcome, for both commands
+    QCOMPARE(float(rig.client.deviceEffects().detent_strength), 0.05f);
+    QCOMPARE(float(rig.client.deviceEffects().detent_range), 0.8f);
+    QCOMPARE(float(rig.client.deviceParams().K_max), 0.5f);
+    QVERIFY2(rig.link.lastMessage().contains(QStringLiteral("K_max 0.4 → 0.5")) &&
+                 rig.link.lastMessage().contains(QStringLiteral("detent_strength 0 → 0.05")),
+             qPrintable(rig.link.lastMessage()));
+    QCOMPARE(changed.size(), 1);
+    QVERIFY(!rig.editor.field(QStringLiteral("detent_strength"))->differsFromDevice());
+
+    // Unchanged effects are not sent again; undo brings the edit back as "edited".
+    rig.editor.pushAction()->trigger();
+    QCOMPARE(pushes.size(), 2);
+    QVERIFY(!pushes.at(1).at(1).value<std::optional<EffectParams>>().has_value());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, kConnectMs);
+    QCOMPARE(rig.link.lastMessage(), QStringLiteral("Pushed (no change)."));
+    rig.editor.undoAction()->trigger();
+    QCOMPARE(rig.editor.effects(), EffectParams{});
+    QCOMPARE(rig.editor.syncState(), SyncState::Edited);
+    // Revert takes the device's effects back (as an undoable edit).
+    rig.editor.revertAction()->trigger();
+    QCOMPARE(rig.editor.syncState(), SyncState::InSync);
+    QCOMPARE(float(rig.editor.effects().detent_strength), 0.05f);
+
+    // Read asks for both; one message.
+    rig.editor.readAction()->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, kConnectMs);
+    QCOMPARE(rig.link.lastMessage(), QStringLiteral("Read: done."));
+    QTest::qWait(200);
+    QCOMPARE(finished.size(), 3);
+    QVERIFY(rig.disconnect());
+    QVERIFY(!rig.editor.deviceEffects());
+    QVERIFY(!rig.editor.effectsSection()->isAvailable());
+}
+
+void TestDeviceParameterLink::vibrationTestIsAcknowledged()
+{
+    Rig rig;
+    EffectsSection *fx = rig.editor.effectsSection();
+    QVERIFY(!fx->vibrateButton()->isEnabled()); // not connected
+    rig.client.connectDevice(simOptions(WireProtocol::V2));
+    QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
+    QVERIFY(fx->vibrateButton()->isEnabled());
+    QSignalSpy finished(&rig.link, &DeviceParameterLink::commandFinished);
+    fx->setVibration(Vibration{0.05, 40, 0.2});
+    fx->vibrateButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, kConnectMs);
+    QCOMPARE(rig.link.lastMessage(), QStringLiteral("Vibrate: done."));
+    fx->stopButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, kConnectMs);
+    QCOMPARE(rig.link.lastMessage(), QStringLiteral("Stop vibration: done."));
+
+    // Above half the device's control rate the cue is refused at the field, before sending.
+    const double nyquist = rig.client.deviceInfo().maxStreamHz / 2.0;
+    fx->setVibration(Vibration{0.05, nyquist, 0.2});
+    QVERIFY(!fx->vibrateButton()->isEnabled());
+    QVERIFY2(fx->vibrationProblems().join(u'\n').contains(QStringLiteral("half the control rate")),
+             qPrintable(fx->vibrationProblems().join(u'\n')));
+    QVERIFY(rig.disconnect());
+}
+
 void TestDeviceParameterLink::legacyDeviceCannotTakeParameters()
 {
     Rig rig;
@@ -135,6 +229,14 @@ void TestDeviceParameterLink::legacyDeviceCannotTakeParameters()
     QVERIFY(!rig.editor.pushAction()->isEnabled());
     QCOMPARE(rig.editor.syncText(), QStringLiteral("the legacy protocol cannot carry parameters"));
     QCOMPARE(rig.editor.hostParams().tau_limit, 0.3); // not replaced
+    // Nor effects: the editor says so instead of pretending, and keeps them for the profile.
+    EffectsSection *fx = rig.editor.effectsSection();
+    QVERIFY(!fx->isAvailable());
+    const auto *why = fx->findChild<QLabel *>(QStringLiteral("label_effects_unavailable"));
+    QVERIFY(why && why->isVisibleTo(&rig.editor));
+    QVERIFY2(why->text().contains(QStringLiteral("published firmware")), qPrintable(why->text()));
+    QVERIFY(!fx->vibrateButton()->isEnabled());
+    QVERIFY(rig.editor.field(QStringLiteral("detent_strength"))->spinBox()->isEnabled());
     QVERIFY(rig.disconnect());
 }
 

@@ -63,6 +63,7 @@ private Q_SLOTS:
     void modifiedMarkerInTitle();
     void abSwitch();
     void abSwitchUndo();
+    void effectsTravelWithTheProfile();
     void presetsMenuLoadsPreset();
     void recentFiles();
     void maybeSaveAsks_data();
@@ -443,6 +444,53 @@ void TestProfileController::maybeSaveAsks()
     const ProfileReadResult onDisk = readProfile(path);
     QVERIFY(onDisk.ok());
     QCOMPARE(onDisk.profile->device.Q_dz == 0.05, savedToFile);
+}
+
+void TestProfileController::effectsTravelWithTheProfile()
+{
+    ParameterEditor editor;
+    ProfileController controller(&editor, nullptr);
+    QVERIFY(controller.loadPreset(u"Detents"_s));
+    const Profile detents = *preset(u"Detents"_s);
+    QVERIFY(detents.effects.detent_strength > 0);
+    QCOMPARE(editor.effects(), detents.effects);
+    QVERIFY(!controller.isModified());
+
+    // An effect edit marks the profile modified, and Save writes it.
+    setValue(editor, u"detent_strength"_s, 0.03);
+    QVERIFY(controller.isModified());
+    const QString path = m_dir->filePath(u"clicks.json"_s);
+    QVERIFY(controller.saveTo(path));
+    QVERIFY(!controller.isModified());
+    const ProfileReadResult read = readProfile(path);
+    QVERIFY(read.ok());
+    QCOMPARE(read.profile->effects.detent_strength, 0.03);
+    QCOMPARE(read.profile->effects.detent_range, detents.effects.detent_range);
+
+    // Each slot keeps its own effects; switching shows the other slot's.
+    controller.toggleSlot();
+    QCOMPARE(editor.effects().detent_strength, 0.03); // B starts as a copy of A
+    setValue(editor, u"detent_strength"_s, 0.0);
+    setValue(editor, u"wall_stiffness"_s, 2.0);
+    controller.toggleSlot();
+    QCOMPARE(editor.effects().detent_strength, 0.03);
+    QCOMPARE(editor.effects().wall_stiffness, detents.effects.wall_stiffness);
+    QCOMPARE(controller.slotProfile(1).effects.wall_stiffness, 2.0);
+    // Undo past the switch goes back to B, with B's effects.
+    editor.undoStack()->undo();
+    QCOMPARE(controller.activeSlot(), 1);
+    QCOMPARE(editor.effects().wall_stiffness, 2.0);
+
+    // An invalid effect block is not saved, and the file stays as it was.
+    const QByteArray before = readAll(path);
+    controller.toggleSlot();
+    setValue(editor, u"detent_strength"_s, 0.3);
+    setValue(editor, u"tau_limit"_s, 0.2);
+    QString error;
+    QVERIFY(!controller.saveTo(path, &error));
+    QVERIFY2(error.contains(u"detent_strength: must be ≤ tau_limit (0.2), got 0.3"_s),
+             qPrintable(error));
+    QCOMPARE(readAll(path), before);
 }
 
 QTEST_MAIN(TestProfileController)
