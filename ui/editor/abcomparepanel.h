@@ -33,7 +33,8 @@ public:
 
     explicit AbComparePanel(ProfileController *profiles, QWidget *parent = nullptr);
 
-    //! Every device and host parameter of `a` and `b`; angles in degrees when `degrees`.
+    //! Every device parameter, effect field and host parameter of `a` and `b`; angles in
+    //! degrees when `degrees`.
     static QList<Row> rows(const Profile &a, const Profile &b, bool degrees);
 
     void setAngleInDegrees(bool degrees);

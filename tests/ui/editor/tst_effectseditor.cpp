@@ -3,8 +3,8 @@
 // sync of the effect block next to the parameters, a rejection by the device, the passivity
 // and servo-loop warnings, and the vibration test's own checks.
 #include "editor/effectssection.h"
-#include "editor/parameterfield.h"
 #include "editor/parametereditor.h"
+#include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
 #include "model/paramtable.h"
 
@@ -255,8 +255,8 @@ void TestEffectsEditor::warnings()
     t.effects.detent_spacing = 0.2;
     t.effects.detent_range = detentStrength > 0 ? 0.8 : 0.0;
     editor.setTuning(t, u"fx"_s);
-    const QStringList shown = editor.effectsSection()->warningText().split(
-        u'\n', Qt::SkipEmptyParts);
+    const QStringList shown =
+        editor.effectsSection()->warningText().split(u'\n', Qt::SkipEmptyParts);
     QCOMPARE(shown.size(), expected.size());
     for (qsizetype i = 0; i < expected.size(); ++i)
         QVERIFY2(shown[i].contains(expected[i]), qPrintable(shown[i]));

@@ -199,7 +199,7 @@ void TestAbStudy::differencesTableInDisplayUnits()
     QVERIFY(table->item(0, 0)->font().bold());
     QCOMPARE(tableRow(table, QStringLiteral("K_min")), QStringList());
     find<QCheckBox>("ab_all_parameters")->setChecked(true); // every parameter
-    QCOMPARE(table->rowCount(), 11);
+    QCOMPARE(table->rowCount(), 18);                        // 7 device, 7 effect and 4 host fields
     QCOMPARE(tableRow(table, QStringLiteral("K_min"))[3], QString()); // equal: no Δ
     QVERIFY(!table->item(2, 0)->font().bold());
     QCOMPARE(tableRow(table, QStringLiteral("θ0")),
@@ -218,6 +218,13 @@ void TestAbStudy::differencesTableInDisplayUnits()
     editor()->setParams(edited, editor()->hostParams(), QStringLiteral("A"));
     QCOMPARE(tableRow(table, QStringLiteral("K_max"))[3],
              QString::number((a.K_max + 0.2) - (a.K_max + 0.3), 'g', 6));
+    // The effects are compared too.
+    Tuning t = editor()->tuning();
+    t.effects.detent_strength = 0.05;
+    editor()->setTuning(t, QStringLiteral("A detents"));
+    QCOMPARE(tableRow(table, QStringLiteral("A_det")),
+             (QStringList{QStringLiteral("A_det [N·m]"), QStringLiteral("0.05"),
+                          QStringLiteral("0"), QStringLiteral("-0.05")}));
 }
 
 void TestAbStudy::pushOnSwitchPushesTheSlot()
