@@ -7,7 +7,6 @@
 #include "sim/servoplant.h"
 
 #include <QGridLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -89,16 +88,23 @@ EffectsSection::EffectsSection(QWidget *parent) : QWidget(parent)
 
 QWidget *EffectsSection::buildVibrationGroup()
 {
-    auto *group = new QGroupBox(tr("Vibration test — sent now, not part of the profile"), this);
+    // A titled part of the section rather than a nested group box, whose frame would push
+    // the fields out of line with the others and widen the editor.
+    auto *group = new QWidget(this);
     group->setObjectName(u"group_vibration"_s);
     auto *grid = new QGridLayout(group);
+    grid->setContentsMargins(0, 6, 0, 0);
+    auto *title = new QLabel(u"<b>%1</b>"_s.arg(tr("Vibration test")) + u" — "_s +
+                                 tr("sent now, not part of the profile"),
+                             group);
+    grid->addWidget(title, 0, 0, 1, 5);
     grid->setHorizontalSpacing(8);
     grid->setVerticalSpacing(2);
     grid->setColumnStretch(4, 1);
     const QList<ParameterField::Spec> specs = vibrationFieldSpecs();
     for (int i = 0; i < specs.size(); ++i) {
         auto *field = new ParameterField(specs[i], group, this);
-        field->addToGrid(grid, 2 * i);
+        field->addToGrid(grid, 1 + 2 * i);
         m_vibrationFields << field;
         connect(field, &ParameterField::edited, this, [this] {
             revalidateVibration();
@@ -130,7 +136,7 @@ QWidget *EffectsSection::buildVibrationGroup()
     buttons->addStretch(1);
     buttons->addWidget(m_stop);
     buttons->addWidget(m_vibrate);
-    grid->addLayout(buttons, 2 * int(specs.size()), 1, 1, 4);
+    grid->addLayout(buttons, 1 + 2 * int(specs.size()), 1, 1, 4);
     revalidateVibration();
     return group;
 }

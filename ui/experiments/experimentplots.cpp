@@ -19,7 +19,7 @@ QCustomPlot *makePlot(QWidget *parent, const QString &name)
 {
     auto *plot = new QCustomPlot(parent);
     plot->setObjectName(name);
-    plot->setMinimumSize(360, 240);
+    plot->setMinimumSize(240, 200); // the dock must fit beside the others at 1400 px
     plot->legend->setVisible(true);
     plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     return plot;

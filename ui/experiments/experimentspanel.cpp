@@ -18,6 +18,7 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
@@ -144,8 +145,15 @@ void ExperimentsPanel::buildForm()
     left->addWidget(m_status);
     left->addWidget(m_figures, 1);
     left->addLayout(exports);
+    // The controls scroll rather than set the dock's width: it sits beside the simulated
+    // hand under the plots and must fit there at 1400 px.
+    auto *controlsScroll = new QScrollArea(this);
+    controlsScroll->setWidgetResizable(true);
+    controlsScroll->setFrameShape(QFrame::NoFrame);
+    controlsScroll->setWidget(controls);
+    controlsScroll->setMinimumWidth(200);
     auto *split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(controls);
+    split->addWidget(controlsScroll);
     split->addWidget(m_plots);
     split->setStretchFactor(1, 1);
     auto *layout = new QVBoxLayout(this);

@@ -72,6 +72,7 @@ private Q_SLOTS:
     void warnings();
     void anglesFollowTheDegreesSwitch();
     void vibrationTestChecksItsFields();
+    void sectionDoesNotWidenTheEditor();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -306,6 +307,39 @@ void TestEffectsEditor::vibrationTestChecksItsFields()
     fx->vibrationFields()[0]->spinBox()->setValue(0.07);
     ParameterEditor next;
     QCOMPARE(next.effectsSection()->vibration().amplitude, 0.07);
+}
+
+void TestEffectsEditor::sectionDoesNotWidenTheEditor()
+{
+    // The editor dock is narrow (about 420 px at 1400×900): the Effects group, its warnings
+    // and its vibration test must fit in the width the parameter groups need anyway.
+    ParameterEditor editor;
+    Tuning t = editor.tuning();
+    t.effects.wall_min = -0.5;
+    t.effects.wall_max = 0.5;
+    t.effects.wall_stiffness = 12; // every wall warning
+    editor.setTuning(t, u"fx"_s);
+    editor.show();
+    int widest = 0;
+    const QGroupBox *effects = nullptr;
+    for (const QGroupBox *g : editor.findChildren<QGroupBox *>()) {
+        if (g->objectName() == u"group_effects")
+            effects = g;
+        else if (g->objectName() != u"derivedFiguresBox")
+            widest = std::max(widest, g->minimumSizeHint().width());
+    }
+    QVERIFY(effects && widest > 0);
+    for (const QLabel *w : editor.findChildren<QLabel *>())
+        qDebug() << w->objectName() << w->text().left(40) << w->minimumSizeHint() << w->sizeHint()
+                 << w->minimumWidth();
+    QString wide;
+    for (const QWidget *w : effects->findChildren<QWidget *>()) {
+        if (w->minimumSizeHint().width() > widest)
+            wide += u" %1(%2)"_s.arg(w->objectName()).arg(w->minimumSizeHint().width());
+    }
+    QVERIFY2(
+        effects->minimumSizeHint().width() <= widest,
+        qPrintable(u"%1 > %2:%3"_s.arg(effects->minimumSizeHint().width()).arg(widest).arg(wide)));
 }
 
 QTEST_MAIN(TestEffectsEditor)
