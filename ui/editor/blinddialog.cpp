@@ -123,6 +123,10 @@ BlindDialog::BlindDialog(BlindRunner *runner, QWidget *parent) : QDialog(parent)
     m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto *close = new QDialogButtonBox(QDialogButtonBox::Close, done);
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    m_resume = close->addButton(tr("Resume"), QDialogButtonBox::ActionRole);
+    m_resume->setObjectName(u"blind_resume"_s);
+    m_resume->setToolTip(tr("Go on from the first unanswered trial, in the same trials file"));
+    connect(m_resume, &QPushButton::clicked, this, &BlindDialog::resumeStudy);
     auto *doneLayout = new QVBoxLayout(done);
     doneLayout->addWidget(m_result, 1);
     doneLayout->addWidget(close);
@@ -192,6 +196,16 @@ bool BlindDialog::startStudy()
     return true;
 }
 
+bool BlindDialog::resumeStudy()
+{
+    if (!m_runner->resume()) {
+        m_result->setText(m_result->text() + u"\n\n"_s +
+                          tr("Cannot resume: %1").arg(m_runner->error()));
+        return false;
+    }
+    return true;
+}
+
 void BlindDialog::showPhase()
 {
     using Phase = BlindRunner::Phase;
@@ -216,6 +230,7 @@ void BlindDialog::showPhase()
                         .arg(s.chosenFirst);
         }
         m_result->setText(text);
+        m_resume->setVisible(m_runner->canResume());
         m_pages->setCurrentIndex(2);
         return;
     }

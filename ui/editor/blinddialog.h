@@ -34,6 +34,8 @@ public:
     void prepare(const QString &suggestedFile);
     //! Start as if pressed: false when the study did not start (the page says why).
     bool startStudy();
+    //! Resume as if pressed (a stopped study with trials left): false when it did not go on.
+    bool resumeStudy();
 
 protected:
     void keyPressEvent(QKeyEvent *event) override;
@@ -56,6 +58,7 @@ private:
     QLabel *m_intervalLabel = nullptr;
     QLabel *m_prompt = nullptr;
     QLabel *m_result = nullptr;
+    QPushButton *m_resume = nullptr;
 };
 
 } // namespace hatpic

@@ -33,7 +33,8 @@ QString BlindRunner::readiness() const
         return tr("Connect to a device that takes parameters first.");
     for (int slot : {0, 1}) {
         const Profile p = m_profiles->slotProfile(slot);
-        if (!validate(p.device).empty() || !validate(p.host).empty())
+        if (!validate(p.device).empty() || !validate(p.host).empty() ||
+            !validate(p.effects, p.host.tau_limit).empty())
             return tr("Slot %1's parameters are not valid.").arg(ProfileController::slotName(slot));
     }
     return {};
@@ -53,6 +54,25 @@ bool BlindRunner::start(const BlindSetup &setup, const QString &csvPath)
     m_error = m_study->writeCsv(m_path); // the header: the file is there from the start
     if (!m_error.isEmpty())
         return false;
+    m_slotBefore = m_profiles->activeSlot();
+    Q_EMIT runningChanged(true);
+    present(1);
+    return true;
+}
+
+bool BlindRunner::canResume() const
+{
+    return m_phase == Phase::Stopped && m_study && !m_study->isFinished();
+}
+
+bool BlindRunner::resume()
+{
+    if (!canResume())
+        return false;
+    if (const QString why = readiness(); !why.isEmpty()) {
+        m_error = why;
+        return false;
+    }
     m_slotBefore = m_profiles->activeSlot();
     Q_EMIT runningChanged(true);
     present(1);

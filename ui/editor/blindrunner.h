@@ -43,6 +43,11 @@ public:
     void next();               //!< Space: from interval 1 to interval 2
     void answer(int interval); //!< 1 or 2, while answering
     void abort();              //!< Escape: stops; answered trials are already in the file
+    //! Whether a stopped study can go on (trials are left); resume() still checks readiness().
+    bool canResume() const;
+    //! Goes on with a stopped study from its first unanswered trial (interval 1 again), in the
+    //! same trials file; false with error() when it cannot.
+    bool resume();
 
     Phase phase() const { return m_phase; }
     int interval() const { return m_interval; } //!< 1 or 2 while preparing/feeling/answering

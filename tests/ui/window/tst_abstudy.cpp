@@ -74,7 +74,7 @@ private Q_SLOTS:
     void differencesTableInDisplayUnits();
     void pushOnSwitchPushesTheSlot();
     void blindRunByKeysWritesTheTrials();
-    void blindAbortKeepsAnsweredTrials();
+    void blindAbortKeepsAnsweredTrialsAndResumes();
     void existingTrialsFileIsNotReplacedWithoutAsking();
     void notesEditUndoSaveOpen();
 
@@ -329,7 +329,7 @@ void TestAbStudy::blindRunByKeysWritesTheTrials()
     QVERIFY(part<QLabel>(dialog, "blind_result")->text().contains(QStringLiteral("of 4 trials")));
 }
 
-void TestAbStudy::blindAbortKeepsAnsweredTrials()
+void TestAbStudy::blindAbortKeepsAnsweredTrialsAndResumes()
 {
     connectSim();
     makeB(editor()->params().K_max + 0.1);
@@ -352,6 +352,29 @@ void TestAbStudy::blindAbortKeepsAnsweredTrials()
     QCOMPARE(lines.size(), 7 + 1 + 1); // header, one trial, the last line's end
     QVERIFY(lines[7].startsWith(QStringLiteral("1,")));
     QVERIFY(part<QLabel>(dialog, "blind_result")->text().contains(QStringLiteral("Stopped")));
+
+    // Resume goes on from trial 2, in the same file, and hides the window again.
+    auto *resume = part<QPushButton>(dialog, "blind_resume");
+    QVERIFY(resume->isVisible());
+    resume->click();
+    QVERIFY(!m_window->isVisible());
+    for (int trial = 2; trial <= 3; ++trial) {
+        QTRY_COMPARE_WITH_TIMEOUT(runner->phase(), BlindRunner::Phase::Feeling, kConnectMs);
+        QCOMPARE(part<QLabel>(dialog, "blind_trial")->text(),
+                 QStringLiteral("Trial %1 of 3").arg(trial));
+        QTest::keyClick(dialog, Qt::Key_Space);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->phase(), BlindRunner::Phase::Answering, kConnectMs);
+        QTest::keyClick(dialog, Qt::Key_1);
+    }
+    QCOMPARE(runner->phase(), BlindRunner::Phase::Finished);
+    QVERIFY(m_window->isVisible());
+    QVERIFY(!resume->isVisible()); // nothing left to resume
+    QFile whole(path);
+    QVERIFY(whole.open(QIODevice::ReadOnly));
+    const QStringList all = QString::fromUtf8(whole.readAll()).split(u'\n');
+    QCOMPARE(all.size(), 7 + 3 + 1);
+    QCOMPARE(all[7], lines[7]); // the first answer is kept as it was
+    QVERIFY(all[9].startsWith(QStringLiteral("3,")));
 }
 
 void TestAbStudy::existingTrialsFileIsNotReplacedWithoutAsking()
