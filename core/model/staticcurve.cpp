@@ -44,8 +44,7 @@ bool shapesStaticTorque(const EffectParams &effects)
     return detentsActive(effects) || wallsActive(effects);
 }
 
-std::vector<double> detentRestPositions(const EffectParams &fx, double theta0, double lo,
-                                        double hi)
+std::vector<double> detentRestPositions(const EffectParams &fx, double theta0, double lo, double hi)
 {
     std::vector<double> out;
     if (!detentsActive(fx) || !std::isfinite(theta0))

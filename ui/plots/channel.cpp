@@ -23,6 +23,8 @@ QString channelLabel(Channel channel)
         return QStringLiteral("v_ref");
     case Channel::PRef:
         return QStringLiteral("p_ref");
+    case Channel::TauFx:
+        return QStringLiteral("τ_fx");
     }
     return {};
 }

@@ -1,5 +1,6 @@
 // The plotted quantities of a Sample (the columns theta … p_ref of the sample column table,
-// telemetry/samplecolumns.h), so buffers and plots can address them as columns.
+// telemetry/samplecolumns.h, and tau_fx after its flags), so buffers and plots can address them
+// as columns.
 #pragma once
 
 #include "telemetry/samplecolumns.h"
@@ -10,14 +11,15 @@
 
 namespace hatpic {
 
-enum class Channel { Theta, Omega, Tau, TauRec, TauExt, TauTotal, VRef, PRef };
+enum class Channel { Theta, Omega, Tau, TauRec, TauExt, TauTotal, VRef, PRef, TauFx };
 
-inline constexpr int kChannelCount = 8;
-static_assert(kChannelCount == kQuantityColumnCount);
+//! The quantity columns theta … p_ref, then tau_fx (NaN where the device does not send it).
+inline constexpr int kChannelCount = 9;
+static_assert(kChannelCount == kQuantityColumnCount + 1);
 
 inline constexpr std::array<Channel, kChannelCount> kAllChannels{
-    Channel::Theta,  Channel::Omega,    Channel::Tau,  Channel::TauRec,
-    Channel::TauExt, Channel::TauTotal, Channel::VRef, Channel::PRef};
+    Channel::Theta,    Channel::Omega, Channel::Tau,  Channel::TauRec, Channel::TauExt,
+    Channel::TauTotal, Channel::VRef,  Channel::PRef, Channel::TauFx};
 
 //! Column of a channel, 0…kChannelCount−1.
 constexpr int channelIndex(Channel channel)
@@ -28,6 +30,8 @@ constexpr int channelIndex(Channel channel)
 //! The channel's column in the sample column table: its name, unit and value.
 constexpr const SampleColumn &channelColumn(Channel channel)
 {
+    if (channel == Channel::TauFx)
+        return kSampleColumns[sampleColumnIndex("tau_fx")];
     return kSampleColumns[kFirstQuantityColumn + static_cast<std::size_t>(channelIndex(channel))];
 }
 

@@ -26,6 +26,7 @@ QString DisplayUnits::unit(Channel channel) const
     case Channel::TauRec:
     case Channel::TauExt:
     case Channel::TauTotal:
+    case Channel::TauFx:
         return QStringLiteral("N·m");
     default:
         break;

@@ -32,6 +32,8 @@ inline QColor channel(Channel c)
         return {163, 41, 214}; // purple
     case Channel::PRef:
         return {137, 96, 82}; // brown
+    case Channel::TauFx:
+        return {184, 134, 11}; // goldenrod: also the effects' marks (detent rest positions, walls)
     }
     return Qt::black;
 }

@@ -102,6 +102,7 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
     addGraph(Channel::TauRec, PlotKind::Torque, false);
     addGraph(Channel::TauExt, PlotKind::Torque, false);
     addGraph(Channel::TauTotal, PlotKind::Torque, false);
+    addGraph(Channel::TauFx, PlotKind::Torque, false);
     addGraph(Channel::VRef, PlotKind::Reference, false);
     addGraph(Channel::PRef, PlotKind::Reference, true);
     // τ_total = τ_rec + τ_ext lies exactly on τ_rec while τ_ext = 0: τ_rec goes wide underneath,
@@ -210,7 +211,7 @@ void PlotFrame::autoscale(const std::array<DecimationResult, kChannelCount> &ran
     fit(rect(PlotKind::Angle)->axis(QCPAxis::atLeft), lo, hi, kMinSpan[0] * angleScale);
     collect({Channel::Omega});
     fit(rect(PlotKind::Angle)->axis(QCPAxis::atRight), lo, hi, 0.1 * angleScale);
-    collect({Channel::Tau, Channel::TauRec, Channel::TauExt, Channel::TauTotal});
+    collect({Channel::Tau, Channel::TauRec, Channel::TauExt, Channel::TauTotal, Channel::TauFx});
     fit(rect(PlotKind::Torque)->axis(QCPAxis::atLeft), lo, hi, kMinSpan[1]);
     collect({Channel::VRef});
     fit(rect(PlotKind::Reference)->axis(QCPAxis::atLeft), lo, hi,

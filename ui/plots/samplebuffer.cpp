@@ -73,7 +73,6 @@ Sample SampleBuffer::sample(qsizetype index) const
     for (Channel channel : kAllChannels)
         s.*channelColumn(channel).value = value(channel, index);
     s.flags = flags(index);
-    s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // not a channel: not kept, so unknown
     return s;
 }
 

@@ -102,7 +102,7 @@ void TestStaticCurve::wallsPushBackWithoutDamping()
     const DeviceParams p = linear(0.5, 0.0);
     const EffectParams fx = walls(-0.3, 0.4, 2.0);
     QVERIFY(shapesStaticTorque(fx));
-    QVERIFY(near(staticTorque(p, fx, 0.35), -0.175));          // inside: τ_rec only
+    QVERIFY(near(staticTorque(p, fx, 0.35), -0.175));           // inside: τ_rec only
     QVERIFY(near(staticTorque(p, fx, 0.5), -0.25 - 2.0 * 0.1)); // 0.1 beyond wall_max
     QVERIFY(near(staticTorque(p, fx, -0.5), 0.25 + 2.0 * 0.2)); // 0.2 beyond wall_min
     QVERIFY(near(staticTorque(p, fx, 0.4), -0.2));              // on the wall: not beyond
@@ -176,8 +176,8 @@ void TestStaticCurve::samplesResolveFineDetents()
     }
     QVERIFY(near(lo, -0.02) && near(hi, 0.02));
     // Every period holds kSamplesPerDetent samples.
-    const auto inPeriod = std::count_if(x.begin(), x.end(),
-                                        [](double t) { return t >= 0.3 - 1e-12 && t < 0.31 - 1e-12; });
+    const auto inPeriod = std::count_if(
+        x.begin(), x.end(), [](double t) { return t >= 0.3 - 1e-12 && t < 0.31 - 1e-12; });
     QCOMPARE(inPeriod, kSamplesPerDetent);
 }
 
