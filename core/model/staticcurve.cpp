@@ -139,4 +139,20 @@ std::vector<double> effectSampleAngles(const EffectParams &fx, double theta0, do
     return out;
 }
 
+EffectTorques splitEffectTorque(const EffectParams &effects, double theta0, double theta,
+                                double omega, double tauFx)
+{
+    if (std::isnan(tauFx)) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        return {nan, nan, nan};
+    }
+    const EffectShape<double> fx = EffectShape<double>::from(effects);
+    const double e = theta - theta0;
+    EffectTorques out;
+    out.det = detentTorque(fx, e);
+    out.wall = wallTorque(fx, e, omega);
+    out.vib = tauFx - out.det - out.wall;
+    return out;
+}
+
 } // namespace hatpic

@@ -1,6 +1,7 @@
 // The static torque a knob at rest feels (ω = 0, so no wall damping and no vibration):
 // τ_rec + τ_det + τ_wall over θ (model.md, effects.md § 1), where its detents hold the knob and
-// where its walls stand, and the angles at which a plot must sample it to draw every detent.
+// where its walls stand, and the angles at which a plot must sample it to draw every detent;
+// and how a measured τ_fx splits into its parts.
 #pragma once
 
 #include "model/effects.h"
@@ -52,5 +53,19 @@ double effectsHalfRange(const EffectParams &effects);
 //! adjacent angles beyond them (τ_det stops there, so the jump is drawn vertical); the walls.
 std::vector<double> effectSampleAngles(const EffectParams &effects, double theta0, double lo,
                                        double hi);
+
+//! A measured τ_fx split into its parts (effects.md § 1) [N·m].
+struct EffectTorques
+{
+    double det = 0;  //!< τ_det at the sample's θ
+    double wall = 0; //!< τ_wall at the sample's θ and ω (with the walls' damping)
+    double vib = 0;  //!< τ_vib = τ_fx − τ_det − τ_wall: what the host cannot compute
+};
+
+//! τ_det and τ_wall from the sample's θ [rad] and ω [rad/s] with the block and θ0 [rad], and
+//! τ_vib = τ_fx − τ_det − τ_wall; all NaN when τ_fx is NaN (unknown, not zero). The device
+//! renders in float32, so τ_vib carries its rounding (~1e-7 N·m) where no cue runs.
+EffectTorques splitEffectTorque(const EffectParams &effects, double theta0, double theta,
+                                double omega, double tauFx);
 
 } // namespace hatpic

@@ -65,6 +65,8 @@ void PlotFeed::setLiveDeviceParams(const std::optional<DeviceParams> &params)
     m_liveParams = params;
     if (!params)
         setLiveDeviceEffects(std::nullopt);
+    else
+        m_live.setEffects(m_liveEffects, params->theta0); // θ0 may have changed
     if (isReplaying())
         return;
     m_plots->setDeviceParams(params);
@@ -76,6 +78,9 @@ void PlotFeed::setLiveDeviceParams(const std::optional<DeviceParams> &params)
 void PlotFeed::setLiveDeviceEffects(const std::optional<EffectParams> &effects)
 {
     m_liveEffects = effects;
+    // τ_fx's parts of the samples from now on; they need θ0, so the device's parameters too.
+    m_live.setEffects(m_liveParams ? effects : std::nullopt,
+                      m_liveParams ? m_liveParams->theta0 : 0.0);
     if (!isReplaying())
         Q_EMIT deviceEffectsShown(effects);
 }

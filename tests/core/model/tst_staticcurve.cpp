@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 using namespace hatpic;
@@ -66,6 +67,7 @@ private Q_SLOTS:
     void samplesResolveFineDetents();
     void samplesAreBounded();
     void samplesMarkTheRangeEdge();
+    void splitsTauFx();
 };
 
 void TestStaticCurve::defaultsAddNothing()
@@ -214,6 +216,33 @@ void TestStaticCurve::samplesMarkTheRangeEdge()
     const auto w = effectSampleAngles(walls(-0.25, 0.5, 1.0), 0.1, -1, 1);
     QVERIFY(std::find(w.begin(), w.end(), 0.1 - 0.25) != w.end());
     QVERIFY(std::find(w.begin(), w.end(), 0.1 + 0.5) != w.end());
+}
+
+void TestStaticCurve::splitsTauFx()
+{
+    // Detents A = 0.04, s = 0.2 over ±0.45; walls at ±0.3 with K_w = 2, B_w = 0.5; θ0 = 0.1.
+    EffectParams fx = detents(0.04, 0.2, 0.45);
+    fx.wall_min = -0.3;
+    fx.wall_max = 0.3;
+    fx.wall_stiffness = 2.0;
+    fx.wall_damping = 0.5;
+    // θ = 0.15 (e = 0.05, a quarter period, inside the walls), τ_fx = −0.04 + 0.01 of a cue.
+    EffectTorques t = splitEffectTorque(fx, 0.1, 0.15, 3.0, -0.03);
+    QVERIFY(near(t.det, -0.04));
+    QCOMPARE(t.wall, 0.0);
+    QVERIFY(near(t.vib, 0.01));
+    // θ = 0.5 (e = 0.4, 0.1 beyond wall_max, moving further in at ω = 2): τ_det = −0.04·sin(4π)
+    // ≈ 0, τ_wall = −2·0.1 − 0.5·2 = −1.2; τ_fx = −1.2 → no cue.
+    t = splitEffectTorque(fx, 0.1, 0.5, 2.0, -1.2);
+    QVERIFY(near(t.wall, -1.2));
+    QVERIFY(std::abs(t.det) < 1e-12);
+    QVERIFY(std::abs(t.vib) < 1e-12);
+    // Moving out of the wall: no damping, τ_wall = −0.2.
+    t = splitEffectTorque(fx, 0.1, 0.5, -2.0, -0.2);
+    QVERIFY(near(t.wall, -0.2));
+    // Unknown τ_fx: every part unknown.
+    t = splitEffectTorque(fx, 0.1, 0.15, 0.0, std::numeric_limits<double>::quiet_NaN());
+    QVERIFY(std::isnan(t.det) && std::isnan(t.wall) && std::isnan(t.vib));
 }
 
 QTEST_GUILESS_MAIN(TestStaticCurve)

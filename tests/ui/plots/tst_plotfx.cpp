@@ -1,6 +1,7 @@
 // The torque plot's τ_fx series (effects.md): drawn from the samples that carry τ_fx, nothing
 // where the device does not send it (NaN), in its own colour, listed in the legend with its
-// value, and written by the CSV export as the tau_fx column.
+// value, and written by the CSV export as the tau_fx column; and its parts τ_det, τ_wall and
+// τ_vib, computed by the buffer from θ, ω and the device's block, off by default.
 #include "plots/palette.h"
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
@@ -44,6 +45,8 @@ private Q_SLOTS:
     void drawsOnlyWhereKnown();
     void legacyDrawsNothing();
     void exportWritesTauFx();
+    void bufferSplitsTauFx();
+    void partsAreOptionalSeries();
 };
 
 void TestPlotFx::tauFxIsATorqueSeries()
@@ -140,6 +143,81 @@ void TestPlotFx::exportWritesTauFx()
     }
     QCOMPARE(known, 2000);
     QCOMPARE(unknown, 2000);
+}
+
+void TestPlotFx::bufferSplitsTauFx()
+{
+    // Detents A = 0.04 every 0.2 rad over ±1; a wall at +0.3 (K_w = 2, B_w = 0.5); θ0 = 0.1.
+    EffectParams fx;
+    fx.detent_strength = 0.04;
+    fx.detent_spacing = 0.2;
+    fx.detent_range = 1.0;
+    fx.wall_max = 0.3;
+    fx.wall_stiffness = 2.0;
+    fx.wall_damping = 0.5;
+    SampleBuffer buffer;
+    Sample s;
+    s.theta = 0.15; // e = 0.05: τ_det = −0.04
+    s.omega = 1.0;
+    s.tau_fx = -0.04 + 0.01; // plus a cue of 0.01
+    buffer.append(s);        // no block known yet: parts unknown
+    buffer.setEffects(fx, 0.1);
+    s.t_s = 0.001;
+    buffer.append(s);
+    s.t_s = 0.002;
+    s.theta = 0.5; // e = 0.4: 0.1 beyond the wall, moving in: −2·0.1 − 0.5·1 = −0.7; τ_det ≈ 0
+    s.tau_fx = -0.7;
+    buffer.append(s);
+    s.t_s = 0.003;
+    s.tau_fx = kNaN; // unknown τ_fx: unknown parts
+    buffer.append(s);
+    for (Channel part : {Channel::TauDet, Channel::TauWall, Channel::TauVib}) {
+        QVERIFY(std::isnan(buffer.value(part, 0)));
+        QVERIFY(std::isnan(buffer.value(part, 3)));
+    }
+    QVERIFY(std::abs(buffer.value(Channel::TauDet, 1) + 0.04) < 1e-12);
+    QCOMPARE(buffer.value(Channel::TauWall, 1), 0.0);
+    QVERIFY(std::abs(buffer.value(Channel::TauVib, 1) - 0.01) < 1e-12);
+    QVERIFY(std::abs(buffer.value(Channel::TauWall, 2) + 0.7) < 1e-12);
+    QVERIFY(std::abs(buffer.value(Channel::TauDet, 2)) < 1e-12);
+    QVERIFY(std::abs(buffer.value(Channel::TauVib, 2)) < 1e-12);
+    // The parts are not Sample columns: a round trip keeps τ_fx, not them.
+    QCOMPARE(buffer.sample(1).tau_fx, -0.03);
+}
+
+void TestPlotFx::partsAreOptionalSeries()
+{
+    EffectParams fx;
+    fx.detent_strength = 0.03;
+    fx.detent_spacing = 0.2;
+    fx.detent_range = 1.0;
+    SampleBuffer buffer;
+    buffer.setEffects(fx, 0.0);
+    fill(buffer, 0, 4, 2.0);
+    PlotPanel panel;
+    panel.resize(900, 600);
+    panel.setSource(&buffer);
+    panel.setWindowLength(5);
+    panel.repaintNow();
+    for (Channel part : {Channel::TauDet, Channel::TauWall, Channel::TauVib}) {
+        QVERIFY(!panel.isChannelVisible(part)); // off by default
+        QCOMPARE(panel.pointCount(part), 0);
+        QCOMPARE(panel.graph(part)->valueAxis(), panel.graph(Channel::TauFx)->valueAxis());
+        panel.setChannelVisible(part, true);
+    }
+    panel.repaintNow();
+    // τ_det drawn where τ_fx is known (t < 2 s), nothing after.
+    const QCPGraph *det = panel.graph(Channel::TauDet);
+    int known = 0;
+    for (auto it = det->data()->constBegin(); it != det->data()->constEnd(); ++it) {
+        if (std::isnan(it->value))
+            continue;
+        ++known;
+        QVERIFY(it->key < 2.0);
+        QVERIFY(std::abs(it->value) <= 0.03 + 1e-12);
+    }
+    QVERIFY(known > 0);
+    QVERIFY(panel.graph(Channel::TauWall)->name().startsWith(QStringLiteral("τ_wall")));
 }
 
 QTEST_MAIN(TestPlotFx)

@@ -10,6 +10,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <limits>
 
 using namespace hatpic;
@@ -75,9 +76,21 @@ void TestPlotFeedEffects::liveEffectsReachTheViews()
     feed.setLiveDeviceParams(DeviceParams{});
     feed.setLiveDeviceEffects(walls());
     QCOMPARE(shownEffects(shown), std::optional(walls()));
+    // τ_fx's parts of the live samples from now on, with the device's block and θ0: a wall
+    // 0.1 beyond wall_max, at rest: τ_wall = −3·0.1.
+    Sample s;
+    s.theta = 0.6;
+    s.omega = 0;
+    s.tau_fx = -0.3;
+    feed.appendLive({s});
+    const SampleBuffer &live = feed.liveBuffer();
+    QVERIFY(std::abs(live.value(Channel::TauWall, live.size() - 1) + 0.3) < 1e-12);
     // The device goes: its effects go with it.
     feed.setLiveDeviceParams(std::nullopt);
     QVERIFY(!shownEffects(shown));
+    s.t_s = 1;
+    feed.appendLive({s});
+    QVERIFY(std::isnan(live.value(Channel::TauWall, live.size() - 1)));
 }
 
 void TestPlotFeedEffects::replayShowsTheRecordingsEffects()
@@ -109,6 +122,10 @@ void TestPlotFeedEffects::replayShowsTheRecordingsEffects()
     // The recording's τ_fx column: the point at the playhead is τ_rec + τ_fx.
     QVERIFY(!point.isEmpty());
     QVERIFY(std::abs(point.constLast().at(1).toDouble() - (-0.0625 + 0.02)) < 1e-9);
+    // τ_fx's parts from the recording's block: θ ≤ 0.25 inside the walls, so τ_vib = τ_fx.
+    const SampleBuffer &replayed = feed.replay()->buffer();
+    QCOMPARE(replayed.value(Channel::TauWall, 0), 0.0);
+    QVERIFY(std::abs(replayed.value(Channel::TauVib, 0) - 0.02) < 1e-9);
     // Live effects arriving meanwhile are kept, not shown; back to live shows them.
     const qsizetype before = shown.size();
     feed.setLiveDeviceEffects(std::nullopt);
