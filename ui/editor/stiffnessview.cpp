@@ -200,12 +200,16 @@ void StiffnessView::setReplaying(bool replaying)
     requestReplot();
 }
 
+bool StiffnessView::effectsShown() const
+{
+    return shapesStaticTorque(m_editedEffects) || (m_other && shapesStaticTorque(m_otherEffects)) ||
+           (m_device && m_deviceEffects && shapesStaticTorque(*m_deviceEffects));
+}
+
 void StiffnessView::updateNames()
 {
     // With effects the torques are τ_rec + τ_fx; without, the names are as they always were.
-    const bool fx = shapesStaticTorque(m_editedEffects) ||
-                    (m_other && shapesStaticTorque(m_otherEffects)) ||
-                    (m_device && m_deviceEffects && shapesStaticTorque(*m_deviceEffects));
+    const bool fx = effectsShown();
     m_torqueRect->axis(QCPAxis::atLeft)
         ->setLabel(fx ? tr("τ_rec + τ_det + τ_wall [N·m]") : tr("τ_rec [N·m]"));
     if (m_replaying)
@@ -417,6 +421,10 @@ void StiffnessView::rebuild()
     if (m_tauLimit > 0 && m_tauLimit < 2.0 * tauMax)
         tauMax = std::max(tauMax, m_tauLimit);
     tauMax = std::max(tauMax, 1e-3) * 1.15;
+    // A stiff wall's spring grows far beyond what the device renders (it clamps at tau_limit):
+    // with effects the axis stops at 1.5 × tau_limit, so the notch and the detents stay legible.
+    if (m_tauLimit > 0 && effectsShown())
+        tauMax = std::min(tauMax, 1.5 * m_tauLimit);
     m_torqueRect->axis(QCPAxis::atLeft)->setRange(-tauMax, tauMax);
     m_stiffnessRect->axis(QCPAxis::atLeft)->setRange(0, std::max(kMax, 1e-3) * 1.15);
 

@@ -103,6 +103,8 @@ private:
                     QCPGraph *stiffness, double center, double halfWidth);
     //! Names the torque axis and the live point after what the curves hold.
     void updateNames();
+    //! Some drawn set's effects change its static torque (the defaults do not).
+    bool effectsShown() const;
     void updateShading();
     void updateComparisonStyle();
     void updateOperatingPoint();

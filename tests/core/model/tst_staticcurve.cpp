@@ -18,33 +18,19 @@ constexpr double kPi = std::numbers::pi;
 
 EffectParams detents(double a, double s, double r)
 {
-    EffectParams p;
-    p.detent_strength = a;
-    p.detent_spacing = s;
-    p.detent_range = r;
-    return p;
+    return {.detent_strength = a, .detent_spacing = s, .detent_range = r};
 }
 
+//! Walls at θ0 + lo and θ0 + hi with K_w = k; their damping never enters the static torque.
 EffectParams walls(double lo, double hi, double k)
 {
-    EffectParams p;
-    p.wall_min = lo;
-    p.wall_max = hi;
-    p.wall_stiffness = k;
-    p.wall_damping = 0.5; // static: never enters
-    return p;
+    return {.wall_min = lo, .wall_max = hi, .wall_stiffness = k, .wall_damping = 0.5};
 }
 
+//! K_min = K_max = k, no dead zone: τ_rec = −k·(θ − θ0) everywhere.
 DeviceParams linear(double k, double theta0)
 {
-    // K_min = K_max, no dead zone: τ_rec = −k·(θ − θ0) everywhere.
-    DeviceParams p;
-    p.K_min = k;
-    p.K_max = k;
-    p.N = 0.2;
-    p.Q_dz = 0;
-    p.theta0 = theta0;
-    return p;
+    return {.K_min = k, .K_max = k, .N = 0.2, .Q_dz = 0, .theta0 = theta0};
 }
 
 bool near(double a, double b)

@@ -148,13 +148,12 @@ void TestPlotFx::exportWritesTauFx()
 void TestPlotFx::bufferSplitsTauFx()
 {
     // Detents A = 0.04 every 0.2 rad over ±1; a wall at +0.3 (K_w = 2, B_w = 0.5); θ0 = 0.1.
-    EffectParams fx;
-    fx.detent_strength = 0.04;
-    fx.detent_spacing = 0.2;
-    fx.detent_range = 1.0;
-    fx.wall_max = 0.3;
-    fx.wall_stiffness = 2.0;
-    fx.wall_damping = 0.5;
+    const EffectParams fx{.detent_strength = 0.04,
+                          .detent_spacing = 0.2,
+                          .detent_range = 1.0,
+                          .wall_max = 0.3,
+                          .wall_stiffness = 2.0,
+                          .wall_damping = 0.5};
     SampleBuffer buffer;
     Sample s;
     s.theta = 0.15; // e = 0.05: τ_det = −0.04
@@ -187,10 +186,7 @@ void TestPlotFx::bufferSplitsTauFx()
 
 void TestPlotFx::partsAreOptionalSeries()
 {
-    EffectParams fx;
-    fx.detent_strength = 0.03;
-    fx.detent_spacing = 0.2;
-    fx.detent_range = 1.0;
+    const EffectParams fx{.detent_strength = 0.03, .detent_spacing = 0.2, .detent_range = 1.0};
     SampleBuffer buffer;
     buffer.setEffects(fx, 0.0);
     fill(buffer, 0, 4, 2.0);
