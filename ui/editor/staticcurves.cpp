@@ -39,9 +39,8 @@ EffectMarks::EffectMarks(QCustomPlot *plot, QCPAxisRect *torque, QCPAxisRect *st
     const QColor colour = palette::channel(Channel::TauFx);
     m_rest = plot->addGraph(torque->axis(QCPAxis::atBottom), torque->axis(QCPAxis::atLeft));
     m_rest->setName(
-        device
-            ? QCoreApplication::translate("hatpic::StiffnessView", "device's detent rest positions")
-            : QCoreApplication::translate("hatpic::StiffnessView", "detent rest positions"));
+        device ? QCoreApplication::translate("hatpic::StiffnessView", "device's rest positions")
+               : QCoreApplication::translate("hatpic::StiffnessView", "rest positions"));
     m_rest->setLineStyle(QCPGraph::lsNone);
     m_rest->setPen(QPen(colour, 1.5));
     // Edited: filled; the device's: hollow, a little larger, so both read where they coincide.

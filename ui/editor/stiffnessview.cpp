@@ -210,14 +210,11 @@ void StiffnessView::updateNames()
 {
     // With effects the torques are τ_rec + τ_fx; without, the names are as they always were.
     const bool fx = effectsShown();
-    m_torqueRect->axis(QCPAxis::atLeft)
-        ->setLabel(fx ? tr("τ_rec + τ_det + τ_wall [N·m]") : tr("τ_rec [N·m]"));
+    m_torqueRect->axis(QCPAxis::atLeft)->setLabel(fx ? tr("static τ [N·m]") : tr("τ_rec [N·m]"));
     if (m_replaying)
-        m_point->setName(fx ? tr("at the playhead (θ, τ_rec + τ_fx)")
-                            : tr("at the playhead (θ, τ_rec)"));
+        m_point->setName(fx ? tr("playhead (θ, τ_rec + τ_fx)") : tr("at the playhead (θ, τ_rec)"));
     else
-        m_point->setName(fx ? tr("live (θ, measured τ_rec + τ_fx)")
-                            : tr("live (θ, measured τ_rec)"));
+        m_point->setName(fx ? tr("live (θ, τ_rec + τ_fx)") : tr("live (θ, measured τ_rec)"));
     QCPGraph *rest = m_editedMarks->restPositions();
     if (rest->visible() && !m_legend->hasItemWithPlottable(rest)) {
         rest->addToLegend(m_legend);

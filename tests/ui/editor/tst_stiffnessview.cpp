@@ -539,7 +539,7 @@ void TestStiffnessView::namesSayWhatIsDrawn()
     QCOMPARE(view.torqueGraph()->valueAxis()->label(), u"τ_rec [N·m]"_s);
     QVERIFY(!view.operatingPointGraph()->name().contains(u"τ_fx"_s));
     view.setEditedEffects(knob());
-    QCOMPARE(view.torqueGraph()->valueAxis()->label(), u"τ_rec + τ_det + τ_wall [N·m]"_s);
+    QCOMPARE(view.torqueGraph()->valueAxis()->label(), u"static τ [N·m]"_s);
     QVERIFY(view.operatingPointGraph()->name().contains(u"τ_rec + τ_fx"_s));
     view.setReplaying(true);
     QVERIFY(view.operatingPointGraph()->name().contains(u"playhead"_s));
