@@ -44,8 +44,8 @@ inline constexpr std::array<SampleColumn, 11> kSampleColumns = {{
      &Sample::tau_fx},
 }};
 
-//! The quantities a plot shows (theta … p_ref) are the columns from this one on, in order
-//! (tau_fx, after the flags, is not one of them yet).
+//! The quantities a plot shows (theta … p_ref) are the columns from this one on, in order;
+//! the plots show tau_fx, after the flags, too.
 inline constexpr std::size_t kFirstQuantityColumn = 1;
 inline constexpr std::size_t kQuantityColumnCount = 8;
 

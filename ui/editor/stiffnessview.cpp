@@ -1,5 +1,7 @@
 #include "editor/stiffnessview.h"
 
+#include "editor/staticcurves.h"
+#include "model/staticcurve.h"
 #include "model/stiffness.h"
 
 #include "plots/fadingtrail.h"
@@ -67,13 +69,16 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
         return g;
     };
     QPen edited(kCurveColour, 2.0);
-    QPen device(kCurveColour.darker(140), 1.5, Qt::DashLine);
+    // The same colour, dashed (palette.h): a darker shade was faint on the dark theme.
+    QPen device(kCurveColour, 1.5, Qt::DashLine);
     m_otherTorque = graph(m_torqueRect, edited, QString());
     m_otherStiffness = graph(m_stiffnessRect, edited, QString());
     m_deviceTorque = graph(m_torqueRect, device, tr("device"));
     m_deviceStiffness = graph(m_stiffnessRect, device, tr("device"));
     m_torque = graph(m_torqueRect, edited, tr("edited"));
     m_stiffness = graph(m_stiffnessRect, edited, tr("edited"));
+    m_deviceMarks = std::make_unique<EffectMarks>(m_plot, m_torqueRect, m_stiffnessRect, true);
+    m_editedMarks = std::make_unique<EffectMarks>(m_plot, m_torqueRect, m_stiffnessRect, false);
     m_trail = std::make_unique<FadingTrail>(
         m_torqueRect->axis(QCPAxis::atBottom), m_torqueRect->axis(QCPAxis::atLeft),
         palette::channel(Channel::Tau), tr("τ (measured), last %1 s").arg(kTrailSeconds));
@@ -149,7 +154,11 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
                           "(grey) and notch band (amber), as in the time plots. Dotted red: "
                           "±tau_limit. The dot is the "
                           "live knob angle and the measured re-centering torque. With two "
-                          "profile slots: A crimson, B olive, the edited one wider."));
+                          "profile slots: A crimson, B olive, the edited one wider. With "
+                          "effects, the top curve is the static torque τ_rec + τ_det + τ_wall "
+                          "(at rest: no wall damping, no vibration), the dot adds the measured "
+                          "τ_fx, gold discs (circles: the device's) mark the detents' rest "
+                          "positions and gold lines the walls; the bottom curve stays K_rec."));
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -184,15 +193,42 @@ void StiffnessView::updateTrail(const PlotPanel *panel)
 
 void StiffnessView::setReplaying(bool replaying)
 {
+    m_replaying = replaying;
     m_deviceTorque->setName(replaying ? tr("recording") : tr("device"));
     m_deviceStiffness->setName(m_deviceTorque->name());
-    m_point->setName(replaying ? tr("at the playhead (θ, τ_rec)") : tr("live (θ, measured τ_rec)"));
+    updateNames();
     requestReplot();
 }
 
-void StiffnessView::setComparison(const std::optional<DeviceParams> &other, int activeSlot)
+bool StiffnessView::effectsShown() const
+{
+    return shapesStaticTorque(m_editedEffects) || (m_other && shapesStaticTorque(m_otherEffects)) ||
+           (m_device && m_deviceEffects && shapesStaticTorque(*m_deviceEffects));
+}
+
+void StiffnessView::updateNames()
+{
+    // With effects the torques are τ_rec + τ_fx; without, the names are as they always were.
+    const bool fx = effectsShown();
+    m_torqueRect->axis(QCPAxis::atLeft)->setLabel(fx ? tr("static τ [N·m]") : tr("τ_rec [N·m]"));
+    if (m_replaying)
+        m_point->setName(fx ? tr("playhead (θ, τ_rec + τ_fx)") : tr("at the playhead (θ, τ_rec)"));
+    else
+        m_point->setName(fx ? tr("live (θ, τ_rec + τ_fx)") : tr("live (θ, measured τ_rec)"));
+    QCPGraph *rest = m_editedMarks->restPositions();
+    if (rest->visible() && !m_legend->hasItemWithPlottable(rest)) {
+        rest->addToLegend(m_legend);
+        m_legend->itemWithPlottable(rest)->setMargins(QMargins(2, 1, 2, 3));
+    } else if (!rest->visible()) {
+        rest->removeFromLegend(m_legend);
+    }
+}
+
+void StiffnessView::setComparison(const std::optional<DeviceParams> &other, int activeSlot,
+                                  const EffectParams &otherEffects)
 {
     m_other = other;
+    m_otherEffects = otherEffects;
     m_activeSlot = activeSlot == 1 ? 1 : 0;
     updateComparisonStyle();
     rebuild();
@@ -246,42 +282,15 @@ double StiffnessView::halfRange(const DeviceParams &params)
     return std::isfinite(r) ? std::min(r, kPi / 2) : kPi / 2;
 }
 
-QVector<double> StiffnessView::sampleAngles(const DeviceParams &p, double center, double halfWidth)
+double StiffnessView::halfRange(const DeviceParams &params, const EffectParams &effects)
 {
-    QVector<double> x;
-    x.reserve(kUniformSamples + 16);
-    const double lo = center - halfWidth;
-    const double hi = center + halfWidth;
-    for (int i = 0; i + 1 < kUniformSamples; ++i)
-        x << lo + (hi - lo) * i / (kUniformSamples - 1);
-    x << hi; // exactly, not lo + (hi − lo)
-    auto add = [&](double theta) {
-        if (std::isfinite(theta) && theta >= lo && theta <= hi)
-            x << theta;
-    };
-    for (double sign : {-1.0, 1.0}) {
-        add(p.theta0 + sign * p.Q_dz);
-        if (p.Q_dz > 0 && std::isfinite(p.Q_dz)) {
-            // The jump at the dead-zone edge: the first angle in the notch band and the last
-            // one in the dead zone, adjacent doubles, so the jump is drawn vertical. (θ0 ± Q_dz
-            // itself may round to either side.)
-            const double outward = sign * std::numeric_limits<double>::infinity();
-            double notch = p.theta0 + sign * p.Q_dz;
-            for (int i = 0; i < 8 && stiffnessZone(p, notch) == StiffnessZone::DeadZone; ++i)
-                notch = std::nextafter(notch, outward);
-            double inside = std::nextafter(notch, p.theta0);
-            for (int i = 0; i < 8 && stiffnessZone(p, inside) != StiffnessZone::DeadZone; ++i)
-                inside = std::nextafter(inside, p.theta0);
-            add(notch);
-            add(inside);
-        }
-        add(p.theta0 + sign * p.N);
-        add(p.theta0 + sign * 2.0 * p.N);
-    }
-    add(p.theta0);
-    std::sort(x.begin(), x.end());
-    x.erase(std::unique(x.begin(), x.end()), x.end());
-    return x;
+    return std::max(halfRange(params), effectsHalfRange(effects));
+}
+
+QVector<double> StiffnessView::sampleAngles(const DeviceParams &p, double center, double halfWidth,
+                                            const EffectParams &effects)
+{
+    return staticCurveAngles(p, center, halfWidth, effects, kUniformSamples);
 }
 
 void StiffnessView::setEditedParams(const DeviceParams &params)
@@ -293,6 +302,18 @@ void StiffnessView::setEditedParams(const DeviceParams &params)
 void StiffnessView::setDeviceParams(const std::optional<DeviceParams> &params)
 {
     m_device = params;
+    rebuild();
+}
+
+void StiffnessView::setEditedEffects(const EffectParams &effects)
+{
+    m_editedEffects = effects;
+    rebuild();
+}
+
+void StiffnessView::setDeviceEffects(const std::optional<EffectParams> &effects)
+{
+    m_deviceEffects = effects;
     rebuild();
 }
 
@@ -329,17 +350,18 @@ double StiffnessView::scale() const
     return m_degrees ? 180.0 / kPi : 1.0;
 }
 
-void StiffnessView::fillCurves(const DeviceParams &params, QCPGraph *torque, QCPGraph *stiffness,
-                               double center, double halfWidth)
+void StiffnessView::fillCurves(const DeviceParams &params, const EffectParams &effects,
+                               QCPGraph *torque, QCPGraph *stiffness, double center,
+                               double halfWidth)
 {
-    const QVector<double> angles = sampleAngles(params, center, halfWidth);
+    const QVector<double> angles = sampleAngles(params, center, halfWidth, effects);
     QVector<double> keys, tau, k;
     keys.reserve(angles.size());
     tau.reserve(angles.size());
     k.reserve(angles.size());
     for (double theta : angles) {
         keys << theta * scale();
-        tau << recenteringTorque(params, theta);
+        tau << staticTorque(params, effects, theta); // τ_rec exactly with default effects
         k << recenteringStiffness(params, theta);
     }
     torque->setData(keys, tau, true);
@@ -349,17 +371,21 @@ void StiffnessView::fillCurves(const DeviceParams &params, QCPGraph *torque, QCP
 void StiffnessView::rebuild()
 {
     const double center = m_edited.theta0;
-    const double half =
-        m_other ? std::max(halfRange(m_edited), halfRange(*m_other)) : halfRange(m_edited);
-    fillCurves(m_edited, m_torque, m_stiffness, center, half);
+    const EffectParams deviceEffects = m_deviceEffects.value_or(EffectParams{});
+    double half = halfRange(m_edited, m_editedEffects);
+    if (m_other)
+        half = std::max(half, halfRange(*m_other, m_otherEffects));
+    if (m_device) // the device's effects in sight too (its curve alone keeps the edited range)
+        half = std::max(half, std::min(effectsHalfRange(deviceEffects), kPi));
+    fillCurves(m_edited, m_editedEffects, m_torque, m_stiffness, center, half);
     if (m_other) {
-        fillCurves(*m_other, m_otherTorque, m_otherStiffness, center, half);
+        fillCurves(*m_other, m_otherEffects, m_otherTorque, m_otherStiffness, center, half);
     } else {
         m_otherTorque->data()->clear();
         m_otherStiffness->data()->clear();
     }
     if (m_device) {
-        fillCurves(*m_device, m_deviceTorque, m_deviceStiffness, center, half);
+        fillCurves(*m_device, deviceEffects, m_deviceTorque, m_deviceStiffness, center, half);
     } else {
         m_deviceTorque->data()->clear();
         m_deviceStiffness->data()->clear();
@@ -392,6 +418,10 @@ void StiffnessView::rebuild()
     if (m_tauLimit > 0 && m_tauLimit < 2.0 * tauMax)
         tauMax = std::max(tauMax, m_tauLimit);
     tauMax = std::max(tauMax, 1e-3) * 1.15;
+    // A stiff wall's spring grows far beyond what the device renders (it clamps at tau_limit):
+    // with effects the axis stops at 1.5 × tau_limit, so the notch and the detents stay legible.
+    if (m_tauLimit > 0 && effectsShown())
+        tauMax = std::min(tauMax, 1.5 * m_tauLimit);
     m_torqueRect->axis(QCPAxis::atLeft)->setRange(-tauMax, tauMax);
     m_stiffnessRect->axis(QCPAxis::atLeft)->setRange(0, std::max(kMax, 1e-3) * 1.15);
 
@@ -402,6 +432,11 @@ void StiffnessView::rebuild()
     m_limitHigh->setVisible(m_tauLimit > 0);
     m_limitLow->setVisible(m_tauLimit > 0);
 
+    m_editedMarks->update(m_edited, m_editedEffects, center - half, center + half, scale());
+    m_deviceMarks->update(m_device.value_or(DeviceParams{}),
+                          m_device ? m_deviceEffects : std::nullopt, center - half, center + half,
+                          scale());
+    updateNames();
     updateShading();
     updateOperatingPoint();
     requestReplot();

@@ -1,7 +1,11 @@
-// τ_rec(θ) and K_rec(θ) of the edited parameters (solid) and of the device (dashed), with the
-// live operating point (θ, measured τ_rec): the dead zone, the notch and the slopes being tuned.
+// The static torque τ_rec + τ_det + τ_wall (ω = 0) and K_rec over θ of the edited parameters
+// and effects (solid) and of the device's (dashed), with the detents' rest positions and the
+// walls marked, and the live operating point (θ, measured τ_rec + τ_fx): the dead zone, the
+// notch, the slopes and the effects being tuned. With the default effects (which render
+// nothing) the curves are τ_rec(θ) and K_rec(θ) alone.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 
 #include <QVector>
@@ -20,6 +24,7 @@ class QTimer;
 
 namespace hatpic {
 
+class EffectMarks;
 class FadingTrail;
 class PlotPanel;
 
@@ -38,7 +43,13 @@ public:
     void setEditedParams(const DeviceParams &params);
     //! The device's parameters, drawn dashed; nullopt hides them.
     void setDeviceParams(const std::optional<DeviceParams> &params);
-    //! Live operating point: knob angle [rad] and measured re-centering torque [N·m].
+    //! The edited effect block: its detents and walls join the edited static torque curve.
+    void setEditedEffects(const EffectParams &effects);
+    //! The device's effect block, drawn with the device's parameters; nullopt (a device
+    //! without the effects capability, or none) draws them without effects.
+    void setDeviceEffects(const std::optional<EffectParams> &effects);
+    //! Live operating point: knob angle [rad] and the measured static torque τ_rec + τ_fx
+    //! (τ_rec alone where the device does not send τ_fx) [N·m].
     void setOperatingPoint(double theta, double tauRec);
     void clearOperatingPoint();
     //! Display only: the θ axis in degrees; the inputs stay SI.
@@ -51,8 +62,10 @@ public:
     void setReplaying(bool replaying);
     //! A/B comparison: the other slot's parameters, drawn beside the edited (active) slot's;
     //! each slot in its own colour (A: τ_rec's crimson, B: palette::kSlotB), labelled "A" and
-    //! "B". nullopt hides them (and the edited curve is "edited" again).
-    void setComparison(const std::optional<DeviceParams> &other, int activeSlot);
+    //! "B". nullopt hides them (and the edited curve is "edited" again). `otherEffects` are the
+    //! other slot's effects, part of its static torque curve.
+    void setComparison(const std::optional<DeviceParams> &other, int activeSlot,
+                       const EffectParams &otherEffects = EffectParams{});
     //! The τ_rec(θ) / K_rec(θ) curve of slot 0 (A) or 1 (B) while compared, else nullptr.
     QCPGraph *slotTorqueGraph(int slot) const;
     QCPGraph *slotStiffnessGraph(int slot) const;
@@ -65,11 +78,14 @@ public:
 
     //! Half-width of the shown θ range around θ0: max(2.5·N, 0.5) rad, at most π/2 [rad].
     static double halfRange(const DeviceParams &params);
+    //! halfRange(params), widened to show the effects (effectsHalfRange), at most π [rad].
+    static double halfRange(const DeviceParams &params, const EffectParams &effects);
     //! Sorted sample angles [rad] over center ± halfWidth: an even grid plus every breakpoint
     //! of `params` (θ0 ± Q_dz, ± N, ± 2N) and, at ±Q_dz, the last angle inside the dead zone,
-    //! so the jump to K_max is drawn vertical.
-    static QVector<double> sampleAngles(const DeviceParams &params, double center,
-                                        double halfWidth);
+    //! so the jump to K_max is drawn vertical; with `effects`, also the angles that resolve
+    //! every detent and mark the detent range's edges and the walls (effectSampleAngles).
+    static QVector<double> sampleAngles(const DeviceParams &params, double center, double halfWidth,
+                                        const EffectParams &effects = EffectParams{});
 
     QCustomPlot *plot() const { return m_plot; }
     QCPGraph *torqueGraph() const { return m_torque; }
@@ -77,11 +93,18 @@ public:
     QCPGraph *deviceTorqueGraph() const { return m_deviceTorque; }
     QCPGraph *deviceStiffnessGraph() const { return m_deviceStiffness; }
     QCPGraph *operatingPointGraph() const { return m_point; }
+    //! The edited set's and the device's detent rest positions and walls.
+    const EffectMarks &editedMarks() const { return *m_editedMarks; }
+    const EffectMarks &deviceMarks() const { return *m_deviceMarks; }
 
 private:
     void rebuild();
-    void fillCurves(const DeviceParams &params, QCPGraph *torque, QCPGraph *stiffness,
-                    double center, double halfWidth);
+    void fillCurves(const DeviceParams &params, const EffectParams &effects, QCPGraph *torque,
+                    QCPGraph *stiffness, double center, double halfWidth);
+    //! Names the torque axis and the live point after what the curves hold.
+    void updateNames();
+    //! Some drawn set's effects change its static torque (the defaults do not).
+    bool effectsShown() const;
     void updateShading();
     void updateComparisonStyle();
     void updateOperatingPoint();
@@ -94,6 +117,10 @@ private:
     DeviceParams m_edited;
     std::optional<DeviceParams> m_device;
     std::optional<DeviceParams> m_other; //!< the other A/B slot, when compared
+    EffectParams m_editedEffects;
+    std::optional<EffectParams> m_deviceEffects;
+    EffectParams m_otherEffects;
+    bool m_replaying = false;
     int m_activeSlot = 0;
     std::optional<std::pair<double, double>> m_operatingPoint; //!< θ [rad], τ_rec [N·m]
     double m_tauLimit = 0.44;
@@ -111,6 +138,8 @@ private:
     QCPGraph *m_otherStiffness = nullptr;
     QCPLegend *m_legend = nullptr;
     std::unique_ptr<FadingTrail> m_trail;
+    std::unique_ptr<EffectMarks> m_editedMarks;
+    std::unique_ptr<EffectMarks> m_deviceMarks;
     QCPItemStraightLine *m_cursor = nullptr;
     QCPItemStraightLine *m_limitHigh = nullptr;
     QCPItemStraightLine *m_limitLow = nullptr;

@@ -23,6 +23,14 @@ QString channelLabel(Channel channel)
         return QStringLiteral("v_ref");
     case Channel::PRef:
         return QStringLiteral("p_ref");
+    case Channel::TauFx:
+        return QStringLiteral("τ_fx");
+    case Channel::TauDet:
+        return QStringLiteral("τ_det");
+    case Channel::TauWall:
+        return QStringLiteral("τ_wall");
+    case Channel::TauVib:
+        return QStringLiteral("τ_vib");
     }
     return {};
 }

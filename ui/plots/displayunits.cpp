@@ -26,6 +26,10 @@ QString DisplayUnits::unit(Channel channel) const
     case Channel::TauRec:
     case Channel::TauExt:
     case Channel::TauTotal:
+    case Channel::TauFx:
+    case Channel::TauDet:
+    case Channel::TauWall:
+    case Channel::TauVib:
         return QStringLiteral("N·m");
     default:
         break;

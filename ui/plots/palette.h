@@ -1,6 +1,7 @@
 // One colour per quantity, in every view (time plots, legends, stiffness view): θ is blue
 // wherever θ is drawn, the notch band amber wherever the notch band is shaded. Views pick a
-// line style (solid, dashed) to tell variants of one quantity apart, never another colour.
+// line style (solid, dashed) to tell variants of one quantity apart, never another colour; τ_fx's
+// parts (τ_det, τ_wall, τ_vib) are drawn in τ_fx's colour, each in its own line style.
 // Every colour reads on the light and on the dark theme's plot background alike (contrast at
 // least 3:1 against white and against the dark base, tests/ui/window/tst_theme.cpp), so no
 // colour changes with the theme.
@@ -32,6 +33,12 @@ inline QColor channel(Channel c)
         return {163, 41, 214}; // purple
     case Channel::PRef:
         return {137, 96, 82}; // brown
+    case Channel::TauFx:
+        return {184, 134, 11}; // goldenrod: also the effects' marks (detent rest positions, walls)
+    case Channel::TauDet:      // τ_fx's parts: τ_fx's colour, each in its own line style
+    case Channel::TauWall:     // (plots/plotframe.cpp)
+    case Channel::TauVib:
+        return channel(Channel::TauFx);
     }
     return Qt::black;
 }

@@ -102,6 +102,10 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
     addGraph(Channel::TauRec, PlotKind::Torque, false);
     addGraph(Channel::TauExt, PlotKind::Torque, false);
     addGraph(Channel::TauTotal, PlotKind::Torque, false);
+    addGraph(Channel::TauFx, PlotKind::Torque, false);
+    addGraph(Channel::TauDet, PlotKind::Torque, false);
+    addGraph(Channel::TauWall, PlotKind::Torque, false);
+    addGraph(Channel::TauVib, PlotKind::Torque, false);
     addGraph(Channel::VRef, PlotKind::Reference, false);
     addGraph(Channel::PRef, PlotKind::Reference, true);
     // τ_total = τ_rec + τ_ext lies exactly on τ_rec while τ_ext = 0: τ_rec goes wide underneath,
@@ -109,6 +113,14 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
     graph(Channel::TauRec)->setPen(QPen(palette::channel(Channel::TauRec), 3.0));
     graph(Channel::TauTotal)->setPen(QPen(palette::channel(Channel::TauTotal), 1.0, Qt::DashLine));
     graph(Channel::Omega)->setVisible(false);
+    // τ_fx's parts, off until asked for: τ_fx's colour, each in its own line style.
+    const std::pair<Channel, Qt::PenStyle> parts[] = {{Channel::TauDet, Qt::DashLine},
+                                                      {Channel::TauWall, Qt::DotLine},
+                                                      {Channel::TauVib, Qt::DashDotLine}};
+    for (const auto &[channel, style] : parts) {
+        graph(channel)->setPen(QPen(palette::channel(channel), 1.0, style));
+        graph(channel)->setVisible(false);
+    }
 
     QCPAxisRect *angle = rect(PlotKind::Angle);
     auto makeKey = [&](const QString &name, const QColor &color) {
@@ -210,7 +222,8 @@ void PlotFrame::autoscale(const std::array<DecimationResult, kChannelCount> &ran
     fit(rect(PlotKind::Angle)->axis(QCPAxis::atLeft), lo, hi, kMinSpan[0] * angleScale);
     collect({Channel::Omega});
     fit(rect(PlotKind::Angle)->axis(QCPAxis::atRight), lo, hi, 0.1 * angleScale);
-    collect({Channel::Tau, Channel::TauRec, Channel::TauExt, Channel::TauTotal});
+    collect({Channel::Tau, Channel::TauRec, Channel::TauExt, Channel::TauTotal, Channel::TauFx,
+             Channel::TauDet, Channel::TauWall, Channel::TauVib});
     fit(rect(PlotKind::Torque)->axis(QCPAxis::atLeft), lo, hi, kMinSpan[1]);
     collect({Channel::VRef});
     fit(rect(PlotKind::Reference)->axis(QCPAxis::atLeft), lo, hi,

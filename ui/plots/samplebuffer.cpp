@@ -1,5 +1,7 @@
 #include "plots/samplebuffer.h"
 
+#include "model/staticcurve.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -42,8 +44,18 @@ void SampleBuffer::append(const Sample &sample)
     }
     const auto u = static_cast<std::size_t>(s);
     m_time[u] = t;
-    for (Channel channel : kAllChannels)
-        m_values[channelIndex(channel)][u] = channelValue(sample, channel);
+    for (Channel channel : kAllChannels) {
+        if (isSampleChannel(channel))
+            m_values[channelIndex(channel)][u] = channelValue(sample, channel);
+    }
+    constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+    EffectTorques parts{kUnknown, kUnknown, kUnknown};
+    if (m_effects)
+        parts = splitEffectTorque(*m_effects, m_effectsTheta0, sample.theta, sample.omega,
+                                  sample.tau_fx);
+    m_values[channelIndex(Channel::TauDet)][u] = parts.det;
+    m_values[channelIndex(Channel::TauWall)][u] = parts.wall;
+    m_values[channelIndex(Channel::TauVib)][u] = parts.vib;
     m_flags[u] = sample.flags;
     ++m_appended;
     ++m_generation;
@@ -53,6 +65,12 @@ void SampleBuffer::append(const SampleBatch &batch)
 {
     for (const Sample &sample : batch)
         append(sample);
+}
+
+void SampleBuffer::setEffects(const std::optional<EffectParams> &effects, double theta0)
+{
+    m_effects = effects;
+    m_effectsTheta0 = theta0;
 }
 
 void SampleBuffer::clear()
@@ -70,10 +88,11 @@ Sample SampleBuffer::sample(qsizetype index) const
     Sample s;
     s.t_s = time(index);
     s.t_us = static_cast<quint32>(std::llround(std::fmod(s.t_s * 1e6, 4294967296.0)));
-    for (Channel channel : kAllChannels)
-        s.*channelColumn(channel).value = value(channel, index);
+    for (Channel channel : kAllChannels) {
+        if (isSampleChannel(channel))
+            s.*channelColumn(channel).value = value(channel, index);
+    }
     s.flags = flags(index);
-    s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // not a channel: not kept, so unknown
     return s;
 }
 

@@ -6,10 +6,12 @@
 // to kRestartGap after the newest one, and every later sample of that run keeps the same shift.
 #pragma once
 
+#include "model/effects.h"
 #include "plots/channel.h"
 #include "telemetry/sample.h"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace hatpic {
@@ -25,6 +27,11 @@ public:
     void append(const Sample &sample);
     void append(const SampleBatch &batch);
     void clear();
+
+    //! The effect block and θ0 [rad] that τ_fx's parts (TauDet, TauWall, TauVib) of the samples
+    //! appended from now on are computed with (splitEffectTorque). nullopt (the default):
+    //! unknown, so the parts are NaN; they are NaN too wherever τ_fx is.
+    void setEffects(const std::optional<EffectParams> &effects, double theta0);
 
     qsizetype size() const { return m_size; }
     qsizetype capacity() const { return m_capacity; }
@@ -83,8 +90,10 @@ private:
     std::vector<double> m_time;
     std::array<std::vector<double>, kChannelCount> m_values;
     std::vector<quint16> m_flags;
-    double m_shift = 0;     //!< added to incoming t_s after a clock restart [s]
-    double m_lastInput = 0; //!< last t_s received, before the shift [s]
+    std::optional<EffectParams> m_effects;
+    double m_effectsTheta0 = 0; //!< [rad]
+    double m_shift = 0;         //!< added to incoming t_s after a clock restart [s]
+    double m_lastInput = 0;     //!< last t_s received, before the shift [s]
     bool m_hasInput = false;
     quint64 m_generation = 0;
     quint64 m_appended = 0;

@@ -4,8 +4,19 @@
 #include "recording/replaycontroller.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hatpic {
+
+namespace {
+
+//! What the stiffness view's curve predicts for a knob at rest: τ_rec + τ_fx as measured.
+double measuredStaticTorque(const Sample &s)
+{
+    return std::isnan(s.tau_fx) ? s.tau_rec : s.tau_rec + s.tau_fx;
+}
+
+} // namespace
 
 PlotFeed::PlotFeed(PlotPanel *plots, QObject *parent) : QObject(parent), m_plots(plots)
 {
@@ -45,19 +56,33 @@ void PlotFeed::appendLive(const SampleBatch &batch)
     if (!isReplaying()) {
         m_plots->noteArrivals(batch);
         const Sample &last = batch.constLast();
-        Q_EMIT operatingPoint(last.theta, last.tau_rec);
+        Q_EMIT operatingPoint(last.theta, measuredStaticTorque(last));
     }
 }
 
 void PlotFeed::setLiveDeviceParams(const std::optional<DeviceParams> &params)
 {
     m_liveParams = params;
+    if (!params)
+        setLiveDeviceEffects(std::nullopt);
+    else
+        m_live.setEffects(m_liveEffects, params->theta0); // θ0 may have changed
     if (isReplaying())
         return;
     m_plots->setDeviceParams(params);
     Q_EMIT deviceParamsShown(params);
     if (!params)
         Q_EMIT operatingPointCleared();
+}
+
+void PlotFeed::setLiveDeviceEffects(const std::optional<EffectParams> &effects)
+{
+    m_liveEffects = effects;
+    // τ_fx's parts of the samples from now on; they need θ0, so the device's parameters too.
+    m_live.setEffects(m_liveParams ? effects : std::nullopt,
+                      m_liveParams ? m_liveParams->theta0 : 0.0);
+    if (!isReplaying())
+        Q_EMIT deviceEffectsShown(effects);
 }
 
 void PlotFeed::setLiveHostParams(const HostParams &host)
@@ -129,6 +154,7 @@ void PlotFeed::onReplayActive(bool active)
         m_plots->setHostParams(rec.hasMetadata ? rec.metadata.host : m_liveHost);
         Q_EMIT replayingChanged(true);
         Q_EMIT deviceParamsShown(params);
+        Q_EMIT deviceEffectsShown(rec.hasMetadata ? rec.metadata.effects : std::nullopt);
         onReplayPosition(m_replay->position());
     } else {
         m_plots->setDataEnd(std::nullopt);
@@ -139,6 +165,7 @@ void PlotFeed::onReplayActive(bool active)
         m_plots->setHostParams(m_liveHost);
         Q_EMIT replayingChanged(false);
         Q_EMIT deviceParamsShown(m_liveParams);
+        Q_EMIT deviceEffectsShown(m_liveEffects);
         Q_EMIT operatingPointCleared();
     }
     Q_EMIT pausedChanged();
@@ -152,7 +179,7 @@ void PlotFeed::onReplayPosition(double t)
     m_plots->setDataEnd(t);
     m_plots->setViewEnd(std::max(t, m_replay->startTime() + m_plots->windowLength()));
     if (const std::optional<Sample> s = m_replay->currentSample())
-        Q_EMIT operatingPoint(s->theta, s->tau_rec);
+        Q_EMIT operatingPoint(s->theta, measuredStaticTorque(*s));
 }
 
 } // namespace hatpic

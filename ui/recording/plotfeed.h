@@ -4,6 +4,7 @@
 // operating point other views follow all come from here.
 #pragma once
 
+#include "model/effects.h"
 #include "model/params.h"
 #include "plots/samplebuffer.h"
 #include "telemetry/recording.h"
@@ -33,8 +34,12 @@ public:
     //! The live stream: every batch is kept (also while replaying or paused).
     void appendLive(const SampleBatch &batch);
     const SampleBuffer &liveBuffer() const { return m_live; }
-    //! The connected device's parameters (θ0 and the bands); nullopt: no device.
+    //! The connected device's parameters (θ0 and the bands); nullopt: no device (and so no
+    //! device effects either).
     void setLiveDeviceParams(const std::optional<DeviceParams> &params);
+    //! The connected device's effect block (its read-back); nullopt: none known (a device
+    //! without the effects capability).
+    void setLiveDeviceEffects(const std::optional<EffectParams> &effects);
     //! The editor's host parameters (units of the reference plot; also for a replayed
     //! recording that carries none).
     void setLiveHostParams(const HostParams &host);
@@ -59,7 +64,10 @@ Q_SIGNALS:
     void pausedChanged();
     //! The parameters of what is shown: the device's live, the recording's in replay.
     void deviceParamsShown(const std::optional<hatpic::DeviceParams> &params);
-    //! The knob's state at the newest live sample or at the replay's playhead.
+    //! The effect block of what is shown: the device's live, the recording's in replay.
+    void deviceEffectsShown(const std::optional<hatpic::EffectParams> &effects);
+    //! The knob's state at the newest live sample or at the replay's playhead: θ [rad] and the
+    //! static torque measured, τ_rec + τ_fx (τ_rec alone where τ_fx is not known) [N·m].
     void operatingPoint(double theta, double tauRec);
     void operatingPointCleared();
 
@@ -72,6 +80,7 @@ private:
     SampleBuffer m_live;
     QList<RecordingEvent> m_liveEvents;
     std::optional<DeviceParams> m_liveParams;
+    std::optional<EffectParams> m_liveEffects;
     HostParams m_liveHost;
 };
 

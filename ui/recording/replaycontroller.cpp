@@ -18,6 +18,13 @@ ReplayController::ReplayController(QObject *parent)
 
 ReplayController::~ReplayController() = default;
 
+void ReplayController::setEffectsOf(const Recording &recording, SampleBuffer &buffer)
+{
+    // τ_fx's parts with the block the recording started with (a later push is an event only).
+    if (recording.hasMetadata)
+        buffer.setEffects(recording.metadata.effects, recording.metadata.params.theta0);
+}
+
 bool ReplayController::open(const QString &csvPath, QString *error)
 {
     RecordingReadResult result = readRecording(csvPath);
@@ -36,6 +43,7 @@ bool ReplayController::open(const QString &csvPath, QString *error)
     m_warnings = result.warnings;
     m_path = csvPath;
     m_buffer = std::make_unique<SampleBuffer>(m_recording.samples.size());
+    setEffectsOf(m_recording, *m_buffer);
     m_buffer->append(m_recording.samples);
     m_recording.samples.clear(); // the buffer holds them now
     m_recording.samples.squeeze();
@@ -137,6 +145,7 @@ void ReplayController::placeOverlay()
     for (Sample &sample : moved)
         sample.t_s += m_overlayOffset;
     m_overlay = std::make_unique<SampleBuffer>(moved.size());
+    setEffectsOf(m_overlayRecording, *m_overlay);
     m_overlay->append(moved);
     Q_EMIT overlayChanged();
 }

@@ -78,6 +78,8 @@ Q_SIGNALS:
 private:
     void tick();
     void placeOverlay();
+    //! Gives `buffer` the effect block and θ0 `recording` started with, for τ_fx's parts.
+    static void setEffectsOf(const Recording &recording, SampleBuffer &buffer);
 
     bool m_active = false;
     QString m_path;

@@ -64,7 +64,8 @@ QList<QDockWidget *> addAbDocks(QMainWindow *window, ProfileController *profiles
     auto compare = [profiles, stiffness] {
         const int other = 1 - profiles->activeSlot();
         if (profiles->isSlotUsed(other))
-            stiffness->setComparison(profiles->slotProfile(other).device, profiles->activeSlot());
+            stiffness->setComparison(profiles->slotProfile(other).device, profiles->activeSlot(),
+                                     profiles->slotProfile(other).effects);
         else
             stiffness->setComparison(std::nullopt, profiles->activeSlot());
     };

@@ -223,6 +223,9 @@ void MainWindow::connectParts()
     connect(m_feed, &PlotFeed::operatingPoint, m_stiffness, &StiffnessView::setOperatingPoint);
     connect(m_feed, &PlotFeed::operatingPointCleared, m_stiffness,
             &StiffnessView::clearOperatingPoint);
+    connect(m_client, &DeviceClient::deviceEffectsChanged, m_feed,
+            [this](const EffectParams &effects) { m_feed->setLiveDeviceEffects(effects); });
+    connect(m_feed, &PlotFeed::deviceEffectsShown, m_stiffness, &StiffnessView::setDeviceEffects);
     connect(m_feed, &PlotFeed::replayingChanged, this, &MainWindow::updateActions);
     connect(m_feed, &PlotFeed::pausedChanged, this, &MainWindow::updateActions);
     connect(m_replayBar, &ReplayBar::backToLiveRequested, this, &MainWindow::backToLive);

@@ -124,8 +124,9 @@ void TestMeasure::cursorsGiveDeltaOfEveryVisibleSeries()
     QCOMPARE(r->dt, 0.5);
     QVERIFY(m->dtText().contains(QStringLiteral("Δt = 0.500 s")));
     QVERIFY(m->dtText().contains(QStringLiteral("2 Hz")));
-    // Every visible series (ω is hidden by default), each Δ = value(B) − value(A).
-    QCOMPARE(r->deltas.size(), kChannelCount - 1);
+    // Every visible series (ω and τ_fx's three parts are hidden by default), each
+    // Δ = value(B) − value(A).
+    QCOMPARE(r->deltas.size(), kChannelCount - 4);
     for (const MeasureCursors::Delta &d : r->deltas) {
         const double expected = m_buffer->value(d.channel, 1500) - m_buffer->value(d.channel, 1000);
         QVERIFY2(std::abs(d.delta - expected) < 1e-12, qPrintable(channelLabel(d.channel)));
@@ -138,7 +139,7 @@ void TestMeasure::cursorsGiveDeltaOfEveryVisibleSeries()
     QVERIFY(m_panel->graph(Channel::Tau)->name().contains(QStringLiteral("Δ −0.0250")));
     // Hiding a series drops it.
     m_panel->setChannelVisible(Channel::PRef, false);
-    QCOMPARE(m->readout()->deltas.size(), kChannelCount - 2);
+    QCOMPARE(m->readout()->deltas.size(), kChannelCount - 5);
     m->setEnabled(false);
     QVERIFY(!m->readout());
     m_panel->repaintNow();

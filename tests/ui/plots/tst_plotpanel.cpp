@@ -279,9 +279,17 @@ void TestPlotPanel::oneColourPerQuantity()
     QSet<QRgb> colours;
     for (Channel channel : kAllChannels) {
         QCOMPARE(m_panel->graph(channel)->pen().color(), palette::channel(channel));
-        colours.insert(palette::channel(channel).rgb());
+        if (isSampleChannel(channel))
+            colours.insert(palette::channel(channel).rgb());
     }
-    QCOMPARE(colours.size(), qsizetype(kAllChannels.size()));
+    QCOMPARE(colours.size(), qsizetype(kSampleChannelCount));
+    // τ_fx's parts are variants of τ_fx: its colour, each in a line style of its own.
+    QSet<int> styles{int(m_panel->graph(Channel::TauFx)->pen().style())};
+    for (Channel part : {Channel::TauDet, Channel::TauWall, Channel::TauVib}) {
+        QCOMPARE(palette::channel(part), palette::channel(Channel::TauFx));
+        styles.insert(int(m_panel->graph(part)->pen().style()));
+    }
+    QCOMPARE(styles.size(), 4);
     // τ_total = τ_rec while τ_ext = 0: τ_rec, drawn first, stays visible around and through
     // the dashed τ_total on top.
     const QPen rec = m_panel->graph(Channel::TauRec)->pen();

@@ -178,13 +178,22 @@ void TestSampleBuffer::roundTripsSample()
     s.tau_ext = 0.05;
     s.tau_total = -0.05;
     s.v_ref = 0.15;
+    s.tau_fx = -0.0375;
     s.flags = 0x0203;
     buffer.append(s);
     const Sample back = buffer.sample(0);
     QCOMPARE(back.t_s, s.t_s);
     for (Channel channel : kAllChannels)
         QCOMPARE(channelValue(back, channel), channelValue(s, channel));
+    QCOMPARE(back.tau_fx, -0.0375);
     QCOMPARE(back.flags, s.flags);
+    // A device that does not send τ_fx: unknown (NaN) in, unknown out, never 0.
+    Sample legacy = makeSample(1.5, 0.1);
+    legacy.tau_fx = std::numeric_limits<double>::quiet_NaN();
+    buffer.append(legacy);
+    QVERIFY(std::isnan(buffer.value(Channel::TauFx, 1)));
+    QVERIFY(std::isnan(buffer.sample(1).tau_fx));
+    QCOMPARE(buffer.value(Channel::TauFx, 0), -0.0375);
 }
 
 void TestSampleBuffer::runsCoverIndicesInOrder()

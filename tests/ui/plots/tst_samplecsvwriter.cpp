@@ -45,6 +45,8 @@ void TestSampleCsvWriter::rowsAreTheColumnTablesRows()
     s.flags = 0x0201;
     for (int i = 0; i < 3; ++i) {
         s.t_s = i * 0.001;
+        // τ_fx from a device that sends it, then unknown (a device that does not).
+        s.tau_fx = i < 2 ? 0.0125 : std::numeric_limits<double>::quiet_NaN();
         buffer.append(s);
     }
     QTemporaryDir dir;
@@ -59,13 +61,15 @@ void TestSampleCsvWriter::rowsAreTheColumnTablesRows()
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QByteArray text = file.readAll();
     QCOMPARE(text, expected);
-    // tau_fx is no channel: the buffer does not keep it, so it is written as unknown (empty).
-    QVERIFY(text.contains("\n0.001,0.05,,0,0,0,0,0,0.3333333333333333,513,,\n"));
+    // The buffer keeps tau_fx: its value where the device sent one, empty where it did not.
+    QVERIFY(text.contains("\n0.001,0.05,,0,0,0,0,0,0.3333333333333333,513,0.0125,\n"));
+    QVERIFY(text.contains("\n0.002,0.05,,0,0,0,0,0,0.3333333333333333,513,,\n"));
 }
 
 void TestSampleCsvWriter::channelsAreTheTablesQuantities()
 {
-    // The plots' channels are the table's quantity columns, in order, with their values.
+    // The plots' channels are the table's quantity columns, in order, then tau_fx (after the
+    // flags), with their values.
     Sample s;
     double v = 0.5;
     for (const SampleColumn &column : kSampleColumns) {
@@ -74,7 +78,13 @@ void TestSampleCsvWriter::channelsAreTheTablesQuantities()
         v += 1;
     }
     for (Channel channel : kAllChannels) {
-        const std::size_t column = kFirstQuantityColumn + std::size_t(channelIndex(channel));
+        if (!isSampleChannel(channel)) { // τ_fx's parts: computed, no column, not in a Sample
+            QVERIFY(std::isnan(channelValue(s, channel)));
+            continue;
+        }
+        const std::size_t column = channel == Channel::TauFx
+                                       ? sampleColumnIndex("tau_fx")
+                                       : kFirstQuantityColumn + std::size_t(channelIndex(channel));
         QVERIFY(channelColumn(channel).name == kSampleColumns[column].name);
         QCOMPARE(channelValue(s, channel), 0.5 + double(column));
     }
