@@ -22,7 +22,7 @@ int main(int argc, char *argv[])
             auto *dock = window.findChild<QDockWidget *>(QStringLiteral("experimentsDock"));
             dock->show();
             dock->raise();
-            window.resizeDocks({dock}, {size.height() * 52 / 100}, Qt::Vertical);
+            window.resizeDocks({dock}, {size.height() * 45 / 100}, Qt::Vertical);
             QTimer::singleShot(1500, &window, [&window] {
                 // After the connection, which shows the hand's dock for the simulator.
                 window.findChild<QDockWidget *>(QStringLiteral("simulatorDock"))->hide();

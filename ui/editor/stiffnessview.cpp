@@ -307,6 +307,8 @@ void StiffnessView::setDeviceParams(const std::optional<DeviceParams> &params)
 
 void StiffnessView::setEditedEffects(const EffectParams &effects)
 {
+    if (effects == m_editedEffects)
+        return; // the window calls this on every edit, most of which are parameters
     m_editedEffects = effects;
     rebuild();
 }

@@ -111,6 +111,7 @@ void MainWindow::createParts()
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
     statusBar()->insertPermanentWidget(0, m_simPanel->statusLabel());
     m_stiffness->setEditedParams(m_editor->params());
+    m_stiffness->setEditedEffects(m_editor->effects());
     m_feed->setLiveHostParams(m_editor->hostParams());
     m_plotActions = new PlotActions(m_plots, this);
 }
@@ -243,8 +244,10 @@ void MainWindow::connectParts()
     });
 
     connect(m_paramLink, &DeviceParameterLink::commandFinished, this, &MainWindow::showStatus);
-    connect(m_editor, &ParameterEditor::paramsEdited, this,
-            [this] { m_stiffness->setEditedParams(m_editor->params()); });
+    connect(m_editor, &ParameterEditor::paramsEdited, this, [this] {
+        m_stiffness->setEditedEffects(m_editor->effects());
+        m_stiffness->setEditedParams(m_editor->params());
+    });
     connect(m_editor, &ParameterEditor::angleInDegreesChanged, m_actions->degrees,
             &QAction::setChecked);
     connect(m_profiles, &ProfileController::titleChanged, this, &QWidget::setWindowTitle);
