@@ -65,7 +65,9 @@ PtyProgram::PtyProgram(QCoreApplication &app, const char *program, const QString
 {
     QCoreApplication::setApplicationName(QLatin1String(program));
     QCoreApplication::setApplicationVersion(QStringLiteral("0.1"));
-    m_parser.setApplicationDescription(description);
+    m_parser.setApplicationDescription(description +
+                                       QStringLiteral(" Prints the terminal's path as the first "
+                                                      "line, then runs until SIGINT or SIGTERM."));
 }
 
 void PtyProgram::add(SharedOption option, const char *help)

@@ -35,7 +35,8 @@ public:
     static constexpr int kExitBadOptions = 4;   //!< one sentence on stderr
     static constexpr double kMaxRateHz = 20000; //!< highest --rate accepted [Hz]
 
-    //! `program` names the program in every sentence; `description` heads --help.
+    //! `program` names the program in every sentence; `description` heads --help, followed by
+    //! what all of them do ("Prints the terminal's path as the first line, …").
     PtyProgram(QCoreApplication &app, const char *program, const QString &description);
 
     //! Adds a shared option; `help` words it this program's way where the meaning differs

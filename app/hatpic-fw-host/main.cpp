@@ -78,9 +78,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     PtyProgram program(app, "hatpic-fw-host",
                        QStringLiteral("The HATPIC firmware on a PC: drives an STS3032 on a serial "
-                                      "port and serves protocol v2 on a pseudo-terminal. Prints "
-                                      "the terminal's path as the first line, then runs until "
-                                      "SIGINT or SIGTERM."));
+                                      "port and serves protocol v2 on a pseudo-terminal."));
     const auto servo = program.add("servo", "Serial device of the servo bus (required).", "PATH");
     const auto baud = program.add("servo-baud", "Bus baud rate (default 1000000).", "N", "1000000");
     program.add(SharedOption::ServoId, "Servo id, 0…253 (default 1).");

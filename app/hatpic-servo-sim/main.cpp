@@ -24,8 +24,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     PtyProgram program(app, "hatpic-servo-sim",
                        QStringLiteral("Emulated STS3032 servo (bus of servo.md) on a "
-                                      "pseudo-terminal. Prints the terminal's path as the first "
-                                      "line, then runs until SIGINT or SIGTERM."));
+                                      "pseudo-terminal."));
     program.add(SharedOption::Hand);
     program.add(SharedOption::Seed, "Seed of the load-reading noise.");
     program.add(SharedOption::ServoId, "Servo id on the bus, 0…253 (default 1).");

@@ -62,9 +62,7 @@ int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     PtyProgram program(app, "hatpic-sim",
-                       QStringLiteral("Simulated HATPIC joystick on a pseudo-terminal. Prints the "
-                                      "terminal's path as the first line, then runs until SIGINT "
-                                      "or SIGTERM."));
+                       QStringLiteral("Simulated HATPIC joystick on a pseudo-terminal."));
     const auto protocol =
         program.add("protocol", "Wire protocol: v2 or legacy.", "v2|legacy", "v2");
     program.add(SharedOption::Rate);
