@@ -1,35 +1,144 @@
-// The start-up every program behind a pseudo-terminal shares (hatpic-sim, hatpic-fw-host,
-// hatpic-servo-sim): start the host, make the --link symlink, print the terminal's path as the
-// first stdout line.
+// What every program behind a pseudo-terminal shares (hatpic-sim, hatpic-fw-host,
+// hatpic-servo-sim): the command line (the options two or more of them take, with one name,
+// value name, default, bound and sentence each, plus the program's own options), the exit
+// codes, and the start-up: start the host, make the --link symlink, print the terminal's path
+// as the first stdout line.
 #pragma once
 
+#include "link/faultinjector.h"
+#include "sim/handinput.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
 #include <QString>
 
+#include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <optional>
+
+class QCoreApplication;
 
 namespace hatpic {
 
-//! Starts `host` (SimulatorHost, FirmwareHost, ServoBusHost: start(), createLink(), stop(),
-//! slavePath()) and, when `link` is set, makes the symlink. On failure `printError` gets the
-//! one sentence, the host is stopped, and the result is false. On success the slave's path
-//! goes to stdout as the first line, flushed.
-template<typename Host, typename PrintError>
-bool serveOnPseudoTerminal(Host &host, const QString &link, PrintError printError)
+//! The options that more than one pty program takes (see kSharedOptions in ptyprogram.cpp).
+enum class SharedOption { Hand, Rate, Seed, ServoId, CenterTick, State, Faults, Link };
+
+//! One pty program's command line and start-up. Add the options in --help order, parse(),
+//! read them; every reader prints its one sentence ("PROGRAM: …" on stderr) and returns false
+//! on a bad value, and leaves its output as it is when the option is absent and has no default.
+class PtyProgram
 {
-    if (const QString error = host.start(); !error.isEmpty()) {
-        printError(error);
-        return false;
+public:
+    static constexpr int kExitOk = 0;
+    static constexpr int kExitFailure = 1;      //!< runtime failure (no pty, no link, no servo)
+    static constexpr int kExitBadOptions = 4;   //!< one sentence on stderr
+    static constexpr double kMaxRateHz = 20000; //!< highest --rate accepted [Hz]
+
+    //! `program` names the program in every sentence; `description` heads --help, followed by
+    //! what all of them do ("Prints the terminal's path as the first line, …").
+    PtyProgram(QCoreApplication &app, const char *program, const QString &description);
+
+    //! Adds a shared option; `help` words it this program's way where the meaning differs
+    //! (required for the options that have no shared help text: seed, servo-id, center-tick,
+    //! faults).
+    void add(SharedOption option, const char *help = nullptr);
+    //! Adds an option of this program's own.
+    QCommandLineOption add(const char *name, const char *help, const char *valueName = nullptr,
+                           const char *fallback = nullptr);
+
+    //! Parses the arguments. --help prints the help and exits 0; an unknown option, a missing
+    //! value or a positional argument gets its sentence and false.
+    bool parse();
+    bool isSet(const QCommandLineOption &option) const { return m_parser.isSet(option); }
+    QString value(const QCommandLineOption &option) const { return m_parser.value(option); }
+
+    bool readHand(HandInput &hand) const;
+    bool readRate(double &hz) const;
+    //! Into quint64 (SimulatedDevice, FirmwareHost) or std::uint64_t (ServoBusHost).
+    template<typename Unsigned> bool readSeed(Unsigned &seed) const
+    {
+        return assign(seedValue(), seed);
     }
-    if (!link.isEmpty()) {
-        if (const QString error = host.createLink(link); !error.isEmpty()) {
+    bool readServoId(std::uint8_t &id) const;
+    bool readCenterTick(std::int32_t &tick) const;
+    //! `RegularFile` also refuses an existing pipe, device or folder, which would block open()
+    //! before the signal handling runs.
+    enum class StateCheck { NameOnly, RegularFile };
+    bool readStateFile(QString &file, StateCheck check) const;
+    bool readFaults(FaultSpec &faults) const;
+    //! The --link path, kept for serve().
+    bool readLink();
+    //! `text` as a whole number from `low` to `high`, else the sentence naming `what`.
+    std::optional<qint64> wholeNumber(const QString &text, qint64 low, qint64 high,
+                                      const char *what) const;
+
+    //! "PROGRAM: sentence" on stderr.
+    void printError(const QString &sentence) const;
+    //! `report` runs on each SIGUSR1 (reportOnSignal); false after the sentence.
+    bool reportOnSignal(std::function<void()> report) const;
+
+    //! Makes SIGINT/SIGTERM quit the event loop (quitOnSignals), then starts `host`
+    //! (SimulatorHost, FirmwareHost, ServoBusHost: start(), createLink(), stop(), slavePath())
+    //! and, when --link was given, makes the symlink. On failure the one sentence is printed,
+    //! the host is stopped, and the result is false. On success the slave's path goes to stdout
+    //! as the first line, flushed.
+    template<typename Host> bool serve(Host &host) const
+    {
+        if (!quitOnSignals())
+            return false;
+        if (const QString error = host.start(); !error.isEmpty()) {
             printError(error);
-            host.stop();
             return false;
         }
+        if (!m_link.isEmpty()) {
+            if (const QString error = host.createLink(m_link); !error.isEmpty()) {
+                printError(error);
+                host.stop();
+                return false;
+            }
+        }
+        std::fprintf(stdout, "%s\n", qPrintable(host.slavePath()));
+        std::fflush(stdout);
+        return true;
     }
-    std::fprintf(stdout, "%s\n", qPrintable(host.slavePath()));
-    std::fflush(stdout);
-    return true;
-}
+
+    //! The exit code for what QCoreApplication::exec() returned.
+    static int exitCode(int loopCode) { return loopCode == 0 ? kExitOk : kExitFailure; }
+
+private:
+    //! `out` = `value` when there is one.
+    template<typename Out, typename Value>
+    static bool assign(const std::optional<Value> &value, Out &out)
+    {
+        if (value)
+            out = Out(*value);
+        return value.has_value();
+    }
+    bool quitOnSignals() const; //!< false after the sentence
+    std::optional<quint64> seedValue() const;
+    //! `parse(text, &error)` (HandInput::parse, FaultSpec::parse) into `out`, else the error.
+    template<typename Value>
+    bool parseInto(const QString &text, std::optional<Value> (*parse)(const QString &, QString *),
+                   Value &out) const
+    {
+        QString error;
+        const std::optional<Value> parsed = parse(text, &error);
+        if (!parsed) {
+            printError(error);
+            return false;
+        }
+        out = *parsed;
+        return true;
+    }
+    QString optionValue(SharedOption option) const;
+    bool optionIsSet(SharedOption option) const;
+
+    QCoreApplication &m_app;
+    const char *m_program;
+    QCommandLineParser m_parser;
+    QCommandLineOption m_help;
+    QString m_link;
+};
 
 } // namespace hatpic

@@ -1,7 +1,9 @@
 #include "editor/derivedfiguresview.h"
 
 #include "plots/palette.h"
+#include "plots/plottheme.h"
 
+#include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -16,6 +18,8 @@ namespace hatpic {
 using namespace Qt::StringLiterals;
 
 namespace {
+
+constexpr double kWarningTint = 0.15; //!< share of kWarningFrame in a warning's background
 
 QString num(double v, int digits = 3)
 {
@@ -38,9 +42,6 @@ QLabel *warningLabel(QWidget *parent, const QString &name)
     auto *label = new QLabel(parent);
     label->setObjectName(name);
     label->setWordWrap(true);
-    label->setStyleSheet(
-        QStringLiteral("QLabel { background: #fff3e0; color: #8a4b00; border: 1px solid #f57c00;"
-                       " border-radius: 4px; padding: 4px; }"));
     label->hide();
     return label;
 }
@@ -75,7 +76,8 @@ DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
     auto pair = [&](int row, int column, const QString &name, QWidget *value, int span = 1) {
         auto *label = new QLabel(name, this);
         label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        label->setStyleSheet(QStringLiteral("color: gray;"));
+        // Quieter than the figures, in either theme: the palette's secondary text.
+        label->setForegroundRole(QPalette::PlaceholderText);
         form->addWidget(label, row, 2 * column);
         form->addWidget(value, row, 2 * column + 1, 1, span);
     };
@@ -98,7 +100,30 @@ DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_saturation);
     layout->addWidget(m_ringing);
     layout->addWidget(m_chatter);
+    applyPalette();
     refresh();
+}
+
+void DerivedFiguresView::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        applyPalette();
+}
+
+void DerivedFiguresView::applyPalette()
+{
+    // The warnings: the window's text on the window's colour tinted with their frame's orange,
+    // framed in it, so they stand out and read alike on the light and the dark theme.
+    const QPalette &p = palette();
+    const QString style =
+        QStringLiteral("QLabel { background: %1; color: %2; border: 1px solid %3;"
+                       " border-radius: 4px; padding: 4px; }")
+            .arg(plottheme::mix(palette::kWarningFrame, p.color(QPalette::Window), kWarningTint)
+                     .name(),
+                 p.color(QPalette::WindowText).name(), palette::kWarningFrame.name());
+    for (QLabel *warning : {m_saturation, m_ringing, m_chatter})
+        warning->setStyleSheet(style);
 }
 
 void DerivedFiguresView::setFigures(const DerivedFigures &figures, bool valid)
@@ -186,9 +211,12 @@ void DerivedFiguresView::refresh()
     const double ratio = f.tauLimit > 0 ? f.peakTauRec / f.tauLimit : 0.0;
     m_peakBar->setValue(static_cast<int>(std::lround(std::clamp(ratio, 0.0, 1.0) * 100)));
     m_peakBar->setFormat(tr("%1 % of tau_limit").arg(std::lround(ratio * 100)));
-    m_peakBar->setStyleSheet(f.saturates()
-                                 ? QStringLiteral("QProgressBar::chunk { background: #d32f2f; }")
-                                 : QStringLiteral("QProgressBar::chunk { background: #43a047; }"));
+    // The bar is drawn from the palette (groove Base, chunk Highlight); a saturating peak
+    // takes tau_limit's red.
+    QPalette bar;
+    if (f.saturates())
+        bar.setColor(QPalette::Highlight, palette::kLimit);
+    m_peakBar->setPalette(bar);
 
     m_saturation->setVisible(f.saturates());
     if (f.saturates()) {

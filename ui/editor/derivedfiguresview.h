@@ -32,8 +32,12 @@ public:
     bool isShowingChatter() const;
     QString warningText() const; //!< all warnings shown, one per line
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     void refresh();
+    void applyPalette(); //!< the warnings' look from the current palette
 
     DerivedFigures m_figures;
     bool m_valid = false;

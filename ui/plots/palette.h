@@ -60,5 +60,8 @@ inline const QColor kSaturated(211, 47, 47, 40); //!< samples where tau_limit cl
 inline const QColor kProblemText(229, 57, 53); //!< a rejected value, ringing, a failed push
 inline const QColor kCautionText(170, 122, 0); //!< a value clamped to its range
 inline const QColor kEditedMark(230, 81, 0);   //!< a field edited but not pushed
+//! The frame of the derived figures' warnings (saturates, rings, chatters), and the tint of
+//! their background on the window's colour.
+inline const QColor kWarningFrame(245, 124, 0);
 
 } // namespace hatpic::palette

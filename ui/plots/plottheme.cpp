@@ -7,14 +7,14 @@
 
 namespace hatpic::plottheme {
 
-namespace {
-
 QColor mix(const QColor &a, const QColor &b, double fa)
 {
     return QColor::fromRgbF(float(a.redF() * fa + b.redF() * (1 - fa)),
                             float(a.greenF() * fa + b.greenF() * (1 - fa)),
                             float(a.blueF() * fa + b.blueF() * (1 - fa)));
 }
+
+namespace {
 
 class Follower : public QObject
 {

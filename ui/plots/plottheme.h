@@ -18,6 +18,8 @@ inline const QColor kHiddenLegendText(160, 160, 160);
 void apply(QCustomPlot *plot, const QPalette &palette);
 //! Applies the plot's palette now and after every palette change.
 void follow(QCustomPlot *plot);
+//! `fa` (0…1) of `a`, the rest of `b`: a theme colour derived from two of the palette's.
+QColor mix(const QColor &a, const QColor &b, double fa);
 //! Whether `palette` is a dark one: its window colour is darker than mid-grey.
 bool isDark(const QPalette &palette);
 

@@ -2,6 +2,7 @@
 // palette and the plots' background, axes and legends with it; every visible text-bearing
 // widget stays readable (its text against its background on a grab, at least 3:1) in both;
 // the data colours read on both plot backgrounds; the choice is saved and restored.
+#include "editor/derivedfiguresview.h"
 #include "plots/palette.h"
 #include "plots/plotpanel.h"
 #include "plots/plottheme.h"
@@ -15,6 +16,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QProgressBar>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
@@ -40,8 +42,8 @@ double contrast(double a, double b)
     return (std::max(a, b) + 0.05) / (std::min(a, b) + 0.05);
 }
 
-//! Contrast of the most contrasting pixel against the most common one (the background).
-double textContrast(const QImage &image)
+//! The most common pixel (a widget's background).
+QRgb mostCommon(const QImage &image, QHash<QRgb, int> *counted = nullptr)
 {
     QHash<QRgb, int> counts;
     for (int y = 0; y < image.height(); ++y) {
@@ -56,11 +58,32 @@ double textContrast(const QImage &image)
             background = it.key();
         }
     }
-    const double lb = luminance(background);
+    if (counted)
+        *counted = counts;
+    return background;
+}
+
+//! Contrast of the most contrasting pixel against the most common one (the background).
+double textContrast(const QImage &image)
+{
+    QHash<QRgb, int> counts;
+    const double lb = luminance(mostCommon(image, &counts));
     double best = 1;
     for (auto it = counts.cbegin(); it != counts.cend(); ++it)
         best = std::max(best, contrast(lb, luminance(it.key())));
     return best;
+}
+
+//! Shows `window` at 1280×720 in the theme `choice`; its theme controller, or null.
+ThemeController *showIn(MainWindow &window, int choice)
+{
+    window.resize(1280, 720);
+    window.show();
+    auto *theme = window.findChild<ThemeController *>(QStringLiteral("themeController"));
+    if (!QTest::qWaitForWindowExposed(&window) || !theme)
+        return nullptr;
+    theme->setChoice(static_cast<ThemeController::Choice>(choice));
+    return theme;
 }
 
 QString textOf(const QWidget *w)
@@ -88,6 +111,8 @@ private Q_SLOTS:
     void widgetsStayReadable_data();
     void widgetsStayReadable();
     void dataColoursReadOnBoth();
+    void derivedFiguresFollowTheTheme_data();
+    void derivedFiguresFollowTheTheme();
     void choiceIsSaved();
 };
 
@@ -162,11 +187,8 @@ void TestTheme::widgetsStayReadable()
 {
     QFETCH(int, choice);
     MainWindow window;
-    window.resize(1280, 720);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    auto *theme = window.findChild<ThemeController *>(QStringLiteral("themeController"));
-    theme->setChoice(static_cast<ThemeController::Choice>(choice));
+    ThemeController *theme = showIn(window, choice);
+    QVERIFY(theme);
     QApplication::processEvents();
     int checked = 0;
     // The plots' legends: their text against their own background.
@@ -222,6 +244,84 @@ void TestTheme::dataColoursReadOnBoth()
         QVERIFY2(contrast(l, luminance(lightWindow)) >= 3.0, qPrintable(c.name()));
         QVERIFY2(contrast(l, luminance(darkWindow)) >= 3.0, qPrintable(c.name()));
     }
+}
+
+void TestTheme::derivedFiguresFollowTheTheme_data()
+{
+    QTest::addColumn<int>("from");
+    QTest::addColumn<int>("to");
+    QTest::newRow("light to dark")
+        << int(ThemeController::Choice::Light) << int(ThemeController::Choice::Dark);
+    QTest::newRow("dark to light")
+        << int(ThemeController::Choice::Dark) << int(ThemeController::Choice::Light);
+}
+
+// The bar under the parameter editor (ω_n, ζ, the peak's bar, the warnings) takes the theme's
+// colours when the theme is switched, and its texts read at least 3:1 on either.
+void TestTheme::derivedFiguresFollowTheTheme()
+{
+    QFETCH(int, from);
+    QFETCH(int, to);
+    MainWindow window;
+    ThemeController *theme = showIn(window, from);
+    QVERIFY(theme);
+    auto *view = window.findChild<DerivedFiguresView *>();
+    QVERIFY(view);
+    // Every warning shown: the peak above tau_limit, ζ below the ringing bound, chatter.
+    DerivedFigures figures{.omega_n = 95,
+                           .zeta = 0.1,
+                           .timeConstant = 0.05,
+                           .peakTauRec = 0.55,
+                           .peakAngle = 1.57,
+                           .tauLimit = 0.44};
+    view->setFigures(figures, true);
+    view->setChatter(12.0, 0.02);
+    theme->setChoice(static_cast<ThemeController::Choice>(to));
+    QApplication::processEvents();
+    QVERIFY(view->isShowingSaturation() && view->isShowingRinging() && view->isShowingChatter());
+    const bool dark = theme->isDark();
+    auto followsTheme = [dark](QRgb background) {
+        return dark ? QColor(background).lightness() < 128 : QColor(background).lightness() > 128;
+    };
+
+    int labels = 0;
+    for (QLabel *label : view->findChildren<QLabel *>()) {
+        if (!label->isVisibleTo(&window) || label->text().isEmpty())
+            continue;
+        const QImage image = label->grab().toImage();
+        const double ratio = textContrast(image);
+        QVERIFY2(
+            ratio >= 3.0,
+            qPrintable(
+                QStringLiteral("\"%1\": contrast %2").arg(label->text()).arg(ratio, 0, 'f', 2)));
+        if (label->objectName().startsWith(QLatin1String("warning_")))
+            QVERIFY2(followsTheme(mostCommon(image)), qPrintable(label->text()));
+        ++labels;
+    }
+    QCOMPARE(labels, 11); // 4 names, 4 figures, 3 warnings
+    const QRect area(view->mapTo(&window, QPoint()), view->size());
+    QVERIFY2(followsTheme(mostCommon(window.grab(area).toImage())), "the view's background");
+
+    auto *bar = view->findChild<QProgressBar *>(QStringLiteral("figure_peak_bar"));
+    QVERIFY(bar);
+    const QImage full = bar->grab().toImage();
+    QVERIFY2(textContrast(full) >= 3.0, "the saturated bar's text");
+    // A peak at 30 % of the limit: the empty part of the groove has the theme's background.
+    figures.peakTauRec = 0.132;
+    view->setFigures(figures, true);
+    QApplication::processEvents();
+    QVERIFY(!view->isShowingSaturation());
+    const QImage part = bar->grab().toImage();
+    QVERIFY2(textContrast(part) >= 3.0, "the bar's text");
+    QVERIFY2(followsTheme(part.pixel(part.width() * 9 / 10, part.height() / 2)),
+             "the bar's groove");
+    // The chunk's colours under the bar's text, from either theme's palette.
+    for (const QPalette &p : {ThemeController::lightPalette(), ThemeController::darkPalette()}) {
+        const double text = luminance(p.color(QPalette::HighlightedText).rgb());
+        QVERIFY(contrast(text, luminance(p.color(QPalette::Highlight).rgb())) >= 3.0);
+        QVERIFY(contrast(text, luminance(palette::kLimit.rgb())) >= 3.0);
+    }
+    theme->setChoice(ThemeController::Choice::System);
 }
 
 void TestTheme::choiceIsSaved()

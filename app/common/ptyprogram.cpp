@@ -1,0 +1,235 @@
+#include "common/ptyprogram.h"
+
+#include "common/quitonsignal.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+#include <utility>
+
+namespace hatpic {
+
+namespace {
+
+constexpr qint64 kMaxServoId = 253;     //!< highest --servo-id (254 is the broadcast id)
+constexpr qint64 kMaxCenterTick = 4095; //!< highest --center-tick (12-bit position)
+
+struct SharedOptionSpec
+{
+    SharedOption option;
+    const char *name;
+    const char *help; //!< nullptr: each program words its own
+    const char *valueName;
+    const char *fallback;
+};
+
+// The table of the shared options: one name, value name, default and (where the programs
+// mean the same) help text each.
+constexpr SharedOptionSpec kSharedOptions[] = {
+    {SharedOption::Hand, "hand",
+     "Operator input: idle, const:T, step:T[:T0], sine:A:F, chirp:A:F0:F1 or hand:ANGLE (N·m, "
+     "Hz, rad).",
+     "SPEC", "idle"},
+    {SharedOption::Rate, "rate", "Control rate [Hz] (default 1000).", "HZ", "1000"},
+    {SharedOption::Seed, "seed", nullptr, "N", "1"},
+    {SharedOption::ServoId, "servo-id", nullptr, "N", "1"},
+    {SharedOption::CenterTick, "center-tick", nullptr, "N", "1000"},
+    {SharedOption::State, "state", "Profile file that SAVE_PARAMS writes and power-up reads.",
+     "FILE", nullptr},
+    {SharedOption::Faults, "faults", nullptr, "SPEC", nullptr},
+    {SharedOption::Link, "link", "Symlink to create to the terminal (removed on exit).", "PATH",
+     nullptr},
+};
+
+const SharedOptionSpec &spec(SharedOption option)
+{
+    for (const SharedOptionSpec &entry : kSharedOptions) {
+        if (entry.option == option)
+            return entry;
+    }
+    Q_UNREACHABLE();
+}
+
+QCommandLineOption makeOption(const char *name, const char *help, const char *valueName,
+                              const char *fallback)
+{
+    return QCommandLineOption(QLatin1String(name), QString::fromUtf8(help),
+                              valueName ? QLatin1String(valueName) : QString(),
+                              fallback ? QLatin1String(fallback) : QString());
+}
+
+} // namespace
+
+PtyProgram::PtyProgram(QCoreApplication &app, const char *program, const QString &description)
+    : m_app(app), m_program(program), m_help(m_parser.addHelpOption())
+{
+    QCoreApplication::setApplicationName(QLatin1String(program));
+    QCoreApplication::setApplicationVersion(QStringLiteral("0.1"));
+    m_parser.setApplicationDescription(description +
+                                       QStringLiteral(" Prints the terminal's path as the first "
+                                                      "line, then runs until SIGINT or SIGTERM."));
+}
+
+void PtyProgram::add(SharedOption option, const char *help)
+{
+    const SharedOptionSpec &entry = spec(option);
+    Q_ASSERT(help || entry.help);
+    m_parser.addOption(
+        makeOption(entry.name, help ? help : entry.help, entry.valueName, entry.fallback));
+}
+
+QCommandLineOption PtyProgram::add(const char *name, const char *help, const char *valueName,
+                                   const char *fallback)
+{
+    QCommandLineOption option = makeOption(name, help, valueName, fallback);
+    m_parser.addOption(option);
+    return option;
+}
+
+bool PtyProgram::parse()
+{
+    if (!m_parser.parse(m_app.arguments())) {
+        QString text = m_parser.errorText();
+        if (!text.endsWith(QLatin1Char('.')))
+            text += QLatin1Char('.');
+        printError(text);
+        return false;
+    }
+    if (m_parser.isSet(m_help))
+        m_parser.showHelp(kExitOk); // exits
+    if (!m_parser.positionalArguments().isEmpty()) {
+        printError(QStringLiteral("Unexpected argument \"%1\"; %2 takes only options.")
+                       .arg(m_parser.positionalArguments().first(), QLatin1String(m_program)));
+        return false;
+    }
+    return true;
+}
+
+QString PtyProgram::optionValue(SharedOption option) const
+{
+    return m_parser.value(QLatin1String(spec(option).name));
+}
+
+bool PtyProgram::optionIsSet(SharedOption option) const
+{
+    return m_parser.isSet(QLatin1String(spec(option).name));
+}
+
+bool PtyProgram::readHand(HandInput &hand) const
+{
+    return parseInto(optionValue(SharedOption::Hand), &HandInput::parse, hand);
+}
+
+bool PtyProgram::readRate(double &hz) const
+{
+    const QString text = optionValue(SharedOption::Rate);
+    bool ok = false;
+    const double rate = text.toDouble(&ok);
+    if (!ok || !(rate >= 1 && rate <= kMaxRateHz)) {
+        printError(QStringLiteral("The control rate \"%1\" must be a number of Hz from 1 to %2.")
+                       .arg(text)
+                       .arg(kMaxRateHz));
+        return false;
+    }
+    hz = rate;
+    return true;
+}
+
+std::optional<quint64> PtyProgram::seedValue() const
+{
+    const QString text = optionValue(SharedOption::Seed);
+    bool ok = false;
+    const quint64 value = text.toULongLong(&ok);
+    if (!ok) {
+        printError(
+            QStringLiteral("The seed \"%1\" must be a non-negative whole number.").arg(text));
+        return std::nullopt;
+    }
+    return value;
+}
+
+bool PtyProgram::readServoId(std::uint8_t &id) const
+{
+    return assign(wholeNumber(optionValue(SharedOption::ServoId), 0, kMaxServoId, "servo id"), id);
+}
+
+bool PtyProgram::readCenterTick(std::int32_t &tick) const
+{
+    return assign(
+        wholeNumber(optionValue(SharedOption::CenterTick), 0, kMaxCenterTick, "center tick"), tick);
+}
+
+bool PtyProgram::readStateFile(QString &file, StateCheck check) const
+{
+    if (!optionIsSet(SharedOption::State))
+        return true;
+    const QString name = optionValue(SharedOption::State);
+    if (name.isEmpty()) {
+        printError(QStringLiteral("The state file name is empty."));
+        return false;
+    }
+    const QFileInfo state(name);
+    if (check == StateCheck::RegularFile && state.exists() && !state.isFile()) {
+        printError(QStringLiteral("The state file \"%1\" is not a regular file (a pipe, a "
+                                  "device or a folder).")
+                       .arg(name));
+        return false;
+    }
+    file = name;
+    return true;
+}
+
+bool PtyProgram::readFaults(FaultSpec &faults) const
+{
+    return !optionIsSet(SharedOption::Faults) ||
+           parseInto(optionValue(SharedOption::Faults), &FaultSpec::parse, faults);
+}
+
+bool PtyProgram::readLink()
+{
+    if (!optionIsSet(SharedOption::Link))
+        return true;
+    m_link = optionValue(SharedOption::Link);
+    if (m_link.isEmpty()) {
+        printError(QStringLiteral("The link path is empty."));
+        return false;
+    }
+    return true;
+}
+
+std::optional<qint64> PtyProgram::wholeNumber(const QString &text, qint64 low, qint64 high,
+                                              const char *what) const
+{
+    bool ok = false;
+    const qint64 value = text.toLongLong(&ok);
+    if (ok && value >= low && value <= high)
+        return value;
+    printError(QStringLiteral("The %1 \"%2\" must be a whole number from %3 to %4.")
+                   .arg(QLatin1String(what), text)
+                   .arg(low)
+                   .arg(high));
+    return std::nullopt;
+}
+
+void PtyProgram::printError(const QString &sentence) const
+{
+    std::fprintf(stderr, "%s: %s\n", m_program, qPrintable(sentence));
+}
+
+bool PtyProgram::quitOnSignals() const
+{
+    if (hatpic::quitOnSignals())
+        return true;
+    printError(QStringLiteral("Cannot set up signal handling."));
+    return false;
+}
+
+bool PtyProgram::reportOnSignal(std::function<void()> report) const
+{
+    if (hatpic::reportOnSignal(std::move(report)))
+        return true;
+    printError(QStringLiteral("Cannot set up signal handling."));
+    return false;
+}
+
+} // namespace hatpic
