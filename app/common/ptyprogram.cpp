@@ -159,7 +159,7 @@ bool PtyProgram::readCenterTick(std::int32_t &tick) const
         wholeNumber(optionValue(SharedOption::CenterTick), 0, kMaxCenterTick, "center tick"), tick);
 }
 
-bool PtyProgram::readStateFile(QString &file, StateCheck check) const
+bool PtyProgram::readStateFile(QString &file) const
 {
     if (!optionIsSet(SharedOption::State))
         return true;
@@ -169,7 +169,7 @@ bool PtyProgram::readStateFile(QString &file, StateCheck check) const
         return false;
     }
     const QFileInfo state(name);
-    if (check == StateCheck::RegularFile && state.exists() && !state.isFile()) {
+    if (state.exists() && !state.isFile()) {
         printError(QStringLiteral("The state file \"%1\" is not a regular file (a pipe, a "
                                   "device or a folder).")
                        .arg(name));

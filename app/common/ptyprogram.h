@@ -62,10 +62,9 @@ public:
     }
     bool readServoId(std::uint8_t &id) const;
     bool readCenterTick(std::int32_t &tick) const;
-    //! `RegularFile` also refuses an existing pipe, device or folder, which would block open()
-    //! before the signal handling runs.
-    enum class StateCheck { NameOnly, RegularFile };
-    bool readStateFile(QString &file, StateCheck check) const;
+    //! Refuses an empty name and an existing pipe, device or folder, which would block open()
+    //! (or fail late) before the signal handling runs.
+    bool readStateFile(QString &file) const;
     bool readFaults(FaultSpec &faults) const;
     //! The --link path, kept for serve().
     bool readLink();

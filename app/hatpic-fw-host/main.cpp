@@ -95,8 +95,7 @@ int main(int argc, char *argv[])
 
     FirmwareHost::Config config;
     if (!program.parse() || !readBusOptions(program, {servo, baud, timeout}, config) ||
-        !program.readRate(config.rateHz) ||
-        !program.readStateFile(config.stateFile, PtyProgram::StateCheck::NameOnly) ||
+        !program.readRate(config.rateHz) || !program.readStateFile(config.stateFile) ||
         !program.readLink() || !program.readFaults(config.faults) ||
         !program.readSeed(config.faultSeed))
         return PtyProgram::kExitBadOptions;

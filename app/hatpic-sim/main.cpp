@@ -82,8 +82,8 @@ int main(int argc, char *argv[])
     config.noise = kLoadNoise;
     if (!program.parse() || !readLinkOptions(program, {protocol, baud, noThrottle}, config) ||
         !program.readHand(config.hand) || !program.readSeed(config.seed) ||
-        !program.readStateFile(config.stateFile, PtyProgram::StateCheck::RegularFile) ||
-        !program.readFaults(config.faults) || !program.readLink())
+        !program.readStateFile(config.stateFile) || !program.readFaults(config.faults) ||
+        !program.readLink())
         return PtyProgram::kExitBadOptions;
 
     SimulatorHost host(config);

@@ -339,6 +339,12 @@ void TestFirmwareHost::badOptions_data()
         << servoSim() << QStringList{u"--hand"_s, u"push"_s} << u"push"_s;
     QTest::newRow("servo-sim center")
         << servoSim() << QStringList{u"--center-tick"_s, u"4096"_s} << u"center tick"_s;
+    // A folder as the state file is refused before anything opens it, as hatpic-sim does
+    // (a pipe would block open()).
+    static QTemporaryDir dir;
+    QTest::newRow("fw-host state is a folder")
+        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--state"_s, dir.path()}
+        << u"not a regular file"_s;
 }
 
 void TestFirmwareHost::badOptions()
