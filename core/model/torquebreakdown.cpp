@@ -13,6 +13,7 @@ TorqueTerms torqueTerms(const DeviceParams &params, const TorqueBalanceInput &in
     t.tauOp = -in.tau;
     t.tauRec = in.tauRec;
     t.tauExt = in.tauExt;
+    t.tauFx = in.tauFx;
     t.clipped = in.saturated ? (in.tauRec + in.tauFx + in.tauExt) - in.tauTotal : 0.0;
     t.residual = t.inertial + t.damping - (t.tauOp + in.tauTotal);
     return t;

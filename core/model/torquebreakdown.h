@@ -38,6 +38,7 @@ struct TorqueTerms
     double tauOp = 0;    //!< −τ, the operator's torque
     double tauRec = 0;   //!< τ_rec
     double tauExt = 0;   //!< τ_ext
+    double tauFx = 0;    //!< τ_fx, the effects' torque
     double clipped = 0;  //!< (τ_rec + τ_fx + τ_ext) − τ_total when saturated, else 0
     //! D_adm·ω̇ + M_adm·ω − (τ_op + τ_total): what eq. (1) leaves unexplained (ω̇ is estimated
     //! from samples, so it is not exactly 0).

@@ -19,7 +19,8 @@ namespace {
 constexpr std::array<TorqueBreakdownView::Term, TorqueBreakdownView::kTermCount> kTerms{
     TorqueBreakdownView::Term::Inertial, TorqueBreakdownView::Term::Damping,
     TorqueBreakdownView::Term::TauOp,    TorqueBreakdownView::Term::TauRec,
-    TorqueBreakdownView::Term::TauExt,   TorqueBreakdownView::Term::Clipped};
+    TorqueBreakdownView::Term::TauExt,   TorqueBreakdownView::Term::TauFx,
+    TorqueBreakdownView::Term::Clipped};
 
 QPen termPen(TorqueBreakdownView::Term term)
 {
@@ -34,6 +35,8 @@ QPen termPen(TorqueBreakdownView::Term term)
         return QPen(palette::channel(Channel::TauRec), 1.5);
     case TorqueBreakdownView::Term::TauExt:
         return QPen(palette::channel(Channel::TauExt), 1.5);
+    case TorqueBreakdownView::Term::TauFx:
+        return QPen(palette::channel(Channel::TauFx), 1.5);
     case TorqueBreakdownView::Term::Clipped:
         return QPen(palette::kLimit, 1.5, Qt::DashLine);
     }
@@ -53,6 +56,8 @@ double termValue(const TorqueTerms &t, TorqueBreakdownView::Term term)
         return t.tauRec;
     case TorqueBreakdownView::Term::TauExt:
         return t.tauExt;
+    case TorqueBreakdownView::Term::TauFx:
+        return t.tauFx;
     case TorqueBreakdownView::Term::Clipped:
         return t.clipped;
     }
@@ -74,6 +79,8 @@ QString TorqueBreakdownView::termLabel(Term term)
         return tr("τ_rec");
     case Term::TauExt:
         return tr("τ_ext");
+    case Term::TauFx:
+        return tr("τ_fx");
     case Term::Clipped:
         return tr("clipped");
     }
@@ -127,6 +134,7 @@ TorqueBreakdownView::TorqueBreakdownView(PlotPanel *panel, QWidget *parent)
     setToolTip(tr("The terms of eq. (1), D_adm·ω̇ + M_adm·ω = τ_op + τ_total, over the time "
                   "plots' range. D_adm is the virtual inertia, M_adm the virtual damping; ω̇ "
                   "is the forward difference of ω; τ_op = −τ is the operator's torque; "
+                  "τ_fx the effects' (detents, walls, cues), where the device reports it; "
                   "clipped: what the tau_limit clamp removed. Shaded: saturated samples, "
                   "where the device clamped τ_total to tau_limit."));
 
@@ -174,11 +182,16 @@ void TorqueBreakdownView::refresh()
             in.tauRec = src->value(Channel::TauRec, i);
             in.tauExt = src->value(Channel::TauExt, i);
             in.tauTotal = src->value(Channel::TauTotal, i);
+            // τ_fx is unknown (NaN) from a device without effects: no term, and none in the sum.
+            const double fx = src->value(Channel::TauFx, i);
+            in.tauFx = std::isfinite(fx) ? fx : 0.0;
             in.saturated = (src->flags(i) & v2::kFlagSaturated) != 0;
             const TorqueTerms terms = torqueTerms(params.value_or(DeviceParams{}), in);
             const double t = src->time(i);
             for (Term term : kTerms) {
                 const bool needsParams = term == Term::Inertial || term == Term::Damping;
+                if (term == Term::TauFx && !std::isfinite(fx))
+                    continue;
                 if (!needsParams || params)
                     data[static_cast<int>(term)].append({t, termValue(terms, term)});
             }

@@ -24,8 +24,8 @@ class TorqueBreakdownView : public QWidget
 {
     Q_OBJECT
 public:
-    enum class Term { Inertial, Damping, TauOp, TauRec, TauExt, Clipped };
-    static constexpr int kTermCount = 6;
+    enum class Term { Inertial, Damping, TauOp, TauRec, TauExt, TauFx, Clipped };
+    static constexpr int kTermCount = 7;
 
     //! Follows `panel` (not owned), refreshing after each of its repaints while visible.
     explicit TorqueBreakdownView(PlotPanel *panel, QWidget *parent = nullptr);

@@ -61,6 +61,7 @@ void TestTorqueBreakdown::clippedIsWhatTheLimitRemoved()
     // With effects: the clamp took what τ_rec + τ_fx + τ_ext exceeded.
     in.tauFx = 0.1;
     QVERIFY(std::abs(torqueTerms(p, in).clipped - 0.36) < 1e-15);
+    QCOMPARE(torqueTerms(p, in).tauFx, 0.1); // a term of its own
     // An effect torque on a sample the clamp left alone is not clipped.
     in.saturated = false;
     in.tauRec = 0.1;

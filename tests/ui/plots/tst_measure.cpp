@@ -19,6 +19,7 @@
 #include <QXmlStreamReader>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 
@@ -78,6 +79,7 @@ private Q_SLOTS:
     void xyViewDrawsTheChosenPair();
     void breakdownMatchesHandComputedTerms();
     void breakdownWithoutParameters();
+    void breakdownShowsTheEffectTorque();
     void exportsPngAtTheChosenSize();
     void exportsSvgThatParses();
     void refusesAnAbsurdSize();
@@ -309,6 +311,34 @@ void TestMeasure::breakdownWithoutParameters()
     QVERIFY(!view.notice().isEmpty());
     QCOMPARE(view.graph(TorqueBreakdownView::Term::Inertial)->data()->size(), 0);
     QVERIFY(view.graph(TorqueBreakdownView::Term::TauRec)->data()->size() > 0);
+}
+
+void TestMeasure::breakdownShowsTheEffectTorque()
+{
+    TorqueBreakdownView view(m_panel.get());
+    view.resize(600, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    // A sample from a device without effects: τ_fx unknown, so no term there and 0 in the sum.
+    Sample unknown = sampleAt(3000);
+    unknown.tau_fx = std::numeric_limits<double>::quiet_NaN();
+    m_buffer->append(unknown);
+    // One with τ_fx = 0.005 N·m: at t = 3.001 s (τ_rec = −0.12004, τ_ext = 0.01) the clamp to
+    // −0.02 took (−0.12004 + 0.005 + 0.01) − (−0.02) = −0.08504.
+    Sample fx = sampleAt(3001);
+    fx.tau_fx = 0.005;
+    fx.tau_total = -0.02;
+    fx.flags |= v2::kFlagSaturated;
+    m_buffer->append(fx);
+    m_panel->repaintNow();
+    const QCPGraph *tauFx = view.graph(TorqueBreakdownView::Term::TauFx);
+    QCOMPARE(tauFx->name(), QStringLiteral("τ_fx"));
+    QCOMPARE(valueAt(tauFx, 3.001), 0.005);
+    QVERIFY(std::abs(valueAt(view.graph(TorqueBreakdownView::Term::Clipped), 3.001) -
+                     (-0.12004 + 0.005 + 0.01 + 0.02)) < 1e-12);
+    QVERIFY(std::isnan(valueAt(tauFx, 3.0)));
+    QVERIFY(std::abs(valueAt(view.graph(TorqueBreakdownView::Term::Clipped), 3.0) -
+                     (unknown.tau_rec + unknown.tau_ext - unknown.tau_total)) < 1e-12);
 }
 
 void TestMeasure::exportsPngAtTheChosenSize()
