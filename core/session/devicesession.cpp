@@ -16,6 +16,18 @@ namespace hatpic {
 
 namespace {
 
+//! The built-in simulator speaks the protocol asked for ("--protocol legacy" on "sim": the
+//! published firmware); Auto leaves it as configured (v2 unless the caller chose otherwise).
+SimulatedDevice::Config simulatorConfig(const ConnectOptions &options)
+{
+    SimulatedDevice::Config sim = options.sim;
+    if (options.protocol == ProtocolChoice::Legacy)
+        sim.protocol = WireProtocol::Legacy;
+    else if (options.protocol == ProtocolChoice::V2)
+        sim.protocol = WireProtocol::V2;
+    return sim;
+}
+
 using Status = CommandResult::Status;
 using Reason = CommandResult::Reason;
 
@@ -123,7 +135,7 @@ void DeviceSession::openLink()
 {
     closeLink();
     if (m_options.port == QStringView(kSimPortName))
-        m_link = new SimLink(m_options.sim, this);
+        m_link = new SimLink(simulatorConfig(m_options), this);
     else
         m_link = new SerialLink(m_options.port, requestedBaud(m_options), this);
     connect(m_link, &ByteLink::bytesReceived, this, &DeviceSession::onBytes);

@@ -208,6 +208,10 @@ void TestDeviceSession::detectsProtocol_data()
     QTest::newRow("auto finds legacy") << int(WireProtocol::Legacy) << int(ProtocolChoice::Auto);
     QTest::newRow("forced v2") << int(WireProtocol::V2) << int(ProtocolChoice::V2);
     QTest::newRow("forced legacy") << int(WireProtocol::Legacy) << int(ProtocolChoice::Legacy);
+    // A forced protocol makes the built-in simulator speak it, whatever its config says: the
+    // tuner's and hatpicctl's "--port sim --protocol legacy" leave the config at v2.
+    QTest::newRow("forced legacy, simulator configured v2")
+        << int(WireProtocol::V2) << int(ProtocolChoice::Legacy);
 }
 
 void TestDeviceSession::detectsProtocol()
@@ -220,6 +224,8 @@ void TestDeviceSession::detectsProtocol()
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
     QCOMPARE(info.count(), 1);
     const DeviceInfo di = info.first().first().value<DeviceInfo>();
+    if (ProtocolChoice(choice) == ProtocolChoice::Legacy)
+        deviceProtocol = int(WireProtocol::Legacy);
     QCOMPARE(int(di.protocol), deviceProtocol);
     QVERIFY(di.simulated);
     QCOMPARE(di.port, QStringLiteral("sim"));
