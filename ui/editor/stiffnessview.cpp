@@ -295,6 +295,8 @@ QVector<double> StiffnessView::sampleAngles(const DeviceParams &p, double center
 
 void StiffnessView::setEditedParams(const DeviceParams &params)
 {
+    if (params == m_edited)
+        return; // the window calls this on every edit, some of which are effects or host fields
     m_edited = params;
     rebuild();
 }
@@ -308,7 +310,7 @@ void StiffnessView::setDeviceParams(const std::optional<DeviceParams> &params)
 void StiffnessView::setEditedEffects(const EffectParams &effects)
 {
     if (effects == m_editedEffects)
-        return; // the window calls this on every edit, most of which are parameters
+        return; // as setEditedParams: a parameter edit leaves the effects as they are
     m_editedEffects = effects;
     rebuild();
 }
