@@ -1,0 +1,114 @@
+// The ROS messages HATPIC speaks, as plain values: the same structs whichever middleware
+// carries them (ROS 2 over Cyclone DDS, ROS 1 over roscpp). Field names and order follow the
+// .msg files of builtin_interfaces, std_msgs, geometry_msgs and sensor_msgs; SI units as ROS
+// defines them. No middleware, no Qt.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace hatpic::ros {
+
+//! builtin_interfaces/Time (ROS 1: the header's time): seconds since the Unix epoch.
+struct Time
+{
+    std::int32_t sec = 0;
+    std::uint32_t nanosec = 0; //!< always below 10⁹
+
+    friend bool operator==(const Time &, const Time &) = default;
+};
+//! Seconds since the epoch → Time (nanosec below 10⁹; non-finite or negative → 0; clamped to
+//! int32 seconds).
+Time timeFromSeconds(double seconds);
+double seconds(const Time &time);
+
+//! std_msgs/Header. ROS 1's `seq` is the middleware's business (roscpp fills it).
+struct Header
+{
+    Time stamp;
+    std::string frameId;
+
+    friend bool operator==(const Header &, const Header &) = default;
+};
+
+struct Vector3
+{
+    double x = 0, y = 0, z = 0;
+    friend bool operator==(const Vector3 &, const Vector3 &) = default;
+};
+struct Point
+{
+    double x = 0, y = 0, z = 0;
+    friend bool operator==(const Point &, const Point &) = default;
+};
+struct Quaternion
+{
+    double x = 0, y = 0, z = 0, w = 1;
+    friend bool operator==(const Quaternion &, const Quaternion &) = default;
+};
+
+struct Twist
+{
+    Vector3 linear;  //!< [m/s]
+    Vector3 angular; //!< [rad/s]
+    friend bool operator==(const Twist &, const Twist &) = default;
+};
+struct TwistStamped
+{
+    Header header;
+    Twist twist;
+    friend bool operator==(const TwistStamped &, const TwistStamped &) = default;
+};
+
+struct Wrench
+{
+    Vector3 force;  //!< [N]
+    Vector3 torque; //!< [N·m]
+    friend bool operator==(const Wrench &, const Wrench &) = default;
+};
+struct WrenchStamped
+{
+    Header header;
+    Wrench wrench;
+    friend bool operator==(const WrenchStamped &, const WrenchStamped &) = default;
+};
+
+struct Pose
+{
+    Point position; //!< [m]
+    Quaternion orientation;
+    friend bool operator==(const Pose &, const Pose &) = default;
+};
+struct PoseStamped
+{
+    Header header;
+    Pose pose;
+    friend bool operator==(const PoseStamped &, const PoseStamped &) = default;
+};
+
+//! sensor_msgs/JointState.
+struct JointState
+{
+    Header header;
+    std::vector<std::string> name;
+    std::vector<double> position; //!< [rad] or [m]
+    std::vector<double> velocity; //!< [rad/s] or [m/s]
+    std::vector<double> effort;   //!< [N·m] or [N]
+    friend bool operator==(const JointState &, const JointState &) = default;
+};
+
+//! Every message type a topic can carry; the index of each alternative is its MessageType.
+using Message = std::variant<JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench>;
+enum class MessageType { JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench };
+constexpr int kMessageTypeCount = 6;
+
+inline MessageType typeOf(const Message &message)
+{
+    return MessageType(message.index());
+}
+//! The ROS 2 name of a type: "geometry_msgs/msg/TwistStamped" (ROS 1 drops the "msg/").
+const char *rosTypeName(MessageType type);
+
+} // namespace hatpic::ros

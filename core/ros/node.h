@@ -1,0 +1,94 @@
+// One ROS node, whichever ROS carries it: ROS 2 (Cyclone DDS, on the wire as rmw_cyclonedds
+// puts it) or ROS 1 (Debian's roscpp). What HATPIC's programs publish and subscribe goes
+// through this interface only, so a topic, a type, a QoS or a discovery rule is implemented
+// once per ROS and shared by hatpic-bridge, the tuner's Bridge panel and hatpic-robot-sim.
+#pragma once
+
+#include "ros/messages.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace hatpic::ros {
+
+enum class RosVersion { Ros1, Ros2 };
+const char *rosVersionName(RosVersion version); //!< "ROS 1", "ROS 2"
+
+//! A topic's quality of service. ROS 2 maps it onto DDS QoS as rmw_cyclonedds does; ROS 1 has
+//! none (TCPROS is reliable and volatile) and takes `depth` as the queue size.
+struct Qos
+{
+    enum class Reliability { Reliable, BestEffort };
+    enum class Durability { Volatile, TransientLocal };
+
+    Reliability reliability = Reliability::Reliable;
+    Durability durability = Durability::Volatile;
+    int depth = 10; //!< keep last N (≥ 1)
+
+    //! rmw's default profile: reliable, volatile, keep last 10.
+    static Qos defaults() { return {}; }
+    //! What a reader needs to match any publisher (reliable or best effort, volatile or
+    //! transient local) and to see only the newest message: best effort, volatile, keep last 1.
+    static Qos matchAny() { return {Reliability::BestEffort, Durability::Volatile, 1}; }
+
+    friend bool operator==(const Qos &, const Qos &) = default;
+};
+
+struct NodeOptions
+{
+    RosVersion version = RosVersion::Ros2;
+    std::string name;   //!< the node's name without namespace ("hatpic_bridge")
+    int domainId = -1;  //!< ROS 2: the DDS domain; −1: ROS_DOMAIN_ID, else 0
+};
+
+//! Publishes one topic. publish() may be called from any thread, one call at a time; it does
+//! not block on the network.
+class Publisher
+{
+public:
+    virtual ~Publisher() = default;
+    //! False when the middleware refused it (counted in writeErrors()) or the message is not of
+    //! the type the publisher was made for.
+    virtual bool publish(const Message &message) = 0;
+    virtual std::uint64_t written() const = 0;     //!< messages handed to the middleware
+    virtual std::uint64_t writeErrors() const = 0; //!< refused ones
+};
+
+//! A subscription: its handler runs on a middleware thread for every message that arrives,
+//! never after the destructor returned.
+class Subscription
+{
+public:
+    virtual ~Subscription() = default;
+};
+
+using MessageHandler = std::function<void(const Message &)>;
+
+class Node
+{
+public:
+    virtual ~Node() = default; //!< publishers and subscriptions must be gone before the node
+
+    //! Opens a node of options.version (its environment applies: ROS 2's ROS_DOMAIN_ID,
+    //! ROS_LOCALHOST_ONLY, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_STATIC_PEERS, CYCLONEDDS_URI;
+    //! ROS 1's ROS_MASTER_URI, ROS_IP/ROS_HOSTNAME, ROS_NAMESPACE). Null with `*error` one
+    //! sentence when the middleware refuses, or when that ROS is not built in.
+    static std::unique_ptr<Node> open(const NodeOptions &options, std::string *error);
+    //! Whether this build has that ROS.
+    static bool isAvailable(RosVersion version);
+
+    //! A publisher of `type` on the ROS topic `topic` ("/hatpic/twist"); null with `*error`.
+    virtual std::unique_ptr<Publisher> advertise(const std::string &topic, MessageType type,
+                                                 const Qos &qos, std::string *error) = 0;
+    //! A subscription to `topic`; `handler` gets each message of `type`. Null with `*error`.
+    virtual std::unique_ptr<Subscription> subscribe(const std::string &topic, MessageType type,
+                                                    const Qos &qos, MessageHandler handler,
+                                                    std::string *error) = 0;
+
+    //! Where the node is, for people: "ROS 2, domain 42", "ROS 1, master http://127.0.0.1:11311".
+    virtual std::string where() const = 0;
+};
+
+} // namespace hatpic::ros
