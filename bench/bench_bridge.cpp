@@ -141,14 +141,9 @@ int main(int argc, char *argv[])
     while (dds_get_publication_matched_status(wrench, &matched) == DDS_RETCODE_OK &&
            matched.current_count == 0)
         waitMs(10);
-    std::vector<double> latencies, toBridge;
+    std::vector<double> latencies;
     QElapsedTimer since;
-    double bridgeMs = -1;
     double expected = 0, deviceMs = -1;
-    QObject::connect(&bridge, &Bridge::feedbackChanged, &app, [&](double) {
-        if (bridgeMs < 0)
-            bridgeMs = double(since.nsecsElapsed()) * 1e-6;
-    });
     // The first sample that shows the new τ_ext, dated back from its batch's arrival by how
     // much older than the batch's newest sample it is (device clock).
     QObject::connect(&client, &DeviceClient::samplesReady, &app, [&](const SampleBatch &batch) {
@@ -163,7 +158,6 @@ int main(int argc, char *argv[])
         geometry_msgs_msg_dds__WrenchStamped_ w{};
         w.header.frame_id = const_cast<char *>("bench");
         w.wrench.force.z = force;
-        bridgeMs = -1;
         deviceMs = -1;
         expected = 0.154 * force;
         since.start();
@@ -171,14 +165,9 @@ int main(int argc, char *argv[])
         while (deviceMs < 0 && since.elapsed() < 1000)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
         latencies.push_back(deviceMs < 0 ? 1000.0 : deviceMs);
-        toBridge.push_back(bridgeMs);
         waitMs(100);
     }
     std::sort(latencies.begin(), latencies.end());
-    std::sort(toBridge.begin(), toBridge.end());
-    std::printf("latency wrench -> Bridge (DDS, listener, event loop): median %.2f ms, max %.2f "
-                "ms\n",
-                toBridge[toBridge.size() / 2], toBridge.back());
     std::printf("latency wrench -> tau_ext at the device: median %.2f ms, max %.2f ms (%d steps, "
                 "SET_FEEDBACK at %g Hz)\n",
                 latencies[latencies.size() / 2], latencies.back(), steps, feedbackRate);

@@ -114,7 +114,9 @@ const std::vector<Setting> &settingTable()
              o.connect.streamRateHz = quint16(*v);
              return QString();
          }},
-        {"feedback-rate", "HZ", "SET_FEEDBACK frames per second (default 100; 20 to 1000).",
+        {"feedback-rate", "HZ",
+         "SET_FEEDBACK frames per second at most; a new tau_ext goes at once (default 1000; 20 "
+         "to 1000).",
          [](AppOptions &o, const QString &t) {
              const auto v = number(t);
              if (!v || *v < kMinFeedbackHz || *v > kMaxFeedbackHz)

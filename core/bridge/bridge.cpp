@@ -1,20 +1,28 @@
 #include "bridge.h"
 
-#include <QDateTime>
-
-#include <cmath>
+#include <chrono>
 
 namespace hatpic::bridge {
 
+namespace {
+
+//! The host's wall-clock time of a sample decoded at `arrivalNs` on sampleClockNs() [s since
+//! the Unix epoch]; now for a sample that does not say.
+double wallSecondsOf(const Sample &sample)
+{
+    const double wallNow =
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    if (sample.arrival_ns <= 0)
+        return wallNow;
+    return wallNow - double(sampleClockNs() - sample.arrival_ns) * 1e-9;
+}
+
+} // namespace
+
 Bridge::Bridge(DeviceClient &client, QObject *parent) : QObject(parent), m_client(client)
 {
-    m_clock.start();
     m_checkTimer.setInterval(kCheckIntervalMs);
-    connect(&m_checkTimer, &QTimer::timeout, this, [this] {
-        const double tau = m_feedback.torqueAt(now()); // counts a wrench that went stale
-        applyTorque(m_released ? 0.0 : tau);
-    });
-    connect(&m_client, &DeviceClient::samplesReady, this, &Bridge::onSamples);
+    connect(&m_checkTimer, &QTimer::timeout, this, &Bridge::checkStale);
 }
 
 Bridge::~Bridge()
@@ -27,43 +35,62 @@ QString Bridge::start(const BridgeSettings &settings)
     stop();
     if (const auto errors = validate(settings); !errors.empty())
         return QString::fromStdString(errors.front()) + u'.';
+    // Opened without the lock: a wrench that arrives meanwhile waits for it in onWrench(), and
+    // endpoints that fail are deleted here, which waits for that handler.
     std::string error;
-    m_endpoints = RosEndpoints::open(
+    auto endpoints = RosEndpoints::open(
         settings, [this](const RosEndpoints::Wrench &w) { onWrench(w); }, &error);
-    if (!m_endpoints)
+    if (!endpoints)
         return QString::fromStdString(error);
-    m_settings = settings;
-    m_feedback = WrenchFeedback(settings.feedback);
-    m_rate = RateLimiter(settings.publishRateHz);
-    m_released = false;
+    {
+        const std::lock_guard lock(m_mutex);
+        m_settings = settings;
+        m_feedback = WrenchFeedback(settings.feedback);
+        m_rate = RateLimiter(settings.publishRateHz);
+        m_released = false;
+        m_tauExt = 0;
+        m_endpoints = std::move(endpoints);
+    }
+    m_client.setFeedback(0);
+    m_client.addSampleListener(this);
     m_checkTimer.start();
     return {};
 }
 
 void Bridge::releaseFeedback()
 {
+    const std::lock_guard lock(m_mutex);
     m_released = true;
     applyTorque(0);
 }
 
 void Bridge::stop()
 {
-    if (!m_endpoints)
-        return;
     m_checkTimer.stop();
-    for (int i = 0; i < kOutTopicCount; ++i)
-        m_publishedBefore[i] += m_endpoints->written(OutTopic(i));
-    m_writeErrorsBefore += m_endpoints->writeErrors();
-    m_endpoints.reset(); // no onWrench() runs after this
+    m_client.removeSampleListener(this); // no sampleDecoded() runs after this
+    std::unique_ptr<RosEndpoints> closing;
     {
         const std::lock_guard lock(m_mutex);
-        m_arrivals.clear();
+        if (!m_endpoints)
+            return;
+        for (int i = 0; i < kOutTopicCount; ++i)
+            m_publishedBefore[i] += m_endpoints->written(OutTopic(i));
+        m_writeErrorsBefore += m_endpoints->writeErrors();
+        closing = std::move(m_endpoints); // onWrench() ignores what still arrives
+        applyTorque(0);
     }
-    applyTorque(0);
+    closing.reset(); // waits for a handler in progress, outside the lock it may be waiting for
+}
+
+bool Bridge::isRunning() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_endpoints != nullptr;
 }
 
 void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
 {
+    const std::lock_guard lock(m_mutex);
     m_settings.feedback = feedback;
     m_feedback.setSettings(feedback);
     if (m_endpoints && !m_released)
@@ -72,6 +99,7 @@ void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
 
 bool Bridge::setPublishRate(double rateHz)
 {
+    const std::lock_guard lock(m_mutex);
     BridgeSettings changed = m_settings;
     changed.publishRateHz = rateHz;
     if (!validate(changed).empty())
@@ -81,8 +109,21 @@ bool Bridge::setPublishRate(double rateHz)
     return true;
 }
 
+void Bridge::setReferenceMode(ReferenceMode mode)
+{
+    const std::lock_guard lock(m_mutex);
+    m_mode = mode;
+}
+
+BridgeSettings Bridge::settings() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_settings;
+}
+
 BridgeStats Bridge::stats() const
 {
+    const std::lock_guard lock(m_mutex);
     BridgeStats s;
     s.published = m_publishedBefore;
     s.writeErrors = m_writeErrorsBefore;
@@ -95,68 +136,46 @@ BridgeStats Bridge::stats() const
     s.lastWrench = m_feedback.lastValue();
     s.tauExt = m_tauExt;
     s.publishedTauExt = m_publishedTauExt;
-    const std::lock_guard lock(m_mutex);
-    s.overflow = m_overflow;
     return s;
 }
 
-void Bridge::onSamples(const SampleBatch &batch)
+void Bridge::sampleDecoded(const Sample &sample)
 {
-    if (!m_endpoints || batch.isEmpty())
+    const std::lock_guard lock(m_mutex);
+    if (!m_endpoints)
         return;
-    const double arrival = double(QDateTime::currentMSecsSinceEpoch()) * 1e-3;
-    const double newest = batch.last().t_s;
-    const Component axis = m_settings.axisFor(m_mode);
-    for (const Sample &sample : batch) {
-        if (!m_rate.due(sample.t_s))
-            continue;
-        const ReferenceMessages m = referenceMessages(
-            sample, sampleWallSeconds(arrival, newest, sample.t_s), m_settings, axis);
-        m_endpoints->publish(m);
-        m_publishedTauExt = m.feedbackTorque;
-    }
+    applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now())); // counts a wrench gone stale
+    if (!m_rate.due(sample.t_s))
+        return;
+    const ReferenceMessages m =
+        referenceMessages(sample, wallSecondsOf(sample), m_settings, m_settings.axisFor(m_mode));
+    m_endpoints->publish(m);
+    m_publishedTauExt = m.feedbackTorque;
 }
 
 void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
 {
-    bool post = false;
-    {
-        const std::lock_guard lock(m_mutex);
-        if (m_arrivals.size() >= kMaxArrivals) {
-            m_arrivals.pop_front();
-            ++m_overflow;
-        }
-        m_arrivals.push_back({wrench, now()});
-        post = !m_takePosted;
-        m_takePosted = true;
-    }
-    if (post)
-        QMetaObject::invokeMethod(this, &Bridge::takeWrench, Qt::QueuedConnection);
-}
-
-void Bridge::takeWrench()
-{
-    std::deque<Arrival> arrivals;
-    {
-        const std::lock_guard lock(m_mutex);
-        arrivals.swap(m_arrivals);
-        m_takePosted = false;
-    }
-    if (!m_endpoints || arrivals.empty() || m_released)
+    const double arrived = now();
+    const std::lock_guard lock(m_mutex);
+    if (!m_endpoints || m_released)
         return;
     const Component c = m_settings.feedback.component;
-    for (const Arrival &a : arrivals)
-        m_feedback.receive(a.wrench[(c.angular ? 3 : 0) + c.index], a.time);
-    applyTorque(m_feedback.torqueAt(now())); // 0 if even the newest waited too long
+    applyTorque(m_feedback.receive(wrench[(c.angular ? 3 : 0) + c.index], arrived));
+}
+
+void Bridge::checkStale()
+{
+    const std::lock_guard lock(m_mutex);
+    if (m_endpoints)
+        applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now()));
 }
 
 void Bridge::applyTorque(double tau)
 {
-    const bool changed = tau != m_tauExt;
+    if (tau == m_tauExt)
+        return;
     m_tauExt = tau;
-    m_client.setFeedback(tau);
-    if (changed)
-        Q_EMIT feedbackChanged(tau);
+    m_client.setFeedback(tau); // posts to the session thread: never waits
 }
 
 } // namespace hatpic::bridge

@@ -179,9 +179,27 @@ quint64 DeviceClient::vibrate(const Vibration &vibration)
     return id;
 }
 
+void DeviceClient::addSampleListener(SampleListener *listener)
+{
+    m_session->sampleListeners().add(listener);
+}
+
+void DeviceClient::removeSampleListener(SampleListener *listener)
+{
+    m_session->sampleListeners().remove(listener);
+}
+
 void DeviceClient::setFeedback(double tauExt)
 {
-    QMetaObject::invokeMethod(m_session, [s = m_session, tauExt] { s->setFeedback(tauExt); });
+    // At most one call waits on the session thread, and it takes the newest value: a flood of
+    // wrenches never makes its queue grow.
+    m_feedback.store(tauExt);
+    if (m_feedbackPosted.exchange(true))
+        return;
+    QMetaObject::invokeMethod(m_session, [this, s = m_session] {
+        m_feedbackPosted.store(false);
+        s->setFeedback(m_feedback.load());
+    });
 }
 
 void DeviceClient::setHostParams(const HostParams &host)

@@ -15,6 +15,7 @@ class QThread;
 namespace hatpic {
 
 class DeviceSession;
+class SampleListener;
 
 class DeviceClient : public QObject
 {
@@ -42,10 +43,19 @@ public:
     quint64 readEffects();                            //!< GET_EFFECTS
     quint64 vibrate(const Vibration &vibration);      //!< VIBRATE (fire-and-forget, ACKed)
 
-    void setFeedback(double tauExt);              //!< τ_ext streamed to the device [N·m]
+    //! τ_ext streamed to the device [N·m]: sent at once, within ConnectOptions'
+    //! feedbackRateHz. Callable from any thread (the robot path calls it from the
+    //! middleware's).
+    void setFeedback(double tauExt);
     void setHostParams(const HostParams &host);   //!< reference model settings
     void resetReference();                        //!< p_ref := 0
     void setSimulatedHand(const HandInput &hand); //!< only for the simulated device
+
+    //! `listener` gets every sample on the session thread the moment it is decoded, before
+    //! any batch (samplelisteners.h): the robot path. Callable from any thread.
+    void addSampleListener(SampleListener *listener);
+    //! After it returns, `listener` is never called again. Callable from any thread.
+    void removeSampleListener(SampleListener *listener);
 
     //! Records to `csvPath` (+ NAME.json); `source` names the program in the metadata.
     void startRecording(const QString &csvPath,
@@ -108,6 +118,8 @@ private:
     std::atomic<int> m_pendingRecording{0};
     std::atomic<int> m_pendingLogLines{0};
     std::atomic<quint64> m_droppedBatches{0};
+    std::atomic<double> m_feedback{0};         //!< the newest setFeedback() [N·m]
+    std::atomic<bool> m_feedbackPosted{false}; //!< a call to take it waits on the session thread
 };
 
 } // namespace hatpic

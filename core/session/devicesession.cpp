@@ -8,6 +8,7 @@
 #include <QLoggingCategory>
 #include <QStringBuilder>
 
+#include <algorithm>
 #include <limits>
 
 Q_LOGGING_CATEGORY(lcSession, "hatpic.device.session", QtWarningMsg)
@@ -262,7 +263,7 @@ void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
         return; // lost while writing the first command
     m_samples.connectionStarted();
     m_statistics.markReceived(m_clock.nsecsElapsed());
-    m_feedback.start(m_options.feedbackRateHz);
+    m_feedback.start(std::min(m_options.feedbackRateHz, m_driver->maxFeedbackHz()));
     m_ping.start();
 }
 

@@ -67,6 +67,9 @@ public:
     SessionState state() const { return m_state; }
     DeviceInfo deviceInfo() const { return m_info; }
     LinkStats stats() const;
+    //! Each sample as it is decoded, on this thread (samplelisteners.h); callable from any
+    //! thread.
+    SampleListeners &sampleListeners() { return m_samples.listeners(); }
 
     // ---- test seams (session thread only) ----
     //! The in-process simulator's link while connected to "sim", else null.

@@ -19,7 +19,12 @@ public:
     DeviceInfo info() const override { return m_info; }
     void start() override;
     void feed(const QByteArray &bytes) override;
+    //! The published firmware busy-waits for a whole frame: the host keeps to the rate it
+    //! has always used with it [Hz].
+    static constexpr double kMaxFeedbackHz = 100;
+
     void sendFeedback(double tauExt) override;
+    double maxFeedbackHz() const override { return kMaxFeedbackHz; }
     bool sendPing(quint32) override { return false; }
     CommandResult::Reason refusal(CommandKind kind) const override;
     void hostParamsChanged(const HostParams &host) override;

@@ -59,6 +59,8 @@ public:
     virtual void feed(const QByteArray &bytes) = 0;
     //! One feedback frame with τ_ext [N·m].
     virtual void sendFeedback(double tauExt) = 0;
+    //! Feedback frames per second the device and its link take at most [Hz].
+    virtual double maxFeedbackHz() const = 0;
     //! Sends a PING; false when the protocol has none or a command waits for its answer.
     virtual bool sendPing(quint32 token) = 0;
     //! Reason::None when the protocol carries `kind`; else why not (Status::Unsupported).

@@ -38,6 +38,7 @@ void SamplePipeline::stop()
 
 void SamplePipeline::push(const Sample &sample)
 {
+    m_listeners.dispatch(sample);
     if (m_armed && m_armed->trigger.feed(sample))
         fire(sample.t_s);
     keepRecent(sample);

@@ -1,11 +1,13 @@
-// Where complete samples go: the batches to the session's users (samplesReady at least every
-// kBatchIntervalMs, or sooner when kBatchMaxSamples wait), the recording, and the events that
-// mark on the right row when a change took effect. Holds the SampleBuilder, so the host's copy
+// Where complete samples go: each one at once to the sample listeners (the robot path), then
+// in batches to the session's users (samplesReady at least every kBatchIntervalMs, or sooner
+// when kBatchMaxSamples wait) and the recording, with the events that mark on the right row
+// when a change took effect. Holds the SampleBuilder, so the host's copy
 // of the device parameters and the host parameters change here, in step with the events.
 #pragma once
 
 #include "session/recordingsink.h"
 #include "session/samplebuilder.h"
+#include "session/samplelisteners.h"
 #include "session/sessiontypes.h"
 #include "telemetry/recordingtrigger.h"
 #include "telemetry/sample.h"
@@ -31,6 +33,8 @@ public:
     explicit SamplePipeline(QObject *parent = nullptr);
 
     SampleBuilder &builder() { return m_builder; }
+    //! Who takes each sample as it comes, before any batch (the robot path); thread-safe.
+    SampleListeners &listeners() { return m_listeners; }
     const SampleBuilder &builder() const { return m_builder; }
 
     //! A new connectDevice(): t_s, p_ref and the gap count start over.
@@ -95,6 +99,7 @@ private:
     void record(const SampleBatch &batch);
 
     SampleBuilder m_builder;
+    SampleListeners m_listeners;
     SampleBatch m_batch;
     QTimer m_batchTimer;
     RecordingSink m_recording;

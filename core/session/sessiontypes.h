@@ -30,7 +30,9 @@ struct ConnectOptions
     qint32 baud = 0; //!< 0 = default (921600 for v2/auto, 115200 for legacy)
     ProtocolChoice protocol = ProtocolChoice::Auto;
     quint16 streamRateHz = 1000; //!< requested telemetry rate (v2); the device may clamp it
-    double feedbackRateHz = 100; //!< feedback frames per second; ≤ 0 = none [Hz]
+    //! Feedback frames per second at most: a new τ_ext goes out at once within this cap, and
+    //! the last one again every FeedbackStream::kKeepAliveMs; ≤ 0 = none [Hz]
+    double feedbackRateHz = 1000;
     bool autoReconnect = true;   //!< reopen the same port after it vanished
     legacy::Conversion legacy;   //!< tick and load-unit conversion for legacy devices
     SimulatedDevice::Config sim; //!< used when port == "sim"

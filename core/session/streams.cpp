@@ -6,34 +6,54 @@
 namespace hatpic {
 
 FeedbackStream::FeedbackStream(Sender send, QObject *parent)
-    : QObject(parent), m_send(std::move(send)), m_timer(this)
+    : QObject(parent), m_send(std::move(send)), m_keepAlive(this), m_deferred(this)
 {
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &FeedbackStream::send);
+    m_keepAlive.setInterval(kKeepAliveMs);
+    m_keepAlive.setTimerType(Qt::PreciseTimer);
+    connect(&m_keepAlive, &QTimer::timeout, this, &FeedbackStream::send);
+    m_deferred.setSingleShot(true);
+    m_deferred.setTimerType(Qt::PreciseTimer);
+    connect(&m_deferred, &QTimer::timeout, this, &FeedbackStream::send);
 }
 
-void FeedbackStream::start(double rateHz)
+void FeedbackStream::start(double maxRateHz)
 {
-    m_timer.stop();
-    if (!(rateHz > 0))
+    stop();
+    if (!(maxRateHz > 0))
         return;
-    m_timer.setInterval(std::max(1, static_cast<int>(std::lround(1000.0 / rateHz))));
-    m_timer.start();
+    m_minIntervalNs = static_cast<qint64>(std::llround(1e9 / maxRateHz));
+    m_running = true;
     send();
 }
 
 void FeedbackStream::stop()
 {
-    m_timer.stop();
+    m_running = false;
+    m_keepAlive.stop();
+    m_deferred.stop();
 }
 
 void FeedbackStream::setTauExt(double tauExt)
 {
-    m_tauExt = std::isfinite(tauExt) ? tauExt : 0.0;
+    const double tau = std::isfinite(tauExt) ? tauExt : 0.0;
+    if (tau == m_tauExt)
+        return;
+    m_tauExt = tau;
+    if (!m_running || m_deferred.isActive())
+        return; // the deferred frame takes the newest value
+    const qint64 wait = m_minIntervalNs - m_sinceSend.nsecsElapsed();
+    if (wait <= 0) {
+        send();
+        return;
+    }
+    m_deferred.start(static_cast<int>((wait + 999'999) / 1'000'000)); // whole ms, rounded up
 }
 
 void FeedbackStream::send()
 {
+    m_deferred.stop();
+    m_keepAlive.start(); // the next keep-alive counts from this frame
+    m_sinceSend.start();
     if (!m_paused)
         m_send(m_tauExt);
 }

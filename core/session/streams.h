@@ -1,5 +1,5 @@
-// The two periodic streams of a connected session, each on its own timer: the feedback torque
-// at the requested rate, and the PING probe that measures the round trip (RttStats).
+// The two streams of a connected session: the feedback torque (sent on change, capped in rate,
+// kept alive on a timer), and the PING probe that measures the round trip (RttStats).
 // What goes on the wire is the protocol driver's business; these only keep the time.
 #pragma once
 
@@ -14,18 +14,29 @@
 
 namespace hatpic {
 
+//! The feedback torque to the device: a new τ_ext goes out at once (the robot path must add
+//! no delay), at most maxRateHz frames per second (a change that comes sooner waits for the
+//! rest of that interval), and the last value again every kKeepAliveMs so that the device's
+//! 200 ms feedback watchdog never trips while the host holds a torque.
 class FeedbackStream : public QObject
 {
     Q_OBJECT
 public:
+    //! Longest time between two frames while running [ms]: a quarter of the device's
+    //! feedback watchdog (200 ms, protocol.md), so a lost frame or two never trips it.
+    static constexpr int kKeepAliveMs = 50;
+
     using Sender = std::function<void(double tauExt)>;
 
     explicit FeedbackStream(Sender send, QObject *parent = nullptr);
 
-    //! Sends now, then every 1/rateHz; rateHz ≤ 0 sends nothing.
-    void start(double rateHz);
+    //! Sends now, then on every change (at most maxRateHz per second) and every kKeepAliveMs;
+    //! maxRateHz ≤ 0 sends nothing.
+    void start(double maxRateHz);
     void stop();
-    //! The torque to stream [N·m]; not finite = 0.
+    bool isRunning() const { return m_running; }
+    //! The torque to stream [N·m]; not finite = 0. A change is sent at once when the rate
+    //! allows, else at the end of the current interval.
     void setTauExt(double tauExt);
     double tauExt() const { return m_tauExt; }
     //! Paused: nothing is sent (e.g. to see the device's watchdog act).
@@ -35,8 +46,12 @@ private:
     void send();
 
     Sender m_send;
-    QTimer m_timer;
-    double m_tauExt = 0; //!< requested feedback [N·m]
+    QTimer m_keepAlive; //!< restarted by every frame
+    QTimer m_deferred;  //!< a change that came within the minimum interval
+    QElapsedTimer m_sinceSend;
+    qint64 m_minIntervalNs = 0; //!< 1/maxRateHz [ns]
+    double m_tauExt = 0;        //!< requested feedback [N·m]
+    bool m_running = false;
     bool m_paused = false;
 };
 

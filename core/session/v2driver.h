@@ -8,6 +8,7 @@
 #include <QList>
 #include <QObject>
 
+#include <limits>
 #include <optional>
 
 namespace hatpic {
@@ -31,6 +32,13 @@ public:
     //! Frames decoded elsewhere (detection's chunk after HELLO_REPLY).
     void handleFrames(const QList<v2::Frame> &frames);
     void sendFeedback(double tauExt) override;
+    //! The device's control rate (its highest telemetry rate): a faster frame is never used.
+    //! A device that does not say leaves the cap to the session's options.
+    double maxFeedbackHz() const override
+    {
+        return m_info.maxStreamHz > 0 ? double(m_info.maxStreamHz)
+                                      : std::numeric_limits<double>::infinity();
+    }
     bool sendPing(quint32 token) override;
     CommandResult::Reason refusal(CommandKind kind) const override
     {

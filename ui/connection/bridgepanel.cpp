@@ -107,7 +107,6 @@ BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent
         m_settings.domainId = id;
 #ifdef HATPIC_HAVE_BRIDGE
     m_bridge = new bridge::Bridge(m_client, this);
-    connect(m_bridge, &bridge::Bridge::feedbackChanged, this, &BridgePanel::refresh);
 #endif
     buildForm();
     showSettings();

@@ -13,9 +13,11 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <thread>
 
 using namespace hatpic;
 using namespace hatpic::bridge;
@@ -152,6 +154,42 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
         QVERIFY2(silent.elapsed() >= 450, qPrintable(QString::number(silent.elapsed())));
         QCOMPARE(m_bridge.stats().wrenches.stale, staleBefore + 1);
+    }
+
+    void theRobotPathNeverWaitsForTheOwnersThread()
+    {
+        // The Bridge's owner (this thread: the GUI's in the tuner) freezes for 400 ms while the
+        // robot sends a wrench. Samples still go out, stamped as they came, and the wrench
+        // still reaches the device: neither waits for the frozen thread.
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
+        FeedbackSettings f = m_bridge.settings().feedback;
+        f.staleAfter = 2; // one wrench, held through the freeze
+        m_bridge.setFeedbackSettings(f);
+        QTest::qWait(200);
+        m_peer->take();
+        m_peer->clear();
+        const double frozenAt = wallNow();
+        m_peer->publishWrench(0.25);
+        std::this_thread::sleep_for(std::chrono::milliseconds(400));
+        const double thawedAt = wallNow();
+        m_peer->take();
+        const auto during = [&](const auto &messages) {
+            return std::count_if(messages.begin(), messages.end(), [&](const auto &m) {
+                return m.stamp.seconds() > frozenAt && m.stamp.seconds() < thawedAt;
+            });
+        };
+        // 100 messages per second on each topic: about 40 of them in the freeze.
+        QVERIFY2(during(m_peer->joints) >= 30, qPrintable(QString::number(during(m_peer->joints))));
+        QVERIFY2(during(m_peer->feedbacks) >= 30,
+                 qPrintable(QString::number(during(m_peer->feedbacks))));
+        // The device rendered the wrench's τ_ext before the owner's thread ran again.
+        const double tau = 0.25 * f.gain;
+        QVERIFY(std::any_of(m_peer->feedbacks.begin(), m_peer->feedbacks.end(), [&](const auto &m) {
+            return std::abs(m.b[2] - tau) < kTauExtTolerance && m.stamp.seconds() < thawedAt;
+        }));
+        f.staleAfter = 0.5;
+        m_bridge.setFeedbackSettings(f);
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
     }
 
     void unstampedWrenchIsAcceptedToo()

@@ -184,6 +184,7 @@ private Q_SLOTS:
     void commandsWhenDisconnected();
     void feedbackReachesTheDevice();
     void feedbackWatchdog();
+    void sampleListenersSeeEachSampleBeforeItsBatch();
     void garbageIsCountedAndStreamContinues();
     void seqGapsAreCounted();
     void statsReportRatesAndRtt();
@@ -504,6 +505,38 @@ void TestDeviceSession::feedbackWatchdog()
     QCOMPARE(h.samples.last().tau_ext, 0.0); // a stale device drops τ_ext
     h.session.setFeedbackPaused(false);
     QTRY_VERIFY_WITH_TIMEOUT(!(h.samples.last().flags & v2::kFlagFeedbackStale), kCommandWaitMs);
+}
+
+void TestDeviceSession::sampleListenersSeeEachSampleBeforeItsBatch()
+{
+    struct Listener : SampleListener
+    {
+        QList<Sample> seen;
+        void sampleDecoded(const Sample &sample) override { seen.append(sample); }
+    } listener;
+    Harness h;
+    h.session.sampleListeners().add(&listener);
+    qsizetype batched = 0;
+    bool listenerFirst = true;
+    QObject::connect(&h.session, &DeviceSession::samplesReady, [&](const SampleBatch &batch) {
+        // Every sample of a batch reached the listener before the batch went out.
+        for (qsizetype i = 0; i < batch.size(); ++i) {
+            listenerFirst = listenerFirst && batched + i < listener.seen.size() &&
+                            listener.seen[batched + i].t_s == batch[i].t_s &&
+                            listener.seen[batched + i].theta == batch[i].theta;
+        }
+        batched += batch.size();
+    });
+    h.session.connectDevice(simOptions(WireProtocol::V2, ProtocolChoice::V2));
+    QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > 200, kConnectTimeoutMs);
+    QVERIFY(listenerFirst);
+    for (const Sample &s : std::as_const(listener.seen))
+        QVERIFY(s.arrival_ns > 0); // dated when decoded
+    h.session.sampleListeners().remove(&listener);
+    const qsizetype seen = listener.seen.size();
+    const qsizetype before = h.samples.size();
+    QTRY_VERIFY(h.samples.size() > before + 50);
+    QCOMPARE(listener.seen.size(), seen); // removed: never called again
 }
 
 void TestDeviceSession::garbageIsCountedAndStreamContinues()

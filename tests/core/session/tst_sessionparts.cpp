@@ -1,14 +1,17 @@
 // The session's small parts on their own: LinkStatistics (seq gaps, decoder drops kept across
-// links, rates) and the two streams (FeedbackStream's rate and pause, PingProbe's RTT and its
-// bound on unanswered probes).
+// links, rates) and the two streams (FeedbackStream: at once within its cap, kept alive,
+// paused; PingProbe's RTT and its bound on unanswered probes).
 #include "session/linkstatistics.h"
+#include "session/samplelisteners.h"
 #include "session/streams.h"
 
 #include <QElapsedTimer>
 #include <QTest>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace hatpic {
 
@@ -19,8 +22,10 @@ private Q_SLOTS:
     void seqGapsCountModulo256();
     void decoderDropsAddUpAcrossLinks();
     void ratesCoverTheLastSecond();
-    void feedbackStreamsAtItsRateUnlessPaused();
+    void feedbackGoesAtOnceWithinItsCap();
+    void feedbackIsKeptAliveUnlessPaused();
     void feedbackIsFinite();
+    void removedListenerIsNeverCalledAgain();
     void pingMeasuresTheRoundTrip();
     void busyPingWaitsAndUnansweredAreBounded();
 };
@@ -83,29 +88,56 @@ void TestSessionParts::ratesCoverTheLastSecond()
     QCOMPARE(s.lastReceivedNs(), 2 * kSecond);
 }
 
-void TestSessionParts::feedbackStreamsAtItsRateUnlessPaused()
+void TestSessionParts::feedbackGoesAtOnceWithinItsCap()
+{
+    QList<double> sent;
+    FeedbackStream stream([&](double tau) { sent.append(tau); });
+    stream.start(20);                   // at most one frame per 50 ms
+    QCOMPARE(sent, QList<double>{0.0}); // once at once
+    stream.setTauExt(0.05);             // within the 50 ms: waits for the rest of them
+    stream.setTauExt(0.06);             // … and the newest value goes then
+    QCOMPARE(sent.size(), 1);
+    QTRY_COMPARE(sent.size(), 2);
+    QCOMPARE(sent.last(), 0.06);
+    stream.setTauExt(0.06); // no change: nothing new to send, now or later
+    QCOMPARE(sent.size(), 2);
+
+    stream.start(1000); // a millisecond's cap: a change goes out within the call
+    QTest::qWait(5);
+    const qsizetype before = sent.size();
+    stream.setTauExt(-0.02);
+    QCOMPARE(sent.size(), before + 1);
+    QCOMPARE(sent.last(), -0.02);
+    stream.stop();
+}
+
+void TestSessionParts::feedbackIsKeptAliveUnlessPaused()
 {
     QList<double> sent;
     FeedbackStream stream([&](double tau) { sent.append(tau); });
     stream.setTauExt(0.05);
-    stream.start(100); // every 10 ms, and once at once
+    stream.start(1000);
     QCOMPARE(sent.size(), 1);
-    QTRY_VERIFY(sent.size() >= 5);
+    // Nothing changes, yet the device hears the torque again every kKeepAliveMs.
+    QTRY_VERIFY_WITH_TIMEOUT(sent.size() >= 3, 20 * FeedbackStream::kKeepAliveMs);
     QCOMPARE(sent.last(), 0.05);
     stream.setPaused(true);
     const qsizetype paused = sent.size();
-    QTest::qWait(50);
+    QTest::qWait(2 * FeedbackStream::kKeepAliveMs);
     QCOMPARE(sent.size(), paused);
     stream.setPaused(false);
     QTRY_VERIFY(sent.size() > paused);
     stream.stop();
     const qsizetype stopped = sent.size();
-    QTest::qWait(50);
+    stream.setTauExt(0.07); // stopped: kept for the next start, not sent
+    QTest::qWait(2 * FeedbackStream::kKeepAliveMs);
     QCOMPARE(sent.size(), stopped);
 
     stream.start(0); // no feedback at all
-    QTest::qWait(30);
+    QTest::qWait(2 * FeedbackStream::kKeepAliveMs);
     QCOMPARE(sent.size(), stopped);
+    stream.start(100);
+    QCOMPARE(sent.last(), 0.07);
 }
 
 void TestSessionParts::feedbackIsFinite()
@@ -117,6 +149,35 @@ void TestSessionParts::feedbackIsFinite()
     QCOMPARE(stream.tauExt(), 0.0);
     stream.setTauExt(-0.1);
     QCOMPARE(stream.tauExt(), -0.1);
+}
+
+void TestSessionParts::removedListenerIsNeverCalledAgain()
+{
+    // A listener busy on the session thread when another thread removes it: remove() returns
+    // only once that call has ended, so the listener may be destroyed right after.
+    struct Slow : SampleListener
+    {
+        std::atomic<bool> entered{false};
+        std::atomic<bool> left{false};
+        std::atomic<int> calls{0};
+        void sampleDecoded(const Sample &) override
+        {
+            ++calls;
+            entered = true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            left = true;
+        }
+    } slow;
+    SampleListeners listeners;
+    listeners.add(&slow);
+    std::thread session([&] { listeners.dispatch(Sample{}); });
+    while (!slow.entered)
+        std::this_thread::yield();
+    listeners.remove(&slow);
+    QVERIFY(slow.left); // waited for the call in progress
+    session.join();
+    listeners.dispatch(Sample{});
+    QCOMPARE(slow.calls.load(), 1);
 }
 
 void TestSessionParts::pingMeasuresTheRoundTrip()
