@@ -215,7 +215,7 @@ private:
     bool hasPublication(const std::string &topic)
     {
         const auto p = m_peer->publications();
-        return std::any_of(p.begin(), p.end(), [&](const auto &e) { return e.first == topic; });
+        return std::any_of(p.begin(), p.end(), [&](const auto &e) { return e.topic == topic; });
     }
 
     DeviceClient m_client;
