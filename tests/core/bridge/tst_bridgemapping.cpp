@@ -1,6 +1,8 @@
 // The bridge's DDS-independent parts: wrench → τ_ext (gain, limit, stale, non-finite), the
-// outgoing messages' content, stamps, the rate limiter, and the settings' rules.
+// outgoing messages' content, sample times, the rate limiter, the settings' rules and the
+// publishers' QoS they give.
 #include "bridge/referencemessages.h"
+#include "bridge/rosendpoints.h"
 #include "bridge/wrenchfeedback.h"
 #include "profile/bridgesettings.h"
 
@@ -188,6 +190,17 @@ private Q_SLOTS:
         QVERIFY(!isValidTopicName("/1a"));
         QVERIFY(!isValidTopicName("/a b"));
         QVERIFY(BridgeSettings().topics.twistUnstamped.empty()); // off unless named
+    }
+
+    // --qos and --depth set the publishers; the subscriptions always take any publisher.
+    void writerQosFromTheSettings()
+    {
+        BridgeSettings s;
+        QCOMPARE(RosEndpoints::writerQos(s), ros::Qos::defaults());
+        s.qos = QosProfile::BestEffort;
+        s.depth = 3;
+        QCOMPARE(RosEndpoints::writerQos(s),
+                 (ros::Qos{ros::Qos::Reliability::BestEffort, ros::Qos::Durability::Volatile, 3}));
     }
 
     void componentsAndProfiles()
