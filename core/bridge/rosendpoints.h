@@ -49,8 +49,6 @@ public:
 
     std::uint64_t written(OutTopic topic) const;
     std::uint64_t writeErrors() const;
-    //! Where the node is, for people ("ROS 2, domain 0, discovery SUBNET").
-    std::string where() const { return m_node->where(); }
 
 private:
     RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench);
