@@ -353,6 +353,14 @@ private Q_SLOTS:
         qunsetenv("ROS_AUTOMATIC_DISCOVERY_RANGE");
         QCOMPARE(error, std::string("ROS_AUTOMATIC_DISCOVERY_RANGE must be SUBNET, LOCALHOST, OFF "
                                     "or SYSTEM_DEFAULT (or unset), got 'NEARBY'."));
+        const QByteArray uri = qgetenv("CYCLONEDDS_URI");
+        qputenv("CYCLONEDDS_URI", "<CycloneDDS><Domain><General><Interfaces>"
+                                  "<NetworkInterface name=\"no-such-interface\"/></Interfaces>"
+                                  "</General></Domain></CycloneDDS>");
+        QVERIFY(!openNode(kOtherDomain, &error));
+        qputenv("CYCLONEDDS_URI", uri);
+        QCOMPARE(error, std::string("Cyclone DDS refused the configuration of domain 76 (Error): "
+                                    "check CYCLONEDDS_URI and ROS_STATIC_PEERS."));
         qputenv("ROS_DOMAIN_ID", "seven");
         QVERIFY(!openNode(-1, &error));
         QCOMPARE(error, std::string("ROS_DOMAIN_ID must be a whole number, got 'seven'."));
