@@ -132,6 +132,9 @@ const std::vector<Setting> &settingTable()
          HATPIC_SETTING(settings.topics.jointStates)},
         {"twist-topic", "NAME", "geometry_msgs/TwistStamped out (default /hatpic/twist).",
          HATPIC_SETTING(settings.topics.twist)},
+        {"twist-unstamped-topic", "NAME",
+         "geometry_msgs/Twist out, the same twist unstamped (default: none).",
+         HATPIC_SETTING(settings.topics.twistUnstamped)},
         {"pose-topic", "NAME", "geometry_msgs/PoseStamped out (default /hatpic/pose).",
          HATPIC_SETTING(settings.topics.pose)},
         {"feedback-topic", "NAME", "geometry_msgs/WrenchStamped out (default /hatpic/feedback).",
@@ -177,7 +180,9 @@ const std::vector<Setting> &settingTable()
          HATPIC_SETTING(settings.feedback.limit)},
         {"stale", "S", "A wrench older than this gives τ_ext 0 (default 0.5).",
          HATPIC_SETTING(settings.feedback.staleAfter)},
-        {"qos", "PROFILE", "reliable (default) or best-effort (sensor data).",
+        {"qos", "PROFILE",
+         "Publishers' reliability: reliable (default) or best-effort; subscriptions take "
+         "either.",
          [](AppOptions &o, const QString &t) {
              const auto p = parseQosProfile(t.toStdString());
              if (!p)
@@ -185,7 +190,8 @@ const std::vector<Setting> &settingTable()
              o.settings.qos = *p;
              return QString();
          }},
-        {"depth", "N", "History depth, keep last N (default 10).", HATPIC_SETTING(settings.depth)},
+        {"depth", "N", "Publishers' history depth, keep last N (default 10).",
+         HATPIC_SETTING(settings.depth)},
     };
     return table;
 }

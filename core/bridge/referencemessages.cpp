@@ -1,37 +1,14 @@
 #include "referencemessages.h"
 
 #include <cmath>
-#include <limits>
 
 namespace hatpic::bridge {
-
-Stamp stampFromSeconds(double seconds)
-{
-    if (!std::isfinite(seconds) || seconds < 0)
-        return {};
-    constexpr double kMaxSec = std::numeric_limits<std::int32_t>::max();
-    if (seconds >= kMaxSec)
-        return {std::numeric_limits<std::int32_t>::max(), 0};
-    const double whole = std::floor(seconds);
-    auto nanos = static_cast<std::int64_t>(std::llround((seconds - whole) * 1e9));
-    auto sec = static_cast<std::int64_t>(whole);
-    if (nanos >= 1000000000) {
-        nanos -= 1000000000;
-        ++sec;
-    }
-    return {static_cast<std::int32_t>(sec), static_cast<std::uint32_t>(nanos)};
-}
-
-double stampSeconds(const Stamp &stamp)
-{
-    return double(stamp.sec) + double(stamp.nanosec) * 1e-9;
-}
 
 ReferenceMessages referenceMessages(const Sample &sample, double wallSeconds,
                                     const BridgeSettings &settings, Component axis)
 {
     ReferenceMessages m;
-    m.stamp = stampFromSeconds(wallSeconds);
+    m.stamp = ros::timeFromSeconds(wallSeconds);
     m.position = sample.theta;
     m.velocity = sample.omega;
     m.effort = sample.tau;

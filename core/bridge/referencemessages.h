@@ -5,6 +5,7 @@
 
 #include "profile/bridgesettings.h"
 
+#include "ros/messages.h"
 #include "telemetry/sample.h"
 
 #include <array>
@@ -13,22 +14,10 @@
 
 namespace hatpic::bridge {
 
-//! builtin_interfaces/Time.
-struct Stamp
-{
-    std::int32_t sec = 0;
-    std::uint32_t nanosec = 0;
-
-    friend bool operator==(const Stamp &, const Stamp &) = default;
-};
-//! Seconds since the Unix epoch → Time (nanosec always below 10⁹; clamped to int32 seconds).
-Stamp stampFromSeconds(double seconds);
-double stampSeconds(const Stamp &stamp);
-
 //! One sample's content for every outgoing topic.
 struct ReferenceMessages
 {
-    Stamp stamp;                          //!< the sample's time on the host's wall clock
+    ros::Time stamp;                      //!< the sample's time on the host's wall clock
     double position = 0;                  //!< JointState: θ [rad]
     double velocity = 0;                  //!< JointState: ω [rad/s]
     double effort = 0;                    //!< JointState: τ [N·m]

@@ -40,6 +40,7 @@ struct Key
 const Key kKeys[] = {
     {"joint_states_topic", &bridge::Topics::jointStates},
     {"twist_topic", &bridge::Topics::twist},
+    {"twist_unstamped_topic", &bridge::Topics::twistUnstamped},
     {"pose_topic", &bridge::Topics::pose},
     {"feedback_topic", &bridge::Topics::feedback},
     {"wrench_topic", &bridge::Topics::wrench},

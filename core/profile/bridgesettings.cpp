@@ -93,17 +93,13 @@ bool isValidTopicName(const std::string &name)
     return true;
 }
 
-std::string ddsTopicName(const std::string &rosName)
-{
-    return rosName.starts_with('/') ? "rt" + rosName : "rt/" + rosName;
-}
-
 std::vector<std::string> validate(const BridgeSettings &s)
 {
     std::vector<std::string> errors;
     const std::pair<const char *, const std::string *> topics[] = {
         {"joint states topic", &s.topics.jointStates},
         {"twist topic", &s.topics.twist},
+        {"unstamped twist topic", &s.topics.twistUnstamped},
         {"pose topic", &s.topics.pose},
         {"feedback topic", &s.topics.feedback},
         {"wrench topic", &s.topics.wrench},

@@ -26,9 +26,10 @@ struct Component
     friend bool operator==(const Component &, const Component &) = default;
 };
 
+//! The reliability of the bridge's publishers (its subscriptions take any: ros.md § QoS).
 enum class QosProfile {
     Reliable,   //!< reliable, volatile, keep last `depth` (ROS 2's default)
-    BestEffort, //!< best effort, volatile, keep last `depth` (ROS 2's sensor data profile)
+    BestEffort, //!< best effort, volatile, keep last `depth` (ROS 2's sensor data reliability)
 };
 std::string qosProfileName(QosProfile profile); //!< "reliable", "best-effort"
 std::optional<QosProfile> parseQosProfile(const std::string &text);
@@ -38,6 +39,7 @@ struct Topics
 {
     std::string jointStates = "/hatpic/joint_states"; //!< out: sensor_msgs/JointState
     std::string twist = "/hatpic/twist";              //!< out: geometry_msgs/TwistStamped
+    std::string twistUnstamped;                       //!< out: geometry_msgs/Twist (off)
     std::string pose = "/hatpic/pose";                //!< out: geometry_msgs/PoseStamped
     std::string feedback = "/hatpic/feedback";        //!< out: geometry_msgs/WrenchStamped
     std::string wrench = "/wrench_estimation";        //!< in: geometry_msgs/WrenchStamped
@@ -67,8 +69,8 @@ struct BridgeSettings
     std::optional<Component> referenceAxis; //!< unset: linear.x, angular.z in rotation mode
     std::array<double, 3> poseOrigin{};     //!< added to the pose's position [m]
     FeedbackSettings feedback;              //!< the wrench that comes back
-    QosProfile qos = QosProfile::Reliable;  //!< of every topic, in and out
-    int depth = 10;                         //!< keep last N
+    QosProfile qos = QosProfile::Reliable;  //!< of the publishers (topics out)
+    int depth = 10;                         //!< keep last N, of the publishers
     int domainId = 0;                       //!< DDS domain (ROS_DOMAIN_ID)
 
     //! The axis the references go on for the given reference mode.
@@ -92,8 +94,5 @@ std::vector<std::string> validate(const BridgeSettings &settings);
 //! A topic name rmw would accept: '/'-separated tokens of [A-Za-z0-9_], not starting with a
 //! digit, no "//", no trailing '/'.
 bool isValidTopicName(const std::string &name);
-//! The DDS topic rmw names after a ROS topic: "rt" + the absolute name ("/a/b" and "a/b" both
-//! give "rt/a/b": a relative name resolves in the root namespace).
-std::string ddsTopicName(const std::string &rosName);
 
 } // namespace hatpic::bridge

@@ -39,12 +39,14 @@ struct Qos
 struct NodeOptions
 {
     RosVersion version = RosVersion::Ros2;
-    std::string name;   //!< the node's name without namespace ("hatpic_bridge")
-    int domainId = -1;  //!< ROS 2: the DDS domain; −1: ROS_DOMAIN_ID, else 0
+    //! The node's name without namespace ("hatpic_bridge"). ROS 2: not announced (no
+    //! ros_discovery_info), so `ros2 node list` does not show it (ros.md § Discovery).
+    std::string name;
+    int domainId = -1; //!< ROS 2: the DDS domain; −1: ROS_DOMAIN_ID, else 0
 };
 
 //! Publishes one topic. publish() may be called from any thread, one call at a time; it does
-//! not block on the network.
+//! not block on the network. written() and writeErrors() may be read from any thread.
 class Publisher
 {
 public:
@@ -57,7 +59,9 @@ public:
 };
 
 //! A subscription: its handler runs on a middleware thread for every message that arrives,
-//! never after the destructor returned.
+//! never after the destructor returned. A message from a publisher of the same process may
+//! be handed over on the publishing thread, inside its publish(). The handler must not
+//! destroy its own subscription.
 class Subscription
 {
 public:

@@ -1,6 +1,7 @@
 // hatpic-bridge, run as a real process against a simulated joystick on a pseudo-terminal,
 // with a test ROS 2 node (its own IDL types) on loopback-only Cyclone DDS: references out,
-// wrench in as τ_ext, statistics, options, and SIGINT leaving the device with τ_ext 0.
+// wrench in as τ_ext, statistics, options, ROS 2's discovery variables, and SIGINT leaving the
+// device with τ_ext 0.
 #include "rostestpeer.h"
 
 #include "profile/profile.h"
@@ -173,6 +174,87 @@ private Q_SLOTS:
         ::kill(pid_t(bridge.processId()), SIGINT);
         QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
         QCOMPARE(bridge.exitCode(), 0);
+    }
+
+    // ROS 2's discovery variables mean for hatpic-bridge what they mean for a node on
+    // rmw_cyclonedds (no CYCLONEDDS_URI here): a peer whose domain is configured as rmw
+    // configures it for the same variables finds the bridge on loopback, where there is no
+    // multicast, and with range OFF it does not. (With only a loopback interface Cyclone DDS
+    // itself falls back to fixed ports, so here OFF is the row that Cyclone's defaults would
+    // fail; tst_ros2discovery checks the configuration of every case word for word.)
+    void discoveryVariablesAsRos_data()
+    {
+        QTest::addColumn<QStringList>("variables");
+        QTest::addColumn<int>("domain");
+        QTest::addColumn<QString>("peerConfig");
+        QTest::addColumn<bool>("found");
+        // The configurations rmw_cyclonedds creates its domain with (rmw_node.cpp).
+        const QString localhost =
+            u"<CycloneDDS><Domain><General><AllowMulticast>false</AllowMulticast></General>"
+            "<Discovery><ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>32"
+            "</MaxAutoParticipantIndex><Peers><Peer address=\"localhost\"/></Peers></Discovery>"
+            "</Domain></CycloneDDS>,"_s;
+        const QString subnetWithPeer =
+            u"<CycloneDDS><Domain><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+            "<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex><Peers>"
+            "<Peer address=\"127.0.0.1\"/></Peers></Discovery></Domain></CycloneDDS>,"_s;
+        QTest::newRow("LOCALHOST range")
+            << QStringList{u"ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST"_s} << 77 << localhost << true;
+        QTest::newRow("ROS_LOCALHOST_ONLY")
+            << QStringList{u"ROS_LOCALHOST_ONLY=1"_s, u"ROS_AUTOMATIC_DISCOVERY_RANGE=OFF"_s} << 78
+            << localhost << true;
+        QTest::newRow("static peer")
+            << QStringList{u"ROS_STATIC_PEERS=127.0.0.1"_s} << 79 << subnetWithPeer << true;
+        QTest::newRow("OFF range")
+            << QStringList{u"ROS_AUTOMATIC_DISCOVERY_RANGE=OFF"_s} << 80 << localhost << false;
+    }
+    void discoveryVariablesAsRos()
+    {
+        QFETCH(QStringList, variables);
+        QFETCH(int, domain);
+        QFETCH(QString, peerConfig);
+        QFETCH(bool, found);
+        RosTestPeer peer(domain, peerConfig.toStdString());
+        QVERIFY(peer.isValid());
+        QProcess bridge;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(u"CYCLONEDDS_URI"_s);
+        env.insert(u"ROS_DOMAIN_ID"_s, QString::number(domain));
+        for (const QString &variable : variables)
+            env.insert(variable.section(u'=', 0, 0), variable.section(u'=', 1));
+        bridge.setProcessEnvironment(env);
+        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH), {u"--port"_s, u"sim"_s});
+        QVERIFY(bridge.waitForStarted());
+        if (found) {
+            QTRY_VERIFY_WITH_TIMEOUT((peer.take(), !peer.twists.empty()), 15000);
+            QTRY_VERIFY_WITH_TIMEOUT(peer.wrenchMatched(), 5000);
+        } else {
+            QTest::qWait(3000);
+            peer.take();
+            QVERIFY(peer.twists.empty());
+            QVERIFY(!peer.wrenchMatched());
+            for (const auto &writer : peer.publications()) // its own, but none of the bridge's
+                QVERIFY2(!writer.topic.starts_with("rt/hatpic/"), writer.topic.c_str());
+        }
+        ::kill(pid_t(bridge.processId()), SIGINT);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
+        QCOMPARE(bridge.exitCode(), 0);
+    }
+
+    void badDiscoveryVariableIsOneSentence()
+    {
+        QProcess bridge;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_AUTOMATIC_DISCOVERY_RANGE"_s, u"NEARBY"_s);
+        bridge.setProcessEnvironment(env);
+        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH), {u"--port"_s, u"sim"_s});
+        QVERIFY(bridge.waitForFinished(10000));
+        QCOMPARE(bridge.exitCode(), 1);
+        const QByteArray err = bridge.readAllStandardError();
+        QVERIFY2(err.contains("ROS_AUTOMATIC_DISCOVERY_RANGE must be SUBNET, LOCALHOST, OFF or "
+                              "SYSTEM_DEFAULT (or unset), got 'NEARBY'."),
+                 err.constData());
+        QCOMPARE(err.trimmed().count('\n'), 0);
     }
 
     void roundTripAndSigint()

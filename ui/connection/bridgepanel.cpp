@@ -37,6 +37,8 @@ constexpr TopicField kTopicFields[] = {
      &bridge::Topics::jointStates},
     {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Twist (out)"), u"bridge_topic_twist",
      &bridge::Topics::twist},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Twist, unstamped (out)"),
+     u"bridge_topic_twist_unstamped", &bridge::Topics::twistUnstamped},
     {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Pose (out)"), u"bridge_topic_pose",
      &bridge::Topics::pose},
     {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Feedback (out)"), u"bridge_topic_feedback",
@@ -46,7 +48,7 @@ constexpr TopicField kTopicFields[] = {
     {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Wrench, unstamped (in)"),
      u"bridge_topic_wrench_unstamped", &bridge::Topics::wrenchUnstamped},
 };
-static_assert(std::size(kTopicFields) == 6);
+static_assert(std::size(kTopicFields) == 7);
 
 QDoubleSpinBox *spin(QWidget *parent, const QString &name, double low, double high, int decimals,
                      const QString &suffix)

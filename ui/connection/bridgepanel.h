@@ -72,7 +72,7 @@ private:
     QLabel *m_status = nullptr;
     QCheckBox *m_enable = nullptr;
     QSpinBox *m_domain = nullptr;
-    QLineEdit *m_topics[6] = {};
+    QLineEdit *m_topics[7] = {};
     QDoubleSpinBox *m_rate = nullptr;
     QComboBox *m_component = nullptr;
     QDoubleSpinBox *m_gain = nullptr;

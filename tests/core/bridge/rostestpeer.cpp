@@ -38,6 +38,58 @@ std::array<double, 3> vec(const geometry_msgs_msg_dds__Vector3_ &v)
     return {v.x, v.y, v.z};
 }
 
+// The QoS rmw_cyclonedds gives an endpoint (create_readwrite_qos), written here independently
+// of core/ros: keep last `depth`, reliable (max blocking infinite) or best effort, volatile
+// or transient local with a durability service of the same history.
+dds_qos_t *rmwQos(bool reliable, bool transientLocal, int depth)
+{
+    dds_qos_t *qos = dds_create_qos();
+    dds_qset_writer_data_lifecycle(qos, false);
+    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, depth);
+    if (reliable)
+        dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_INFINITY);
+    else
+        dds_qset_reliability(qos, DDS_RELIABILITY_BEST_EFFORT, 0);
+    if (transientLocal) {
+        dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
+        dds_qset_durability_service(qos, 0, DDS_HISTORY_KEEP_LAST, depth, DDS_LENGTH_UNLIMITED,
+                                    DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
+    } else {
+        dds_qset_durability(qos, DDS_DURABILITY_VOLATILE);
+    }
+    dds_qset_liveliness(qos, DDS_LIVELINESS_AUTOMATIC, DDS_INFINITY);
+    return qos;
+}
+
+// The endpoints a built-in topic reader has seen since the last call, appended to `seen`.
+void takeEndpoints(dds_entity_t reader, std::vector<EndpointSeen> &seen)
+{
+    for (;;) {
+        void *samples[32] = {};
+        dds_sample_info_t infos[32];
+        const dds_return_t n = dds_take(reader, samples, infos, 32, 32);
+        if (n <= 0)
+            return;
+        for (int i = 0; i < n; ++i) {
+            if (!infos[i].valid_data)
+                continue;
+            const auto *e = static_cast<const dds_builtintopic_endpoint_t *>(samples[i]);
+            EndpointSeen endpoint{e->topic_name, e->type_name, {}, false};
+            void *data = nullptr;
+            size_t size = 0;
+            if (dds_qget_userdata(e->qos, &data, &size) && data) {
+                endpoint.userData.assign(static_cast<const char *>(data), size);
+                dds_free(data);
+            }
+            dds_reliability_kind_t kind{};
+            endpoint.reliable =
+                dds_qget_reliability(e->qos, &kind, nullptr) && kind == DDS_RELIABILITY_RELIABLE;
+            seen.push_back(std::move(endpoint));
+        }
+        dds_return_loan(reader, samples, n);
+    }
+}
+
 } // namespace
 
 void confineDdsToLoopback()
@@ -55,8 +107,9 @@ void confineDdsToLoopback()
 
 struct RosTestPeer::Entities
 {
-    dds_entity_t participant = 0, joint = 0, twist = 0, pose = 0, feedback = 0, wrench = 0,
-                 unstamped = 0, publications = 0;
+    dds_entity_t domain = 0, participant = 0, joint = 0, twist = 0, bestEffortTwist = 0,
+                 unstampedTwist = 0, pose = 0, feedback = 0, wrench = 0, unstamped = 0,
+                 publications = 0, subscriptions = 0;
 
     dds_entity_t topic(const dds_topic_descriptor_t *desc, const char *name) const
     {
@@ -64,21 +117,33 @@ struct RosTestPeer::Entities
     }
 };
 
-RosTestPeer::RosTestPeer(int domain) : m_e(std::make_unique<Entities>())
+RosTestPeer::RosTestPeer(int domain, const std::string &domainConfig)
+    : m_e(std::make_unique<Entities>())
 {
     Entities &e = *m_e;
+    if (!domainConfig.empty()) {
+        e.domain = dds_create_domain(dds_domainid_t(domain), domainConfig.c_str());
+        if (e.domain < 0)
+            return;
+    }
     e.participant = dds_create_participant(dds_domainid_t(domain), nullptr, nullptr);
-    dds_qos_t *qos = dds_create_qos();
-    dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1000);
+    // ROS 2's default subscription (reliable, volatile), deep enough to keep all for a test.
+    dds_qos_t *qos = rmwQos(true, false, 1000);
     const auto reader = [&](const dds_topic_descriptor_t *desc, const char *name) {
         return dds_create_reader(e.participant, e.topic(desc, name), qos, nullptr);
     };
     e.joint = reader(&sensor_msgs_msg_dds__JointState__desc, "rt/hatpic/joint_states");
     e.twist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, "rt/hatpic/twist");
+    e.unstampedTwist = reader(&geometry_msgs_msg_dds__Twist__desc, kTwistUnstampedTopic);
     e.pose = reader(&geometry_msgs_msg_dds__PoseStamped__desc, "rt/hatpic/pose");
     e.feedback = reader(&geometry_msgs_msg_dds__WrenchStamped__desc, "rt/hatpic/feedback");
-    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 10);
+    dds_delete_qos(qos);
+    qos = rmwQos(false, false, 1000); // a sensor-data subscription
+    e.bestEffortTwist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, "rt/hatpic/twist");
+    dds_delete_qos(qos);
+    // The published driver's wrench publisher, as every sensor-data publisher: best effort,
+    // transient local, keep last 1.
+    qos = rmwQos(false, true, 1);
     e.wrench = dds_create_writer(
         e.participant, e.topic(&geometry_msgs_msg_dds__WrenchStamped__desc, "rt/wrench_estimation"),
         qos, nullptr);
@@ -88,19 +153,28 @@ RosTestPeer::RosTestPeer(int domain) : m_e(std::make_unique<Entities>())
     dds_delete_qos(qos);
     e.publications =
         dds_create_reader(e.participant, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
+    e.subscriptions =
+        dds_create_reader(e.participant, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);
 }
 
 RosTestPeer::~RosTestPeer()
 {
     if (m_e->participant > 0)
         dds_delete(m_e->participant);
+    if (m_e->domain > 0)
+        dds_delete(m_e->domain);
 }
 
 bool RosTestPeer::isValid() const
 {
     const Entities &e = *m_e;
-    return e.participant > 0 && e.joint > 0 && e.twist > 0 && e.pose > 0 && e.feedback > 0 &&
-           e.wrench > 0 && e.unstamped > 0 && e.publications > 0;
+    for (const dds_entity_t h :
+         {e.participant, e.joint, e.twist, e.bestEffortTwist, e.unstampedTwist, e.pose, e.feedback,
+          e.wrench, e.unstamped, e.publications, e.subscriptions}) {
+        if (h <= 0)
+            return false;
+    }
+    return true;
 }
 
 bool RosTestPeer::wrenchMatched(bool unstamped) const
@@ -108,6 +182,13 @@ bool RosTestPeer::wrenchMatched(bool unstamped) const
     dds_publication_matched_status_t status{};
     return dds_get_publication_matched_status(unstamped ? m_e->unstamped : m_e->wrench, &status) ==
                DDS_RETCODE_OK &&
+           status.current_count > 0;
+}
+
+bool RosTestPeer::twistMatched() const
+{
+    dds_subscription_matched_status_t status{};
+    return dds_get_subscription_matched_status(m_e->twist, &status) == DDS_RETCODE_OK &&
            status.current_count > 0;
 }
 
@@ -131,6 +212,8 @@ void RosTestPeer::clear()
 {
     joints.clear();
     twists.clear();
+    bestEffortTwists.clear();
+    unstampedTwists.clear();
     poses.clear();
     feedbacks.clear();
 }
@@ -146,9 +229,17 @@ void RosTestPeer::take()
         g.effort.assign(m.effort._buffer, m.effort._buffer + m.effort._length);
         joints.push_back(std::move(g));
     });
-    takeAll<geometry_msgs_msg_dds__TwistStamped_>(m_e->twist, [this](const auto &m) {
-        twists.push_back(
-            {timeOf(m.header), m.header.frame_id, vec(m.twist.linear), vec(m.twist.angular)});
+    const auto twistInto = [](std::vector<VectorsGot> &into) {
+        return [&into](const geometry_msgs_msg_dds__TwistStamped_ &m) {
+            into.push_back(
+                {timeOf(m.header), m.header.frame_id, vec(m.twist.linear), vec(m.twist.angular)});
+        };
+    };
+    takeAll<geometry_msgs_msg_dds__TwistStamped_>(m_e->twist, twistInto(twists));
+    takeAll<geometry_msgs_msg_dds__TwistStamped_>(m_e->bestEffortTwist,
+                                                  twistInto(bestEffortTwists));
+    takeAll<geometry_msgs_msg_dds__Twist_>(m_e->unstampedTwist, [this](const auto &m) {
+        unstampedTwists.push_back({{}, {}, vec(m.linear), vec(m.angular)});
     });
     takeAll<geometry_msgs_msg_dds__PoseStamped_>(m_e->pose, [this](const auto &m) {
         const auto &p = m.pose;
@@ -163,20 +254,16 @@ void RosTestPeer::take()
     });
 }
 
-std::vector<std::pair<std::string, std::string>> RosTestPeer::publications()
+std::vector<EndpointSeen> RosTestPeer::publications()
 {
-    void *samples[32] = {};
-    dds_sample_info_t infos[32];
-    const dds_return_t n = dds_take(m_e->publications, samples, infos, 32, 32);
-    for (int i = 0; i < n; ++i) {
-        if (!infos[i].valid_data)
-            continue;
-        const auto *e = static_cast<const dds_builtintopic_endpoint_t *>(samples[i]);
-        m_seen.emplace_back(e->topic_name, e->type_name);
-    }
-    if (n > 0)
-        dds_return_loan(m_e->publications, samples, n);
-    return m_seen;
+    takeEndpoints(m_e->publications, m_publications);
+    return m_publications;
+}
+
+std::vector<EndpointSeen> RosTestPeer::subscriptions()
+{
+    takeEndpoints(m_e->subscriptions, m_subscriptions);
+    return m_subscriptions;
 }
 
 } // namespace hatpic::test

@@ -1,6 +1,10 @@
-// A ROS 2 node's view of the bridge, for tests: a Cyclone DDS participant with its own
-// IDL-generated types (rostestmessages.idl) that reads the bridge's topics and publishes
-// wrenches, confined to loopback (lo, no multicast, unicast peer 127.0.0.1) in a test domain.
+// A ROS 2 node's view of the bridge, for tests: a Cyclone DDS participant built the way
+// rmw_cyclonedds builds one — its own IDL-generated types (rostestmessages.idl) without type
+// information, so that it matches by type name as a real node does, and rmw's QoS — that reads
+// the bridge's topics and publishes wrenches as the published driver does (best effort,
+// transient local, keep last 1). By default in a test domain on loopback (lo, no multicast,
+// unicast peer 127.0.0.1), or in a domain configured as a test says (as rmw configures it from
+// ROS's discovery variables).
 //
 // Built as a shared library whose generated symbols stay hidden: the types it uses are its
 // own, never the bridge's of the same C names.
@@ -36,9 +40,9 @@ struct JointGot
     std::vector<double> position, velocity, effort;
 };
 
-struct VectorsGot //!< TwistStamped (linear, angular) or WrenchStamped (force, torque)
+struct VectorsGot //!< (Twist|Wrench)[Stamped]: (linear, angular) or (force, torque)
 {
-    TimeGot stamp;
+    TimeGot stamp; //!< zero for the unstamped types
     std::string frame;
     std::array<double, 3> a{}, b{};
 };
@@ -51,13 +55,28 @@ struct PoseGot
     std::array<double, 4> orientation{};
 };
 
+//! A remote reader or writer as DDS's built-in topics announce it.
+struct EndpointSeen
+{
+    std::string topic;    //!< "rt/hatpic/twist"
+    std::string type;     //!< "geometry_msgs::msg::dds_::TwistStamped_"
+    std::string userData; //!< USER_DATA as text ("typehash=RIHS01_…;")
+    bool reliable = false;
+    friend bool operator==(const EndpointSeen &, const EndpointSeen &) = default;
+};
+
 class HATPIC_ROSPEER_API RosTestPeer
 {
 public:
     //! Where the peer publishes geometry_msgs/Wrench (ROS name "/robot/wrench").
     static constexpr const char *kUnstampedTopic = "rt/robot/wrench";
+    //! Where it reads geometry_msgs/Twist (ROS name "/haptic_twist", the published driver's).
+    static constexpr const char *kTwistUnstampedTopic = "rt/haptic_twist";
 
-    explicit RosTestPeer(int domain);
+    //! A peer in `domain`. With `domainConfig` the peer creates that domain itself with this
+    //! Cyclone DDS configuration (dds_create_domain, as rmw_cyclonedds does), and the process
+    //! must have no other participant in it.
+    explicit RosTestPeer(int domain, const std::string &domainConfig = {});
     ~RosTestPeer();
     RosTestPeer(const RosTestPeer &) = delete;
     RosTestPeer &operator=(const RosTestPeer &) = delete;
@@ -65,24 +84,30 @@ public:
     bool isValid() const;
     //! The bridge's wrench reader (of the stamped or the unstamped topic) matched ours.
     bool wrenchMatched(bool unstamped = false) const;
+    //! A writer of the bridge's matched our reliable twist reader.
+    bool twistMatched() const;
     void publishWrench(double forceZ, double torqueZ = 0);
     void publishUnstampedWrench(double forceZ);
 
-    //! Takes everything that arrived into joints, twists, poses, feedbacks.
+    //! Takes everything that arrived into joints, twists, … (reliable readers, as ROS 2's
+    //! default subscription) and bestEffortTwists (a sensor-data subscription).
     void take();
     void clear();
-    //! (DDS topic name, type name) of every remote writer discovered so far.
-    std::vector<std::pair<std::string, std::string>> publications();
+    //! Every remote writer (reader) discovered so far, in the order announced.
+    std::vector<EndpointSeen> publications();
+    std::vector<EndpointSeen> subscriptions();
 
     std::vector<JointGot> joints;
     std::vector<VectorsGot> twists;
+    std::vector<VectorsGot> bestEffortTwists;
+    std::vector<VectorsGot> unstampedTwists;
     std::vector<PoseGot> poses;
     std::vector<VectorsGot> feedbacks;
 
 private:
     struct Entities;
     std::unique_ptr<Entities> m_e;
-    std::vector<std::pair<std::string, std::string>> m_seen;
+    std::vector<EndpointSeen> m_publications, m_subscriptions;
 };
 
 } // namespace hatpic::test

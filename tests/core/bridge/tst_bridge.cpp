@@ -1,6 +1,8 @@
 // The bridge over real Cyclone DDS on loopback, against the in-process simulated joystick: a
-// test node with its own IDL types sees the references of a knob held at a known angle under
-// ROS 2's topic and type names, and its wrench reaches the device as τ_ext.
+// test node built as rmw_cyclonedds builds one (its own IDL types, no type information) sees
+// the references of a knob held at a known angle under ROS 2's topic and type names with their
+// type hashes, and its wrench, published as the published driver does (best effort, transient
+// local), reaches the device as τ_ext.
 #include "rostestpeer.h"
 
 #include "bridge/bridge.h"
@@ -58,6 +60,7 @@ private Q_SLOTS:
         BridgeSettings settings;
         settings.domainId = kDomain;
         settings.topics.wrenchUnstamped = "/robot/wrench";
+        settings.topics.twistUnstamped = "/haptic_twist";
         m_peer = std::make_unique<RosTestPeer>(kDomain);
         QCOMPARE(m_bridge.start(settings), QString());
         QVERIFY(m_peer->isValid());
@@ -109,23 +112,68 @@ private Q_SLOTS:
         QVERIFY2(std::abs(rate - v) < 0.1 * v, qPrintable(QString::number(rate)));
         QCOMPARE(last.orientation, (std::array<double, 4>{0, 0, 0, 1}));
 
-        // On the wire under ROS 2's names.
-        const auto publications = m_peer->publications();
-        const std::pair<std::string, std::string> expected[] = {
-            {"rt/hatpic/joint_states", "sensor_msgs::msg::dds_::JointState_"},
-            {"rt/hatpic/twist", "geometry_msgs::msg::dds_::TwistStamped_"},
-            {"rt/hatpic/pose", "geometry_msgs::msg::dds_::PoseStamped_"},
-            {"rt/hatpic/feedback", "geometry_msgs::msg::dds_::WrenchStamped_"}};
-        for (const auto &e : expected) {
-            QVERIFY2(std::find(publications.begin(), publications.end(), e) != publications.end(),
-                     e.first.c_str());
+        // The same twist unstamped on /haptic_twist, and to a best-effort subscription.
+        QVERIFY(m_peer->unstampedTwists.size() >= 20);
+        QVERIFY(m_peer->bestEffortTwists.size() >= 20);
+        for (const auto &u : m_peer->unstampedTwists) {
+            QVERIFY(u.a[0] > 0.1 && u.a[0] < 0.3);
+            QCOMPARE(u.b, (std::array<double, 3>{0, 0, 0}));
         }
+        QVERIFY(std::any_of(m_peer->twists.begin(), m_peer->twists.end(), [&](const auto &t) {
+            return t.a == m_peer->unstampedTwists.back().a;
+        }));
+    }
+
+    // Every reader and writer under ROS 2's topic and type names, announcing its type hash in
+    // USER_DATA as rmw_cyclonedds (Iron and later) does: the hashes ROS 2 publishes for these
+    // types (`ros2 topic info -v`). The readers are best effort, to match any publisher.
+    void endpointsAsRosSeesThem()
+    {
+        struct Expected
+        {
+            std::string topic, type, hash;
+            bool reliable;
+        };
+        const std::string joint = "RIHS01_a13ee3a330e346c9d87b5aa18d24e11690752bd33a0350f11c5882b"
+                                  "c9179260e";
+        const std::string twistStamped = "RIHS01_5f0fcd4f81d5d06ad9b4c4c63e3ea51b82d6ae4d0558f1d47"
+                                         "5229b1121db6f64";
+        const std::string twist = "RIHS01_9c45bf16fe0983d80e3cfe750d6835843d265a9a6c46bd2e609fcd"
+                                  "dde6fb8d2a";
+        const std::string pose = "RIHS01_10f3786d7d40fd2b54367835614bff85d4ad3b5dab62bf8bca0cc232"
+                                 "d73b4cd8";
+        const std::string wrenchStamped = "RIHS01_8dc3deaf06b2ab281f9f9a742a8961c328ca7cec16e3fd6"
+                                          "586d3a5c83fa78f77";
+        const std::string wrench = "RIHS01_018e8519d57c16adbe97c9fe1460ef21fec7e31bc541de3d653a35"
+                                   "895677ce52";
+        const Expected writers[] = {
+            {"rt/hatpic/joint_states", "sensor_msgs::msg::dds_::JointState_", joint, true},
+            {"rt/hatpic/twist", "geometry_msgs::msg::dds_::TwistStamped_", twistStamped, true},
+            {"rt/haptic_twist", "geometry_msgs::msg::dds_::Twist_", twist, true},
+            {"rt/hatpic/pose", "geometry_msgs::msg::dds_::PoseStamped_", pose, true},
+            {"rt/hatpic/feedback", "geometry_msgs::msg::dds_::WrenchStamped_", wrenchStamped,
+             true}};
+        const Expected readers[] = {
+            {"rt/wrench_estimation", "geometry_msgs::msg::dds_::WrenchStamped_", wrenchStamped,
+             false},
+            {"rt/robot/wrench", "geometry_msgs::msg::dds_::Wrench_", wrench, false}};
+        const auto check = [](const std::vector<hatpic::test::EndpointSeen> &seen,
+                              const Expected &e) {
+            const hatpic::test::EndpointSeen wanted{e.topic, e.type, "typehash=" + e.hash + ";",
+                                                    e.reliable};
+            return std::find(seen.begin(), seen.end(), wanted) != seen.end();
+        };
+        for (const Expected &e : writers)
+            QTRY_VERIFY2_WITH_TIMEOUT(check(m_peer->publications(), e), e.topic.c_str(), 5000);
+        for (const Expected &e : readers)
+            QTRY_VERIFY2_WITH_TIMEOUT(check(m_peer->subscriptions(), e), e.topic.c_str(), 5000);
     }
 
     void wrenchBecomesTauExt()
     {
         QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
-        // A robot publishing at 50 Hz.
+        // A robot publishing at 50 Hz as the published driver does: best effort, transient
+        // local, keep last 1.
         double force = 0.5;
         QTimer robot;
         connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(force); });

@@ -1,6 +1,8 @@
 // The bridge's DDS-independent parts: wrench → τ_ext (gain, limit, stale, non-finite), the
-// outgoing messages' content, stamps, the rate limiter, and the settings' rules.
+// outgoing messages' content, sample times, the rate limiter, the settings' rules and the
+// publishers' QoS they give.
 #include "bridge/referencemessages.h"
+#include "bridge/rosendpoints.h"
 #include "bridge/wrenchfeedback.h"
 #include "profile/bridgesettings.h"
 
@@ -112,7 +114,7 @@ private Q_SLOTS:
         settings.poseOrigin = {0, 0, 0.5};
         const ReferenceMessages m = referenceMessages(s, 1700000000.25, settings,
                                                       settings.axisFor(ReferenceMode::Translation));
-        QCOMPARE(m.stamp, (Stamp{1700000000, 250000000}));
+        QCOMPARE(m.stamp, (ros::Time{1700000000, 250000000}));
         QCOMPARE(m.position, 0.4);
         QCOMPARE(m.velocity, -0.25);
         QCOMPARE(m.effort, 0.03);
@@ -136,16 +138,7 @@ private Q_SLOTS:
         QCOMPARE(z.posePosition[2], 2.0);
     }
 
-    void stamps()
-    {
-        QCOMPARE(stampFromSeconds(0.0), (Stamp{0, 0}));
-        QCOMPARE(stampFromSeconds(1.9999999999), (Stamp{2, 0})); // never nanosec = 10⁹
-        QCOMPARE(stampFromSeconds(-1.0), (Stamp{0, 0}));
-        QCOMPARE(stampFromSeconds(std::numeric_limits<double>::quiet_NaN()), (Stamp{0, 0}));
-        QCOMPARE(stampFromSeconds(1e12).sec, std::numeric_limits<std::int32_t>::max());
-        QCOMPARE(stampSeconds(Stamp{3, 500000000}), 3.5);
-        QCOMPARE(sampleWallSeconds(100.0, 5.0, 4.98), 100.0 - (5.0 - 4.98));
-    }
+    void sampleWallClock() { QCOMPARE(sampleWallSeconds(100.0, 5.0, 4.98), 100.0 - (5.0 - 4.98)); }
 
     void rateLimiterKeepsTheRateBySampleTime()
     {
@@ -175,12 +168,16 @@ private Q_SLOTS:
         s.depth = 0;
         s.domainId = 233;
         s.topics.twist = "/hatpic//twist";
+        s.topics.twistUnstamped = "/haptic twist";
         const auto errors = validate(s);
-        QCOMPARE(errors.size(), 7u);
+        QCOMPARE(errors.size(), 8u);
         QCOMPARE(errors.front(), std::string("twist topic: '/hatpic//twist' is not a ROS topic "
                                              "name (letters, digits and '_' between single '/', "
                                              "not starting with a digit)"));
-        QCOMPARE(errors[1],
+        QCOMPARE(errors[1], std::string("unstamped twist topic: '/haptic twist' is not a ROS "
+                                        "topic name (letters, digits and '_' between single "
+                                        "'/', not starting with a digit)"));
+        QCOMPARE(errors[2],
                  std::string("publish rate: must be above 0 and at most 1000 Hz, got 0"));
     }
 
@@ -192,8 +189,18 @@ private Q_SLOTS:
         QVERIFY(!isValidTopicName("/a/"));
         QVERIFY(!isValidTopicName("/1a"));
         QVERIFY(!isValidTopicName("/a b"));
-        QCOMPARE(ddsTopicName("/hatpic/twist"), std::string("rt/hatpic/twist"));
-        QCOMPARE(ddsTopicName("wrench_estimation"), std::string("rt/wrench_estimation"));
+        QVERIFY(BridgeSettings().topics.twistUnstamped.empty()); // off unless named
+    }
+
+    // --qos and --depth set the publishers; the subscriptions always take any publisher.
+    void writerQosFromTheSettings()
+    {
+        BridgeSettings s;
+        QCOMPARE(RosEndpoints::writerQos(s), ros::Qos::defaults());
+        s.qos = QosProfile::BestEffort;
+        s.depth = 3;
+        QCOMPARE(RosEndpoints::writerQos(s),
+                 (ros::Qos{ros::Qos::Reliability::BestEffort, ros::Qos::Durability::Volatile, 3}));
     }
 
     void componentsAndProfiles()

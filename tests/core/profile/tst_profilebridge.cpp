@@ -44,6 +44,7 @@ BridgeSettings changedSettings()
     BridgeSettings s;
     s.topics.jointStates = "/arm/joint_states";
     s.topics.twist = "";
+    s.topics.twistUnstamped = "/haptic_twist";
     s.topics.pose = "mavros/setpoint_position/local";
     s.topics.feedback = "/arm/feedback";
     s.topics.wrench = "/arm/wrench";
@@ -135,6 +136,7 @@ void TestProfileBridge::exactText()
     const QByteArray expected = "{\n"
                                 "  \"joint_states_topic\": \"/hatpic/joint_states\",\n"
                                 "  \"twist_topic\": \"/hatpic/twist\",\n"
+                                "  \"twist_unstamped_topic\": \"\",\n"
                                 "  \"pose_topic\": \"/hatpic/pose\",\n"
                                 "  \"feedback_topic\": \"/hatpic/feedback\",\n"
                                 "  \"wrench_topic\": \"/wrench_estimation\",\n"

@@ -125,6 +125,15 @@ private Q_SLOTS:
         QCOMPARE(m_panel->settings().topics.twist, std::string("/arm/twist"));
         QTRY_VERIFY_WITH_TIMEOUT(hasPublication("rt/arm/twist"), 10000);
 
+        // The unstamped twist, off until named: then geometry_msgs/Twist goes out too.
+        QLineEdit *unstamped = find<QLineEdit>(u"bridge_topic_twist_unstamped"_s);
+        QCOMPARE(unstamped->text(), QString());
+        QVERIFY(!hasPublication("rt/haptic_twist"));
+        unstamped->setText(u"/haptic_twist"_s);
+        Q_EMIT unstamped->editingFinished();
+        QCOMPARE(m_panel->settings().topics.twistUnstamped, std::string("/haptic_twist"));
+        QTRY_VERIFY_WITH_TIMEOUT((m_peer->take(), !m_peer->unstampedTwists.empty()), 10000);
+
         // The rate, at once: 10 Hz gives about 10 joint states a second.
         find<QDoubleSpinBox>(u"bridge_rate"_s)->setValue(10);
         QTest::qWait(300);
@@ -215,7 +224,7 @@ private:
     bool hasPublication(const std::string &topic)
     {
         const auto p = m_peer->publications();
-        return std::any_of(p.begin(), p.end(), [&](const auto &e) { return e.first == topic; });
+        return std::any_of(p.begin(), p.end(), [&](const auto &e) { return e.topic == topic; });
     }
 
     DeviceClient m_client;
