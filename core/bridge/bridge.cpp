@@ -81,6 +81,11 @@ bool Bridge::setPublishRate(double rateHz)
     return true;
 }
 
+QString Bridge::where() const
+{
+    return m_endpoints ? QString::fromStdString(m_endpoints->where()) : QString();
+}
+
 BridgeStats Bridge::stats() const
 {
     BridgeStats s;

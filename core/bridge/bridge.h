@@ -63,6 +63,8 @@ public:
 
     const BridgeSettings &settings() const { return m_settings; }
     BridgeStats stats() const;
+    //! Where the endpoints are, for people ("ROS 1, master http://…"); empty when stopped.
+    QString where() const;
 
 Q_SIGNALS:
     //! τ_ext asked of the device changed (a wrench, its staleness, or stop()).

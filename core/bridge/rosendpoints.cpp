@@ -36,6 +36,11 @@ RosEndpoints::Wrench wrenchOf(const WrenchMsg &w)
     return {w.force.x, w.force.y, w.force.z, w.torque.x, w.torque.y, w.torque.z};
 }
 
+RosEndpoints::Wrench wrenchOf(const ros::Wrench &w)
+{
+    return {w.force.x, w.force.y, w.force.z, w.torque.x, w.torque.y, w.torque.z};
+}
+
 } // namespace
 
 const char *outTopicKey(OutTopic topic)
@@ -72,6 +77,10 @@ RosEndpoints::RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrenc
 
 RosEndpoints::~RosEndpoints()
 {
+    m_subscriptions.clear(); // waits for a handler call in progress
+    for (auto &publisher : m_publishers)
+        publisher.reset();
+    m_node.reset();
     if (m_h->participant > 0)
         dds_delete(m_h->participant); // waits for listener calls in progress
 }
@@ -91,6 +100,8 @@ std::unique_ptr<RosEndpoints> RosEndpoints::open(const BridgeSettings &settings,
 
 std::string RosEndpoints::create()
 {
+    if (m_settings.rosVersion == 1)
+        return createOnNode();
     Handles &h = *m_h;
     h.participant = dds_create_participant(dds_domainid_t(m_settings.domainId), nullptr, nullptr);
     if (h.participant < 0)
@@ -181,8 +192,105 @@ void RosEndpoints::takeWrenches(std::int32_t reader)
     }
 }
 
+std::string RosEndpoints::createOnNode()
+{
+    std::string error;
+    ros::NodeOptions options;
+    options.version = m_settings.rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
+    options.name = "hatpic_bridge";
+    options.domainId = m_settings.domainId;
+    m_node = ros::Node::open(options, &error);
+    if (!m_node)
+        return error;
+    ros::Qos writerQos = ros::Qos::defaults(); // ROS 1 takes the depth as its queue size
+    writerQos.depth = m_settings.depth;
+    const std::pair<const std::string *, ros::MessageType> out[] = {
+        {&m_settings.topics.jointStates, ros::MessageType::JointState},
+        {&m_settings.topics.twist, ros::MessageType::TwistStamped},
+        {&m_settings.topics.pose, ros::MessageType::PoseStamped},
+        {&m_settings.topics.feedback, ros::MessageType::WrenchStamped}};
+    static_assert(std::size(out) == kOutTopicCount);
+    for (int i = 0; i < kOutTopicCount; ++i) {
+        if (out[i].first->empty())
+            continue;
+        m_publishers[i] = m_node->advertise(*out[i].first, out[i].second, writerQos, &error);
+        if (!m_publishers[i])
+            return error;
+    }
+    // Every wrench, stamped or not, goes to the one handler.
+    const auto handler = [this](const ros::Message &message) {
+        if (const auto *stamped = std::get_if<ros::WrenchStamped>(&message))
+            m_onWrench(wrenchOf(stamped->wrench));
+        else if (const auto *wrench = std::get_if<ros::Wrench>(&message))
+            m_onWrench(wrenchOf(*wrench));
+    };
+    const std::pair<const std::string *, ros::MessageType> in[] = {
+        {&m_settings.topics.wrench, ros::MessageType::WrenchStamped},
+        {&m_settings.topics.wrenchUnstamped, ros::MessageType::Wrench}};
+    for (const auto &[name, type] : in) {
+        if (name->empty())
+            continue;
+        auto subscription = m_node->subscribe(*name, type, ros::Qos::matchAny(), handler, &error);
+        if (!subscription)
+            return error;
+        m_subscriptions.push_back(std::move(subscription));
+    }
+    return {};
+}
+
+void RosEndpoints::publishOnNode(const ReferenceMessages &m)
+{
+    const ros::Header header{{m.stamp.sec, m.stamp.nanosec}, m_settings.frameId};
+    // Builds a message only for a topic that has a publisher.
+    const auto send = [this](OutTopic topic, const auto &make) {
+        if (const auto &publisher = m_publishers[int(topic)])
+            publisher->publish(make());
+    };
+    send(OutTopic::JointStates, [&] {
+        return ros::JointState{
+            header, {m_settings.jointName}, {m.position}, {m.velocity}, {m.effort}};
+    });
+    send(OutTopic::Twist, [&] {
+        return ros::TwistStamped{
+            header, {{m.twist[0], m.twist[1], m.twist[2]}, {m.twist[3], m.twist[4], m.twist[5]}}};
+    });
+    send(OutTopic::Pose, [&] {
+        const auto &p = m.posePosition;
+        const auto &o = m.poseOrientation;
+        return ros::PoseStamped{header, {{p[0], p[1], p[2]}, {o[0], o[1], o[2], o[3]}}};
+    });
+    send(OutTopic::Feedback, [&] {
+        return ros::WrenchStamped{header, {{0, 0, 0}, {0, 0, m.feedbackTorque}}};
+    });
+}
+
+std::uint64_t RosEndpoints::written(OutTopic topic) const
+{
+    if (!m_node)
+        return m_written[int(topic)];
+    const auto &publisher = m_publishers[int(topic)];
+    return publisher ? publisher->written() : 0;
+}
+
+std::uint64_t RosEndpoints::writeErrors() const
+{
+    std::uint64_t errors = m_writeErrors;
+    for (const auto &publisher : m_publishers)
+        errors += publisher ? publisher->writeErrors() : 0;
+    return errors;
+}
+
+std::string RosEndpoints::where() const
+{
+    return m_node ? m_node->where() : "ROS 2, domain " + std::to_string(m_settings.domainId);
+}
+
 void RosEndpoints::publish(const ReferenceMessages &m)
 {
+    if (m_node) {
+        publishOnNode(m);
+        return;
+    }
     const auto write = [this](OutTopic topic, const void *sample) {
         const dds_entity_t w = m_h->writers[int(topic)];
         if (w <= 0)
