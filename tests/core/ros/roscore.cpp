@@ -230,6 +230,11 @@ QList<QJsonObject> Ros1Peer::received(const QString &topic) const
     return messages;
 }
 
+void Ros1Peer::clear()
+{
+    m_lines.removeIf([](const QJsonObject &line) { return line.contains(u"msg"_s); });
+}
+
 QJsonObject Ros1Peer::lastEvent(const QString &kind) const
 {
     for (auto it = m_lines.crbegin(); it != m_lines.crend(); ++it) {

@@ -66,7 +66,8 @@ public:
 
     //! Messages received on `topic` so far ({"topic", "callerid", "msg"}), oldest first.
     QList<QJsonObject> received(const QString &topic) const;
-    void clear() { m_lines.clear(); }
+    //! Forgets the messages received so far (not the events).
+    void clear();
     //! The newest event line of that kind ({"event": kind, …}); empty when none yet.
     QJsonObject lastEvent(const QString &kind) const;
     //! The newest count of subscribers of the peer's publisher of `topic`; -1 before any.
