@@ -39,8 +39,10 @@ struct Qos
 struct NodeOptions
 {
     RosVersion version = RosVersion::Ros2;
-    std::string name;   //!< the node's name without namespace ("hatpic_bridge")
-    int domainId = -1;  //!< ROS 2: the DDS domain; −1: ROS_DOMAIN_ID, else 0
+    //! The node's name without namespace ("hatpic_bridge"). ROS 2: not announced (no
+    //! ros_discovery_info), so `ros2 node list` does not show it (ros.md § Discovery).
+    std::string name;
+    int domainId = -1; //!< ROS 2: the DDS domain; −1: ROS_DOMAIN_ID, else 0
 };
 
 //! Publishes one topic. publish() may be called from any thread, one call at a time; it does
