@@ -1,4 +1,4 @@
-# hatpic-bridge: the robot bridge on ROS 2 (docs/ros.md). Included from app/CMakeLists.txt.
+# hatpic-bridge: the robot bridge on ROS 2 or ROS 1 (docs/ros.md). Included from app/CMakeLists.txt.
 add_executable(hatpic-bridge
   hatpic-bridge/main.cpp
   hatpic-bridge/bridgeoptions.cpp hatpic-bridge/bridgeoptions.h

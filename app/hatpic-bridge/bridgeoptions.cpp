@@ -124,6 +124,9 @@ const std::vector<Setting> &settingTable()
              o.connect.feedbackRateHz = *v;
              return QString();
          }},
+        {"ros", "VERSION",
+         "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp (ROS_MASTER_URI).",
+         HATPIC_SETTING(settings.rosVersion)},
         {"domain", "ID", "DDS domain (default: ROS_DOMAIN_ID, else 0).",
          HATPIC_SETTING(settings.domainId)},
         {"joint-states-topic", "NAME",
@@ -243,9 +246,9 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "The HATPIC joystick on ROS 2 (Cyclone DDS, as rmw_cyclonedds): publishes its "
-        "references, feeds the robot's wrench back as τ_ext. Statistics once a second on "
-        "stdout; runs until SIGINT or SIGTERM. See docs/ros.md."));
+        "The HATPIC joystick on ROS 2 (Cyclone DDS, as rmw_cyclonedds) or ROS 1 (--ros 1, "
+        "roscpp): publishes its references, feeds the robot's wrench back as τ_ext. Statistics "
+        "once a second on stdout; runs until SIGINT or SIGTERM. See docs/ros.md."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption portOption(QStringLiteral("port"),
                                         QStringLiteral("Device path, a pseudo-terminal, or sim."),
@@ -317,9 +320,8 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
             return std::nullopt;
         }
         options.profile = read.profile;
-        const int domainId = options.settings.domainId; // a profile holds no domain
-        options.settings = read.profile->bridge;
-        options.settings.domainId = domainId;
+        // A profile holds no network settings (domain, ROS version).
+        options.settings = withNetworkOf(read.profile->bridge, options.settings);
         if (!applyOptions())
             return std::nullopt;
     }

@@ -1,6 +1,6 @@
-// hatpic-bridge: the joystick on ROS 2 and the robot's wrench back in the operator's hand
-// (docs/ros.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4;
-// DDS refused: exit 1.
+// hatpic-bridge: the joystick on ROS 2 (or ROS 1) and the robot's wrench back in the operator's
+// hand (docs/ros.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4;
+// the middleware refused (or that ROS is not built in): exit 1.
 #include "bridgeoptions.h"
 #include "bridgeprogram.h"
 

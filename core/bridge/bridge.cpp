@@ -121,6 +121,12 @@ BridgeSettings Bridge::settings() const
     return m_settings;
 }
 
+QString Bridge::where() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_endpoints ? QString::fromStdString(m_endpoints->where()) : QString();
+}
+
 BridgeStats Bridge::stats() const
 {
     const std::lock_guard lock(m_mutex);

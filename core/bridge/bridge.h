@@ -62,6 +62,8 @@ public:
 
     BridgeSettings settings() const;
     BridgeStats stats() const;
+    //! Where the endpoints are, for people ("ROS 1, master http://…"); empty when stopped.
+    QString where() const;
 
 private:
     void sampleDecoded(const Sample &sample) override; //!< the session thread

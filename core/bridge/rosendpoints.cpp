@@ -66,7 +66,7 @@ std::string RosEndpoints::create()
 {
     std::string error;
     ros::NodeOptions options;
-    options.version = ros::RosVersion::Ros2;
+    options.version = m_settings.rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
     options.name = "hatpic_bridge";
     options.domainId = m_settings.domainId;
     m_node = ros::Node::open(options, &error);
@@ -151,6 +151,11 @@ std::uint64_t RosEndpoints::writeErrors() const
     for (const auto &publisher : m_publishers)
         errors += publisher ? publisher->writeErrors() : 0;
     return errors;
+}
+
+std::string RosEndpoints::where() const
+{
+    return m_node->where();
 }
 
 } // namespace hatpic::bridge

@@ -1,5 +1,6 @@
-// The bridge's ROS side: one ROS 2 node (hatpic::ros, on the wire as rmw_cyclonedds puts it)
-// with the publishers and subscriptions of ros.md, made from the bridge's settings. It only
+// The bridge's ROS side: one node (hatpic::ros) of the ROS the settings name — ROS 2 on the
+// wire as rmw_cyclonedds puts it, or ROS 1 through roscpp — with the publishers and
+// subscriptions of ros.md, made from the bridge's settings. It only
 // turns ReferenceMessages into ROS messages and a wrench message into a Wrench.
 #pragma once
 
@@ -31,10 +32,11 @@ public:
     //! Called on a middleware thread, once per wrench received (stamped or not).
     using WrenchHandler = std::function<void(const Wrench &)>;
 
-    //! Opens the node "hatpic_bridge" in settings.domainId (ROS's discovery variables and
-    //! CYCLONEDDS_URI apply), a publisher of every named outgoing topic with writerQos() and a
-    //! subscription of every named wrench topic with ros::Qos::matchAny(). Null with `*error`
-    //! set to one sentence when the middleware refuses.
+    //! Opens the node "hatpic_bridge" of settings.rosVersion (ROS 2: in settings.domainId,
+    //! ROS's discovery variables and CYCLONEDDS_URI apply; ROS 1: ROS_MASTER_URI applies), a
+    //! publisher of every named outgoing topic with writerQos() and a subscription of every named
+    //! wrench topic with ros::Qos::matchAny(). Null with `*error` set to one sentence when the
+    //! middleware refuses.
     static std::unique_ptr<RosEndpoints> open(const BridgeSettings &settings,
                                               WrenchHandler onWrench, std::string *error);
     ~RosEndpoints(); //!< closes the node; no handler call runs after it returns
@@ -49,6 +51,8 @@ public:
 
     std::uint64_t written(OutTopic topic) const;
     std::uint64_t writeErrors() const;
+    //! Where the endpoints are, for people ("ROS 2, domain 0", "ROS 1, master http://…").
+    std::string where() const;
 
 private:
     RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench);

@@ -93,6 +93,13 @@ bool isValidTopicName(const std::string &name)
     return true;
 }
 
+BridgeSettings withNetworkOf(BridgeSettings settings, const BridgeSettings &network)
+{
+    settings.domainId = network.domainId;
+    settings.rosVersion = network.rosVersion;
+    return settings;
+}
+
 std::vector<std::string> validate(const BridgeSettings &s)
 {
     std::vector<std::string> errors;
@@ -131,6 +138,7 @@ std::vector<std::string> validate(const BridgeSettings &s)
           "a whole number from 1 to " + std::to_string(kMaxDepth), s.depth);
     check(errors, s.domainId >= 0 && s.domainId <= kMaxDomainId, "domain id",
           "a whole number from 0 to " + std::to_string(kMaxDomainId), s.domainId);
+    check(errors, s.rosVersion == 1 || s.rosVersion == 2, "ROS version", "1 or 2", s.rosVersion);
     if (s.frameId.size() > 256)
         errors.push_back("frame id: must be at most 256 characters");
     if (s.jointName.empty() || s.jointName.size() > 256)

@@ -72,12 +72,18 @@ struct BridgeSettings
     QosProfile qos = QosProfile::Reliable;  //!< of the publishers (topics out)
     int depth = 10;                         //!< keep last N, of the publishers
     int domainId = 0;                       //!< DDS domain (ROS_DOMAIN_ID)
+    int rosVersion = 2;                     //!< 2: ROS 2 over Cyclone DDS; 1: ROS 1 (roscpp)
 
     //! The axis the references go on for the given reference mode.
     Component axisFor(ReferenceMode mode) const;
 
     friend bool operator==(const BridgeSettings &, const BridgeSettings &) = default;
 };
+
+//! `settings` with the network settings of `network`: the ROS version and the DDS domain. They
+//! describe the network a machine is on, not a tuning, so a profile holds neither and opening
+//! one keeps those in use (profile.md).
+BridgeSettings withNetworkOf(BridgeSettings settings, const BridgeSettings &network);
 
 // Bounds (checked by validate()).
 constexpr double kMaxPublishRateHz = 1000; //!< the fastest telemetry there is

@@ -172,8 +172,8 @@ void readHost(const QJsonObject &root, HostParams &host, bridge::BridgeSettings 
 QByteArray hostJson(const Profile &profile)
 {
     JsonObjectWriter writer = hostParamsWriter(profile.host, 2);
-    bridge::BridgeSettings defaults;
-    defaults.domainId = profile.bridge.domainId;
+    const bridge::BridgeSettings defaults =
+        bridge::withNetworkOf(bridge::BridgeSettings(), profile.bridge);
     if (profile.bridge != defaults)
         writer.add(kHostBridgeKey, bridgeSettingsJson(profile.bridge, 4));
     return writer.text();

@@ -20,7 +20,8 @@ struct Profile
     QString notes;
     DeviceParams device;
     HostParams host;
-    //! host.bridge of the file; its domainId is not part of a profile and stays at the default.
+    //! host.bridge of the file; its network settings (DDS domain, ROS version) are not part of
+    //! a profile and stay at their defaults.
     bridge::BridgeSettings bridge{}; // {}: aggregate initialisers may leave it out
     //! device.effects of the file; the defaults (which render nothing) when it has none. Last,
     //! so that aggregate initialisers written before it still mean what they meant.

@@ -2,6 +2,7 @@
 
 #ifdef HATPIC_HAVE_BRIDGE
 #include "bridge/bridge.h"
+#include "ros/node.h"
 #endif
 
 #include <QCheckBox>
@@ -127,9 +128,29 @@ void BridgePanel::buildForm()
 {
     auto *layout = static_cast<QVBoxLayout *>(this->layout());
     auto *top = new QFormLayout;
-    m_enable = new QCheckBox(tr("Publish on ROS 2 and feed the wrench back"), this);
+    m_top = top;
+    m_enable = new QCheckBox(tr("Publish on ROS and feed the wrench back"), this);
     m_enable->setObjectName(u"bridge_enable"_s);
     top->addRow(m_enable);
+    m_ros = new QComboBox(this);
+    m_ros->setObjectName(u"bridge_ros"_s);
+    m_ros->addItem(tr("ROS 2"), 2);
+    m_ros->addItem(tr("ROS 1"), 1);
+    m_ros->setToolTip(tr("ROS 2 over Cyclone DDS, or ROS 1 through roscpp; not saved in profiles"));
+#ifdef HATPIC_HAVE_BRIDGE
+    if (!ros::Node::isAvailable(ros::RosVersion::Ros1)) {
+        // Not built in: shown, but not to be chosen.
+        m_ros->setItemData(1, false, Qt::UserRole - 1);
+        m_ros->setItemData(1, tr("ROS 1 is not built into this tuner (it needs libroscpp-dev)"),
+                           Qt::ToolTipRole);
+    }
+#endif
+    top->addRow(tr("ROS"), m_ros);
+    m_master = new QLabel(this);
+    m_master->setObjectName(u"bridge_master"_s);
+    m_master->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_master->setToolTip(tr("The ROS 1 master (ROS_MASTER_URI), read when the tuner started"));
+    top->addRow(tr("Master"), m_master);
     m_domain = new QSpinBox(this);
     m_domain->setObjectName(u"bridge_domain"_s);
     m_domain->setRange(0, bridge::kMaxDomainId);
@@ -188,6 +209,10 @@ void BridgePanel::buildForm()
     layout->addStretch();
 
     connect(m_enable, &QCheckBox::toggled, this, &BridgePanel::setBridgeEnabled);
+    connect(m_ros, &QComboBox::currentIndexChanged, this, [this] {
+        showNetworkRows();
+        edited(true);
+    });
     connect(m_domain, &QSpinBox::valueChanged, this, [this] { edited(true); });
     connect(m_rate, &QDoubleSpinBox::valueChanged, this, [this] { edited(false); });
     for (QDoubleSpinBox *box : {m_gain, m_limit, m_stale})
@@ -200,7 +225,9 @@ void BridgePanel::showSettings()
     if (!m_bridge)
         return;
     const QSignalBlocker b1(m_domain), b2(m_rate), b3(m_component), b4(m_gain), b5(m_limit),
-        b6(m_stale);
+        b6(m_stale), b7(m_ros);
+    m_ros->setCurrentIndex(m_ros->findData(m_settings.rosVersion));
+    showNetworkRows();
     m_domain->setValue(m_settings.domainId);
     m_rate->setValue(m_settings.publishRateHz);
     const Component c = m_settings.feedback.component;
@@ -216,9 +243,7 @@ void BridgePanel::setSettings(const BridgeSettings &settings)
 {
     if (!m_bridge)
         return;
-    const int domain = m_settings.domainId;
-    m_settings = settings;
-    m_settings.domainId = domain;
+    m_settings = bridge::withNetworkOf(settings, m_settings);
     showSettings();
     if (isRunning())
         setBridgeEnabled(true); // reopens with the new settings
@@ -227,6 +252,7 @@ void BridgePanel::setSettings(const BridgeSettings &settings)
 void BridgePanel::edited(bool reopen)
 {
     BridgeSettings s = m_settings;
+    s.rosVersion = m_ros->currentData().toInt();
     s.domainId = m_domain->value();
     s.publishRateHz = taken(m_rate, m_settings.publishRateHz);
     const int c = m_component->currentIndex();
@@ -254,7 +280,7 @@ void BridgePanel::edited(bool reopen)
                 m_bridge->setFeedbackSettings(s.feedback);
             if (rateChanged)
                 m_bridge->setPublishRate(s.publishRateHz);
-            setStatus(tr("Running on domain %1").arg(s.domainId), false);
+            setStatus(runningText(), false);
         }
     } else {
         setStatus(tr("Off"), false);
@@ -303,7 +329,7 @@ void BridgePanel::setBridgeEnabled(bool on)
     }
     if (running) {
         m_refresh.start();
-        setStatus(tr("Running on domain %1").arg(m_settings.domainId), false);
+        setStatus(runningText(), false);
     } else {
         m_refresh.stop();
         setStatus(error.isEmpty() ? tr("Off") : tr("Cannot start: %1").arg(error),
@@ -344,6 +370,25 @@ QString BridgePanel::statusText() const
         return m_status->text();
     return m_status->text() + u" | "_s + m_wrench->text() + u" → τ_ext "_s + m_tauExt->text() +
            u" | "_s + m_counts->text() + u" | "_s + m_published->text();
+}
+
+QString BridgePanel::runningText() const
+{
+#ifdef HATPIC_HAVE_BRIDGE
+    if (m_settings.rosVersion == 1)
+        return tr("Running on %1").arg(m_bridge->where());
+#endif
+    return tr("Running on domain %1").arg(m_settings.domainId);
+}
+
+void BridgePanel::showNetworkRows()
+{
+    const bool ros1 = m_ros->currentData().toInt() == 1;
+    m_top->setRowVisible(m_domain, !ros1);
+    m_top->setRowVisible(m_master, ros1);
+    const QByteArray master = qgetenv("ROS_MASTER_URI");
+    m_master->setText(master.isEmpty() ? tr("roscpp's default (ROS_MASTER_URI is not set)")
+                                       : QString::fromLocal8Bit(master));
 }
 
 void BridgePanel::setStatus(const QString &text, bool error)

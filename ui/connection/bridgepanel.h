@@ -1,8 +1,9 @@
 // The Bridge panel (ros.md § In the tuner): the robot bridge inside the tuner, on the window's
-// DeviceClient. Enable/disable; topics, rate and domain (a change reopens the endpoints while
-// running); gain, limit, component and staleness applied at once, so the feel can be tuned
-// while the robot runs; the last wrench, the τ_ext it produced and the rejected counts.
-// Without HATPIC_BUILD_BRIDGE the panel only says that the bridge is not built.
+// DeviceClient. Enable/disable; ROS 2 (with its domain) or ROS 1 (with its master), topics and
+// rate (a change of ROS, domain or topic reopens the endpoints while running); gain, limit,
+// component and staleness applied at once, so the feel can be tuned while the robot runs; the last
+// wrench, the τ_ext it produced and the rejected counts. Without HATPIC_BUILD_BRIDGE the panel only
+// says that the bridge is not built.
 #pragma once
 
 #include "model/params.h"
@@ -14,6 +15,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -37,15 +39,15 @@ public:
     explicit BridgePanel(DeviceClient &client, QWidget *parent = nullptr);
     ~BridgePanel() override; //!< stops the bridge: τ_ext 0 to the device
 
-    //! The settings shown (the domain from ROS_DOMAIN_ID, else 0, until edited).
+    //! The settings shown (the domain from ROS_DOMAIN_ID, else 0, and ROS 2 until edited).
     const bridge::BridgeSettings &settings() const { return m_settings; }
     bool isRunning() const;
     //! The bridge's own readouts and counters, as text (for the status line and tests).
     QString statusText() const;
 
 public Q_SLOTS:
-    //! New settings (a profile was opened); the domain stays. While running they take effect
-    //! at once.
+    //! New settings (a profile was opened); the ROS version and domain stay. While running they
+    //! take effect at once.
     void setSettings(const hatpic::bridge::BridgeSettings &settings);
     //! Picks the default axis of the references (linear.x, or angular.z in rotation).
     void setReferenceMode(hatpic::ReferenceMode mode);
@@ -63,6 +65,9 @@ private:
     void edited(bool reopen);
     void refresh();
     void setStatus(const QString &text, bool error);
+    QString runningText() const;
+    //! The Domain row for ROS 2, the Master row for ROS 1.
+    void showNetworkRows();
 
     DeviceClient &m_client;
     bridge::Bridge *m_bridge = nullptr; //!< a child; null when not built
@@ -71,6 +76,9 @@ private:
 
     QLabel *m_status = nullptr;
     QCheckBox *m_enable = nullptr;
+    QFormLayout *m_top = nullptr;
+    QComboBox *m_ros = nullptr; //!< ROS 2, ROS 1 (data: the version)
+    QLabel *m_master = nullptr; //!< ROS 1: ROS_MASTER_URI
     QSpinBox *m_domain = nullptr;
     QLineEdit *m_topics[7] = {};
     QDoubleSpinBox *m_rate = nullptr;

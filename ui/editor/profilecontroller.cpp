@@ -188,8 +188,7 @@ void ProfileController::applyNotes(const QString &notes)
 
 void ProfileController::setBridgeSettings(const bridge::BridgeSettings &settings)
 {
-    m_bridge = settings;
-    m_bridge.domainId = bridge::BridgeSettings().domainId;
+    m_bridge = bridge::withNetworkOf(settings, bridge::BridgeSettings());
     updateTitle();
 }
 

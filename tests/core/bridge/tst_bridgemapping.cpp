@@ -167,10 +167,11 @@ private Q_SLOTS:
         s.feedback.staleAfter = 0;
         s.depth = 0;
         s.domainId = 233;
+        s.rosVersion = 3;
         s.topics.twist = "/hatpic//twist";
         s.topics.twistUnstamped = "/haptic twist";
         const auto errors = validate(s);
-        QCOMPARE(errors.size(), 8u);
+        QCOMPARE(errors.size(), 9u);
         QCOMPARE(errors.front(), std::string("twist topic: '/hatpic//twist' is not a ROS topic "
                                              "name (letters, digits and '_' between single '/', "
                                              "not starting with a digit)"));
@@ -179,6 +180,24 @@ private Q_SLOTS:
                                         "'/', not starting with a digit)"));
         QCOMPARE(errors[2],
                  std::string("publish rate: must be above 0 and at most 1000 Hz, got 0"));
+        QCOMPARE(errors[8], std::string("ROS version: must be 1 or 2, got 3"));
+        s.rosVersion = 1;
+        QCOMPARE(validate(s).size(), 8u);
+    }
+
+    // The ROS version and the domain travel together as the network's, apart from the feel.
+    void networkSettings()
+    {
+        BridgeSettings feel;
+        feel.feedback.gain = 0.3;
+        feel.domainId = 5;
+        BridgeSettings network;
+        network.rosVersion = 1;
+        network.domainId = 42;
+        const BridgeSettings both = withNetworkOf(feel, network);
+        QCOMPARE(both.feedback.gain, 0.3);
+        QCOMPARE(both.rosVersion, 1);
+        QCOMPARE(both.domainId, 42);
     }
 
     void topicNames()

@@ -93,8 +93,9 @@ void TestProfileBridge::defaultsAreNotWritten()
 {
     Profile p;
     QVERIFY(!hatpic::serializeProfile(p).contains("bridge"));
-    // The domain is no part of a profile: a different one alone writes nothing either.
+    // The domain and the ROS version are no part of a profile: they alone write nothing.
     p.bridge.domainId = 42;
+    p.bridge.rosVersion = 1;
     QVERIFY(!hatpic::serializeProfile(p).contains("bridge"));
     p.bridge.feedback.gain = 0.2;
     QVERIFY(hatpic::serializeProfile(p).contains("\"bridge\": {"));
@@ -227,13 +228,15 @@ void TestProfileBridge::rejects()
 
 void TestProfileBridge::unknownKeysWarn()
 {
-    const auto result = hatpic::parseProfile(
-        document(QJsonObject{{u"colour"_s, u"red"_s}, {u"domain"_s, 3}, {u"gain"_s, 0.1}}));
+    const auto result = hatpic::parseProfile(document(
+        QJsonObject{{u"colour"_s, u"red"_s}, {u"domain"_s, 3}, {u"ros"_s, 1}, {u"gain"_s, 0.1}}));
     QVERIFY2(result.ok(), qPrintable(result.errors.join(u'\n')));
     QCOMPARE(result.warnings, (QStringList{u"unknown key \"host.bridge.colour\" ignored"_s,
-                                           u"unknown key \"host.bridge.domain\" ignored"_s}));
+                                           u"unknown key \"host.bridge.domain\" ignored"_s,
+                                           u"unknown key \"host.bridge.ros\" ignored"_s}));
     QCOMPARE(result.profile->bridge.feedback.gain, 0.1);
     QCOMPARE(result.profile->bridge.domainId, 0);
+    QCOMPARE(result.profile->bridge.rosVersion, 2);
 }
 
 void TestProfileBridge::writeRefusesInvalid()

@@ -140,11 +140,13 @@ void TestProfileController::bridgeSettingsSavedAndLoaded()
         ProfileController controller(&editor, nullptr);
         QVERIFY(!controller.isModified());
         bridge::BridgeSettings withDomain = s;
-        withDomain.domainId = 9; // no part of a profile
+        withDomain.domainId = 9; // no part of a profile, like the ROS version
+        withDomain.rosVersion = 1;
         controller.setBridgeSettings(withDomain);
         QVERIFY(controller.isModified());
         QVERIFY(controller.windowTitle().contains(u'*'));
         QCOMPARE(controller.bridgeSettings().domainId, 0);
+        QCOMPARE(controller.bridgeSettings().rosVersion, 2);
         QString error;
         QVERIFY2(controller.saveTo(path, &error), qPrintable(error));
         QVERIFY(!controller.isModified());

@@ -1,0 +1,192 @@
+// The bridge over ROS 1 (roscpp) against a real roscore on loopback and a rospy node that is
+// not ours, with the in-process simulated joystick held at a known angle: the same topics,
+// types and mapping as over ROS 2 (tst_bridge), the wrench back as τ_ext, NaN and silence
+// giving 0, and stop() leaving 0.
+#include "roscore.h"
+
+#include "bridge/bridge.h"
+#include "session/deviceclient.h"
+
+#include <QDateTime>
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QTest>
+
+#include <cmath>
+
+using namespace hatpic;
+using namespace hatpic::bridge;
+using hatpic::test::field;
+using hatpic::test::Ros1Peer;
+using hatpic::test::RosCore;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr double kHeldAngle = 0.5;        //!< the simulated hand's target [rad]
+constexpr double kTauExtTolerance = 1e-6; //!< τ_ext travels as float32 [N·m]
+
+double stampOf(const QJsonObject &message)
+{
+    return field(message, u"header.stamp.secs"_s) + 1e-9 * field(message, u"header.stamp.nsecs"_s);
+}
+
+} // namespace
+
+class TestBridgeRos1 : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        registerSessionMetaTypes();
+        m_core.exportEnvironment();
+        QCOMPARE(m_core.start(), QString());
+        ConnectOptions options;
+        options.port = QString::fromUtf16(kSimPortName);
+        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, kHeldAngle};
+        connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
+            if (!batch.isEmpty())
+                m_deviceTauExt = batch.last().tau_ext;
+        });
+        m_client.connectDevice(options);
+        QTRY_COMPARE_WITH_TIMEOUT(m_client.state(), SessionState::Connected, 10000);
+        m_client.setHostParams(HostParams{});
+
+        BridgeSettings settings;
+        settings.rosVersion = 1;
+        settings.topics.wrenchUnstamped = "/robot/wrench";
+        QCOMPARE(m_bridge.start(settings), QString());
+        QCOMPARE(m_bridge.where(),
+                 u"ROS 1, master "_s + m_core.uri() + u" (node /hatpic_bridge)"_s);
+        QCOMPARE(m_peer.start(m_core.environment(),
+                              {u"--sub"_s, u"/hatpic/joint_states=sensor_msgs/JointState"_s,
+                               u"--sub"_s, u"/hatpic/twist=geometry_msgs/TwistStamped"_s,
+                               u"--sub"_s, u"/hatpic/pose=geometry_msgs/PoseStamped"_s, u"--sub"_s,
+                               u"/hatpic/feedback=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
+                               u"/wrench_estimation=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
+                               u"/robot/wrench=geometry_msgs/Wrench"_s}),
+                 QString());
+    }
+    void cleanupTestCase()
+    {
+        m_bridge.stop();
+        m_peer.stop();
+        m_core.stop();
+    }
+
+    void referencesOfAHeldKnob()
+    {
+        // Let the knob settle at the hand's angle, then listen for half a second.
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.received(u"/hatpic/twist"_s).size() >= 20, 10000);
+        QTest::qWait(1500);
+        m_peer.clear();
+        QTest::qWait(500);
+        const auto joints = m_peer.received(u"/hatpic/joint_states"_s);
+        const auto twists = m_peer.received(u"/hatpic/twist"_s);
+        const auto poses = m_peer.received(u"/hatpic/pose"_s);
+        QVERIFY2(joints.size() >= 20 && twists.size() >= 20 && poses.size() >= 20,
+                 qPrintable(QString::number(joints.size())));
+        const double received = double(QDateTime::currentMSecsSinceEpoch()) * 1e-3;
+
+        for (const QJsonObject &j : joints) {
+            const QJsonObject msg = j.value(u"msg"_s).toObject();
+            QCOMPARE(j.value(u"callerid"_s).toString(), u"/hatpic_bridge"_s);
+            QCOMPARE(msg.value(u"header"_s).toObject().value(u"frame_id"_s).toString(),
+                     u"hatpic"_s);
+            QCOMPARE(msg.value(u"name"_s).toArray(), QJsonArray{u"hatpic_knob"_s});
+            QCOMPARE(msg.value(u"velocity"_s).toArray().size(), 1);
+            QCOMPARE(msg.value(u"effort"_s).toArray().size(), 1);
+            const double position = field(j, u"position.0"_s);
+            QVERIFY2(position > 0.25 && position < kHeldAngle + 0.05,
+                     qPrintable(QString::number(position)));
+            QVERIFY(std::abs(stampOf(j) - received) < 1.0); // the wall clock
+        }
+        // v_ref = v_max/2 · θ (v_max 1, θ0 0) on linear.x, matched by stamp.
+        int matched = 0;
+        for (const QJsonObject &t : twists) {
+            for (const QJsonObject &j : joints) {
+                if (field(j, u"header.stamp.secs"_s) != field(t, u"header.stamp.secs"_s) ||
+                    field(j, u"header.stamp.nsecs"_s) != field(t, u"header.stamp.nsecs"_s))
+                    continue;
+                ++matched;
+                QVERIFY(std::abs(field(t, u"twist.linear.x"_s) - 0.5 * field(j, u"position.0"_s)) <
+                        1e-12);
+                QCOMPARE(field(t, u"twist.linear.y"_s), 0.0);
+                QCOMPARE(field(t, u"twist.angular.z"_s), 0.0);
+            }
+        }
+        QVERIFY(matched >= 20);
+        // p_ref = ∫ v_ref dt on position.x: it grows at v_ref per second of stamp time.
+        const double dt = stampOf(poses.last()) - stampOf(poses.first());
+        const double rate = (field(poses.last(), u"pose.position.x"_s) -
+                             field(poses.first(), u"pose.position.x"_s)) /
+                            dt;
+        const double v = field(twists.last(), u"twist.linear.x"_s);
+        QVERIFY2(std::abs(rate - v) < 0.1 * v, qPrintable(QString::number(rate)));
+        QCOMPARE(field(poses.last(), u"pose.orientation.w"_s), 1.0);
+    }
+
+    void wrenchBecomesTauExt()
+    {
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.connections(u"/wrench_estimation"_s) >= 1, 10000);
+        // A robot publishing at 50 Hz (ros1peer.py's rate).
+        m_peer.send(uR"(set /wrench_estimation {"wrench": {"force": {"z": 0.5}}})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.077) < kTauExtTolerance, 5000);
+        QCOMPARE(m_bridge.stats().tauExt, 0.077);
+        QTRY_VERIFY_WITH_TIMEOUT(feedbackSeen(0.077), 3000);
+
+        m_peer.send(uR"(set /wrench_estimation {"wrench": {"force": {"z": NaN}}})"_s);
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
+        QVERIFY(m_bridge.stats().wrenches.nonFinite > 0);
+        QTRY_VERIFY_WITH_TIMEOUT(feedbackSeen(0.0), 3000);
+
+        m_peer.send(uR"(set /wrench_estimation {"wrench": {"force": {"z": -1e12}}})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt + 0.154) < kTauExtTolerance, 3000);
+        QVERIFY(m_bridge.stats().wrenches.limited > 0);
+
+        // The robot falls silent: after 0.5 s the wrench is stale and τ_ext goes to 0.
+        m_peer.send(u"stop /wrench_estimation"_s);
+        QElapsedTimer silent;
+        silent.start();
+        const quint64 staleBefore = m_bridge.stats().wrenches.stale;
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
+        QVERIFY2(silent.elapsed() >= 400, qPrintable(QString::number(silent.elapsed())));
+        QCOMPARE(m_bridge.stats().wrenches.stale, staleBefore + 1);
+    }
+
+    void unstampedWrenchIsAcceptedToo()
+    {
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.connections(u"/robot/wrench"_s) >= 1, 10000);
+        m_peer.send(uR"(set /robot/wrench {"force": {"z": -0.25}})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt + 0.0385) < kTauExtTolerance, 5000);
+        m_peer.send(u"stop /robot/wrench"_s);
+    }
+
+    void stopLeavesTauExtZero()
+    {
+        m_peer.send(uR"(set /wrench_estimation {"wrench": {"force": {"z": 0.5}}})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.077) < kTauExtTolerance, 5000);
+        m_bridge.stop();
+        QVERIFY(!m_bridge.isRunning());
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 300); // well before staleness would
+        m_peer.send(u"stop /wrench_estimation"_s);
+    }
+
+private:
+    bool feedbackSeen(double tau) const
+    {
+        const auto feedbacks = m_peer.received(u"/hatpic/feedback"_s);
+        return !feedbacks.isEmpty() &&
+               std::abs(field(feedbacks.last(), u"wrench.torque.z"_s) - tau) < kTauExtTolerance;
+    }
+
+    RosCore m_core;
+    Ros1Peer m_peer;
+    DeviceClient m_client;
+    Bridge m_bridge{m_client};
+    double m_deviceTauExt = 0;
+};
+
+QTEST_GUILESS_MAIN(TestBridgeRos1)
+#include "tst_bridgeros1.moc"
