@@ -86,8 +86,8 @@ template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t no
     // may be stamped after this cycle's time (it arrived between cycles); the latch keeps a
     // stale flag up once the difference wraps.
     if (m_config.watchdogUs > 0 && !m_stale)
-        m_stale = std::int64_t(std::int32_t(nowUs - m_lastFeedbackUs)) + m_periodUs >
-                  std::int64_t(m_config.watchdogUs);
+        m_stale = std::int32_t(nowUs - m_lastFeedbackUs) >
+                  std::int32_t(m_config.watchdogUs) - std::int32_t(m_periodUs);
     CycleRecord<T> &r = m_record;
     r.t_us = nowUs;
     r.theta = m_measured.theta;
