@@ -105,12 +105,15 @@ public:
         static Host *served = nullptr; // for the fatal-signal action, which takes no argument
         if (!installSignalHandlers())
             return Serving(false);
-        if (const QString error = host.start(); !error.isEmpty()) {
-            printError(error);
-            return Serving(false);
-        }
+        // Before start(), which switches the torque on: emergencyStop() does what is possible
+        // at any point of it.
         served = &host;
         onFatalSignal([] { served->emergencyStop(); });
+        if (const QString error = host.start(); !error.isEmpty()) {
+            printError(error);
+            onFatalSignal(nullptr);
+            return Serving(false);
+        }
         if (!m_link.isEmpty()) {
             if (const QString error = host.createLink(m_link); !error.isEmpty()) {
                 printError(error);
