@@ -116,7 +116,7 @@ void TestFirmwareHost::closedLoopThroughPtys()
 {
     PtyProgram servo(servoSim(), {u"--hand"_s, u"const:0.02"_s});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     V2Client client(host.path());
     QVERIFY2(client.open(), qPrintable(client.errorString()));
@@ -191,7 +191,9 @@ void TestFirmwareHost::savedParamsSurviveRestart()
     DeviceParams stiff = asDevice(DeviceParams{});
     stiff.K_max = 0.5;
     {
-        PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+        PtyProgram host(fwHost(),
+                        QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
+                            patientBus());
         QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
         V2Client client(host.path());
         QVERIFY(client.open());
@@ -204,7 +206,9 @@ void TestFirmwareHost::savedParamsSurviveRestart()
         QVERIFY(host.terminate());
         QCOMPARE(host.process().exitCode(), 0);
     }
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+    PtyProgram host(fwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     V2Client client(host.path());
     QVERIFY(client.open());
@@ -218,7 +222,9 @@ void TestFirmwareHost::savedParamsSurviveRestart()
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
     file.write("{ not json");
     file.close();
-    PtyProgram broken(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+    PtyProgram broken(fwHost(),
+                      QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
+                          patientBus());
     QVERIFY2(!broken.path().isEmpty(), qPrintable(broken.errors()));
     QTRY_VERIFY_WITH_TIMEOUT(broken.errors().contains(u"ignored"_s), kTimeoutMs);
     V2Client again(broken.path());
@@ -232,7 +238,7 @@ void TestFirmwareHost::hatpicctlInfo()
 {
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QProcess ctl;
     ctl.start(QStringLiteral(HATPICCTL_PATH), {u"info"_s, u"--port"_s, host.path()});
@@ -247,9 +253,10 @@ void TestFirmwareHost::faultsAreInjectedAndCounted()
 {
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(),
-                    {u"--servo"_s, servo.path(), u"--quiet"_s, u"--faults"_s,
-                     u"drop=0.05,corrupt=0.02,dup=0.02,hdrop=0.2"_s, u"--seed"_s, u"3"_s});
+    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s, u"--faults"_s,
+                                          u"drop=0.05,corrupt=0.02,dup=0.02,hdrop=0.2"_s,
+                                          u"--seed"_s, u"3"_s} +
+                                  patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     // A lost SET_PARAMS (or its lost ACK) is retried: the push succeeds all the same.
     QProcess set;
@@ -287,7 +294,9 @@ void TestFirmwareHost::sigtermDisablesTorque()
     const QString link = dir.filePath(u"hatpic"_s);
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s});
+    PtyProgram host(fwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QCOMPARE(QFileInfo(link).symLinkTarget(), host.path());
     QVERIFY(!servo.errors().contains(u"torque off"_s));
@@ -333,8 +342,10 @@ void TestFirmwareHost::everyEndingSignalDisablesTorque()
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
     // No core file from the faults sent on purpose.
-    PtyProgram host(u"/bin/sh"_s, {u"-c"_s, u"ulimit -c 0; exec \"$0\" \"$@\""_s, fwHost(),
-                                   u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s});
+    PtyProgram host(u"/bin/sh"_s,
+                    QStringList{u"-c"_s, u"ulimit -c 0; exec \"$0\" \"$@\""_s, fwHost(),
+                                u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QCOMPARE(QFileInfo(link).symLinkTarget(), host.path());
     QVERIFY(!servo.errors().contains(u"torque off"_s));

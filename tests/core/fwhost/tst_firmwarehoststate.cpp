@@ -80,7 +80,9 @@ void TestFirmwareHostState::profileKeepsWhatSaveDoesNotOwn()
 
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, file, u"--quiet"_s});
+    PtyProgram host(fwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--state"_s, file, u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QString error;
     // A save that changes nothing leaves the profile as it was, to the byte.
@@ -111,9 +113,10 @@ void TestFirmwareHostState::fileSizeLimitFailsTheSaveNotTheProgram()
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
     // ulimit -f 0: any write to a file passes the limit (SIGXFSZ kills by default).
-    PtyProgram host(u"/bin/sh"_s,
-                    {u"-c"_s, u"ulimit -f 0; exec \"$0\" \"$@\""_s, fwHost(), u"--servo"_s,
-                     servo.path(), u"--state"_s, state, u"--link"_s, link, u"--quiet"_s});
+    PtyProgram host(u"/bin/sh"_s, QStringList{u"-c"_s, u"ulimit -f 0; exec \"$0\" \"$@\""_s,
+                                              fwHost(), u"--servo"_s, servo.path(), u"--state"_s,
+                                              state, u"--link"_s, link, u"--quiet"_s} +
+                                      patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     V2Client client(link);
     QVERIFY2(client.open(), qPrintable(client.errorString()));
@@ -142,7 +145,9 @@ void TestFirmwareHostState::saveFailureSaysWhy()
     const QString state = dir.filePath(u"gone/state.json"_s);
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+    PtyProgram host(fwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     // Said at start, before anyone asks for a save.
     const QString warning = u"hatpic-fw-host: SAVE_PARAMS cannot write state file " + state +
