@@ -1,9 +1,11 @@
 #include "common/ptyprogram.h"
 
-#include "common/quitonsignal.h"
+#include "firmware/devicecore.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
+
+#include <csignal>
 
 #include <utility>
 
@@ -13,6 +15,8 @@ namespace {
 
 constexpr qint64 kMaxServoId = 253;     //!< highest --servo-id (254 is the broadcast id)
 constexpr qint64 kMaxCenterTick = 4095; //!< highest --center-tick (12-bit position)
+//! Lowest --rate: the device core's, below which the feedback watchdog cannot hold [Hz].
+constexpr double kMinRateHz = fw::DeviceCore<double>::kMinControlRate;
 
 struct SharedOptionSpec
 {
@@ -125,10 +129,13 @@ bool PtyProgram::readRate(double &hz) const
     const QString text = optionValue(SharedOption::Rate);
     bool ok = false;
     const double rate = text.toDouble(&ok);
-    if (!ok || !(rate >= 1 && rate <= kMaxRateHz)) {
-        printError(QStringLiteral("The control rate \"%1\" must be a number of Hz from 1 to %2.")
+    if (!ok || !(rate >= kMinRateHz && rate <= kMaxRateHz)) {
+        printError(QStringLiteral("The control rate \"%1\" must be a number of Hz from %2 to %3 "
+                                  "(a period of at most half the %4 ms feedback watchdog).")
                        .arg(text)
-                       .arg(kMaxRateHz));
+                       .arg(kMinRateHz)
+                       .arg(PtyProgram::kMaxRateHz)
+                       .arg(fw::Controller<double>::kFeedbackWatchdogUs / 1000));
         return false;
     }
     hz = rate;
@@ -216,9 +223,23 @@ void PtyProgram::printError(const QString &sentence) const
     std::fprintf(stderr, "%s: %s\n", m_program, qPrintable(sentence));
 }
 
-bool PtyProgram::quitOnSignals() const
+Serving::~Serving()
 {
-    if (hatpic::quitOnSignals())
+    if (m_running)
+        onFatalSignal(nullptr);
+}
+
+int PtyProgram::exitCode(int loopCode)
+{
+    const int signal = quitSignal();
+    if (signal != 0 && signal != SIGINT && signal != SIGTERM)
+        return 128 + signal;
+    return loopCode == 0 ? kExitOk : kExitFailure;
+}
+
+bool PtyProgram::installSignalHandlers() const
+{
+    if (quitOnSignals())
         return true;
     printError(QStringLiteral("Cannot set up signal handling."));
     return false;

@@ -5,6 +5,7 @@
 // as the first stdout line.
 #pragma once
 
+#include "common/quitonsignal.h"
 #include "link/faultinjector.h"
 #include "sim/handinput.h"
 
@@ -20,6 +21,22 @@
 class QCoreApplication;
 
 namespace hatpic {
+
+//! What PtyProgram::serve() returns: true when the host runs. While it lives, a fatal signal
+//! runs the host's emergencyStop() (onFatalSignal); its end withdraws that, so declare it after
+//! the host, which it must not outlive.
+class [[nodiscard]] Serving
+{
+public:
+    explicit Serving(bool running) : m_running(running) {}
+    ~Serving();
+    Serving(const Serving &) = delete;
+    Serving &operator=(const Serving &) = delete;
+    explicit operator bool() const { return m_running; }
+
+private:
+    bool m_running;
+};
 
 //! The options that more than one pty program takes (see kSharedOptions in ptyprogram.cpp).
 enum class SharedOption { Hand, Rate, Seed, ServoId, CenterTick, State, Faults, Link };
@@ -77,33 +94,43 @@ public:
     //! `report` runs on each SIGUSR1 (reportOnSignal); false after the sentence.
     bool reportOnSignal(std::function<void()> report) const;
 
-    //! Makes SIGINT/SIGTERM quit the event loop (quitOnSignals), then starts `host`
-    //! (SimulatorHost, FirmwareHost, ServoBusHost: start(), createLink(), stop(), slavePath())
-    //! and, when --link was given, makes the symlink. On failure the one sentence is printed,
-    //! the host is stopped, and the result is false. On success the slave's path goes to stdout
-    //! as the first line, flushed.
-    template<typename Host> bool serve(Host &host) const
+    //! Makes every signal that would end the program quit the event loop instead, or run the
+    //! host's emergencyStop() when it cannot wait for the loop (quitOnSignals), then starts
+    //! `host` (SimulatorHost, FirmwareHost, ServoBusHost: start(), createLink(), stop(),
+    //! emergencyStop(), slavePath()) and, when --link was given, makes the symlink. On failure
+    //! the one sentence is printed, the host is stopped, and the result is false. On success
+    //! the slave's path goes to stdout as the first line, flushed.
+    template<typename Host> Serving serve(Host &host) const
     {
-        if (!quitOnSignals())
-            return false;
+        static Host *served = nullptr; // for the fatal-signal action, which takes no argument
+        if (!installSignalHandlers())
+            return Serving(false);
+        // Before start(), which switches the torque on: emergencyStop() does what is possible
+        // at any point of it.
+        served = &host;
+        onFatalSignal([] { served->emergencyStop(); });
         if (const QString error = host.start(); !error.isEmpty()) {
             printError(error);
-            return false;
+            onFatalSignal(nullptr);
+            return Serving(false);
         }
         if (!m_link.isEmpty()) {
             if (const QString error = host.createLink(m_link); !error.isEmpty()) {
                 printError(error);
+                onFatalSignal(nullptr);
                 host.stop();
-                return false;
+                return Serving(false);
             }
         }
         std::fprintf(stdout, "%s\n", qPrintable(host.slavePath()));
         std::fflush(stdout);
-        return true;
+        return Serving(true);
     }
 
-    //! The exit code for what QCoreApplication::exec() returned.
-    static int exitCode(int loopCode) { return loopCode == 0 ? kExitOk : kExitFailure; }
+    //! The exit code for what QCoreApplication::exec() returned: 0, or 1 for a failure; after
+    //! a signal other than SIGINT and SIGTERM (SIGHUP, SIGXCPU, …) 128 + its number, as a shell
+    //! reports a program that signal ended — the stop was the same orderly one.
+    static int exitCode(int loopCode);
 
 private:
     //! `out` = `value` when there is one.
@@ -114,7 +141,7 @@ private:
             out = Out(*value);
         return value.has_value();
     }
-    bool quitOnSignals() const; //!< false after the sentence
+    bool installSignalHandlers() const; //!< quitOnSignals(); false after the sentence
     std::optional<quint64> seedValue() const;
     //! `parse(text, &error)` (HandInput::parse, FaultSpec::parse) into `out`, else the error.
     template<typename Value>

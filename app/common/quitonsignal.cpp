@@ -3,8 +3,10 @@
 #include <QCoreApplication>
 #include <QSocketNotifier>
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <ctime>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -12,47 +14,83 @@ namespace hatpic {
 
 namespace {
 
+constexpr int kFatalWaitMs = 2000; //!< longest wait for another thread's emergency action [ms]
+
 int g_signalPipe[2] = {-1, -1};
 int g_reportPipe[2] = {-1, -1};
+int g_quitSignal = 0; //!< main thread only
 
-void wake(int fd)
+std::atomic<void (*)()> g_fatalAction{nullptr};
+std::atomic<int> g_fatalState{0}; //!< 0 none yet, 1 an action runs, 2 it ran
+alignas(16) char g_alternateStack[64 * 1024];
+
+void wake(int fd, int signal)
 {
     const int saved = errno;
-    const char byte = 1;
+    const auto byte = static_cast<unsigned char>(signal);
     [[maybe_unused]] const ssize_t n = ::write(fd, &byte, 1);
     errno = saved;
 }
 
-void onSignal(int)
+void onSignal(int signal)
 {
-    wake(g_signalPipe[1]);
+    wake(g_signalPipe[1], signal);
 }
 
-void onReport(int)
+void onReport(int signal)
 {
-    wake(g_reportPipe[1]);
+    wake(g_reportPipe[1], signal);
 }
 
-// A notifier on the read end of `fds` that drains it and calls `then`.
-void watchPipe(const int (&fds)[2], std::function<void()> then)
+void onFatal(int signal)
+{
+    int idle = 0;
+    if (g_fatalState.compare_exchange_strong(idle, 1)) {
+        if (void (*action)() = g_fatalAction.load())
+            action();
+        g_fatalState.store(2);
+    } else {
+        // Another thread runs the action: let it finish before this signal ends the process.
+        const timespec step{0, 1000000};
+        for (int i = 0; i < kFatalWaitMs && g_fatalState.load() == 1; ++i)
+            ::nanosleep(&step, nullptr);
+    }
+    // SA_RESETHAND restored the default action: raised again, the signal ends the process as
+    // soon as this handler returns (a fault's instruction would raise it again as well).
+    ::raise(signal);
+}
+
+// A notifier on the read end of `fds` that drains it and calls `then` with the first byte.
+void watchPipe(const int (&fds)[2], std::function<void(int)> then)
 {
     auto *notifier =
         new QSocketNotifier(qintptr(fds[0]), QSocketNotifier::Read, QCoreApplication::instance());
     QObject::connect(notifier, &QSocketNotifier::activated, notifier,
                      [fd = fds[0], then = std::move(then)] {
-                         char bytes[16];
-                         while (::read(fd, bytes, sizeof bytes) > 0) {
+                         unsigned char bytes[16];
+                         int first = 0;
+                         for (ssize_t n; (n = ::read(fd, bytes, sizeof bytes)) > 0;) {
+                             if (first == 0)
+                                 first = bytes[0];
                          }
-                         then();
+                         then(first);
                      });
 }
 
-void handle(int signal, void (*handler)(int))
+void handle(int signal, void (*handler)(int), int flags = SA_RESTART)
 {
     struct sigaction action = {};
     action.sa_handler = handler;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
+    action.sa_flags = flags;
+    ::sigaction(signal, &action, nullptr);
+}
+
+void ignore(int signal)
+{
+    struct sigaction action = {};
+    action.sa_handler = SIG_IGN;
+    sigemptyset(&action.sa_mask);
     ::sigaction(signal, &action, nullptr);
 }
 
@@ -62,18 +100,44 @@ bool quitOnSignals()
 {
     if (::pipe2(g_signalPipe, O_CLOEXEC | O_NONBLOCK) != 0)
         return false;
-    watchPipe(g_signalPipe, [] { QCoreApplication::quit(); });
-    handle(SIGINT, onSignal);
-    handle(SIGTERM, onSignal);
-    std::signal(SIGPIPE, SIG_IGN);
+    watchPipe(g_signalPipe, [](int signal) {
+        if (g_quitSignal == 0)
+            g_quitSignal = signal;
+        QCoreApplication::quit();
+    });
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGXCPU,
+                             SIGVTALRM, SIGPROF, SIGIO, SIGPWR, SIGSTKFLT})
+        handle(signal, onSignal);
+    for (int signal = SIGRTMIN; signal <= SIGRTMAX; ++signal)
+        handle(signal, onSignal);
+    ignore(SIGPIPE);
+    ignore(SIGXFSZ);
+
+    // The main thread's alternate stack, so that a stack overflow still runs the action.
+    stack_t stack = {};
+    stack.ss_sp = g_alternateStack;
+    stack.ss_size = sizeof g_alternateStack;
+    ::sigaltstack(&stack, nullptr);
+    for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGSYS, SIGTRAP})
+        handle(signal, onFatal, SA_RESETHAND | SA_ONSTACK);
     return true;
+}
+
+int quitSignal()
+{
+    return g_quitSignal;
+}
+
+void onFatalSignal(void (*action)())
+{
+    g_fatalAction.store(action);
 }
 
 bool reportOnSignal(std::function<void()> report)
 {
     if (::pipe2(g_reportPipe, O_CLOEXEC | O_NONBLOCK) != 0)
         return false;
-    watchPipe(g_reportPipe, std::move(report));
+    watchPipe(g_reportPipe, [report = std::move(report)](int) { report(); });
     handle(SIGUSR1, onReport);
     return true;
 }

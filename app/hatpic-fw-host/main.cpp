@@ -101,7 +101,8 @@ int main(int argc, char *argv[])
         return PtyProgram::kExitBadOptions;
 
     FirmwareHost host(config);
-    if (!program.serve(host))
+    const Serving serving = program.serve(host); // after the host, which it must not outlive
+    if (!serving)
         return PtyProgram::kExitFailure;
     for (const QString &warning : host.warnings())
         program.printError(warning);

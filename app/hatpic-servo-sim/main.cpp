@@ -40,7 +40,8 @@ int main(int argc, char *argv[])
         return PtyProgram::kExitBadOptions;
 
     ServoBusHost host(config);
-    if (!program.serve(host))
+    const Serving serving = program.serve(host); // after the host, which it must not outlive
+    if (!serving)
         return PtyProgram::kExitFailure;
     QObject::connect(&host, &ServoBusHost::torqueEnableChanged, &app, [](bool enabled) {
         std::fprintf(stderr, "hatpic-servo-sim: torque %s\n", enabled ? "on" : "off");

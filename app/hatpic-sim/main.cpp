@@ -87,9 +87,12 @@ int main(int argc, char *argv[])
         return PtyProgram::kExitBadOptions;
 
     SimulatorHost host(config);
-    if (!host.device().stateWarning().isEmpty())
-        program.printError(host.device().stateWarning());
-    if (!program.serve(host))
+    for (const QString &warning : {host.device().stateWarning(), host.device().saveWarning()}) {
+        if (!warning.isEmpty())
+            program.printError(warning);
+    }
+    const Serving serving = program.serve(host); // after the host, which it must not outlive
+    if (!serving)
         return PtyProgram::kExitFailure;
     std::fprintf(stderr, "hatpic-sim: %s protocol, %g Hz control, %d baud%s\n",
                  qPrintable(wireProtocolName(config.protocol)), config.controlRateHz,

@@ -12,6 +12,7 @@ Controller<T>::Controller(const Config &config, Actuator<T> &actuator)
     : m_config(config), m_actuator(actuator)
 {
     m_period = 1.0 / config.rateHz;
+    m_periodUs = std::uint32_t(std::llround(1e6 * m_period));
     m_tauLimit = T(config.tauLimit);
 }
 
@@ -79,10 +80,14 @@ template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t no
     }
 
     // 2. τ_rec, τ_total and flags at the measured θ (model.md § 2); τ_ext is 0 when stale.
-    // Signed difference: feedback may be stamped after this cycle's time (it arrived between
-    // cycles); the latch keeps a stale flag up once the difference wraps.
+    // What this cycle renders stays in force until the next cycle, one period on: τ_ext is
+    // stale when it would then be older than the watchdog, so it never outlives it, at any
+    // rate (at 1 kHz: from the cycle 200 ms after the arrival). Signed difference: feedback
+    // may be stamped after this cycle's time (it arrived between cycles); the latch keeps a
+    // stale flag up once the difference wraps.
     if (m_config.watchdogUs > 0 && !m_stale)
-        m_stale = std::int32_t(nowUs - m_lastFeedbackUs) >= std::int32_t(m_config.watchdogUs);
+        m_stale = std::int32_t(nowUs - m_lastFeedbackUs) >
+                  std::int32_t(m_config.watchdogUs) - std::int32_t(m_periodUs);
     CycleRecord<T> &r = m_record;
     r.t_us = nowUs;
     r.theta = m_measured.theta;

@@ -37,12 +37,15 @@ template<typename T> class Controller
 public:
     //! Consecutive failed bus transactions after which the torque goes off (servo.md § 1).
     static constexpr std::uint32_t kMaxConsecutiveBusErrors = 100;
+    //! The feedback watchdog of protocol.md: a τ_ext is not in force longer than this after
+    //! the SET_FEEDBACK that brought it [µs].
+    static constexpr std::uint32_t kFeedbackWatchdogUs = 200000;
 
     struct Config
     {
-        double rateHz = 1000;              //!< control rate; the period h = 1/rate [Hz]
-        double tauLimit = 0.44;            //!< |τ_total| limit [N·m]
-        std::uint32_t watchdogUs = 200000; //!< feedback older than this is stale; 0 = never
+        double rateHz = 1000;                           //!< control rate; period h = 1/rate [Hz]
+        double tauLimit = 0.44;                         //!< |τ_total| limit [N·m]
+        std::uint32_t watchdogUs = kFeedbackWatchdogUs; //!< feedback watchdog [µs]; 0 = none
     };
 
     Controller(const Config &config, Actuator<T> &actuator);
@@ -78,7 +81,8 @@ private:
 
     Config m_config;
     Actuator<T> &m_actuator;
-    double m_period = 1e-3; //!< [s]
+    double m_period = 1e-3;          //!< [s]
+    std::uint32_t m_periodUs = 1000; //!< the same, rounded [µs]
     T m_tauLimit{};
 
     DeviceParams m_params;
@@ -99,7 +103,8 @@ private:
     CycleRecord<T> m_record;
     T m_feedback{};
     std::uint32_t m_lastFeedbackUs = 0;
-    bool m_stale = false; //!< latched until the next feedback, so a clock wrap cannot re-arm it
+    //! Latched until the next feedback, so that a clock wrap cannot re-arm an old τ_ext.
+    bool m_stale = false;
 
     std::uint32_t m_consecutiveErrors = 0;
     std::uint64_t m_busErrors = 0;

@@ -1,6 +1,7 @@
 #include "devicecore.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace hatpic::fw {
@@ -170,8 +171,12 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
     }
     if (std::holds_alternative<v2::SaveParams>(m)) {
         const StoredSettings settings{m_accepted, m_effects};
-        if (m_store && !m_store->save(settings))
+        if (m_store && !m_store->save(settings)) {
+            // The reason first, so that a host that stops at the ACK has already read it.
+            const std::string_view why = m_store->failure();
+            sendLog("SAVE_PARAMS failed: ", why.empty() ? "the store gives no reason" : why);
             return ack(v2::AckStatus::StorageError);
+        }
         m_flash = settings;
         return ack(v2::AckStatus::Ok);
     }
@@ -247,10 +252,16 @@ template<typename T> void DeviceCore<T>::sendTelemetry()
     }
 }
 
-template<typename T> void DeviceCore<T>::sendLog(std::string_view text)
+template<typename T> void DeviceCore<T>::sendLog(std::string_view text, std::string_view detail)
 {
+    // One byte more than a LOG carries, so that FixedText cuts at a character boundary.
+    std::array<char, v2::kMaxPayload + 1> joined{};
+    const std::size_t head = std::min(text.size(), joined.size());
+    std::copy_n(text.data(), head, joined.data());
+    const std::size_t tail = std::min(detail.size(), joined.size() - head);
+    std::copy_n(detail.data(), tail, joined.data() + head);
     v2::Log log;
-    log.text.assign(text);
+    log.text.assign({joined.data(), head + tail});
     const std::size_t n = reply(log);
     m_host.write({m_scratch.data(), n}, HostPort::Traffic::Reply);
 }

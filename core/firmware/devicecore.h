@@ -26,6 +26,11 @@ template<typename T> class DeviceCore
 {
 public:
     static constexpr double kMaxControlRate = 65535; //!< max_stream_hz is a u16 [Hz]
+    //! Lowest control rate [Hz]: a period of at most half the feedback watchdog. A cycle
+    //! renders τ_ext only if it is still younger than the watchdog at the next cycle, so at
+    //! this rate feedback up to 100 ms old is rendered (hosts stream it at 20 Hz or more);
+    //! with a period near the watchdog, fresh feedback would hardly ever be.
+    static constexpr double kMinControlRate = 2e6 / Controller<T>::kFeedbackWatchdogUs;
 
     struct Config
     {
@@ -113,7 +118,8 @@ private:
     std::size_t answer(const v2::Frame &frame);
     std::size_t reply(const v2::Message &message);
     void sendTelemetry();
-    void sendLog(std::string_view text);
+    //! A LOG frame of `text` followed by `detail`, cut to what a LOG carries (240 bytes).
+    void sendLog(std::string_view text, std::string_view detail = {});
 
     Config m_config;
     HostPort &m_host;

@@ -5,6 +5,8 @@
 #include "model/effects.h"
 #include "model/params.h"
 
+#include <string_view>
+
 namespace hatpic::fw {
 
 //! Everything SAVE_PARAMS persists, as one block.
@@ -22,8 +24,12 @@ public:
     //! The saved block; false when there is none or it cannot be read (power-up then uses the
     //! configured block). Validation is the device core's job, not the store's.
     virtual bool load(StoredSettings &out) = 0;
-    //! Persists `settings`; false on a storage error (answered STORAGE_ERROR).
+    //! Persists `settings`; false on a storage error: the device answers STORAGE_ERROR and
+    //! sends failure() in a LOG frame first.
     virtual bool save(const StoredSettings &settings) = 0;
+    //! Why the last save() failed, in words for the user (UTF-8, the OS's own error text
+    //! included); empty when it did not fail or no reason is known. Valid until the next save().
+    virtual std::string_view failure() const { return {}; }
 };
 
 } // namespace hatpic::fw

@@ -22,6 +22,9 @@ namespace {
 constexpr std::uint32_t kDeviceId = 0x46574831;              //!< "FWH1"
 constexpr std::string_view kFirmwareName = "hatpic-fw-host"; //!< ≤ 16 bytes (HELLO_REPLY)
 constexpr int kControlPriority = 50;                         //!< SCHED_FIFO priority, 1…99
+//! Longest wait of emergencyStop() for the control thread: a period (≤ 0.1 s) and two bus
+//! timeouts (≤ 0.1 s each) with room to spare [ms].
+constexpr int kEmergencyWaitMs = 500;
 
 std::int64_t monotonicNs()
 {
@@ -84,9 +87,13 @@ QString FirmwareHost::start()
     actuator.tauLimit = m_config.tauLimit;
     actuator.timeoutUs = m_config.servoTimeoutUs;
     m_actuator = std::make_unique<fw::StsActuator<double>>(*m_bus, actuator);
+    const std::array<std::uint8_t, 2> torqueOff{fw::sts::kRegTorqueEnable, 0};
+    m_torqueOffSize =
+        fw::sts::encodePacket(m_config.servoId, fw::sts::kWrite, torqueOff, m_torqueOff);
     m_clock = std::make_unique<MonotonicClock>();
     if (!m_config.stateFile.isEmpty())
-        m_store = std::make_unique<ProfileParamStore>(m_config.stateFile, m_config.tauLimit);
+        m_store = std::make_unique<ProfileParamStore>(
+            m_config.stateFile, QString::fromLatin1(kFirmwareName), m_config.tauLimit);
     m_hostPort = std::make_unique<FdHostPort>(m_pty.master());
     if (!m_config.faults.isEmpty()) {
         m_hostPort->setFaults(std::make_unique<FaultInjector>(m_config.faults, m_config.faultSeed,
@@ -115,11 +122,14 @@ QString FirmwareHost::start()
         m_warnings << QStringLiteral("State file %1 ignored: its parameters are invalid; "
                                      "using the defaults.")
                           .arg(m_config.stateFile);
+    if (m_store && !m_store->saveProblem().isEmpty())
+        m_warnings << m_store->saveProblem();
 
     const std::int64_t now = monotonicNs();
     m_shared->windowStartNs = now;
     m_shared->totalStartNs = now;
     m_stopping.store(false);
+    m_controlRunning.store(true);
     m_thread = std::thread([this] { controlLoop(); });
 
     m_notifier = new QSocketNotifier(qintptr(m_pty.master()), QSocketNotifier::Read, this);
@@ -148,6 +158,25 @@ void FirmwareHost::stop()
     delete m_timer;
     m_timer = nullptr;
     m_pty.close(); // and the link, if still ours
+}
+
+void FirmwareHost::emergencyStop() noexcept
+{
+    m_stopping.store(true);
+    // Let the control thread end its cycle, so that no goal follows the torque-off. It never
+    // does when the signal hit that very thread: the wait then ends at its bound.
+    const timespec millisecond{0, 1000000};
+    for (int i = 0; i < kEmergencyWaitMs && m_controlRunning.load(); ++i)
+        ::nanosleep(&millisecond, nullptr);
+    if (m_servoPort && m_torqueOffSize > 0) {
+        // Twice, 2 ms apart: a packet a dying thread left half-written swallows the first.
+        const std::span<const std::uint8_t> packet(m_torqueOff.data(), m_torqueOffSize);
+        m_servoPort->write(packet);
+        const timespec gap{0, 2000000};
+        ::nanosleep(&gap, nullptr);
+        m_servoPort->write(packet);
+    }
+    m_pty.removeLinkNow();
 }
 
 QString FirmwareHost::createLink(const QString &path)
@@ -205,6 +234,7 @@ void FirmwareHost::controlLoop()
         s.faulted = m_core->controller().faulted();
         previousStart = start;
     }
+    m_controlRunning.store(false);
 }
 
 FirmwareHost::Report FirmwareHost::takeReport()

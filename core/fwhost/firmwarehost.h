@@ -17,6 +17,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -87,6 +88,11 @@ public:
     //! Stops the control thread, then switches the servo's torque off, closes the pty and
     //! removes the link. Safe to call twice.
     void stop();
+    //! What a process that a fatal signal ends can still do (onFatalSignal): ask the control
+    //! thread to stop and wait a bounded time for it to leave the bus, switch the torque off
+    //! (WRITE 0 at register 40, sent twice), remove the link. Async-signal-safe: atomics,
+    //! nanosleep(), write(), poll(), readlink(), unlink(); nothing allocates or locks.
+    void emergencyStop() noexcept;
     bool isRunning() const { return m_thread.joinable(); }
 
     QString slavePath() const { return m_pty.slavePath(); }
@@ -121,8 +127,13 @@ private:
     QTimer *m_timer = nullptr;
     QStringList m_warnings;
 
+    //! The WRITE that switches the torque off, encoded at start for emergencyStop().
+    std::array<std::uint8_t, fw::sts::kMaxPacketBytes> m_torqueOff{};
+    std::size_t m_torqueOffSize = 0;
+
     std::thread m_thread;
     std::atomic<bool> m_stopping{false};
+    std::atomic<bool> m_controlRunning{false}; //!< the control thread may still use the bus
     std::atomic<bool> m_realtime{false};
     std::unique_ptr<Shared> m_shared;
 };

@@ -6,8 +6,34 @@
 
 namespace hatpic {
 
-ProfileParamStore::ProfileParamStore(const QString &path, double tauLimit)
-    : m_path(path), m_tauLimit(tauLimit)
+namespace {
+
+//! `file` with the device's blocks in it. A field the device holds as the same float keeps
+//! the file's value (0.15 stays 0.15, not 0.15000000596…); a block whose mix would break a
+//! cross-field rule is the device's whole.
+Profile merged(const Profile &file, const fw::StoredSettings &settings, double tauLimit)
+{
+    Profile out = file;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        if (float(file.device.field(i)) != float(settings.params.field(i)))
+            out.device.setField(i, settings.params.field(i));
+    }
+    if (!validate(out.device).empty())
+        out.device = settings.params;
+    const EffectParams fileOnWire = roundedForWire(file.effects, tauLimit);
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        if (fileOnWire.field(i) != settings.effects.field(i))
+            out.effects.setField(i, settings.effects.field(i));
+    }
+    if (!validate(out.effects, out.host.tau_limit).empty())
+        out.effects = settings.effects;
+    return out;
+}
+
+} // namespace
+
+ProfileParamStore::ProfileParamStore(const QString &path, const QString &owner, double tauLimit)
+    : m_path(path), m_owner(owner), m_tauLimit(tauLimit)
 {}
 
 bool ProfileParamStore::load(fw::StoredSettings &out)
@@ -26,16 +52,57 @@ bool ProfileParamStore::load(fw::StoredSettings &out)
     return true;
 }
 
+QString ProfileParamStore::refusal(const ProfileReadResult &read) const
+{
+    if (!read.ok())
+        return QStringLiteral("it is not a profile this program reads (%1)")
+            .arg(read.errors.join(QStringLiteral("; ")));
+    if (!read.warnings.isEmpty())
+        return QStringLiteral("rewriting it would drop what this program does not read (%1)")
+            .arg(read.warnings.join(QStringLiteral("; ")));
+    return {};
+}
+
 bool ProfileParamStore::save(const fw::StoredSettings &settings)
 {
+    m_failure.clear();
     Profile profile;
-    profile.name = QStringLiteral("hatpic-fw-host state");
-    profile.notes = QStringLiteral("Parameters saved by hatpic-fw-host (SAVE_PARAMS).");
-    profile.device = settings.params;
-    profile.effects = settings.effects;
-    profile.host.tau_limit = m_tauLimit;
-    m_warning = writeProfile(profile, m_path);
-    return m_warning.isEmpty();
+    if (QFileInfo::exists(m_path)) {
+        // Read again at each save: what the user changed in the file meanwhile is kept too.
+        const ProfileReadResult read = readProfile(m_path);
+        if (const QString why = refusal(read); !why.isEmpty()) {
+            m_failure = QStringLiteral("not overwriting %1: %2").arg(m_path, why).toUtf8();
+            return false;
+        }
+        profile = merged(*read.profile, settings, m_tauLimit);
+    } else {
+        profile.name = m_owner + QStringLiteral(" state");
+        profile.notes = QStringLiteral("Parameters saved by %1 (SAVE_PARAMS).").arg(m_owner);
+        profile.device = settings.params;
+        profile.effects = settings.effects;
+        profile.host.tau_limit = m_tauLimit;
+    }
+    const QString error = writeProfile(profile, m_path);
+    m_failure = error.toUtf8();
+    return error.isEmpty();
+}
+
+QString ProfileParamStore::saveProblem() const
+{
+    const QFileInfo file(m_path);
+    const QFileInfo folder(file.absolutePath());
+    const QString cannot =
+        QStringLiteral("SAVE_PARAMS cannot write state file %1: its folder %2 %3.");
+    if (!folder.isDir())
+        return cannot.arg(m_path, folder.filePath(), QStringLiteral("does not exist"));
+    if (!folder.isWritable())
+        return cannot.arg(m_path, folder.filePath(), QStringLiteral("is not writable"));
+    if (file.exists()) {
+        if (const QString why = refusal(readProfile(m_path)); !why.isEmpty())
+            return QStringLiteral("SAVE_PARAMS will not overwrite state file %1: %2.")
+                .arg(m_path, why);
+    }
+    return {};
 }
 
 } // namespace hatpic

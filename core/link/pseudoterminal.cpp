@@ -103,17 +103,34 @@ QString PseudoTerminal::createLink(const QString &path)
         return QStringLiteral("Cannot create link %1: %2.").arg(path, errnoText(error));
     }
     m_linkPath = path;
+    m_linkName.fill('\0');
+    m_slaveName.fill('\0');
+    if (finalName.size() < qsizetype(kMaxName) && target.size() < qsizetype(kMaxName)) {
+        std::memcpy(m_linkName.data(), finalName.constData(), std::size_t(finalName.size()));
+        std::memcpy(m_slaveName.data(), target.constData(), std::size_t(target.size()));
+    }
     return {};
 }
 
 void PseudoTerminal::removeLink()
 {
+    m_linkName[0] = '\0';
     if (m_linkPath.isEmpty())
         return;
     const QFileInfo info(m_linkPath);
     if (info.isSymLink() && info.symLinkTarget() == m_slavePath)
         QFile::remove(m_linkPath);
     m_linkPath.clear();
+}
+
+void PseudoTerminal::removeLinkNow() const noexcept
+{
+    if (m_linkName[0] == '\0')
+        return;
+    std::array<char, kMaxName> target{};
+    const ssize_t n = ::readlink(m_linkName.data(), target.data(), target.size() - 1);
+    if (n > 0 && std::strcmp(target.data(), m_slaveName.data()) == 0)
+        ::unlink(m_linkName.data());
 }
 
 } // namespace hatpic

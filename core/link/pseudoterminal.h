@@ -6,6 +6,9 @@
 
 #include <QString>
 
+#include <array>
+#include <cstddef>
+
 namespace hatpic {
 
 class PseudoTerminal
@@ -36,13 +39,21 @@ public:
     QString createLink(const QString &path);
     //! Removes the link if it still points to this slave (another program may own it now).
     void removeLink();
+    //! removeLink() for a process that a fatal signal ends: async-signal-safe (readlink(),
+    //! unlink() on names createLink() kept as C strings); the object is left as it is.
+    void removeLinkNow() const noexcept;
     QString linkPath() const { return m_linkPath; }
 
 private:
+    static constexpr std::size_t kMaxName = 4096; //!< PATH_MAX [bytes]
+
     int m_master = -1;
     int m_slave = -1;
     QString m_slavePath;
     QString m_linkPath;
+    // The same two names for removeLinkNow(), NUL-terminated; empty when there is no link.
+    std::array<char, kMaxName> m_linkName{};
+    std::array<char, kMaxName> m_slaveName{};
 };
 
 } // namespace hatpic

@@ -1,5 +1,6 @@
 #include "offlinesimulation.h"
 
+#include "firmware/devicecore.h"
 #include "protocol/v2codec.h"
 #include "sim/simulateddevice.h"
 #include "telemetry/numbertext.h"
@@ -12,7 +13,9 @@ namespace {
 
 // floor(duration·rate) must not lose the last row to rounding (2 s · 1000 Hz = 1999.9999…).
 constexpr double kRowSlack = 1e-9;
-constexpr double kMaxRateHz = 65535; // the simulated device's highest control rate
+// The simulated device's control rates: its device core's.
+constexpr double kMinRateHz = fw::DeviceCore<double>::kMinControlRate;
+constexpr double kMaxRateHz = fw::DeviceCore<double>::kMaxControlRate;
 
 bool isFinite(const Sample &s)
 {
@@ -33,9 +36,10 @@ qint64 OfflineSimulation::rowsFor(const OfflineSimulationConfig &config)
 
 QString OfflineSimulation::check(const OfflineSimulationConfig &config)
 {
-    if (!std::isfinite(config.rateHz) || config.rateHz <= 0 || config.rateHz > kMaxRateHz)
-        return u"The rate must be above 0 and at most " + compactNumberText(kMaxRateHz) +
-               u" Hz, got " + compactNumberText(config.rateHz) + u'.';
+    if (!std::isfinite(config.rateHz) || config.rateHz < kMinRateHz || config.rateHz > kMaxRateHz)
+        return u"The rate must be from " + compactNumberText(kMinRateHz) + u" to " +
+               compactNumberText(kMaxRateHz) + u" Hz, got " + compactNumberText(config.rateHz) +
+               u'.';
     if (!std::isfinite(config.duration) || config.duration < 0)
         return u"The duration must be 0 s or more, got " + compactNumberText(config.duration) +
                u'.';

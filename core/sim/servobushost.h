@@ -50,6 +50,9 @@ public:
     QString start();
     //! Stops the loop, closes the pty and removes the link (if still ours).
     void stop();
+    //! What a process that a fatal signal ends can still do: remove the link.
+    //! Async-signal-safe (PseudoTerminal::removeLinkNow).
+    void emergencyStop() const noexcept { m_pty.removeLinkNow(); }
     bool isRunning() const { return m_pty.isOpen(); }
 
     QString slavePath() const { return m_pty.slavePath(); }

@@ -3,13 +3,12 @@
 #include "firmware/devicecore.h"
 #include "firmware/stsactuator.h"
 #include "firmware/stsbus.h"
-#include "profile/profile.h"
+#include "fwhost/profileparamstore.h"
 #include "sim/emulatedservoport.h"
 #include "sim/emulatedsts3032.h"
 #include "sim/emulateduart.h"
 #include "sim/servoplant.h"
 
-#include <QFileInfo>
 #include <QStringList>
 
 #include <algorithm>
@@ -22,10 +21,9 @@ namespace hatpic {
 
 namespace {
 
-constexpr double kDefaultControlRate = 1000;  //!< [Hz]
-constexpr std::uint32_t kWatchdogUs = 200000; //!< feedback watchdog [µs]
-constexpr qint64 kLegacyPeriodUs = 200000;    //!< legacy frame period [µs]
-constexpr int kLegacyMaxFrameBytes = 64;      //!< bytes kept while waiting for 'o'
+constexpr double kDefaultControlRate = 1000; //!< [Hz]
+constexpr qint64 kLegacyPeriodUs = 200000;   //!< legacy frame period [µs]
+constexpr int kLegacyMaxFrameBytes = 64;     //!< bytes kept while waiting for 'o'
 constexpr int kTicksPerRev = legacy::Conversion::kTicksPerRev;
 constexpr int kLegacyCenterTicks = 1000;
 constexpr char kFirmware[] = "hatpic-sim 0.1";
@@ -52,45 +50,6 @@ public:
 
 private:
     const double &m_seconds;
-};
-
-//! SAVE_PARAMS into a profile file (profile.md), as docs/simulator.md § 7 describes.
-class ProfileStore : public fw::ParamStore
-{
-public:
-    ProfileStore(QString path, double tauLimit) : m_path(std::move(path)), m_tauLimit(tauLimit) {}
-
-    bool load(fw::StoredSettings &out) override
-    {
-        if (!QFileInfo::exists(m_path))
-            return false; // never saved: not an error
-        const ProfileReadResult read = readProfile(m_path);
-        if (!read.ok()) {
-            warning = QStringLiteral("State file %1 ignored: %2")
-                          .arg(m_path, read.errors.join(QStringLiteral("; ")));
-            return false;
-        }
-        out.params = read.profile->device;
-        out.effects = read.profile->effects;
-        return true;
-    }
-    bool save(const fw::StoredSettings &settings) override
-    {
-        Profile profile;
-        profile.name = QStringLiteral("hatpic-sim state");
-        profile.notes = QStringLiteral("Parameters saved by the simulated device (SAVE_PARAMS).");
-        profile.device = settings.params;
-        profile.effects = settings.effects;
-        profile.host.tau_limit = m_tauLimit;
-        return writeProfile(profile, m_path).isEmpty();
-    }
-    const QString &path() const { return m_path; }
-
-    QString warning; //!< why the file was not used at power-up
-
-private:
-    QString m_path;
-    double m_tauLimit;
 };
 
 //! Ideal mode's actuator: no servo, no quantisation, no noise. The knob *is* the admittance
@@ -168,7 +127,7 @@ public:
     std::optional<IdealActuator> idealActuator;
     EmulatedUart uart;
     SimClock simClock{clock};
-    std::optional<ProfileStore> store;
+    std::optional<ProfileParamStore> store; //!< SAVE_PARAMS into a profile (simulator.md § 7)
 
     // v2: our firmware's device core. Legacy: the published firmware's protocol around the
     // same control cycle.
@@ -181,13 +140,15 @@ public:
     legacy::Conversion legacyConversion;
     quint64 legacyDropped = 0;
     QString stateWarning;
+    QString saveWarning;
 };
 
 SimulatedDevice::Private::Private(const Config &c)
     : config(c), plant(0.44), uart(c.baud > 0 ? c.baud : defaultBaud(c.protocol), c.throttle)
 {
     if (std::isfinite(c.controlRateHz) && c.controlRateHz > 0)
-        rate = std::min(c.controlRateHz, fw::DeviceCore<double>::kMaxControlRate);
+        rate = std::clamp(c.controlRateHz, fw::DeviceCore<double>::kMinControlRate,
+                          fw::DeviceCore<double>::kMaxControlRate);
     period = 1.0 / rate;
     subSteps = std::max(1, int(std::ceil(ServoPlant::kMinSubStepRate * period - 1e-9)));
     if (std::isfinite(c.tauLimit) && c.tauLimit > 0)
@@ -220,7 +181,6 @@ SimulatedDevice::Private::Private(const Config &c)
     fw::Controller<double>::Config control;
     control.rateHz = rate;
     control.tauLimit = tauLimit;
-    control.watchdogUs = kWatchdogUs;
 
     const DeviceParams configured = roundedToFloat(c.params);
     if (firstViolatingField(configured) >= 0)
@@ -230,8 +190,10 @@ SimulatedDevice::Private::Private(const Config &c)
 
     DeviceParams powerUp;
     if (c.protocol == WireProtocol::V2) {
-        if (!c.stateFile.isEmpty())
-            store.emplace(c.stateFile, tauLimit);
+        if (!c.stateFile.isEmpty()) {
+            store.emplace(c.stateFile, QStringLiteral("hatpic-sim"), tauLimit);
+            saveWarning = store->saveProblem();
+        }
         fw::DeviceCore<double>::Config dc;
         dc.control = control;
         dc.deviceId = c.deviceId;
@@ -240,8 +202,8 @@ SimulatedDevice::Private::Private(const Config &c)
         dc.powerUp = c.params;
         core.emplace(dc, uart, *actuator, simClock, store ? &*store : nullptr);
         powerUp = core->loadParams();
-        if (store && !store->warning.isEmpty())
-            stateWarning = store->warning;
+        if (store && !store->warning().isEmpty())
+            stateWarning = store->warning();
         if (core->storedBlockRejected()) {
             fw::StoredSettings stored;
             store->load(stored);
@@ -477,6 +439,11 @@ quint64 SimulatedDevice::paramsApplied() const
 QString SimulatedDevice::stateWarning() const
 {
     return d->stateWarning;
+}
+
+QString SimulatedDevice::saveWarning() const
+{
+    return d->saveWarning;
 }
 
 std::unique_ptr<FaultInjector> makeFaultInjector(const SimulatedDevice::Config &config)

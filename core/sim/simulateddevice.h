@@ -110,6 +110,10 @@ public:
     quint64 paramsApplied() const;
     //! Why the state file (or config.params) was not used at power-up; empty when fine.
     QString stateWarning() const;
+    //! Why SAVE_PARAMS could not write the state file, as far as start can tell (its folder is
+    //! missing or read-only, or the file would not be overwritten); empty when nothing is in
+    //! the way (ProfileParamStore::saveProblem).
+    QString saveWarning() const;
 
 private:
     class Private;

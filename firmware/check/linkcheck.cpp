@@ -1,13 +1,16 @@
 // A test image for scripts/check-firmware, never flashed: it wires the device core exactly as
-// firmware/src/main.cpp does (DeviceCore<float> over StsActuator over StsBus, the settings blob)
-// but with stub ports, so that linking it for a bare-metal ARM target proves that everything the
-// firmware reaches resolves without host-only symbols, and lets the script look for the heap.
+// firmware/src/main.cpp does (DeviceCore<float> over StsActuator over StsBus, the settings blob,
+// the host link's TxQueue) but with stub ports, so that linking it for a bare-metal ARM target
+// proves that everything the firmware reaches resolves without host-only symbols, and lets the
+// script look for the heap.
 #include "settingsblob.h"
+#include "txqueue.h"
 
 #include "firmware/devicecore.h"
 #include "firmware/stsactuator.h"
 #include "firmware/stsbus.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -16,15 +19,22 @@ namespace {
 
 using namespace hatpic;
 
+//! Queues frames as UsbHostPort does; a "FIFO" takes 128 bytes a turn.
 class StubHost final : public fw::HostPort
 {
 public:
     std::size_t read(std::span<std::uint8_t>) override { return 0; }
-    bool write(std::span<const std::uint8_t> frame, Traffic) override
+    bool write(std::span<const std::uint8_t> frame, Traffic traffic) override
     {
-        m_bytes += frame.size();
-        return true;
+        return m_queue.push(frame, traffic);
     }
+    void flush()
+    {
+        const std::size_t sent = std::min<std::size_t>(m_queue.front().size(), 128);
+        m_bytes += sent;
+        m_queue.pop(sent);
+    }
+    esp32::TxQueue m_queue;
     std::size_t m_bytes = 0;
 };
 
@@ -80,6 +90,7 @@ int runImage()
     for (int i = 0; i < g_cycles; ++i) {
         core.controlCycle(clock.micros());
         core.serviceHost();
+        host.flush();
     }
     return static_cast<int>(host.m_bytes & 0x7F);
 }

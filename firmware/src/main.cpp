@@ -6,8 +6,9 @@
 //   retrying every second; then it starts the two tasks and loopTask deletes itself.
 // - control task, core 1, high priority: DeviceCore::controlCycle() every 1 ms. Owns Serial2
 //   (the servo bus), the StsBus and the actuator. Subscribed to the task watchdog.
-// - link task, core 0: DeviceCore::serviceHost() about every 1 ms. Owns Serial (the host link)
-//   and the NVS store (SAVE_PARAMS).
+// - link task, core 0: DeviceCore::serviceHost() about every 1 ms, then moves queued output
+//   into the UART (UsbHostPort::flush()). Owns Serial (the host link) and the NVS store
+//   (SAVE_PARAMS).
 // The two tasks share only what DeviceCore shares: lock-free queues and atomics.
 
 #include "espclock.h"
@@ -52,14 +53,15 @@ constexpr std::uint32_t kLinkStackBytes = 6144;
 //! Task watchdog timeout: longer than an NVS sector erase, which stalls the control task [ms].
 constexpr std::uint32_t kWatchdogMs = 1000;
 constexpr std::uint32_t kBootRetryMs = 1000;
-constexpr std::uint32_t kFeedbackWatchdogUs = 200000;          //!< protocol.md: stale after 200 ms
+constexpr std::uint32_t kBootLogDrainMs = 20; //!< longest wait for a boot LOG to leave [ms]
 constexpr std::string_view kFirmwareName = "hatpic-esp32 1.0"; //!< ≤ 16 bytes (HELLO_REPLY)
 static_assert(kFirmwareName.size() <= v2::kFirmwareBytes);
+static_assert(kControlRateHz >= fw::DeviceCore<float>::kMinControlRate);
 
-//! TELEMETRY frames per second the USB link carries: 31 bytes a frame, 10 bits a byte.
+//! TELEMETRY frames per second the USB link carries: 35 bytes a frame (with τ_fx: the device
+//! has the effects capability), 10 bits a byte.
 constexpr std::uint16_t kLinkLimitHz = static_cast<std::uint16_t>(
-    esp32::UsbHostPort::kBaud /
-    (10 * (v2::cobsMaxEncodedSize(v2::kPacketOverhead + v2::kTelemetryBytes) + 1)));
+    esp32::UsbHostPort::kBaud / (10 * v2::telemetryWireBytes(/*withEffects=*/true)));
 
 fw::StsActuator<float>::Config actuatorConfig()
 {
@@ -75,8 +77,9 @@ fw::DeviceCore<float>::Config coreConfig()
     fw::DeviceCore<float>::Config config;
     config.control.rateHz = kControlRateHz;
     config.control.tauLimit = fw::sts::kDefaultTauLimit;
-    config.control.watchdogUs = kFeedbackWatchdogUs;
-    // getEfuseMac() holds the MAC's bytes 0…5 from its low end; bytes 3…5 are the board's own.
+    config.control.watchdogUs = fw::Controller<float>::kFeedbackWatchdogUs; // protocol.md
+    // getEfuseMac() holds the MAC's bytes 0…5 from its low end (byte 0 lowest); >> 16 and the
+    // 32-bit cast keep bytes 2…5: the OUI's last byte and the three that are the board's own.
     config.deviceId = static_cast<std::uint32_t>(ESP.getEfuseMac() >> 16);
     config.firmware = kFirmwareName;
     config.linkLimitHz = kLinkLimitHz;
@@ -97,7 +100,7 @@ struct Board
     std::uint8_t bootLogSeq = 0; //!< seq of setup()'s own LOG frames
 };
 
-//! A LOG frame from setup(), before the link task owns the port.
+//! A LOG frame from setup(), before the link task owns the port; sent before it returns.
 void bootLog(Board &board, std::string_view text)
 {
     v2::Log log;
@@ -105,6 +108,7 @@ void bootLog(Board &board, std::string_view text)
     v2::FrameBuffer frame;
     const std::size_t length = v2::encodeFrame(board.bootLogSeq++, log, frame);
     board.host.write({frame.data(), length}, fw::HostPort::Traffic::Reply);
+    board.host.drain(kBootLogDrainMs);
 }
 
 //! "servo ready: model 0x…, parameters …" without allocating.
@@ -165,6 +169,7 @@ void linkTask(void *arg)
     Board &board = *static_cast<Board *>(arg);
     for (;;) {
         board.core.serviceHost();
+        board.host.flush(); // what the UART's FIFO did not take yet
         vTaskDelay(1);
     }
 }

@@ -3,6 +3,10 @@
 #include "settingsblob.h"
 
 #include <Preferences.h>
+#include <esp_err.h>
+#include <nvs.h>
+
+#include <string_view>
 
 namespace hatpic::esp32 {
 
@@ -22,13 +26,32 @@ bool NvsParamStore::load(fw::StoredSettings &out)
 
 bool NvsParamStore::save(const fw::StoredSettings &settings)
 {
-    Preferences prefs;
-    if (!prefs.begin(kNamespace, /*readOnly=*/false))
-        return false;
     const SettingsBlob blob = encodeSettingsBlob(settings);
-    const bool written = prefs.putBytes(kKey, blob.data(), blob.size()) == blob.size();
-    prefs.end();
-    return written;
+    const char *step = "nvs_open";
+    nvs_handle_t handle = 0;
+    esp_err_t error = nvs_open(kNamespace, NVS_READWRITE, &handle);
+    if (error == ESP_OK) {
+        step = "nvs_set_blob";
+        error = nvs_set_blob(handle, kKey, blob.data(), blob.size());
+        if (error == ESP_OK) {
+            step = "nvs_commit";
+            error = nvs_commit(handle);
+        }
+        nvs_close(handle);
+    }
+    m_failureSize = 0;
+    if (error != ESP_OK) {
+        // "NVS <step>: <error name>", cut to the buffer; no allocation.
+        for (std::string_view part :
+             {std::string_view("NVS "), std::string_view(step), std::string_view(": "),
+              std::string_view(esp_err_to_name(error))}) {
+            for (const char c : part) {
+                if (m_failureSize < m_failure.size())
+                    m_failure[m_failureSize++] = c;
+            }
+        }
+    }
+    return error == ESP_OK;
 }
 
 } // namespace hatpic::esp32

@@ -1,5 +1,6 @@
 // ServoPort over Serial2: the STS3032 bus of the HATPIC board, RX GPIO16, TX GPIO17,
-// 1 000 000 baud 8N1 (servo.md § 1; the published board's wiring).
+// 1 000 000 baud 8N1 (servo.md § 1; the published board's wiring). On ESP32-WROVER modules
+// GPIO16/17 belong to the PSRAM: the board must carry an ESP32-WROOM (esp32dev).
 //
 // Owned by the control task: only it calls discardInput(), write() and read().
 #pragma once

@@ -1,16 +1,25 @@
 #include "usbhostport.h"
 
+#include <Arduino.h>
 #include <HardwareSerial.h>
+#include <driver/uart.h>
 
 #include <algorithm>
 
 namespace hatpic::esp32 {
 
+namespace {
+
+constexpr uart_port_t kPort = UART_NUM_0; //!< Serial (Serial0) on the ESP32
+
+} // namespace
+
 void UsbHostPort::begin()
 {
-    // Buffer sizes must be set before begin() (Arduino-ESP32 3.x).
+    // Buffer sizes must be set before begin() (Arduino-ESP32 3.x). A TX buffer of 0 keeps the
+    // IDF driver's TX ring off: only flush() puts bytes into the FIFO.
     m_serial.setRxBufferSize(kRxBufferBytes);
-    m_serial.setTxBufferSize(kTxBufferBytes);
+    m_serial.setTxBufferSize(0);
     m_serial.begin(kBaud, SERIAL_8N1);
 }
 
@@ -25,12 +34,36 @@ std::size_t UsbHostPort::read(std::span<std::uint8_t> out)
 
 bool UsbHostPort::write(std::span<const std::uint8_t> frame, Traffic traffic)
 {
-    const std::size_t reserve = traffic == Traffic::Stream ? kReplyReserve : 0;
-    const std::size_t free = static_cast<std::size_t>(std::max(0, m_serial.availableForWrite()));
-    if (free < frame.size() + kWriteOverhead + reserve)
+    flush(); // room first
+    if (!m_queue.push(frame, traffic))
         return false;
-    // Fits whole: the single writer (the link task) cannot be overtaken between check and write.
-    return m_serial.write(frame.data(), frame.size()) == frame.size();
+    flush();
+    return true;
+}
+
+void UsbHostPort::flush()
+{
+    for (;;) {
+        const std::span<const std::uint8_t> bytes = m_queue.front();
+        if (bytes.empty())
+            return;
+        // Copies what the hardware FIFO has room for and returns; -1 only for a bad port.
+        const int sent = uart_tx_chars(kPort, reinterpret_cast<const char *>(bytes.data()),
+                                       static_cast<std::uint32_t>(bytes.size()));
+        if (sent <= 0)
+            return;
+        m_queue.pop(static_cast<std::size_t>(sent));
+    }
+}
+
+void UsbHostPort::drain(std::uint32_t timeoutMs)
+{
+    const std::uint32_t start = millis();
+    flush();
+    while (m_queue.size() > 0 && millis() - start < timeoutMs) {
+        delay(1);
+        flush();
+    }
 }
 
 } // namespace hatpic::esp32

@@ -412,6 +412,8 @@ void TestHatpicCtl::simulateBadArguments_data()
     QTest::newRow("hand not finite") << QStringList{u"--input"_s, u"hand:nan"_s};
     QTest::newRow("no input") << QStringList{};
     QTest::newRow("rate zero") << QStringList{u"--input"_s, u"idle"_s, u"--rate"_s, u"0"_s};
+    // The device core's lowest rate: its feedback watchdog needs a period of at most 0.1 s.
+    QTest::newRow("rate below 10 Hz") << QStringList{u"--input"_s, u"idle"_s, u"--rate"_s, u"5"_s};
     QTest::newRow("rate too high") << QStringList{u"--input"_s, u"idle"_s, u"--rate"_s, u"1e7"_s};
     QTest::newRow("negative duration")
         << QStringList{u"--input"_s, u"idle"_s, u"--duration"_s, u"-1"_s};

@@ -50,13 +50,14 @@ constexpr double kTick = 2.0 * std::numbers::pi / 4096;
 //! A device core on canned hardware, as the ESP32 glue wires it.
 template<typename T> struct Rig
 {
-    explicit Rig(std::uint32_t busTimeoutUs = 0)
+    explicit Rig(std::uint32_t busTimeoutUs = 0, double rateHz = 1000)
         : bus(servo, busTimeoutUs), actuator(bus, {}),
-          core(config(), host, actuator, clock, nullptr)
+          core(config(rateHz), host, actuator, clock, nullptr)
     {}
-    static typename fw::DeviceCore<T>::Config config()
+    static typename fw::DeviceCore<T>::Config config(double rateHz)
     {
         typename fw::DeviceCore<T>::Config c;
+        c.control.rateHz = rateHz;
         c.deviceId = 0x54455354;
         c.firmware = "test";
         return c;
@@ -137,6 +138,8 @@ private Q_SLOTS:
     void hundredBusErrorsDisableTorque();
     void floatBuildTracksDoubleBuild();
     void commandsBeyondTheQueueAreCountedAndHelloStillStops();
+    void feedbackNeverOutlivesTheWatchdog_data();
+    void feedbackNeverOutlivesTheWatchdog();
 };
 
 void TestDeviceCore::noAllocationAfterStart()
@@ -265,6 +268,46 @@ void TestDeviceCore::commandsBeyondTheQueueAreCountedAndHelloStillStops()
         rig.cycle();
     QVERIFY(rig.received().isEmpty());
     QCOMPARE(rig.core.streamRate(), std::uint16_t(0));
+}
+
+void TestDeviceCore::feedbackNeverOutlivesTheWatchdog_data()
+{
+    QTest::addColumn<double>("rate");
+    QTest::addColumn<std::uint32_t>("arrivalUs"); //!< SET_FEEDBACK's arrival, between cycles
+    QTest::newRow("10 Hz, the lowest rate") << 10.0 << 250000u;
+    QTest::newRow("10 Hz, just after a cycle") << 10.0 << 200001u;
+    QTest::newRow("100 Hz") << 100.0 << 203000u;
+    QTest::newRow("1 kHz") << 1000.0 << 200300u;
+    QTest::newRow("2.5 kHz") << 2500.0 << 200100u;
+}
+
+void TestDeviceCore::feedbackNeverOutlivesTheWatchdog()
+{
+    // A cycle's τ_ext stays in force until the next cycle. With feedback arriving between
+    // cycles, a 2 Hz hatpic-fw-host once rendered τ_ext 0.1 s after the feedback stopped and
+    // first read 0 at 0.6 s: the watchdog ran late by up to a period.
+    QFETCH(double, rate);
+    QFETCH(std::uint32_t, arrivalUs);
+    constexpr std::uint32_t kWatchdogUs = fw::Controller<double>::kFeedbackWatchdogUs;
+    const auto periodUs = std::uint32_t(std::llround(1e6 / rate));
+    Rig<double> rig(0, rate);
+    QVERIFY(rig.core.start(0));
+    rig.clock.now = arrivalUs;
+    rig.send(1, v2::SetFeedback{0.1f});
+    rig.core.serviceHost(); // stamped on arrival
+
+    int rendered = 0;
+    for (std::uint32_t t = (arrivalUs / periodUs + 1) * periodUs; t < arrivalUs + 2 * kWatchdogUs;
+         t += periodUs) {
+        rig.clock.now = t;
+        const fw::CycleRecord<double> &r = rig.core.controlCycle(t);
+        // Rendered exactly while it is still within the watchdog at the next cycle.
+        const bool inTime = t + periodUs - arrivalUs <= kWatchdogUs;
+        QVERIFY2((r.tau_ext != 0) == inTime, qPrintable(QStringLiteral("cycle at %1 µs").arg(t)));
+        QCOMPARE(bool(r.flags & v2::kFlagFeedbackStale), !inTime);
+        rendered += inTime;
+    }
+    QVERIFY(rendered > 0); // fresh feedback is rendered at this rate
 }
 
 QTEST_GUILESS_MAIN(TestDeviceCore)

@@ -13,6 +13,14 @@ namespace hatpic::test {
 
 constexpr int kStartTimeoutMs = 5000;
 
+//! hatpic-fw-host's --servo-timeout for tests that are not about timing: on a loaded machine
+//! hatpic-servo-sim may answer later than the default 5 ms, and a servo that misses a reply at
+//! start ends hatpic-fw-host.
+inline QStringList patientBus()
+{
+    return {QStringLiteral("--servo-timeout"), QStringLiteral("100")};
+}
+
 //! A program run with QProcess whose first stdout line is a pty's slave path; stderr is kept.
 class PtyProgram
 {

@@ -11,6 +11,8 @@
 #include <QTest>
 #include <QTimer>
 
+#include <csignal>
+
 using namespace hatpic;
 using namespace hatpic::test;
 using namespace Qt::StringLiterals;
@@ -103,6 +105,8 @@ private Q_SLOTS:
     void hatpicctlInfo();
     void faultsAreInjectedAndCounted();
     void sigtermDisablesTorque();
+    void everyEndingSignalDisablesTorque_data();
+    void everyEndingSignalDisablesTorque();
     void silentServoFails();
     void badOptions_data();
     void badOptions();
@@ -112,7 +116,7 @@ void TestFirmwareHost::closedLoopThroughPtys()
 {
     PtyProgram servo(servoSim(), {u"--hand"_s, u"const:0.02"_s});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     V2Client client(host.path());
     QVERIFY2(client.open(), qPrintable(client.errorString()));
@@ -187,7 +191,9 @@ void TestFirmwareHost::savedParamsSurviveRestart()
     DeviceParams stiff = asDevice(DeviceParams{});
     stiff.K_max = 0.5;
     {
-        PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+        PtyProgram host(fwHost(),
+                        QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
+                            patientBus());
         QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
         V2Client client(host.path());
         QVERIFY(client.open());
@@ -200,7 +206,9 @@ void TestFirmwareHost::savedParamsSurviveRestart()
         QVERIFY(host.terminate());
         QCOMPARE(host.process().exitCode(), 0);
     }
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+    PtyProgram host(fwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     V2Client client(host.path());
     QVERIFY(client.open());
@@ -214,7 +222,9 @@ void TestFirmwareHost::savedParamsSurviveRestart()
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
     file.write("{ not json");
     file.close();
-    PtyProgram broken(fwHost(), {u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s});
+    PtyProgram broken(fwHost(),
+                      QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
+                          patientBus());
     QVERIFY2(!broken.path().isEmpty(), qPrintable(broken.errors()));
     QTRY_VERIFY_WITH_TIMEOUT(broken.errors().contains(u"ignored"_s), kTimeoutMs);
     V2Client again(broken.path());
@@ -228,7 +238,7 @@ void TestFirmwareHost::hatpicctlInfo()
 {
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QProcess ctl;
     ctl.start(QStringLiteral(HATPICCTL_PATH), {u"info"_s, u"--port"_s, host.path()});
@@ -243,9 +253,10 @@ void TestFirmwareHost::faultsAreInjectedAndCounted()
 {
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(),
-                    {u"--servo"_s, servo.path(), u"--quiet"_s, u"--faults"_s,
-                     u"drop=0.05,corrupt=0.02,dup=0.02,hdrop=0.2"_s, u"--seed"_s, u"3"_s});
+    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s, u"--faults"_s,
+                                          u"drop=0.05,corrupt=0.02,dup=0.02,hdrop=0.2"_s,
+                                          u"--seed"_s, u"3"_s} +
+                                  patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     // A lost SET_PARAMS (or its lost ACK) is retried: the push succeeds all the same.
     QProcess set;
@@ -283,7 +294,9 @@ void TestFirmwareHost::sigtermDisablesTorque()
     const QString link = dir.filePath(u"hatpic"_s);
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s});
+    PtyProgram host(fwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QCOMPARE(QFileInfo(link).symLinkTarget(), host.path());
     QVERIFY(!servo.errors().contains(u"torque off"_s));
@@ -302,6 +315,51 @@ void TestFirmwareHost::sigtermDisablesTorque()
     QByteArray reply;
     QTRY_VERIFY_WITH_TIMEOUT((reply += bus.readAll()).size() >= 7, kTimeoutMs);
     QCOMPARE(reply.left(7).toHex(), QByteArray("ffff01030000fb")); // error 0, value 0
+}
+
+void TestFirmwareHost::everyEndingSignalDisablesTorque_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::addColumn<bool>("crash"); //!< ends as the signal would (after the emergency stop)
+    // Faults the event loop cannot wait for: an emergency stop, then the signal's own end.
+    QTest::newRow("SIGSEGV") << int(SIGSEGV) << true;
+    QTest::newRow("SIGABRT") << int(SIGABRT) << true;
+    QTest::newRow("SIGBUS") << int(SIGBUS) << true;
+    // Signals that can wait: the orderly stop, then exit 128 + the signal.
+    QTest::newRow("SIGHUP") << int(SIGHUP) << false;
+    QTest::newRow("SIGQUIT") << int(SIGQUIT) << false;
+    QTest::newRow("SIGXCPU") << int(SIGXCPU) << false;
+    QTest::newRow("SIGUSR2") << int(SIGUSR2) << false;
+}
+
+void TestFirmwareHost::everyEndingSignalDisablesTorque()
+{
+    QFETCH(int, signal);
+    QFETCH(bool, crash);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString link = dir.filePath(u"hatpic"_s);
+    PtyProgram servo(servoSim(), {});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    // No core file from the faults sent on purpose.
+    PtyProgram host(u"/bin/sh"_s,
+                    QStringList{u"-c"_s, u"ulimit -c 0; exec \"$0\" \"$@\""_s, fwHost(),
+                                u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s} +
+                        patientBus());
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    QCOMPARE(QFileInfo(link).symLinkTarget(), host.path());
+    QVERIFY(!servo.errors().contains(u"torque off"_s));
+
+    QCOMPARE(::kill(pid_t(host.process().processId()), signal), 0);
+    QVERIFY(host.process().waitForFinished(kTimeoutMs));
+    if (crash) {
+        QCOMPARE(host.process().exitStatus(), QProcess::CrashExit);
+    } else {
+        QCOMPARE(host.process().exitStatus(), QProcess::NormalExit);
+        QCOMPARE(host.process().exitCode(), 128 + signal);
+    }
+    QVERIFY(!QFileInfo(link).isSymLink());
+    QTRY_VERIFY_WITH_TIMEOUT(servo.errors().contains(u"torque off"_s), kTimeoutMs);
 }
 
 void TestFirmwareHost::silentServoFails()
@@ -325,6 +383,10 @@ void TestFirmwareHost::badOptions_data()
     QTest::newRow("fw-host without --servo") << fwHost() << QStringList{} << u"--servo"_s;
     QTest::newRow("fw-host rate 0")
         << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--rate"_s, u"0"_s} << u"control rate"_s;
+    // Below 10 Hz a cycle's τ_ext would stay in force past the 200 ms feedback watchdog.
+    QTest::newRow("fw-host rate 2")
+        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--rate"_s, u"2"_s}
+        << u"from 10 to 20000 (a period of at most half the 200 ms feedback watchdog)"_s;
     QTest::newRow("fw-host id 254")
         << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-id"_s, u"254"_s}
         << u"servo id"_s;

@@ -606,8 +606,20 @@ void TestSimulatedDevice::saveParamsStorageError()
     SimulatedDevice::Config c = fastConfig();
     c.stateFile = dir.filePath(u"missing-dir/state.json"_s);
     Host host(c);
+    // Known at start…
+    QCOMPARE(host.device.saveWarning(), u"SAVE_PARAMS cannot write state file " + c.stateFile +
+                                            u": its folder " + dir.filePath(u"missing-dir"_s) +
+                                            u" does not exist.");
+    // …and said with the system's words when it happens: the LOG first, then the ACK.
     host.send(1, v2::SaveParams{});
-    const std::optional<v2::Ack> ack = host.ack();
+    host.device.advance(1e-3);
+    const QList<v2::Frame> frames = host.take();
+    QCOMPARE(frames.size(), 2);
+    const auto *log = std::get_if<v2::Log>(&frames.at(0).message);
+    QVERIFY(log);
+    QCOMPARE(v2::toQString(log->text), u"SAVE_PARAMS failed: cannot write profile \""_s +
+                                           c.stateFile + u"\": No such file or directory"_s);
+    const auto *ack = std::get_if<v2::Ack>(&frames.at(1).message);
     QVERIFY(ack);
     QCOMPARE(ack->status, v2::AckStatus::StorageError);
 }

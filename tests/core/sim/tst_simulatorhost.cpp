@@ -76,6 +76,7 @@ private Q_SLOTS:
     void linkReplacesSymlinkOnly();
     void binaryRunsAndStops_data();
     void binaryRunsAndStops();
+    void binarySurvivesTheFileSizeLimit();
     void binaryRefusesBadOptions_data();
     void binaryRefusesBadOptions();
 };
@@ -202,24 +203,34 @@ void TestSimulatorHost::binaryRunsAndStops_data()
 {
     QTest::addColumn<int>("signal");
     QTest::addColumn<QString>("protocol");
-    QTest::newRow("v2, SIGTERM") << int(SIGTERM) << u"v2"_s;
-    QTest::newRow("v2, SIGINT") << int(SIGINT) << u"v2"_s;
-    QTest::newRow("legacy, SIGTERM") << int(SIGTERM) << u"legacy"_s;
+    QTest::addColumn<int>("exitCode"); //!< -1: ends as the signal would (crash exit)
+    QTest::newRow("v2, SIGTERM") << int(SIGTERM) << u"v2"_s << 0;
+    QTest::newRow("v2, SIGINT") << int(SIGINT) << u"v2"_s << 0;
+    QTest::newRow("legacy, SIGTERM") << int(SIGTERM) << u"legacy"_s << 0;
+    // Any other signal that would end it: the same orderly stop, then 128 + the signal…
+    QTest::newRow("v2, SIGHUP") << int(SIGHUP) << u"v2"_s << 128 + SIGHUP;
+    QTest::newRow("v2, SIGALRM") << int(SIGALRM) << u"v2"_s << 128 + SIGALRM;
+    // …or, for a fault the event loop cannot wait for, the link removed before the end.
+    QTest::newRow("v2, SIGSEGV") << int(SIGSEGV) << u"v2"_s << -1;
+    QTest::newRow("v2, SIGABRT") << int(SIGABRT) << u"v2"_s << -1;
 }
 
 void TestSimulatorHost::binaryRunsAndStops()
 {
     QFETCH(int, signal);
     QFETCH(QString, protocol);
+    QFETCH(int, exitCode);
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString link = dir.filePath(u"hatpic"_s);
     QVERIFY(QFile::link(u"/nonexistent/stale"_s, link)); // a stale link left behind
 
     QProcess sim;
-    sim.setProgram(QStringLiteral(HATPIC_SIM_PATH));
-    sim.setArguments({u"--protocol"_s, protocol, u"--link"_s, link, u"--hand"_s, u"idle"_s,
-                      u"--seed"_s, u"3"_s});
+    // No core file from the faults sent on purpose.
+    sim.setProgram(u"/bin/sh"_s);
+    sim.setArguments({u"-c"_s, u"ulimit -c 0; exec \"$0\" \"$@\""_s,
+                      QStringLiteral(HATPIC_SIM_PATH), u"--protocol"_s, protocol, u"--link"_s, link,
+                      u"--hand"_s, u"idle"_s, u"--seed"_s, u"3"_s});
     sim.start();
     QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
     QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
@@ -242,10 +253,53 @@ void TestSimulatorHost::binaryRunsAndStops()
 
     QCOMPARE(::kill(pid_t(sim.processId()), signal), 0);
     QVERIFY(sim.waitForFinished(10000));
-    QCOMPARE(sim.exitStatus(), QProcess::NormalExit);
-    QCOMPARE(sim.exitCode(), 0);
+    if (exitCode < 0) {
+        QCOMPARE(sim.exitStatus(), QProcess::CrashExit);
+    } else {
+        QCOMPARE(sim.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(sim.exitCode(), exitCode);
+    }
     QVERIFY(!QFileInfo(link).isSymLink()); // removed on exit
     QVERIFY(!QFileInfo::exists(link));
+}
+
+void TestSimulatorHost::binarySurvivesTheFileSizeLimit()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString state = dir.filePath(u"state.json"_s);
+    QProcess sim;
+    // ulimit -f 0: any write to a file passes the limit (SIGXFSZ kills by default).
+    sim.start(u"/bin/sh"_s, {u"-c"_s, u"ulimit -f 0; exec \"$0\" \"$@\""_s,
+                             QStringLiteral(HATPIC_SIM_PATH), u"--state"_s, state});
+    QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
+    const QString path = QString::fromLocal8Bit(sim.readLine()).chopped(1);
+    {
+        Client client(path);
+        QVERIFY2(client.open(), qPrintable(client.errorString()));
+        client.send(4, v2::SaveParams{});
+        const auto acked = [&] {
+            for (const v2::Frame &f : std::as_const(client.frames)) {
+                if (const auto *ack = std::get_if<v2::Ack>(&f.message); ack && ack->ackedSeq == 4)
+                    return ack->status == v2::AckStatus::StorageError;
+            }
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(acked(), 5000);
+        QString log;
+        for (const v2::Frame &f : std::as_const(client.frames)) {
+            if (const auto *l = std::get_if<v2::Log>(&f.message))
+                log += v2::toQString(l->text);
+        }
+        QVERIFY2(log.contains(u"SAVE_PARAMS failed: cannot write profile"_s) &&
+                     log.contains(u"File too large"_s),
+                 qPrintable(log));
+    }
+    QCOMPARE(sim.state(), QProcess::Running);
+    sim.terminate();
+    QVERIFY(sim.waitForFinished(10000));
+    QCOMPARE(sim.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(sim.exitCode(), 0);
 }
 
 void TestSimulatorHost::binaryRefusesBadOptions_data()
@@ -254,6 +308,8 @@ void TestSimulatorHost::binaryRefusesBadOptions_data()
     QTest::addColumn<QString>("messagePart");
     QTest::newRow("unknown protocol") << QStringList{u"--protocol"_s, u"v3"_s} << u"v3"_s;
     QTest::newRow("rate zero") << QStringList{u"--rate"_s, u"0"_s} << u"control rate"_s;
+    QTest::newRow("rate below the watchdog's 10 Hz")
+        << QStringList{u"--rate"_s, u"5"_s} << u"from 10 to 20000"_s;
     QTest::newRow("rate not a number") << QStringList{u"--rate"_s, u"fast"_s} << u"fast"_s;
     QTest::newRow("baud not a number") << QStringList{u"--baud"_s, u"abc"_s} << u"baud"_s;
     QTest::newRow("bad hand spec") << QStringList{u"--hand"_s, u"sine:1"_s} << u"sine:A:F"_s;
