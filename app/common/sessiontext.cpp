@@ -1,5 +1,6 @@
 #include "common/sessiontext.h"
 
+#include <QLoggingCategory>
 #include <QStringBuilder>
 
 namespace hatpic::cli {
@@ -145,6 +146,11 @@ QString noticeText(const SessionNotice &notice)
         return u"Host parameters refused: " % notice.problems.join(QStringLiteral("; "));
     }
     return {};
+}
+
+void silenceLibraryLog()
+{
+    QLoggingCategory::setFilterRules(QStringLiteral("hatpic.*=false"));
 }
 
 } // namespace hatpic::cli

@@ -19,4 +19,9 @@ QString commandFailureText(const CommandResult &result);
 //! e.g. "Not connected: a recording starts once a device is connected."
 QString noticeText(const SessionNotice &notice);
 
+//! The programs report each failure once, in the sentences above; the library's own log lines
+//! ("hatpic.*" categories) would repeat them, so this turns them off. QT_LOGGING_RULES=
+//! "hatpic.*=true" brings them back (the environment takes precedence).
+void silenceLibraryLog();
+
 } // namespace hatpic::cli

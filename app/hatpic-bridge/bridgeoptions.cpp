@@ -1,8 +1,8 @@
 #include "bridgeoptions.h"
 
+#include "profile/jsonfile.h"
+
 #include <QCommandLineParser>
-#include <QFile>
-#include <QJsonDocument>
 #include <QJsonObject>
 
 #include <cmath>
@@ -199,25 +199,31 @@ const std::vector<Setting> &settingTable()
     return table;
 }
 
+// Text the user gave, as a message quotes it (echoedText(): a long value is cut).
+QString echoed(const QString &text)
+{
+    return QString::fromStdString(echoedText(text.toStdString()));
+}
+
 QString optionError(const char *name, const QString &value, const QString &problem)
 {
-    return u"--" + QString::fromLatin1(name) + u" " + problem + u", got '" + value + u"'.";
+    return u"--" + QString::fromLatin1(name) + u" " + problem + u", got '" + echoed(value) + u"'.";
 }
 
 // The --config file's settings, applied first.
 QString applyConfig(const QString &path, AppOptions &options)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return u"Cannot read the config file " + path + u": " + file.errorString() + u'.';
-    if (file.size() > kMaxConfigBytes)
-        return u"The config file " + path + u" is larger than 64 KiB.";
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
-    if (!doc.isObject())
-        return u"The config file " + path + u" is not a JSON object: " + parseError.errorString() +
-               u'.';
-    const QJsonObject object = doc.object();
+    // The rules of a profile's file (profile.md § Reading): a regular file, read with a bound,
+    // one JSON object, each key once.
+    QString error;
+    const std::optional<QByteArray> text =
+        readBoundedFile(path, QStringLiteral("config file"), kMaxConfigBytes, &error);
+    if (!text)
+        return error.left(1).toUpper() + error.mid(1) + u'.';
+    const JsonObjectRead read = parseJsonObject(*text);
+    if (!read.object)
+        return u"The config file " + path + u": " + read.error + u'.';
+    const QJsonObject &object = *read.object;
     for (auto it = object.begin(); it != object.end(); ++it) {
         const Setting *setting = nullptr;
         for (const Setting &s : settingTable()) {
@@ -225,7 +231,8 @@ QString applyConfig(const QString &path, AppOptions &options)
                 setting = &s;
         }
         if (!setting)
-            return u"The config file " + path + u" has an unknown setting \"" + it.key() + u"\".";
+            return u"The config file " + path + u" has an unknown setting \"" + echoed(it.key()) +
+                   u"\".";
         const QString value = it.value().isDouble()
                                   ? QString::number(it.value().toDouble(), 'g', 17)
                                   : it.value().toString();
@@ -234,7 +241,7 @@ QString applyConfig(const QString &path, AppOptions &options)
                    u"\" must be a number or a string.";
         if (const QString problem = setting->apply(options, value); !problem.isEmpty())
             return u"The config file " + path + u": \"" + it.key() + u"\" " + problem + u", got '" +
-                   value + u"'.";
+                   echoed(value) + u"'.";
     }
     return {};
 }
@@ -265,7 +272,10 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
                                             QString::fromLatin1(s.valueName)));
     }
     if (!parser.parse(arguments)) {
-        *error = parser.errorText() + u'.';
+        // Qt's sentence quotes an unknown option whole; ours cuts a long one.
+        const QStringList unknown = parser.unknownOptionNames();
+        *error = unknown.size() == 1 ? u"Unknown option '" + echoed(unknown.first()) + u"'."
+                                     : echoed(parser.errorText()); // Qt's ends with a full stop
         return std::nullopt;
     }
     if (parser.isSet(helpOption)) {
@@ -273,7 +283,7 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
         return std::nullopt;
     }
     if (!parser.positionalArguments().isEmpty()) {
-        *error = u"Unexpected argument '" + parser.positionalArguments().first() + u"'.";
+        *error = u"Unexpected argument '" + echoed(parser.positionalArguments().first()) + u"'.";
         return std::nullopt;
     }
 
@@ -284,7 +294,7 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
         const auto id = whole(QString::fromLocal8Bit(domain));
         if (!id) {
             *error = u"ROS_DOMAIN_ID must be a whole number, got '" +
-                     QString::fromLocal8Bit(domain) + u"'.";
+                     echoed(QString::fromLocal8Bit(domain)) + u"'.";
             return std::nullopt;
         }
         options.settings.domainId = *id;

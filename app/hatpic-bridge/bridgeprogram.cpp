@@ -36,7 +36,7 @@ BridgeProgram::BridgeProgram(const AppOptions &options, QObject *parent)
             [this] { m_client.connectDevice(m_options.connect); });
     connect(&m_client, &DeviceClient::stateChanged, this, &BridgeProgram::onStateChanged);
     connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
-        if (!batch.isEmpty())
+        if (!batch.isEmpty() && m_client.state() == SessionState::Connected)
             m_lastDeviceTauExt = batch.last().tau_ext;
     });
     connect(&m_client, &DeviceClient::deviceLog, this,
@@ -56,6 +56,8 @@ QString BridgeProgram::start()
 
 void BridgeProgram::onStateChanged(SessionState state, const StateDetail &event)
 {
+    if (state != SessionState::Connected)
+        m_lastDeviceTauExt.reset(); // what the device renders now is not known
     if (m_closing)
         return;
     const QString detail = cli::stateDetailText(event);
@@ -89,14 +91,15 @@ void BridgeProgram::printStats()
                QString::number(s.published[i]);
     }
     const QString rtt = link.rttMedianMs < 0 ? QStringLiteral("–") : num(link.rttMedianMs) + u" ms";
-    printLine(stdout, u"link " + sessionStateName(m_client.state()) + u", " +
-                          num(link.framesPerSecond) + u" frames/s, " +
-                          QString::number(link.seqDrops) + u" missing, rtt " + rtt + u" | out " +
-                          out + u" | wrenches " + QString::number(s.wrenches.received) +
-                          u", non-finite " + QString::number(s.wrenches.nonFinite) + u", stale " +
-                          QString::number(s.wrenches.stale) + u", limited " +
-                          QString::number(s.wrenches.limited) + u" | tau_ext " + num(s.tauExt) +
-                          u" N·m, device " + num(m_lastDeviceTauExt) + u" N·m");
+    printLine(stdout,
+              u"link " + sessionStateName(m_client.state()) + u", " + num(link.framesPerSecond) +
+                  u" frames/s, " + QString::number(link.seqDrops) + u" missing, rtt " + rtt +
+                  u" | out " + out + u" | wrenches " + QString::number(s.wrenches.received) +
+                  u", non-finite " + QString::number(s.wrenches.nonFinite) + u", stale " +
+                  QString::number(s.wrenches.stale) + u", limited " +
+                  QString::number(s.wrenches.limited) + u" | tau_ext " + num(s.tauExt) +
+                  u" N·m, device " +
+                  (m_lastDeviceTauExt ? num(*m_lastDeviceTauExt) + u" N·m" : QStringLiteral("–")));
 }
 
 void BridgeProgram::shutdown()

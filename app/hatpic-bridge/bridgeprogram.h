@@ -41,7 +41,8 @@ private:
     Bridge m_bridge;
     QTimer m_statsTimer;
     QTimer m_retryTimer;
-    double m_lastDeviceTauExt = 0; //!< τ_ext of the newest sample [N·m]
+    //! τ_ext of the newest sample while connected; none once the link is gone [N·m]
+    std::optional<double> m_lastDeviceTauExt;
     bool m_closing = false;
 };
 

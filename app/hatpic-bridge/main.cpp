@@ -5,6 +5,7 @@
 #include "bridgeprogram.h"
 
 #include "common/quitonsignal.h"
+#include "common/sessiontext.h"
 #include "session/sessiontypes.h"
 
 #include <QCoreApplication>
@@ -31,6 +32,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("hatpic-bridge"));
     registerSessionMetaTypes();
+    cli::silenceLibraryLog(); // a lost device is reported once, in the bridge's own words
 
     QString help, error;
     const auto options = bridge::parseAppOptions(QCoreApplication::arguments(), &help, &error);

@@ -10,8 +10,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 using namespace hatpic;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -20,6 +22,41 @@ constexpr double kMaxQuitAfterSeconds = 604800; //!< --quit-after: at most one w
 void fail(const QString &message)
 {
     std::fprintf(stderr, "hatpic-tuner: %s\n", qPrintable(message));
+}
+
+// Qt's own options (-platform, -style, …) are known only to a QApplication, and --help-all
+// lists them. One on the offscreen platform, which needs no display, parses the command line
+// as process() does (a bad option or help: a message and exit), then goes. The user's
+// arguments come first, so the appended -platform wins only for this one.
+void parseWithQt(int argc, char *argv[], QCommandLineParser &parser)
+{
+    static char platform[] = "-platform";
+    static char offscreen[] = "offscreen";
+    std::vector<char *> arguments(argv, argv + argc);
+    arguments.push_back(platform);
+    arguments.push_back(offscreen);
+    arguments.push_back(nullptr);
+    int count = argc + 2;
+    const QApplication probe(count, arguments.data());
+    parser.process(probe);
+}
+
+// True when every argument that looks like an option is one of `names` spelt out ("--port",
+// "--port=X", "-p"): QApplication then takes none of them, and the parser sees them as they
+// are. Anything else ("-platform", "-pX", a value starting with '-') may be Qt's.
+bool onlyOwnOptions(const QStringList &arguments, const QStringList &names)
+{
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        const QString &a = arguments[i];
+        if (!a.startsWith(u'-') || a == u"-")
+            continue;
+        const bool own = a.startsWith(u"--")
+                             ? a.size() > 3 && names.contains(a.mid(2).section(u'=', 0, 0))
+                             : a.size() == 2 && names.contains(a.mid(1));
+        if (!own)
+            return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -34,11 +71,9 @@ int main(int argc, char *argv[])
             return 0;
         }
     }
-    QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("HATPIC"));
     QApplication::setApplicationName(QStringLiteral("hatpic-tuner"));
     QApplication::setApplicationVersion(QStringLiteral(HATPIC_VERSION));
-    QApplication::setDesktopFileName(QStringLiteral("hatpic-tuner"));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(
@@ -86,7 +121,24 @@ int main(int argc, char *argv[])
     parser.addPositionalArgument(QStringLiteral("recording"),
                                  QStringLiteral("A recording (CSV) to open in replay."),
                                  QStringLiteral("[RECORDING.csv]"));
-    parser.process(app);
+    // Help and option errors need no display: the options are parsed before QApplication.
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    QStringList names{u"h"_s, u"help"_s, u"help-all"_s, u"v"_s, u"version"_s};
+    for (const QCommandLineOption *o :
+         {&port, &baud, &protocol, &profile, &hand, &repaint, &quitAfter, &faults, &seed})
+        names << o->names();
+    if (!onlyOwnOptions(arguments, names) || !parser.parse(arguments) ||
+        parser.isSet(QStringLiteral("help-all"))) {
+        parseWithQt(argc, argv, parser); // maybe Qt's own options; exits unless they were
+    } else if (parser.isSet(QStringLiteral("help"))) {
+        // As process() prints it; without an application object Qt cannot name the program.
+        std::fputs(qPrintable(parser.helpText().replace(QStringLiteral("<executable_name>"),
+                                                        arguments.constFirst())),
+                   stdout);
+        return 0;
+    }
 
     ConnectOptions options;
     options.port = parser.value(port);
@@ -169,6 +221,8 @@ int main(int argc, char *argv[])
         return 2;
     }
 
+    QApplication app(argc, argv);
+    QApplication::setDesktopFileName(QStringLiteral("hatpic-tuner"));
     MainWindow window;
     window.setRepaintRate(repaintHz);
     if (parser.isSet(profile)) {

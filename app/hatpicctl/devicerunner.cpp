@@ -37,6 +37,9 @@ DeviceRunner::DeviceRunner(const DeviceOptions &options) : m_options(options)
     QObject::connect(
         &m_client, &DeviceClient::stateChanged, &m_context,
         [this](SessionState state, const StateDetail &detail) { onStateChanged(state, detail); });
+    // What the device says for people (a fault, …), escaped by the session, as it comes.
+    QObject::connect(&m_client, &DeviceClient::deviceLog, &m_context,
+                     [](const QString &line) { printError(u"device: " + line); });
 }
 
 DeviceRunner::~DeviceRunner()

@@ -2,7 +2,8 @@
 // result, or let the link run for a while — each with a deadline, on a local event loop.
 //
 // Lives on the main thread. Every failure is printed as one sentence on stderr and returned
-// as an ExitCode, so a subcommand can simply `return` what these functions give.
+// as an ExitCode, so a subcommand can simply `return` what these functions give. The device's
+// LOG lines go to stderr as they arrive ("hatpicctl: device: …").
 #pragma once
 
 #include "deviceoptions.h"

@@ -245,6 +245,11 @@ protected:
             printError(result->problem);
             return ExitNoDevice;
         }
+        // A spectrum of too few samples (a device that streams slowly) is no spectrum.
+        if (m_kind == ExperimentKind::Spectrum && result->thetaSpectrum.frequency.empty()) {
+            printError(result->problem);
+            return ExitNoDevice;
+        }
         if (!result->problem.isEmpty())
             printNote(u"Note: " + result->problem);
         writeOut(experimentReport(*result));

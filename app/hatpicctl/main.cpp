@@ -1,8 +1,8 @@
 // hatpicctl: command-line access to a HATPIC joystick and to the haptic model (docs/cli.md).
 #include "command.h"
+#include "common/sessiontext.h"
 
 #include <QCoreApplication>
-#include <QLoggingCategory>
 
 #include <csignal>
 
@@ -14,8 +14,6 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("hatpicctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(HATPIC_VERSION));
-    // Failures are reported once, as a sentence of our own; the library's log lines would
-    // repeat them. QT_LOGGING_RULES="hatpic.*=true" brings them back (it takes precedence).
-    QLoggingCategory::setFilterRules(QStringLiteral("hatpic.*=false"));
+    hatpic::cli::silenceLibraryLog(); // failures are reported once, in our own sentences
     return hatpic::cli::dispatch(QCoreApplication::arguments());
 }

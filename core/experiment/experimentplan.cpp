@@ -2,6 +2,7 @@
 
 #include "analysis/frequencyresponse.h"
 #include "model/derived.h"
+#include "model/paramtable.h"
 #include "telemetry/numbertext.h"
 
 #include <algorithm>
@@ -22,6 +23,12 @@ constexpr double kHighestFactor = 3;  //!< … × 3
 QString number(double v)
 {
     return compactNumberText(v);
+}
+
+// A plan's length as people read it: tenths of a second ("130.3 s"), never 17 digits.
+QString seconds(double v)
+{
+    return QString::number(v, 'f', 1) + u" s";
 }
 
 } // namespace
@@ -97,7 +104,7 @@ QString ExperimentPlan::check(double tauLimit) const
     switch (kind) {
     case ExperimentKind::Step:
         for (double tau : {tauFrom, tauTo}) {
-            if (!finiteIn(tau, -tauLimit, tauLimit))
+            if (!std::isfinite(tau) || !atMostAsDeviceFloat(std::abs(tau), tauLimit))
                 return u"A step level must lie within the torque limit ±" + number(tauLimit) +
                        u" N·m, got " + number(tau) + u" N·m.";
         }
@@ -106,29 +113,40 @@ QString ExperimentPlan::check(double tauLimit) const
         break;
     case ExperimentKind::Frequency:
         if (!std::isfinite(offset) || !(amplitude > 0) || !std::isfinite(amplitude) ||
-            std::abs(offset) + amplitude > tauLimit)
+            !atMostAsDeviceFloat(std::abs(offset) + amplitude, tauLimit))
             return u"The sine (offset " + number(offset) + u" N·m, amplitude " + number(amplitude) +
                    u" N·m) must have an amplitude above 0 and stay within the torque limit ±" +
                    number(tauLimit) + u" N·m.";
         if (frequencies.isEmpty() || frequencies.size() > kMaxFrequencies)
             return u"A frequency response needs 1 to " + QString::number(kMaxFrequencies) +
                    u" frequencies, got " + QString::number(frequencies.size()) + u'.';
+        if (cycles < 1 || cycles > kMaxCycles)
+            return u"The cycles per frequency must be 1 to " + QString::number(kMaxCycles) +
+                   u", got " + QString::number(cycles) + u'.';
         for (qsizetype i = 0; i < frequencies.size(); ++i) {
             if (!(frequencies[i] > 0) || !(frequencies[i] <= kMaxFrequency))
                 return u"Each frequency must be above 0 and at most " + number(kMaxFrequency) +
                        u" Hz, got " + number(frequencies[i]) + u" Hz.";
+            // Its measured periods alone must fit in the longest plan.
+            if (!(cycles / frequencies[i] <= kMaxDuration))
+                return u"Each frequency must be at least " +
+                       QString::number(cycles / kMaxDuration, 'g', 3) + u" Hz, so that its " +
+                       QString::number(cycles) + u" measured periods fit in the " +
+                       number(kMaxDuration) + u" s an experiment may last, got " +
+                       number(frequencies[i]) + u" Hz.";
             if (i > 0 && !(frequencies[i] > frequencies[i - 1]))
                 return QStringLiteral("The frequencies must ascend, each one above the last.");
         }
-        if (cycles < 1 || cycles > kMaxCycles)
-            return u"The cycles per frequency must be 1 to " + QString::number(kMaxCycles) +
-                   u", got " + QString::number(cycles) + u'.';
         break;
     case ExperimentKind::Spectrum:
+        if (!(duration >= kMinSpectrumDuration))
+            return u"A spectrum needs a duration of at least " + number(kMinSpectrumDuration) +
+                   u" s (a resolution of " + number(1 / kMinSpectrumDuration) + u" Hz), got " +
+                   number(duration) + u" s.";
         break;
     }
     if (!(totalDuration() <= kMaxDuration))
-        return u"The experiment would last " + number(totalDuration()) + u" s, more than " +
+        return u"The experiment would last " + seconds(totalDuration()) + u", more than " +
                number(kMaxDuration) + u" s; shorten it.";
     return {};
 }

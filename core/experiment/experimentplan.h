@@ -33,6 +33,9 @@ struct ExperimentPlan
     static constexpr int kMaxFrequencies = 50;   //!< points of a frequency response
     static constexpr int kMaxCycles = 1000;      //!< periods analysed per frequency
     static constexpr double kMaxFrequency = 250; //!< a quarter of the 1 kHz stream [Hz]
+    //! Shortest spectrum [s]: a resolution of 10 Hz, 100 samples at the 1 kHz stream. Shorter
+    //! records leave the report's lines (above twice the resolution) nowhere to be.
+    static constexpr double kMinSpectrumDuration = 0.1;
     //! Margin around each analysed stretch for the feedback stream's delay and the host clock's
     //! uncertainty about the device's [s].
     static constexpr double kGuard = 0.05;

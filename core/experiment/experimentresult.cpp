@@ -183,7 +183,8 @@ ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sampl
         }
         spectraOf(window, r.thetaSpectrum, r.tauSpectrum);
         if (r.thetaSpectrum.frequency.empty())
-            r.problem = QStringLiteral("Too few samples for a spectrum.");
+            r.problem = u"Too few samples for a spectrum: " + QString::number(window.size()) +
+                        u" in the " + QString::number(plan.duration, 'g', 3) + u" s recorded.";
         break;
     }
     }

@@ -1,5 +1,6 @@
 #include "experimentrunner.h"
 
+#include "protocol/messages.h"
 #include "session/deviceclient.h"
 
 #include <algorithm>
@@ -19,6 +20,7 @@ ExperimentRunner::ExperimentRunner(DeviceClient &client, QObject *parent)
     connect(&m_drainTimer, &QTimer::timeout, this,
             [this] { end(ExperimentResult::Outcome::Completed, {}); });
     connect(&client, &DeviceClient::samplesReady, this, &ExperimentRunner::onSamples);
+    connect(&client, &DeviceClient::deviceLog, this, &ExperimentRunner::onDeviceLog);
     connect(&client, &DeviceClient::stateChanged, this, [this](SessionState state) {
         if (running() && state != SessionState::Connected)
             end(ExperimentResult::Outcome::Failed,
@@ -65,6 +67,7 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
     m_params = params;
     m_tauLimit = tauLimit;
     m_samples.clear();
+    m_deviceLog.clear();
     m_deviceClock = ClockMap();
     m_lastProgress = -1;
     m_phase = Phase::Running;
@@ -110,10 +113,28 @@ void ExperimentRunner::tick()
     }
 }
 
+void ExperimentRunner::onDeviceLog(const QString &line)
+{
+    if (running() && m_deviceLog.size() < kMaxLogLines)
+        m_deviceLog.append(line);
+}
+
 void ExperimentRunner::onSamples(const QList<Sample> &batch)
 {
     if (!running() || batch.isEmpty())
         return;
+    for (const Sample &s : batch) {
+        if (s.flags & v2::kFlagTorqueOff) {
+            QString why = QStringLiteral(
+                "The device has turned its torque off (a servo bus fault): the knob could not "
+                "follow the experiment, so it has no figures.");
+            if (!m_deviceLog.isEmpty())
+                why +=
+                    u" The device said: \"" + m_deviceLog.join(QStringLiteral("\"; \"")) + u"\".";
+            end(ExperimentResult::Outcome::Failed, why);
+            return;
+        }
+    }
     const double now = elapsed();
     m_deviceClock.add(now, batch.last().t_s - now);
     const qsizetype room = kMaxSamples - m_samples.size();

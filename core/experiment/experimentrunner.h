@@ -2,6 +2,10 @@
 // plan's τ_ext with SET_FEEDBACK, collects the samples, and analyses them. τ_ext goes back to
 // 0 whenever the run ends — completed, cancelled, failed or destroyed.
 //
+// A device fault fails the run (docs/experiments.md § Faults): a sample whose telemetry says
+// the torque is off (v2::kFlagTorqueOff) ends it at once, quoting what the device said in LOG
+// frames during the run.
+//
 // Lives on the client's thread; every method returns at once.
 #pragma once
 
@@ -24,6 +28,8 @@ public:
     static constexpr int kDrainTimeoutMs = 1000;
     //! Samples kept per run: the longest plan at 4 kHz; beyond it the newest are dropped.
     static constexpr qsizetype kMaxSamples = 480'000;
+    //! LOG lines kept per run for the failure's reason; later ones are not quoted.
+    static constexpr qsizetype kMaxLogLines = 4;
 
     explicit ExperimentRunner(DeviceClient &client, QObject *parent = nullptr);
     ~ExperimentRunner() override; //!< a running experiment is cancelled: τ_ext = 0
@@ -47,6 +53,7 @@ private:
 
     void tick();
     void onSamples(const QList<Sample> &batch);
+    void onDeviceLog(const QString &line);
     void end(ExperimentResult::Outcome outcome, const QString &problem);
     double elapsed() const; //!< plan time [s]
 
@@ -59,6 +66,7 @@ private:
     DeviceParams m_params;
     double m_tauLimit = 0;
     QList<Sample> m_samples;
+    QStringList m_deviceLog; //!< LOG lines of this run, at most kMaxLogLines
     ClockMap m_deviceClock;  //!< plan time → device time, from the batches' arrivals
     int m_lastProgress = -1; //!< percent last reported
 };

@@ -116,6 +116,8 @@ template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t no
         r.flags |= v2::kFlagSaturated;
     if (m_stale)
         r.flags |= v2::kFlagFeedbackStale;
+    if (m_faulted)
+        r.flags |= v2::kFlagTorqueOff;
 
     // 3–4. The filter advances its own state with u = −τ + τ_total; its position is the goal.
     if (measured) {

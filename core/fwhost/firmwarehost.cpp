@@ -69,6 +69,35 @@ FirmwareHost::~FirmwareHost()
     stop();
 }
 
+QString FirmwareHost::servoStartFailure(fw::StsBusError error) const
+{
+    const QString servo =
+        QStringLiteral("The servo (id %1) on %2").arg(m_config.servoId).arg(m_config.servoPath);
+    const QString baud = QString::number(m_config.servoBaud) + u" baud";
+    switch (error) {
+    case fw::StsBusError::Timeout:
+        return servo + u" does not answer at " + baud + u'.';
+    case fw::StsBusError::Short:
+        return servo + u" answers at " + baud +
+               u", but its replies stop short of a status packet (another baud rate, or a "
+               u"noisy line?).";
+    case fw::StsBusError::Corrupt:
+        return servo + u" answers at " + baud +
+               u", but not with valid status packets (bad checksum or length: another baud "
+               u"rate, or not an STS3032?).";
+    case fw::StsBusError::ForeignId:
+        return servo + u" does not answer at " + baud +
+               u", but a servo with another id does (see --servo-id).";
+    case fw::StsBusError::Rejected:
+        return servo + u": the request could not be sent (id " + QString::number(m_config.servoId) +
+               u").";
+    case fw::StsBusError::None:
+        break;
+    }
+    // Every transaction answered, yet start() failed: the servo refused the set-up.
+    return servo + u" answers at " + baud + u" but did not take the position-mode set-up.";
+}
+
 QString FirmwareHost::start()
 {
     if (isRunning())
@@ -110,10 +139,7 @@ QString FirmwareHost::start()
                                                       m_store.get());
     if (!m_core->start(m_clock->micros())) {
         m_pty.close();
-        return QStringLiteral("The servo (id %1) on %2 does not answer at %3 baud.")
-            .arg(m_config.servoId)
-            .arg(m_config.servoPath)
-            .arg(m_config.servoBaud);
+        return servoStartFailure(m_bus->lastError());
     }
     m_warnings.clear();
     if (m_store && !m_store->warning().isEmpty())

@@ -111,6 +111,8 @@ public:
 
 private:
     struct Shared; // statistics, guarded by its mutex
+    //! Why the servo did not come up, from the bus's last error: no answer, or a wrong one.
+    QString servoStartFailure(fw::StsBusError error) const;
     void controlLoop();
     void serviceLink();
 

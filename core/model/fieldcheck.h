@@ -14,10 +14,27 @@ namespace hatpic::detail {
 
 inline std::string boundText(const FieldBound &b, double external)
 {
-    const double value = b.external ? external : b.value;
+    // The device's float32 by the decimal that names it: tau_limit (0.44), not
+    // 0.4399999976158142.
+    const double value = b.external ? shortestFloatDecimal(external) : b.value;
     if (b.symbol.empty())
         return formatNumber(value);
     return std::string(b.symbol) + " (" + formatNumber(value) + ")";
+}
+
+// `v` against a lower or upper bound; one given when validating is compared as the device's
+// float32 (atMostAsDeviceFloat).
+inline bool aboveLower(const FieldBound &b, double v, double external)
+{
+    if (b.external)
+        return b.inclusive ? atMostAsDeviceFloat(external, v) : !atMostAsDeviceFloat(v, external);
+    return b.inclusive ? v >= b.value : v > b.value;
+}
+inline bool belowUpper(const FieldBound &b, double v, double external)
+{
+    if (b.external)
+        return b.inclusive ? atMostAsDeviceFloat(v, external) : !atMostAsDeviceFloat(external, v);
+    return b.inclusive ? v <= b.value : v < b.value;
 }
 
 // Walks the table's rules (model.md § 1) for every field of `p`. `report(field, index, value,
@@ -38,16 +55,14 @@ void checkFields(const Params &p, const std::array<FieldSpec<Params>, N> &specs,
             continue;
         }
         const FieldBound &lo = s.lower;
-        const double low = lo.external ? external : lo.value;
-        if (lo.present && !(lo.inclusive ? v >= low : v > low)) {
+        if (lo.present && !aboveLower(lo, v, external)) {
             report(s.name, index, v, [&lo, external] {
                 return std::string(lo.inclusive ? "must be ≥ " : "must be > ") +
                        boundText(lo, external);
             });
         }
         const FieldBound &hi = s.upper;
-        const double high = hi.external ? external : hi.value;
-        if (hi.present && !(hi.inclusive ? v <= high : v < high)) {
+        if (hi.present && !belowUpper(hi, v, external)) {
             report(s.name, index, v, [&hi, external] {
                 return std::string(hi.inclusive ? "must be ≤ " : "must be < ") +
                        boundText(hi, external);

@@ -158,4 +158,14 @@ std::string formatNumber(double value)
     return std::string(buffer, result.ptr);
 }
 
+std::string echoedText(std::string_view text)
+{
+    if (text.size() <= kMaxEchoedBytes)
+        return std::string(text);
+    std::size_t n = kMaxEchoedBytes;
+    while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80)
+        --n; // never half a character
+    return std::string(text.substr(0, n)) + "… (" + std::to_string(text.size()) + " bytes)";
+}
+
 } // namespace hatpic

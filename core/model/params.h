@@ -96,4 +96,11 @@ double shortestFloatDecimal(double value);
 //! Shortest decimal text that reads back as the same double ("0.4", "1e-06", "nan").
 std::string formatNumber(double value);
 
+//! Longest text a message quotes whole [bytes].
+inline constexpr std::size_t kMaxEchoedBytes = 64;
+//! Text a person gave (a topic name, an option's value) as a message quotes it: whole up to
+//! kMaxEchoedBytes; longer, its start cut at a UTF-8 character boundary, then "…" and its size
+//! ("/aaaa…aaa… (122880 bytes)"), so a refused 120 KB value does not flood the terminal.
+std::string echoedText(std::string_view text);
+
 } // namespace hatpic

@@ -11,10 +11,26 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <string_view>
 
 namespace hatpic {
+
+//! The one comparison against a bound the device holds as float32 — tau_limit, for
+//! detent_strength, a vibration's amplitude and an experiment's τ_ext: `value` is within it
+//! when the float32 it travels as is at most the bound's float32. So 0.44 is within a device's
+//! tau_limit 0.4399999976158142 (both are 0.44f), as the device itself finds. NaN never is.
+inline bool atMostAsDeviceFloat(double value, double bound)
+{
+    // double → float is undefined beyond the float range: there a value is ±infinity.
+    const auto single = [](double v) {
+        constexpr double kMax = std::numeric_limits<float>::max();
+        constexpr float kInf = std::numeric_limits<float>::infinity();
+        return v > kMax ? kInf : v < -kMax ? -kInf : static_cast<float>(v); // NaN stays NaN
+    };
+    return single(value) <= single(bound);
+}
 
 //! One end of a field's range. `symbol` is set where the bound is not a short decimal
 //! ("π/2"); messages then give both, e.g. "must be ≤ π/2 (1.5707963267948966)".
@@ -24,7 +40,9 @@ struct FieldBound
     double value = 0;
     bool inclusive = true;
     std::string_view symbol;
-    bool external = false; //!< the value is given when validating (e.g. tau_limit)
+    //! The value is given when validating (tau_limit, a float32 of the device's), and compared
+    //! with atMostAsDeviceFloat().
+    bool external = false;
 };
 
 //! A rule against another field of the same set: value ≤ other (or < when strict).

@@ -113,7 +113,7 @@ std::vector<std::string> validate(const BridgeSettings &s)
         {"unstamped wrench topic", &s.topics.wrenchUnstamped}};
     for (const auto &[what, topic] : topics) {
         if (!topic->empty() && !isValidTopicName(*topic))
-            errors.push_back(std::string(what) + ": '" + *topic +
+            errors.push_back(std::string(what) + ": '" + echoedText(*topic) +
                              "' is not a ROS topic name (letters, digits and '_' between single "
                              "'/', not starting with a digit)");
     }

@@ -136,13 +136,8 @@ QString jsonValueText(const QJsonValue &value)
         return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
     case QJsonValue::Double:
         return QString::fromStdString(formatNumber(value.toDouble()));
-    case QJsonValue::String: {
-        constexpr qsizetype kMaxShown = 40;
-        QString text = value.toString();
-        if (text.size() > kMaxShown)
-            text = text.left(kMaxShown) + u'…';
-        return u'"' + text + u'"';
-    }
+    case QJsonValue::String:
+        return u'"' + QString::fromStdString(echoedText(value.toString().toStdString())) + u'"';
     case QJsonValue::Array:
         return QStringLiteral("an array");
     case QJsonValue::Object:

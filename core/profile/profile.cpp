@@ -1,17 +1,14 @@
 #include "profile.h"
 
 #include "bridgejson.h"
-#include "jsonkeys.h"
+#include "jsonfile.h"
 #include "profile/paramsjson.h"
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
-#include <QJsonParseError>
 #include <QJsonValue>
 #include <QSaveFile>
 
@@ -197,31 +194,18 @@ ProfileReadResult parseProfile(const QByteArray &json)
 {
     ProfileReadResult result;
     if (json.size() > kMaxProfileBytes) {
-        result.errors.append(u"the file is larger than 1 MiB (" +
+        result.errors.append(u"the file is larger than " + byteLimitText(kMaxProfileBytes) + u" (" +
                              QString::number(kMaxProfileBytes) + u" bytes), got " +
                              QString::number(json.size()) + u" bytes; refused");
         return result;
     }
 
-    QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
-        result.errors.append(u"not valid JSON: " + parseError.errorString() + u" at byte offset " +
-                             QString::number(parseError.offset));
+    const JsonObjectRead read = parseJsonObject(json);
+    if (!read.object) {
+        result.errors.append(read.notAnObject ? u"not a profile: " + read.error : read.error);
         return result;
     }
-    if (!document.isObject()) {
-        const QString got =
-            document.isArray() ? QStringLiteral("an array") : QStringLiteral("nothing");
-        result.errors.append(u"not a profile: the top level must be a JSON object, got " + got);
-        return result;
-    }
-    if (const QString key = firstDuplicateKey(json); !key.isEmpty()) {
-        result.errors.append(u"duplicate key \"" + key +
-                             u"\": a key may appear once (which value was meant?)");
-        return result;
-    }
-    const QJsonObject root = document.object();
+    const QJsonObject &root = *read.object;
     // Not a profile at all: its error alone, no word about keys a profile does not have.
     if (!checkHeader(root, result.errors))
         return result;
@@ -246,28 +230,14 @@ ProfileReadResult parseProfile(const QByteArray &json)
 ProfileReadResult readProfile(const QString &path)
 {
     ProfileReadResult result;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        result.errors.append(u"cannot open profile \"" + path + u"\": " + file.errorString());
+    QString error;
+    const std::optional<QByteArray> data =
+        readBoundedFile(path, QStringLiteral("profile"), kMaxProfileBytes, &error);
+    if (!data) {
+        result.errors.append(error);
         return result;
     }
-    // Read at most one byte past the limit: enough to know the file is too large without
-    // pulling an arbitrarily large (or endless) file into memory.
-    const QByteArray data = file.read(kMaxProfileBytes + 1);
-    if (file.error() != QFileDevice::NoError) {
-        result.errors.append(u"cannot read profile \"" + path + u"\": " + file.errorString());
-        return result;
-    }
-    if (data.size() > kMaxProfileBytes) {
-        const qint64 size = file.size();
-        const QString got = size > kMaxProfileBytes ? QString::number(size) + u" bytes"
-                                                    : QStringLiteral("more than that");
-        result.errors.append(u"profile \"" + path + u"\" is larger than 1 MiB (" +
-                             QString::number(kMaxProfileBytes) + u" bytes), got " + got +
-                             u"; refused");
-        return result;
-    }
-    return parseProfile(data);
+    return parseProfile(*data);
 }
 
 QByteArray serializeProfile(const Profile &profile)

@@ -64,6 +64,9 @@ constexpr std::uint8_t kFlagDeadZone = 0x01;
 constexpr std::uint8_t kFlagNotch = 0x02;
 constexpr std::uint8_t kFlagSaturated = 0x04;
 constexpr std::uint8_t kFlagFeedbackStale = 0x08;
+//! The device has turned the servo's torque off after a fault (100 bus errors in a row,
+//! servo.md § 1) and keeps it off: set on every frame from then on.
+constexpr std::uint8_t kFlagTorqueOff = 0x10;
 
 //! The flag bit that says which stiffness zone θ lies in (kFlagDeadZone, kFlagNotch; none for
 //! the outer zone): the device core sets it, and the host for legacy samples.

@@ -13,6 +13,8 @@
 #include <QTest>
 #include <QTimer>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <csignal>
 #include <memory>
@@ -82,7 +84,24 @@ private Q_SLOTS:
                                 << QByteArray("ROS_DOMAIN_ID must be a whole number");
         QTest::newRow("config") << QStringList{u"--port"_s, u"sim"_s, u"--config"_s,
                                                u"/nonexistent/bridge.json"_s}
-                                << QByteArray() << QByteArray("Cannot read the config file");
+                                << QByteArray()
+                                << QByteArray(
+                                       "Cannot open config file \"/nonexistent/bridge.json\": "
+                                       "No such file or directory.");
+        // Issue 21: an endless "file" is not read at all.
+        QTest::newRow("config /dev/zero")
+            << QStringList{u"--port"_s, u"sim"_s, u"--config"_s, u"/dev/zero"_s} << QByteArray()
+            << QByteArray("Config file \"/dev/zero\" is not a regular file (a device or a pipe); "
+                          "refused.");
+        // A refused value is quoted, not echoed whole: 120 KB of it would flood the terminal.
+        QTest::newRow("huge topic name")
+            << QStringList{u"--port"_s, u"sim"_s, u"--twist-topic"_s, QString(120000, u'a') + u' '}
+            << QByteArray()
+            << QByteArray("twist topic: '" + QByteArray(64, 'a') +
+                          "… (120001 bytes)' is not a ROS topic name");
+        QTest::newRow("huge unknown option")
+            << QStringList{u"--port"_s, u"sim"_s, u"--"_s + QString(120000, u'x')} << QByteArray()
+            << QByteArray("Unknown option '" + QByteArray(64, 'x') + "… (120000 bytes)'.");
     }
     void badOptionsAreOneSentence()
     {
@@ -93,7 +112,85 @@ private Q_SLOTS:
         QCOMPARE(run.code, 4);
         QVERIFY2(run.err.contains(message), run.err.constData());
         QCOMPARE(run.err.trimmed().count('\n'), 0);
+        QVERIFY2(run.err.size() < 1000, run.err.left(1000).constData());
         QVERIFY(run.out.isEmpty());
+    }
+
+    // A --config file is read by a profile's rules (issue 21): a regular file, one JSON object,
+    // each key once; what is wrong is said.
+    void configFileRefusals_data()
+    {
+        QTest::addColumn<QByteArray>("content"); // empty: a named pipe
+        QTest::addColumn<QString>("message");    // after "The config file PATH"
+        QTest::newRow("array") << QByteArray("[]")
+                               << u": the top level must be a JSON object, got an array."_s;
+        QTest::newRow("number beyond a double")
+            << QByteArray(R"({"gain":1e999})")
+            << u": not valid JSON: illegal number at byte offset 13 (1e999 is beyond the largest "
+               u"double, about 1.8e308)."_s;
+        QTest::newRow("duplicate key")
+            << QByteArray(R"({"gain": 500, "gain": 0.2})")
+            << u": duplicate key \"gain\": a key may appear once (which value was meant?)."_s;
+        QTest::newRow("named pipe") << QByteArray() << QString();
+    }
+    void configFileRefusals()
+    {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"bridge.json"_s);
+        if (content.isEmpty()) {
+            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+            message = u"Config file \""_s + path +
+                      u"\" is not a regular file (a device or a pipe); refused."_s;
+        } else {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(content);
+            file.close();
+            message = u"The config file "_s + path + message;
+        }
+        const Run run = runBridge({u"--port"_s, u"sim"_s, u"--config"_s, path});
+        QCOMPARE(run.code, 4);
+        QCOMPARE(QString::fromUtf8(run.err), u"hatpic-bridge: "_s + message + u'\n');
+    }
+
+    // The device lost: told once, in the bridge's words (not the library's log too), and the
+    // statistics stop quoting the device's last τ_ext (issue 21).
+    void lostDeviceToldOnce()
+    {
+        SimulatedDevice::Config config;
+        config.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
+        SimulatorHost host(config);
+        QCOMPARE(host.start(), QString());
+        QProcess bridge;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, QString::number(kDomain));
+        env.remove(u"QT_LOGGING_RULES"_s);
+        bridge.setProcessEnvironment(env);
+        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH), {u"--port"_s, host.slavePath()});
+        QVERIFY(bridge.waitForStarted());
+        QByteArray out, err;
+        QTRY_VERIFY_WITH_TIMEOUT((out += bridge.readAllStandardOutput(),
+                                  out.contains("link connected") && out.contains("device 0 N·m")),
+                                 15000);
+        host.stop();
+        out.clear();
+        QTRY_VERIFY_WITH_TIMEOUT((out += bridge.readAllStandardOutput(),
+                                  out.contains("link lost") || out.contains("link reconnecting")),
+                                 10000);
+        QTRY_VERIFY_WITH_TIMEOUT((out += bridge.readAllStandardOutput(), out.count('\n') >= 2),
+                                 5000);
+        ::kill(pid_t(bridge.processId()), SIGINT);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
+        out += bridge.readAllStandardOutput();
+        err += bridge.readAllStandardError();
+        QCOMPARE(err.count("Lost "), 1);
+        QVERIFY2(!err.contains("hatpic.device"), err.constData());
+        const QList<QByteArray> lines = out.trimmed().split('\n');
+        QVERIFY2(lines.last().startsWith("link ") && !lines.last().startsWith("link connected") &&
+                     lines.last().endsWith("device –"),
+                 out.constData());
     }
 
     void configFileSettingsAndUnknownKeys()

@@ -74,6 +74,7 @@ private Q_SLOTS:
     void vibrateRefusals_data();
     void vibrateRefusals();
     void legacyDeviceHasNoEffects();
+    void torqueLimitIsTheDevicesFloat();
 
 private:
     QTemporaryDir m_dir;
@@ -292,6 +293,35 @@ void TestHatpicCtlEffects::legacyDeviceHasNoEffects()
     sim.terminate();
     QVERIFY(sim.waitForFinished(10000));
 #endif
+}
+
+// The device reports tau_limit as the float 0.44f = 0.4399999976158142 and takes 0.44 (the
+// same float); validate, set and vibrate compare alike and quote what the user wrote
+// (issue 21).
+void TestHatpicCtlEffects::torqueLimitIsTheDevicesFloat()
+{
+    const QStringList cue{u"vibrate"_s, u"--port"_s,     u"sim"_s, u"--frequency"_s,
+                          u"80"_s,      u"--duration"_s, u"0.1"_s, u"--amplitude"_s};
+    const Run atLimit = runCtl(cue + QStringList{u"0.44"_s});
+    QVERIFY2(atLimit.code == 0, qPrintable(describe(atLimit)));
+    QVERIFY(atLimit.err.contains("The device plays the cue: 0.44 N·m"));
+    const Run beyond = runCtl(cue + QStringList{u"0.45"_s});
+    QVERIFY2(beyond.code == 4, qPrintable(describe(beyond)));
+    QVERIFY2(beyond.err.contains("amplitude: must be ≤ tau_limit (0.44), got 0.45;"),
+             beyond.err.constData());
+
+    const Run set =
+        runCtl({u"set"_s, u"--port"_s, u"sim"_s, u"--set"_s, u"detent_strength=0.44"_s});
+    QVERIFY2(set.code == 0, qPrintable(describe(set)));
+
+    Profile profile = effectsProfile();
+    profile.effects.detent_strength = 0.44; // at host.tau_limit 0.44
+    const QString path = m_dir.filePath(u"limit.json"_s);
+    QCOMPARE(writeProfile(profile, path), QString());
+    const Run validate = runCtl({u"validate"_s, path});
+    QVERIFY2(validate.code == 0, qPrintable(describe(validate)));
+    const Run setProfile = runCtl({u"set"_s, u"--port"_s, u"sim"_s, u"--profile"_s, path});
+    QVERIFY2(setProfile.code == 0, qPrintable(describe(setProfile)));
 }
 
 QTEST_GUILESS_MAIN(TestHatpicCtlEffects)

@@ -106,6 +106,7 @@ private Q_SLOTS:
     void stepOnTheSimulator();
     void bodeOnTheSimulator();
     void spectrumOnTheSimulator();
+    void stepToTheTorqueLimit();
     void spectrumOfAConstantKnob();
     void refusesALegacyDevice();
     void keepsAnExistingCsv();
@@ -144,6 +145,18 @@ void TestHatpicCtlExperiment::badUsage_data()
     QTest::newRow("beyond the limit")
         << QStringList{u"step"_s, u"--port"_s, u"sim"_s, u"--to"_s, u"0.5"_s}
         << u"A step level must lie within the torque limit ±0.44 N·m, got 0.5 N·m."_s;
+    // Issue 21: what cannot give a figure is refused up front, in words.
+    QTest::newRow("spectrum too short")
+        << QStringList{u"spectrum"_s, u"--port"_s, u"sim"_s, u"--duration"_s, u"0.001"_s}
+        << u"A spectrum needs a duration of at least 0.1 s (a resolution of 10 Hz), got "
+           u"0.001 s."_s;
+    QTest::newRow("frequency too low")
+        << QStringList{u"bode"_s, u"--port"_s, u"sim"_s, u"--frequencies"_s, u"1e-9"_s}
+        << u"Each frequency must be at least 0.0333 Hz, so that its 4 measured periods fit in "
+           u"the 120 s an experiment may last, got 1e-09 Hz."_s;
+    QTest::newRow("too long, in tenths of a second")
+        << QStringList{u"bode"_s, u"--port"_s, u"sim"_s, u"--frequencies"_s, u"0.04,0.05"_s}
+        << u"The experiment would last 180.5 s, more than 120 s; shorten it."_s;
     QTest::newRow("descending") << QStringList{u"bode"_s, u"--port"_s, u"sim"_s, u"--frequencies"_s,
                                                u"5,3"_s}
                                 << u"The frequencies must ascend, each one above the last."_s;
@@ -208,6 +221,14 @@ void TestHatpicCtlExperiment::bodeOnTheSimulator()
     QCOMPARE(first[0], u"4"_s);
     QVERIFY2(std::abs(20 * std::log10(first[1].toDouble() / first[3].toDouble())) < 1.5,
              qPrintable(lines[1]));
+}
+
+// The documented limit 0.44 N·m is the device's 0.44f (issue 21).
+void TestHatpicCtlExperiment::stepToTheTorqueLimit()
+{
+    const Outcome o = hatpicctl({u"step"_s, u"--port"_s, u"sim"_s, u"--to"_s, u"0.44"_s});
+    QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
+    QVERIFY2(o.out.contains(u"omega_n [rad/s]"_s), qPrintable(o.text()));
 }
 
 void TestHatpicCtlExperiment::spectrumOnTheSimulator()

@@ -13,15 +13,20 @@ struct Run
 {
     int code = -1; //!< -1: did not finish in time, -2: crashed
     QByteArray err;
+    QByteArray out;
 };
 
-Run runTuner(const QString &configDir, const QStringList &arguments, int timeoutMs)
+//! `platform` "offscreen", or "xcb" with no display to connect to (an ssh session).
+Run runTuner(const QString &configDir, const QStringList &arguments, int timeoutMs,
+             const QString &platform = u"offscreen"_s)
 {
     QProcess process;
     process.setProgram(QStringLiteral(HATPIC_TUNER_PATH));
     process.setArguments(arguments);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+    env.insert(u"QT_QPA_PLATFORM"_s, platform);
+    env.remove(u"DISPLAY"_s);
+    env.remove(u"WAYLAND_DISPLAY"_s);
     env.insert(u"XDG_CONFIG_HOME"_s, configDir); // never the user's own settings
     env.insert(u"XDG_RUNTIME_DIR"_s, configDir); // 0700: no warning on stderr
     process.setProcessEnvironment(env);
@@ -35,6 +40,7 @@ Run runTuner(const QString &configDir, const QStringList &arguments, int timeout
         return run;
     }
     run.err = process.readAllStandardError();
+    run.out = process.readAllStandardOutput();
     run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
     return run;
 }
@@ -49,6 +55,9 @@ private Q_SLOTS:
     void refusesBadNumbers_data();
     void refusesBadNumbers();
     void quitAfterCloses();
+    void helpAndErrorsNeedNoDisplay_data();
+    void helpAndErrorsNeedNoDisplay();
+    void qtOptionsStillWork();
 
 private:
     QTemporaryDir m_config;
@@ -103,6 +112,60 @@ void TestTunerOptions::quitAfterCloses()
     const Run run = runTuner(m_config.path(), {u"--quit-after"_s, u"0.5"_s}, 30000);
     QVERIFY2(run.code == 0, qPrintable(u"exit "_s + QString::number(run.code) + u", stderr: "_s +
                                        QString::fromUtf8(run.err)));
+}
+
+// Without a display QApplication aborts (SIGABRT): help and option errors come before it
+// (issue 21).
+void TestTunerOptions::helpAndErrorsNeedNoDisplay_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("stdoutStart");
+    QTest::addColumn<QString>("stderrStart");
+    QTest::newRow("--help") << QStringList{u"--help"_s} << 0
+                            << u"Usage: "_s + QStringLiteral(HATPIC_TUNER_PATH) +
+                                   u" [options] [RECORDING.csv]\n"_s
+                            << QString();
+    QTest::newRow("-h with a Qt option")
+        << QStringList{u"-style"_s, u"Fusion"_s, u"-h"_s} << 0 << u"Usage: "_s << QString();
+    QTest::newRow("--help-all lists Qt's options")
+        << QStringList{u"--help-all"_s} << 0 << u"Usage: "_s << QString();
+    QTest::newRow("unknown option") << QStringList{u"--bogus"_s} << 1 << QString()
+                                    << u"hatpic-tuner: Unknown option 'bogus'.\n"_s;
+    QTest::newRow("missing value") << QStringList{u"--port"_s} << 1 << QString()
+                                   << u"hatpic-tuner: Missing value after '--port'.\n"_s;
+    QTest::newRow("bad number") << QStringList{u"--quit-after"_s, u"abc"_s} << 2 << QString()
+                                << u"hatpic-tuner: --quit-after"_s;
+    QTest::newRow("bad number after a Qt option")
+        << QStringList{u"-reverse"_s, u"--repaint-rate"_s, u"0"_s} << 2 << QString()
+        << u"hatpic-tuner: --repaint-rate"_s;
+}
+
+void TestTunerOptions::helpAndErrorsNeedNoDisplay()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, code);
+    QFETCH(QString, stdoutStart);
+    QFETCH(QString, stderrStart);
+    const Run run = runTuner(m_config.path(), arguments, 15000, u"xcb"_s);
+    QVERIFY2(run.code == code, qPrintable(u"exit "_s + QString::number(run.code) + u", stderr: "_s +
+                                          QString::fromUtf8(run.err)));
+    QVERIFY2(QString::fromUtf8(run.out).startsWith(stdoutStart), run.out.constData());
+    QVERIFY2(QString::fromUtf8(run.err).startsWith(stderrStart), run.err.constData());
+    if (QTest::currentDataTag() == QByteArray("--help-all lists Qt's options"))
+        QVERIFY2(run.out.contains("-platform"), run.out.constData());
+}
+
+// Qt's own options are still Qt's: -platform here chooses the platform, not --port
+// ("-p latform") and a recording named "offscreen".
+void TestTunerOptions::qtOptionsStillWork()
+{
+    const Run run =
+        runTuner(m_config.path(), {u"-platform"_s, u"offscreen"_s, u"--quit-after"_s, u"0.3"_s},
+                 30000, u"xcb"_s);
+    QVERIFY2(run.code == 0, qPrintable(u"exit "_s + QString::number(run.code) + u", stderr: "_s +
+                                       QString::fromUtf8(run.err)));
+    QVERIFY2(!run.err.contains("hatpic-tuner:"), run.err.constData());
 }
 
 QTEST_GUILESS_MAIN(TestTunerOptions)

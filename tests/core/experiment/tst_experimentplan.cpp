@@ -20,6 +20,7 @@ private Q_SLOTS:
     void sineSegmentsFollowEachOther();
     void checkNamesTheProblem_data();
     void checkNamesTheProblem();
+    void torqueLimitIsTheDevicesFloat();
     void idealStepGivesTheModelFigures_data();
     void idealStepGivesTheModelFigures();
     void idealSinesGiveTheModelGain();
@@ -111,7 +112,7 @@ void TestExperimentPlan::checkNamesTheProblem_data()
     p.duration = 100;
     p.settle = 30;
     QTest::newRow("too long")
-        << p << QStringLiteral("The experiment would last 130 s, more than 120 s; shorten it.");
+        << p << QStringLiteral("The experiment would last 130.0 s, more than 120 s; shorten it.");
     ExperimentPlan sine = ExperimentPlan::defaults(ExperimentKind::Frequency, DeviceParams{});
     p = sine;
     p.frequencies = {5, 3};
@@ -122,6 +123,24 @@ void TestExperimentPlan::checkNamesTheProblem_data()
     p.frequencies = {300};
     QTest::newRow("too fast")
         << p << QStringLiteral("Each frequency must be above 0 and at most 250 Hz, got 300 Hz.");
+    p = sine;
+    p.frequencies = {1e-9};
+    QTest::newRow("too slow for its periods")
+        << p
+        << QStringLiteral("Each frequency must be at least 0.0333 Hz, so that its 4 measured "
+                          "periods fit in the 120 s an experiment may last, got 1e-09 Hz.");
+    p = sine;
+    p.frequencies = {0.04, 0.05};
+    p.settle = 1;
+    QTest::newRow("too long, in tenths of a second")
+        << p << QStringLiteral("The experiment would last 183.2 s, more than 120 s; shorten it.");
+    ExperimentPlan spectrum = ExperimentPlan::defaults(ExperimentKind::Spectrum, DeviceParams{});
+    p = spectrum;
+    p.duration = 0.001;
+    QTest::newRow("spectrum too short")
+        << p
+        << QStringLiteral("A spectrum needs a duration of at least 0.1 s (a resolution of 10 Hz), "
+                          "got 0.001 s.");
     p = sine;
     p.frequencies.clear();
     QTest::newRow("none") << p
@@ -147,6 +166,25 @@ void TestExperimentPlan::checkNamesTheProblem()
     QFETCH(ExperimentPlan, plan);
     QFETCH(QString, problem);
     QCOMPARE(plan.check(0.44), problem);
+}
+
+// A device reports tau_limit as a float: 0.44f = 0.4399999976158142. The documented 0.44 is
+// that float and is accepted; the next float above is not (issue 21).
+void TestExperimentPlan::torqueLimitIsTheDevicesFloat()
+{
+    const double limit = double(0.44f);
+    QVERIFY(limit < 0.44);
+    ExperimentPlan step = ExperimentPlan::defaults(ExperimentKind::Step, DeviceParams{});
+    step.tauTo = 0.44;
+    QCOMPARE(step.check(limit), QString());
+    step.tauTo = -0.44;
+    QCOMPARE(step.check(limit), QString());
+    step.tauTo = double(std::nextafter(0.44f, 1.0f));
+    QVERIFY(!step.check(limit).isEmpty());
+    ExperimentPlan sine = ExperimentPlan::defaults(ExperimentKind::Frequency, DeviceParams{});
+    sine.offset = 0.4;
+    sine.amplitude = 0.04;
+    QCOMPARE(sine.check(limit), QString());
 }
 
 void TestExperimentPlan::idealStepGivesTheModelFigures_data()

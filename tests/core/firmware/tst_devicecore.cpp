@@ -187,10 +187,11 @@ void TestDeviceCore::hundredBusErrorsDisableTorque()
     rig.received();
     rig.servo.corruptReplies = true; // the servo still obeys; the master cannot trust a reply
     for (std::uint32_t i = 1; i < fw::Controller<double>::kMaxConsecutiveBusErrors; ++i)
-        rig.cycle();
+        QCOMPARE(rig.cycle().flags & v2::kFlagTorqueOff, 0);
     QVERIFY(!rig.core.controller().faulted());
     QCOMPARE(rig.servo.regs[fw::sts::kRegTorqueEnable], std::uint8_t(1));
-    rig.cycle();
+    // The 100th: torque off, and every frame from then on says so (issue 21).
+    QCOMPARE(rig.cycle().flags & v2::kFlagTorqueOff, int(v2::kFlagTorqueOff));
     QVERIFY(rig.core.controller().faulted());
     QCOMPARE(rig.servo.regs[fw::sts::kRegTorqueEnable], std::uint8_t(0));
 
@@ -205,7 +206,7 @@ void TestDeviceCore::hundredBusErrorsDisableTorque()
     rig.servo.corruptReplies = false;
     const std::uint64_t writes = rig.servo.writes;
     for (int i = 0; i < 10; ++i)
-        rig.cycle();
+        QCOMPARE(rig.cycle().flags & v2::kFlagTorqueOff, int(v2::kFlagTorqueOff));
     QCOMPARE(rig.servo.regs[fw::sts::kRegTorqueEnable], std::uint8_t(0));
     QCOMPARE(rig.servo.writes, writes);
 }

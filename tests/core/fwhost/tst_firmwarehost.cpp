@@ -7,11 +7,13 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QSocketNotifier>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
 #include <csignal>
+#include <unistd.h>
 
 using namespace hatpic;
 using namespace hatpic::test;
@@ -108,6 +110,8 @@ private Q_SLOTS:
     void everyEndingSignalDisablesTorque_data();
     void everyEndingSignalDisablesTorque();
     void silentServoFails();
+    void wronglyAnsweringServoFails();
+    void experimentFailsWhenTheTorqueGoesOff();
     void badOptions_data();
     void badOptions();
 };
@@ -373,6 +377,61 @@ void TestFirmwareHost::silentServoFails()
     QVERIFY(host.readAllStandardOutput().isEmpty());
     const QString error = QString::fromUtf8(host.readAllStandardError());
     QVERIFY2(error.contains(u"does not answer"_s), qPrintable(error));
+}
+
+// Something answers on the bus, but not as a servo: told apart from silence (issue 21).
+void TestFirmwareHost::wronglyAnsweringServoFails()
+{
+    PseudoTerminal bus;
+    QCOMPARE(bus.open(), QString());
+    // Every request gets a status packet for id 1 with a bad checksum (0x00, not 0xfc).
+    QSocketNotifier requests(bus.master(), QSocketNotifier::Read);
+    connect(&requests, &QSocketNotifier::activated, this, [&bus] {
+        char buffer[64];
+        if (::read(bus.master(), buffer, sizeof buffer) > 0) {
+            static const char reply[] = {'\xff', '\xff', '\x01', '\x02', '\x00', '\x00'};
+            if (::write(bus.master(), reply, sizeof reply) != sizeof reply)
+                qWarning("the reply was not written");
+        }
+    });
+    QProcess host;
+    host.start(fwHost(), {u"--servo"_s, bus.slavePath(), u"--servo-timeout"_s, u"100"_s});
+    QTRY_VERIFY_WITH_TIMEOUT(host.state() == QProcess::NotRunning, kTimeoutMs);
+    QCOMPARE(host.exitCode(), 1);
+    const QString error = QString::fromUtf8(host.readAllStandardError()).trimmed();
+    QVERIFY2(error.contains(u"answers at 1000000 baud, but not with valid status packets"_s) &&
+                 !error.contains(u"does not answer"_s) && !error.contains(u'\n'),
+             qPrintable(error));
+}
+
+// A servo that stops answering mid-experiment: after 100 bus errors the device turns its
+// torque off (a LOG, and the flag on every frame); hatpicctl shows the LOG line and fails the
+// experiment with the reason instead of printing figures (issue 21).
+void TestFirmwareHost::experimentFailsWhenTheTorqueGoesOff()
+{
+    PtyProgram servo(servoSim(), {});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    QProcess ctl;
+    ctl.start(QStringLiteral(HATPICCTL_PATH),
+              {u"experiment"_s, u"spectrum"_s, u"--port"_s, host.path(), u"--duration"_s, u"10"_s});
+    QVERIFY(ctl.waitForStarted());
+    QByteArray err;
+    QTRY_VERIFY_WITH_TIMEOUT((err += ctl.readAllStandardError()).contains("keep hands off"),
+                             kTimeoutMs);
+    const auto servoPid = pid_t(servo.process().processId());
+    QCOMPARE(::kill(servoPid, SIGSTOP), 0); // the bus goes silent
+    const bool ended = ctl.waitForFinished(kTimeoutMs);
+    ::kill(servoPid, SIGCONT);
+    QVERIFY(ended);
+    err += ctl.readAllStandardError();
+    QCOMPARE(ctl.exitCode(), 3);
+    QVERIFY(ctl.readAllStandardOutput().isEmpty()); // no figures
+    QVERIFY2(
+        err.contains("hatpicctl: device: servo bus: 100 consecutive errors, torque disabled\n"),
+        err.constData());
+    QVERIFY2(err.contains("hatpicctl: The device has turned its torque off"), err.constData());
 }
 
 void TestFirmwareHost::badOptions_data()

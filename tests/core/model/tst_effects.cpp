@@ -184,6 +184,31 @@ private Q_SLOTS:
         QCOMPARE(firstViolatingField(p, 0.4), 0); // tau_limit is the device's
     }
 
+    // The device reports tau_limit as a float: 0.44f = 0.4399999976158142 < 0.44. The one rule
+    // compares as that float, so 0.44 (the same float) is within it, and the message quotes
+    // the limit as 0.44 and the value as written (issue 21).
+    void torqueLimitIsTheDevicesFloat()
+    {
+        const double device = double(0.44f);
+        QVERIFY(device < 0.44);
+        EffectParams p;
+        p.detent_strength = 0.44;
+        QVERIFY(validate(p, device).empty());
+        QCOMPARE(firstViolatingField(p, device), -1);
+        QVERIFY(validate(Vibration{0.44, 100, 1}, device, 1000).empty());
+        QCOMPARE(firstViolatingField(Vibration{0.44, 100, 1}, device, 1000), -1);
+        // What travels is within it too: the device's own check passes.
+        QCOMPARE(firstViolatingField(roundedForWire(p, device), device), -1);
+        p.detent_strength = 0.45;
+        QCOMPARE(messages(validate(p, device)),
+                 QStringList{u"detent_strength: must be ≤ tau_limit (0.44), got 0.45"_s});
+        p.detent_strength = double(std::nextafter(0.44f, 1.0f)); // the next float: beyond
+        QCOMPARE(firstViolatingField(p, device), 0);
+        QVERIFY(!atMostAsDeviceFloat(std::nan(""), 1));
+        QVERIFY(atMostAsDeviceFloat(-1e300, 0));
+        QVERIFY(!atMostAsDeviceFloat(1e300, 3e38));
+    }
+
     void vibrationValidation()
     {
         QVERIFY(validate(Vibration{0.44, 500, 10}, 0.44, 2000).empty());

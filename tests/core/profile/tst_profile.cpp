@@ -15,6 +15,7 @@
 #include <QTest>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <bit>
 #include <cmath>
@@ -252,6 +253,7 @@ private Q_SLOTS:
     void writeFailureReadOnlyDirectory();
     void readMissingFile();
     void readDirectory();
+    void readPipeRefused();
     void readSizeLimit();
     void readEndlessFileStopsAtLimit();
     void presetsLoadAndValidate();
@@ -287,7 +289,16 @@ void TestProfile::rejects_data()
         << QByteArray() << QStringList{u"not valid JSON: illegal value at byte offset 0"_s};
     QTest::newRow("not JSON: number too large")
         << QByteArray("{\"version\": 1e999}")
-        << QStringList{u"not valid JSON: illegal number at byte offset 17"_s};
+        << QStringList{u"not valid JSON: illegal number at byte offset 17 (1e999 is beyond the "
+                       u"largest double, about 1.8e308)"_s};
+    QTest::newRow("not JSON: number too small")
+        << QByteArray("{\"version\": -1e-999}")
+        << QStringList{u"not valid JSON: illegal number at byte offset 19 (-1e-999 is too close "
+                       u"to 0 for a double)"_s};
+    QTest::newRow("not JSON: a sign alone")
+        << QByteArray("{\"version\": -}")
+        << QStringList{u"not valid JSON: illegal number at byte offset 13 (\"-\" is not a number "
+                       u"as JSON writes them)"_s};
     QTest::newRow("not an object: array")
         << QByteArray("[1, 2]")
         << QStringList{u"not a profile: the top level must be a JSON object, got an array"_s};
@@ -364,8 +375,9 @@ void TestProfile::rejects_data()
         << withDevice(u"M_adm"_s, QJsonObject{})
         << QStringList{u"device.M_adm: must be a number, got an object"_s};
     QTest::newRow("device value a long string is shortened")
-        << withDevice(u"M_adm"_s, QString(50, u'7'))
-        << QStringList{u"device.M_adm: must be a number, got \""_s + QString(40, u'7') + u"…\""_s};
+        << withDevice(u"M_adm"_s, QString(100, u'7'))
+        << QStringList{u"device.M_adm: must be a number, got \""_s + QString(64, u'7') +
+                       u"… (100 bytes)\""_s};
 
     // device: every range rule of model.md § 1.
     QTest::newRow("D_adm below 1e-6")
@@ -919,8 +931,20 @@ void TestProfile::readDirectory()
     QTemporaryDir dir;
     const auto result = hatpic::readProfile(dir.path());
     QVERIFY(!result.ok());
-    QCOMPARE(result.errors, QStringList{u"cannot open profile \""_s + dir.path() +
-                                        u"\": file to open is a directory"_s});
+    QCOMPARE(result.errors,
+             QStringList{u"profile \""_s + dir.path() + u"\" is a folder, not a file"_s});
+}
+
+// A pipe would block the open until a writer comes: it is refused before (issue 21).
+void TestProfile::readPipeRefused()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(u"fifo"_s);
+    QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+    const auto result = hatpic::readProfile(path);
+    QCOMPARE(result.errors, QStringList{u"profile \""_s + path +
+                                        u"\" is not a regular file (a device or a pipe); "
+                                        u"refused"_s});
 }
 
 void TestProfile::readSizeLimit()
@@ -953,15 +977,15 @@ void TestProfile::readSizeLimit()
                                          u"1048577 bytes; refused"_s});
 }
 
-// /dev/zero never ends and reports size 0: reading must stop just past the limit.
+// /dev/zero never ends and reports size 0: it is not read at all.
 void TestProfile::readEndlessFileStopsAtLimit()
 {
     if (!QFileInfo::exists(u"/dev/zero"_s))
         QSKIP("no /dev/zero");
     const auto result = hatpic::readProfile(u"/dev/zero"_s);
     QVERIFY(!result.ok());
-    QCOMPARE(result.errors, QStringList{u"profile \"/dev/zero\" is larger than 1 MiB (1048576 "
-                                        u"bytes), got more than that; refused"_s});
+    QCOMPARE(result.errors, QStringList{u"profile \"/dev/zero\" is not a regular file (a device "
+                                        u"or a pipe); refused"_s});
 }
 
 void TestProfile::presetsLoadAndValidate()

@@ -18,6 +18,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <cmath>
 #include <numbers>
 
 using namespace hatpic;
@@ -72,6 +73,7 @@ private Q_SLOTS:
     void warnings();
     void anglesFollowTheDegreesSwitch();
     void vibrationTestChecksItsFields();
+    void torqueLimitIsTheDevicesFloat();
     void sectionDoesNotWidenTheEditor();
 
 private:
@@ -307,6 +309,23 @@ void TestEffectsEditor::vibrationTestChecksItsFields()
     fx->vibrationFields()[0]->spinBox()->setValue(0.07);
     ParameterEditor next;
     QCOMPARE(next.effectsSection()->vibration().amplitude, 0.07);
+}
+
+// The editor compares with tau_limit by the one rule (issue 21): as the device's float32, so
+// 0.44 is within a limit of 0.44f = 0.4399999976158142, and the next float above is not.
+void TestEffectsEditor::torqueLimitIsTheDevicesFloat()
+{
+    ParameterEditor editor;
+    connectWithEffects(editor);
+    editor.setTauLimit(double(0.44f));
+    spin(editor, u"detent_strength"_s)->setValue(0.44);
+    QVERIFY2(editor.isValid(), qPrintable(editor.problems().join(u'\n')));
+    EffectsSection *fx = editor.effectsSection();
+    fx->setVibration({0.44, 50, 1});
+    QVERIFY2(fx->vibrationProblems().isEmpty(), qPrintable(fx->vibrationProblems().join(u'\n')));
+    QVERIFY(fx->vibrateButton()->isEnabled());
+    fx->setVibration({double(std::nextafter(0.44f, 1.0f)), 50, 1});
+    QVERIFY(!fx->vibrateButton()->isEnabled());
 }
 
 void TestEffectsEditor::sectionDoesNotWidenTheEditor()
