@@ -46,6 +46,9 @@ public:
     void setHostParams(const HostParams &host);   //!< reference model settings
     void resetReference();                        //!< p_ref := 0
     void setSimulatedHand(const HandInput &hand); //!< only for the simulated device
+    //! The simulated hand last asked for: at connectDevice() (its options' sim.hand), then by
+    //! setSimulatedHand(). Meaningful only while the device is the in-process simulator.
+    HandInput simulatedHand() const { return m_hand; }
 
     //! Records to `csvPath` (+ NAME.json); `source` names the program in the metadata.
     void startRecording(const QString &csvPath,
@@ -102,6 +105,7 @@ private:
     bool m_hasEffects = false;
     LinkStats m_stats;
     RecordingStatus m_recording;
+    HandInput m_hand;
     // Shared with the session thread: only these atomics are touched from both threads.
     std::atomic<int> m_pendingBatches{0};
     std::atomic<int> m_pendingStats{0};
