@@ -96,7 +96,7 @@ ExperimentPlots::ExperimentPlots(QWidget *parent) : QTabWidget(parent)
         logAxis(rect->axis(QCPAxis::atBottom));
         rect->setRangeZoomAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
-        rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(4);
+        rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3); // short plots: few numbers
     }
     phase->axis(QCPAxis::atBottom)->setLabel(tr("frequency [Hz]"));
     // Titles level in the top right corner, where the curves fall away from: written along

@@ -417,6 +417,7 @@ void ExperimentsPanel::updateButtons()
     m_cancel->setEnabled(busy);
     m_kind->setEnabled(!busy);
     m_defaults->setEnabled(!busy);
+    m_progress->setVisible(busy); // only while it means something: a row more for the fields
     m_csv->setEnabled(m_result.has_value());
     m_image->setEnabled(m_result.has_value() || !busy);
 }
