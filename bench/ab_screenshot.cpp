@@ -79,8 +79,7 @@ int main(int argc, char *argv[])
         editor->setParams(b, editor->hostParams(), QStringLiteral("B"));
         profiles->abToggleAction()->trigger();
         editor->pushAction()->trigger();
-        part<QDockWidget>(&window, "abDock")->show();
-        part<QDockWidget>(&window, "abDock")->raise();
+        part<QDockWidget>(&window, "abDock")->toggleViewAction()->trigger(); // View → A/B
     });
     QTimer::singleShot(5000, &window, [&] {
         if (!save(&window, overlay))

@@ -28,8 +28,8 @@ int main(int argc, char *argv[])
                 window.addDockWidget(Qt::BottomDockWidgetArea, xy);
                 window.splitDockWidget(xy, breakdown, Qt::Horizontal);
             }
-            xy->show();
-            breakdown->show();
+            breakdown->toggleViewAction()->trigger(); // as the View menu opens them
+            xy->toggleViewAction()->trigger();
             QTimer::singleShot(9000, &window, [&window] {
                 window.findChild<PlotFeed *>(QStringLiteral("plotFeed"))->togglePause();
                 auto *plots = window.findChild<PlotPanel *>(QStringLiteral("plotPanel"));

@@ -23,6 +23,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 std::atomic<bool> g_stop{false}; // SIGINT / SIGTERM / SIGHUP: cancel, τ_ext back to 0
@@ -100,7 +102,8 @@ public:
     {
         return QStringLiteral(
                    "Applies tau_ext through the feedback stream and measures how the knob\n"
-                   "responds (hands off the knob): 'step' steps tau_ext and fits omega_n and\n"
+                   "responds (hands off the knob; with --port sim the simulated hand is idle\n"
+                   "for the run): 'step' steps tau_ext and fits omega_n and\n"
                    "zeta; 'bode' applies stepped sines (--frequencies) and prints theta/tau_ext\n"
                    "in dB and degrees with the -3 dB bandwidth; 'spectrum' records theta and\n"
                    "tau at rest and prints their strongest lines (Hann window, dB). The model's\n"
@@ -227,7 +230,10 @@ protected:
             return ExitBadUsage;
         }
         printNote(u"Running the " + experimentKindName(m_kind) + u" experiment for " +
-                  QString::number(plan.totalDuration(), 'f', 1) + u" s; keep hands off the knob.");
+                  QString::number(plan.totalDuration(), 'f', 1) + u" s; " +
+                  (experiment.hand() == RunHand::SimulatedIdle
+                       ? u"the simulated hand is idle meanwhile."_s
+                       : u"keep hands off the knob."_s));
         int code = ExitSuccess;
         {
             const CancelOnInterrupt interrupts;

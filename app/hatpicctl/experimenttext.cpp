@@ -98,6 +98,7 @@ QString experimentReport(const ExperimentResult &r)
         out += peakLine(QStringLiteral("tau"), r.tauSpectrum, QStringLiteral("N·m"));
         break;
     }
+    out += u"hand: " + runHandText(r.hand) + u'\n'; // what else held the knob
     return out;
 }
 

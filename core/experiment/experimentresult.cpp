@@ -147,6 +147,17 @@ void spectraOf(const QList<Sample> &samples, analysis::Spectrum &theta, analysis
     tau = analysis::amplitudeSpectrum(ta, rate);
 }
 
+QString runHandText(RunHand hand)
+{
+    switch (hand) {
+    case RunHand::SimulatedIdle:
+        return QStringLiteral("idle (simulated)");
+    case RunHand::User:
+        break;
+    }
+    return QStringLiteral("the user's (real device)");
+}
+
 ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sample> &samples,
                                    const ClockMap &clock, const DeviceParams &params,
                                    double tauLimit)

@@ -40,6 +40,15 @@ private:
     std::vector<std::pair<double, double>> m_points; //!< (plan time, offset), ascending
 };
 
+//! What held the knob besides the experiment's τ_ext while it ran: the figures say it, since a
+//! hand that pushes (the simulator's sine) spoils them.
+enum class RunHand {
+    SimulatedIdle, //!< the in-process simulator: its hand was idle for the run
+    User,          //!< a device on a port: the user's hand (or hatpic-sim's --hand), untouched
+};
+//! "idle (simulated)" / "the user's (real device)": the one wording of the tuner and hatpicctl.
+QString runHandText(RunHand hand);
+
 struct ExperimentResult
 {
     enum class Outcome { Completed, Cancelled, Failed };
@@ -54,6 +63,8 @@ struct ExperimentResult
     QList<Sample> samples;  //!< everything received during the run (device time)
     ClockMap clock;         //!< device time of plan time (estimated)
     double sampleRate = 0;  //!< measured telemetry rate [Hz]
+    //! What held the knob besides τ_ext.
+    RunHand hand = RunHand::User;
 
     // Step
     double stepAt = 0;                    //!< device time of the step (τ_ext column) [s]

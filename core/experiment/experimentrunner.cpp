@@ -19,6 +19,9 @@ ExperimentRunner::ExperimentRunner(DeviceClient &client, QObject *parent)
     m_drainTimer.setInterval(kDrainTimeoutMs);
     connect(&m_drainTimer, &QTimer::timeout, this,
             [this] { end(ExperimentResult::Outcome::Completed, {}); });
+    m_releaseTimer.setSingleShot(true);
+    m_releaseTimer.setInterval(kReleaseMs);
+    connect(&m_releaseTimer, &QTimer::timeout, this, &ExperimentRunner::beginPlan);
     connect(&client, &DeviceClient::samplesReady, this, &ExperimentRunner::onSamples);
     connect(&client, &DeviceClient::deviceLog, this, &ExperimentRunner::onDeviceLog);
     connect(&client, &DeviceClient::stateChanged, this, [this](SessionState state) {
@@ -30,8 +33,15 @@ ExperimentRunner::ExperimentRunner(DeviceClient &client, QObject *parent)
 
 ExperimentRunner::~ExperimentRunner()
 {
-    if (running() && m_client)
+    if (running() && m_client) {
         m_client->setFeedback(0);
+        restoreHand();
+    }
+}
+
+RunHand ExperimentRunner::handFor(const DeviceClient &client)
+{
+    return client.deviceInfo().simulated ? RunHand::SimulatedIdle : RunHand::User;
 }
 
 QString ExperimentRunner::refusal(const DeviceClient &client)
@@ -70,11 +80,33 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
     m_deviceLog.clear();
     m_deviceClock = ClockMap();
     m_lastProgress = -1;
+    m_hand = handFor(*m_client);
+    m_handBefore = m_client->simulatedHand();
+    m_client->setFeedback(m_plan.tauExt(0));
+    if (m_hand == RunHand::SimulatedIdle && m_handBefore.kind != HandInput::Kind::Idle) {
+        // The hand lets go; the knob comes to rest at the plan's first level, then the plan.
+        m_client->setSimulatedHand(HandInput{});
+        m_phase = Phase::Releasing;
+        m_releaseTimer.start();
+        return {};
+    }
+    beginPlan();
+    return {};
+}
+
+void ExperimentRunner::beginPlan()
+{
     m_phase = Phase::Running;
     m_clock.start();
-    m_client->setFeedback(m_plan.tauExt(0));
+    if (m_client)
+        m_client->setFeedback(m_plan.tauExt(0));
     m_timer.start();
-    return {};
+}
+
+void ExperimentRunner::restoreHand()
+{
+    if (m_client && m_hand == RunHand::SimulatedIdle && m_client->simulatedHand() != m_handBefore)
+        m_client->setSimulatedHand(m_handBefore);
 }
 
 void ExperimentRunner::cancel()
@@ -121,7 +153,7 @@ void ExperimentRunner::onDeviceLog(const QString &line)
 
 void ExperimentRunner::onSamples(const QList<Sample> &batch)
 {
-    if (!running() || batch.isEmpty())
+    if (!running() || m_phase == Phase::Releasing || batch.isEmpty())
         return;
     for (const Sample &s : batch) {
         if (s.flags & v2::kFlagTorqueOff) {
@@ -150,8 +182,10 @@ void ExperimentRunner::end(ExperimentResult::Outcome outcome, const QString &pro
         return;
     m_timer.stop();
     m_drainTimer.stop();
+    m_releaseTimer.stop();
     if (m_client)
         m_client->setFeedback(0);
+    restoreHand();
     m_phase = Phase::Idle;
     ExperimentResult result;
     if (outcome == ExperimentResult::Outcome::Completed) {
@@ -165,6 +199,7 @@ void ExperimentRunner::end(ExperimentResult::Outcome outcome, const QString &pro
         result.problem = problem;
     }
     result.outcome = outcome;
+    result.hand = m_hand;
     m_samples.clear();
     Q_EMIT finished(result);
 }

@@ -5,6 +5,10 @@
 // A device fault fails the run (docs/experiments.md § Faults): a sample whose telemetry says
 // the torque is off (v2::kFlagTorqueOff) ends it at once, quoting what the device said in LOG
 // frames during the run.
+// On the in-process simulator the simulated hand is the only other torque on the knob: it goes
+// idle for the run (the knob given kReleaseMs to come to rest first when it was pushing) and
+// is given back, as it was, whenever the run ends. A device on a port has a person's hand (or
+// hatpic-sim's --hand), which no program can lift: the result says which it was (RunHand).
 //
 // Lives on the client's thread; every method returns at once.
 #pragma once
@@ -30,12 +34,16 @@ public:
     static constexpr qsizetype kMaxSamples = 480'000;
     //! LOG lines kept per run for the failure's reason; later ones are not quoted.
     static constexpr qsizetype kMaxLogLines = 4;
+    //! Time for the knob to come to rest once the simulated hand let go, before the plan [ms].
+    static constexpr int kReleaseMs = 1000;
 
     explicit ExperimentRunner(DeviceClient &client, QObject *parent = nullptr);
     ~ExperimentRunner() override; //!< a running experiment is cancelled: τ_ext = 0
 
     //! Why no experiment can start on the client's device now; empty when one can.
     static QString refusal(const DeviceClient &client);
+    //! What will hold the knob besides τ_ext during a run on `client`'s device.
+    static RunHand handFor(const DeviceClient &client);
 
     //! Starts `plan`; returns why not (refusal(), the plan's check(), already running), or
     //! empty when it started.
@@ -43,23 +51,29 @@ public:
     //! Stops a running experiment; finished() reports it Cancelled.
     void cancel();
     bool running() const { return m_phase != Phase::Idle; }
+    //! While running: what holds the knob besides τ_ext.
+    RunHand hand() const { return m_hand; }
 
 Q_SIGNALS:
     void progress(double fraction); //!< 0 … 1 of the plan
     void finished(const hatpic::ExperimentResult &result);
 
 private:
-    enum class Phase { Idle, Running, Draining };
+    enum class Phase { Idle, Releasing, Running, Draining };
 
+    void beginPlan();
     void tick();
     void onSamples(const QList<Sample> &batch);
     void onDeviceLog(const QString &line);
     void end(ExperimentResult::Outcome outcome, const QString &problem);
+    //! Gives the simulated hand back, as it was before the run.
+    void restoreHand();
     double elapsed() const; //!< plan time [s]
 
     QPointer<DeviceClient> m_client; //!< null once the client is gone
     QTimer m_timer;
     QTimer m_drainTimer;
+    QTimer m_releaseTimer;
     QElapsedTimer m_clock;
     Phase m_phase = Phase::Idle;
     ExperimentPlan m_plan;
@@ -69,6 +83,8 @@ private:
     QStringList m_deviceLog; //!< LOG lines of this run, at most kMaxLogLines
     ClockMap m_deviceClock;  //!< plan time → device time, from the batches' arrivals
     int m_lastProgress = -1; //!< percent last reported
+    RunHand m_hand = RunHand::User;
+    HandInput m_handBefore; //!< the simulated hand to give back (RunHand::SimulatedIdle)
 };
 
 } // namespace hatpic

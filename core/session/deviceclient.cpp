@@ -112,6 +112,7 @@ void DeviceClient::connectDevice(const ConnectOptions &options)
 {
     m_hasParams = false;
     m_hasEffects = false;
+    m_hand = options.sim.hand;
     QMetaObject::invokeMethod(m_session, [s = m_session, options] { s->connectDevice(options); });
 }
 
@@ -214,6 +215,7 @@ void DeviceClient::resetReference()
 
 void DeviceClient::setSimulatedHand(const HandInput &hand)
 {
+    m_hand = hand;
     QMetaObject::invokeMethod(m_session, [s = m_session, hand] { s->setSimulatedHand(hand); });
 }
 

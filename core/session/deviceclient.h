@@ -50,6 +50,9 @@ public:
     void setHostParams(const HostParams &host);   //!< reference model settings
     void resetReference();                        //!< p_ref := 0
     void setSimulatedHand(const HandInput &hand); //!< only for the simulated device
+    //! The simulated hand last asked for: at connectDevice() (its options' sim.hand), then by
+    //! setSimulatedHand(). Meaningful only while the device is the in-process simulator.
+    HandInput simulatedHand() const { return m_hand; }
 
     //! `listener` gets every sample on the session thread the moment it is decoded, before
     //! any batch (samplelisteners.h): the robot path. Callable from any thread.
@@ -112,6 +115,7 @@ private:
     bool m_hasEffects = false;
     LinkStats m_stats;
     RecordingStatus m_recording;
+    HandInput m_hand;
     // Shared with the session thread: only these atomics are touched from both threads.
     std::atomic<int> m_pendingBatches{0};
     std::atomic<int> m_pendingStats{0};

@@ -193,6 +193,7 @@ void TestHatpicCtlExperiment::stepOnTheSimulator()
     const Outcome o = hatpicctl({u"step"_s, u"--port"_s, sim.path(), u"--csv"_s, csv});
     QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
     QVERIFY(o.err.contains(u"keep hands off the knob"_s));
+    QVERIFY(o.out.endsWith(u"hand: the user's (real device)\n"_s)); // a port: nothing lifts it
     const auto [omegaN, omegaModel] = figures(o.out, u"omega_n [rad/s]"_s);
     const auto [zeta, zetaModel] = figures(o.out, u"zeta"_s);
     QCOMPARE(omegaModel, 14.14);
@@ -213,6 +214,9 @@ void TestHatpicCtlExperiment::bodeOnTheSimulator()
                                  u"--cycles"_s, u"2"_s, u"--csv"_s, csv});
     QVERIFY2(o.exitCode == 0, qPrintable(o.text()));
     QVERIFY(o.out.contains(u"bandwidth [Hz]"_s));
+    // The in-process simulator's hand: idle for the run, and said so.
+    QVERIFY2(o.err.contains(u"the simulated hand is idle meanwhile"_s), qPrintable(o.text()));
+    QVERIFY(o.out.endsWith(u"hand: idle (simulated)\n"_s));
     const QStringList lines = csvLines(csv);
     QCOMPARE(lines.size(), 4);
     QCOMPARE(lines.first(), u"frequency_hz,magnitude,phase,model_magnitude,model_phase"_s);

@@ -9,11 +9,14 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QStyle>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -50,6 +53,18 @@ constexpr TopicField kTopicFields[] = {
      u"bridge_topic_wrench_unstamped", &bridge::Topics::wrenchUnstamped},
 };
 static_assert(std::size(kTopicFields) == 7);
+
+// What the bridge needs to do its work, a line each (issue 21: the panel once said nothing of
+// it). A new way to get a robot's wrench (a simulated robot) is one more line.
+constexpr const char *kNeeds[] = {
+    QT_TRANSLATE_NOOP("hatpic::BridgePanel",
+                      "ROS 2 on the robot's network, in the domain below (the bridge speaks DDS "
+                      "itself: no ROS installation needed here), or a ROS 1 master "
+                      "(ROS_MASTER_URI)."),
+    QT_TRANSLATE_NOOP("hatpic::BridgePanel",
+                      "A robot, or any ROS node, publishing its wrench on the Wrench topic: "
+                      "the knob's force."),
+};
 
 QDoubleSpinBox *spin(QWidget *parent, const QString &name, double low, double high, int decimals,
                      const QString &suffix)
@@ -91,16 +106,43 @@ bool BridgePanel::isBuilt()
 
 BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent), m_client(client)
 {
-    auto *layout = new QVBoxLayout(this);
-    m_status = new QLabel(this);
+    // The panel scrolls its own content: its many fields never set the window's minimum size.
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *content = new QWidget(scroll);
+    auto *layout = new QVBoxLayout(content);
+    m_grid = new QGridLayout;
+    layout->addLayout(m_grid);
+    layout->addStretch(1);
+    scroll->setWidget(content);
+    auto *outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(scroll);
+
+    auto *ros = new QGroupBox(tr("ROS"), content);
+    ros->setObjectName(u"bridge_section_ros"_s);
+    auto *rosLayout = new QVBoxLayout(ros);
+    m_needs = new QLabel(ros);
+    m_needs->setObjectName(u"bridge_needs"_s);
+    m_needs->setWordWrap(true);
+    QString needs = u"<b>"_s + tr("Needs") + u"</b><ul style=\"margin-left: -20px\">"_s;
+    for (const char *line : kNeeds)
+        needs += u"<li>"_s + tr(line).toHtmlEscaped() + u"</li>"_s;
+    m_needs->setText(needs + u"</ul>"_s);
+    m_needs->setToolTip(tr("docs/ros.md has the topics, and how to publish a test wrench "
+                           "from a ROS 2 machine"));
+    rosLayout->addWidget(m_needs);
+    m_status = new QLabel(ros);
     m_status->setObjectName(u"bridge_status"_s);
     m_status->setWordWrap(true);
-    layout->addWidget(m_status);
+    m_sections.append(ros);
     if (!isBuilt()) {
+        rosLayout->addWidget(m_status);
         setStatus(tr("The robot bridge is not built into this tuner (configure with "
                      "-DHATPIC_BUILD_BRIDGE=ON; it needs Cyclone DDS). See docs/ros.md."),
                   true);
-        layout->addStretch();
+        arrangeSections();
         return;
     }
     const QByteArray domain = qgetenv("ROS_DOMAIN_ID");
@@ -117,6 +159,7 @@ BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent
     connect(&m_refresh, &QTimer::timeout, this, &BridgePanel::refresh);
     setStatus(tr("Off"), false);
     refresh();
+    arrangeSections();
 }
 
 BridgePanel::~BridgePanel()
@@ -124,15 +167,25 @@ BridgePanel::~BridgePanel()
     setBridgeEnabled(false);
 }
 
+QString BridgePanel::needsText()
+{
+    QStringList lines;
+    for (const char *line : kNeeds)
+        lines.append(tr(line));
+    return lines.join(u'\n');
+}
+
 void BridgePanel::buildForm()
 {
-    auto *layout = static_cast<QVBoxLayout *>(this->layout());
+    QWidget *ros = m_sections.first();
+    auto *rosLayout = static_cast<QVBoxLayout *>(ros->layout());
+    m_enable = new QCheckBox(tr("Publish on ROS and feed the wrench back"), ros);
+    m_enable->setObjectName(u"bridge_enable"_s);
+    rosLayout->addWidget(m_enable);
+    rosLayout->addWidget(m_status);
     auto *top = new QFormLayout;
     m_top = top;
-    m_enable = new QCheckBox(tr("Publish on ROS and feed the wrench back"), this);
-    m_enable->setObjectName(u"bridge_enable"_s);
-    top->addRow(m_enable);
-    m_ros = new QComboBox(this);
+    m_ros = new QComboBox(ros);
     m_ros->setObjectName(u"bridge_ros"_s);
     m_ros->addItem(tr("ROS 2"), 2);
     m_ros->addItem(tr("ROS 1"), 1);
@@ -146,33 +199,26 @@ void BridgePanel::buildForm()
     }
 #endif
     top->addRow(tr("ROS"), m_ros);
-    m_master = new QLabel(this);
+    m_master = new QLabel(ros);
     m_master->setObjectName(u"bridge_master"_s);
     m_master->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_master->setToolTip(tr("The ROS 1 master (ROS_MASTER_URI), read when the tuner started"));
     top->addRow(tr("Master"), m_master);
-    m_domain = new QSpinBox(this);
+    m_domain = new QSpinBox(ros);
     m_domain->setObjectName(u"bridge_domain"_s);
     m_domain->setRange(0, bridge::kMaxDomainId);
     m_domain->setKeyboardTracking(false);
     m_domain->setToolTip(tr("DDS domain (ROS_DOMAIN_ID); not saved in profiles"));
     top->addRow(tr("Domain"), m_domain);
-    m_rate = spin(this, u"bridge_rate"_s, 0.01, bridge::kMaxPublishRateHz, 2, u" Hz"_s);
+    m_rate = spin(ros, u"bridge_rate"_s, 0.01, bridge::kMaxPublishRateHz, 2, u" Hz"_s);
     m_rate->setToolTip(tr("Messages per topic per second, at most"));
     top->addRow(tr("Rate"), m_rate);
-    layout->addLayout(top);
+    rosLayout->addLayout(top);
+    rosLayout->addStretch(1);
 
-    auto *topics = new QGroupBox(tr("Topics (empty: not used)"), this);
-    auto *topicForm = new QFormLayout(topics);
-    for (std::size_t i = 0; i < std::size(kTopicFields); ++i) {
-        m_topics[i] = new QLineEdit(topics);
-        m_topics[i]->setObjectName(QString::fromUtf16(kTopicFields[i].name));
-        topicForm->addRow(tr(kTopicFields[i].label), m_topics[i]);
-        connect(m_topics[i], &QLineEdit::editingFinished, this, [this] { edited(true); });
-    }
-    layout->addWidget(topics);
-
-    auto *feedback = new QGroupBox(tr("Wrench → τ_ext (live)"), this);
+    QWidget *content = ros->parentWidget();
+    auto *feedback = new QGroupBox(tr("Wrench → τ_ext (live)"), content);
+    feedback->setObjectName(u"bridge_section_feedback"_s);
     auto *feedbackForm = new QFormLayout(feedback);
     m_component = new QComboBox(feedback);
     m_component->setObjectName(u"bridge_component"_s);
@@ -201,12 +247,22 @@ void BridgePanel::buildForm()
     m_counts->setObjectName(u"bridge_counts"_s);
     m_counts->setWordWrap(true);
     feedbackForm->addRow(tr("Wrenches"), m_counts);
-    layout->addWidget(feedback);
-    m_published = new QLabel(this);
+    m_sections.append(feedback);
+
+    auto *topics = new QGroupBox(tr("Topics (empty: not used)"), content);
+    topics->setObjectName(u"bridge_section_topics"_s);
+    auto *topicForm = new QFormLayout(topics);
+    for (std::size_t i = 0; i < std::size(kTopicFields); ++i) {
+        m_topics[i] = new QLineEdit(topics);
+        m_topics[i]->setObjectName(QString::fromUtf16(kTopicFields[i].name));
+        topicForm->addRow(tr(kTopicFields[i].label), m_topics[i]);
+        connect(m_topics[i], &QLineEdit::editingFinished, this, [this] { edited(true); });
+    }
+    m_published = new QLabel(topics);
     m_published->setObjectName(u"bridge_published"_s);
     m_published->setWordWrap(true);
-    layout->addWidget(m_published);
-    layout->addStretch();
+    topicForm->addRow(m_published);
+    m_sections.append(topics);
 
     connect(m_enable, &QCheckBox::toggled, this, &BridgePanel::setBridgeEnabled);
     connect(m_ros, &QComboBox::currentIndexChanged, this, [this] {
@@ -218,6 +274,37 @@ void BridgePanel::buildForm()
     for (QDoubleSpinBox *box : {m_gain, m_limit, m_stale})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { edited(false); });
     connect(m_component, &QComboBox::currentIndexChanged, this, [this] { edited(false); });
+}
+
+void BridgePanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    arrangeSections();
+}
+
+void BridgePanel::arrangeSections()
+{
+    // The panel's own width (the scroll area's), not its content's: the content is as wide as
+    // its columns need, and would never let fewer columns be chosen.
+    const int spacing = m_grid->horizontalSpacing() > 0 ? m_grid->horizontalSpacing() : 6;
+    const int room = width() - 2 * spacing - style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    int columns = static_cast<int>(m_sections.size());
+    for (; columns > 1; --columns) {
+        int needed = 0;
+        for (int i = 0; i < columns; ++i)
+            needed += m_sections[i]->sizeHint().width() + spacing;
+        if (needed <= room)
+            break;
+    }
+    if (columns == m_columns)
+        return;
+    m_columns = columns;
+    for (QWidget *section : std::as_const(m_sections))
+        m_grid->removeWidget(section);
+    for (int i = 0; i < m_sections.size(); ++i)
+        m_grid->addWidget(m_sections[i], i / columns, i % columns, Qt::AlignTop);
+    for (int c = 0; c < m_sections.size(); ++c)
+        m_grid->setColumnStretch(c, c < columns ? 1 : 0);
 }
 
 void BridgePanel::showSettings()

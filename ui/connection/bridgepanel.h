@@ -1,9 +1,15 @@
 // The Bridge panel (ros.md § In the tuner): the robot bridge inside the tuner, on the window's
 // DeviceClient. Enable/disable; ROS 2 (with its domain) or ROS 1 (with its master), topics and
 // rate (a change of ROS, domain or topic reopens the endpoints while running); gain, limit,
-// component and staleness applied at once, so the feel can be tuned while the robot runs; the last
-// wrench, the τ_ext it produced and the rejected counts. Without HATPIC_BUILD_BRIDGE the panel only
-// says that the bridge is not built.
+// component and staleness applied at once, so the feel can be tuned while the robot runs; the
+// last wrench, the τ_ext it produced and the rejected counts. Without HATPIC_BUILD_BRIDGE the
+// panel only says that the bridge is not built.
+//
+// It first says what the bridge needs (a line each in kNeeds: add one when a new way to get a
+// wrench exists). Its sections — ROS (needs, enable, status, ROS version, domain or master,
+// rate), the wrench's feedback, the topics — stand side by side as far as the panel's width
+// allows, else under each other, and scroll: a new section (a robot's status) is one more
+// entry in m_sections. It scrolls on its own, so it never sets the dock's size.
 #pragma once
 
 #include "model/params.h"
@@ -17,6 +23,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
 class QLabel;
+class QGridLayout;
 class QLineEdit;
 class QSpinBox;
 
@@ -44,6 +51,10 @@ public:
     bool isRunning() const;
     //! The bridge's own readouts and counters, as text (for the status line and tests).
     QString statusText() const;
+    //! What the bridge needs, as the panel says it (plain text).
+    static QString needsText();
+    //! Sections side by side now (1 … the number of sections).
+    int columns() const { return m_columns; }
 
 public Q_SLOTS:
     //! New settings (a profile was opened); the ROS version and domain stay. While running they
@@ -58,8 +69,13 @@ Q_SIGNALS:
     //! The user changed a setting (valid as a whole): for the profile.
     void settingsEdited(const hatpic::bridge::BridgeSettings &settings);
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
     void buildForm();
+    //! As many sections side by side as the width holds at their preferred widths.
+    void arrangeSections();
     void showSettings();
     //! Takes an edit: checks the whole, applies it (live, or by reopening), tells the profile.
     void edited(bool reopen);
@@ -74,6 +90,10 @@ private:
     bridge::BridgeSettings m_settings;
     QTimer m_refresh;
 
+    QGridLayout *m_grid = nullptr; //!< the sections, in m_columns columns
+    QList<QWidget *> m_sections;
+    int m_columns = 0;
+    QLabel *m_needs = nullptr;
     QLabel *m_status = nullptr;
     QCheckBox *m_enable = nullptr;
     QFormLayout *m_top = nullptr;

@@ -67,9 +67,12 @@ DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
     m_peakBar = new QProgressBar(this);
     m_peakBar->setObjectName(u"figure_peak_bar"_s);
     m_peakBar->setRange(0, 100);
-    m_peakBar->setTextVisible(true);
+    // The percentage beside the bar, not in it: drawn in the bar it straddled the chunk's edge,
+    // half in one colour, half in another.
+    m_peakBar->setTextVisible(false);
     m_peakBar->setMaximumHeight(14);
     m_peakBar->setToolTip(m_peak->toolTip());
+    m_peakPercent = valueLabel(this, u"figure_peak_percent"_s, m_peak->toolTip());
 
     // Two figures a row: the box sits next to Push, above the scrolling fields, and must stay
     // in sight at 1280×720.
@@ -85,7 +88,8 @@ DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
     pair(0, 1, tr("ζ"), m_zeta);
     pair(1, 0, tr("D_adm/M_adm"), m_timeConstant, 3);
     pair(2, 0, tr("peak |τ_rec|"), m_peak, 3);
-    form->addWidget(m_peakBar, 3, 1, 1, 3);
+    form->addWidget(m_peakBar, 3, 1, 1, 2);
+    form->addWidget(m_peakPercent, 3, 3);
     form->setColumnStretch(1, 1);
     form->setColumnStretch(3, 1);
     form->setVerticalSpacing(2);
@@ -187,7 +191,7 @@ void DerivedFiguresView::refresh()
         m_timeConstant->setText(dash);
         m_peak->setText(tr("— (parameters invalid)"));
         m_peakBar->setValue(0);
-        m_peakBar->setFormat(QString());
+        m_peakPercent->clear();
         m_saturation->hide();
         m_ringing->hide();
         return;
@@ -210,7 +214,7 @@ void DerivedFiguresView::refresh()
                         .arg(num(f.peakTauRec), angle, num(f.tauLimit)));
     const double ratio = f.tauLimit > 0 ? f.peakTauRec / f.tauLimit : 0.0;
     m_peakBar->setValue(static_cast<int>(std::lround(std::clamp(ratio, 0.0, 1.0) * 100)));
-    m_peakBar->setFormat(tr("%1 % of tau_limit").arg(std::lround(ratio * 100)));
+    m_peakPercent->setText(tr("%1 % of tau_limit").arg(std::lround(ratio * 100)));
     // The bar is drawn from the palette (groove Base, chunk Highlight); a saturating peak
     // takes tau_limit's red.
     QPalette bar;

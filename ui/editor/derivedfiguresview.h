@@ -47,6 +47,7 @@ private:
     QLabel *m_timeConstant = nullptr;
     QLabel *m_peak = nullptr;
     QProgressBar *m_peakBar = nullptr;
+    QLabel *m_peakPercent = nullptr; //!< "54 % of tau_limit", beside the bar
     QLabel *m_saturation = nullptr;
     QLabel *m_ringing = nullptr;
     QLabel *m_chatter = nullptr;

@@ -109,8 +109,11 @@ SimulatorPanel::SimulatorPanel(QWidget *parent) : QWidget(parent)
     form->addRow(m_frequency1Label, m_frequency1);
     form->addRow(m_angleLabel, angleRow);
 
+    m_inputs = new QWidget(this);
+    m_inputs->setLayout(form);
+    form->setContentsMargins(0, 0, 0, 0);
     auto *layout = new QVBoxLayout(this);
-    layout->addLayout(form);
+    layout->addWidget(m_inputs);
     layout->addWidget(m_description);
     layout->addStretch(1);
 
@@ -234,9 +237,16 @@ QString SimulatorPanel::describe(const HandInput &h)
     return {};
 }
 
+void SimulatorPanel::setHeldByExperiment(bool held)
+{
+    m_held = held;
+    m_inputs->setEnabled(!held);
+    updateVisibility();
+}
+
 void SimulatorPanel::updateVisibility()
 {
-    m_status->setText(describe(hand()));
+    m_status->setText(m_held ? tr("Hand: idle for the experiment") : describe(hand()));
     m_status->setToolTip(
         tr("The simulated hand's input (View → Simulated hand): %1").arg(hand().toSpec()));
     const auto kind = static_cast<Kind>(m_kind->currentData().toInt());
@@ -282,6 +292,9 @@ void SimulatorPanel::updateVisibility()
                    .arg(HandInput::kHandDamping);
         break;
     }
+    if (m_held)
+        text = tr("Idle while the experiment runs, so that only its τ_ext moves the knob; the "
+                  "input below comes back when it ends.");
     m_description->setText(text);
 }
 

@@ -44,6 +44,12 @@ public:
     //! status bar.
     QLabel *statusLabel() const { return m_status; }
 
+    //! While an experiment runs the simulated hand is idle (ExperimentRunner lets go of it and
+    //! gives it back afterwards): the panel and the status label say so, and the input cannot
+    //! be changed until it ends.
+    void setHeldByExperiment(bool held);
+    bool isHeldByExperiment() const { return m_held; }
+
 Q_SIGNALS:
     void handChanged(const hatpic::HandInput &hand);
 
@@ -53,6 +59,8 @@ private:
 
     HandInput m_last;
     bool m_chosen = false;
+    bool m_held = false;
+    QWidget *m_inputs = nullptr; //!< the kind, its fields and Let go
     QComboBox *m_kind = nullptr;
     QLabel *m_description = nullptr;
     QLabel *m_status = nullptr;

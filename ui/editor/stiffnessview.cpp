@@ -4,6 +4,7 @@
 #include "model/staticcurve.h"
 #include "model/stiffness.h"
 
+#include "plots/axistitle.h"
 #include "plots/fadingtrail.h"
 #include "plots/palette.h"
 #include "plots/plotpanel.h"
@@ -56,11 +57,15 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     auto *margins = new QCPMarginGroup(m_plot);
     m_torqueRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
     m_stiffnessRect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
-    m_torqueRect->axis(QCPAxis::atLeft)->setLabel(tr("τ_rec [N·m]"));
-    // Few ticks: the dock may be short (1280×720), and its numbers must not overlap.
+    // Few ticks, titles in a corner and one θ axis for both: the dock may be short (1280×720),
+    // and neither its numbers nor its titles may collide (issue 21).
     for (QCPAxisRect *rect : {m_torqueRect, m_stiffnessRect})
         rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3);
-    m_stiffnessRect->axis(QCPAxis::atLeft)->setLabel(tr("K_rec [N·m/rad]"));
+    m_torqueRect->axis(QCPAxis::atBottom)->setTickLabels(false);
+    m_torqueRect->setAutoMargins(QCP::msLeft | QCP::msRight | QCP::msTop);
+    m_torqueRect->setMargins(QMargins(0, 0, 0, 6));
+    setCornerTitle(m_torqueRect, tr("τ_rec [N·m]"));
+    setCornerTitle(m_stiffnessRect, tr("K_rec [N·m/rad]"));
 
     auto graph = [this](QCPAxisRect *rect, const QPen &pen, const QString &name) {
         QCPGraph *g = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
@@ -85,8 +90,7 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     m_trail->piece(FadingTrail::kPieces - 1)->removeFromLegend();
     m_point = graph(m_torqueRect, QPen(kPointColour), tr("live (θ, measured τ_rec)"));
     m_point->setLineStyle(QCPGraph::lsNone);
-    m_point->setScatterStyle(
-        QCPScatterStyle(QCPScatterStyle::ssDisc, kPointColour, kPointColour, 9));
+    m_point->setScatterStyle(plottheme::livePointStyle(palette()));
 
     // One compact row above the plots, so it never hides the curve or the live point.
     auto *legend = m_legend = new QCPLegend;
@@ -168,6 +172,13 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     rebuild();
 }
 
+void StiffnessView::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange) // the live point's ring follows the theme
+        m_point->setScatterStyle(plottheme::livePointStyle(palette()));
+}
+
 StiffnessView::~StiffnessView() = default;
 
 void StiffnessView::followTrail(const PlotPanel *panel)
@@ -210,7 +221,7 @@ void StiffnessView::updateNames()
 {
     // With effects the torques are τ_rec + τ_fx; without, the names are as they always were.
     const bool fx = effectsShown();
-    m_torqueRect->axis(QCPAxis::atLeft)->setLabel(fx ? tr("static τ [N·m]") : tr("τ_rec [N·m]"));
+    setCornerTitle(m_torqueRect, fx ? tr("static τ [N·m]") : tr("τ_rec [N·m]"));
     if (m_replaying)
         m_point->setName(fx ? tr("playhead (θ, τ_rec + τ_fx)") : tr("at the playhead (θ, τ_rec)"));
     else
@@ -398,11 +409,10 @@ void StiffnessView::rebuild()
     m_deviceStiffness->setVisible(m_device.has_value());
 
     const QString unit = m_degrees ? tr("θ [°]") : tr("θ [rad]");
-    for (QCPAxisRect *rect : {m_torqueRect, m_stiffnessRect}) {
+    for (QCPAxisRect *rect : {m_torqueRect, m_stiffnessRect})
         rect->axis(QCPAxis::atBottom)
             ->setRange((center - half) * scale(), (center + half) * scale());
-        rect->axis(QCPAxis::atBottom)->setLabel(unit);
-    }
+    m_stiffnessRect->axis(QCPAxis::atBottom)->setLabel(unit); // the one θ axis with numbers
 
     // Symmetric torque range; ±tau_limit shows when it is within reach of the curves.
     double tauMax = 0;

@@ -97,6 +97,9 @@ public:
     const EffectMarks &editedMarks() const { return *m_editedMarks; }
     const EffectMarks &deviceMarks() const { return *m_deviceMarks; }
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     void rebuild();
     void fillCurves(const DeviceParams &params, const EffectParams &effects, QCPGraph *torque,

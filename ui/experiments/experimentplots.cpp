@@ -1,5 +1,6 @@
 #include "experimentplots.h"
 
+#include "plots/axistitle.h"
 #include "plots/palette.h"
 #include "plots/qcp.h"
 
@@ -15,14 +16,45 @@ namespace {
 
 constexpr double kDegrees = 180 / std::numbers::pi;
 
+//! A row above the plot for `legend`: it never lies over a curve (issue 21: the Bode legend
+//! once hid the measured points at 1280×720).
+void legendRow(QCustomPlot *plot, QCPLegend *legend)
+{
+    // In a row of its own with a filler beside it: an empty legend (before the first result)
+    // would otherwise narrow the whole column to its own width.
+    auto *row = new QCPLayoutGrid;
+    plot->plotLayout()->insertRow(0);
+    plot->plotLayout()->addElement(0, 0, row);
+    plot->plotLayout()->setRowStretchFactor(0, 0.001);
+    row->addElement(0, 0, legend);
+    row->addElement(0, 1, new QCPLayoutElement(plot));
+    row->setColumnStretchFactor(0, 0.001);
+    row->setColumnStretchFactor(1, 1);
+    legend->setLayer(QStringLiteral("legend"));
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    legend->setBorderPen(Qt::NoPen);
+    legend->setBrush(Qt::NoBrush);
+    legend->setMargins(QMargins(4, 2, 4, 0));
+    plot->legend = legend;
+}
+
 QCustomPlot *makePlot(QWidget *parent, const QString &name)
 {
     auto *plot = new QCustomPlot(parent);
     plot->setObjectName(name);
-    plot->setMinimumSize(240, 200); // the dock must fit beside the others at 1400 px
-    plot->legend->setVisible(true);
+    plot->setMinimumSize(200, 120); // the dock must fit under the plots at 1280×720
     plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     return plot;
+}
+
+//! The default layout's one axis rect, with the legend in a row above it.
+void withLegendAbove(QCustomPlot *plot)
+{
+    QCPLegend *legend = plot->legend;
+    plot->axisRect()->insetLayout()->take(legend);
+    plot->axisRect()->insetLayout()->simplify();
+    legendRow(plot, legend);
+    legend->setVisible(true);
 }
 
 QCPGraph *addGraph(QCustomPlot *plot, QCPAxis *x, QCPAxis *y, const QString &name,
@@ -47,30 +79,36 @@ void logAxis(QCPAxis *axis)
 ExperimentPlots::ExperimentPlots(QWidget *parent) : QTabWidget(parent)
 {
     m_step = makePlot(this, QStringLiteral("stepPlot"));
+    withLegendAbove(m_step);
     m_step->xAxis->setLabel(tr("time since the step [s]"));
-    m_step->yAxis->setLabel(tr("θ − θ before the step [rad]"));
+    m_step->yAxis->setLabel(tr("Δθ [rad]"));
     addTab(m_step, tr("Step"));
 
+    // Two rects on one frequency axis, labelled once, so that nothing collides in a short dock.
     m_bode = makePlot(this, QStringLiteral("bodePlot"));
     m_bode->plotLayout()->clear();
     auto *magnitude = new QCPAxisRect(m_bode);
     auto *phase = new QCPAxisRect(m_bode);
     m_bode->plotLayout()->addElement(0, 0, magnitude);
     m_bode->plotLayout()->addElement(1, 0, phase);
+    auto *margins = new QCPMarginGroup(m_bode);
     for (QCPAxisRect *rect : {magnitude, phase}) {
         logAxis(rect->axis(QCPAxis::atBottom));
-        rect->axis(QCPAxis::atBottom)->setLabel(tr("frequency [Hz]"));
         rect->setRangeZoomAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+        rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3); // short plots: few numbers
     }
-    magnitude->axis(QCPAxis::atLeft)->setLabel(tr("|θ/τ_ext| [dB re 1 rad/(N·m)]"));
-    phase->axis(QCPAxis::atLeft)->setLabel(tr("phase [°]"));
-    auto *legend = new QCPLegend;
-    magnitude->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-    legend->setLayer(QStringLiteral("legend"));
-    m_bode->legend = legend;
-    addTab(m_bode, tr("Bode"));
+    phase->axis(QCPAxis::atBottom)->setLabel(tr("frequency [Hz]"));
+    // Titles level in the top right corner, where the curves fall away from: written along
+    // the axes they were longer than a short plot is tall.
+    setCornerTitle(magnitude, tr("gain [dB]"));
+    setCornerTitle(phase, tr("phase [°]"));
+    legendRow(m_bode, new QCPLegend);
+    addTab(m_bode, tr("Bode θ/τ_ext"));
+    setTabToolTip(BodeTab, tr("The gain of θ/τ_ext in dB re 1 rad/(N·m), and its phase"));
 
     m_spectrum = makePlot(this, QStringLiteral("spectrumPlot"));
+    withLegendAbove(m_spectrum);
     m_spectrum->xAxis->setLabel(tr("frequency [Hz]"));
     m_spectrum->yAxis->setLabel(tr("θ [dB re 1 rad]"));
     m_spectrum->yAxis2->setVisible(true);
@@ -111,6 +149,8 @@ void ExperimentPlots::showStep(const ExperimentResult &r)
     m_step->clearGraphs();
     QCPGraph *measured = addGraph(m_step, m_step->xAxis, m_step->yAxis, tr("θ measured"),
                                   palette::channel(Channel::Theta));
+    // What else held the knob, where every picture of the step carries it.
+    m_step->xAxis->setLabel(tr("time since the step [s] · hand: %1").arg(runHandText(r.hand)));
     QCPGraph *model = addGraph(m_step, m_step->xAxis, m_step->yAxis, tr("θ ideal model"),
                                palette::channel(Channel::Theta), Qt::DashLine);
     const double before = r.stepMeasured.initial;

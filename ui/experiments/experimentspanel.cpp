@@ -21,9 +21,11 @@
 #include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -56,12 +58,24 @@ ExperimentsPanel::ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidg
             [this](double f) { m_progress->setValue(static_cast<int>(std::lround(100 * f))); });
     connect(m_runner, &ExperimentRunner::finished, this, &ExperimentsPanel::onFinished);
     connect(m_client, &DeviceClient::stateChanged, this, &ExperimentsPanel::updateButtons);
+    connect(m_client, &DeviceClient::deviceInfoChanged, this, [this] {
+        if (!running() && !m_result)
+            showReadyHint();
+    });
     connect(m_client, &DeviceClient::deviceParamsChanged, this, [this] {
         if (!running() && !m_result)
             fillDefaults();
     });
-    onKindChanged(); // enables the kind's fields and fills its defaults
+    onKindChanged(); // shows the kind's fields and fills its defaults
+    showReadyHint();
     updateButtons();
+}
+
+void ExperimentsPanel::showReadyHint()
+{
+    m_status->setText(ExperimentRunner::handFor(*m_client) == RunHand::SimulatedIdle
+                          ? tr("The simulated hand is idle while an experiment runs.")
+                          : tr("Let go of the knob while an experiment runs."));
 }
 
 ExperimentsPanel::~ExperimentsPanel() = default;
@@ -96,16 +110,15 @@ void ExperimentsPanel::buildForm()
     m_cycles->setObjectName(QStringLiteral("cycles"));
     m_cycles->setRange(1, ExperimentPlan::kMaxCycles);
 
-    auto *form = new QFormLayout;
-    form->addRow(tr("Experiment"), m_kind);
-    form->addRow(tr("τ_ext before the step"), m_from);
-    form->addRow(tr("τ_ext after the step"), m_to);
-    form->addRow(tr("Bias τ_ext"), m_offset);
-    form->addRow(tr("Sine amplitude"), m_amplitude);
-    form->addRow(tr("Frequencies [Hz]"), m_frequencies);
-    form->addRow(tr("Periods per frequency"), m_cycles);
-    form->addRow(tr("Settle"), m_settle);
-    form->addRow(tr("Duration"), m_duration);
+    m_form = new QFormLayout;
+    m_form->addRow(tr("τ_ext before the step"), m_from);
+    m_form->addRow(tr("τ_ext after the step"), m_to);
+    m_form->addRow(tr("Bias τ_ext"), m_offset);
+    m_form->addRow(tr("Sine amplitude"), m_amplitude);
+    m_form->addRow(tr("Frequencies [Hz]"), m_frequencies);
+    m_form->addRow(tr("Periods per frequency"), m_cycles);
+    m_form->addRow(tr("Settle"), m_settle);
+    m_form->addRow(tr("Duration"), m_duration);
 
     m_defaults = new QPushButton(tr("Defaults"), this);
     m_defaults->setToolTip(tr("Levels that keep the knob in the notch band, for the device's "
@@ -115,17 +128,12 @@ void ExperimentsPanel::buildForm()
     m_cancel = new QPushButton(tr("Cancel"), this);
     m_cancel->setObjectName(QStringLiteral("cancelExperiment"));
     m_visible = new QPushButton(tr("Spectrum of the visible window"), this);
+    m_visible->setToolTip(tr("The spectra of θ and τ over what the main plots show now"));
     m_csv = new QPushButton(tr("Export CSV…"), this);
     m_image = new QPushButton(tr("Export image…"), this);
-    auto *buttons = new QHBoxLayout;
-    for (QPushButton *b : {m_defaults, m_run, m_cancel})
-        buttons->addWidget(b);
-    auto *exports = new QHBoxLayout;
-    for (QPushButton *b : {m_visible, m_csv, m_image})
-        exports->addWidget(b);
     m_progress = new QProgressBar(this);
     m_progress->setRange(0, 100);
-    m_status = new QLabel(tr("Let go of the knob while an experiment runs."), this);
+    m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("experimentStatus"));
     m_status->setWordWrap(true);
 
@@ -133,32 +141,65 @@ void ExperimentsPanel::buildForm()
     m_figures->setObjectName(QStringLiteral("experimentFigures"));
     m_figures->setHorizontalHeaderLabels({tr("Figure"), tr("Measured"), tr("Model")});
     m_figures->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    for (int column : {1, 2})
+        m_figures->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
     m_figures->verticalHeader()->hide();
+    m_figures->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+    m_figures->setWordWrap(false); // one line a figure: more of them in a short dock
     m_figures->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_plots = new ExperimentPlots(this);
 
+    // Three columns, each as tall as the dock: the controls (the kind, Run and the status always
+    // in sight; only the kind's fields scroll), the plots, the figures. Issue 21: at 1280×720
+    // Run was once hidden in a scrolled column, and the plots were too short to read.
+    auto *buttons = new QHBoxLayout;
+    for (QPushButton *b : {m_defaults, m_run, m_cancel})
+        buttons->addWidget(b);
+    auto *fields = new QWidget(this);
+    fields->setLayout(m_form);
+    m_form->setContentsMargins(0, 0, 0, 0);
+    auto *fieldsScroll = new QScrollArea(this);
+    fieldsScroll->setWidgetResizable(true);
+    fieldsScroll->setFrameShape(QFrame::NoFrame);
+    fieldsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    fieldsScroll->setWidget(fields);
     auto *controls = new QWidget(this);
     auto *left = new QVBoxLayout(controls);
-    left->addLayout(form);
+    left->setContentsMargins(0, 0, 0, 0);
+    left->addWidget(m_kind);
     left->addLayout(buttons);
     left->addWidget(m_progress);
     left->addWidget(m_status);
-    left->addWidget(m_figures, 1);
-    left->addLayout(exports);
-    // The controls scroll rather than set the dock's width: it sits beside the simulated
-    // hand under the plots and must fit there at 1400 px.
-    auto *controlsScroll = new QScrollArea(this);
-    controlsScroll->setWidgetResizable(true);
-    controlsScroll->setFrameShape(QFrame::NoFrame);
-    controlsScroll->setWidget(controls);
-    controlsScroll->setMinimumWidth(200);
-    auto *split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(controlsScroll);
-    split->addWidget(m_plots);
-    split->setStretchFactor(1, 1);
+    left->addWidget(fieldsScroll, 1);
+    left->addWidget(m_visible);
+    controls->setMinimumWidth(
+        std::max(fields->sizeHint().width() + style()->pixelMetric(QStyle::PM_ScrollBarExtent),
+                 buttons->sizeHint().width()));
+
+    m_results = new QWidget(this);
+    m_results->setObjectName(QStringLiteral("experimentResults"));
+    auto *right = new QVBoxLayout(m_results);
+    right->setContentsMargins(0, 0, 0, 0);
+    right->addWidget(m_figures, 1);
+    auto *exports = new QHBoxLayout;
+    for (QPushButton *b : {m_csv, m_image})
+        exports->addWidget(b);
+    right->addLayout(exports);
+    // Wide enough for the names and both columns of numbers, beside the plots.
+    const QFontMetrics metrics = fontMetrics();
+    m_results->setMinimumWidth(metrics.horizontalAdvance(tr("Settling time 2 % [s]")) +
+                               metrics.horizontalAdvance(runHandText(RunHand::SimulatedIdle)) +
+                               metrics.horizontalAdvance(QStringLiteral("−0.00000")) + 48);
+
+    m_split = new QSplitter(Qt::Horizontal, this);
+    m_split->addWidget(controls);
+    m_split->addWidget(m_plots);
+    m_split->setStretchFactor(1, 1);
+    m_split->setChildrenCollapsible(false);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    layout->addWidget(split);
+    layout->addWidget(m_split);
+    placeFigures();
 
     connect(m_kind, &QComboBox::currentIndexChanged, this, &ExperimentsPanel::onKindChanged);
     connect(m_defaults, &QPushButton::clicked, this, &ExperimentsPanel::fillDefaults);
@@ -170,17 +211,45 @@ void ExperimentsPanel::buildForm()
     m_visible->setEnabled(m_mainPlots != nullptr);
 }
 
+void ExperimentsPanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    placeFigures();
+}
+
+void ExperimentsPanel::placeFigures()
+{
+    // Beside the plots when they keep kMinPlotWidth, else one of their tabs.
+    const int controls = m_split->widget(0)->minimumSizeHint().width();
+    const bool beside = width() >= controls + kMinPlotWidth + m_results->sizeHint().width() +
+                                       2 * m_split->handleWidth();
+    const int tab = m_plots->indexOf(m_results);
+    if (beside && (tab >= 0 || m_results->parent() != m_split)) {
+        if (tab >= 0)
+            m_plots->removeTab(tab);
+        m_split->addWidget(m_results);
+        m_results->show();
+        // The plot takes what the controls and the figures leave.
+        const int results = m_results->minimumWidth();
+        m_split->setSizes(
+            {controls, std::max(kMinPlotWidth, width() - controls - results), results});
+    } else if (!beside && tab < 0) {
+        m_plots->addTab(m_results, tr("Figures"));
+    }
+}
+
 void ExperimentsPanel::onKindChanged()
 {
     const auto kind = ExperimentKind(m_kind->currentData().toInt());
     const bool step = kind == ExperimentKind::Step;
     const bool sine = kind == ExperimentKind::Frequency;
+    // Only the kind's own fields are shown: fewer rows, so they fit a short dock.
     for (QWidget *w : {static_cast<QWidget *>(m_from), static_cast<QWidget *>(m_to)})
-        w->setEnabled(step);
+        m_form->setRowVisible(w, step);
     for (QWidget *w : {static_cast<QWidget *>(m_offset), static_cast<QWidget *>(m_amplitude),
                        static_cast<QWidget *>(m_frequencies), static_cast<QWidget *>(m_cycles)})
-        w->setEnabled(sine);
-    m_duration->setEnabled(!sine);
+        m_form->setRowVisible(w, sine);
+    m_form->setRowVisible(m_duration, !sine);
     fillDefaults();
 }
 
@@ -228,8 +297,11 @@ bool ExperimentsPanel::run()
         return false;
     }
     m_progress->setValue(0);
-    m_status->setText(tr("Running… let go of the knob."));
+    m_status->setText(m_runner->hand() == RunHand::SimulatedIdle
+                          ? tr("Running… the simulated hand is idle until it ends.")
+                          : tr("Running… let go of the knob."));
     updateButtons();
+    Q_EMIT runningChanged(true);
     return true;
 }
 
@@ -251,16 +323,37 @@ QString ExperimentsPanel::status() const
 void ExperimentsPanel::onFinished(const ExperimentResult &result)
 {
     updateButtons();
+    Q_EMIT runningChanged(false);
     if (!result.completed()) {
         m_status->setText(result.problem);
         return;
     }
     m_result = result;
-    m_status->setText(result.problem.isEmpty() ? tr("Done; τ_ext is back to 0.") : result.problem);
+    const QString done = result.hand == RunHand::SimulatedIdle
+                             ? tr("Done; τ_ext is back to 0, the simulated hand as it was.")
+                             : tr("Done; τ_ext is back to 0.");
+    // The headline figures where they are always in sight; the table has them all.
+    m_status->setText(result.problem.isEmpty() ? done + u' ' + headline(result) : result.problem);
     showFigures(result);
     m_plots->showResult(result);
     updateButtons();
     Q_EMIT finished(result);
+}
+
+QString ExperimentsPanel::headline(const ExperimentResult &r)
+{
+    switch (r.plan.kind) {
+    case ExperimentKind::Step:
+        return tr("ω_n %1 rad/s (model %2), ζ %3 (model %4).")
+            .arg(cell(r.fitMeasured.omegaN, 1), cell(r.figures.omega_n, 1),
+                 cell(r.fitMeasured.zeta, 3), cell(r.figures.zeta, 3));
+    case ExperimentKind::Frequency:
+        return tr("Bandwidth %1 Hz (model %2).")
+            .arg(cell(r.bandwidth, 2), cell(r.modelBandwidth, 2));
+    case ExperimentKind::Spectrum:
+        break;
+    }
+    return {};
 }
 
 void ExperimentsPanel::showFigures(const ExperimentResult &r)
@@ -304,11 +397,16 @@ void ExperimentsPanel::showFigures(const ExperimentResult &r)
         break;
     }
     }
-    m_figures->setRowCount(static_cast<int>(rows.size()));
+    // First, what else held the knob: a pushing hand spoils every figure below.
+    m_figures->setRowCount(static_cast<int>(rows.size()) + 1);
+    m_figures->setItem(0, 0, new QTableWidgetItem(tr("Hand on the knob")));
+    m_figures->setItem(0, 1, new QTableWidgetItem(runHandText(r.hand)));
+    m_figures->setItem(0, 2, new QTableWidgetItem(tr("none")));
     for (int i = 0; i < rows.size(); ++i) {
-        m_figures->setItem(i, 0, new QTableWidgetItem(rows[i].name));
-        m_figures->setItem(i, 1, new QTableWidgetItem(cell(rows[i].measured, rows[i].decimals)));
-        m_figures->setItem(i, 2, new QTableWidgetItem(cell(rows[i].model, rows[i].decimals)));
+        m_figures->setItem(i + 1, 0, new QTableWidgetItem(rows[i].name));
+        m_figures->setItem(i + 1, 1,
+                           new QTableWidgetItem(cell(rows[i].measured, rows[i].decimals)));
+        m_figures->setItem(i + 1, 2, new QTableWidgetItem(cell(rows[i].model, rows[i].decimals)));
     }
 }
 
@@ -319,6 +417,7 @@ void ExperimentsPanel::updateButtons()
     m_cancel->setEnabled(busy);
     m_kind->setEnabled(!busy);
     m_defaults->setEnabled(!busy);
+    m_progress->setVisible(busy); // only while it means something: a row more for the fields
     m_csv->setEnabled(m_result.has_value());
     m_image->setEnabled(m_result.has_value() || !busy);
 }

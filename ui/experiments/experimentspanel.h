@@ -13,11 +13,13 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
+class QSplitter;
 class QTableWidget;
 
 namespace hatpic {
@@ -31,6 +33,9 @@ class ExperimentsPanel : public QWidget
 {
     Q_OBJECT
 public:
+    //! Narrowest the plots get beside the figures; narrower, the figures are one of their tabs.
+    static constexpr int kMinPlotWidth = 320;
+
     //! `plots` (may be null) gives the visible window for the spectrum button.
     ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidget *parent = nullptr);
     ~ExperimentsPanel() override;
@@ -57,13 +62,24 @@ public:
 
 Q_SIGNALS:
     void finished(const hatpic::ExperimentResult &result);
+    //! A run started (true) or ended (false); on the simulator its hand is idle meanwhile.
+    void runningChanged(bool running);
+
+protected:
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     void buildForm();
+    //! The figures beside the plots, or behind a tab when the panel is narrow.
+    void placeFigures();
     void onKindChanged();
     void onFinished(const ExperimentResult &result);
     void showFigures(const ExperimentResult &result);
+    //! The result's main figures next to the model's, in one sentence.
+    static QString headline(const ExperimentResult &result);
     void updateButtons();
+    //! Before a run: what to do with the hand, for the connected device.
+    void showReadyHint();
     void saveCsvAs();
     void saveImageAs();
 
@@ -74,6 +90,7 @@ private:
 
     // The form (its levels, frequencies, periods and times), the buttons, the results.
     QComboBox *m_kind{};
+    QFormLayout *m_form{}; //!< the kind's fields (the others' rows hidden)
     QDoubleSpinBox *m_from{}, *m_to{}, *m_offset{}, *m_amplitude{}, *m_settle{}, *m_duration{};
     QLineEdit *m_frequencies{};
     QSpinBox *m_cycles{};
@@ -81,6 +98,8 @@ private:
     QProgressBar *m_progress{};
     QLabel *m_status{};
     QTableWidget *m_figures{};
+    QWidget *m_results{}; //!< the figures and their export buttons
+    QSplitter *m_split{}; //!< controls | plots [| results]
     ExperimentPlots *m_plots{};
 };
 

@@ -43,11 +43,13 @@ inline QColor channel(Channel c)
     return Qt::black;
 }
 
-inline const QColor kDeadZone(84, 110, 122, 90); //!< dead-zone band ±Q_dz (translucent)
-inline const QColor kNotch(255, 160, 0, 60);     //!< notch band Q_dz … N (translucent)
-inline const QColor kEvent(85, 109, 122);        //!< event markers (pushes, resets)
-inline const QColor kLivePoint(117, 117, 117);   //!< the operating point (θ, τ_rec) now
-inline const QColor kLimit(211, 47, 47);         //!< ±tau_limit
+//! Dead-zone band ±Q_dz (translucent): 1.9:1 against either theme's plot background once
+//! composited (it was 1.4:1 on the dark one, barely seen).
+inline const QColor kDeadZone(96, 125, 139, 128);
+inline const QColor kNotch(255, 160, 0, 60);   //!< notch band Q_dz … N (translucent)
+inline const QColor kEvent(85, 109, 122);      //!< event markers (pushes, resets)
+inline const QColor kLivePoint(117, 117, 117); //!< the operating point (θ, τ_rec) now
+inline const QColor kLimit(211, 47, 47);       //!< ±tau_limit
 //! Profile slot B's curves beside slot A's when the two are compared (slot A keeps τ_rec's
 //! crimson): olive, unlike every quantity's colour.
 inline const QColor kSlotB(128, 118, 0);

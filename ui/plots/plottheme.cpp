@@ -1,5 +1,7 @@
 #include "plots/plottheme.h"
 
+#include "plots/axistitle.h"
+#include "plots/palette.h"
 #include "plots/qcp.h"
 
 #include <QEvent>
@@ -43,6 +45,12 @@ bool isDark(const QPalette &palette)
     return palette.color(QPalette::Window).lightness() < 128;
 }
 
+QCPScatterStyle livePointStyle(const QPalette &palette)
+{
+    return QCPScatterStyle(QCPScatterStyle::ssDisc, QPen(palette.color(QPalette::Text), 2),
+                           QBrush(palette::kLivePoint), 11);
+}
+
 void apply(QCustomPlot *plot, const QPalette &palette)
 {
     const QColor base = palette.color(QPalette::Base);
@@ -76,6 +84,15 @@ void apply(QCustomPlot *plot, const QPalette &palette)
             if (item && item->textColor() != kHiddenLegendText)
                 item->setTextColor(text);
         }
+    }
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        auto *title = qobject_cast<QCPItemText *>(plot->item(i));
+        if (!title || title->objectName() != QLatin1String(kCornerTitleName))
+            continue;
+        QColor fill = base;
+        fill.setAlpha(200);
+        title->setBrush(fill);
+        title->setColor(text);
     }
     plot->replot();
 }

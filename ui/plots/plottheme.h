@@ -6,6 +6,7 @@
 
 #include <QColor>
 
+class QCPScatterStyle;
 class QCustomPlot;
 class QPalette;
 
@@ -22,5 +23,8 @@ void follow(QCustomPlot *plot);
 QColor mix(const QColor &a, const QColor &b, double fa);
 //! Whether `palette` is a dark one: its window colour is darker than mid-grey.
 bool isDark(const QPalette &palette);
+//! The live operating point's disc (stiffness view, XY view): palette::kLivePoint ringed in the
+//! theme's text colour, so that it stands out on the light and on the dark background.
+QCPScatterStyle livePointStyle(const QPalette &palette);
 
 } // namespace hatpic::plottheme

@@ -45,6 +45,9 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     m_planAction->setObjectName(QStringLiteral("recordingPlanAction"));
     m_planAction->setToolTip(
         tr("Start now, on the next push or at a threshold; time before the trigger; length"));
+    // The toolbar button shows the icon text, which stays "⚙" whenever the action changes (a
+    // recording disables it): once its full text widened the toolbar past 1280 px.
+    m_planAction->setIconText(QStringLiteral("⚙"));
     connect(m_planAction, &QAction::triggered, this, &RecordingControls::onPlanTriggered);
     m_planChooser = [this](const RecordingPlan &plan) -> std::optional<RecordingPlan> {
         RecordingPlanDialog dialog(this);
@@ -60,7 +63,6 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     auto *planButton = new QToolButton(this);
     planButton->setObjectName(QStringLiteral("recordingPlanButton"));
     planButton->setDefaultAction(m_planAction);
-    planButton->setText(QStringLiteral("⚙"));
     m_label = new QLabel(this);
     m_label->setObjectName(QStringLiteral("recordingStatus"));
     m_label->setMinimumWidth(m_label->fontMetrics().horizontalAdvance(

@@ -6,7 +6,6 @@
 
 #include <QDockWidget>
 #include <QMainWindow>
-#include <QScrollArea>
 
 namespace hatpic {
 
@@ -17,13 +16,7 @@ QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileCon
     panel->setObjectName(QStringLiteral("bridgePanel"));
     auto *dock = new QDockWidget(QObject::tr("Bridge"), window);
     dock->setObjectName(QStringLiteral("bridgeDock"));
-    // Scrolled, so that its many fields never set the window's minimum height (the window fits
-    // a 1280×720 screen).
-    auto *scroll = new QScrollArea(dock);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(panel);
-    dock->setWidget(scroll);
+    dock->setWidget(panel); // it scrolls its fields itself: the window fits a 1280×720 screen
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
     if (tabWith)
         window->tabifyDockWidget(tabWith, dock);

@@ -11,7 +11,6 @@
 #include "editor/profilecontroller.h"
 #include "editor/simulatorpanel.h"
 #include "editor/stiffnessview.h"
-#include "experiments/experimentspanel.h"
 #include "plots/plotactions.h"
 #include "plots/plotpanel.h"
 #include "recording/plotfeed.h"
@@ -20,9 +19,12 @@
 #include "recording/replaybar.h"
 #include "recording/replaycontroller.h"
 #include "window/abdock.h"
+#include "window/bottomdocks.h"
 #include "window/bridgedock.h"
+#include "window/experimentsdock.h"
 #include "window/measuredocks.h"
 #include "window/shortcutsdialog.h"
+#include "window/statusline.h"
 #include "window/theme.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
@@ -51,8 +53,6 @@ static void initPlotsResources()
 namespace hatpic {
 
 namespace {
-
-constexpr int kStatusMs = 6000;
 
 const QString kSimPort = QString::fromUtf16(kSimPortName);
 
@@ -101,15 +101,17 @@ void MainWindow::createParts()
     m_linkStatus = named(new LinkStatusWidget(this), "linkStatus");
     m_recording = named(new RecordingControls(this), "recordingControls");
     m_theme = named(new ThemeController(this), "themeController");
+    m_statusLine = new StatusLine(statusBar());
     m_stats = new LinkStatsWidget(this);
-    statusBar()->addPermanentWidget(m_stats);
 
     m_editor = named(new ParameterEditor(this), "parameterEditor");
     m_paramLink = named(new DeviceParameterLink(m_client, m_editor, this), "parameterLink");
     m_stiffness = named(new StiffnessView(this), "stiffnessView");
     m_profiles = named(new ProfileController(m_editor, this, this), "profileController");
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
-    statusBar()->insertPermanentWidget(0, m_simPanel->statusLabel());
+    for (QWidget *readout :
+         {static_cast<QWidget *>(m_simPanel->statusLabel()), static_cast<QWidget *>(m_stats)})
+        m_statusLine->readouts()->layout()->addWidget(readout);
     m_stiffness->setEditedParams(m_editor->params());
     m_stiffness->setEditedEffects(m_editor->effects());
     m_feed->setLiveHostParams(m_editor->hostParams());
@@ -173,16 +175,12 @@ void MainWindow::createDocks()
     m_bridgeDock = addBridgeDock(this, m_client, m_profiles, m_editor, m_logDock);
     m_bridgeDock->hide();
     // Tuning experiments (docs/experiments.md): View → Experiments, beside the device log.
-    auto *experimentsPanel = new ExperimentsPanel(m_client, m_plots, this);
-    experimentsPanel->setObjectName(QStringLiteral("experimentsPanel"));
-    QDockWidget *experiments = makeDock(tr("Experiments"), QStringLiteral("experimentsDock"),
-                                        experimentsPanel, Qt::BottomDockWidgetArea);
-    tabifyDockWidget(m_logDock, experiments);
-    experiments->hide();
+    QDockWidget *experiments = addExperimentsDock(this, m_client, m_plots, m_simPanel, m_logDock);
     // As wide as the editor wants (within reason): its rows are long.
     resizeDocks({m_editorDock}, {std::clamp(m_editor->sizeHint().width() + 24, 420, 600)},
                 Qt::Horizontal);
-    resizeDocks({m_editorDock, m_stiffnessDock}, {560, 300}, Qt::Vertical);
+    // The stiffness view's two plots stay readable at 720 px (issue 21: once 40 px each).
+    resizeDocks({m_editorDock, m_stiffnessDock}, {500, 360}, Qt::Vertical);
 
     for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_bridgeDock, m_logDock})
         m_viewMenu->addAction(dock->toggleViewAction());
@@ -192,6 +190,12 @@ void MainWindow::createDocks()
         m_viewMenu->addAction(dock->toggleViewAction());
     addMeasureDocks(this, m_plots, m_plotActions, m_profiles, m_editor, m_stiffness, m_viewMenu,
                     m_logDock);
+    // The panels under the plots open usable, beside the hand or tabbed with it.
+    auto *bottom = new BottomDocks(this, m_simDock);
+    for (QDockWidget *dock : findChildren<QDockWidget *>()) {
+        if (dock != m_simDock && dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
+            bottom->add(dock);
+    }
 }
 
 void MainWindow::connectParts()
@@ -257,7 +261,7 @@ void MainWindow::connectParts()
 
 void MainWindow::showStatus(const QString &message)
 {
-    statusBar()->showMessage(message, kStatusMs);
+    m_statusLine->show(message);
 }
 
 void MainWindow::setSimulatedHand(const HandInput &hand)

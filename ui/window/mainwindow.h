@@ -30,6 +30,7 @@ class RecordingControls;
 class ReplayBar;
 class ThemeController;
 class SimulatorPanel;
+class StatusLine;
 class StiffnessView;
 class WindowActions;
 
@@ -96,6 +97,7 @@ private:
     LinkStatusWidget *m_linkStatus = nullptr;
     LinkBanner *m_banner = nullptr;
     LinkStatsWidget *m_stats = nullptr;
+    StatusLine *m_statusLine = nullptr;
     RecordingControls *m_recording = nullptr;
     ReplayBar *m_replayBar = nullptr;
     ParameterEditor *m_editor = nullptr;

@@ -1,6 +1,7 @@
 // ExperimentRunner end to end: a DeviceClient on a real pseudo-terminal whose other side is the
 // simulated joystick with its real plant (servo lag, quantisation, load noise), hosted as
 // hatpic-sim hosts it (SimulatorHost). The measured figures must come out near the model's.
+// On the in-process simulator ("sim") the simulated hand goes idle for the run and comes back.
 #include "experiment/experimentrunner.h"
 #include "session/deviceclient.h"
 #include "sim/simulatorhost.h"
@@ -12,6 +13,7 @@
 #include <numbers>
 
 using namespace hatpic;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -83,6 +85,8 @@ class TestExperimentRunner : public QObject
 private Q_SLOTS:
     void stepRecoversTheModel_data();
     void stepRecoversTheModel();
+    void simulatedHandIsIdleForTheRun_data();
+    void simulatedHandIsIdleForTheRun();
     void bodeMatchesTheModelBelowTheBandwidth();
     void spectrumShowsTheKnobAtRest();
     void cancelRestoresZeroFeedback();
@@ -116,6 +120,7 @@ void TestExperimentRunner::stepRecoversTheModel()
     const ExperimentResult r = run(runner, plan);
     QVERIFY2(r.completed() && r.problem.isEmpty(), qPrintable(r.problem));
     QVERIFY(r.fitMeasured.ok);
+    QCOMPARE(r.hand, RunHand::User); // a device on a port: nothing lifts a person's hand
     const double omegaN = r.fitMeasured.omegaN, zeta = r.fitMeasured.zeta;
     qInfo("model ω_n %.2f rad/s ζ %.3f; measured ω_n %.2f rad/s ζ %.3f (rms %.2g rad); ideal "
           "ω_n %.2f ζ %.3f; rise %.4f s overshoot %.3f settling %.4f s",
@@ -138,6 +143,75 @@ void TestExperimentRunner::stepRecoversTheModel()
     // When it ends, τ_ext is back to 0 on the device.
     QTRY_VERIFY_WITH_TIMEOUT(!bench.samples.isEmpty() && bench.samples.last().tau_ext == 0,
                              kConnectMs);
+}
+
+void TestExperimentRunner::simulatedHandIsIdleForTheRun_data()
+{
+    QTest::addColumn<QString>("hand");
+    QTest::newRow("the tuner's gentle sine") << u"sine:0.06:0.2"_s;
+    QTest::newRow("a virtual hand pulling") << u"hand:0.3"_s;
+    QTest::newRow("idle already") << u"idle"_s;
+    // Far out beyond the notch: with no time to come back ω_n read 33 rad/s, with 0.5 s 12.6.
+    QTest::newRow("a hand holding it far out") << u"const:1.5"_s;
+}
+
+// Once, the simulated hand went on pushing during a step: ω_n 27.5 rad/s measured against 63.3
+// for the model, ζ 1.30 against 0.79, and nothing said so.
+void TestExperimentRunner::simulatedHandIsIdleForTheRun()
+{
+    QFETCH(QString, hand);
+    const HandInput input = *HandInput::parse(hand);
+    DeviceClient client;
+    ConnectOptions o;
+    o.port = QString::fromUtf16(kSimPortName);
+    o.protocol = ProtocolChoice::V2;
+    o.sim = deviceConfig();
+    o.sim.hand = input;
+    QList<Sample> samples;
+    QObject::connect(&client, &DeviceClient::samplesReady,
+                     [&samples](const SampleBatch &b) { samples.append(b); });
+    client.connectDevice(o);
+    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectMs);
+    DeviceParams params = client.deviceParams();
+    params.D_adm = 2e-3; // the slow knob of stepRecoversTheModel: 14.1 rad/s, ζ 0.707
+    params.M_adm = 4e-2;
+    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
+    client.pushParams(params);
+    QVERIFY(pushed.wait(kConnectMs));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(client.deviceParams().D_adm - params.D_adm) < 1e-9,
+                             kConnectMs);
+
+    ExperimentRunner runner(client);
+    QCOMPARE(ExperimentRunner::handFor(client), RunHand::SimulatedIdle);
+    const ExperimentResult r = run(runner, ExperimentPlan::defaults(ExperimentKind::Step, params));
+    QVERIFY2(r.completed() && r.problem.isEmpty(), qPrintable(r.problem));
+    QCOMPARE(r.hand, RunHand::SimulatedIdle);
+    QCOMPARE(runHandText(r.hand), u"idle (simulated)"_s);
+    qInfo("hand %s: measured ω_n %.2f rad/s ζ %.3f, model %.2f rad/s ζ %.3f", qPrintable(hand),
+          r.fitMeasured.omegaN, r.fitMeasured.zeta, r.figures.omega_n, r.figures.zeta);
+    QVERIFY2(std::abs(r.fitMeasured.omegaN / r.figures.omega_n - 1) < 0.10,
+             qPrintable(QString::number(r.fitMeasured.omegaN)));
+    QVERIFY2(std::abs(r.fitMeasured.zeta / r.figures.zeta - 1) < 0.10,
+             qPrintable(QString::number(r.fitMeasured.zeta)));
+    // Only τ_ext moved the knob: no sample of the run reports an operator torque beyond the
+    // spring's answer to τ_ext (|τ| stays within the step's level plus the load noise).
+    for (const Sample &s : r.samples)
+        QVERIFY2(std::abs(s.tau) < 0.04, qPrintable(QString::number(s.tau)));
+
+    // The hand is given back as it was.
+    QCOMPARE(client.simulatedHand(), input);
+    if (input.kind != HandInput::Kind::Idle) {
+        samples.clear();
+        QTRY_VERIFY_WITH_TIMEOUT(!samples.isEmpty() && std::abs(samples.last().tau) > 0.04, kRunMs);
+
+        // Cancelled while the knob comes to rest: given back too.
+        QSignalSpy finished(&runner, &ExperimentRunner::finished);
+        QVERIFY(runner.start(ExperimentPlan::defaults(ExperimentKind::Step, params)).isEmpty());
+        QCOMPARE(client.simulatedHand(), HandInput{});
+        runner.cancel();
+        QCOMPARE(finished.size(), 1);
+        QCOMPARE(client.simulatedHand(), input);
+    }
 }
 
 void TestExperimentRunner::bodeMatchesTheModelBelowTheBandwidth()

@@ -342,6 +342,15 @@ void TestProfileController::presetsMenuLoadsPreset()
         names << a->data().toString();
     QCOMPARE(names, presetNames());
     QVERIFY(names.contains(u"Notchy"_s));
+    // The user guide names every preset the menu offers (it once lacked Detents and Walled).
+    QFile guide(qEnvironmentVariable("HATPIC_SOURCE_DIR") + u"/docs/user-guide.md"_s);
+    QVERIFY(guide.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(guide.readAll());
+    const qsizetype at = text.indexOf(u"**Presets** ("_s);
+    QVERIFY(at >= 0);
+    const QString listed = text.mid(at, text.indexOf(u')', at) - at);
+    for (const QString &name : names)
+        QVERIFY2(listed.contains(name), qPrintable(name));
 
     for (QAction *a : controller.presetsMenu()->actions()) {
         if (a->data().toString() == u"Notchy")

@@ -1,8 +1,10 @@
 // The Experiments panel with real widgets (offscreen) on the built-in simulated joystick: a
 // short step experiment from the Run button to the figures, the overlay and the exports; the
 // refusal on a legacy device; Cancel; the spectrum of the plots' visible window.
+#include "analysis/frequencyresponse.h"
 #include "experiments/experimentplots.h"
 #include "experiments/experimentspanel.h"
+#include "plots/axistitle.h"
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
 #include "plots/samplebuffer.h"
@@ -61,6 +63,8 @@ private Q_SLOTS:
     void refusesALegacyDevice();
     void cancelStopsTheRun();
     void spectrumOfTheVisibleWindow();
+    void bodePlotReadableWhenShort();
+    void figuresBesideThePlotsOrATab();
 };
 
 void TestExperimentsPanel::stepFromTheRunButton()
@@ -86,13 +90,31 @@ void TestExperimentsPanel::stepFromTheRunButton()
     QVERIFY(std::abs(to->value() - 0.4 * 0.08) < 1e-5);
     auto *run = panel.findChild<QPushButton *>(u"runExperiment"_s);
     QVERIFY(run->isEnabled());
+    // The simulator's hand is the program's to lift: nobody is told to let go of a knob.
+    QCOMPARE(panel.status(), u"The simulated hand is idle while an experiment runs."_s);
+    QSignalSpy runningChanged(&panel, &ExperimentsPanel::runningChanged);
     QSignalSpy finished(&panel, &ExperimentsPanel::finished);
     QTest::mouseClick(run, Qt::LeftButton);
     QVERIFY(panel.running());
     QVERIFY(!run->isEnabled());
     QVERIFY(panel.findChild<QPushButton *>(u"cancelExperiment"_s)->isEnabled());
+    QCOMPARE(runningChanged.size(), 1);
+    QVERIFY(runningChanged.first().first().toBool());
+    QVERIFY(panel.status().startsWith(u"Running… the simulated hand is idle"_s));
     QVERIFY(finished.wait(kRunMs));
     QVERIFY2(panel.result() && panel.result()->completed(), qPrintable(panel.status()));
+    QCOMPARE(runningChanged.size(), 2);
+    QVERIFY(!runningChanged.last().first().toBool());
+    // What held the knob, first among the figures and on the plot's time axis; the main
+    // figures in the status line.
+    QCOMPARE(panel.figures()->item(0, 0)->text(), u"Hand on the knob"_s);
+    QCOMPARE(panel.figures()->item(0, 1)->text(), u"idle (simulated)"_s);
+    QVERIFY(panel.plots()
+                ->plot(ExperimentPlots::StepTab)
+                ->xAxis->label()
+                .contains(u"hand: idle (simulated)"_s));
+    QVERIFY2(panel.status().contains(u"ω_n "_s) && panel.status().contains(u"(model 14.1)"_s),
+             qPrintable(panel.status()));
 
     // Measured next to the model's derived figures (within 10 %, docs/experiments.md).
     const QTableWidget *table = panel.figures();
@@ -180,6 +202,78 @@ void TestExperimentsPanel::spectrumOfTheVisibleWindow()
         peak = it->value > peak->value ? it : peak;
     QVERIFY2(std::abs(peak->key - 50) < 1.01, qPrintable(QString::number(peak->key)));
     QVERIFY(std::abs(peak->value + 60) < 1.5);
+}
+
+// Once, in the short dock of a 1280×720 window, the Bode plot's labels ran into each other (two
+// frequency labels, and a gain label longer than its plot is tall) and its legend lay over the
+// measured points.
+void TestExperimentsPanel::bodePlotReadableWhenShort()
+{
+    ExperimentPlots plots;
+    plots.resize(450, 230);
+    plots.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plots));
+    ExperimentResult r;
+    r.plan.kind = ExperimentKind::Frequency;
+    for (double f : {2.0, 4.0, 8.0, 12.0, 16.0, 24.0}) {
+        analysis::FrequencyPoint p;
+        p.frequency = f;
+        p.gain = analysis::modelGain(r.params, f) * 0.9;
+        p.magnitude = std::abs(p.gain);
+        p.phase = std::arg(p.gain);
+        r.points.push_back(p);
+    }
+    plots.showResult(r);
+    QCustomPlot *bode = plots.plot(ExperimentPlots::BodeTab);
+    QCOMPARE(plots.currentWidget(), bode);
+    bode->replot();
+    QCPAxisRect *gain = bode->axisRect(0);
+    QCPAxisRect *phase = bode->axisRect(1);
+    QVERIFY(gain->axis(QCPAxis::atBottom)->label().isEmpty()); // one frequency axis, labelled
+    QVERIFY(!phase->axis(QCPAxis::atBottom)->label().isEmpty());
+    QList<QRect> titles; // level in a corner of each plot, never along an axis
+    for (QCPAxisRect *rect : {gain, phase}) {
+        QVERIFY(rect->axis(QCPAxis::atLeft)->label().isEmpty());
+        const QCPItemText *title = cornerTitle(rect);
+        QVERIFY(title && !title->text().isEmpty());
+        const QRect box =
+            QRectF(title->topLeft->pixelPosition(), title->bottomRight->pixelPosition())
+                .toAlignedRect();
+        QVERIFY2(rect->rect().contains(box), qPrintable(title->text()));
+        titles.append(box);
+    }
+    QVERIFY(!titles[0].intersects(titles[1]));
+    QVERIFY(!gain->rect().intersects(phase->rect()));
+    int legends = 0;
+    for (QCPLayoutElement *element : bode->plotLayout()->elements(true)) {
+        if (auto *legend = qobject_cast<QCPLegend *>(element); legend && legend->itemCount() > 0) {
+            QVERIFY(!legend->outerRect().intersects(gain->rect()));
+            QVERIFY(!legend->outerRect().intersects(phase->rect()));
+            ++legends;
+        }
+    }
+    QCOMPARE(legends, 1);
+}
+
+void TestExperimentsPanel::figuresBesideThePlotsOrATab()
+{
+    DeviceClient client;
+    ExperimentsPanel panel(&client, nullptr);
+    panel.resize(1100, 350);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto *results = panel.findChild<QWidget *>(u"experimentResults"_s);
+    QVERIFY(results);
+    QCOMPARE(panel.plots()->indexOf(results), -1); // beside the plots
+    QVERIFY(results->isVisible());
+    panel.resize(720, 300); // the dock at 1280×720
+    QTRY_VERIFY(panel.plots()->indexOf(results) >= 0);
+    QCOMPARE(panel.plots()->tabText(panel.plots()->indexOf(results)), u"Figures"_s);
+    QVERIFY(panel.plots()->plot(ExperimentPlots::StepTab)->width() >=
+            ExperimentsPanel::kMinPlotWidth);
+    panel.resize(1100, 350);
+    QTRY_COMPARE(panel.plots()->indexOf(results), -1);
+    QVERIFY(results->isVisible());
 }
 
 QTEST_MAIN(TestExperimentsPanel)

@@ -957,7 +957,10 @@ void TestMainWindow::handAndStiffnessInSightTogether()
     auto *hand = find<QWidget>("simulatorPanel");
     QVERIFY(stiffness->isVisible() && !stiffness->visibleRegion().isEmpty());
     QVERIFY(hand->isVisible() && !hand->visibleRegion().isEmpty());
-    QVERIFY(m_window->tabifiedDockWidgets(find<QDockWidget>("simulatorDock")).isEmpty());
+    // Never tabs of one dock with the stiffness view (at 1280×720 the hand is a tab of the
+    // panels under the plots, none of them open here: bottomdocks.h).
+    QVERIFY(!m_window->tabifiedDockWidgets(find<QDockWidget>("simulatorDock"))
+                 .contains(find<QDockWidget>("stiffnessDock")));
     // The active input in the status bar, following the panel.
     auto *status = find<QLabel>("handStatus");
     QVERIFY(status->isVisible());
