@@ -209,6 +209,10 @@ void MainWindow::connectParts()
         const QString text = SessionText::notice(notice);
         m_log->appendPlainText(text);
         showStatus(text);
+        // How a recording ended stays beside the record button, not only for a few seconds.
+        if (notice.kind == SessionNotice::Kind::RecordingClosedOtherDevice ||
+            notice.kind == SessionNotice::Kind::RecordingClosedByLoss)
+            m_recording->setNote(text);
     });
 
     // What the plots and the stiffness view show: the feed, live or replay.

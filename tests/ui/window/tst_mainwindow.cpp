@@ -652,10 +652,22 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
     QVERIFY(!find<QDockWidget>("simulatorDock")->isVisible()); // not the in-process simulator
     QVERIFY(waitForSamples(500));
+    // A recording runs through the loss (issue 21, item 5).
+    const QString csv = m_dir.filePath(QStringLiteral("through-the-loss.csv"));
+    RecordingControls *controls = find<RecordingControls>("recordingControls");
+    controls->setPathChooser([&](const QString &) { return csv; });
+    controls->recordAction()->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(controls->status().samples > 100, kDataMs);
+    auto *recordingLabel = controls->findChild<QLabel *>(QStringLiteral("recordingStatus"));
 
     sim.terminate(); // the device vanishes
     QVERIFY(sim.waitForFinished(5000));
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Lost, kConnectMs);
+    // The recording waits, and says so where the user looks for it.
+    QTRY_VERIFY(controls->status().waiting);
+    QVERIFY(controls->recordAction()->isChecked());
+    QVERIFY2(recordingLabel->text().contains(QStringLiteral("link lost: waiting for the device")),
+             qPrintable(recordingLabel->text()));
     QCOMPARE(linkStatus()->stateText(), QStringLiteral("LINK LOST"));
     QVERIFY(find<LinkBanner>("linkBanner")->isVisible());
     QVERIFY2(find<LinkBanner>("linkBanner")->text().contains(QStringLiteral("Reconnecting")),
@@ -676,6 +688,20 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
     QVERIFY(!find<LinkBanner>("linkBanner")->isVisible());
     QVERIFY(waitForSamples(200));
     QVERIFY(liveBuffer().size() > kept); // old and new data, one time axis
+    // The same recording goes on; the gap stays in sight after it is saved.
+    QTRY_VERIFY(!controls->status().waiting);
+    QVERIFY(controls->status().active);
+    const quint64 beforeStop = controls->status().samples;
+    QTRY_VERIFY_WITH_TIMEOUT(controls->status().samples > beforeStop + 100, kDataMs);
+    controls->recordAction()->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!controls->status().active, kConnectMs);
+    QCOMPARE(recordingLabel->text(),
+             QStringLiteral("Saved through-the-loss.csv (%1) · 1 gap")
+                 .arg(RecordingControls::formatBytes(controls->status().bytes)));
+    const RecordingReadResult recorded = readRecording(csv);
+    QVERIFY2(recorded.recording, qPrintable(recorded.error));
+    QCOMPARE(recorded.recording->events.size(), 1);
+    QVERIFY(recorded.recording->events.first().text.startsWith(QStringLiteral("gap: ")));
     m_window->disconnectDevice();
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Disconnected, kConnectMs);
     again.terminate();
