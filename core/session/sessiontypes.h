@@ -101,8 +101,11 @@ struct StateDetail
 
 //! "K_max 0.4 → 0.6; N 0.1 → 0.12": every device field that differs as it travels on the wire
 //! (the text of recording events and of the tuner's push markers). Empty when nothing does.
+//! Give it blocks as they travel (a device's, or CommandResult::sent): a value the wire moves
+//! inside its bound (±π) would otherwise read as a change.
 QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
-//! "detent_strength 0 → 0.05": the same for the effect block (float32 on the wire).
+//! "detent_strength 0 → 0.05": the same for the effect block (float32 on the wire; give it a
+//! device's block or CommandResult::effectsSent).
 QString describeEffectChange(const EffectParams &from, const EffectParams &to);
 //! What tells two devices apart, as names and values ("device_id 1397312817 → 42",
 //! "tau_limit 0.44 → 0.3"): protocol, protocol version, device id, firmware, tau_limit,
