@@ -24,6 +24,7 @@
 #include "window/measuredocks.h"
 #include "window/shortcutsdialog.h"
 #include "window/theme.h"
+#include "window/wheelguard.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
 
@@ -61,6 +62,7 @@ const QString kSimPort = QString::fromUtf16(kSimPortName);
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
+    WheelGuard::install(); // the wheel edits only the field that has the focus
     initPlotsResources();
     setWindowIcon(QIcon(QStringLiteral(":/icons/hatpic-tuner.png")));
     createParts();
