@@ -174,6 +174,10 @@ void RecordingControls::refresh()
     m_planAction->setEnabled(!busy);
     m_label->setText(statusText());
     QStringList tip{m_status.path};
+    if (m_status.waiting) {
+        tip << tr("The link to the device is lost: the recording stays open and goes on in the "
+                  "same file when the device is back.");
+    }
     if (m_status.gaps > 0) {
         tip << tr("Link losses during this recording: %1. Each gap is an event in the file "
                   "(\"gap: …\"), on the first row after it.")
@@ -220,8 +224,8 @@ QString RecordingControls::statusText() const
     } else {
         return {};
     }
-    if (m_status.waiting)
-        return text + tr(" · link lost: waiting for the device, recording goes on when it is back");
+    if (m_status.waiting) // short: the banner says the link is lost, the tooltip the rest
+        return text + tr(" · waiting for the device");
     text += gapsText();
     if (!m_status.active && !m_note.isEmpty())
         text += u" — " + m_note;

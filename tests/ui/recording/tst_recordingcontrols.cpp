@@ -143,8 +143,10 @@ void TestRecordingControls::linkLossStaysInSight()
     QVERIFY(controls.recordAction()->isChecked());
     QCOMPARE(controls.recordAction()->text(), QStringLiteral("Stop &recording"));
     QCOMPARE(labelText(controls),
-             QStringLiteral("● 00:12 · 3.4 kB · 2400 samples · link lost: waiting for the device, "
-                            "recording goes on when it is back"));
+             QStringLiteral("● 00:12 · 3.4 kB · 2400 samples · waiting for the device"));
+    QVERIFY(controls.findChild<QLabel *>(QStringLiteral("recordingStatus"))
+                ->toolTip()
+                .contains(QStringLiteral("goes on in the same file when the device is back")));
     // Back: the gap count stays beside the figures for the rest of the recording…
     status.waiting = false;
     status.seconds = 20;

@@ -720,7 +720,7 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
     // The recording waits, and says so where the user looks for it.
     QTRY_VERIFY(controls->status().waiting);
     QVERIFY(controls->recordAction()->isChecked());
-    QVERIFY2(recordingLabel->text().contains(QStringLiteral("link lost: waiting for the device")),
+    QVERIFY2(recordingLabel->text().contains(QStringLiteral("· waiting for the device")),
              qPrintable(recordingLabel->text()));
     QCOMPARE(linkStatus()->stateText(), QStringLiteral("LINK LOST"));
     QVERIFY(find<LinkBanner>("linkBanner")->isVisible());
