@@ -142,6 +142,15 @@ QString noticeText(const SessionNotice &notice)
         return QStringLiteral("Not connected: a recording starts once a device is connected.");
     case SessionNotice::Kind::RecordingClosedByLoss:
         return QStringLiteral("Recording closed: the device was lost.");
+    case SessionNotice::Kind::RecordingWaitsForDevice:
+        return QStringLiteral("The device was lost while recording: the recording goes on in "
+                              "the same file when the device is back.");
+    case SessionNotice::Kind::RecordingResumed:
+        return QStringLiteral("The device is back: recording resumed; the gap is marked in the "
+                              "file.");
+    case SessionNotice::Kind::RecordingClosedOtherDevice:
+        return u"Recording ended at the link loss: a different device answered (" %
+               notice.problems.join(QStringLiteral("; ")) % u").";
     case SessionNotice::Kind::HostParamsRefused:
         return u"Host parameters refused: " % notice.problems.join(QStringLiteral("; "));
     }

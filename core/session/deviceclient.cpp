@@ -67,8 +67,9 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
                 m_recording = status;
                 Q_EMIT recordingChanged(status);
             };
-            // Progress of a running recording may be skipped; a start, stop or error never.
-            const bool progress = status.active && status.error.isEmpty();
+            // Progress of a running recording may be skipped; a start, stop, error or a wait
+            // for the device never (the next progress, within 0.5 s, says it resumed).
+            const bool progress = status.active && status.error.isEmpty() && !status.waiting;
             post(m_pendingRecording, progress ? kMaxPendingStats : std::numeric_limits<int>::max(),
                  deliver);
         },

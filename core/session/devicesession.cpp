@@ -76,6 +76,7 @@ DeviceSession::DeviceSession(QObject *parent)
 
     connect(&m_samples, &SamplePipeline::samplesReady, this, &DeviceSession::samplesReady);
     connect(&m_samples, &SamplePipeline::recordingChanged, this, &DeviceSession::recordingChanged);
+    connect(&m_samples, &SamplePipeline::notice, this, &DeviceSession::notice);
     connect(&m_samples, &SamplePipeline::deviceParamsChanged, this,
             &DeviceSession::deviceParamsChanged);
     connect(&m_samples, &SamplePipeline::deviceEffectsChanged, this,
@@ -225,6 +226,7 @@ void DeviceSession::failDetection(const StateDetail &message)
     }
     m_wanted = false;
     m_statsTimer.stop();
+    m_samples.stopRecording(); // no device comes back for a recording that waits
     setState(SessionState::Disconnected, message);
 }
 
@@ -261,7 +263,7 @@ void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
     m_driver->start();
     if (!m_link)
         return; // lost while writing the first command
-    m_samples.connectionStarted();
+    m_samples.connectionStarted(m_info);
     m_statistics.markReceived(m_clock.nsecsElapsed());
     m_feedback.start(std::min(m_options.feedbackRateHz, m_driver->maxFeedbackHz()));
     m_ping.start();
@@ -279,14 +281,10 @@ void DeviceSession::loseLink(const StateDetail &lost)
     if (!m_link)
         return;
     qCWarning(lcSession) << "lost" << lost.port << lost.error;
-    if (m_samples.isRecording()) {
-        m_samples.stopRecording();
-        Q_EMIT notice({SessionNotice::Kind::RecordingClosedByLoss, {}});
-    }
-    m_samples.stopRecording(); // an armed recording waits for no lost device
     m_queue.failAll(Reason::ConnectionLost);
     closeLink();
-    m_samples.connectionEnded();
+    // A recording waits for the device when the session reconnects, else it closes.
+    m_samples.connectionEnded(lost, m_wanted && m_options.autoReconnect);
     Q_EMIT statsUpdated(stats()); // the final figures, before anyone reads them as such
     setState(SessionState::Lost, lost);
     if (m_wanted && m_options.autoReconnect)

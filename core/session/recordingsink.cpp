@@ -39,6 +39,8 @@ RecordingSink::RecordingSink(QObject *parent) : QObject(parent), m_timer(this)
 
 bool RecordingSink::open(const QString &csvPath, const RecordingMetadata &metadata)
 {
+    m_gap.reset();
+    m_gaps = 0;
     if (!m_writer.open(csvPath, metadata)) {
         report(m_writer.error());
         return false;
@@ -66,11 +68,61 @@ void RecordingSink::reportDisarmed(const QString &csvPath)
 
 void RecordingSink::close(const QString &error)
 {
+    if (m_gap) {
+        addEvent(gapText() % u"; the recording ended before the device came back");
+        m_gap.reset();
+    }
     m_timer.stop();
     const bool wasOpen = m_writer.isOpen();
     m_writer.close();
     if (wasOpen || !error.isEmpty())
         report(error.isEmpty() ? m_writer.error() : error);
+}
+
+void RecordingSink::suspend(double lostAfter_s, const StateDetail &why)
+{
+    if (!m_writer.isOpen() || m_gap)
+        return;
+    m_gap = Gap{lostAfter_s, why};
+    ++m_gaps;
+    report({});
+}
+
+void RecordingSink::resume(const QStringList &changes, bool unread)
+{
+    if (!m_gap)
+        return;
+    addEvent(gapText() % u"; recording resumed" %
+             (unread ? QStringLiteral("; the device's parameters were not read back") : QString()));
+    for (const QString &change : changes)
+        addEvent(change % u" (after the gap)");
+    m_gap.reset();
+    report({});
+}
+
+void RecordingSink::closeForOtherDevice(const QStringList &differences)
+{
+    if (!m_gap)
+        return;
+    addEvent(gapText() % u"; a different device answered (" % differences.join(u"; ") %
+             u"), so the recording ended at the loss");
+    m_gap.reset();
+    close();
+}
+
+QString RecordingSink::gapText() const
+{
+    QString why;
+    switch (m_gap->why.kind) {
+    case StateDetail::Kind::Silent:
+        why = u"no data for " % QString::number(m_gap->why.silenceMs) % u" ms";
+        break;
+    default:
+        why = u"port error: " % m_gap->why.error;
+        break;
+    }
+    return u"gap: link lost after t_s " % compactNumberText(m_gap->lostAfter_s) % u" (" % why %
+           u')';
 }
 
 void RecordingSink::append(const SampleBatch &batch)
@@ -125,6 +177,8 @@ void RecordingSink::referenceReset()
 void RecordingSink::report(const QString &error)
 {
     RecordingStatus status = m_writer.status();
+    status.waiting = status.active && m_gap.has_value();
+    status.gaps = m_gaps;
     if (!error.isEmpty())
         status.error = error;
     Q_EMIT statusChanged(status);

@@ -4,11 +4,14 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "session/sessiontypes.h"
 #include "telemetry/recordingwriter.h"
 #include "telemetry/sample.h"
 
 #include <QObject>
 #include <QTimer>
+
+#include <optional>
 
 namespace hatpic {
 
@@ -25,8 +28,22 @@ public:
     void reportArmed(const QString &csvPath, const QString &trigger);
     //! Reports that an armed recording was called off.
     void reportDisarmed(const QString &csvPath);
-    //! Closes; reports the final status when it was open or when `error` is given.
+    //! Closes; reports the final status when it was open or when `error` is given. A
+    //! recording that waits after a loss lists its gap, ended by the close, in the .json.
     void close(const QString &error = {});
+
+    // A link loss inside a recording (recording.md, "Link losses"). Event texts, as above.
+    //! The link was lost after the row at `lostAfter_s` [s], `why` (StateDetail of the loss):
+    //! the files stay open, no row comes until resume(), and the status says `waiting`.
+    void suspend(double lostAfter_s, const StateDetail &why);
+    bool isWaiting() const { return m_gap.has_value(); }
+    //! The same device is back: the next row carries the gap's event, then `changes` (what the
+    //! device holds differently from before the loss), or says its parameters were not read
+    //! back (`unread`).
+    void resume(const QStringList &changes, bool unread);
+    //! A different device answered (`differences`): the recording closes at the loss, and its
+    //! .json says why.
+    void closeForOtherDevice(const QStringList &differences);
     //! Appends the samples; a write error closes the recording (and reports it).
     void append(const SampleBatch &batch);
     //! Attaches an event to the next sample (nothing when closed). The events' text is part
@@ -50,9 +67,18 @@ private:
     void onFlushTick();
     //! Emits the writer's status, with `error` when given.
     void report(const QString &error);
+    //! "gap: link lost after t_s 12.5 (port error: …)", the start of every gap event.
+    QString gapText() const;
 
+    struct Gap
+    {
+        double lostAfter_s = 0; //!< t_s of the last row before the loss [s]
+        StateDetail why;
+    };
     RecordingWriter m_writer;
     QTimer m_timer;
+    std::optional<Gap> m_gap; //!< while the link is lost
+    quint32 m_gaps = 0;       //!< link losses in this recording
 };
 
 } // namespace hatpic

@@ -16,19 +16,81 @@ SamplePipeline::SamplePipeline(QObject *parent)
     connect(&m_recording, &RecordingSink::aboutToFlush, this, &SamplePipeline::flush);
 }
 
-void SamplePipeline::connectionStarted()
+void SamplePipeline::connectionStarted(const DeviceInfo &device)
 {
     m_paramsKnown = false;
     m_effectsKnown = false;
     m_effects = {};
     m_builder.markDiscontinuity();
     m_batchTimer.start();
+    if (!m_gap)
+        return;
+    if (!m_recording.isOpen()) {
+        m_gap.reset();
+        return;
+    }
+    // One file, one device: its metadata names the device and its tau_limit.
+    if (const QStringList differences = describeDeviceChange(m_recordingDevice, device);
+        !differences.isEmpty()) {
+        m_gap.reset();
+        m_stopAt.reset();
+        m_pendingDuration_s = 0;
+        m_recording.closeForOtherDevice(differences);
+        Q_EMIT notice({SessionNotice::Kind::RecordingClosedOtherDevice, differences});
+        return;
+    }
+    // Rows resume once the device has told what it holds, so the first row after the gap
+    // carries every change against the parameters before it.
+    m_gap->reconnected = true;
+    m_gap->paramsPending = device.canSetParams();
+    m_gap->effectsPending = device.hasEffects();
+    m_gap->resumeBy.reset();
+    m_gap->changes.clear();
+    resumeIfReady();
 }
 
-void SamplePipeline::connectionEnded()
+void SamplePipeline::connectionEnded(const StateDetail &lost, bool reconnecting)
 {
     flush();
     m_builder.markDiscontinuity();
+    if (m_armed) { // an armed recording waits for no lost device
+        const QString path = m_armed->csvPath;
+        m_armed.reset();
+        m_recording.reportDisarmed(path);
+    }
+    if (!m_recording.isOpen())
+        return;
+    if (!reconnecting) {
+        stopRecording();
+        Q_EMIT notice({SessionNotice::Kind::RecordingClosedByLoss, {}});
+        return;
+    }
+    if (m_gap) { // lost again before the rows resumed: the same gap goes on
+        m_gap->reconnected = false;
+        return;
+    }
+    Gap gap;
+    gap.params = m_builder.deviceParams();
+    if (m_effectsKnown)
+        gap.effects = m_effects;
+    m_gap = gap;
+    m_recording.suspend(m_recent.empty() ? 0.0 : m_recent.back().t_s, lost);
+    Q_EMIT notice({SessionNotice::Kind::RecordingWaitsForDevice, {}});
+}
+
+void SamplePipeline::resumeIfReady()
+{
+    if (m_gap && m_gap->reconnected && !m_gap->paramsPending && !m_gap->effectsPending)
+        resume(false);
+}
+
+void SamplePipeline::resume(bool unread)
+{
+    flush(); // the samples waiting came before the device's state was known: not recorded
+    const QStringList changes = m_gap->changes;
+    m_gap.reset();
+    m_recording.resume(changes, unread);
+    Q_EMIT notice({SessionNotice::Kind::RecordingResumed, {}});
 }
 
 void SamplePipeline::stop()
@@ -39,6 +101,12 @@ void SamplePipeline::stop()
 void SamplePipeline::push(const Sample &sample)
 {
     m_listeners.dispatch(sample);
+    if (m_gap && m_gap->reconnected) {
+        if (!m_gap->resumeBy)
+            m_gap->resumeBy = sample.t_s + kResumeWait_s;
+        else if (sample.t_s > *m_gap->resumeBy)
+            resume(true); // the read-back never came: record without it, and say so
+    }
     if (m_armed && m_armed->trigger.feed(sample))
         fire(sample.t_s);
     keepRecent(sample);
@@ -69,7 +137,7 @@ void SamplePipeline::keepRecent(const Sample &sample)
 
 void SamplePipeline::record(const SampleBatch &batch)
 {
-    if (!m_recording.isOpen() || batch.isEmpty())
+    if (!m_recording.isOpen() || m_gap || batch.isEmpty())
         return;
     if (m_pendingDuration_s > 0) {
         m_stopAt = batch.constFirst().t_s + m_pendingDuration_s;
@@ -111,9 +179,16 @@ void SamplePipeline::paramsReceived(const DeviceParams &params)
         flush();
         m_recording.paramsReadBack(held, params);
     }
+    if (m_gap && m_gap->reconnected && m_gap->paramsPending) {
+        flush();
+        if (!sameOnWire(m_gap->params, params))
+            m_gap->changes << describeParamChange(m_gap->params, params);
+        m_gap->paramsPending = false;
+    }
     m_builder.setDeviceParams(params);
     m_paramsKnown = true;
     Q_EMIT deviceParamsChanged(params);
+    resumeIfReady();
 }
 
 void SamplePipeline::effectsApplied(const EffectParams &effects)
@@ -129,9 +204,16 @@ void SamplePipeline::effectsReceived(const EffectParams &effects)
         flush();
         m_recording.effectsReadBack(m_effects, effects);
     }
+    if (m_gap && m_gap->reconnected && m_gap->effectsPending) {
+        flush();
+        if (m_gap->effects && !sameOnWire(*m_gap->effects, effects))
+            m_gap->changes << describeEffectChange(*m_gap->effects, effects);
+        m_gap->effectsPending = false;
+    }
     m_effects = effects;
     m_effectsKnown = true;
     Q_EMIT deviceEffectsChanged(effects);
+    resumeIfReady();
 }
 
 bool SamplePipeline::setHostParams(const HostParams &host)
@@ -177,8 +259,10 @@ void SamplePipeline::fire(std::optional<double> anchor)
         meta.effects = m_effects;
     meta.host = m_builder.hostParams();
     meta.source = armed.source;
+    m_gap.reset();
     if (!m_recording.open(armed.csvPath, meta))
         return;
+    m_recordingDevice = armed.device;
     m_stopAt.reset();
     m_pendingDuration_s = 0;
     if (anchor && plan.preTrigger_s > 0) {
@@ -211,6 +295,7 @@ void SamplePipeline::stopRecording()
     flush();
     m_stopAt.reset();
     m_pendingDuration_s = 0;
+    m_gap.reset();
     m_recording.close();
 }
 

@@ -29,6 +29,9 @@ public:
     //! Recent samples kept for a recording's pre-trigger span: those of the last
     //! RecordingPlan::kMaxPreTrigger_s, and never more than this many.
     static constexpr qsizetype kMaxRecentSamples = 50'000;
+    //! After a reconnect, a waiting recording resumes at the latest this long after the first
+    //! sample, even when the device's parameters were not read back [s].
+    static constexpr double kResumeWait_s = 2.0;
 
     explicit SamplePipeline(QObject *parent = nullptr);
 
@@ -43,10 +46,14 @@ public:
         m_builder.clear();
         m_recent.clear();
     }
-    //! A connection began: its first PARAMS sets the copy without an event; batches flow.
-    void connectionStarted();
-    //! The link is gone: hands on the samples waiting; t_s follows host time across the gap.
-    void connectionEnded();
+    //! A connection to `device` began: its first PARAMS sets the copy without an event;
+    //! batches flow. A recording that waits after a loss resumes when `device` is the one it
+    //! records (once its parameters and effects are read back), and closes when it is not.
+    void connectionStarted(const DeviceInfo &device);
+    //! The link is gone (`lost`): hands on the samples waiting; t_s follows host time across
+    //! the gap. A recording waits for the device when the session is `reconnecting`, and
+    //! closes when it is not; an armed one is called off.
+    void connectionEnded(const StateDetail &lost, bool reconnecting);
     //! Stops the batch timer (shutdown).
     void stop();
 
@@ -75,6 +82,8 @@ public:
     //! Closes the recording, or calls off an armed one.
     void stopRecording();
     bool isRecording() const { return m_recording.isOpen(); }
+    //! Open, but waiting for the device after a loss (no rows are written).
+    bool isWaiting() const { return m_gap.has_value(); }
     bool isArmed() const { return m_armed.has_value(); }
 
 Q_SIGNALS:
@@ -82,8 +91,22 @@ Q_SIGNALS:
     void recordingChanged(const hatpic::RecordingStatus &status);
     void deviceParamsChanged(const hatpic::DeviceParams &params);
     void deviceEffectsChanged(const hatpic::EffectParams &effects);
+    //! The recording waits for, resumed after or closed at a link loss.
+    void notice(const hatpic::SessionNotice &notice);
 
 private:
+    //! A recording across a link loss: what held when the link was lost, and what the device
+    //! that came back has told so far.
+    struct Gap
+    {
+        DeviceParams params;                 //!< the device's parameters at the loss
+        std::optional<EffectParams> effects; //!< its effect block at the loss, when known
+        bool reconnected = false;
+        bool paramsPending = false;     //!< the device that came back has not sent PARAMS yet
+        bool effectsPending = false;    //!< …nor EFFECTS (a device with effects)
+        std::optional<double> resumeBy; //!< t_s after which rows resume regardless [s]
+        QStringList changes; //!< what the device holds differently now ("K_max 0.6 → 0.4")
+    };
     struct Armed
     {
         QString csvPath;
@@ -97,6 +120,10 @@ private:
     void keepRecent(const Sample &sample);
     //! Appends to the recording up to its end time, and closes it there.
     void record(const SampleBatch &batch);
+    //! The device that came back has told its parameters (and effects): rows resume.
+    void resumeIfReady();
+    //! Rows resume after the gap; `unread`: without the device's parameters read back.
+    void resume(bool unread);
 
     SampleBuilder m_builder;
     SampleListeners m_listeners;
@@ -108,6 +135,8 @@ private:
     bool m_effectsKnown = false; //!< an EFFECTS arrived on this connection
     std::deque<Sample> m_recent;
     std::optional<Armed> m_armed;
+    DeviceInfo m_recordingDevice;   //!< the device the open recording records
+    std::optional<Gap> m_gap;       //!< the open recording waits after a link loss
     std::optional<double> m_stopAt; //!< the recording closes after its last sample here [s]
     double m_pendingDuration_s = 0; //!< a length to count from the first sample recorded [s]
 };

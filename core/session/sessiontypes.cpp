@@ -98,6 +98,25 @@ QString describeEffectChange(const EffectParams &from, const EffectParams &to)
     return parts.join(QStringLiteral("; "));
 }
 
+QStringList describeDeviceChange(const DeviceInfo &from, const DeviceInfo &to)
+{
+    QStringList parts;
+    auto differ = [&parts](QStringView name, const QString &a, const QString &b) {
+        if (a != b)
+            parts << name % u' ' % a % u" → " % b;
+    };
+    differ(u"protocol", wireProtocolName(from.protocol), wireProtocolName(to.protocol));
+    differ(u"protocol_version", QString::number(from.protocolVersion),
+           QString::number(to.protocolVersion));
+    differ(u"device_id", QString::number(from.deviceId), QString::number(to.deviceId));
+    differ(u"firmware", u'"' % from.firmware % u'"', u'"' % to.firmware % u'"');
+    differ(u"tau_limit", compactNumberText(from.tauLimit), compactNumberText(to.tauLimit));
+    differ(u"max_stream_hz", QString::number(from.maxStreamHz), QString::number(to.maxStreamHz));
+    differ(u"capabilities", QString::number(from.capabilities), QString::number(to.capabilities));
+    differ(u"baud", QString::number(from.baud), QString::number(to.baud));
+    return parts;
+}
+
 void registerSessionMetaTypes()
 {
     qRegisterMetaType<hatpic::Sample>();

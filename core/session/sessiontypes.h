@@ -103,9 +103,17 @@ struct StateDetail
 
 //! "K_max 0.4 → 0.6; N 0.1 → 0.12": every device field that differs as it travels on the wire
 //! (the text of recording events and of the tuner's push markers). Empty when nothing does.
+//! Give it blocks as they travel (a device's, or CommandResult::sent): a value the wire moves
+//! inside its bound (±π) would otherwise read as a change.
 QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
-//! "detent_strength 0 → 0.05": the same for the effect block (float32 on the wire).
+//! "detent_strength 0 → 0.05": the same for the effect block (float32 on the wire; give it a
+//! device's block or CommandResult::effectsSent).
 QString describeEffectChange(const EffectParams &from, const EffectParams &to);
+//! What tells two devices apart, as names and values ("device_id 1397312817 → 42",
+//! "tau_limit 0.44 → 0.3"): protocol, protocol version, device id, firmware, tau_limit,
+//! max_stream_hz, capabilities and baud, i.e. what a recording's metadata says of its device.
+//! Empty: the same device as far as it tells (any two legacy devices are).
+QStringList describeDeviceChange(const DeviceInfo &from, const DeviceInfo &to);
 
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
@@ -163,12 +171,23 @@ struct CommandResult
 struct SessionNotice
 {
     enum class Kind {
-        RecordingNeedsDevice,  //!< startRecording() while not connected: nothing was opened
-        RecordingClosedByLoss, //!< the device was lost, so the recording was closed (files whole)
-        HostParamsRefused,     //!< setHostParams() refused: `problems`; the old ones stay
+        RecordingNeedsDevice, //!< startRecording() while not connected: nothing was opened
+        //! the device was lost and the session does not reconnect: the recording was closed
+        //! (files whole)
+        RecordingClosedByLoss,
+        //! the device was lost while recording: the file stays open and the rows resume in it
+        //! when the same device is back (RecordingStatus::waiting)
+        RecordingWaitsForDevice,
+        RecordingResumed, //!< the same device is back: rows resume, the gap is an event
+        //! a different device answered after the loss: the recording was closed at the loss;
+        //! `problems` says what differs (describeDeviceChange)
+        RecordingClosedOtherDevice,
+        HostParamsRefused, //!< setHostParams() refused: `problems`; the old ones stay
     };
     Kind kind = Kind::RecordingNeedsDevice;
-    QStringList problems; //!< HostParamsRefused: the violations, as core/model words them
+    //! HostParamsRefused: the violations, as core/model words them; RecordingClosedOtherDevice:
+    //! what differs
+    QStringList problems;
 };
 
 //! A result for `command` with `status` and `reason`; the other fields at their defaults.

@@ -49,6 +49,9 @@ struct RecordingStatus
     QString error;             //!< why the recording stopped, if it failed
     bool armed = false;        //!< waiting for its trigger (no file written yet)
     QString trigger;           //!< what an armed recording waits for (triggerEventText)
+    //! Open, but the link is lost: rows resume in the same file when the device is back.
+    bool waiting = false;
+    quint32 gaps = 0; //!< link losses inside this recording so far (each an event in it)
 };
 
 //! NAME.csv → NAME.json: where a recording's metadata lives.

@@ -400,6 +400,15 @@ void RecordingWriter::close()
         return;
     if (!d->writeOut())
         return;
+    // An event that no row followed (the recording closed first: during a link loss, right
+    // after a push) is kept in the JSON, at the time of the last row.
+    if (!d->pendingEvent.isEmpty()) {
+        if (d->events.size() < kMaxMetadataEvents)
+            d->events.append({d->samples > 0 ? d->lastT : d->lastSeenT, d->pendingEvent});
+        else
+            ++d->eventsNotListed;
+        d->pendingEvent.clear();
+    }
     d->csv.close();
     d->open = false;
     d->writeMetadata(true);

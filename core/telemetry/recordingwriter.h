@@ -41,7 +41,8 @@ public:
     bool append(const SampleBatch &batch);
     //! Pushes buffered rows to disk and rewrites the .json when events changed.
     bool flush();
-    //! Flushes and closes both files; safe to call twice.
+    //! Flushes and closes both files; safe to call twice. An event added since the last row
+    //! (no row followed it) is listed in the .json only, at the last row's t_s.
     void close();
 
     QString error() const;

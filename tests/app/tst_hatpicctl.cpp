@@ -1009,8 +1009,12 @@ void TestHatpicCtl::ptySaveStorageError()
     sim.terminate();
     QVERIFY(sim.waitForFinished(10000));
     QVERIFY2(save.code == 2, qPrintable(describe(save)));
-    QVERIFY2(isOneLine(save.err), qPrintable(describe(save)));
-    QVERIFY2(save.err.contains("STORAGE_ERROR"), qPrintable(describe(save)));
+    // Two lines: the device's reason (its LOG, with the OS error), then the outcome.
+    const QList<QByteArray> lines = save.err.trimmed().split('\n');
+    QVERIFY2(lines.size() == 2, qPrintable(describe(save)));
+    QVERIFY2(lines.at(0).contains("SAVE_PARAMS failed") && lines.at(0).contains("no-such-folder"),
+             qPrintable(describe(save)));
+    QVERIFY2(lines.at(1).contains("STORAGE_ERROR"), qPrintable(describe(save)));
     QVERIFY(save.out.isEmpty());
 #endif
 }

@@ -72,6 +72,16 @@ QString SessionText::notice(const SessionNotice &notice)
         return tr("Not connected: a recording starts once a device is connected.");
     case SessionNotice::Kind::RecordingClosedByLoss:
         return tr("Recording closed: the device was lost.");
+    case SessionNotice::Kind::RecordingWaitsForDevice:
+        return tr("The device was lost while recording: the recording stays open and goes on "
+                  "in the same file when the device is back.");
+    case SessionNotice::Kind::RecordingResumed:
+        return tr("The device is back: recording resumed in the same file; the gap is marked "
+                  "in it.");
+    case SessionNotice::Kind::RecordingClosedOtherDevice:
+        return tr("Recording ended at the link loss: a different device answered (%1). Start a "
+                  "new recording to record it.")
+            .arg(notice.problems.join(u"; "));
     case SessionNotice::Kind::HostParamsRefused:
         return tr("Host parameters refused: %1").arg(notice.problems.join(u"; "));
     }

@@ -42,11 +42,9 @@ void DeviceParameterLink::onPushRequested(const DeviceParams &params,
 {
     Push push;
     push.before = m_client->deviceParams();
-    push.pushed = params;
     push.id = m_client->pushParams(params);
     if (effects) {
         push.effectsBefore = m_client->deviceEffects();
-        push.effectsPushed = *effects;
         push.effectsId = m_client->pushEffects(*effects);
     }
     m_push = push;
@@ -123,11 +121,15 @@ void DeviceParameterLink::finishPush()
         !push.result->ok() || !push.effectsResult ? *push.result : *push.effectsResult;
     m_editor->pushFinished(result);
     if (result.ok()) {
+        // What changed is what the device held against what travelled (float32, bounds kept
+        // by the session's one rounding: `sent`), never the editor's doubles: the walls' ±π
+        // travel as the float just inside π, which the device already held.
         QStringList changes;
-        if (const QString p = describeParamChange(push.before, push.pushed); !p.isEmpty())
+        if (const QString p = describeParamChange(push.before, push.result->sent); !p.isEmpty())
             changes << p;
         if (push.effectsResult) {
-            const QString fx = describeEffectChange(push.effectsBefore, push.effectsPushed);
+            const QString fx =
+                describeEffectChange(push.effectsBefore, push.effectsResult->effectsSent);
             if (!fx.isEmpty())
                 changes << fx;
         }

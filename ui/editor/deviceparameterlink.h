@@ -62,11 +62,9 @@ private:
     struct Push
     {
         quint64 id = 0;
-        DeviceParams before; //!< the device's values when the push was sent
-        DeviceParams pushed;
+        DeviceParams before;   //!< the device's values when the push was sent
         quint64 effectsId = 0; //!< 0: no SET_EFFECTS
         EffectParams effectsBefore;
-        EffectParams effectsPushed;
         std::optional<CommandResult> result;        //!< SET_PARAMS' answer, once there
         std::optional<CommandResult> effectsResult; //!< SET_EFFECTS' answer, once there
     };

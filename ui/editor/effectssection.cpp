@@ -161,6 +161,13 @@ void EffectsSection::setFigures(const EffectParams &effects, const DeviceParams 
 {
     m_tauLimit = tauLimit;
     m_controlRate = controlRate;
+    // The cue's frequency must stay below half the control rate: typing more is refused with
+    // that rule, rather than clamped to a bound that breaks it too.
+    const double tableMax = kVibrationFields[1].upper.value;
+    if (controlRate > 0 && controlRate / 2 <= tableMax)
+        m_vibrationFields[1]->setMaximum(controlRate / 2, true);
+    else
+        m_vibrationFields[1]->setMaximum(tableMax, false);
     revalidateVibration();
     if (!valid) {
         m_figures->setText(tr("Figures: — (fix the invalid fields first)"));

@@ -314,6 +314,7 @@ void ParameterEditor::revalidate()
 {
     QHash<QString, QStringList> perField;
     QStringList all;
+    QStringList fields;
     std::vector<Violation> violations = validate(m_params);
     for (Violation &v : validate(m_host))
         violations.push_back(std::move(v));
@@ -323,6 +324,7 @@ void ParameterEditor::revalidate()
         const QString text = QString::fromStdString(v.message());
         perField[QString::fromStdString(v.field)] << text;
         all << text;
+        fields << QString::fromStdString(v.field);
     }
     const QString rejected = m_sync.rejectedField();
     if (!rejected.isEmpty() && !perField.contains(rejected))
@@ -331,6 +333,7 @@ void ParameterEditor::revalidate()
         it.value()->setProblem(perField.value(it.key()).join(u'\n'));
 
     m_problems = all;
+    m_problemFields = fields;
     const bool valid = all.isEmpty();
     if (valid != m_valid) {
         m_valid = valid;
@@ -387,6 +390,7 @@ void ParameterEditor::refreshActions()
     m_pushAction->setToolTip(
         m_valid ? tr("Send the edited parameters to the device (Ctrl+Return)")
                 : tr("Fix the invalid fields first:\n%1").arg(m_problems.join(u'\n')));
+    m_syncBar->setProblems(m_problems);
     m_readAction->setEnabled(m_sync.canPush() && !pushing);
     const auto &device = m_sync.device();
     const auto &fx = m_sync.deviceEffects();

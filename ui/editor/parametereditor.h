@@ -21,6 +21,7 @@ class QAction;
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QScrollArea;
 class QTimer;
 class QUndoStack;
 
@@ -145,6 +146,8 @@ private:
     void refreshDerived();
     void refreshSync();
     void refreshActions();
+    //! Brings the field of the first broken rule into sight, with the cursor in it.
+    void showFirstProblem();
 
     DeviceParams m_params;
     HostParams m_host;
@@ -153,6 +156,7 @@ private:
     double m_controlRate; //!< [Hz]
     bool m_valid = true;
     QStringList m_problems;
+    QStringList m_problemFields; //!< the field of each of m_problems
     SyncState m_syncState = SyncState::NotConnected;
     QString m_syncText;
 
@@ -171,6 +175,7 @@ private:
     QComboBox *m_mode = nullptr;
     QCheckBox *m_refDeadzone = nullptr;
     SyncBar *m_syncBar = nullptr;
+    QScrollArea *m_scroll = nullptr; //!< the fields
     DerivedFiguresView *m_derived = nullptr;
     EffectsSection *m_effectsSection = nullptr;
     QAction *m_pushAction = nullptr;

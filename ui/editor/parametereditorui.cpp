@@ -73,10 +73,11 @@ void ParameterEditor::buildUi()
     ParameterField::alignColumns(m_fields.values() + m_effectsSection->vibrationFields(),
                                  content->findChildren<QLabel *>(u"label_mode"_s));
 
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(content);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setObjectName(u"parameterScroll"_s);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    m_scroll->setWidget(content);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
@@ -84,9 +85,21 @@ void ParameterEditor::buildUi()
     m_syncBar = new SyncBar(m_undo, m_readAction, m_revertAction, m_pushAction, this);
     connect(m_syncBar, &SyncBar::livePushToggled, this, &ParameterEditor::setLivePush);
     connect(m_syncBar, &SyncBar::angleInDegreesToggled, this, &ParameterEditor::setAngleInDegrees);
+    connect(m_syncBar, &SyncBar::showProblemRequested, this, &ParameterEditor::showFirstProblem);
     layout->addWidget(m_syncBar);
     layout->addWidget(derivedBox);
-    layout->addWidget(scroll, 1);
+    layout->addWidget(m_scroll, 1);
+}
+
+void ParameterEditor::showFirstProblem()
+{
+    ParameterField *field =
+        m_problemFields.isEmpty() ? nullptr : m_fields.value(m_problemFields[0]);
+    if (!field)
+        return;
+    m_scroll->ensureWidgetVisible(field->spinBox());
+    field->spinBox()->setFocus(Qt::OtherFocusReason);
+    field->spinBox()->selectAll();
 }
 
 QWidget *ParameterEditor::buildDeviceGroups()

@@ -81,6 +81,7 @@ ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject 
     m_message->setWordWrap(true);
     m_message->hide();
 
+    m_value = spec.minimum;
     updateSpinRange();
     setValue(spec.minimum);
 
@@ -99,6 +100,8 @@ ParameterField::ParameterField(const Spec &spec, QWidget *parentWidget, QObject 
     });
     connect(m_spin, &QAbstractSpinBox::editingFinished, this, &ParameterField::editFinished);
     connect(m_spin, &ScientificSpinBox::clamped, this, &ParameterField::showClamp);
+    connect(m_spin, &ScientificSpinBox::refused, this, &ParameterField::showRefusal);
+    connect(m_spin, &ScientificSpinBox::notANumber, this, &ParameterField::showNotANumber);
     connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
         const double v = sliderToValue(position);
         if (v == m_value)
@@ -182,11 +185,12 @@ int ParameterField::valueToSlider(double value) const
 
 void ParameterField::setValue(double value)
 {
-    m_value = value;
-    {
-        const QSignalBlocker block(m_spin);
-        m_spin->setValue(value * displayScale());
+    if (value != m_value && !m_note.isEmpty()) {
+        m_note.clear(); // the note spoke of an entry this value replaces
+        updateMessage();
     }
+    m_value = value;
+    updateSpinRange(); // the range follows the value: shown as it is, never a bound instead
     updateSlider();
     updateMarker();
 }
@@ -203,9 +207,15 @@ void ParameterField::updateSlider()
 
 void ParameterField::updateSpinRange()
 {
+    // The spec's range, widened to a value set from outside the rules (a run-time maximum
+    // that fell below it, say): the field shows what it holds, and its message the rule.
     const double scale = displayScale();
+    const bool finite = std::isfinite(m_value);
+    const double low = finite ? std::min(m_spec.minimum, m_value) : m_spec.minimum;
+    const double high = finite ? std::max(m_spec.maximum, m_value) : m_spec.maximum;
     const QSignalBlocker block(m_spin);
-    m_spin->setRange(m_spec.minimum * scale, m_spec.maximum * scale);
+    m_spin->setRange(low * scale, high * scale);
+    m_spin->setExclusiveBounds(m_spec.minimumExclusive, m_spec.maximumExclusive);
     m_spin->setSingleStep(m_spec.step * scale);
     m_spin->setValue(m_value * scale);
 }
@@ -243,22 +253,62 @@ void ParameterField::setProblem(const QString &problem)
                                  u"\">"_s + problem + u"</span>"_s);
 }
 
+void ParameterField::setMaximum(double maximum, bool exclusive)
+{
+    if (maximum == m_spec.maximum && exclusive == m_spec.maximumExclusive)
+        return;
+    m_spec.maximum = maximum;
+    m_spec.maximumExclusive = exclusive;
+    updateSpinRange();
+}
+
+QString ParameterField::unitSuffix() const
+{
+    return m_spec.angle && m_degrees ? QStringLiteral("°") : u" "_s + m_spec.unit;
+}
+
 void ParameterField::showClamp(double typed, double bound)
 {
     // Every field treats out-of-range typing alike: the nearest bound, said out loud.
     const bool above = typed > bound;
-    const QString unit = m_spec.angle && m_degrees ? QStringLiteral("°") : u" "_s + m_spec.unit;
     m_note =
         tr("%1: %2 is %3 the %4 %5%6, set to %5")
             .arg(m_spec.symbol, QString::number(typed, 'g', 6), above ? tr("above") : tr("below"),
-                 above ? tr("maximum") : tr("minimum"), m_spin->textFromValue(bound), unit);
+                 above ? tr("maximum") : tr("minimum"), m_spin->textFromValue(bound), unitSuffix());
+    updateMessage();
+}
+
+void ParameterField::showRefusal(double typed, double bound)
+{
+    // The bound breaks the rule too (N > 0): no value near what was typed is valid, so the
+    // field keeps its value and says which rule the typed one broke.
+    const bool above = typed > bound;
+    const double rule = (above ? m_spec.maximum : m_spec.minimum) * displayScale();
+    m_note =
+        tr("%1: %2 is refused: %1 must be %3 %4%5; it stays %6")
+            .arg(m_spec.symbol, QString::number(typed, 'g', 6),
+                 above ? QStringLiteral("<") : QStringLiteral(">"), m_spin->textFromValue(rule),
+                 unitSuffix(), m_spin->textFromValue(m_spin->value()) + unitSuffix());
+    updateMessage();
+}
+
+void ParameterField::showNotANumber(const QString &typed)
+{
+    m_note = tr("%1: “%2” is not a number; it stays %3")
+                 .arg(m_spec.symbol, typed, m_spin->textFromValue(m_spin->value()) + unitSuffix());
     updateMessage();
 }
 
 void ParameterField::updateMessage()
 {
-    // A broken rule outranks the clamp note: it blocks the push.
-    const QString text = m_problem.isEmpty() ? m_note : m_problem;
+    // A broken rule comes first (it blocks the push), and the note on the entry after it: the
+    // rule names the value the field holds, the note what became of the text typed.
+    QStringList lines;
+    if (!m_problem.isEmpty())
+        lines << m_problem;
+    if (!m_note.isEmpty())
+        lines << m_note;
+    const QString text = lines.join(u'\n');
     m_message->setStyleSheet(m_problem.isEmpty() ? kClampStyle : kProblemStyle);
     m_message->setText(text);
     m_message->setVisible(!text.isEmpty());
@@ -280,9 +330,7 @@ bool ParameterField::differsFromDevice() const
 
 QString ParameterField::numberText(double value) const
 {
-    const double scale = displayScale();
-    const QString unit = m_spec.angle && m_degrees ? QStringLiteral("°") : u" "_s + m_spec.unit;
-    return QString::number(value * scale, 'g', 6) + unit;
+    return QString::number(value * displayScale(), 'g', 6) + unitSuffix();
 }
 
 void ParameterField::updateMarker()

@@ -30,7 +30,9 @@ public:
         QString toolTip;    //!< longer explanation
         double minimum = 0; //!< spin box range, SI (per-field rules; cross-field rules aside)
         double maximum = 1;
-        double sliderMin = 0; //!< practical slider range, SI
+        bool minimumExclusive = false; //!< the rule is "> minimum": typing below it is refused
+        bool maximumExclusive = false; //!< the rule is "< maximum": typing above it is refused
+        double sliderMin = 0;          //!< practical slider range, SI
         double sliderMax = 1;
         bool logSlider = false;    //!< slider moves in decades (for D_adm, M_adm)
         bool relativeStep = false; //!< spin arrows step the 2nd significant digit
@@ -62,8 +64,13 @@ public:
     //! The rule this field breaks (from validate()), or empty when fine.
     void setProblem(const QString &problem);
     QString problem() const { return m_problem; }
-    //! What the last out-of-range entry was clamped to, in words; empty when none.
+    //! What became of the last entry the field could not take as typed, in words (clamped to
+    //! a bound, refused beyond an exclusive one, not a number); empty when none. It goes with
+    //! the next edit, and with a value set from outside (undo, Revert, a profile).
     QString clampNote() const { return m_note; }
+    //! A maximum known only at run time (the vibration test's f < half the control rate):
+    //! `exclusive` when the rule is "< maximum".
+    void setMaximum(double maximum, bool exclusive);
 
     //! The device's value for the diff marker; nullopt hides the marker.
     void setDeviceValue(std::optional<double> deviceValue);
@@ -88,6 +95,9 @@ private:
     void updateMarker();
     void updateMessage();
     void showClamp(double typed, double bound);
+    void showRefusal(double typed, double bound);
+    void showNotANumber(const QString &typed);
+    QString unitSuffix() const; //!< " N·m/rad", or "°" for an angle shown in degrees
     QString numberText(double value) const;
 
     Spec m_spec;

@@ -34,6 +34,9 @@ ParameterField::Spec fromTable(const FieldSpec<Params> &f, double low, double hi
     s.toolTip = tr(explanation) + u"<br>" + tr("Valid: %1.").arg(text(rangeText(f)));
     s.minimum = low;
     s.maximum = high;
+    // A bound the rule excludes is no value to clamp to (N > 0): typing beyond it is refused.
+    s.minimumExclusive = f.lower.present && !f.lower.inclusive && low == f.lower.value;
+    s.maximumExclusive = f.upper.present && !f.upper.inclusive && high == f.upper.value;
     s.angle = f.angle;
     return s;
 }

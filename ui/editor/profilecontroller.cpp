@@ -33,10 +33,12 @@ ProfileController::ProfileController(ParameterEditor *editor, QWidget *dialogPar
                                      QObject *parent)
     : QObject(parent), m_editor(editor), m_dialogParent(dialogParent)
 {
+    // Enter (the default button) cancels: neither the file is overwritten nor the edits lost
+    // by a key pressed without reading the question.
     m_question = [this](const QString &text) {
         return QMessageBox::question(m_dialogParent, tr("Unsaved changes"), text,
                                      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
-                                     QMessageBox::Save);
+                                     QMessageBox::Cancel);
     };
 
     // Slot A starts as the editor's current values, untitled and unmodified.

@@ -91,20 +91,25 @@ double ScientificSpinBox::valueFromText(const QString &text) const
     return ok ? v : value();
 }
 
+void ScientificSpinBox::setExclusiveBounds(bool lower, bool upper)
+{
+    m_lowerExclusive = lower;
+    m_upperExclusive = upper;
+}
+
 QValidator::State ScientificSpinBox::validate(QString &input, int &pos) const
 {
     Q_UNUSED(pos);
     const QString t = input.trimmed();
     if (t.isEmpty())
         return QValidator::Intermediate;
-    for (const QChar c : t) {
-        if (!(c.isDigit() || c == u'.' || c == u'e' || c == u'E' || c == u'-' || c == u'+'))
-            return QValidator::Invalid;
-    }
+    // Anything typed stays in the field as typed ("1e", "-", "0." on the way to a number, and
+    // "4a.b5c" too): a key is never dropped unseen. What is not a number when the field is
+    // left is refused out loud (fixup()).
     bool ok = false;
     const double v = t.toDouble(&ok);
     if (!ok || !std::isfinite(v))
-        return QValidator::Intermediate; // "1e", "-", "0." while typing
+        return QValidator::Intermediate;
     if (t == textFromValue(minimum()) || t == textFromValue(maximum()))
         return QValidator::Acceptable;
     if (v < minimum() || v > maximum())
@@ -114,18 +119,30 @@ QValidator::State ScientificSpinBox::validate(QString &input, int &pos) const
 
 void ScientificSpinBox::fixup(QString &input) const
 {
+    // fixup() is const by Qt's signature; telling the field what became of its text changes
+    // nothing here.
+    auto *self = const_cast<ScientificSpinBox *>(this);
+    const QString typed = input.trimmed();
     bool ok = false;
-    const double v = input.trimmed().toDouble(&ok);
+    const double v = typed.toDouble(&ok);
     if (!ok || !std::isfinite(v)) {
         input = textFromValue(value());
+        if (!typed.isEmpty())
+            Q_EMIT self->notANumber(typed);
         return;
     }
     const double bound = std::clamp(v, minimum(), maximum());
-    input = textFromValue(bound);
-    if (bound != v) {
-        // fixup() is const by Qt's signature; telling the field it clamped changes nothing here.
-        Q_EMIT const_cast<ScientificSpinBox *>(this)->clamped(v, bound);
+    if (bound == v) {
+        input = textFromValue(v);
+        return;
     }
+    if ((v < minimum() && m_lowerExclusive) || (v > maximum() && m_upperExclusive)) {
+        input = textFromValue(value());
+        Q_EMIT self->refused(v, bound);
+        return;
+    }
+    input = textFromValue(bound);
+    Q_EMIT self->clamped(v, bound);
 }
 
 } // namespace hatpic

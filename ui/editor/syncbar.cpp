@@ -74,6 +74,16 @@ SyncBar::SyncBar(QUndoStack *undo, QAction *read, QAction *revert, QAction *push
     buttons->addWidget(pushButton);
     grid->addLayout(buttons, 0, 1, Qt::AlignRight);
 
+    // Push is off while a rule is broken: the reason sits here, next to it, whatever the
+    // panel's scroll position (the field's own message may be below the fold).
+    m_problem = new QLabel(this);
+    m_problem->setObjectName(u"push_problem"_s);
+    m_problem->setWordWrap(true);
+    m_problem->setTextFormat(Qt::RichText);
+    m_problem->hide();
+    connect(m_problem, &QLabel::linkActivated, this, &SyncBar::showProblemRequested);
+    grid->addWidget(m_problem, 1, 0, 1, 2);
+
     auto *options = new QHBoxLayout;
     m_liveCheck = new QCheckBox(tr("Live push while editing"), this);
     m_liveCheck->setObjectName(u"check_live_push"_s);
@@ -88,7 +98,7 @@ SyncBar::SyncBar(QUndoStack *undo, QAction *read, QAction *revert, QAction *push
     options->addWidget(m_liveCheck);
     options->addWidget(m_degreesCheck);
     options->addStretch(1);
-    grid->addLayout(options, 1, 0, 1, 2);
+    grid->addLayout(options, 2, 0, 1, 2);
     grid->setColumnStretch(0, 1);
     // Only the fields are Tab stops; the buttons have shortcuts (Ctrl+Return, Ctrl+Shift+R, …).
     for (QWidget *w : findChildren<QWidget *>()) {
@@ -101,6 +111,27 @@ void SyncBar::setState(SyncState state, const QString &text)
 {
     m_label->setText(u"<span style=\"color:"_s + stateColour(state) + u"\">●</span> <b>"_s +
                      text.toHtmlEscaped() + u"</b>"_s);
+}
+
+void SyncBar::setProblems(const QStringList &problems)
+{
+    m_problem->setVisible(!problems.isEmpty());
+    if (problems.isEmpty()) {
+        m_problem->clear();
+        m_problem->setToolTip({});
+        return;
+    }
+    const QString more =
+        problems.size() > 1 ? tr(" (and %1 more)").arg(problems.size() - 1) : QString();
+    m_problem->setText(u"<span style=\"color:"_s + palette::kProblemText.name() + u"\">"_s +
+                       tr("Cannot push: %1%2").arg(problems.first(), more).toHtmlEscaped() +
+                       u"</span> <a href=\"show\">"_s + tr("Show") + u"</a>"_s);
+    m_problem->setToolTip(problems.join(u'\n'));
+}
+
+QString SyncBar::problemText() const
+{
+    return m_problem->isVisible() ? m_problem->toolTip() : QString();
 }
 
 void SyncBar::setLivePush(bool on)

@@ -22,6 +22,10 @@ public:
             QWidget *parent = nullptr);
 
     void setState(SyncState state, const QString &text);
+    //! Why Push is off, beside it: the first broken rule ("K_min: must be ≤ K_max (0.4), got
+    //! 0.9") and how many more; empty hides the line. Its "Show" link asks for the field.
+    void setProblems(const QStringList &problems);
+    QString problemText() const;
     //! Show a switch without emitting its signal.
     void setLivePush(bool on);
     void setAngleInDegrees(bool on);
@@ -29,9 +33,11 @@ public:
 Q_SIGNALS:
     void livePushToggled(bool on);
     void angleInDegreesToggled(bool on);
+    void showProblemRequested(); //!< the problem line's "Show": bring its field into sight
 
 private:
     QLabel *m_label = nullptr;
+    QLabel *m_problem = nullptr;
     QCheckBox *m_liveCheck = nullptr;
     QCheckBox *m_degreesCheck = nullptr;
 };

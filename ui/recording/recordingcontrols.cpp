@@ -1,5 +1,6 @@
 #include "recording/recordingcontrols.h"
 
+#include "plots/palette.h"
 #include "recording/recordingplandialog.h"
 
 #include <QAction>
@@ -147,6 +148,14 @@ void RecordingControls::onTriggered()
 void RecordingControls::setStatus(const RecordingStatus &status)
 {
     m_status = status;
+    if (status.active || status.armed)
+        m_note.clear(); // a new recording: the last one's note is history
+    refresh();
+}
+
+void RecordingControls::setNote(const QString &note)
+{
+    m_note = note;
     refresh();
 }
 
@@ -166,32 +175,63 @@ void RecordingControls::refresh()
                                        : tr("&Record…"));
     m_planAction->setEnabled(!busy);
     m_label->setText(statusText());
-    m_label->setToolTip(m_status.path);
-    // A red that reads at 3:1 on the light and on the dark theme's window.
-    m_label->setStyleSheet(busy ? QStringLiteral("color: #e53935; font-weight: bold;") : QString());
+    QStringList tip{m_status.path};
+    if (m_status.waiting) {
+        tip << tr("The link to the device is lost: the recording stays open and goes on in the "
+                  "same file when the device is back.");
+    }
+    if (m_status.gaps > 0) {
+        tip << tr("Link losses during this recording: %1. Each gap is an event in the file "
+                  "(\"gap: …\"), on the first row after it.")
+                   .arg(m_status.gaps);
+    }
+    if (!m_note.isEmpty())
+        tip << m_note;
+    m_label->setToolTip(tip.join(u'\n'));
+    // A red that reads at 3:1 on the light and on the dark theme's window; waiting for the
+    // device, and a note on how the last recording ended, in the caution colour.
+    const bool caution = m_status.waiting || (!busy && !m_note.isEmpty());
+    m_label->setStyleSheet(
+        caution ? QStringLiteral("color: %1; font-weight: bold;").arg(palette::kCautionText.name())
+        : busy  ? QStringLiteral("color: #e53935; font-weight: bold;")
+                : QString());
+}
+
+QString RecordingControls::gapsText() const
+{
+    if (m_status.gaps == 0)
+        return {};
+    return m_status.gaps == 1 ? tr(" · 1 gap") : tr(" · %1 gaps").arg(m_status.gaps);
 }
 
 QString RecordingControls::statusText() const
 {
     if (m_status.armed)
         return tr("◌ Armed: waiting for %1").arg(RecordingPlanDialog::describeTrigger(m_plan));
+    QString text;
     if (m_status.active && m_plan.duration_s > 0) {
-        return tr("● %1 of %2 · %3 · %4 samples")
-            .arg(formatDuration(m_status.seconds), formatDuration(m_plan.duration_s),
-                 formatBytes(m_status.bytes))
-            .arg(m_status.samples);
-    }
-    if (m_status.active) {
-        return tr("● %1 · %2 · %3 samples")
-            .arg(formatDuration(m_status.seconds), formatBytes(m_status.bytes))
-            .arg(m_status.samples);
-    }
-    if (!m_status.error.isEmpty())
+        text = tr("● %1 of %2 · %3 · %4 samples")
+                   .arg(formatDuration(m_status.seconds), formatDuration(m_plan.duration_s),
+                        formatBytes(m_status.bytes))
+                   .arg(m_status.samples);
+    } else if (m_status.active) {
+        text = tr("● %1 · %2 · %3 samples")
+                   .arg(formatDuration(m_status.seconds), formatBytes(m_status.bytes))
+                   .arg(m_status.samples);
+    } else if (!m_status.error.isEmpty()) {
         return tr("Recording stopped: %1").arg(m_status.error);
-    if (!m_status.path.isEmpty())
-        return tr("Saved %1 (%2)")
-            .arg(QFileInfo(m_status.path).fileName(), formatBytes(m_status.bytes));
-    return {};
+    } else if (!m_status.path.isEmpty()) {
+        text = tr("Saved %1 (%2)")
+                   .arg(QFileInfo(m_status.path).fileName(), formatBytes(m_status.bytes));
+    } else {
+        return {};
+    }
+    if (m_status.waiting) // short: the banner says the link is lost, the tooltip the rest
+        return text + tr(" · waiting for the device");
+    text += gapsText();
+    if (!m_status.active && !m_note.isEmpty())
+        text += u" — " + m_note;
+    return text;
 }
 
 QString RecordingControls::formatBytes(qint64 bytes)

@@ -50,6 +50,10 @@ public:
 
     void setStatus(const RecordingStatus &status);
     RecordingStatus status() const { return m_status; }
+    //! Why the last recording ended where it did ("Recording ended at the link loss: …"),
+    //! shown with "Saved …" until the next recording starts: it is not a passing message.
+    void setNote(const QString &note);
+    QString note() const { return m_note; }
     void setCanRecord(bool connected);
 
     QAction *recordAction() const { return m_action; }   //!< Ctrl+R, checkable
@@ -69,6 +73,7 @@ private:
     void onTriggered();
     void onPlanTriggered();
     void refresh();
+    QString gapsText() const; //!< " · 2 gaps" after a link loss, else empty
 
     QAction *m_action = nullptr;
     QAction *m_planAction = nullptr;
@@ -79,6 +84,7 @@ private:
     PathChooser m_chooser;
     QString m_directory;
     RecordingStatus m_status;
+    QString m_note;
     bool m_canRecord = false;
 };
 

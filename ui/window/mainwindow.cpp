@@ -26,6 +26,7 @@
 #include "window/shortcutsdialog.h"
 #include "window/statusline.h"
 #include "window/theme.h"
+#include "window/wheelguard.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
 
@@ -61,6 +62,7 @@ const QString kSimPort = QString::fromUtf16(kSimPortName);
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
+    WheelGuard::install(); // the wheel edits only the field that has the focus
     initPlotsResources();
     setWindowIcon(QIcon(QStringLiteral(":/icons/hatpic-tuner.png")));
     createParts();
@@ -213,6 +215,10 @@ void MainWindow::connectParts()
         const QString text = SessionText::notice(notice);
         m_log->appendPlainText(text);
         showStatus(text);
+        // How a recording ended stays beside the record button, not only for a few seconds.
+        if (notice.kind == SessionNotice::Kind::RecordingClosedOtherDevice ||
+            notice.kind == SessionNotice::Kind::RecordingClosedByLoss)
+            m_recording->setNote(text);
     });
 
     // What the plots and the stiffness view show: the feed, live or replay.

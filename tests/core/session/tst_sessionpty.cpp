@@ -173,16 +173,11 @@ void TestSessionPty::killedSimulatorIsLostAndReconnects()
 
     sim->kill();
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), SessionState::Lost, kConnectTimeoutMs);
-    QTRY_VERIFY(!client.recordingStatus().active);
+    // The recording stays open and waits for the device (recording.md, "Link losses").
+    QTRY_VERIFY(client.recordingStatus().waiting);
+    QVERIFY(client.recordingStatus().active);
     QVERIFY(client.recordingStatus().error.isEmpty());
     const double tLost = c.lastT();
-
-    // The recording is complete and readable: every sample received before the loss.
-    const RecordingReadResult r = readRecording(csv);
-    QVERIFY2(r.recording, qPrintable(r.error));
-    QVERIFY(r.warnings.isEmpty());
-    QCOMPARE(quint64(r.recording->samples.size()), client.recordingStatus().samples);
-    QCOMPARE(r.recording->samples.last().t_s, tLost);
 
     // Same --link path, new pty behind it: the session finds it by itself.
     sim = std::make_unique<SimProcess>(QStringList{QStringLiteral("--link"), link});
@@ -196,6 +191,26 @@ void TestSessionPty::killedSimulatorIsLostAndReconnects()
         last = s.t_s;
     }
     QTRY_VERIFY(client.stats().referenceGaps >= 1); // p_ref held across the loss
+
+    // One recording across the restart: every sample received before the loss, then the
+    // rows of the restarted simulator, the first of them marked as the gap's end.
+    QTRY_VERIFY(!client.recordingStatus().waiting);
+    const double tResumed = c.lastT();
+    QTRY_VERIFY_WITH_TIMEOUT(c.after(tResumed) > 100, kConnectTimeoutMs);
+    client.stopRecording();
+    QTRY_VERIFY(!client.recordingStatus().active);
+    QCOMPARE(client.recordingStatus().gaps, 1u);
+    const RecordingReadResult r = readRecording(csv);
+    QVERIFY2(r.recording, qPrintable(r.error));
+    QVERIFY(r.warnings.isEmpty());
+    QCOMPARE(quint64(r.recording->samples.size()), client.recordingStatus().samples);
+    QVERIFY(std::any_of(r.recording->samples.cbegin(), r.recording->samples.cend(),
+                        [&](const Sample &s) { return s.t_s == tLost; }));
+    QVERIFY(r.recording->samples.last().t_s > tResumed);
+    QCOMPARE(r.recording->events.size(), 1);
+    QVERIFY2(r.recording->events.first().text.startsWith(u"gap: link lost after t_s "),
+             qPrintable(r.recording->events.first().text));
+    QVERIFY(r.recording->events.first().t_s > tLost);
 }
 
 QTEST_GUILESS_MAIN(TestSessionPty)

@@ -74,6 +74,7 @@ private Q_SLOTS:
     void anglesFollowTheDegreesSwitch();
     void vibrationTestChecksItsFields();
     void torqueLimitIsTheDevicesFloat();
+    void frequencyBeyondHalfTheRateIsRefused();
     void sectionDoesNotWidenTheEditor();
 
 private:
@@ -326,6 +327,35 @@ void TestEffectsEditor::torqueLimitIsTheDevicesFloat()
     QVERIFY(fx->vibrateButton()->isEnabled());
     fx->setVibration({double(std::nextafter(0.44f, 1.0f)), 50, 1});
     QVERIFY(!fx->vibrateButton()->isEnabled());
+}
+
+void TestEffectsEditor::frequencyBeyondHalfTheRateIsRefused()
+{
+    // Issue 21: 600 Hz typed on a 1 kHz device used to become 500 without a word (and 500
+    // breaks f < 500 as well).
+    ParameterEditor editor;
+    editor.show();
+    editor.setEffectsAvailable(true, QString(), 1000);
+    EffectsSection *fx = editor.effectsSection();
+    fx->setVibration(EffectsSection::kDefaultVibration);
+    ParameterField *frequency = fx->vibrationFields()[1];
+    ScientificSpinBox *box = frequency->spinBox();
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, u"600"_s);
+    QTest::keyClick(box, Qt::Key_Return);
+    QCOMPARE(fx->vibration().frequency, EffectsSection::kDefaultVibration.frequency);
+    QCOMPARE(frequency->clampNote(), u"f: 600 is refused: f must be < 500 Hz; it stays 40 Hz"_s);
+    QVERIFY(!editor.findChild<QLabel *>(u"error_vibrate_frequency"_s)->isHidden());
+    QVERIFY(fx->vibrateButton()->isEnabled()); // the cue is still the valid one it was
+    // A slower device: the rule follows its rate.
+    editor.setEffectsAvailable(true, QString(), 200);
+    box->selectAll();
+    QTest::keyClicks(box, u"150"_s);
+    QTest::keyClick(box, Qt::Key_Return);
+    QCOMPARE(fx->vibration().frequency, EffectsSection::kDefaultVibration.frequency);
+    QVERIFY2(frequency->clampNote().contains(u"f must be < 100 Hz"_s),
+             qPrintable(frequency->clampNote()));
 }
 
 void TestEffectsEditor::sectionDoesNotWidenTheEditor()

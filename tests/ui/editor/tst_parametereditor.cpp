@@ -11,6 +11,7 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
@@ -61,6 +62,11 @@ private Q_SLOTS:
     void nanCannotBeTyped();
     void outOfRangeTypingClampsVisibly_data();
     void outOfRangeTypingClampsVisibly();
+    void lettersAreRefusedOutLoud();
+    void exclusiveBoundRefusesTheEntry_data();
+    void exclusiveBoundRefusesTheEntry();
+    void clampNoteGoesWithRevertAndUndo();
+    void reasonForNoPushSitsBesidePush();
     void pushEmitsExactValues();
     void ctrlReturnPushes();
     void inSyncAfterAckAndReadback_data();
@@ -223,15 +229,147 @@ void TestParameterEditor::outOfRangeTypingClampsVisibly()
     QVERIFY2(note.contains(typed) && note.contains(words), qPrintable(note));
     QLabel *message = label(editor, u"error_"_s + key);
     QVERIFY(!message->isHidden());
-    // A rule the bound breaks (Q_dz = π/2 is not < N) outranks the note: it blocks the push.
+    // A rule the bound breaks (Q_dz = π/2 is not < N) comes first (it blocks the push), the
+    // note after it: the rule names the value held, the note what became of the text typed.
     const QString problem = editor.field(key)->problem();
-    QCOMPARE(message->text(), problem.isEmpty() ? note : problem);
+    QCOMPARE(message->text(), problem.isEmpty() ? note : problem + u'\n' + note);
 
     // The next ordinary edit clears the note.
     box->selectAll();
     QTest::keyClicks(box, u"0.01"_s);
     QTest::keyClick(box, Qt::Key_Enter);
     QVERIFY(editor.field(key)->clampNote().isEmpty());
+}
+
+//! Types `text` into the field `key` and commits it with Enter, as a user does.
+void typeInto(ParameterEditor &editor, const QString &key, const QString &text)
+{
+    ScientificSpinBox *box = spin(editor, key);
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
+}
+
+void TestParameterEditor::lettersAreRefusedOutLoud()
+{
+    ParameterEditor editor;
+    editor.show();
+    ScientificSpinBox *box = spin(editor, u"K_max"_s);
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, u"4a.b5c"_s);
+    // Every key typed is in the field: none is dropped unseen…
+    QCOMPARE(box->findChild<QLineEdit *>()->text(), u"4a.b5c"_s);
+    QTest::keyClick(box, Qt::Key_Return);
+    // …and the entry, not a number, changes nothing and is said to be refused.
+    QCOMPARE(editor.params().K_max, DeviceParams{}.K_max);
+    QCOMPARE(box->text(), u"0.4"_s);
+    QCOMPARE(editor.field(u"K_max"_s)->clampNote(),
+             u"K_max: “4a.b5c” is not a number; it stays 0.4 N·m/rad"_s);
+    QVERIFY(!label(editor, u"error_K_max"_s)->isHidden());
+    QCOMPARE(editor.undoStack()->count(), 0);
+    // A number typed afterwards is taken, and the note goes.
+    typeInto(editor, u"K_max"_s, u"0.45"_s);
+    QCOMPARE(editor.params().K_max, 0.45);
+    QVERIFY(editor.field(u"K_max"_s)->clampNote().isEmpty());
+}
+
+void TestParameterEditor::exclusiveBoundRefusesTheEntry_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("note");
+    // Bounds that are not valid values: the nearest bound would break the same rule.
+    QTest::newRow("N below 0") << u"N"_s << u"-0.1"_s
+                               << u"N: -0.1 is refused: N must be > 0 rad; it stays 0.1 rad"_s;
+    QTest::newRow("M_adm below 0")
+        << u"M_adm"_s << u"-1"_s
+        << u"M_adm: -1 is refused: M_adm must be > 0 N·m·s/rad; it stays 0.01 N·m·s/rad"_s;
+    QTest::newRow("tau_limit below 0")
+        << u"tau_limit"_s << u"-0.5"_s
+        << u"tau_limit: -0.5 is refused: tau_limit must be > 0 N·m; it stays 0.44 N·m"_s;
+}
+
+void TestParameterEditor::exclusiveBoundRefusesTheEntry()
+{
+    QFETCH(QString, key);
+    QFETCH(QString, typed);
+    QFETCH(QString, note);
+    ParameterEditor editor;
+    editor.show();
+    const Tuning before = editor.tuning();
+    typeInto(editor, key, typed);
+    QVERIFY(editor.tuning() == before);
+    QVERIFY(editor.isValid()); // no "got 0": a value nobody typed never enters the editor
+    QCOMPARE(editor.field(key)->clampNote(), note);
+    QCOMPARE(label(editor, u"error_"_s + key)->text(), note);
+    QCOMPARE(editor.undoStack()->count(), 0);
+}
+
+void TestParameterEditor::clampNoteGoesWithRevertAndUndo()
+{
+    ParameterEditor editor;
+    editor.show();
+    editor.setCanPush(true);
+    DeviceParams device;
+    device.K_max = 0.8f;
+    editor.setDeviceParams(device);
+    QLabel *message = label(editor, u"error_K_max"_s);
+
+    typeInto(editor, u"K_max"_s, u"100"_s);
+    QCOMPARE(editor.params().K_max, 50.0);
+    QVERIFY(editor.field(u"K_max"_s)->clampNote().contains(u"set to 50"_s));
+    editor.revertAction()->trigger();
+    QCOMPARE(editor.params().K_max, 0.8);
+    QVERIFY(editor.field(u"K_max"_s)->clampNote().isEmpty());
+    QVERIFY(message->isHidden());
+
+    typeInto(editor, u"K_max"_s, u"100"_s);
+    QVERIFY(!message->isHidden());
+    editor.undoStack()->undo();
+    QCOMPARE(editor.params().K_max, 0.8);
+    QVERIFY(message->isHidden());
+}
+
+void TestParameterEditor::reasonForNoPushSitsBesidePush()
+{
+    // A short panel: the broken rule's own field is far below the fold.
+    ParameterEditor editor;
+    editor.setCanPush(true);
+    editor.resize(520, 420);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QLabel *reason = label(editor, u"push_problem"_s);
+    QVERIFY(reason);
+    QVERIFY(reason->isHidden());
+    HostParams host = editor.hostParams();
+    host.tau_limit = 0.3; // below detent_strength…
+    Tuning t = editor.tuning();
+    t.host = host;
+    t.effects.detent_strength = 0.35; // …which must stay within it
+    editor.setTuning(t, u"tuning"_s);
+    QVERIFY(!editor.pushAction()->isEnabled());
+    QWidget *field = spin(editor, u"detent_strength"_s);
+    auto *scroll = editor.findChild<QScrollArea *>(u"parameterScroll"_s);
+    auto inSight = [&](QWidget *w) {
+        const QRect r(w->mapTo(scroll->viewport(), QPoint(0, 0)), w->size());
+        return scroll->viewport()->rect().contains(r);
+    };
+    QVERIFY(!inSight(field));
+    // The reason is beside Push, above the scrolling fields, in words and in full on hover.
+    QVERIFY(reason->isVisible());
+    QVERIFY2(reason->text().contains(u"Cannot push: detent_strength: must be ≤ tau_limit"_s),
+             qPrintable(reason->text()));
+    QCOMPARE(reason->toolTip(), editor.problems().join(u'\n'));
+    QVERIFY(reason->mapTo(&editor, QPoint(0, 0)).y() < scroll->mapTo(&editor, QPoint(0, 0)).y());
+    // "Show" brings the field into sight with the cursor in it.
+    Q_EMIT reason->linkActivated(u"show"_s);
+    QVERIFY(inSight(field));
+    QTRY_VERIFY(field->hasFocus());
+    // Fixed: the line goes.
+    editor.undoStack()->undo();
+    QVERIFY(reason->isHidden());
 }
 
 void TestParameterEditor::pushEmitsExactValues()

@@ -7,12 +7,15 @@
 #include "profile/profile.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QFile>
 #include <QMenu>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 using namespace hatpic;
@@ -68,6 +71,7 @@ private Q_SLOTS:
     void recentFiles();
     void maybeSaveAsks_data();
     void maybeSaveAsks();
+    void enterInThePromptOverwritesNothing();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -455,6 +459,36 @@ void TestProfileController::maybeSaveAsks()
     const ProfileReadResult onDisk = readProfile(path);
     QVERIFY(onDisk.ok());
     QCOMPARE(onDisk.profile->device.Q_dz == 0.05, savedToFile);
+}
+
+void TestProfileController::enterInThePromptOverwritesNothing()
+{
+    // The real question, answered with Enter by someone who did not read it: the safe answer.
+    QWidget window;
+    window.show();
+    ParameterEditor editor;
+    ProfileController controller(&editor, &window);
+    const QString path = m_dir->filePath(u"kept.json"_s);
+    QVERIFY(controller.saveTo(path));
+    const QByteArray before = readAll(path);
+    setValue(editor, u"Q_dz"_s, 0.05);
+    QString shown;
+    bool cancelIsDefault = false;
+    QTimer::singleShot(0, this, [&] {
+        QTRY_VERIFY(QApplication::activeModalWidget());
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        QVERIFY(box);
+        shown = box->text();
+        cancelIsDefault = static_cast<QAbstractButton *>(box->defaultButton()) ==
+                          box->button(QMessageBox::Cancel);
+        QTest::keyClick(box, Qt::Key_Return);
+    });
+    QVERIFY(!controller.maybeSave()); // cancelled: the window stays open
+    QVERIFY(cancelIsDefault);
+    QVERIFY2(shown.contains(u"unsaved changes"_s), qPrintable(shown));
+    QCOMPARE(readAll(path), before);      // the file is as it was
+    QCOMPARE(editor.params().Q_dz, 0.05); // and the edit is still there
+    QVERIFY(controller.isModified());
 }
 
 void TestProfileController::effectsTravelWithTheProfile()

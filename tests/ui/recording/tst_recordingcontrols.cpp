@@ -3,6 +3,7 @@
 
 #include <QAction>
 #include <QDir>
+#include <QLabel>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -21,6 +22,8 @@ private Q_SLOTS:
     void startAndStop();
     void cancelledChooserStartsNothing();
     void showsFailure();
+    void linkLossStaysInSight();
+    void noteLastsUntilTheNextRecording();
     void formatsBytes_data();
     void formatsBytes();
     void formatsDuration_data();
@@ -115,6 +118,72 @@ void TestRecordingControls::showsFailure()
     status.error = QStringLiteral("No space left on device");
     controls.setStatus(status);
     QCOMPARE(controls.statusText(), QStringLiteral("Recording stopped: No space left on device"));
+}
+
+//! The text the user reads beside the record button.
+QString labelText(const RecordingControls &controls)
+{
+    return controls.findChild<QLabel *>(QStringLiteral("recordingStatus"))->text();
+}
+
+void TestRecordingControls::linkLossStaysInSight()
+{
+    RecordingControls controls;
+    controls.setCanRecord(true);
+    RecordingStatus status;
+    status.active = true;
+    status.path = QStringLiteral("/data/run.csv");
+    status.seconds = 12;
+    status.bytes = 3400;
+    status.samples = 2400;
+    status.waiting = true;
+    status.gaps = 1;
+    controls.setStatus(status);
+    // While the device is away: still recording, and saying what it waits for.
+    QVERIFY(controls.recordAction()->isChecked());
+    QCOMPARE(controls.recordAction()->text(), QStringLiteral("Stop &recording"));
+    QCOMPARE(labelText(controls),
+             QStringLiteral("● 00:12 · 3.4 kB · 2400 samples · waiting for the device"));
+    QVERIFY(controls.findChild<QLabel *>(QStringLiteral("recordingStatus"))
+                ->toolTip()
+                .contains(QStringLiteral("goes on in the same file when the device is back")));
+    // Back: the gap count stays beside the figures for the rest of the recording…
+    status.waiting = false;
+    status.seconds = 20;
+    controls.setStatus(status);
+    QCOMPARE(labelText(controls), QStringLiteral("● 00:20 · 3.4 kB · 2400 samples · 1 gap"));
+    QVERIFY(controls.findChild<QLabel *>(QStringLiteral("recordingStatus"))
+                ->toolTip()
+                .contains(QStringLiteral("Link losses during this recording: 1")));
+    // …and after it: "Saved" alone would read as a clean recording.
+    status.active = false;
+    status.gaps = 2;
+    controls.setStatus(status);
+    QCOMPARE(labelText(controls), QStringLiteral("Saved run.csv (3.4 kB) · 2 gaps"));
+}
+
+void TestRecordingControls::noteLastsUntilTheNextRecording()
+{
+    RecordingControls controls;
+    controls.setCanRecord(true);
+    RecordingStatus status;
+    status.path = QStringLiteral("/data/run.csv");
+    status.bytes = 812;
+    status.gaps = 1;
+    controls.setStatus(status);
+    const QString note =
+        QStringLiteral("Recording ended at the link loss: a different device answered.");
+    controls.setNote(note);
+    QCOMPARE(labelText(controls), QStringLiteral("Saved run.csv (812 B) · 1 gap — ") + note);
+    // Progress of nothing (a repeated final status) does not clear it; only a new recording.
+    controls.setStatus(status);
+    QVERIFY(labelText(controls).endsWith(note));
+    status.active = true;
+    status.gaps = 0;
+    status.samples = 5;
+    controls.setStatus(status);
+    QVERIFY(controls.note().isEmpty());
+    QVERIFY(!labelText(controls).contains(note));
 }
 
 void TestRecordingControls::formatsBytes_data()

@@ -18,8 +18,10 @@
 #include "recording/replaycontroller.h"
 #include "telemetry/recordingreader.h"
 #include "telemetry/recordingwriter.h"
+#include "wheelevent.h"
 #include "window/mainwindow.h"
 #include "window/shortcutsdialog.h"
+#include "window/wheelguard.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -27,9 +29,11 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
+#include <QLineEdit>
 #include <QProcess>
 #include <QPushButton>
 #include <QScreen>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
@@ -111,6 +115,7 @@ private Q_SLOTS:
     void connectsToSimulatorAndPlotsSamples();
     void editPushInSyncChangesBehaviour();
     void invalidValueDisablesPush();
+    void wheelScrollsParametersAndEditsNothing();
     void deviceRejectionIsShown();
     void undoRedo();
     void profileSaveLoadRoundTrip();
@@ -302,6 +307,55 @@ void TestMainWindow::invalidValueDisablesPush()
     editor->undoStack()->undo();
     QVERIFY(editor->isValid());
     QVERIFY(editor->pushAction()->isEnabled() || editor->syncState() == SyncState::InSync);
+}
+
+void TestMainWindow::wheelScrollsParametersAndEditsNothing()
+{
+    // Issue 21, item 15: at 1280×720, with live push on, the pointer resting on K_min and the
+    // Parameters panel scrolled past its fields: nothing is edited, nothing reaches the device.
+    m_window->resize(1280, 720);
+    connectSim();
+    ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
+    QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
+    editor->setLivePush(true);
+    QSignalSpy pushes(editor, &ParameterEditor::pushRequested);
+    const Tuning before = editor->tuning();
+    const int undoSteps = editor->undoStack()->count();
+
+    QAbstractSpinBox *kMin = editor->findChild<QAbstractSpinBox *>(QStringLiteral("spin_K_min"));
+    QVERIFY(kMin && kMin->isVisible());
+    for (int i = 0; i < 3; ++i)
+        test::turnWheel(kMin, kMin->rect().center(), -120);
+    QCOMPARE(editor->params().K_min, before.device.K_min);
+    QVERIFY(!kMin->hasFocus());
+
+    auto *scroll = editor->findChild<QScrollArea *>();
+    QVERIFY(scroll);
+    QScrollBar *bar = scroll->verticalScrollBar();
+    QVERIFY2(bar->maximum() > 0, "the panel does not scroll at 1280×720");
+    const QPoint pointer(scroll->viewport()->width() / 2, scroll->viewport()->height() / 2);
+    int fieldsPassed = 0;
+    for (int i = 0; i < 40 && bar->value() < bar->maximum(); ++i) {
+        QWidget *under = scroll->viewport()->childAt(pointer);
+        fieldsPassed += WheelGuard::isValueField(under) ||
+                        (under && WheelGuard::isValueField(under->parentWidget()));
+        test::turnWheel(scroll->viewport(), pointer, -120);
+    }
+    QCOMPARE(bar->value(), bar->maximum());
+    QVERIFY2(fieldsPassed > 3, qPrintable(QString::number(fieldsPassed)));
+    QTest::qWait(2 * ParameterEditor::kDefaultLivePushIntervalMs); // a live push would be out
+    QVERIFY(editor->tuning() == before);
+    QCOMPARE(editor->undoStack()->count(), undoSteps);
+    QCOMPARE(pushes.size(), 0);
+    QCOMPARE(editor->syncState(), SyncState::InSync);
+
+    // A field the user chose (clicked into) takes the wheel, and live push sends it.
+    scroll->ensureWidgetVisible(kMin);
+    QTest::mouseClick(kMin->findChild<QLineEdit *>(), Qt::LeftButton);
+    QTRY_VERIFY(kMin->hasFocus());
+    test::turnWheel(kMin, kMin->rect().center(), 120);
+    QVERIFY(editor->params().K_min > before.device.K_min);
+    QTRY_COMPARE_WITH_TIMEOUT(pushes.size(), 1, kConnectMs);
 }
 
 void TestMainWindow::deviceRejectionIsShown()
@@ -652,10 +706,22 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
     QVERIFY(!find<QDockWidget>("simulatorDock")->isVisible()); // not the in-process simulator
     QVERIFY(waitForSamples(500));
+    // A recording runs through the loss (issue 21, item 5).
+    const QString csv = m_dir.filePath(QStringLiteral("through-the-loss.csv"));
+    RecordingControls *controls = find<RecordingControls>("recordingControls");
+    controls->setPathChooser([&](const QString &) { return csv; });
+    controls->recordAction()->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(controls->status().samples > 100, kDataMs);
+    auto *recordingLabel = controls->findChild<QLabel *>(QStringLiteral("recordingStatus"));
 
     sim.terminate(); // the device vanishes
     QVERIFY(sim.waitForFinished(5000));
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Lost, kConnectMs);
+    // The recording waits, and says so where the user looks for it.
+    QTRY_VERIFY(controls->status().waiting);
+    QVERIFY(controls->recordAction()->isChecked());
+    QVERIFY2(recordingLabel->text().contains(QStringLiteral("· waiting for the device")),
+             qPrintable(recordingLabel->text()));
     QCOMPARE(linkStatus()->stateText(), QStringLiteral("LINK LOST"));
     QVERIFY(find<LinkBanner>("linkBanner")->isVisible());
     QVERIFY2(find<LinkBanner>("linkBanner")->text().contains(QStringLiteral("Reconnecting")),
@@ -676,6 +742,20 @@ void TestMainWindow::lostLinkKeepsDataAndReconnects()
     QVERIFY(!find<LinkBanner>("linkBanner")->isVisible());
     QVERIFY(waitForSamples(200));
     QVERIFY(liveBuffer().size() > kept); // old and new data, one time axis
+    // The same recording goes on; the gap stays in sight after it is saved.
+    QTRY_VERIFY(!controls->status().waiting);
+    QVERIFY(controls->status().active);
+    const quint64 beforeStop = controls->status().samples;
+    QTRY_VERIFY_WITH_TIMEOUT(controls->status().samples > beforeStop + 100, kDataMs);
+    controls->recordAction()->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!controls->status().active, kConnectMs);
+    QCOMPARE(recordingLabel->text(),
+             QStringLiteral("Saved through-the-loss.csv (%1) · 1 gap")
+                 .arg(RecordingControls::formatBytes(controls->status().bytes)));
+    const RecordingReadResult recorded = readRecording(csv);
+    QVERIFY2(recorded.recording, qPrintable(recorded.error));
+    QCOMPARE(recorded.recording->events.size(), 1);
+    QVERIFY(recorded.recording->events.first().text.startsWith(QStringLiteral("gap: ")));
     m_window->disconnectDevice();
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Disconnected, kConnectMs);
     again.terminate();
