@@ -1,178 +1,556 @@
-// bench_bridge [--seconds S] [--steps N] [--feedback-rate HZ]
+// bench_bridge [--ros 1|2] [--seconds S] [--steps N] [--domain ID] [--feedback-rate HZ]
 //
-// The robot bridge on this machine, over Cyclone DDS on loopback (lo only, no multicast):
-//   rate:    messages per second a subscriber receives on /hatpic/joint_states with the
-//            default --rate (100 Hz) and with every sample (1000 Hz), the simulated joystick
-//            behind a real pseudo-terminal streaming 1 kHz telemetry;
-//   latency: wrench → τ_ext: from dds_write of a WrenchStamped to the first control cycle of
-//            the simulated device that renders the new τ_ext — the first telemetry sample that
-//            shows it, dated by the device clock relative to its batch's arrival — for N steps
-//            between +0.5 N and −0.5 N, 100 ms apart, with the session streaming SET_FEEDBACK
-//            at HZ (default 100, hatpic-bridge's default). Prints median and maximum, and
-//            the same up to the Bridge's feedbackChanged (the DDS part alone).
-// Everything but the session's thread runs on one event loop: the figures include its waits.
-#include "bridge/bridge.h"
-#include "session/deviceclient.h"
-#include "sim/simulatorhost.h"
-
-#include "rosmessages.h"
-
-#include <dds/dds.h>
+// The robot path as users run it: `hatpic-sim` on a pseudo-terminal, `hatpic-bridge --port
+// <pty> --rate 1000` on it, and this program as the robot, a node made through the project's
+// ROS layer (ros/node.h). ROS 2 runs in a private DDS domain (default 81) with CYCLONEDDS_URI
+// binding Cyclone DDS to `lo` without multicast; ROS 1 (--ros 1) starts a roscore of its own on
+// a free port with ROS_MASTER_URI, ROS_IP, ROS_HOME and ROS_LOG_DIR set for every process. Run
+// it inside /work/bin/isolated (or any network namespace of its own) on a shared machine.
+//
+//   knob → topic: every JointState that arrives on /hatpic/joint_states during S seconds
+//     (default 10): its arrival (host wall clock) minus its header.stamp, which the bridge
+//     sets to the host's wall-clock time at which the sample's frame was decoded
+//     (bridge.cpp, referencemessages.cpp). So it is decode → publish → middleware → our
+//     handler; the device → pseudo-terminal → decode part is not in it (the device's clock is
+//     not the host's).
+//   wrench round trip: a WrenchStamped on /wrench_estimation stepping force.z between +0.5 and
+//     −0.5 N every 100 ms, N steps (default 100); from just before publish() to the first
+//     /hatpic/feedback message whose torque.z (the τ_ext the device reports in its telemetry)
+//     is the new value (gain 0.154: ±0.077 N·m). ROS 2: once with a reliable publisher (ROS
+//     2's default QoS), once best effort; ROS 1 has no QoS (TCPROS).
+//   CPU: hatpic-bridge's utime + stime (/proc/PID/stat) over each window, as % of one core.
+// Prints one plain table; exit 1 when a program does not start or nothing arrives.
+#include "ros/node.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
-#include <QTimer>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
 #include <vector>
 
 using namespace hatpic;
-using namespace hatpic::bridge;
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
 
 namespace {
 
-constexpr int kDomain = 73;
+constexpr double kForce = 0.5;         //!< wrench step: force.z alternates ±kForce [N]
+constexpr double kGain = 0.154;        //!< hatpic-bridge's default gain [N·m/N]
+constexpr double kTauTolerance = 1e-6; //!< τ_ext travels as float32 [N·m]
+constexpr auto kStepPeriod = 100ms;    //!< a new wrench every 100 ms
+constexpr auto kEchoTimeout = 1000ms;  //!< a step not seen by then counts as lost
 
-void confineToLoopback()
+struct Options
+{
+    ros::RosVersion ros = ros::RosVersion::Ros2;
+    double seconds = 10;                //!< knob → topic window [s]
+    int steps = 100;                    //!< wrench steps per QoS
+    int domain = 81;                    //!< ROS 2's private DDS domain
+    std::optional<double> feedbackRate; //!< passed on as --feedback-rate [Hz]
+};
+
+std::optional<Options> parseOptions(int argc, char *argv[])
+{
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string name = argv[i];
+        if (i + 1 >= argc) {
+            std::fprintf(stderr, "bench_bridge: %s needs a value.\n", name.c_str());
+            return std::nullopt;
+        }
+        const char *value = argv[++i];
+        if (name == "--ros" && (std::string(value) == "1" || std::string(value) == "2")) {
+            o.ros = std::string(value) == "1" ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
+        } else if (name == "--seconds" && std::atof(value) > 0) {
+            o.seconds = std::atof(value);
+        } else if (name == "--steps" && std::atoi(value) > 0) {
+            o.steps = std::atoi(value);
+        } else if (name == "--domain" && std::atoi(value) >= 0) {
+            o.domain = std::atoi(value);
+        } else if (name == "--feedback-rate" && std::atof(value) > 0) {
+            o.feedbackRate = std::atof(value);
+        } else {
+            std::fprintf(stderr,
+                         "bench_bridge: bad option %s %s; usage: bench_bridge [--ros 1|2] "
+                         "[--seconds S] [--steps N] [--domain ID] [--feedback-rate HZ]\n",
+                         name.c_str(), value);
+            return std::nullopt;
+        }
+    }
+    return o;
+}
+
+double wallSeconds()
+{
+    return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+double msBetween(Clock::time_point from, Clock::time_point to)
+{
+    return std::chrono::duration<double, std::milli>(to - from).count();
+}
+
+//! utime + stime of a process [s]; −1 when it cannot be read.
+double cpuSeconds(qint64 pid)
+{
+    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly))
+        return -1;
+    const QByteArray text = stat.readAll();
+    // Fields after the command name in parentheses (which may hold spaces): state is field 3,
+    // utime field 14, stime field 15 (proc(5)).
+    const QList<QByteArray> fields = text.mid(text.lastIndexOf(')') + 2).split(' ');
+    if (fields.size() < 13)
+        return -1;
+    return double(fields[11].toLongLong() + fields[12].toLongLong()) / double(sysconf(_SC_CLK_TCK));
+}
+
+QByteArray loadAverage()
+{
+    QFile file(QStringLiteral("/proc/loadavg"));
+    if (!file.open(QIODevice::ReadOnly))
+        return "?";
+    const QList<QByteArray> parts = file.readAll().split(' ');
+    return parts.size() >= 3 ? parts[0] + ' ' + parts[1] + ' ' + parts[2] : QByteArray("?");
+}
+
+//! Nearest-rank percentile of sorted values.
+double percentile(const std::vector<double> &sorted, double p)
+{
+    if (sorted.empty())
+        return NAN;
+    const auto rank = std::size_t(std::ceil(p * double(sorted.size())));
+    return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
+}
+
+void printRow(const char *what, std::vector<double> values, const char *note = "")
+{
+    std::sort(values.begin(), values.end());
+    std::printf("%-40s %7zu %8.2f %8.2f %8.2f %8.2f  %s\n", what, values.size(),
+                percentile(values, 0.50), percentile(values, 0.95), percentile(values, 0.99),
+                values.empty() ? NAN : values.back(), note);
+}
+
+// A port nothing listens on now (the kernel's pick for port 0).
+int freePort()
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    ::bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address);
+    ::getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length);
+    ::close(fd);
+    return ntohs(address.sin_port);
+}
+
+bool tcpAnswers(int port)
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(quint16(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    const bool ok = ::connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0;
+    ::close(fd);
+    return ok;
+}
+
+QByteArray tail(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll().right(1500) : QByteArray();
+}
+
+// A program this bench started: its output in a file of the run's directory, stopped by its
+// own process id (roscore: its process group, which holds rosmaster and rosout).
+class Child
+{
+public:
+    Child(const QString &logPath, bool ownGroup) : m_log(logPath), m_group(ownGroup)
+    {
+        m_process.setProcessChannelMode(QProcess::MergedChannels);
+        if (ownGroup)
+            m_process.setChildProcessModifier([] { ::setpgid(0, 0); });
+    }
+    ~Child() { stop(); }
+
+    //! Starts it, its output going to the log file; with `firstLine`, its output stays in a
+    //! pipe instead (output() reads it) and the first line is read into `firstLine` (≤ 10 s).
+    bool start(const QString &program, const QStringList &arguments, QByteArray *firstLine)
+    {
+        if (!firstLine)
+            m_process.setStandardOutputFile(m_log);
+        m_process.start(program, arguments);
+        if (!m_process.waitForStarted(5000))
+            return false;
+        if (firstLine) {
+            while (!m_process.canReadLine() && m_process.waitForReadyRead(10000)) {
+            }
+            *firstLine = m_process.readLine().trimmed();
+        }
+        return m_process.state() == QProcess::Running;
+    }
+    qint64 pid() const { return m_process.processId(); }
+    bool running() const { return m_process.state() == QProcess::Running; }
+    QByteArray output() { return m_process.readAll() + tail(m_log); }
+
+    void stop()
+    {
+        if (m_process.state() == QProcess::NotRunning)
+            return;
+        const pid_t target = m_group ? -pid_t(pid()) : pid_t(pid());
+        ::kill(target, SIGINT);
+        const auto deadline = Clock::now() + 10s;
+        while (Clock::now() < deadline) {
+            if (m_process.state() != QProcess::NotRunning)
+                m_process.waitForFinished(100);
+            else if (groupAlive(target))
+                std::this_thread::sleep_for(100ms); // roscore's children still shutting down
+            else
+                break;
+        }
+        if (m_process.state() != QProcess::NotRunning || groupAlive(target)) {
+            ::kill(target, SIGKILL);
+            m_process.waitForFinished(2000);
+        }
+    }
+
+private:
+    bool groupAlive(pid_t target) const { return m_group && ::kill(target, 0) == 0; }
+
+    QProcess m_process;
+    QString m_log;
+    bool m_group; //!< stopped as a process group
+};
+
+// The knob → topic figure: each JointState's arrival minus its stamp, while recording.
+class KnobProbe
+{
+public:
+    void onMessage(const ros::Message &message)
+    {
+        const double now = wallSeconds();
+        const auto *joints = std::get_if<ros::JointState>(&message);
+        if (!joints)
+            return;
+        m_seen.fetch_add(1);
+        if (!m_recording.load())
+            return;
+        const std::lock_guard lock(m_mutex);
+        m_latencies.push_back((now - ros::seconds(joints->header.stamp)) * 1e3);
+    }
+    std::uint64_t seen() const { return m_seen.load(); }
+    void record(bool on, std::size_t expected = 0)
+    {
+        const std::lock_guard lock(m_mutex);
+        if (on) {
+            m_latencies.clear();
+            m_latencies.reserve(expected);
+        }
+        m_recording.store(on);
+    }
+    std::vector<double> latencies() const
+    {
+        const std::lock_guard lock(m_mutex);
+        return m_latencies;
+    }
+
+private:
+    std::atomic<std::uint64_t> m_seen{0};
+    std::atomic<bool> m_recording{false};
+    mutable std::mutex m_mutex;
+    std::vector<double> m_latencies; //!< [ms]
+};
+
+// The wrench round trip: waits for the first /hatpic/feedback that shows an expected τ_ext.
+class FeedbackProbe
+{
+public:
+    void onMessage(const ros::Message &message)
+    {
+        const auto now = Clock::now();
+        const auto *wrench = std::get_if<ros::WrenchStamped>(&message);
+        if (!wrench)
+            return;
+        const std::lock_guard lock(m_mutex);
+        if (!m_seen && std::abs(wrench->wrench.torque.z - m_expected) < kTauTolerance) {
+            m_seen = now;
+            m_changed.notify_all();
+        }
+    }
+    void expect(double tau)
+    {
+        const std::lock_guard lock(m_mutex);
+        m_expected = tau;
+        m_seen.reset();
+    }
+    //! When the expected τ_ext was first seen, waiting until `deadline`.
+    std::optional<Clock::time_point> waitUntil(Clock::time_point deadline)
+    {
+        std::unique_lock lock(m_mutex);
+        m_changed.wait_until(lock, deadline, [this] { return m_seen.has_value(); });
+        return m_seen;
+    }
+
+private:
+    std::mutex m_mutex;
+    std::condition_variable m_changed;
+    double m_expected = NAN;
+    std::optional<Clock::time_point> m_seen;
+};
+
+ros::WrenchStamped wrenchOf(double force)
+{
+    ros::WrenchStamped w;
+    w.header.stamp = ros::timeFromSeconds(wallSeconds());
+    w.header.frameId = "bench";
+    w.wrench.force.z = force;
+    return w;
+}
+
+struct RoundTrips
+{
+    std::vector<double> ms; //!< publish → first /hatpic/feedback with the new τ_ext
+    int lost = 0;           //!< steps not seen within kEchoTimeout
+    bool warmedUp = false;
+};
+
+// Publishes kForce/2, a value no step uses, until the device's τ_ext shows it (the publisher
+// is matched and the path works), then `steps` steps between ±kForce, kStepPeriod apart.
+RoundTrips measureRoundTrips(ros::Publisher &publisher, FeedbackProbe &feedback, int steps)
+{
+    RoundTrips r;
+    feedback.expect(kGain * kForce / 2);
+    const auto warmUpEnd = Clock::now() + 20s;
+    while (Clock::now() < warmUpEnd && !r.warmedUp) {
+        publisher.publish(wrenchOf(kForce / 2));
+        r.warmedUp = feedback.waitUntil(Clock::now() + kStepPeriod).has_value();
+    }
+    if (!r.warmedUp)
+        return r;
+    std::this_thread::sleep_for(kStepPeriod);
+    r.ms.reserve(std::size_t(steps));
+    auto next = Clock::now();
+    for (int i = 0; i < steps; ++i) {
+        const double force = i % 2 == 0 ? -kForce : kForce;
+        feedback.expect(kGain * force);
+        std::this_thread::sleep_until(next);
+        const auto sent = Clock::now();
+        publisher.publish(wrenchOf(force));
+        if (const auto seen = feedback.waitUntil(sent + kEchoTimeout))
+            r.ms.push_back(msBetween(sent, *seen));
+        else
+            ++r.lost;
+        next = std::max(sent + kStepPeriod, Clock::now());
+    }
+    return r;
+}
+
+struct CpuWindow
+{
+    qint64 pid;
+    double cpu0;
+    Clock::time_point t0 = Clock::now();
+    explicit CpuWindow(qint64 p) : pid(p), cpu0(cpuSeconds(p)) {}
+    //! % of one core since construction.
+    double percent() const
+    {
+        return (cpuSeconds(pid) - cpu0) / (msBetween(t0, Clock::now()) * 1e-3) * 100;
+    }
+};
+
+void confineToLoopback(int domain)
 {
     qputenv("CYCLONEDDS_URI",
             "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface name=\"lo\"/>"
             "</Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery>"
             "<ParticipantIndex>auto</ParticipantIndex><Peers><Peer Address=\"127.0.0.1\"/>"
             "</Peers></Discovery></Domain></CycloneDDS>");
+    qputenv("ROS_DOMAIN_ID", QByteArray::number(domain));
 }
 
-void waitMs(int ms)
+//! ROS 1's environment for this process and its children (inherited); returns the master's URI.
+QByteArray useRos1Master(int port, const QTemporaryDir &dir)
 {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < ms)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+    const QByteArray uri = "http://127.0.0.1:" + QByteArray::number(port);
+    qputenv("ROS_MASTER_URI", uri);
+    qputenv("ROS_IP", "127.0.0.1");
+    qputenv("ROS_HOME", dir.path().toLocal8Bit());
+    qputenv("ROS_LOG_DIR", dir.filePath(QStringLiteral("log")).toLocal8Bit());
+    qunsetenv("ROS_HOSTNAME");
+    qunsetenv("ROS_NAMESPACE");
+    return uri;
 }
 
-int takeCount(dds_entity_t reader)
+int fail(const char *what, Child *child = nullptr)
 {
-    int count = 0;
-    for (;;) {
-        void *samples[64] = {};
-        dds_sample_info_t infos[64];
-        const dds_return_t n = dds_take(reader, samples, infos, 64, 64);
-        if (n <= 0)
-            return count;
-        for (int i = 0; i < n; ++i)
-            count += infos[i].valid_data ? 1 : 0;
-        dds_return_loan(reader, samples, n);
-    }
+    std::fprintf(stderr, "bench_bridge: %s\n", what);
+    if (child)
+        std::fprintf(stderr, "%s\n", child->output().constData());
+    return 1;
 }
 
 } // namespace
 
 int main(int argc, char *argv[])
 {
-    confineToLoopback();
-    QCoreApplication app(argc, argv);
-    registerSessionMetaTypes();
-    double seconds = 5;
-    int steps = 200;
-    double feedbackRate = 100;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (QByteArray(argv[i]) == "--seconds")
-            seconds = std::atof(argv[i + 1]);
-        else if (QByteArray(argv[i]) == "--steps")
-            steps = std::atoi(argv[i + 1]);
-        else if (QByteArray(argv[i]) == "--feedback-rate")
-            feedbackRate = std::atof(argv[i + 1]);
+    QCoreApplication app(argc, argv); // QProcess only; no event loop runs
+    const auto options = parseOptions(argc, argv);
+    if (!options)
+        return 4;
+    const bool ros1 = options->ros == ros::RosVersion::Ros1;
+    QTemporaryDir dir;
+    if (!dir.isValid())
+        return fail("no temporary directory");
+
+    const QByteArray loadStart = loadAverage();
+    Child roscore(dir.filePath(QStringLiteral("roscore.log")), true);
+    QByteArray where;
+    if (ros1) {
+        const int port = freePort();
+        where = "ROS 1, master " + useRos1Master(port, dir);
+        if (!roscore.start(QStringLiteral("roscore"), {QStringLiteral("-p"), QString::number(port)},
+                           nullptr))
+            return fail("roscore does not start");
+        const auto deadline = Clock::now() + 30s;
+        while (!tcpAnswers(port) && roscore.running() && Clock::now() < deadline)
+            std::this_thread::sleep_for(100ms);
+        if (!tcpAnswers(port))
+            return fail("roscore does not answer", &roscore);
+    } else {
+        confineToLoopback(options->domain);
+        where = "ROS 2, domain " + QByteArray::number(options->domain) + ", Cyclone DDS on lo";
     }
 
-    SimulatorHost host(SimulatedDevice::Config{});
-    if (const QString error = host.start(); !error.isEmpty()) {
-        std::fprintf(stderr, "bench_bridge: %s\n", qPrintable(error));
-        return 1;
-    }
-    DeviceClient client;
-    ConnectOptions options;
-    options.port = host.slavePath();
-    options.feedbackRateHz = feedbackRate;
-    client.connectDevice(options);
-    while (client.state() != SessionState::Connected)
-        waitMs(10);
+    Child sim(dir.filePath(QStringLiteral("sim.log")), false);
+    QByteArray pty;
+    if (!sim.start(QStringLiteral(HATPIC_SIM_PATH), {}, &pty) || pty.isEmpty())
+        return fail("hatpic-sim does not start", &sim);
+    QStringList bridgeArguments = {
+        QStringLiteral("--port"), QString::fromLocal8Bit(pty),
+        QStringLiteral("--rate"), QStringLiteral("1000"),
+        QStringLiteral("--ros"),  ros1 ? QStringLiteral("1") : QStringLiteral("2")};
+    if (!ros1)
+        bridgeArguments << QStringLiteral("--domain") << QString::number(options->domain);
+    if (options->feedbackRate)
+        bridgeArguments << QStringLiteral("--feedback-rate")
+                        << QString::number(*options->feedbackRate);
+    Child bridge(dir.filePath(QStringLiteral("bridge.log")), false);
+    if (!bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH), bridgeArguments, nullptr))
+        return fail("hatpic-bridge does not start", &bridge);
 
-    const dds_entity_t participant = dds_create_participant(kDomain, nullptr, nullptr);
-    dds_qos_t *qos = dds_create_qos();
-    dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1000);
-    const dds_entity_t joints =
-        dds_create_reader(participant,
-                          dds_create_topic(participant, &sensor_msgs_msg_dds__JointState__desc,
-                                           "rt/hatpic/joint_states", nullptr, nullptr),
-                          qos, nullptr);
-    const dds_entity_t wrench =
-        dds_create_writer(participant,
-                          dds_create_topic(participant, &geometry_msgs_msg_dds__WrenchStamped__desc,
-                                           "rt/wrench_estimation", nullptr, nullptr),
-                          qos, nullptr);
-    dds_delete_qos(qos);
+    KnobProbe knob; // before the node: its subscriptions call them until they are gone
+    FeedbackProbe feedback;
+    std::string error;
+    const auto node = ros::Node::open({options->ros, "hatpic_bench", options->domain}, &error);
+    if (!node)
+        return fail(error.c_str());
+    auto joints = node->subscribe(
+        "/hatpic/joint_states", ros::MessageType::JointState, ros::Qos::defaults(),
+        [&knob](const ros::Message &m) { knob.onMessage(m); }, &error);
+    auto feedbackSub = node->subscribe(
+        "/hatpic/feedback", ros::MessageType::WrenchStamped, ros::Qos::defaults(),
+        [&feedback](const ros::Message &m) { feedback.onMessage(m); }, &error);
+    if (!joints || !feedbackSub)
+        return fail(error.c_str());
 
-    Bridge bridge(client);
-    for (const double rate : {100.0, 1000.0}) {
-        BridgeSettings settings;
-        settings.domainId = kDomain;
-        settings.publishRateHz = rate;
-        if (const QString error = bridge.start(settings); !error.isEmpty()) {
-            std::fprintf(stderr, "bench_bridge: %s\n", qPrintable(error));
-            return 1;
-        }
-        waitMs(1000); // discovery, then a clean window
-        takeCount(joints);
-        QElapsedTimer window;
-        window.start();
-        int received = 0;
-        while (window.elapsed() < seconds * 1000) {
-            waitMs(50);
-            received += takeCount(joints);
-        }
-        std::printf("rate --rate %g: %.1f messages/s received on /hatpic/joint_states\n", rate,
-                    received / (double(window.nsecsElapsed()) * 1e-9));
-    }
+    // The device connected and the topic matched: messages arrive. Then a second to settle.
+    const auto deadline = Clock::now() + 30s;
+    while (knob.seen() < 1000 && bridge.running() && Clock::now() < deadline)
+        std::this_thread::sleep_for(50ms);
+    if (knob.seen() < 1000)
+        return fail("no JointState arrives from hatpic-bridge", &bridge);
+    std::this_thread::sleep_for(1s);
 
-    dds_publication_matched_status_t matched{};
-    while (dds_get_publication_matched_status(wrench, &matched) == DDS_RETCODE_OK &&
-           matched.current_count == 0)
-        waitMs(10);
-    std::vector<double> latencies;
-    QElapsedTimer since;
-    double expected = 0, deviceMs = -1;
-    // The first sample that shows the new τ_ext, dated back from its batch's arrival by how
-    // much older than the batch's newest sample it is (device clock).
-    QObject::connect(&client, &DeviceClient::samplesReady, &app, [&](const SampleBatch &batch) {
-        const double arrivalMs = double(since.nsecsElapsed()) * 1e-6;
-        for (const Sample &s : batch) {
-            if (deviceMs < 0 && std::abs(s.tau_ext - expected) < 1e-6)
-                deviceMs = arrivalMs - (batch.last().t_s - s.t_s) * 1e3;
-        }
-    });
-    for (int i = 0; i < steps; ++i) {
-        const double force = (i % 2 == 0) ? 0.5 : -0.5;
-        geometry_msgs_msg_dds__WrenchStamped_ w{};
-        w.header.frame_id = const_cast<char *>("bench");
-        w.wrench.force.z = force;
-        deviceMs = -1;
-        expected = 0.154 * force;
-        since.start();
-        dds_write(wrench, &w);
-        while (deviceMs < 0 && since.elapsed() < 1000)
-            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
-        latencies.push_back(deviceMs < 0 ? 1000.0 : deviceMs);
-        waitMs(100);
+    // knob → topic, with the bridge's CPU over the same window.
+    knob.record(true, std::size_t(options->seconds * 1100));
+    const CpuWindow knobCpu(bridge.pid());
+    const CpuWindow knobSimCpu(sim.pid());
+    const auto knobStart = Clock::now();
+    std::this_thread::sleep_for(std::chrono::duration<double>(options->seconds));
+    knob.record(false);
+    const double knobSeconds = msBetween(knobStart, Clock::now()) * 1e-3;
+    const double bridgeCpu = knobCpu.percent();
+    const double simCpu = knobSimCpu.percent();
+    const std::vector<double> knobMs = knob.latencies();
+
+    // The wrench round trip, per publisher QoS (ROS 1: none).
+    struct Run
+    {
+        const char *qosName;
+        ros::Qos qos;
+        RoundTrips trips;
+        double bridgeCpu = NAN; //!< [% of one core]
+    };
+    std::vector<Run> runs;
+    if (ros1) {
+        runs.push_back({"TCPROS", ros::Qos::defaults(), {}});
+    } else {
+        runs.push_back({"reliable", ros::Qos::defaults(), {}});
+        runs.push_back({"best effort",
+                        {ros::Qos::Reliability::BestEffort, ros::Qos::Durability::Volatile, 1},
+                        {}});
     }
-    std::sort(latencies.begin(), latencies.end());
-    std::printf("latency wrench -> tau_ext at the device: median %.2f ms, max %.2f ms (%d steps, "
-                "SET_FEEDBACK at %g Hz)\n",
-                latencies[latencies.size() / 2], latencies.back(), steps, feedbackRate);
+    for (Run &run : runs) {
+        auto publisher =
+            node->advertise("/wrench_estimation", ros::MessageType::WrenchStamped, run.qos, &error);
+        if (!publisher)
+            return fail(error.c_str());
+        const CpuWindow cpu(bridge.pid());
+        run.trips = measureRoundTrips(*publisher, feedback, options->steps);
+        run.bridgeCpu = cpu.percent();
+        if (!run.trips.warmedUp)
+            return fail("the wrench never came back on /hatpic/feedback", &bridge);
+    }
+    const QByteArray loadEnd = loadAverage();
+
+    std::printf("bench_bridge: %s; hatpic-sim on %s; hatpic-bridge --rate 1000", where.constData(),
+                pty.constData());
+    if (options->feedbackRate)
+        std::printf(" --feedback-rate %g", *options->feedbackRate);
+    std::printf("\nload average %s at the start, %s at the end; %ld cores online\n",
+                loadStart.constData(), loadEnd.constData(), sysconf(_SC_NPROCESSORS_ONLN));
+    std::printf("%-40s %7s %8s %8s %8s %8s\n", "latency [ms]", "count", "p50", "p95", "p99", "max");
+    const QByteArray rate = QByteArray::number(double(knobMs.size()) / knobSeconds, 'f', 1) +
+                            " messages/s over " + QByteArray::number(knobSeconds, 'f', 1) + " s";
+    printRow("knob -> /hatpic/joint_states", knobMs, rate.constData());
+    for (const Run &run : runs) {
+        const std::string name = std::string("wrench (") + run.qosName + ") -> /hatpic/feedback";
+        const std::string lost = std::to_string(run.trips.lost) + " lost (none within 1 s)";
+        printRow(name.c_str(), run.trips.ms, lost.c_str());
+    }
+    std::printf("hatpic-bridge CPU [%% of one core]: %.1f during the joint_states window "
+                "(hatpic-sim %.1f)",
+                bridgeCpu, simCpu);
+    for (const Run &run : runs)
+        std::printf(", %.1f during the %s steps", run.bridgeCpu, run.qosName);
+    std::printf("\n");
+
+    joints.reset();
+    feedbackSub.reset();
     bridge.stop();
-    dds_delete(participant);
-    client.disconnectDevice();
+    sim.stop();
+    roscore.stop();
     return 0;
 }
