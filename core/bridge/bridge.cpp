@@ -67,6 +67,8 @@ void Bridge::releaseFeedback()
 void Bridge::stop()
 {
     m_checkTimer.stop();
+    if (!isRunning())
+        return; // never started, or stopped: the client is not touched (it may be gone)
     m_client.removeSampleListener(this); // no sampleDecoded() runs after this
     std::unique_ptr<RosEndpoints> closing;
     {

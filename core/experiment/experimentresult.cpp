@@ -192,6 +192,14 @@ ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sampl
             if (s.t_s >= from && s.t_s < to)
                 window.append(s);
         }
+        // The window holds duration · rate samples: a boundary that falls on a sample (in
+        // floating point, or with the device's clock a little uneven) must not add one.
+        if (window.size() > 2) {
+            const double dt = (window.last().t_s - window.first().t_s) / double(window.size() - 1);
+            const auto expected = qsizetype(std::llround(plan.duration / dt));
+            if (dt > 0 && expected >= 2 && window.size() > expected)
+                window.resize(expected);
+        }
         spectraOf(window, r.thetaSpectrum, r.tauSpectrum);
         if (r.thetaSpectrum.frequency.empty())
             r.problem = u"Too few samples for a spectrum: " + QString::number(window.size()) +

@@ -76,7 +76,12 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     onStateChanged(SessionState::Disconnected, {});
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The bridge goes first: it stops publishing and asks for τ_ext = 0 through the device
+    // client, which the children's destruction would otherwise have taken away already.
+    delete m_bridgeDock;
+}
 
 void MainWindow::createParts()
 {

@@ -268,11 +268,19 @@ void TestFirmwareHost::faultsAreInjectedAndCounted()
               {u"set"_s, u"--port"_s, host.path(), u"--set"_s, u"K_max=0.5"_s});
     QVERIFY(set.waitForFinished(10000));
     QVERIFY2(set.exitCode() == 0, qPrintable(QString::fromUtf8(set.readAllStandardError())));
+    // With a fifth of the host's frames dropped and 7 % of the device's lost or corrupt, all
+    // four tries of the stream's GET_PARAMS can fail (about 1 run in 200, more on a loaded
+    // machine): that is the right answer, not the one under test, so it may try again.
     QProcess stream;
-    stream.start(QStringLiteral(HATPICCTL_PATH),
-                 {u"stream"_s, u"--port"_s, host.path(), u"--duration"_s, u"2"_s});
-    QVERIFY(stream.waitForFinished(10000));
-    const QString stats = QString::fromUtf8(stream.readAllStandardError());
+    QString stats;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        stream.start(QStringLiteral(HATPICCTL_PATH),
+                     {u"stream"_s, u"--port"_s, host.path(), u"--duration"_s, u"2"_s});
+        QVERIFY(stream.waitForFinished(10000));
+        stats = QString::fromUtf8(stream.readAllStandardError());
+        if (stream.exitCode() != 3 || !stats.contains(u"did not answer"_s))
+            break;
+    }
     QVERIFY2(stream.exitCode() == 0, qPrintable(stats));
     const QRegularExpression frames(u"(\\d+) missing by seq, (\\d+) received twice"_s);
     const QRegularExpressionMatch m = frames.match(stats);
