@@ -31,7 +31,7 @@ struct SharedOptionSpec
 // mean the same) help text each.
 constexpr SharedOptionSpec kSharedOptions[] = {
     {SharedOption::Hand, "hand",
-     "Operator input: idle, const:T, step:T[:T0], sine:A:F, chirp:A:F0:F1 or hand:ANGLE (N·m, "
+     "Operator input: idle, const:T, step:T[:T0[:AT]], sine:A:F, chirp:A:F0:F1 or hand:ANGLE (N·m, "
      "Hz, rad).",
      "SPEC", "idle"},
     {SharedOption::Rate, "rate", "Control rate [Hz] (default 1000).", "HZ", "1000"},

@@ -1,5 +1,5 @@
 // hatpic-tuner [--port PATH|sim] [--baud N] [--protocol auto|v2|legacy] [--profile FILE]
-//              [--hand SPEC] [RECORDING.csv]
+//              [--hand SPEC] [--bridge 1|2] [RECORDING.csv]
 #include "plots/plotpanel.h"
 #include "window/mainwindow.h"
 
@@ -117,7 +117,13 @@ int main(int argc, char *argv[])
                                   QStringLiteral("With --port sim: seed of the faults and the "
                                                  "load noise (default 1)."),
                                   QStringLiteral("N"));
-    parser.addOptions({port, baud, protocol, profile, hand, repaint, quitAfter, faults, seed});
+    const QCommandLineOption bridge(QStringLiteral("bridge"),
+                                    QStringLiteral("Open the Bridge panel and start the robot "
+                                                   "bridge on ROS 1 or ROS 2, with the profile's "
+                                                   "bridge settings (docs/teleop.md)."),
+                                    QStringLiteral("1|2"));
+    parser.addOptions(
+        {port, baud, protocol, profile, hand, repaint, quitAfter, faults, seed, bridge});
     parser.addPositionalArgument(QStringLiteral("recording"),
                                  QStringLiteral("A recording (CSV) to open in replay."),
                                  QStringLiteral("[RECORDING.csv]"));
@@ -127,7 +133,7 @@ int main(int argc, char *argv[])
         arguments << QString::fromLocal8Bit(argv[i]);
     QStringList names{u"h"_s, u"help"_s, u"help-all"_s, u"v"_s, u"version"_s};
     for (const QCommandLineOption *o :
-         {&port, &baud, &protocol, &profile, &hand, &repaint, &quitAfter, &faults, &seed})
+         {&port, &baud, &protocol, &profile, &hand, &repaint, &quitAfter, &faults, &seed, &bridge})
         names << o->names();
     if (!onlyOwnOptions(arguments, names) || !parser.parse(arguments) ||
         parser.isSet(QStringLiteral("help-all"))) {
@@ -216,6 +222,16 @@ int main(int argc, char *argv[])
             return 2;
         }
     }
+    int bridgeRos = 0;
+    if (parser.isSet(bridge)) {
+        const QString v = parser.value(bridge).trimmed();
+        if (v != u"1" && v != u"2") {
+            fail(QStringLiteral("--bridge: expected 1 or 2 (the ROS version), got \"%1\"")
+                     .arg(parser.value(bridge).left(40)));
+            return 2;
+        }
+        bridgeRos = v.toInt();
+    }
     if (parser.positionalArguments().size() > 1) {
         fail(QStringLiteral("at most one recording can be opened"));
         return 2;
@@ -235,6 +251,8 @@ int main(int argc, char *argv[])
     window.show();
     if (!options.port.isEmpty())
         window.connectTo(options);
+    if (bridgeRos != 0 && !window.startBridge(bridgeRos))
+        fail(QStringLiteral("--bridge: the robot bridge did not start; the Bridge panel says why"));
     if (!parser.positionalArguments().isEmpty()) {
         QString error;
         if (!window.openRecording(parser.positionalArguments().constFirst(), &error))

@@ -48,7 +48,7 @@ public:
                    "SPEC is the operator's torque on the knob [N·m]; positive pushes theta up:\n"
                    "  idle             no hand\n"
                    "  const:T          T from t = 0\n"
-                   "  step:T[:T0]      T0 (default 0) until t = 0.1 s, then T\n"
+                   "  step:T[:T0[:AT]] T0 (default 0) until t = AT (default 0.1 s), then T\n"
                    "  sine:A:F         A·sin(2π·F·t), F in Hz\n"
                    "  chirp:A:F0:F1    sine sweeping linearly from F0 to F1 Hz every 10 s\n"
                    "  hand:ANGLE       a virtual hand (spring 2 N·m/rad, damper 0.05 N·m·s/rad)\n"

@@ -26,7 +26,7 @@ struct KindInfo
 const KindInfo kKinds[] = {
     {HandInput::Kind::Idle, QLatin1String("idle"), QLatin1String("idle"), 0, 0},
     {HandInput::Kind::Constant, QLatin1String("const"), QLatin1String("const:T"), 1, 1},
-    {HandInput::Kind::Step, QLatin1String("step"), QLatin1String("step:T[:T0]"), 1, 2},
+    {HandInput::Kind::Step, QLatin1String("step"), QLatin1String("step:T[:T0[:AT]]"), 1, 3},
     {HandInput::Kind::Sine, QLatin1String("sine"), QLatin1String("sine:A:F"), 2, 2},
     {HandInput::Kind::Chirp, QLatin1String("chirp"), QLatin1String("chirp:A:F0:F1"), 3, 3},
     {HandInput::Kind::VirtualHand, QLatin1String("hand"), QLatin1String("hand:ANGLE"), 1, 1},
@@ -62,7 +62,7 @@ double HandInput::torque(double t, double theta, double omega) const
     case Kind::Constant:
         return amplitude;
     case Kind::Step:
-        return t < kStepTime ? offset : amplitude;
+        return t < stepTime ? offset : amplitude;
     case Kind::Sine:
         return amplitude * std::sin(2.0 * std::numbers::pi * frequency * t);
     case Kind::Chirp: {
@@ -84,7 +84,7 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
     const QString text = spec.trimmed();
     if (text.isEmpty()) {
         setError(error, QStringLiteral("The hand input is empty; expected idle, const:T, "
-                                       "step:T[:T0], sine:A:F, chirp:A:F0:F1 or hand:ANGLE."));
+                                       "step:T[:T0[:AT]], sine:A:F, chirp:A:F0:F1 or hand:ANGLE."));
         return std::nullopt;
     }
     const QStringList parts = text.split(QLatin1Char(':'));
@@ -103,9 +103,10 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
     const int count = int(parts.size()) - 1;
     if (count < info->minValues || count > info->maxValues) {
         const QString expected =
-            info->minValues == info->maxValues
-                ? valueCount(info->minValues)
-                : QStringLiteral("%1 or %2 values").arg(info->minValues).arg(info->maxValues);
+            info->minValues == info->maxValues ? valueCount(info->minValues)
+            : info->maxValues - info->minValues == 1
+                ? QStringLiteral("%1 or %2 values").arg(info->minValues).arg(info->maxValues)
+                : QStringLiteral("%1 to %2 values").arg(info->minValues).arg(info->maxValues);
         setError(error, QStringLiteral("Hand input \"%1\" has %2 but %3 takes %4 (%5).")
                             .arg(text, valueCount(count), QString(info->name), expected,
                                  QString(info->usage)));
@@ -166,8 +167,16 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
     case Kind::Step:
         hand.amplitude = values.at(0);
         hand.offset = values.size() > 1 ? values.at(1) : 0.0;
+        hand.stepTime = values.size() > 2 ? values.at(2) : kStepTime;
         if (!checkTorque(hand.amplitude) || !checkTorque(hand.offset))
             return std::nullopt;
+        if (hand.stepTime < 0 || hand.stepTime > kMaxStepTime) {
+            setError(error, QStringLiteral("Hand input step time %1 s in \"%2\" must be from 0 "
+                                           "to %3 s.")
+                                .arg(compactNumberText(hand.stepTime), text,
+                                     compactNumberText(kMaxStepTime)));
+            return std::nullopt;
+        }
         break;
     case Kind::Sine:
         hand.amplitude = values.at(0);
@@ -207,7 +216,12 @@ QString HandInput::toSpec() const
         values = {amplitude};
         break;
     case Kind::Step:
-        values = offset == 0.0 ? std::vector{amplitude} : std::vector{amplitude, offset};
+        if (stepTime != kStepTime)
+            values = {amplitude, offset, stepTime};
+        else if (offset != 0.0)
+            values = {amplitude, offset};
+        else
+            values = {amplitude};
         break;
     case Kind::Sine:
         values = {amplitude, frequency};

@@ -9,7 +9,8 @@
 
 namespace hatpic {
 
-//! Parsed form of a hand SPEC (docs/cli.md): `idle`, `const:T`, `step:T[:T0]`, `sine:A:F`,
+//! Parsed form of a hand SPEC (docs/cli.md): `idle`, `const:T`, `step:T[:T0[:AT]]`,
+//! `sine:A:F`,
 //! `chirp:A:F0:F1`, `hand:ANGLE`. Torques are the operator's torque τ_op on the knob; positive
 //! pushes θ positive (so the measured τ is its negative).
 struct HandInput
@@ -17,13 +18,15 @@ struct HandInput
     enum class Kind { Idle, Constant, Step, Sine, Chirp, VirtualHand };
 
     Kind kind = Kind::Idle;
-    double amplitude = 0;  //!< T for const/step, A for sine/chirp [N·m]
-    double offset = 0;     //!< T0 of step: torque before the step [N·m]
-    double frequency = 0;  //!< F of sine, F0 of chirp [Hz]
-    double frequency1 = 0; //!< F1 of chirp [Hz]
-    double angle = 0;      //!< target of the virtual hand [rad]
+    double amplitude = 0;        //!< T for const/step, A for sine/chirp [N·m]
+    double offset = 0;           //!< T0 of step: torque before the step [N·m]
+    double stepTime = kStepTime; //!< AT of step: when the step happens [s]
+    double frequency = 0;        //!< F of sine, F0 of chirp [Hz]
+    double frequency1 = 0;       //!< F1 of chirp [Hz]
+    double angle = 0;            //!< target of the virtual hand [rad]
 
-    static constexpr double kStepTime = 0.1;      //!< when a step happens [s]
+    static constexpr double kStepTime = 0.1;      //!< when a step happens by default [s]
+    static constexpr double kMaxStepTime = 3600;  //!< AT at most: an hour [s]
     static constexpr double kChirpPeriod = 10.0;  //!< one linear F0→F1 sweep, then repeats [s]
     static constexpr double kHandStiffness = 2.0; //!< virtual hand spring [N·m/rad]
     static constexpr double kHandDamping = 0.05;  //!< virtual hand damper [N·m·s/rad]

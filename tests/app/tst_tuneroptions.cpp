@@ -77,6 +77,7 @@ void TestTunerOptions::refusesBadNumbers_data()
     QTest::newRow("quit-after beyond int ms")
         << QStringList{u"--quit-after"_s, u"1e300"_s} << u"--quit-after"_s;
     QTest::newRow("quit-after empty") << QStringList{u"--quit-after="_s} << u"--quit-after"_s;
+    QTest::newRow("bridge not a ROS") << QStringList{u"--bridge"_s, u"3"_s} << u"--bridge"_s;
     QTest::newRow("repaint-rate nan")
         << QStringList{u"--repaint-rate"_s, u"nan"_s} << u"--repaint-rate"_s;
     QTest::newRow("repaint-rate not a number")

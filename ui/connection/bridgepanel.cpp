@@ -399,6 +399,24 @@ bool BridgePanel::isRunning() const
 #endif
 }
 
+bool BridgePanel::startOn(int rosVersion)
+{
+#ifdef HATPIC_HAVE_BRIDGE
+    const auto version = rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
+    if (!m_bridge || (rosVersion != 1 && rosVersion != 2) || !ros::Node::isAvailable(version)) {
+        setStatus(tr("Cannot start: ROS %1 is not built into this tuner.").arg(rosVersion), true);
+        return false;
+    }
+    m_settings.rosVersion = rosVersion;
+    showSettings();
+    setBridgeEnabled(true);
+    return isRunning();
+#else
+    Q_UNUSED(rosVersion);
+    return false;
+#endif
+}
+
 void BridgePanel::setBridgeEnabled(bool on)
 {
 #ifdef HATPIC_HAVE_BRIDGE

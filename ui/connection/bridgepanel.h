@@ -64,6 +64,10 @@ public Q_SLOTS:
     void setReferenceMode(hatpic::ReferenceMode mode);
     //! Starts or stops the bridge, as the Enable box does.
     void setBridgeEnabled(bool on);
+    //! Picks ROS `rosVersion` (1 or 2) and starts the bridge with the settings shown, as a user
+    //! choosing it and ticking Enable (hatpic-tuner --bridge). False, with the panel saying
+    //! why, when that ROS is not built in or the bridge cannot start.
+    bool startOn(int rosVersion);
 
 Q_SIGNALS:
     //! The user changed a setting (valid as a whole): for the profile.

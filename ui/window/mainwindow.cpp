@@ -1,5 +1,6 @@
 #include "window/mainwindow.h"
 
+#include "connection/bridgepanel.h"
 #include "connection/connectionbar.h"
 #include "connection/linkbanner.h"
 #include "connection/linkstatswidget.h"
@@ -279,6 +280,14 @@ void MainWindow::setSimulatedHand(const HandInput &hand)
 {
     m_simPanel->chooseHand(hand);
     m_client->setSimulatedHand(hand);
+}
+
+bool MainWindow::startBridge(int rosVersion)
+{
+    m_bridgeDock->show();
+    m_bridgeDock->raise();
+    auto *panel = qobject_cast<BridgePanel *>(m_bridgeDock->widget());
+    return panel && panel->startOn(rosVersion);
 }
 
 void MainWindow::connectTo(const ConnectOptions &options)

@@ -49,6 +49,10 @@ public:
     void disconnectDevice();
     //! Chooses the simulated hand (as if picked in the simulator panel).
     void setSimulatedHand(const HandInput &hand);
+    //! Shows the Bridge panel and starts the robot bridge on ROS `rosVersion` (1 or 2) with the
+    //! settings it shows (the profile's host.bridge), as View → Bridge and Enable would. False
+    //! when it could not start; the panel says why.
+    bool startBridge(int rosVersion);
 
     //! Enters replay of a recording; false (with `error`) when it cannot be read.
     bool openRecording(const QString &csvPath, QString *error = nullptr);

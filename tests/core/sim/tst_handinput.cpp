@@ -85,7 +85,9 @@ void TestHandInput::parseInvalid_data()
     QTest::newRow("idle with value") << u"idle:1"_s << u"has 1 value but idle takes 0 values"_s;
     QTest::newRow("const without value") << u"const"_s << u"has 0 values but const takes 1"_s;
     QTest::newRow("const two values") << u"const:1:2"_s << u"has 2 values"_s;
-    QTest::newRow("step three values") << u"step:1:2:3"_s << u"takes 1 or 2 values"_s;
+    QTest::newRow("step four values") << u"step:1:2:3:4"_s << u"takes 1 to 3 values"_s;
+    QTest::newRow("step time negative") << u"step:0.1:0:-1"_s << u"step time -1 s"_s;
+    QTest::newRow("step time beyond an hour") << u"step:0.1:0:3601"_s << u"from 0 to 3600 s"_s;
     QTest::newRow("sine one value") << u"sine:0.1"_s << u"sine:A:F"_s;
     QTest::newRow("chirp two values") << u"chirp:0.1:1"_s << u"chirp:A:F0:F1"_s;
     QTest::newRow("hand no angle") << u"hand"_s << u"hand:ANGLE"_s;
@@ -134,6 +136,9 @@ void TestHandInput::roundTrip_data()
     QTest::newRow("const") << make(K::Constant, 0.123456789);
     QTest::newRow("step zero T0") << make(K::Step, -0.1);
     QTest::newRow("step with T0") << make(K::Step, 0.2, 0.1 / 3);
+    HandInput release = make(K::Step, 0, 0.05);
+    release.stepTime = 8.25;
+    QTest::newRow("step with its time") << release;
     QTest::newRow("sine") << make(K::Sine, 0.05, 0, 1.0 / 7);
     QTest::newRow("chirp") << make(K::Chirp, 0.02, 0, 0.1, 30);
     QTest::newRow("hand") << make(K::VirtualHand, 0, 0, 0, 0, std::numbers::pi / 5);
@@ -165,6 +170,14 @@ void TestHandInput::torqueStep()
     QCOMPARE(s.torque(HandInput::kStepTime * 0.999, 0, 0), -0.02);
     QCOMPARE(s.torque(HandInput::kStepTime, 0, 0), 0.1);
     QCOMPARE(s.torque(5.0, 0, 0), 0.1);
+
+    // A later step time: a hand that pushes, then lets go.
+    const std::optional<HandInput> release = HandInput::parse(u"step:0:0.05:8"_s);
+    QVERIFY(release.has_value());
+    QCOMPARE(release->stepTime, 8.0);
+    QCOMPARE(release->torque(7.999, 0, 0), 0.05);
+    QCOMPARE(release->torque(8.0, 0, 0), 0.0);
+    QCOMPARE(release->toSpec(), u"step:0:0.05:8"_s);
 }
 
 void TestHandInput::torqueSine()

@@ -187,6 +187,24 @@ private Q_SLOTS:
         m_robot.stop();
     }
 
+    // hatpic-tuner --bridge: the panel picks the ROS and starts as Enable would; a ROS that
+    // does not exist is refused, saying so, and nothing starts.
+    void startOnPicksTheRosAndStarts()
+    {
+        QVERIFY(!m_panel->isRunning());
+        QVERIFY(!m_panel->startOn(3));
+        QVERIFY(!m_panel->isRunning());
+        QVERIFY2(label(u"bridge_status"_s).contains(u"ROS 3 is not built"_s),
+                 qPrintable(label(u"bridge_status"_s)));
+        QVERIFY(m_panel->startOn(2));
+        QVERIFY(m_panel->isRunning());
+        QVERIFY(find<QCheckBox>(u"bridge_enable"_s)->isChecked());
+        QCOMPARE(find<QComboBox>(u"bridge_ros"_s)->currentData().toInt(), 2);
+        QTRY_VERIFY_WITH_TIMEOUT((m_peer->take(), m_peer->twists.size() >= 5), 10000);
+        m_panel->setBridgeEnabled(false);
+        QVERIFY(!m_panel->isRunning());
+    }
+
     void cleanupTestCase()
     {
         m_panel.reset();

@@ -1,0 +1,75 @@
+// hatpic-robot-sim: a simulated robot at the other end of hatpic-bridge (robot.md,
+// docs/teleop.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4;
+// the middleware refused: exit 1.
+#include "robotsimoptions.h"
+
+#include "common/quitonsignal.h"
+
+#include <QCoreApplication>
+#include <QTimer>
+
+#include <cstdio>
+
+using namespace hatpic;
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitBadOptions = 4;
+
+void printError(const QString &sentence)
+{
+    std::fprintf(stderr, "hatpic-robot-sim: %s\n", qPrintable(sentence));
+}
+
+QString num(double v)
+{
+    return QString::number(v, 'g', 4);
+}
+
+void printStatus(const robot::RobotSimulator::Status &s)
+{
+    const QString line =
+        u"x " + num(s.x) + u" m, v " + num(s.v) + u" m/s, v_ref " + num(s.vRef) + u" m/s, F_e " +
+        num(s.wallForce) + u" N | twists in " + QString::number(s.twistsIn) + u", wrenches out " +
+        QString::number(s.wrenchesOut) + u", poses out " + QString::number(s.posesOut) +
+        (s.stale ? u", stale" : u"") + u", dropped " + QString::number(s.dropped);
+    std::fprintf(stdout, "%s\n", line.toUtf8().constData());
+    std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("hatpic-robot-sim"));
+    QString help, error;
+    const auto settings = robot::parseRobotSimOptions(QCoreApplication::arguments(), &help, &error);
+    if (!settings) {
+        if (!error.isEmpty()) {
+            printError(error);
+            return kExitBadOptions;
+        }
+        std::fputs(qPrintable(help), stdout);
+        return kExitOk;
+    }
+    if (!quitOnSignals()) {
+        printError(QStringLiteral("Cannot install the signal handlers."));
+        return kExitFailure;
+    }
+    std::string why;
+    auto robot = robot::RobotSimulator::start(*settings, &why);
+    if (!robot) {
+        printError(QString::fromStdString(why));
+        return kExitFailure;
+    }
+    std::fprintf(stderr, "hatpic-robot-sim: on %s\n", robot->where().c_str());
+    QTimer status;
+    QObject::connect(&status, &QTimer::timeout, &app, [&robot] { printStatus(robot->status()); });
+    status.start(1000);
+    app.exec();
+    robot.reset();
+    return kExitOk;
+}

@@ -1,0 +1,207 @@
+#include "robotsim/robotsimulator.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace hatpic::robot {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double monotonicSeconds()
+{
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
+ros::Time wallTime()
+{
+    return ros::timeFromSeconds(
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count());
+}
+
+double component(const ros::Twist &twist, bridge::Component c)
+{
+    const ros::Vector3 &v = c.angular ? twist.angular : twist.linear;
+    return c.index == 0 ? v.x : c.index == 1 ? v.y : v.z;
+}
+
+void setComponent(ros::Wrench &wrench, bridge::Component c, double value)
+{
+    ros::Vector3 &v = c.angular ? wrench.torque : wrench.force;
+    (c.index == 0 ? v.x : c.index == 1 ? v.y : v.z) = value;
+}
+
+//! The robot's pose for position x along `c`: a translation, or a rotation by x about it.
+ros::Pose poseAlong(bridge::Component c, double x)
+{
+    ros::Pose pose;
+    if (!c.angular) {
+        (c.index == 0 ? pose.position.x : c.index == 1 ? pose.position.y : pose.position.z) = x;
+        return pose;
+    }
+    ros::Quaternion &q = pose.orientation;
+    (c.index == 0 ? q.x : c.index == 1 ? q.y : q.z) = std::sin(x / 2);
+    q.w = std::cos(x / 2);
+    return pose;
+}
+
+} // namespace
+
+std::vector<Violation> validate(const RobotSimSettings &settings)
+{
+    std::vector<Violation> out = validate(settings.robot);
+    for (Violation &v : validate(settings.faults))
+        out.push_back(std::move(v));
+    if (!(std::isfinite(settings.rateHz) && settings.rateHz > 0 &&
+          settings.rateHz <= kMaxRobotRateHz))
+        out.push_back({"rate", -1, "must be above 0 and at most 1000 Hz", settings.rateHz});
+    if (!(std::isfinite(settings.staleAfter) && settings.staleAfter > 0 &&
+          settings.staleAfter <= kMaxRobotStale))
+        out.push_back({"stale", -1, "must be above 0 and at most 10 s", settings.staleAfter});
+    return out;
+}
+
+RobotSimulator::RobotSimulator(const RobotSimSettings &settings)
+    : m_settings(settings), m_model(settings.robot), m_inbound(settings.faults, settings.seed),
+      m_outbound(settings.faults, settings.seed + 1)
+{}
+
+std::unique_ptr<RobotSimulator> RobotSimulator::start(const RobotSimSettings &settings,
+                                                      std::string *error)
+{
+    const auto fail = [error](std::string why) {
+        if (error)
+            *error = std::move(why);
+        return nullptr;
+    };
+    if (const auto violations = validate(settings); !violations.empty())
+        return fail(violations.front().message() + ".");
+    for (const auto &[name, topic, optional] :
+         {std::tuple{"twist topic", settings.twistTopic, false},
+          std::tuple{"wrench topic", settings.wrenchTopic, true},
+          std::tuple{"pose topic", settings.poseTopic, true}}) {
+        if ((!optional || !topic.empty()) && !bridge::isValidTopicName(topic))
+            return fail(std::string(name) + ": '" + topic + "' is not a ROS topic name.");
+    }
+
+    std::unique_ptr<RobotSimulator> sim(new RobotSimulator(settings));
+    std::string why;
+    sim->m_node = ros::Node::open(settings.node, &why);
+    if (!sim->m_node)
+        return fail(why);
+    if (!settings.wrenchTopic.empty()) {
+        // As a wrench estimator publishes its sensor-data stream.
+        sim->m_wrenchOut = sim->m_node->advertise(
+            settings.wrenchTopic, ros::MessageType::WrenchStamped, ros::Qos::matchAny(), &why);
+        if (!sim->m_wrenchOut)
+            return fail(why);
+    }
+    if (!settings.poseTopic.empty()) {
+        sim->m_poseOut = sim->m_node->advertise(settings.poseTopic, ros::MessageType::PoseStamped,
+                                                ros::Qos::defaults(), &why);
+        if (!sim->m_poseOut)
+            return fail(why);
+    }
+    RobotSimulator *self = sim.get();
+    sim->m_twistIn = sim->m_node->subscribe(
+        settings.twistTopic, ros::MessageType::TwistStamped, ros::Qos::matchAny(),
+        [self](const ros::Message &m) { self->onTwist(m); }, &why);
+    if (!sim->m_twistIn)
+        return fail(why);
+    sim->m_thread = std::thread([self] { self->run(); });
+    return sim;
+}
+
+RobotSimulator::~RobotSimulator()
+{
+    m_stop = true;
+    if (m_thread.joinable())
+        m_thread.join();
+    m_twistIn.reset(); // no onTwist() after this
+    m_wrenchOut.reset();
+    m_poseOut.reset();
+    m_node.reset();
+}
+
+void RobotSimulator::onTwist(const ros::Message &message)
+{
+    const auto *twist = std::get_if<ros::TwistStamped>(&message);
+    if (!twist)
+        return;
+    const double v = component(twist->twist, m_settings.axis);
+    const std::lock_guard lock(m_mutex);
+    m_inbound.send(v, monotonicSeconds());
+}
+
+RobotSimulator::Status RobotSimulator::status() const
+{
+    const std::lock_guard lock(m_mutex);
+    Status s = m_status;
+    s.dropped = m_inbound.counters().lost + m_inbound.counters().overflow +
+                m_outbound.counters().lost + m_outbound.counters().overflow;
+    return s;
+}
+
+void RobotSimulator::run()
+{
+    constexpr auto kStep = std::chrono::microseconds(1000);
+    constexpr auto kMaxLag = std::chrono::milliseconds(100); // beyond this, skip ahead
+    const int stepsPerOutput = std::max(1, int(std::lround(1000.0 / m_settings.rateHz)));
+    auto next = Clock::now();
+    std::uint64_t step = 0;
+    while (!m_stop) {
+        std::this_thread::sleep_until(next);
+        next += kStep;
+        const auto now = Clock::now();
+        if (now - next > kMaxLag) {
+            const std::lock_guard lock(m_mutex);
+            m_status.overruns += std::uint64_t((now - next) / kStep);
+            next = now;
+        }
+        const double t = monotonicSeconds();
+        std::vector<ros::WrenchStamped> due;
+        ros::PoseStamped pose;
+        bool output = false;
+        {
+            const std::lock_guard lock(m_mutex);
+            m_inbound.deliverDue(t, [&](double v) {
+                // A non-finite component is no reference.
+                m_vRef = std::isfinite(v) ? v : 0.0;
+                m_lastTwistAt = t;
+                ++m_status.twistsIn;
+            });
+            const bool stale = m_lastTwistAt < 0 || t - m_lastTwistAt > m_settings.staleAfter;
+            const double vRef = stale ? 0.0 : m_vRef;
+            m_model.step(vRef);
+            m_status.x = m_model.position();
+            m_status.v = m_model.velocity();
+            m_status.vRef = vRef;
+            m_status.wallForce = m_model.wallForce();
+            m_status.stale = stale;
+            output = ++step % std::uint64_t(stepsPerOutput) == 0;
+            if (output) {
+                ros::WrenchStamped wrench;
+                wrench.header = {wallTime(), m_settings.frameId};
+                setComponent(wrench.wrench, m_settings.axis, m_model.estimatedForce());
+                m_outbound.send(wrench, t);
+                pose.header = wrench.header;
+                pose.pose = poseAlong(m_settings.axis, m_model.position());
+            }
+            m_outbound.deliverDue(t, [&](const ros::WrenchStamped &w) { due.push_back(w); });
+        }
+        // Published outside the lock: status() never waits for the middleware.
+        for (const ros::WrenchStamped &w : due) {
+            if (m_wrenchOut && m_wrenchOut->publish(w)) {
+                const std::lock_guard lock(m_mutex);
+                ++m_status.wrenchesOut;
+            }
+        }
+        if (output && m_poseOut && m_poseOut->publish(pose)) {
+            const std::lock_guard lock(m_mutex);
+            ++m_status.posesOut;
+        }
+    }
+}
+
+} // namespace hatpic::robot

@@ -1,0 +1,476 @@
+// The teleoperation loop of robot.md end to end, as a user runs it: hatpic-sim (a constant
+// hand on the simulated knob), hatpic-bridge (--component force.x --gain 0.02) and
+// hatpic-robot-sim, three real processes on loopback, watched by a ROS node of this test on
+// the bridge's and the robot's topics. The knob must settle at the equilibrium robot.md
+// computes, without chatter, for one-way delays of 0, 20 and 40 ms and with 20 % loss; when
+// the robot dies τ_ext is 0 within the stale time and the knob springs back; when the hand
+// lets go the knob returns to centre and the robot stops. Over ROS 2 and over ROS 1 (a real
+// roscore on a private port). Plus hatpic-robot-sim's own promises: bad options refused
+// naming option, rule and value; a status line a second; exit 0 on SIGINT and SIGTERM.
+#ifdef HATPIC_HAVE_ROS1_TESTS
+#include "roscore.h"
+#endif
+
+#include "model/params.h"
+#include "profile/bridgesettings.h"
+#include "robot/loopequilibrium.h"
+#include "ros/node.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QTest>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+using namespace hatpic;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// robot.md's example: τ_h = 0.05 N·m, g = 0.02 N·m/N, the robot's defaults.
+constexpr double kHand = 0.05;
+constexpr double kGain = 0.02;
+constexpr double kEncoderStep = 2 * 3.14159265358979 / 4096; //!< one servo count [rad]
+
+double monotonic()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+//! What the test's node sees: θ from /hatpic/joint_states, τ_ext (the device's) from
+//! /hatpic/feedback, x from /robot/pose, each with its arrival time [s, monotonic].
+class Watcher
+{
+public:
+    struct Point
+    {
+        double t;
+        double value;
+    };
+
+    QString open(ros::RosVersion version, int domain)
+    {
+        std::string why;
+        m_node = ros::Node::open({version, "tst_teleoploop", domain}, &why);
+        if (!m_node)
+            return QString::fromStdString(why);
+        const auto add = [&](const char *topic, ros::MessageType type, std::vector<Point> *into,
+                             auto read) {
+            auto sub = m_node->subscribe(
+                topic, type, ros::Qos::matchAny(),
+                [this, into, read](const ros::Message &m) {
+                    const std::lock_guard lock(m_mutex);
+                    if (const auto value = read(m))
+                        into->push_back({monotonic(), *value});
+                },
+                &why);
+            if (sub)
+                m_subs.push_back(std::move(sub));
+            return sub != nullptr || !m_subs.empty();
+        };
+        const bool ok = add("/hatpic/joint_states", ros::MessageType::JointState, &m_theta,
+                            [](const ros::Message &m) -> std::optional<double> {
+                                const auto *js = std::get_if<ros::JointState>(&m);
+                                if (!js || js->position.empty())
+                                    return std::nullopt;
+                                return js->position.front();
+                            }) &&
+                        add("/hatpic/feedback", ros::MessageType::WrenchStamped, &m_tau,
+                            [](const ros::Message &m) -> std::optional<double> {
+                                const auto *w = std::get_if<ros::WrenchStamped>(&m);
+                                return w ? std::optional(w->wrench.torque.z) : std::nullopt;
+                            }) &&
+                        add("/robot/pose", ros::MessageType::PoseStamped, &m_x,
+                            [](const ros::Message &m) -> std::optional<double> {
+                                const auto *p = std::get_if<ros::PoseStamped>(&m);
+                                return p ? std::optional(p->pose.position.x) : std::nullopt;
+                            });
+        return ok && m_subs.size() == 3 ? QString() : QString::fromStdString(why);
+    }
+    void close()
+    {
+        m_subs.clear();
+        m_node.reset();
+    }
+
+    //! The points of a series that arrived in [from, to] (monotonic seconds).
+    std::vector<double> window(const std::vector<Point> Watcher::*series, double from,
+                               double to) const
+    {
+        const std::lock_guard lock(m_mutex);
+        std::vector<double> out;
+        for (const Point &p : this->*series) {
+            if (p.t >= from && p.t <= to)
+                out.push_back(p.value);
+        }
+        return out;
+    }
+    std::size_t count(const std::vector<Point> Watcher::*series) const
+    {
+        const std::lock_guard lock(m_mutex);
+        return (this->*series).size();
+    }
+
+    std::vector<Point> m_theta, m_tau, m_x; // guarded by m_mutex
+
+private:
+    mutable std::mutex m_mutex;
+    std::unique_ptr<ros::Node> m_node;
+    std::vector<std::unique_ptr<ros::Subscription>> m_subs;
+};
+
+struct Stats
+{
+    double mean = NAN;
+    double min = NAN;
+    double max = NAN;
+    std::size_t n = 0;
+    double spread() const { return max - min; }
+};
+
+Stats statsOf(const std::vector<double> &v)
+{
+    Stats s;
+    s.n = v.size();
+    if (v.empty())
+        return s;
+    double sum = 0;
+    s.min = s.max = v.front();
+    for (double x : v) {
+        sum += x;
+        s.min = std::min(s.min, x);
+        s.max = std::max(s.max, x);
+    }
+    s.mean = sum / double(v.size());
+    return s;
+}
+
+QString describe(const char *what, const Stats &s)
+{
+    return QStringLiteral("%1: mean %2, min %3, max %4, n %5")
+        .arg(QLatin1String(what))
+        .arg(s.mean, 0, 'g', 5)
+        .arg(s.min, 0, 'g', 5)
+        .arg(s.max, 0, 'g', 5)
+        .arg(s.n);
+}
+
+//! A child program that is stopped (SIGTERM, then SIGKILL) when it goes out of scope.
+class Program
+{
+public:
+    explicit Program(const QString &path) { m_process.setProgram(path); }
+    ~Program() { stop(); }
+
+    bool start(const QStringList &arguments, const QProcessEnvironment &env)
+    {
+        m_process.setArguments(arguments);
+        m_process.setProcessEnvironment(env);
+        m_process.start();
+        return m_process.waitForStarted(10000);
+    }
+    void stop()
+    {
+        if (m_process.state() == QProcess::NotRunning)
+            return;
+        m_process.terminate();
+        if (!m_process.waitForFinished(10000)) {
+            m_process.kill();
+            m_process.waitForFinished(5000);
+        }
+    }
+    void kill()
+    {
+        m_process.kill();
+        m_process.waitForFinished(5000);
+    }
+    QProcess &process() { return m_process; }
+    QByteArray output()
+    {
+        m_out += m_process.readAllStandardOutput();
+        m_err += m_process.readAllStandardError();
+        return "stdout: " + m_out.right(600) + "\nstderr: " + m_err.right(600);
+    }
+
+private:
+    QProcess m_process;
+    QByteArray m_out, m_err;
+};
+
+//! Waits, spinning the event loop, for `seconds`.
+void pause(double seconds)
+{
+    QTest::qWait(int(seconds * 1000));
+}
+
+} // namespace
+
+class TestTeleopLoop : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+
+    void badOptionsNameOptionRuleAndValue_data();
+    void badOptionsNameOptionRuleAndValue();
+    void statusLinesAndSignals_data();
+    void statusLinesAndSignals();
+
+    void settlesAtTheEquilibrium_data();
+    void settlesAtTheEquilibrium();
+    void handLetGoReturnsToCentreAndTheRobotStops();
+
+private:
+    struct Loop
+    {
+        std::unique_ptr<Program> sim, bridge, robot;
+        Watcher watcher;
+    };
+    //! Starts the three programs and the watcher; empty, or why not.
+    QString startLoop(Loop &loop, ros::RosVersion version, const QString &hand,
+                      const QStringList &robotArguments);
+    QProcessEnvironment environment(ros::RosVersion version) const;
+
+    int m_domain = 0;
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    std::unique_ptr<test::RosCore> m_core;
+#endif
+    QTemporaryDir m_dir;
+    int m_link = 0;
+};
+
+void TestTeleopLoop::initTestCase()
+{
+    // A private domain per run, so that parallel tests (and runs) never see each other.
+    m_domain = 20 + int(QCoreApplication::applicationPid() % 200);
+    QVERIFY(m_dir.isValid());
+}
+
+void TestTeleopLoop::cleanupTestCase()
+{
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    if (m_core)
+        m_core->stop();
+#endif
+}
+
+QProcessEnvironment TestTeleopLoop::environment(ros::RosVersion version) const
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    if (version == ros::RosVersion::Ros1 && m_core)
+        env = m_core->environment();
+#else
+    Q_UNUSED(version);
+#endif
+    env.insert(u"ROS_DOMAIN_ID"_s, QString::number(m_domain));
+    // Loopback only, as rmw_cyclonedds reads it: no stray peers, no multicast.
+    env.insert(u"ROS_AUTOMATIC_DISCOVERY_RANGE"_s, u"LOCALHOST"_s);
+    env.remove(u"CYCLONEDDS_URI"_s);
+    return env;
+}
+
+QString TestTeleopLoop::startLoop(Loop &loop, ros::RosVersion version, const QString &hand,
+                                  const QStringList &robotArguments)
+{
+    const QString ros = version == ros::RosVersion::Ros1 ? u"1"_s : u"2"_s;
+    const QProcessEnvironment env = environment(version);
+    qputenv("ROS_DOMAIN_ID", QByteArray::number(m_domain));
+    qputenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST");
+    if (const QString why = loop.watcher.open(version, m_domain); !why.isEmpty())
+        return u"the test's node: "_s + why;
+
+    const QString link = m_dir.filePath(u"knob-%1"_s.arg(++m_link));
+    loop.sim = std::make_unique<Program>(QStringLiteral(HATPIC_SIM_PATH));
+    if (!loop.sim->start({u"--hand"_s, hand, u"--link"_s, link}, env))
+        return u"hatpic-sim did not start"_s;
+    QElapsedTimer clock;
+    clock.start();
+    while (!QFileInfo::exists(link) && clock.elapsed() < 10000)
+        pause(0.05);
+    if (!QFileInfo::exists(link))
+        return u"hatpic-sim made no link: "_s + QString::fromUtf8(loop.sim->output());
+
+    loop.robot = std::make_unique<Program>(QStringLiteral(HATPIC_ROBOT_SIM_PATH));
+    if (!loop.robot->start(QStringList{u"--ros"_s, ros} + robotArguments, env))
+        return u"hatpic-robot-sim did not start"_s;
+    loop.bridge = std::make_unique<Program>(QStringLiteral(HATPIC_BRIDGE_PATH));
+    if (!loop.bridge->start({u"--ros"_s, ros, u"--port"_s, link, u"--component"_s, u"force.x"_s,
+                             u"--gain"_s, QString::number(kGain)},
+                            env))
+        return u"hatpic-bridge did not start"_s;
+    return {};
+}
+
+void TestTeleopLoop::badOptionsNameOptionRuleAndValue_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QByteArray>("message");
+    QTest::newRow("mass") << QStringList{u"--mass"_s, u"0"_s} << QByteArray("--mass");
+    QTest::newRow("mass not a number") << QStringList{u"--mass"_s, u"heavy"_s}
+                                       << QByteArray("--mass needs a number, got 'heavy'.");
+    QTest::newRow("loss") << QStringList{u"--loss"_s, u"1.5"_s} << QByteArray("--loss");
+    QTest::newRow("delay") << QStringList{u"--delay"_s, u"-0.1"_s} << QByteArray("--delay");
+    QTest::newRow("rate") << QStringList{u"--rate"_s, u"5000"_s} << QByteArray("--rate");
+    QTest::newRow("axis") << QStringList{u"--axis"_s, u"up"_s} << QByteArray("--axis");
+    QTest::newRow("ros") << QStringList{u"--ros"_s, u"3"_s} << QByteArray("--ros needs 1 or 2");
+    QTest::newRow("wall stiffness")
+        << QStringList{u"--wall-stiffness"_s, u"-1"_s} << QByteArray("--wall-stiffness");
+    QTest::newRow("stray argument") << QStringList{u"go"_s} << QByteArray("Unexpected argument");
+}
+
+void TestTeleopLoop::badOptionsNameOptionRuleAndValue()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QByteArray, message);
+    QProcess robot;
+    robot.start(QStringLiteral(HATPIC_ROBOT_SIM_PATH), arguments);
+    QVERIFY(robot.waitForFinished(10000));
+    QCOMPARE(robot.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(robot.exitCode(), 4);
+    const QByteArray err = robot.readAllStandardError();
+    QVERIFY2(err.startsWith("hatpic-robot-sim: ") && err.contains(message), err.constData());
+    QCOMPARE(err.trimmed().count('\n'), 0); // one sentence
+    // The value the user gave is in it.
+    if (arguments.size() == 2)
+        QVERIFY2(err.contains(arguments.at(1).toUtf8()), err.constData());
+    QVERIFY(robot.readAllStandardOutput().isEmpty());
+}
+
+void TestTeleopLoop::statusLinesAndSignals_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::newRow("SIGINT") << int(SIGINT);
+    QTest::newRow("SIGTERM") << int(SIGTERM);
+}
+
+void TestTeleopLoop::statusLinesAndSignals()
+{
+    QFETCH(int, signal);
+    Program robot(QStringLiteral(HATPIC_ROBOT_SIM_PATH));
+    QVERIFY(robot.start({}, environment(ros::RosVersion::Ros2)));
+    pause(2.6);
+    const QByteArray out = robot.process().readAllStandardOutput();
+    // One line a second, saying where the robot is and what went in and out.
+    QVERIFY2(out.count('\n') >= 2 && out.count('\n') <= 3, out.constData());
+    QVERIFY2(out.contains("x 0 m") && out.contains("twists in 0") && out.contains("stale"),
+             out.constData());
+    ::kill(pid_t(robot.process().processId()), signal);
+    QVERIFY(robot.process().waitForFinished(10000));
+    QCOMPARE(robot.process().exitStatus(), QProcess::NormalExit);
+    QCOMPARE(robot.process().exitCode(), 0);
+}
+
+void TestTeleopLoop::settlesAtTheEquilibrium_data()
+{
+    QTest::addColumn<int>("rosVersion");
+    QTest::addColumn<QStringList>("faults");
+    QTest::addColumn<bool>("killTheRobot");
+    QTest::newRow("ROS 2, no delay") << 2 << QStringList{} << true;
+    QTest::newRow("ROS 2, 20 ms") << 2 << QStringList{u"--delay"_s, u"0.02"_s} << false;
+    QTest::newRow("ROS 2, 40 ms") << 2 << QStringList{u"--delay"_s, u"0.04"_s} << false;
+    QTest::newRow("ROS 2, 20 % loss") << 2 << QStringList{u"--loss"_s, u"0.2"_s} << false;
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    QTest::newRow("ROS 1, 20 ms") << 1 << QStringList{u"--delay"_s, u"0.02"_s} << true;
+#endif
+}
+
+void TestTeleopLoop::settlesAtTheEquilibrium()
+{
+    QFETCH(int, rosVersion);
+    QFETCH(QStringList, faults);
+    QFETCH(bool, killTheRobot);
+    const ros::RosVersion version = rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    if (version == ros::RosVersion::Ros1 && !m_core) {
+        m_core = std::make_unique<test::RosCore>();
+        QCOMPARE(m_core->start(), QString());
+        m_core->exportEnvironment();
+    }
+#endif
+
+    // Where robot.md says the loop comes to rest, from the same code the docs' table uses.
+    const auto rest =
+        robot::loopEquilibrium(DeviceParams{}, HostParams{}, kHand, kGain,
+                               bridge::FeedbackSettings{}.limit, robot::RobotParams{});
+    QVERIFY(rest.has_value());
+    const robot::LoopEquilibrium expected = *rest;
+    QVERIFY(std::abs(expected.theta - 0.0625) < 1e-9);
+
+    Loop loop;
+    const QString why = startLoop(loop, version, u"const:%1"_s.arg(kHand), faults);
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+
+    // Settled: over the last 2 s of a 9 s run, θ within an encoder count of the equilibrium
+    // and still (no chatter), τ_ext and x where robot.md puts them.
+    pause(9);
+    const double now = monotonic();
+    const Stats theta = statsOf(loop.watcher.window(&Watcher::m_theta, now - 2, now));
+    const Stats tau = statsOf(loop.watcher.window(&Watcher::m_tau, now - 2, now));
+    const Stats x = statsOf(loop.watcher.window(&Watcher::m_x, now - 2, now));
+    const QString report = describe("theta", theta) + u"; "_s + describe("tau_ext", tau) + u"; "_s +
+                           describe("x", x) + u"\nrobot "_s +
+                           QString::fromUtf8(loop.robot->output()) + u"\nbridge "_s +
+                           QString::fromUtf8(loop.bridge->output());
+    QVERIFY2(theta.n > 50 && tau.n > 50 && x.n > 50, qPrintable(report));
+    QVERIFY2(std::abs(theta.mean - expected.theta) < 1.5 * kEncoderStep, qPrintable(report));
+    QVERIFY2(theta.spread() <= 2.5 * kEncoderStep, qPrintable(report));
+    QVERIFY2(std::abs(tau.mean - expected.tauExt) < 0.002, qPrintable(report));
+    QVERIFY2(tau.spread() < 0.003, qPrintable(report));
+    QVERIFY2(std::abs(x.mean - expected.robotPosition) < 5e-4, qPrintable(report));
+    QVERIFY2(x.spread() < 5e-4, qPrintable(report));
+
+    if (!killTheRobot)
+        return;
+    // The robot dies: no more wrenches. τ_ext is 0 within the bridge's stale time (0.5 s)
+    // plus the feedback topic's own period, and the knob springs back to where the hand alone
+    // puts it (farther out: the wall no longer pushes back).
+    loop.robot->kill();
+    const double died = monotonic();
+    pause(1.5);
+    const double after = monotonic();
+    const std::vector<double> tauAfter = loop.watcher.window(&Watcher::m_tau, died + 0.7, after);
+    const Stats zero = statsOf(tauAfter);
+    QVERIFY2(zero.n > 20 && zero.min == 0 && zero.max == 0,
+             qPrintable(describe("tau_ext after the robot died", zero)));
+    const Stats sprung = statsOf(loop.watcher.window(&Watcher::m_theta, after - 0.3, after));
+    QVERIFY2(sprung.mean > expected.theta + 0.02,
+             qPrintable(describe("theta after the robot died", sprung)));
+}
+
+void TestTeleopLoop::handLetGoReturnsToCentreAndTheRobotStops()
+{
+    // The hand pushes for 7 s, then lets go.
+    Loop loop;
+    const QString why = startLoop(loop, ros::RosVersion::Ros2, u"step:0:%1:7"_s.arg(kHand),
+                                  {u"--delay"_s, u"0.02"_s});
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+    pause(6.5);
+    const double pushing = monotonic();
+    const Stats inContact = statsOf(loop.watcher.window(&Watcher::m_x, pushing - 0.5, pushing));
+    QVERIFY2(inContact.mean > 0.05, qPrintable(describe("x while pushing", inContact)));
+    pause(3.5);
+    const double now = monotonic();
+    const Stats theta = statsOf(loop.watcher.window(&Watcher::m_theta, now - 1, now));
+    const Stats x = statsOf(loop.watcher.window(&Watcher::m_x, now - 1, now));
+    const Stats tau = statsOf(loop.watcher.window(&Watcher::m_tau, now - 1, now));
+    const QString report =
+        describe("theta", theta) + u"; "_s + describe("x", x) + u"; "_s + describe("tau_ext", tau);
+    // Centred (within the dead zone, where v_ref is 0), the robot still and off the wall,
+    // nothing fed back.
+    QVERIFY2(theta.n > 20 && std::abs(theta.mean) < DeviceParams{}.Q_dz, qPrintable(report));
+    QVERIFY2(x.n > 20 && x.spread() < 1e-5 && x.mean <= robot::RobotParams{}.wall + 1e-4,
+             qPrintable(report));
+    QVERIFY2(std::abs(tau.mean) < 1e-3, qPrintable(report));
+}
+
+QTEST_GUILESS_MAIN(TestTeleopLoop)
+#include "tst_teleoploop.moc"
