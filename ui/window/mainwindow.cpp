@@ -76,7 +76,12 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     onStateChanged(SessionState::Disconnected, {});
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The Bridge panel stops its bridge on the window's DeviceClient (τ_ext 0, its sample
+    // listener removed): it goes first, while the client, an earlier child, still exists.
+    delete m_bridgeDock;
+}
 
 void MainWindow::createParts()
 {
