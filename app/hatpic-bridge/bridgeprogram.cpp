@@ -17,6 +17,18 @@ QString num(double v)
     return QString::number(v, 'g', 4);
 }
 
+//! A time in milliseconds, "–" when not measured.
+QString ms(double seconds)
+{
+    return std::isfinite(seconds) ? num(seconds * 1e3) : QStringLiteral("–");
+}
+
+//! "12/20 ms": the median and the 95th percentile.
+QString spread(const Spread &s)
+{
+    return ms(s.median) + u'/' + ms(s.p95) + u" ms";
+}
+
 void printLine(FILE *stream, const QString &line)
 {
     std::fprintf(stream, "%s\n", line.toUtf8().constData());
@@ -99,7 +111,12 @@ void BridgeProgram::printStats()
                   QString::number(s.wrenches.stale) + u", limited " +
                   QString::number(s.wrenches.limited) + u" | tau_ext " + num(s.tauExt) +
                   u" N·m, device " +
-                  (m_lastDeviceTauExt ? num(*m_lastDeviceTauExt) + u" N·m" : QStringLiteral("–")));
+                  (m_lastDeviceTauExt ? num(*m_lastDeviceTauExt) + u" N·m" : QStringLiteral("–")) +
+                  u" | wrench age " + ms(s.timing.age) + u" ms, delay " +
+                  spread(s.timing.stampDelay) + u", echo " + spread(s.timing.echoDelay) +
+                  u" (median/p95), lost ~" + QString::number(s.timing.lost) + u" | energy " +
+                  num(s.passivity.energy * 1e3) + u" mJ" +
+                  (s.passivity.warning ? QStringLiteral(", GENERATING") : QString()));
 }
 
 void BridgeProgram::shutdown()

@@ -8,13 +8,18 @@ namespace {
 
 //! The host's wall-clock time of a sample decoded at `arrivalNs` on sampleClockNs() [s since
 //! the Unix epoch]; now for a sample that does not say.
+double wallNow()
+{
+    return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
 double wallSecondsOf(const Sample &sample)
 {
-    const double wallNow =
-        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    const double wall = wallNow();
     if (sample.arrival_ns <= 0)
-        return wallNow;
-    return wallNow - double(sampleClockNs() - sample.arrival_ns) * 1e-9;
+        return wall;
+    return wall - double(sampleClockNs() - sample.arrival_ns) * 1e-9;
 }
 
 } // namespace
@@ -46,6 +51,9 @@ QString Bridge::start(const BridgeSettings &settings)
         const std::lock_guard lock(m_mutex);
         m_settings = settings;
         m_feedback = WrenchFeedback(settings.feedback);
+        m_timing = WrenchTiming();
+        m_timing.setPauseAfter(settings.feedback.staleAfter);
+        m_passivity.reset();
         m_rate = RateLimiter(settings.publishRateHz);
         m_released = false;
         m_tauExt = 0;
@@ -95,6 +103,7 @@ void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
     const std::lock_guard lock(m_mutex);
     m_settings.feedback = feedback;
     m_feedback.setSettings(feedback);
+    m_timing.setPauseAfter(feedback.staleAfter);
     if (m_endpoints && !m_released)
         applyTorque(m_feedback.torqueAt(now()));
 }
@@ -144,6 +153,8 @@ BridgeStats Bridge::stats() const
     s.lastWrench = m_feedback.lastValue();
     s.tauExt = m_tauExt;
     s.publishedTauExt = m_publishedTauExt;
+    s.timing = m_timing.stats(now());
+    s.passivity = m_passivity.state();
     return s;
 }
 
@@ -152,6 +163,9 @@ void Bridge::sampleDecoded(const Sample &sample)
     const std::lock_guard lock(m_mutex);
     if (!m_endpoints)
         return;
+    m_passivity.add(sample.t_s, sample.tau_ext, sample.omega);
+    if (sample.arrival_ns > 0)
+        m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
     applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now())); // counts a wrench gone stale
     if (!m_rate.due(sample.t_s))
         return;
@@ -164,11 +178,16 @@ void Bridge::sampleDecoded(const Sample &sample)
 void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
 {
     const double arrived = now();
+    const double wall = wallNow();
     const std::lock_guard lock(m_mutex);
     if (!m_endpoints || m_released)
         return;
+    m_timing.arrived(arrived, wall, wrench.stamp);
     const Component c = m_settings.feedback.component;
-    applyTorque(m_feedback.receive(wrench[(c.angular ? 3 : 0) + c.index], arrived));
+    const double tau = m_feedback.receive(wrench.values[(c.angular ? 3 : 0) + c.index], arrived);
+    if (tau != m_tauExt)
+        m_timing.torqueAsked(tau, arrived);
+    applyTorque(tau);
 }
 
 void Bridge::checkStale()

@@ -10,6 +10,9 @@
 #include "referencemessages.h"
 #include "rosendpoints.h"
 #include "wrenchfeedback.h"
+#include "wrenchtiming.h"
+
+#include "analysis/passivityobserver.h"
 
 #include "session/deviceclient.h"
 #include "session/samplelisteners.h"
@@ -30,6 +33,9 @@ struct BridgeStats
     double lastWrench = 0;                                 //!< last component received (NaN: none)
     double tauExt = 0;                                     //!< τ_ext asked of the device [N·m]
     double publishedTauExt = 0; //!< torque.z of the last /hatpic/feedback message [N·m]
+    WrenchTiming::Stats timing; //!< the wrenches' age, delays and (estimated) losses
+    //! The energy τ_ext has put into the knob since start(), and the contact warning.
+    analysis::PassivityObserver::State passivity;
 };
 
 class Bridge : public QObject, private SampleListener
@@ -85,6 +91,8 @@ private:
     ReferenceMode m_mode = ReferenceMode::Translation;
     std::unique_ptr<RosEndpoints> m_endpoints;
     WrenchFeedback m_feedback;
+    WrenchTiming m_timing;
+    analysis::PassivityObserver m_passivity;
     RateLimiter m_rate{100};
     double m_tauExt = 0;
     double m_publishedTauExt = 0;

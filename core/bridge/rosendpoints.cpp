@@ -6,7 +6,17 @@ namespace {
 
 RosEndpoints::Wrench wrenchOf(const ros::Wrench &w)
 {
-    return {w.force.x, w.force.y, w.force.z, w.torque.x, w.torque.y, w.torque.z};
+    RosEndpoints::Wrench r;
+    r.values = {w.force.x, w.force.y, w.force.z, w.torque.x, w.torque.y, w.torque.z};
+    return r;
+}
+
+RosEndpoints::Wrench wrenchOf(const ros::WrenchStamped &w)
+{
+    RosEndpoints::Wrench r = wrenchOf(w.wrench);
+    if (w.header.stamp != ros::Time{})
+        r.stamp = ros::seconds(w.header.stamp);
+    return r;
 }
 
 } // namespace
@@ -95,7 +105,7 @@ std::string RosEndpoints::create()
     // Every wrench, stamped or not, goes to the one handler.
     const auto handler = [this](const ros::Message &message) {
         if (const auto *stamped = std::get_if<ros::WrenchStamped>(&message))
-            m_onWrench(wrenchOf(stamped->wrench));
+            m_onWrench(wrenchOf(*stamped));
         else if (const auto *wrench = std::get_if<ros::Wrench>(&message))
             m_onWrench(wrenchOf(*wrench));
     };

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,8 +28,14 @@ const char *outTopicKey(OutTopic topic);
 class RosEndpoints
 {
 public:
-    //! force x y z, torque x y z of a wrench that arrived.
-    using Wrench = std::array<double, 6>;
+    //! A wrench that arrived, as either ROS carries it (the same ros::WrenchStamped).
+    struct Wrench
+    {
+        std::array<double, 6> values{}; //!< force x y z [N], torque x y z [N·m]
+        //! The header's stamp: the sender's wall clock [s since the Unix epoch]; NaN for the
+        //! unstamped topic, and for a stamp of 0 (a sender that does not fill it).
+        double stamp = std::numeric_limits<double>::quiet_NaN();
+    };
     //! Called on a middleware thread, once per wrench received (stamped or not).
     using WrenchHandler = std::function<void(const Wrench &)>;
 

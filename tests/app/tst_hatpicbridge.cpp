@@ -9,6 +9,7 @@
 
 #include <QElapsedTimer>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -189,7 +190,7 @@ private Q_SLOTS:
         QVERIFY2(!err.contains("hatpic.device"), err.constData());
         const QList<QByteArray> lines = out.trimmed().split('\n');
         QVERIFY2(lines.last().startsWith("link ") && !lines.last().startsWith("link connected") &&
-                     lines.last().endsWith("device –"),
+                     lines.last().contains("N·m, device – | wrench age "),
                  out.constData());
     }
 
@@ -394,6 +395,13 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(
             (out += bridge.readAllStandardOutput(), out.contains("| tau_ext 0.077 N·m")), 5000);
         QVERIFY2(out.contains("out joint_states "), out.constData());
+        // The robot side: the peer's stamps are 0 (not filled), so no delay; the device's echo
+        // of the new τ_ext measured; the energy τ_ext put into the knob.
+        const QRegularExpression robotSide(
+            uR"(\| wrench age [0-9.e-]+ ms, delay –/– ms, echo [0-9.e-]+/[0-9.e-]+ ms \(median/p95\), lost ~[0-9]+ \| energy -?[0-9.e-]+ mJ)"_s);
+        QTRY_VERIFY2_WITH_TIMEOUT((out += bridge.readAllStandardOutput(),
+                                   robotSide.match(QString::fromUtf8(out)).hasMatch()),
+                                  out.constData(), 5000);
 
         // SIGINT while the wrench is still coming: the bridge exits within a second, and the
         // device's telemetry showed τ_ext 0 on /hatpic/feedback before it went — while the

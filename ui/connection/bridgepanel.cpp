@@ -2,6 +2,8 @@
 
 #ifdef HATPIC_HAVE_BRIDGE
 #include "bridge/bridge.h"
+#include "connection/passivityview.h"
+#include "connection/robotsideview.h"
 #include "ros/node.h"
 #endif
 
@@ -263,6 +265,11 @@ void BridgePanel::buildForm()
     m_published->setWordWrap(true);
     topicForm->addRow(m_published);
     m_sections.append(topics);
+#ifdef HATPIC_HAVE_BRIDGE
+    m_robotSide = new RobotSideView(content);
+    m_passivityView = new PassivityView(content);
+    m_sections << m_robotSide << m_passivityView;
+#endif
 
     connect(m_enable, &QCheckBox::toggled, this, &BridgePanel::setBridgeEnabled);
     connect(m_ros, &QComboBox::currentIndexChanged, this, [this] {
@@ -423,9 +430,10 @@ void BridgePanel::setBridgeEnabled(bool on)
     if (!m_bridge)
         return;
     QString error;
-    if (on)
+    if (on) {
         error = m_bridge->start(m_settings); // stops first: a running bridge reopens
-    else
+        m_passivityView->clear();            // E starts again at 0
+    } else
         m_bridge->stop();
     const bool running = m_bridge->isRunning();
     {
@@ -466,6 +474,8 @@ void BridgePanel::refresh()
         out += u' ' + QString::fromLatin1(bridge::outTopicKey(bridge::OutTopic(i))) + u' ' +
                QString::number(s.published[i]) + (i + 1 < bridge::kOutTopicCount ? u","_s : u""_s);
     m_published->setText(out);
+    m_robotSide->setStats(s, c);
+    m_passivityView->setState(s.passivity);
 #endif
 }
 

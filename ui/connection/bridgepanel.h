@@ -8,8 +8,9 @@
 // It first says what the bridge needs (a line each in kNeeds: add one when a new way to get a
 // wrench exists). Its sections — ROS (needs, enable, status, ROS version, domain or master,
 // rate), the wrench's feedback, the topics — stand side by side as far as the panel's width
-// allows, else under each other, and scroll: a new section (a robot's status) is one more
-// entry in m_sections. It scrolls on its own, so it never sets the dock's size.
+// allows, else under each other, and scroll: a new section is one more entry in m_sections.
+// Two show the robot side as measured (RobotSideView) and the energy at the knob's port
+// (PassivityView). It scrolls on its own, so it never sets the dock's size.
 #pragma once
 
 #include "model/params.h"
@@ -30,6 +31,8 @@ class QSpinBox;
 namespace hatpic {
 
 class DeviceClient;
+class PassivityView;
+class RobotSideView;
 
 namespace bridge {
 class Bridge;
@@ -114,6 +117,8 @@ private:
     QLabel *m_tauExt = nullptr;
     QLabel *m_counts = nullptr;
     QLabel *m_published = nullptr;
+    RobotSideView *m_robotSide = nullptr;     //!< the wrenches' age, delays and losses
+    PassivityView *m_passivityView = nullptr; //!< the energy at the knob's port, the warning
 };
 
 } // namespace hatpic

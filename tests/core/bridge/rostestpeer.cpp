@@ -4,6 +4,8 @@
 
 #include <dds/dds.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace hatpic::test {
@@ -192,9 +194,12 @@ bool RosTestPeer::twistMatched() const
            status.current_count > 0;
 }
 
-void RosTestPeer::publishWrench(double forceZ, double torqueZ)
+void RosTestPeer::publishWrench(double forceZ, double torqueZ, double stampSeconds)
 {
     geometry_msgs_msg_dds__WrenchStamped_ w{};
+    const double whole = std::floor(stampSeconds);
+    w.header.stamp.sec = std::int32_t(whole);
+    w.header.stamp.nanosec = std::uint32_t(std::min(999999999.0, (stampSeconds - whole) * 1e9));
     w.header.frame_id = const_cast<char *>("robot");
     w.wrench.force.z = forceZ;
     w.wrench.torque.z = torqueZ;

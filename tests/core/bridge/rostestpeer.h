@@ -86,7 +86,9 @@ public:
     bool wrenchMatched(bool unstamped = false) const;
     //! A writer of the bridge's matched our reliable twist reader.
     bool twistMatched() const;
-    void publishWrench(double forceZ, double torqueZ = 0);
+    //! A WrenchStamped; its stamp is `stampSeconds` [s since the Unix epoch], 0 by default (as
+    //! a sender that does not fill it).
+    void publishWrench(double forceZ, double torqueZ = 0, double stampSeconds = 0);
     void publishUnstampedWrench(double forceZ);
 
     //! Takes everything that arrived into joints, twists, … (reliable readers, as ROS 2's

@@ -6,13 +6,16 @@
 #include "rostestpeer.h"
 
 #include "connection/bridgepanel.h"
+#include "plots/qcp.h"
 #include "session/deviceclient.h"
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDateTime>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTest>
@@ -113,6 +116,40 @@ private Q_SLOTS:
         m_robot.stop(); // stale after 0.5 s
         expectTauExt(0);
         QTRY_VERIFY_WITH_TIMEOUT(!label(u"bridge_counts"_s).contains(u" 0 stale"_s), 2000);
+    }
+
+    // The robot side as measured, and the passivity observer: a robot whose wrench pushes the
+    // knob the way it goes (against the virtual hand) gives it energy in contact — the warning
+    // says what to do, and goes once the pushing stops.
+    void robotSideAndPassivityShown()
+    {
+        // What the pushes of the tests before generated has left the window.
+        QTRY_VERIFY_WITH_TIMEOUT(!find<QLabel>(u"bridge_passivity_warning"_s)->isVisible(), 5000);
+        QVERIFY(label(u"bridge_stamp_delay"_s).startsWith(u"– (the wrenches carry no stamp)"_s));
+        startRobot(0.5, 0.2); // gain 0.5, limit 0.2: τ_ext 0.2 N·m; stamps 200 ms old
+        expectTauExt(0.2);
+        const QRegularExpression delay(
+            u"^([0-9.]+) ms median, ([0-9.]+) ms p95 \\(([0-9]+) stamped\\)$"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(delay.match(label(u"bridge_stamp_delay"_s)).hasMatch(), 2000);
+        const double median = delay.match(label(u"bridge_stamp_delay"_s)).captured(1).toDouble();
+        QVERIFY2(median >= 200 && median < 300, qPrintable(label(u"bridge_stamp_delay"_s)));
+        QTRY_VERIFY_WITH_TIMEOUT(label(u"bridge_echo_delay"_s).contains(u" ms median, "_s), 2000);
+        QVERIFY(label(u"bridge_robot_wrench"_s).startsWith(u"force.z 0.5 N, "_s));
+        QVERIFY(label(u"bridge_arrivals"_s).startsWith(u"every "_s));
+
+        QLabel *warning = find<QLabel>(u"bridge_passivity_warning"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(warning->isVisible(), 3000);
+        for (const QString &advice : {u"lower the gain"_s, u"raise M_adm"_s, u"cut the delay"_s})
+            QVERIFY2(warning->text().contains(advice), qPrintable(warning->text()));
+        QVERIFY2(label(u"bridge_energy"_s).contains(u"(in contact)"_s),
+                 qPrintable(label(u"bridge_energy"_s)));
+        QVERIFY(find<QCustomPlot>(u"bridge_energy_plot"_s)->graph(0)->dataCount() > 2);
+
+        // Held still (the knob has settled): nothing more is generated; once the rise has
+        // left the window and the hold is over, the warning goes.
+        QTRY_VERIFY_WITH_TIMEOUT(!warning->isVisible(), 6000);
+        m_robot.stop();
+        expectTauExt(0);
     }
 
     void topicAndRateChangeLive()
@@ -222,11 +259,15 @@ private:
     }
     QString label(const QString &name) { return find<QLabel>(name)->text(); }
 
-    void startRobot(double value)
+    //! Wrenches at 50 Hz; stamped `stampAge` seconds before they are sent (0: no stamp).
+    void startRobot(double value, double stampAge = 0)
     {
         m_robotValue = value;
         m_robot.disconnect();
-        connect(&m_robot, &QTimer::timeout, this, [this] { m_peer->publishWrench(m_robotValue); });
+        connect(&m_robot, &QTimer::timeout, this, [this, stampAge] {
+            const double wall = double(QDateTime::currentMSecsSinceEpoch()) * 1e-3;
+            m_peer->publishWrench(m_robotValue, 0, stampAge > 0 ? wall - stampAge : 0);
+        });
         m_robot.start(20);
     }
 
