@@ -18,12 +18,14 @@ struct HandInput
     enum class Kind { Idle, Constant, Step, Sine, Chirp, VirtualHand };
 
     Kind kind = Kind::Idle;
-    double amplitude = 0;        //!< T for const/step, A for sine/chirp [N·m]
-    double offset = 0;           //!< T0 of step: torque before the step [N·m]
-    double stepTime = kStepTime; //!< AT of step: when the step happens [s]
-    double frequency = 0;        //!< F of sine, F0 of chirp [Hz]
-    double frequency1 = 0;       //!< F1 of chirp [Hz]
-    double angle = 0;            //!< target of the virtual hand [rad]
+    double amplitude = 0;  //!< T for const/step, A for sine/chirp [N·m]
+    double offset = 0;     //!< T0 of step: torque before the step [N·m]
+    double frequency = 0;  //!< F of sine, F0 of chirp [Hz]
+    double frequency1 = 0; //!< F1 of chirp [Hz]
+    double angle = 0;      //!< target of the virtual hand [rad]
+    //! AT of step: when the step happens [s]. Last, so that brace-initialised hands written
+    //! before it keep their meaning.
+    double stepTime = kStepTime;
 
     static constexpr double kStepTime = 0.1;      //!< when a step happens by default [s]
     static constexpr double kMaxStepTime = 3600;  //!< AT at most: an hour [s]

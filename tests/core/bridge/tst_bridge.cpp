@@ -255,14 +255,15 @@ private Q_SLOTS:
         QVERIFY2(lost * 2 >= std::uint64_t(skipped) && lost <= 2 * std::uint64_t(skipped),
                  qPrintable(QStringLiteral("%1 lost of %2").arg(lost).arg(skipped)));
 
-        // τ_ext pushed the knob the way it went: the energy it gave is τ_ext · Δθ (> 0), and
-        // in contact that is energy generated — the warning is up.
+        // τ_ext pushed the knob the way it went: the energy it gave is τ_ext · Δθ (> 0). In
+        // contact, but one push that then holds is a contact's approach, excused: no warning
+        // (docs/teleop.md; a loop that goes on generating is warned of in tst_teleoploop).
         const double delta = after.passivity.energy - before.passivity.energy;
         const double expected = tau * (thetaAfter - thetaBefore);
         QVERIFY2(expected > 1e-3 && std::abs(delta - expected) < 0.2 * expected,
                  qPrintable(QStringLiteral("%1 J, expected %2 J").arg(delta).arg(expected)));
         QVERIFY(after.passivity.inContact);
-        QVERIFY(after.passivity.warning);
+        QVERIFY(!after.passivity.warning);
         QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
     }
 
