@@ -23,7 +23,7 @@ namespace hatpic::analysis {
 
 struct PassivitySettings
 {
-    double window = 1.5;         //!< how far back a rise of E is measured [s], > 0
+    double window = 1.5; //!< how far back a rise of E is measured [s], > 0
     //! The first seconds of a contact are its approach and are not judged: a robot driven
     //! into a wall (or pushed) returns through the knob energy its own motor supplied, once.
     //! What the loop generates after it is the loop's [s], ≥ 0.

@@ -15,20 +15,18 @@
 #include "profile/bridgesettings.h"
 #include "robot/loopequilibrium.h"
 #include "ros/node.h"
+#include "teleoploop.h"
 
-#include <QElapsedTimer>
 #include <QProcess>
 #include <QTest>
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 using namespace hatpic;
+using namespace hatpic::test;
 using namespace Qt::StringLiterals;
 
 namespace {
@@ -37,120 +35,6 @@ namespace {
 constexpr double kHand = 0.05;
 constexpr double kGain = 0.02;
 constexpr double kEncoderStep = 2 * 3.14159265358979 / 4096; //!< one servo count [rad]
-
-double monotonic()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
-
-//! What the test's node sees: θ from /hatpic/joint_states, τ_ext (the device's) from
-//! /hatpic/feedback, x from /robot/pose, each with its arrival time [s, monotonic].
-class Watcher
-{
-public:
-    struct Point
-    {
-        double t;
-        double value;
-    };
-
-    QString open(ros::RosVersion version, int domain)
-    {
-        std::string why;
-        m_node = ros::Node::open({version, "tst_teleoploop", domain}, &why);
-        if (!m_node)
-            return QString::fromStdString(why);
-        const auto add = [&](const char *topic, ros::MessageType type, std::vector<Point> *into,
-                             auto read) {
-            auto sub = m_node->subscribe(
-                topic, type, ros::Qos::matchAny(),
-                [this, into, read](const ros::Message &m) {
-                    const std::lock_guard lock(m_mutex);
-                    if (const auto value = read(m))
-                        into->push_back({monotonic(), *value});
-                },
-                &why);
-            if (sub)
-                m_subs.push_back(std::move(sub));
-            return sub != nullptr || !m_subs.empty();
-        };
-        const bool ok = add("/hatpic/joint_states", ros::MessageType::JointState, &m_theta,
-                            [](const ros::Message &m) -> std::optional<double> {
-                                const auto *js = std::get_if<ros::JointState>(&m);
-                                if (!js || js->position.empty())
-                                    return std::nullopt;
-                                return js->position.front();
-                            }) &&
-                        add("/hatpic/feedback", ros::MessageType::WrenchStamped, &m_tau,
-                            [](const ros::Message &m) -> std::optional<double> {
-                                const auto *w = std::get_if<ros::WrenchStamped>(&m);
-                                return w ? std::optional(w->wrench.torque.z) : std::nullopt;
-                            }) &&
-                        add("/robot/pose", ros::MessageType::PoseStamped, &m_x,
-                            [](const ros::Message &m) -> std::optional<double> {
-                                const auto *p = std::get_if<ros::PoseStamped>(&m);
-                                return p ? std::optional(p->pose.position.x) : std::nullopt;
-                            });
-        return ok && m_subs.size() == 3 ? QString() : QString::fromStdString(why);
-    }
-    void close()
-    {
-        m_subs.clear();
-        m_node.reset();
-    }
-
-    //! The points of a series that arrived in [from, to] (monotonic seconds).
-    std::vector<double> window(const std::vector<Point> Watcher::*series, double from,
-                               double to) const
-    {
-        const std::lock_guard lock(m_mutex);
-        std::vector<double> out;
-        for (const Point &p : this->*series) {
-            if (p.t >= from && p.t <= to)
-                out.push_back(p.value);
-        }
-        return out;
-    }
-    std::size_t count(const std::vector<Point> Watcher::*series) const
-    {
-        const std::lock_guard lock(m_mutex);
-        return (this->*series).size();
-    }
-
-    std::vector<Point> m_theta, m_tau, m_x; // guarded by m_mutex
-
-private:
-    mutable std::mutex m_mutex;
-    std::unique_ptr<ros::Node> m_node;
-    std::vector<std::unique_ptr<ros::Subscription>> m_subs;
-};
-
-struct Stats
-{
-    double mean = NAN;
-    double min = NAN;
-    double max = NAN;
-    std::size_t n = 0;
-    double spread() const { return max - min; }
-};
-
-Stats statsOf(const std::vector<double> &v)
-{
-    Stats s;
-    s.n = v.size();
-    if (v.empty())
-        return s;
-    double sum = 0;
-    s.min = s.max = v.front();
-    for (double x : v) {
-        sum += x;
-        s.min = std::min(s.min, x);
-        s.max = std::max(s.max, x);
-    }
-    s.mean = sum / double(v.size());
-    return s;
-}
 
 QString describe(const char *what, const Stats &s)
 {
@@ -161,48 +45,6 @@ QString describe(const char *what, const Stats &s)
         .arg(s.max, 0, 'g', 5)
         .arg(s.n);
 }
-
-//! A child program that is stopped (SIGTERM, then SIGKILL) when it goes out of scope.
-class Program
-{
-public:
-    explicit Program(const QString &path) { m_process.setProgram(path); }
-    ~Program() { stop(); }
-
-    bool start(const QStringList &arguments, const QProcessEnvironment &env)
-    {
-        m_process.setArguments(arguments);
-        m_process.setProcessEnvironment(env);
-        m_process.start();
-        return m_process.waitForStarted(10000);
-    }
-    void stop()
-    {
-        if (m_process.state() == QProcess::NotRunning)
-            return;
-        m_process.terminate();
-        if (!m_process.waitForFinished(10000)) {
-            m_process.kill();
-            m_process.waitForFinished(5000);
-        }
-    }
-    void kill()
-    {
-        m_process.kill();
-        m_process.waitForFinished(5000);
-    }
-    QProcess &process() { return m_process; }
-    QByteArray output()
-    {
-        m_out += m_process.readAllStandardOutput();
-        m_err += m_process.readAllStandardError();
-        return "stdout: " + m_out.right(600) + "\nstderr: " + m_err.right(600);
-    }
-
-private:
-    QProcess m_process;
-    QByteArray m_out, m_err;
-};
 
 //! Waits, spinning the event loop, for `seconds`.
 void pause(double seconds)
@@ -229,11 +71,6 @@ private Q_SLOTS:
     void handLetGoReturnsToCentreAndTheRobotStops();
 
 private:
-    struct Loop
-    {
-        std::unique_ptr<Program> sim, bridge, robot;
-        Watcher watcher;
-    };
     //! Starts the three programs and the watcher; empty, or why not.
     QString startLoop(Loop &loop, ros::RosVersion version, const QString &hand,
                       const QStringList &robotArguments);
@@ -271,43 +108,25 @@ QProcessEnvironment TestTeleopLoop::environment(ros::RosVersion version) const
 #else
     Q_UNUSED(version);
 #endif
-    env.insert(u"ROS_DOMAIN_ID"_s, QString::number(m_domain));
-    // Loopback only, as rmw_cyclonedds reads it: no stray peers, no multicast.
-    env.insert(u"ROS_AUTOMATIC_DISCOVERY_RANGE"_s, u"LOCALHOST"_s);
-    env.remove(u"CYCLONEDDS_URI"_s);
-    return env;
+    return loopEnvironment(env, m_domain);
 }
 
 QString TestTeleopLoop::startLoop(Loop &loop, ros::RosVersion version, const QString &hand,
                                   const QStringList &robotArguments)
 {
-    const QString ros = version == ros::RosVersion::Ros1 ? u"1"_s : u"2"_s;
-    const QProcessEnvironment env = environment(version);
-    qputenv("ROS_DOMAIN_ID", QByteArray::number(m_domain));
-    qputenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST");
-    if (const QString why = loop.watcher.open(version, m_domain); !why.isEmpty())
-        return u"the test's node: "_s + why;
-
-    const QString link = m_dir.filePath(u"knob-%1"_s.arg(++m_link));
-    loop.sim = std::make_unique<Program>(QStringLiteral(HATPIC_SIM_PATH));
-    if (!loop.sim->start({u"--hand"_s, hand, u"--link"_s, link}, env))
-        return u"hatpic-sim did not start"_s;
-    QElapsedTimer clock;
-    clock.start();
-    while (!QFileInfo::exists(link) && clock.elapsed() < 10000)
-        pause(0.05);
-    if (!QFileInfo::exists(link))
-        return u"hatpic-sim made no link: "_s + QString::fromUtf8(loop.sim->output());
-
-    loop.robot = std::make_unique<Program>(QStringLiteral(HATPIC_ROBOT_SIM_PATH));
-    if (!loop.robot->start(QStringList{u"--ros"_s, ros} + robotArguments, env))
-        return u"hatpic-robot-sim did not start"_s;
-    loop.bridge = std::make_unique<Program>(QStringLiteral(HATPIC_BRIDGE_PATH));
-    if (!loop.bridge->start({u"--ros"_s, ros, u"--port"_s, link, u"--component"_s, u"force.x"_s,
-                             u"--gain"_s, QString::number(kGain)},
-                            env))
-        return u"hatpic-bridge did not start"_s;
-    return {};
+    LoopSetup setup;
+    setup.simPath = QStringLiteral(HATPIC_SIM_PATH);
+    setup.bridgePath = QStringLiteral(HATPIC_BRIDGE_PATH);
+    setup.robotPath = QStringLiteral(HATPIC_ROBOT_SIM_PATH);
+    setup.version = version;
+    setup.domain = m_domain;
+    setup.env = environment(version);
+    setup.link = m_dir.filePath(u"knob-%1"_s.arg(++m_link));
+    setup.hand = hand;
+    setup.gain = kGain;
+    setup.robotArguments = robotArguments;
+    setup.nodeName = "tst_teleoploop";
+    return test::startLoop(loop, setup);
 }
 
 void TestTeleopLoop::badOptionsNameOptionRuleAndValue_data()
