@@ -201,6 +201,13 @@ public:
         return "stdout: " + m_out.right(600) + "\nstderr: " + m_err.right(600);
     }
 
+    //! All of stdout so far.
+    QByteArray standardOutput()
+    {
+        output();
+        return m_out;
+    }
+
 private:
     QProcess m_process;
     QByteArray m_out, m_err;

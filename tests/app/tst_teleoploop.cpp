@@ -69,6 +69,7 @@ private Q_SLOTS:
     void settlesAtTheEquilibrium_data();
     void settlesAtTheEquilibrium();
     void handLetGoReturnsToCentreAndTheRobotStops();
+    void unstableContactIsWarned();
 
 private:
     //! Starts the three programs and the watcher; empty, or why not.
@@ -247,6 +248,11 @@ void TestTeleopLoop::settlesAtTheEquilibrium()
     QVERIFY2(std::abs(x.mean - expected.robotPosition) < 5e-4, qPrintable(report));
     QVERIFY2(x.spread() < 5e-4, qPrintable(report));
 
+    // A stable contact: its approach excused, nothing generated after — the bridge's status
+    // line never says GENERATING (the passivity observer, docs/teleop.md).
+    const QByteArray status = loop.bridge->standardOutput();
+    QVERIFY2(status.contains("energy ") && !status.contains("GENERATING"), status.constData());
+
     if (!killTheRobot)
         return;
     // The robot dies: no more wrenches. τ_ext is 0 within the bridge's stale time (0.5 s)
@@ -289,6 +295,18 @@ void TestTeleopLoop::handLetGoReturnsToCentreAndTheRobotStops()
     QVERIFY2(x.n > 20 && x.spread() < 1e-5 && x.mean <= robot::RobotParams{}.wall + 1e-4,
              qPrintable(report));
     QVERIFY2(std::abs(tau.mean) < 1e-3, qPrintable(report));
+}
+
+// 120 ms each way: the loop keeps oscillating against the wall (docs/teleop.md § Measured), and
+// the passivity observer says so — the bridge's status line reads GENERATING.
+void TestTeleopLoop::unstableContactIsWarned()
+{
+    Loop loop;
+    const QString why = startLoop(loop, ros::RosVersion::Ros2, u"const:%1"_s.arg(kHand),
+                                  {u"--delay"_s, u"0.12"_s});
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+    QTRY_VERIFY2_WITH_TIMEOUT(loop.bridge->standardOutput().contains(", GENERATING"),
+                              loop.bridge->output().constData(), 12000);
 }
 
 QTEST_GUILESS_MAIN(TestTeleopLoop)
