@@ -302,8 +302,8 @@ void TestTeleopLoop::handLetGoReturnsToCentreAndTheRobotStops()
 void TestTeleopLoop::unstableContactIsWarned()
 {
     Loop loop;
-    const QString why = startLoop(loop, ros::RosVersion::Ros2, u"const:%1"_s.arg(kHand),
-                                  {u"--delay"_s, u"0.12"_s});
+    const QString why =
+        startLoop(loop, ros::RosVersion::Ros2, u"const:%1"_s.arg(kHand), {u"--delay"_s, u"0.12"_s});
     QVERIFY2(why.isEmpty(), qPrintable(why));
     QTRY_VERIFY2_WITH_TIMEOUT(loop.bridge->standardOutput().contains(", GENERATING"),
                               loop.bridge->output().constData(), 12000);
