@@ -23,40 +23,32 @@ struct Option
     Apply apply;
 };
 
-Apply number(double RobotSimSettings::*field)
+//! Reads a number and hands it to `assign`.
+Apply number(std::function<void(RobotSimSettings &, double)> assign)
 {
-    return [field](RobotSimSettings &s, const QString &t) -> QString {
+    return [assign = std::move(assign)](RobotSimSettings &s, const QString &t) -> QString {
         bool ok = false;
         const double v = t.trimmed().toDouble(&ok);
         if (!ok)
             return QStringLiteral("needs a number");
-        s.*field = v;
+        assign(s, v);
         return {};
     };
+}
+
+Apply number(double RobotSimSettings::*field)
+{
+    return number([field](RobotSimSettings &s, double v) { s.*field = v; });
 }
 
 Apply robotNumber(double RobotParams::*field)
 {
-    return [field](RobotSimSettings &s, const QString &t) -> QString {
-        bool ok = false;
-        const double v = t.trimmed().toDouble(&ok);
-        if (!ok)
-            return QStringLiteral("needs a number");
-        s.robot.*field = v;
-        return {};
-    };
+    return number([field](RobotSimSettings &s, double v) { s.robot.*field = v; });
 }
 
 Apply faultNumber(double LinkFaults::*field)
 {
-    return [field](RobotSimSettings &s, const QString &t) -> QString {
-        bool ok = false;
-        const double v = t.trimmed().toDouble(&ok);
-        if (!ok)
-            return QStringLiteral("needs a number");
-        s.faults.*field = v;
-        return {};
-    };
+    return number([field](RobotSimSettings &s, double v) { s.faults.*field = v; });
 }
 
 Apply text(std::string RobotSimSettings::*field)
