@@ -408,7 +408,7 @@ void TestHatpicCtl::simulateBadArguments_data()
     QTest::newRow("sine missing frequency") << QStringList{u"--input"_s, u"sine:0.1"_s};
     QTest::newRow("sine negative frequency") << QStringList{u"--input"_s, u"sine:0.1:-2"_s};
     QTest::newRow("chirp with two values") << QStringList{u"--input"_s, u"chirp:0.1:1"_s};
-    QTest::newRow("step with three values") << QStringList{u"--input"_s, u"step:1:2:3"_s};
+    QTest::newRow("step with four values") << QStringList{u"--input"_s, u"step:1:2:3:4"_s};
     QTest::newRow("hand not finite") << QStringList{u"--input"_s, u"hand:nan"_s};
     QTest::newRow("no input") << QStringList{};
     QTest::newRow("rate zero") << QStringList{u"--input"_s, u"idle"_s, u"--rate"_s, u"0"_s};
