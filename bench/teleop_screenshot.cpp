@@ -29,9 +29,8 @@ int main(int argc, char *argv[])
                 return;
             }
             QString error;
-            if (!window.openProfile(QStringLiteral(HATPIC_SOURCE_DIR
-                                                   "/resources/teleop/teleop-demo.json"),
-                                    &error))
+            if (!window.openProfile(
+                    QStringLiteral(HATPIC_SOURCE_DIR "/resources/teleop/teleop-demo.json"), &error))
                 std::fprintf(stderr, "teleop_screenshot: %s\n", qPrintable(error));
             window.setSimulatedHand(HandInput{HandInput::Kind::Constant, 0.05});
             window.startBridge(2);

@@ -1,6 +1,7 @@
 #include "bridgeoptions.h"
 
 #include "profile/jsonfile.h"
+#include "ros/node.h"
 
 #include <QCommandLineParser>
 #include <QJsonObject>
@@ -289,16 +290,13 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
 
     AppOptions options;
     options.connect.autoReconnect = true;
-    const QByteArray domain = qgetenv("ROS_DOMAIN_ID");
-    if (!domain.trimmed().isEmpty()) {
-        const auto id = whole(QString::fromLocal8Bit(domain));
-        if (!id) {
-            *error = u"ROS_DOMAIN_ID must be a whole number, got '" +
-                     echoed(QString::fromLocal8Bit(domain)) + u"'.";
-            return std::nullopt;
-        }
-        options.settings.domainId = *id;
+    std::string why;
+    const std::optional<int> domain = ros::domainFromEnvironment(&why);
+    if (!domain) {
+        *error = QString::fromStdString(why);
+        return std::nullopt;
     }
+    options.settings.domainId = *domain;
     // The config file, then the command line. Run twice when a profile is named (by either):
     // its bridge settings go under both.
     const auto applyOptions = [&]() -> bool {

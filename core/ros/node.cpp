@@ -9,11 +9,35 @@
 #include "ros/ros1/ros1node.h"
 #endif
 
+#include <cerrno>
+#include <cstdlib>
+#include <limits>
+
 namespace hatpic::ros {
 
 const char *rosVersionName(RosVersion version)
 {
     return version == RosVersion::Ros1 ? "ROS 1" : "ROS 2";
+}
+
+std::optional<int> domainFromEnvironment(std::string *error)
+{
+    const char *text = std::getenv("ROS_DOMAIN_ID");
+    if (!text || !*text)
+        return 0;
+    char *end = nullptr;
+    errno = 0;
+    const long id = std::strtol(text, &end, 10);
+    while (*end == ' ' || *end == '\t' || *end == '\n')
+        ++end;
+    if (end == text || *end != '\0' || errno != 0 || id < 0 ||
+        id > std::numeric_limits<int>::max()) {
+        if (error)
+            *error = std::string("ROS_DOMAIN_ID must be a whole number, got '") +
+                     std::string(text).substr(0, 40) + "'.";
+        return std::nullopt;
+    }
+    return int(id);
 }
 
 bool Node::isAvailable(RosVersion version)

@@ -147,12 +147,9 @@ BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent
         arrangeSections();
         return;
     }
-    const QByteArray domain = qgetenv("ROS_DOMAIN_ID");
-    bool ok = false;
-    const int id = QString::fromLocal8Bit(domain).trimmed().toInt(&ok);
-    if (ok && id >= 0 && id <= bridge::kMaxDomainId)
-        m_settings.domainId = id;
 #ifdef HATPIC_HAVE_BRIDGE
+    if (const auto id = ros::domainFromEnvironment(nullptr); id && *id <= bridge::kMaxDomainId)
+        m_settings.domainId = *id; // a bad ROS_DOMAIN_ID: 0, and the bridge says why at start
     m_bridge = new bridge::Bridge(m_client, this);
 #endif
     buildForm();
@@ -408,20 +405,15 @@ bool BridgePanel::isRunning() const
 
 bool BridgePanel::startOn(int rosVersion)
 {
-#ifdef HATPIC_HAVE_BRIDGE
-    const auto version = rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
-    if (!m_bridge || (rosVersion != 1 && rosVersion != 2) || !ros::Node::isAvailable(version)) {
+    const int index = m_ros ? m_ros->findData(rosVersion) : -1;
+    if (!m_bridge || index < 0 || m_ros->itemData(index, Qt::UserRole - 1) == QVariant(false)) {
         setStatus(tr("Cannot start: ROS %1 is not built into this tuner.").arg(rosVersion), true);
-        return false;
+        return false; // not built in: absent, or an item shown disabled
     }
     m_settings.rosVersion = rosVersion;
     showSettings();
     setBridgeEnabled(true);
     return isRunning();
-#else
-    Q_UNUSED(rosVersion);
-    return false;
-#endif
 }
 
 void BridgePanel::setBridgeEnabled(bool on)
@@ -477,14 +469,6 @@ void BridgePanel::refresh()
     m_robotSide->setStats(s, c);
     m_passivityView->setState(s.passivity);
 #endif
-}
-
-QString BridgePanel::statusText() const
-{
-    if (!m_bridge)
-        return m_status->text();
-    return m_status->text() + u" | "_s + m_wrench->text() + u" → τ_ext "_s + m_tauExt->text() +
-           u" | "_s + m_counts->text() + u" | "_s + m_published->text();
 }
 
 QString BridgePanel::runningText() const

@@ -52,8 +52,6 @@ public:
     //! The settings shown (the domain from ROS_DOMAIN_ID, else 0, and ROS 2 until edited).
     const bridge::BridgeSettings &settings() const { return m_settings; }
     bool isRunning() const;
-    //! The bridge's own readouts and counters, as text (for the status line and tests).
-    QString statusText() const;
     //! What the bridge needs, as the panel says it (plain text).
     static QString needsText();
     //! Sections side by side now (1 … the number of sections).

@@ -79,9 +79,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 
 MainWindow::~MainWindow()
 {
-    // The bridge goes first: it stops publishing and asks for τ_ext = 0 through the device
-    // client, which the children's destruction would otherwise have taken away already.
-    delete m_bridgeDock;
+    delete m_bridgeDock; // first: its bridge stops through the client, an earlier child
 }
 
 void MainWindow::createParts()

@@ -150,17 +150,7 @@ std::optional<int> domainOf(const NodeOptions &options, std::string *error)
 {
     if (options.domainId >= 0)
         return options.domainId;
-    const char *text = std::getenv("ROS_DOMAIN_ID");
-    if (!text || !*text)
-        return 0;
-    char *end = nullptr;
-    const long id = std::strtol(text, &end, 10);
-    if (*end != '\0' || id < 0 || id > std::numeric_limits<int>::max()) {
-        if (error)
-            *error = std::string("ROS_DOMAIN_ID must be a whole number, got '") + text + "'.";
-        return std::nullopt;
-    }
-    return int(id);
+    return domainFromEnvironment(error);
 }
 
 } // namespace
