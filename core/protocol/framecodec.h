@@ -8,22 +8,96 @@
 #include "cobs.h"
 #include "messages.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <span>
+#include <type_traits>
 
 namespace hatpic::v2 {
 
 constexpr std::size_t kPacketOverhead = 4; //!< type, seq, crc [bytes]
-constexpr std::size_t kParamBlockBytes = 4 * DeviceParams::kFieldCount;
-constexpr std::size_t kHelloReplyBytes = 1 + 1 + 2 + 4 + 4 + kFirmwareBytes;
-constexpr std::size_t kAckBytes = 4;
-constexpr std::size_t kTelemetryBytes = 4 + 5 * 4 + 1;         //!< without τ_fx
+
+// ---- payload lengths, from each message's fields() (messages.h) ----
+
+template<typename F> constexpr bool kIsOptionalField = false;
+template<typename T> constexpr bool kIsOptionalField<std::optional<T>> = true;
+template<typename F> constexpr bool kIsRestField = false;
+template<typename Text> constexpr bool kIsRestField<Rest<Text>> = true;
+template<typename F> constexpr bool kIsTextField = false;
+template<std::size_t N> constexpr bool kIsTextField<FixedText<N>> = true;
+//! DeviceParams, EffectParams: a block of f32 in wire order.
+template<typename F>
+concept FieldBlock = requires(F block)
+{
+    F::kFieldCount;
+    block.setField(0, 0.0);
+};
+//! A message that travels on the wire (Refused does not).
+template<typename T>
+concept WireMessage = requires
+{
+    T::kType;
+};
+
+//! Bytes of a field whose length does not depend on its value.
+template<typename F> constexpr std::size_t fixedFieldBytes()
+{
+    if constexpr (std::is_same_v<F, Reserved>)
+        return 1;
+    else if constexpr (FieldBlock<F>)
+        return 4 * std::size_t(F::kFieldCount);
+    else if constexpr (kIsTextField<F>)
+        return F::capacity();
+    else {
+        static_assert(std::is_integral_v<F> || std::is_enum_v<F> || std::is_same_v<F, float>,
+                      "a field's wire form: see messages.h");
+        return sizeof(F);
+    }
+}
+
+//! Payload lengths a receiver accepts for a message type: min…max [bytes].
+struct PayloadBounds
+{
+    std::size_t min = 0;
+    std::size_t max = 0;
+    bool valid = true; //!< false when a field follows an optional or Rest field
+};
+
+//! The lengths T's fields() allow: fixed fields add to both bounds; an optional field lets the
+//! payload grow to kMaxPayload (newer senders may append); Rest text adds 1…N bytes.
+template<typename T> constexpr PayloadBounds payloadBounds()
+{
+    PayloadBounds bounds;
+    if constexpr (!std::is_empty_v<T>) {
+        bool open = false;
+        T m{};
+        auto visit = [&](const auto &field) {
+            using F = std::remove_cvref_t<decltype(field)>;
+            bounds.valid = bounds.valid && !open;
+            if constexpr (kIsOptionalField<F>) {
+                bounds.max = kMaxPayload;
+                open = true;
+            } else if constexpr (kIsRestField<F>) {
+                const std::size_t capacity = std::remove_cvref_t<decltype(field.text)>::capacity();
+                bounds.max = std::min(bounds.min + capacity, kMaxPayload);
+                bounds.min += 1;
+                open = true;
+            } else {
+                bounds.min += fixedFieldBytes<F>();
+                bounds.max += fixedFieldBytes<F>();
+            }
+        };
+        T::fields(m, visit);
+    }
+    return bounds;
+}
+
+constexpr std::size_t kTelemetryBytes = payloadBounds<Telemetry>().min; //!< without τ_fx
 constexpr std::size_t kTelemetryFxBytes = kTelemetryBytes + 4; //!< with τ_fx (effects.md § 3)
-constexpr std::size_t kEffectBlockBytes = 4 * EffectParams::kFieldCount;
-constexpr std::size_t kVibrateBytes = 3 * 4;
 //! A TELEMETRY frame's length on the wire (COBS adds at most one byte here, plus the
 //! delimiter): 31 bytes, 35 with τ_fx [bytes].
 constexpr std::size_t telemetryWireBytes(bool withEffects)
@@ -34,7 +108,13 @@ constexpr std::size_t telemetryWireBytes(bool withEffects)
 }
 //! Largest frame on the wire: COBS of the largest packet plus the delimiter [bytes].
 constexpr std::size_t kMaxWireFrameBytes = cobsMaxEncodedSize(kPacketOverhead + kMaxPayload) + 1;
-static_assert(kParamBlockBytes == 28 && kHelloReplyBytes == 28 && kTelemetryBytes == 25);
+// The descriptions against protocol.md § 3 and effects.md § 3.
+static_assert(payloadBounds<Params>().min == 28 && payloadBounds<Params>().max == 28);
+static_assert(payloadBounds<HelloReply>().min == 28 && payloadBounds<HelloReply>().max == 28);
+static_assert(payloadBounds<Ack>().min == 4 && payloadBounds<Ack>().max == 4);
+static_assert(payloadBounds<Vibrate>().min == 12 && payloadBounds<Vibrate>().max == 12);
+static_assert(kTelemetryBytes == 25 && payloadBounds<Telemetry>().max == kMaxPayload);
+static_assert(payloadBounds<Log>().min == 1 && payloadBounds<Log>().max == kMaxPayload);
 static_assert(telemetryWireBytes(false) == 31 && telemetryWireBytes(true) == 35);
 
 //! A buffer that holds any one frame.

@@ -31,7 +31,7 @@ std::uint8_t messageType(const Message &message)
             if constexpr (std::is_same_v<T, Refused>)
                 return m.type;
             else
-                return static_cast<std::uint8_t>(messageTypeOf<T>());
+                return static_cast<std::uint8_t>(T::kType);
         },
         message);
 }

@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <type_traits>
 #include <variant>
 
 namespace hatpic::v2 {
@@ -117,95 +116,170 @@ private:
     std::size_t m_size = 0;
 };
 
+// ---- how a message describes its payload ----
+//
+// Each message names its wire type once (`kType`) and lists its payload fields once, in wire
+// order, in `static constexpr void fields(auto &m, auto &v) { v(m.a); v(m.b); … }`. The codec
+// (framecodec.*) derives from that one list the payload size, the encoding, the decoding and
+// the lengths a receiver accepts. A message without fields() has no payload. A field's C++ type
+// gives its wire form:
+//   std::uint8_t, std::uint16_t, std::uint32_t, enums  little-endian unsigned of that size
+//   float                                              IEEE-754 binary32
+//   DeviceParams, EffectParams                         their fields in wire order, each an f32
+//   FixedText<N>                                       N bytes, NUL-padded; read up to a NUL
+//   Reserved                                           one byte: 0 when sent, ignored when read
+//   std::optional<T> (last)                            T when present; a receiver accepts a
+//                                                      longer payload (up to kMaxPayload) and
+//                                                      reads T when its bytes are there
+//   Rest{text} (last)                                  the rest of the payload: 1…N bytes
+
+//! A byte the layout reserves: sent as 0, ignored when read.
+struct Reserved
+{};
+
+//! Text that fills the rest of the payload, at least one byte (LOG).
+template<typename Text> struct Rest
+{
+    Text &text;
+};
+template<typename Text> Rest(Text &) -> Rest<Text>;
+
 // ---- host → device ----
 struct Hello
 {
+    static constexpr MessageType kType = MessageType::Hello;
     friend bool operator==(const Hello &, const Hello &) = default;
 };
 struct GetParams
 {
+    static constexpr MessageType kType = MessageType::GetParams;
     friend bool operator==(const GetParams &, const GetParams &) = default;
 };
 struct SetParams
 {
+    static constexpr MessageType kType = MessageType::SetParams;
     DeviceParams params; //!< travels as 7 × f32
+    static constexpr void fields(auto &m, auto &v) { v(m.params); }
     friend bool operator==(const SetParams &, const SetParams &) = default;
 };
 struct SetStream
 {
+    static constexpr MessageType kType = MessageType::SetStream;
     std::uint16_t rateHz = 0; //!< telemetry rate, 0 = stop [Hz]
+    static constexpr void fields(auto &m, auto &v) { v(m.rateHz); }
     friend bool operator==(const SetStream &, const SetStream &) = default;
 };
 struct SetFeedback
 {
+    static constexpr MessageType kType = MessageType::SetFeedback;
     float tauExt = 0; //!< external feedback torque [N·m]
+    static constexpr void fields(auto &m, auto &v) { v(m.tauExt); }
     friend bool operator==(const SetFeedback &, const SetFeedback &) = default;
 };
 struct SaveParams
 {
+    static constexpr MessageType kType = MessageType::SaveParams;
     friend bool operator==(const SaveParams &, const SaveParams &) = default;
 };
 struct Ping
 {
+    static constexpr MessageType kType = MessageType::Ping;
     std::uint32_t token = 0;
+    static constexpr void fields(auto &m, auto &v) { v(m.token); }
     friend bool operator==(const Ping &, const Ping &) = default;
 };
 struct Zero
 {
+    static constexpr MessageType kType = MessageType::Zero;
     friend bool operator==(const Zero &, const Zero &) = default;
 };
 struct SetEffects
 {
+    static constexpr MessageType kType = MessageType::SetEffects;
     EffectParams effects; //!< travels as 7 × f32
+    static constexpr void fields(auto &m, auto &v) { v(m.effects); }
     friend bool operator==(const SetEffects &, const SetEffects &) = default;
 };
 struct GetEffects
 {
+    static constexpr MessageType kType = MessageType::GetEffects;
     friend bool operator==(const GetEffects &, const GetEffects &) = default;
 };
 struct Vibrate
 {
+    static constexpr MessageType kType = MessageType::Vibrate;
     float amplitude = 0; //!< a [N·m]; 0 stops a running cue
     float frequency = 0; //!< f [Hz]
     float duration = 0;  //!< d [s]
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.amplitude);
+        v(m.frequency);
+        v(m.duration);
+    }
     friend bool operator==(const Vibrate &, const Vibrate &) = default;
 };
 
 // ---- device → host ----
 struct HelloReply
 {
+    static constexpr MessageType kType = MessageType::HelloReply;
     std::uint8_t protocolVersion = kProtocolVersion;
     std::uint8_t capabilities = 0; //!< kCapability* bits (0 on devices before effects.md)
     std::uint16_t maxStreamHz = 0; //!< highest telemetry rate the device produces [Hz]
     std::uint32_t deviceId = 0;
     float tauLimit = 0;                 //!< actuator torque limit [N·m]
     FixedText<kFirmwareBytes> firmware; //!< NUL-padded on the wire
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.protocolVersion);
+        v(m.capabilities);
+        v(m.maxStreamHz);
+        v(m.deviceId);
+        v(m.tauLimit);
+        v(m.firmware);
+    }
     friend bool operator==(const HelloReply &, const HelloReply &) = default;
 };
 struct Params
 {
+    static constexpr MessageType kType = MessageType::Params;
     DeviceParams params; //!< travels as 7 × f32
+    static constexpr void fields(auto &m, auto &v) { v(m.params); }
     friend bool operator==(const Params &, const Params &) = default;
 };
 struct Effects
 {
+    static constexpr MessageType kType = MessageType::Effects;
     EffectParams effects; //!< travels as 7 × f32
+    static constexpr void fields(auto &m, auto &v) { v(m.effects); }
     friend bool operator==(const Effects &, const Effects &) = default;
 };
 struct Ack
 {
+    static constexpr MessageType kType = MessageType::Ack;
     std::uint8_t ackedSeq = 0;
     AckStatus status = AckStatus::Ok;
     std::uint8_t field = kNoField; //!< first violating ParamBlock index for OUT_OF_RANGE
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.ackedSeq);
+        v(m.status);
+        v(m.field);
+        v(Reserved{});
+    }
     friend bool operator==(const Ack &, const Ack &) = default;
 };
 struct Pong
 {
+    static constexpr MessageType kType = MessageType::Pong;
     std::uint32_t token = 0;
+    static constexpr void fields(auto &m, auto &v) { v(m.token); }
     friend bool operator==(const Pong &, const Pong &) = default;
 };
 struct Telemetry
 {
+    static constexpr MessageType kType = MessageType::Telemetry;
     std::uint32_t t_us = 0; //!< device clock, wraps at 2³² [µs]
     float theta = 0;        //!< absolute knob angle [rad]
     float omega = 0;        //!< knob rate [rad/s]
@@ -216,11 +290,24 @@ struct Telemetry
     //! τ_det + τ_wall + τ_vib rendered this cycle [N·m]; only devices with the effects
     //! capability send it (a 29-byte TELEMETRY).
     std::optional<float> tau_fx;
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.t_us);
+        v(m.theta);
+        v(m.omega);
+        v(m.tau);
+        v(m.tau_rec);
+        v(m.tau_ext);
+        v(m.flags);
+        v(m.tau_fx);
+    }
     friend bool operator==(const Telemetry &, const Telemetry &) = default;
 };
 struct Log
 {
+    static constexpr MessageType kType = MessageType::Log;
     FixedText<kMaxPayload> text; //!< 1…240 UTF-8 bytes on the wire
+    static constexpr void fields(auto &m, auto &v) { v(Rest{m.text}); }
     friend bool operator==(const Log &, const Log &) = default;
 };
 
@@ -234,52 +321,11 @@ struct Refused
     friend bool operator==(const Refused &, const Refused &) = default;
 };
 
+//! Every message, the one list of them: the decoder looks a wire type up among these (each
+//! `kType`), the encoder writes any of them. Refused, last, is what a receiver made of a frame.
 using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback, SaveParams, Ping,
                              Zero, SetEffects, GetEffects, Vibrate, HelloReply, Params, Effects,
                              Ack, Pong, Telemetry, Log, Refused>;
-
-//! The wire type of each message type (Refused has none of its own: messageType() below).
-template<typename T> constexpr MessageType messageTypeOf()
-{
-    if constexpr (std::is_same_v<T, Hello>)
-        return MessageType::Hello;
-    else if constexpr (std::is_same_v<T, GetParams>)
-        return MessageType::GetParams;
-    else if constexpr (std::is_same_v<T, SetParams>)
-        return MessageType::SetParams;
-    else if constexpr (std::is_same_v<T, SetStream>)
-        return MessageType::SetStream;
-    else if constexpr (std::is_same_v<T, SetFeedback>)
-        return MessageType::SetFeedback;
-    else if constexpr (std::is_same_v<T, SaveParams>)
-        return MessageType::SaveParams;
-    else if constexpr (std::is_same_v<T, Ping>)
-        return MessageType::Ping;
-    else if constexpr (std::is_same_v<T, Zero>)
-        return MessageType::Zero;
-    else if constexpr (std::is_same_v<T, SetEffects>)
-        return MessageType::SetEffects;
-    else if constexpr (std::is_same_v<T, GetEffects>)
-        return MessageType::GetEffects;
-    else if constexpr (std::is_same_v<T, Vibrate>)
-        return MessageType::Vibrate;
-    else if constexpr (std::is_same_v<T, Effects>)
-        return MessageType::Effects;
-    else if constexpr (std::is_same_v<T, HelloReply>)
-        return MessageType::HelloReply;
-    else if constexpr (std::is_same_v<T, Params>)
-        return MessageType::Params;
-    else if constexpr (std::is_same_v<T, Ack>)
-        return MessageType::Ack;
-    else if constexpr (std::is_same_v<T, Pong>)
-        return MessageType::Pong;
-    else if constexpr (std::is_same_v<T, Telemetry>)
-        return MessageType::Telemetry;
-    else {
-        static_assert(std::is_same_v<T, Log>, "every message type needs a wire type");
-        return MessageType::Log;
-    }
-}
 
 //! The wire type of a message (Refused gives its original type).
 std::uint8_t messageType(const Message &message);
