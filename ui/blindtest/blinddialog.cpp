@@ -1,6 +1,6 @@
-#include "editor/blinddialog.h"
+#include "blindtest/blinddialog.h"
 
-#include "editor/blindrunner.h"
+#include "blindtest/blindrunner.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,7 +1,7 @@
-#include "editor/blindrunner.h"
+#include "blindtest/blindrunner.h"
 
 #include "editor/parametereditor.h"
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 
 #include <QAction>
 

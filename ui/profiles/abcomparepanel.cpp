@@ -1,7 +1,7 @@
-#include "editor/abcomparepanel.h"
+#include "profiles/abcomparepanel.h"
 
-#include "editor/profilecontroller.h"
 #include "model/paramtable.h"
+#include "profiles/profilecontroller.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>

@@ -1,6 +1,6 @@
-#include "editor/abswitchcommand.h"
+#include "profiles/abswitchcommand.h"
 
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
-#include "editor/noteseditcommand.h"
+#include "profiles/noteseditcommand.h"
 
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 
 #include <QCoreApplication>
 

@@ -1,8 +1,8 @@
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 
-#include "editor/abswitchcommand.h"
-#include "editor/noteseditcommand.h"
 #include "editor/parametereditor.h"
+#include "profiles/abswitchcommand.h"
+#include "profiles/noteseditcommand.h"
 
 #include <QAction>
 #include <QDir>

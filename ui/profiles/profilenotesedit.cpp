@@ -1,6 +1,6 @@
-#include "editor/profilenotesedit.h"
+#include "profiles/profilenotesedit.h"
 
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 
 #include <QKeyEvent>
 #include <QSignalBlocker>

@@ -1,4 +1,4 @@
-#include "editor/simulatorpanel.h"
+#include "simulator/simulatorpanel.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -1,4 +1,4 @@
-#include "editor/staticcurves.h"
+#include "stiffness/staticcurves.h"
 
 #include "model/staticcurve.h"
 #include "model/stiffness.h"

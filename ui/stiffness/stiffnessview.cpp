@@ -1,8 +1,8 @@
-#include "editor/stiffnessview.h"
+#include "stiffness/stiffnessview.h"
 
-#include "editor/staticcurves.h"
 #include "model/staticcurve.h"
 #include "model/stiffness.h"
+#include "stiffness/staticcurves.h"
 
 #include "plots/axistitle.h"
 #include "plots/fadingtrail.h"

@@ -2,9 +2,9 @@
 // A/B slots, presets and recent files. Settings go to a temporary directory.
 #include "editor/parametereditor.h"
 #include "editor/parameterfield.h"
-#include "editor/profilecontroller.h"
 #include "editor/scientificspinbox.h"
 #include "profile/profile.h"
+#include "profiles/profilecontroller.h"
 
 #include <QAction>
 #include <QApplication>

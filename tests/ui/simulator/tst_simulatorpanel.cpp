@@ -1,5 +1,5 @@
 // SimulatorPanel: each hand kind, set through the real widgets, emits the matching HandInput.
-#include "editor/simulatorpanel.h"
+#include "simulator/simulatorpanel.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -1,11 +1,11 @@
 // The stiffness view's trail of the operating point, with real widgets offscreen: (θ, measured
 // τ) over the last seconds of what the time plots show — live, or up to a replay's playhead —
 // older points fainter, so a hysteresis loop and chatter at the dead-zone edge show.
-#include "editor/stiffnessview.h"
 #include "plots/fadingtrail.h"
 #include "plots/palette.h"
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
+#include "stiffness/stiffnessview.h"
 
 #include <QTest>
 

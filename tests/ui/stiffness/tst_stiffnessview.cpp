@@ -4,13 +4,13 @@
 // are resolved, the rest positions and the walls are marked where they are, the device's and
 // the other A/B slot's effects are drawn with their parameters, and the default effects leave
 // the view exactly as without them.
-#include "editor/staticcurves.h"
-#include "editor/stiffnessview.h"
 #include "model/staticcurve.h"
 #include "model/stiffness.h"
 #include "plots/axistitle.h"
 #include "plots/palette.h"
 #include "plots/qcp.h"
+#include "stiffness/staticcurves.h"
+#include "stiffness/stiffnessview.h"
 
 #include <QTest>
 
