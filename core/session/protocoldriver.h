@@ -27,12 +27,12 @@ public:
     virtual qint64 hostUs() const = 0;
     //! A complete sample for the batch (and the recording).
     virtual void pushSample(const Sample &sample) = 0;
-    //! The device now holds `params` (SET_PARAMS) or has zeroed (ZERO): takes effect from
-    //! the next sample on.
-    virtual void applyEffect(CommandKind kind, const DeviceParams &params) = 0;
+    //! The device applied `params` (SET_PARAMS) or zeroed (ZERO): it holds from the next
+    //! sample on.
+    virtual void paramsApplied(CommandKind kind, const DeviceParams &params) = 0;
     //! A PARAMS message arrived.
     virtual void paramsReceived(const DeviceParams &params) = 0;
-    //! The device now holds `effects` (SET_EFFECTS): takes effect from the next sample on.
+    //! The device applied `effects` (SET_EFFECTS): it holds from the next sample on.
     virtual void effectsApplied(const EffectParams &effects) = 0;
     //! An EFFECTS message arrived.
     virtual void effectsReceived(const EffectParams &effects) = 0;

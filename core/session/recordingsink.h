@@ -50,11 +50,11 @@ public:
     //! of the file format (recording.md), so it is composed here.
     void addEvent(const QString &text);
     void paramsApplied(const DeviceParams &from,
-                       const DeviceParams &to); //!< SET_PARAMS took effect
+                       const DeviceParams &to); //!< SET_PARAMS applied
     void paramsReadBack(const DeviceParams &from, const DeviceParams &to); //!< PARAMS differed
-    void zeroed(double theta0Before);                                      //!< ZERO took effect
+    void zeroed(double theta0Before);                                      //!< ZERO applied
     void effectsApplied(const EffectParams &from,
-                        const EffectParams &to); //!< SET_EFFECTS took effect
+                        const EffectParams &to); //!< SET_EFFECTS applied
     void effectsReadBack(const EffectParams &from, const EffectParams &to); //!< EFFECTS differed
     void hostChanged(const HostParams &from, const HostParams &to);
     void referenceReset();
