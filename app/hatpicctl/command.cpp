@@ -11,7 +11,7 @@ namespace hatpic::cli {
 
 namespace {
 
-QString overview(const std::vector<std::unique_ptr<Command>> &commands)
+QString overview(const std::vector<std::unique_ptr<Subcommand>> &commands)
 {
     QString text = QStringLiteral(
         "Usage: hatpicctl COMMAND [options]\n"
@@ -32,7 +32,7 @@ QString overview(const std::vector<std::unique_ptr<Command>> &commands)
 
 // QCommandLineParser's help starts with "Usage: <program> [options]"; replace that line by the
 // subcommand's own synopsis and description.
-QString commandHelp(const Command &command, const QCommandLineParser &parser)
+QString commandHelp(const Subcommand &command, const QCommandLineParser &parser)
 {
     QString options = parser.helpText();
     const qsizetype optionsStart = options.indexOf(QStringLiteral("Options:"));
@@ -43,27 +43,27 @@ QString commandHelp(const Command &command, const QCommandLineParser &parser)
 
 } // namespace
 
-std::vector<std::unique_ptr<Command>> allCommands()
+std::vector<std::unique_ptr<Subcommand>> allSubcommands()
 {
-    std::vector<std::unique_ptr<Command>> commands;
-    commands.push_back(makePortsCommand());
-    commands.push_back(makeInfoCommand());
-    commands.push_back(makeGetCommand());
-    commands.push_back(makeSetCommand());
-    commands.push_back(makeZeroCommand());
-    commands.push_back(makeSaveCommand());
-    commands.push_back(makeStreamCommand());
-    commands.push_back(makeCurveCommand());
-    commands.push_back(makeSimulateCommand());
-    commands.push_back(makeValidateCommand());
-    commands.push_back(makeExperimentCommand());
-    commands.push_back(makeVibrateCommand());
+    std::vector<std::unique_ptr<Subcommand>> commands;
+    commands.push_back(makePortsSubcommand());
+    commands.push_back(makeInfoSubcommand());
+    commands.push_back(makeGetSubcommand());
+    commands.push_back(makeSetSubcommand());
+    commands.push_back(makeZeroSubcommand());
+    commands.push_back(makeSaveSubcommand());
+    commands.push_back(makeStreamSubcommand());
+    commands.push_back(makeCurveSubcommand());
+    commands.push_back(makeSimulateSubcommand());
+    commands.push_back(makeValidateSubcommand());
+    commands.push_back(makeExperimentSubcommand());
+    commands.push_back(makeVibrateSubcommand());
     return commands;
 }
 
 int dispatch(const QStringList &arguments)
 {
-    const auto commands = allCommands();
+    const auto commands = allSubcommands();
     const QString first = arguments.value(1);
     if (first == u"--help" || first == u"-h" || first == u"help") {
         writeOut(overview(commands));
@@ -78,7 +78,7 @@ int dispatch(const QStringList &arguments)
         return ExitBadUsage;
     }
 
-    Command *command = nullptr;
+    Subcommand *command = nullptr;
     for (const auto &candidate : commands) {
         if (candidate->name() == first)
             command = candidate.get();

@@ -11,10 +11,10 @@ class QCommandLineParser;
 
 namespace hatpic::cli {
 
-class Command
+class Subcommand
 {
 public:
-    virtual ~Command() = default;
+    virtual ~Subcommand() = default;
 
     virtual QString name() const = 0;     //!< "curve"
     virtual QString summary() const = 0;  //!< one line for `hatpicctl --help`
@@ -30,7 +30,7 @@ public:
 };
 
 //! Every subcommand, in the order `hatpicctl --help` lists them.
-std::vector<std::unique_ptr<Command>> allCommands();
+std::vector<std::unique_ptr<Subcommand>> allSubcommands();
 
 //! Parses `arguments` (as QCoreApplication::arguments(), program first), runs the chosen
 //! subcommand and returns the process exit code.

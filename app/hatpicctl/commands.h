@@ -5,19 +5,19 @@
 
 namespace hatpic::cli {
 
-class Command;
+class Subcommand;
 
-std::unique_ptr<Command> makePortsCommand();
-std::unique_ptr<Command> makeInfoCommand();
-std::unique_ptr<Command> makeGetCommand();
-std::unique_ptr<Command> makeSetCommand();
-std::unique_ptr<Command> makeZeroCommand();
-std::unique_ptr<Command> makeSaveCommand();
-std::unique_ptr<Command> makeStreamCommand();
-std::unique_ptr<Command> makeCurveCommand();
-std::unique_ptr<Command> makeSimulateCommand();
-std::unique_ptr<Command> makeValidateCommand();
-std::unique_ptr<Command> makeExperimentCommand();
-std::unique_ptr<Command> makeVibrateCommand();
+std::unique_ptr<Subcommand> makePortsSubcommand();
+std::unique_ptr<Subcommand> makeInfoSubcommand();
+std::unique_ptr<Subcommand> makeGetSubcommand();
+std::unique_ptr<Subcommand> makeSetSubcommand();
+std::unique_ptr<Subcommand> makeZeroSubcommand();
+std::unique_ptr<Subcommand> makeSaveSubcommand();
+std::unique_ptr<Subcommand> makeStreamSubcommand();
+std::unique_ptr<Subcommand> makeCurveSubcommand();
+std::unique_ptr<Subcommand> makeSimulateSubcommand();
+std::unique_ptr<Subcommand> makeValidateSubcommand();
+std::unique_ptr<Subcommand> makeExperimentSubcommand();
+std::unique_ptr<Subcommand> makeVibrateSubcommand();
 
 } // namespace hatpic::cli

@@ -13,7 +13,7 @@ namespace hatpic::cli {
 
 namespace {
 
-class CurveCommand final : public Command
+class CurveSubcommand final : public Subcommand
 {
 public:
     QString name() const override { return QStringLiteral("curve"); }
@@ -100,9 +100,9 @@ public:
 
 } // namespace
 
-std::unique_ptr<Command> makeCurveCommand()
+std::unique_ptr<Subcommand> makeCurveSubcommand()
 {
-    return std::make_unique<CurveCommand>();
+    return std::make_unique<CurveSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -5,20 +5,20 @@
 
 namespace hatpic::cli {
 
-void DeviceCommand::addOptions(QCommandLineParser &parser)
+void DeviceSubcommand::addOptions(QCommandLineParser &parser)
 {
     addDeviceOptions(parser);
     addCommandOptions(parser);
 }
 
-int DeviceCommand::prepare(const QCommandLineParser &parser, DeviceOptions &options)
+int DeviceSubcommand::prepare(const QCommandLineParser &parser, DeviceOptions &options)
 {
     Q_UNUSED(parser);
     Q_UNUSED(options);
     return ExitSuccess;
 }
 
-int DeviceCommand::run(const QCommandLineParser &parser)
+int DeviceSubcommand::run(const QCommandLineParser &parser)
 {
     auto options = deviceOptions(parser);
     if (!options)
@@ -31,7 +31,7 @@ int DeviceCommand::run(const QCommandLineParser &parser)
     return runConnected(runner, parser);
 }
 
-QString DeviceCommand::portHelp()
+QString DeviceSubcommand::portHelp()
 {
     return QStringLiteral(
         "--port is required: a serial device such as /dev/ttyUSB0 or the pseudo-terminal\n"

@@ -8,7 +8,7 @@ namespace hatpic::cli {
 
 class DeviceRunner;
 
-class DeviceCommand : public Command
+class DeviceSubcommand : public Subcommand
 {
 public:
     void addOptions(QCommandLineParser &parser) final;

@@ -85,7 +85,7 @@ std::optional<ExperimentKind> kindOf(const QString &name)
     return std::nullopt;
 }
 
-class ExperimentCommand final : public DeviceCommand
+class ExperimentSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("experiment"); }
@@ -280,9 +280,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<Command> makeExperimentCommand()
+std::unique_ptr<Subcommand> makeExperimentSubcommand()
 {
-    return std::make_unique<ExperimentCommand>();
+    return std::make_unique<ExperimentSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -13,7 +13,7 @@ namespace hatpic::cli {
 
 namespace {
 
-class GetCommand final : public DeviceCommand
+class GetSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("get"); }
@@ -79,9 +79,9 @@ protected:
 
 } // namespace
 
-std::unique_ptr<Command> makeGetCommand()
+std::unique_ptr<Subcommand> makeGetSubcommand()
 {
-    return std::make_unique<GetCommand>();
+    return std::make_unique<GetSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -16,7 +16,7 @@ namespace hatpic::cli {
 
 namespace {
 
-class InfoCommand final : public DeviceCommand
+class InfoSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("info"); }
@@ -82,9 +82,9 @@ protected:
 
 } // namespace
 
-std::unique_ptr<Command> makeInfoCommand()
+std::unique_ptr<Subcommand> makeInfoSubcommand()
 {
-    return std::make_unique<InfoCommand>();
+    return std::make_unique<InfoSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -13,7 +13,7 @@ namespace hatpic::cli {
 
 namespace {
 
-class PortsCommand final : public Command
+class PortsSubcommand final : public Subcommand
 {
 public:
     QString name() const override { return QStringLiteral("ports"); }
@@ -50,9 +50,9 @@ public:
 
 } // namespace
 
-std::unique_ptr<Command> makePortsCommand()
+std::unique_ptr<Subcommand> makePortsSubcommand()
 {
-    return std::make_unique<PortsCommand>();
+    return std::make_unique<PortsSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -11,7 +11,7 @@ namespace hatpic::cli {
 
 namespace {
 
-class SaveCommand final : public DeviceCommand
+class SaveSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("save"); }
@@ -41,9 +41,9 @@ protected:
 
 } // namespace
 
-std::unique_ptr<Command> makeSaveCommand()
+std::unique_ptr<Subcommand> makeSaveSubcommand()
 {
-    return std::make_unique<SaveCommand>();
+    return std::make_unique<SaveSubcommand>();
 }
 
 } // namespace hatpic::cli

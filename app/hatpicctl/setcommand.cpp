@@ -78,7 +78,7 @@ std::optional<Assignment> parseAssignment(const QString &text)
     return Assignment{index, effect, value};
 }
 
-class SetCommand final : public DeviceCommand
+class SetSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("set"); }
@@ -321,9 +321,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<Command> makeSetCommand()
+std::unique_ptr<Subcommand> makeSetSubcommand()
 {
-    return std::make_unique<SetCommand>();
+    return std::make_unique<SetSubcommand>();
 }
 
 } // namespace hatpic::cli

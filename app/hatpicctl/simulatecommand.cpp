@@ -20,7 +20,7 @@ namespace {
 constexpr double kDefaultDuration = 2.0; //!< [s]
 constexpr double kDefaultRate = 1000;    //!< [Hz]
 
-class SimulateCommand final : public Command
+class SimulateSubcommand final : public Subcommand
 {
 public:
     QString name() const override { return QStringLiteral("simulate"); }
@@ -168,9 +168,9 @@ public:
 
 } // namespace
 
-std::unique_ptr<Command> makeSimulateCommand()
+std::unique_ptr<Subcommand> makeSimulateSubcommand()
 {
-    return std::make_unique<SimulateCommand>();
+    return std::make_unique<SimulateSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -39,7 +39,7 @@ QString milliseconds(double ms)
     return ms < 0 ? QStringLiteral("–") : QString::number(ms, 'f', 3) + u" ms";
 }
 
-class StreamCommand final : public DeviceCommand
+class StreamSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("stream"); }
@@ -332,9 +332,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<Command> makeStreamCommand()
+std::unique_ptr<Subcommand> makeStreamSubcommand()
 {
-    return std::make_unique<StreamCommand>();
+    return std::make_unique<StreamSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -31,7 +31,7 @@ QStringList floatRoundingErrors(const DeviceParams &params)
     return errors;
 }
 
-class ValidateCommand final : public Command
+class ValidateSubcommand final : public Subcommand
 {
 public:
     QString name() const override { return QStringLiteral("validate"); }
@@ -109,9 +109,9 @@ public:
 
 } // namespace
 
-std::unique_ptr<Command> makeValidateCommand()
+std::unique_ptr<Subcommand> makeValidateSubcommand()
 {
-    return std::make_unique<ValidateCommand>();
+    return std::make_unique<ValidateSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -18,7 +18,7 @@ namespace hatpic::cli {
 
 namespace {
 
-class VibrateCommand final : public DeviceCommand
+class VibrateSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("vibrate"); }
@@ -104,9 +104,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<Command> makeVibrateCommand()
+std::unique_ptr<Subcommand> makeVibrateSubcommand()
 {
-    return std::make_unique<VibrateCommand>();
+    return std::make_unique<VibrateSubcommand>();
 }
 
 } // namespace hatpic::cli

@@ -14,7 +14,7 @@ namespace hatpic::cli {
 
 namespace {
 
-class ZeroCommand final : public DeviceCommand
+class ZeroSubcommand final : public DeviceSubcommand
 {
 public:
     QString name() const override { return QStringLiteral("zero"); }
@@ -55,9 +55,9 @@ protected:
 
 } // namespace
 
-std::unique_ptr<Command> makeZeroCommand()
+std::unique_ptr<Subcommand> makeZeroSubcommand()
 {
-    return std::make_unique<ZeroCommand>();
+    return std::make_unique<ZeroSubcommand>();
 }
 
 } // namespace hatpic::cli
