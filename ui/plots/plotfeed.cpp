@@ -1,7 +1,7 @@
-#include "recording/plotfeed.h"
+#include "plots/plotfeed.h"
 
 #include "plots/plotpanel.h"
-#include "recording/replaycontroller.h"
+#include "plots/replaycontroller.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "recording/replaycontroller.h"
+#include "plots/replaycontroller.h"
 
 #include <QTimer>
 

@@ -1,9 +1,9 @@
 // PlotFeed: the plots' one source. Live it keeps every batch and shows the device's parameters
 // and events; a recording replaces all of that at once, and back to live restores it; pause
 // means the plots live and the playback in replay; a refused file changes nothing.
+#include "plots/plotfeed.h"
 #include "plots/plotpanel.h"
-#include "recording/plotfeed.h"
-#include "recording/replaycontroller.h"
+#include "plots/replaycontroller.h"
 #include "telemetry/recordingwriter.h"
 
 #include <QFile>

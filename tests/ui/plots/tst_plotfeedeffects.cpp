@@ -1,9 +1,9 @@
 // PlotFeed and the effects (effects.md): the operating point is the measured static torque
 // τ_rec + τ_fx (τ_rec alone where τ_fx is unknown), the device's effect block reaches the views
 // live, the recording's in replay, and no device means no effects.
+#include "plots/plotfeed.h"
 #include "plots/plotpanel.h"
-#include "recording/plotfeed.h"
-#include "recording/replaycontroller.h"
+#include "plots/replaycontroller.h"
 #include "telemetry/recordingwriter.h"
 
 #include <QSignalSpy>

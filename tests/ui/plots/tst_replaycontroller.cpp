@@ -1,8 +1,8 @@
 // ReplayController: opens recordings, clamps and scrubs the playhead, plays at a speed,
 // refuses broken files without leaving the current state.
+#include "plots/replaycontroller.h"
 #include "plots/samplebuffer.h"
 #include "plots/samplecsvwriter.h"
-#include "recording/replaycontroller.h"
 #include "telemetry/recording.h"
 
 #include <QSignalSpy>
