@@ -1,10 +1,10 @@
 // hatpicctl curve: the re-centering stiffness and torque of a profile, as CSV.
-#include "command.h"
-#include "commands.h"
 #include "console.h"
 #include "curvetable.h"
 #include "exitcode.h"
 #include "profileinput.h"
+#include "subcommand.h"
+#include "subcommands.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

@@ -1,4 +1,4 @@
-#include "devicecommand.h"
+#include "devicesubcommand.h"
 
 #include "devicerunner.h"
 #include "exitcode.h"

@@ -1,8 +1,8 @@
 // Base of the subcommands that talk to a device: shared options, connect, then the command.
 #pragma once
 
-#include "command.h"
 #include "deviceoptions.h"
+#include "subcommand.h"
 
 namespace hatpic::cli {
 

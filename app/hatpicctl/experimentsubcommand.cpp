@@ -1,11 +1,11 @@
 // hatpicctl experiment: a step, a frequency response or a spectrum measured on the device,
 // printed next to the model's figures (docs/experiments.md).
-#include "commands.h"
 #include "console.h"
-#include "devicecommand.h"
 #include "devicerunner.h"
+#include "devicesubcommand.h"
 #include "exitcode.h"
 #include "experimenttext.h"
+#include "subcommands.h"
 
 #include "experiment/experimentcsv.h"
 #include "experiment/experimentrunner.h"

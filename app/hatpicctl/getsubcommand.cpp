@@ -1,10 +1,10 @@
 // hatpicctl get: the parameters the device renders now (GET_PARAMS).
-#include "commands.h"
 #include "console.h"
-#include "devicecommand.h"
 #include "devicerunner.h"
+#include "devicesubcommand.h"
 #include "exitcode.h"
 #include "paramtext.h"
+#include "subcommands.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

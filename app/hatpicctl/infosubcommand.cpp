@@ -1,10 +1,10 @@
 // hatpicctl info: who answered on the port.
-#include "commands.h"
 #include "console.h"
-#include "devicecommand.h"
 #include "devicerunner.h"
+#include "devicesubcommand.h"
 #include "exitcode.h"
 #include "paramtext.h"
+#include "subcommands.h"
 #include "telemetry/numbertext.h"
 
 #include <QCommandLineOption>

@@ -1,8 +1,8 @@
 // hatpicctl ports: the serial ports this machine has, and "sim".
-#include "command.h"
-#include "commands.h"
 #include "console.h"
 #include "exitcode.h"
+#include "subcommand.h"
+#include "subcommands.h"
 
 #include "session/sessiontypes.h"
 

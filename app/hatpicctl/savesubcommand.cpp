@@ -1,9 +1,9 @@
 // hatpicctl save: persist the device's parameters across power-up (SAVE_PARAMS).
-#include "commands.h"
 #include "console.h"
-#include "devicecommand.h"
 #include "devicerunner.h"
+#include "devicesubcommand.h"
 #include "exitcode.h"
+#include "subcommands.h"
 
 #include <QCommandLineParser>
 

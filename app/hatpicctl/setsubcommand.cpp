@@ -1,12 +1,12 @@
 // hatpicctl set: push parameters and effects (a profile, or single values over the device's
 // current ones).
-#include "commands.h"
 #include "console.h"
-#include "devicecommand.h"
 #include "devicerunner.h"
+#include "devicesubcommand.h"
 #include "exitcode.h"
 #include "paramtext.h"
 #include "profileinput.h"
+#include "subcommands.h"
 
 #include "model/effects.h"
 #include "model/params.h"

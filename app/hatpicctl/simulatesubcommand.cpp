@@ -1,9 +1,9 @@
 // hatpicctl simulate: the simulated joystick's response to a hand input, offline, as CSV.
-#include "command.h"
-#include "commands.h"
 #include "console.h"
 #include "exitcode.h"
 #include "profileinput.h"
+#include "subcommand.h"
+#include "subcommands.h"
 
 #include "sim/offlinesimulation.h"
 #include "telemetry/samplecolumns.h"

@@ -1,10 +1,10 @@
 // hatpicctl stream: telemetry to stdout or to a recording, then the link statistics.
-#include "commands.h"
 #include "common/sessiontext.h"
 #include "console.h"
-#include "devicecommand.h"
 #include "devicerunner.h"
+#include "devicesubcommand.h"
 #include "exitcode.h"
+#include "subcommands.h"
 
 #include "telemetry/recording.h"
 #include "telemetry/samplecolumns.h"

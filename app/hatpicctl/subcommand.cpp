@@ -1,8 +1,8 @@
-#include "command.h"
+#include "subcommand.h"
 
-#include "commands.h"
 #include "console.h"
 #include "exitcode.h"
+#include "subcommands.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

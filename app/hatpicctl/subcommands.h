@@ -1,4 +1,4 @@
-// Factories of the subcommands; each lives in its own <name>command.cpp.
+// Factories of the subcommands; each lives in its own <name>subcommand.cpp.
 #pragma once
 
 #include <memory>
