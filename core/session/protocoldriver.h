@@ -1,7 +1,9 @@
 // One connected device's protocol: how received bytes become samples, parameters and log
-// lines, and what feedback, PING and commands look like on the wire. V2Driver and
-// LegacyDriver are the two; the session holds one of them while connected and never asks
-// which. Every protocol difference lives behind this interface.
+// lines, what feedback and PING look like on the wire, and which commands it takes (v2's are
+// encoded and resent by the CommandQueue, which the v2 driver feeds the answers). V2Driver and
+// LegacyDriver are the two; the session holds one of them while connected. The protocols'
+// differences live behind this interface except two the session passes on as they are: the
+// decoder counts (v2Stats() or legacyStats(), for LinkStats) and the Connected state's kind.
 #pragma once
 
 #include "model/params.h"
