@@ -4,10 +4,10 @@
 // test's window during trial 1. Run it under Xvfb:
 //   xvfb-run -a -s "-screen 0 1400x900x24" build/bench/ab_screenshot
 //       docs/screenshot-ab.png docs/screenshot-blind.png
-#include "editor/blinddialog.h"
-#include "editor/blindrunner.h"
+#include "blindtest/blinddialog.h"
+#include "blindtest/blindrunner.h"
 #include "editor/parametereditor.h"
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 #include "window/mainwindow.h"
 
 #include <QAction>

@@ -6,8 +6,8 @@
 //   xvfb-run -a -s "-screen 0 1280x720x24" build/bench/measure_screenshot
 //   docs/screenshot-measure-1280x720.png 1280 720
 #include "plots/measurecursors.h"
+#include "plots/plotfeed.h"
 #include "plots/plotpanel.h"
-#include "recording/plotfeed.h"
 #include "screenshotwindow.h"
 
 #include <QAction>

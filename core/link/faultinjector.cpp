@@ -232,10 +232,10 @@ QByteArray FaultInjector::Lane::pass(QByteArrayView bytes, double now)
     m_partial.append(bytes);
     if (m_partial.size() > kMaxFrameBytes) {
         // No frame this long exists: pass the run on as it is rather than hold it forever.
-        FaultCounts effect;
-        effect.unframed = quint64(m_partial.size());
-        m_counts.unframed += effect.unframed;
-        hold(std::exchange(m_partial, {}), now, effect);
+        FaultCounts outcome;
+        outcome.unframed = quint64(m_partial.size());
+        m_counts.unframed += outcome.unframed;
+        hold(std::exchange(m_partial, {}), now, outcome);
     }
     QByteArray out;
     // Bounded: when more than kMaxHeldBytes wait, everything goes now, early.
@@ -243,7 +243,7 @@ QByteArray FaultInjector::Lane::pass(QByteArrayView bytes, double now)
     while (!m_held.empty() && (overfull || m_held.front().release <= now)) {
         Held &held = m_held.front();
         out.append(held.bytes);
-        m_seen += held.effect;
+        m_seen += held.outcome;
         m_heldBytes -= held.bytes.size();
         m_held.pop_front();
     }
@@ -268,8 +268,8 @@ void FaultInjector::Lane::frame(QByteArray frame, double now)
         return;
     }
     const bool stream = isStream(frame);
-    FaultCounts effect;
-    effect.frames = 1;
+    FaultCounts outcome;
+    outcome.frames = 1;
     // Five draws for every frame, used or not, so one frame's fate never shifts another's.
     const double dropDraw = draw();
     const double corruptDraw = draw();
@@ -277,31 +277,31 @@ void FaultInjector::Lane::frame(QByteArray frame, double now)
     const double delayDraw = draw();
     const double bitDraw = draw();
     if (m_owner.cutAt(now) || dropDraw < m_faults.drop) {
-        (m_owner.cutAt(now) ? effect.cut : effect.dropped) = 1;
-        effect.streamLost = stream ? 1 : 0;
-        m_counts += effect;
-        m_unseenLoss += effect;
+        (m_owner.cutAt(now) ? outcome.cut : outcome.dropped) = 1;
+        outcome.streamLost = stream ? 1 : 0;
+        m_counts += outcome;
+        m_unseenLoss += outcome;
         return;
     }
     double release = now;
     if (delayDraw < m_faults.delay) {
-        effect.delayed = 1;
+        outcome.delayed = 1;
         release = now + m_faults.delaySeconds;
     }
     // A corrupted frame is not also duplicated: each corruption is one frame the receiver
     // rejects, so the counts compare one to one.
     FaultCounts copy;
     if (corruptDraw < m_faults.corrupt && corrupt(frame, bitDraw)) {
-        effect.corrupted = 1;
-        effect.streamCorrupted = stream ? 1 : 0;
+        outcome.corrupted = 1;
+        outcome.streamCorrupted = stream ? 1 : 0;
     } else if (dupDraw < m_faults.dup) {
         copy.duplicated = 1;
         copy.streamDuplicated = stream ? 1 : 0;
     }
-    m_counts += effect;
+    m_counts += outcome;
     m_counts += copy;
-    effect += std::exchange(m_unseenLoss, {});
-    hold(frame, release, effect);
+    outcome += std::exchange(m_unseenLoss, {});
+    hold(frame, release, outcome);
     if (copy.duplicated)
         hold(std::move(frame), release, copy);
 }
@@ -335,13 +335,13 @@ bool FaultInjector::Lane::corrupt(QByteArray &frame, double draw) const
     return true;
 }
 
-void FaultInjector::Lane::hold(QByteArray bytes, double release, const FaultCounts &effect)
+void FaultInjector::Lane::hold(QByteArray bytes, double release, const FaultCounts &outcome)
 {
     // Head of line: nothing overtakes a held frame, as on a link that stalled.
     if (!m_held.empty())
         release = std::max(release, m_held.back().release);
     m_heldBytes += bytes.size();
-    m_held.push_back({std::move(bytes), release, effect});
+    m_held.push_back({std::move(bytes), release, outcome});
 }
 
 } // namespace hatpic

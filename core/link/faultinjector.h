@@ -121,13 +121,13 @@ private:
         {
             QByteArray bytes;
             double release = 0;
-            FaultCounts effect; //!< added to m_seen when the bytes are passed on
+            FaultCounts outcome; //!< added to m_seen when the bytes are passed on
         };
         void frame(QByteArray frame, double now);
         //! Flips one bit; false when the frame has no byte that may change.
         bool corrupt(QByteArray &frame, double draw) const;
         bool isStream(const QByteArray &frame) const;
-        void hold(QByteArray bytes, double release, const FaultCounts &effect = {});
+        void hold(QByteArray bytes, double release, const FaultCounts &outcome = {});
         double draw();
 
         FaultSpec::Lane m_faults;

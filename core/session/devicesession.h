@@ -129,9 +129,9 @@ private:
         stamped.arrival_ns = sampleClockNs();
         m_samples.push(stamped);
     }
-    void applyEffect(CommandKind kind, const DeviceParams &params) override
+    void paramsApplied(CommandKind kind, const DeviceParams &params) override
     {
-        m_samples.applyEffect(kind, params);
+        m_samples.paramsApplied(kind, params);
     }
     void paramsReceived(const DeviceParams &params) override { m_samples.paramsReceived(params); }
     void effectsApplied(const EffectParams &effects) override { m_samples.effectsApplied(effects); }

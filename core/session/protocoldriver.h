@@ -1,7 +1,9 @@
 // One connected device's protocol: how received bytes become samples, parameters and log
-// lines, and what feedback, PING and commands look like on the wire. V2Driver and
-// LegacyDriver are the two; the session holds one of them while connected and never asks
-// which. Every protocol difference lives behind this interface.
+// lines, what feedback and PING look like on the wire, and which commands it takes (v2's are
+// encoded and resent by the CommandQueue, which the v2 driver feeds the answers). V2Driver and
+// LegacyDriver are the two; the session holds one of them while connected. The protocols'
+// differences live behind this interface except two the session passes on as they are: the
+// decoder counts (v2Stats() or legacyStats(), for LinkStats) and the Connected state's kind.
 #pragma once
 
 #include "model/params.h"
@@ -27,12 +29,12 @@ public:
     virtual qint64 hostUs() const = 0;
     //! A complete sample for the batch (and the recording).
     virtual void pushSample(const Sample &sample) = 0;
-    //! The device now holds `params` (SET_PARAMS) or has zeroed (ZERO): takes effect from
-    //! the next sample on.
-    virtual void applyEffect(CommandKind kind, const DeviceParams &params) = 0;
+    //! The device applied `params` (SET_PARAMS) or zeroed (ZERO): it holds from the next
+    //! sample on.
+    virtual void paramsApplied(CommandKind kind, const DeviceParams &params) = 0;
     //! A PARAMS message arrived.
     virtual void paramsReceived(const DeviceParams &params) = 0;
-    //! The device now holds `effects` (SET_EFFECTS): takes effect from the next sample on.
+    //! The device applied `effects` (SET_EFFECTS): it holds from the next sample on.
     virtual void effectsApplied(const EffectParams &effects) = 0;
     //! An EFFECTS message arrived.
     virtual void effectsReceived(const EffectParams &effects) = 0;

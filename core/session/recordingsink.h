@@ -49,12 +49,10 @@ public:
     //! Attaches an event to the next sample (nothing when closed). The events' text is part
     //! of the file format (recording.md), so it is composed here.
     void addEvent(const QString &text);
-    void paramsApplied(const DeviceParams &from,
-                       const DeviceParams &to); //!< SET_PARAMS took effect
-    void paramsReadBack(const DeviceParams &from, const DeviceParams &to); //!< PARAMS differed
-    void zeroed(double theta0Before);                                      //!< ZERO took effect
-    void effectsApplied(const EffectParams &from,
-                        const EffectParams &to); //!< SET_EFFECTS took effect
+    void paramsApplied(const DeviceParams &from, const DeviceParams &to);   //!< SET_PARAMS applied
+    void paramsReadBack(const DeviceParams &from, const DeviceParams &to);  //!< PARAMS differed
+    void zeroed(double theta0Before);                                       //!< ZERO applied
+    void effectsApplied(const EffectParams &from, const EffectParams &to);  //!< SET_EFFECTS applied
     void effectsReadBack(const EffectParams &from, const EffectParams &to); //!< EFFECTS differed
     void hostChanged(const HostParams &from, const HostParams &to);
     void referenceReset();

@@ -159,7 +159,7 @@ void SamplePipeline::record(const SampleBatch &batch)
     m_recording.close();
 }
 
-void SamplePipeline::applyEffect(CommandKind kind, const DeviceParams &params)
+void SamplePipeline::paramsApplied(CommandKind kind, const DeviceParams &params)
 {
     flush(); // the event belongs to the next sample, not to those already waiting
     if (kind == CommandKind::Zero) {

@@ -1,7 +1,7 @@
 // Where complete samples go: each one at once to the sample listeners (the robot path), then
 // in batches to the session's users (samplesReady at least every kBatchIntervalMs, or sooner
 // when kBatchMaxSamples wait) and the recording, with the events that mark on the right row
-// when a change took effect. Holds the SampleBuilder, so the host's copy
+// when a change was applied. Holds the SampleBuilder, so the host's copy
 // of the device parameters and the host parameters change here, in step with the events.
 #pragma once
 
@@ -61,11 +61,11 @@ public:
     //! Hands on the samples waiting (to the recording and samplesReady).
     void flush();
 
-    //! SET_PARAMS (`params`) or ZERO took effect on the device: from the next sample on.
-    void applyEffect(CommandKind kind, const DeviceParams &params);
+    //! The device applied SET_PARAMS (`params`) or ZERO: it holds from the next sample on.
+    void paramsApplied(CommandKind kind, const DeviceParams &params);
     //! A PARAMS message: the copy follows it (an event when it differs from what was held).
     void paramsReceived(const DeviceParams &params);
-    //! SET_EFFECTS (`effects`) took effect on the device: from the next sample on.
+    //! The device applied SET_EFFECTS (`effects`): it holds from the next sample on.
     void effectsApplied(const EffectParams &effects);
     //! An EFFECTS message: the copy follows it (an event when it differs from what was held).
     void effectsReceived(const EffectParams &effects);

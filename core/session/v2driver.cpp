@@ -123,23 +123,23 @@ void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &received)
         m_host.statistics().countNonFinite();
         return;
     }
-    if (m_pendingEffect)
-        applyPendingEffect();
+    if (m_pendingChange)
+        applyPendingChange();
     m_host.pushSample(m_host.builder().fromTelemetry(telemetry, m_host.hostUs()));
 }
 
 void V2Driver::handleParams(const DeviceParams &params)
 {
-    if (m_pendingEffect)
-        applyPendingEffect(); // streaming off: no telemetry carried the change
+    if (m_pendingChange)
+        applyPendingChange(); // streaming off: no telemetry carried the change
     m_host.paramsReceived(params);
     m_queue.onParams(params);
 }
 
 void V2Driver::handleEffects(const EffectParams &effects)
 {
-    if (m_pendingEffect)
-        applyPendingEffect(); // streaming off: no telemetry carried the change
+    if (m_pendingChange)
+        applyPendingChange(); // streaming off: no telemetry carried the change
     m_host.effectsReceived(effects);
     m_queue.onEffects(effects);
 }
@@ -150,7 +150,7 @@ void V2Driver::onAcknowledged(const Command &command)
     case CommandKind::SetParams:
     case CommandKind::Zero:
     case CommandKind::SetEffects:
-        m_pendingEffect = PendingEffect{command.kind, command.params, command.effects};
+        m_pendingChange = PendingChange{command.kind, command.params, command.effects};
         return;
     case CommandKind::SetStream:
         m_host.statistics().restartSeq(); // a new stream: no gap to count against the old
@@ -160,14 +160,14 @@ void V2Driver::onAcknowledged(const Command &command)
     }
 }
 
-void V2Driver::applyPendingEffect()
+void V2Driver::applyPendingChange()
 {
-    const PendingEffect effect = *m_pendingEffect;
-    m_pendingEffect.reset();
-    if (effect.kind == CommandKind::SetEffects)
-        m_host.effectsApplied(effect.effects);
+    const PendingChange change = *m_pendingChange;
+    m_pendingChange.reset();
+    if (change.kind == CommandKind::SetEffects)
+        m_host.effectsApplied(change.effects);
     else
-        m_host.applyEffect(effect.kind, effect.params);
+        m_host.paramsApplied(change.kind, change.params);
 }
 
 void V2Driver::sendFeedback(double tauExt)

@@ -52,7 +52,7 @@ public:
     StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedV2; }
 
 private:
-    struct PendingEffect
+    struct PendingChange
     {
         CommandKind kind = CommandKind::SetParams; //!< SetParams, Zero or SetEffects
         DeviceParams params;
@@ -64,7 +64,7 @@ private:
     void handleParams(const DeviceParams &params);
     void handleEffects(const EffectParams &effects);
     void onAcknowledged(const Command &command);
-    void applyPendingEffect();
+    void applyPendingChange();
 
     DriverHost &m_host;
     CommandQueue &m_queue;
@@ -72,7 +72,7 @@ private:
     quint16 m_streamRateHz; //!< asked for on start()
     v2::FrameDecoder m_decoder;
     quint8 m_feedbackSeq = 0;
-    std::optional<PendingEffect> m_pendingEffect;
+    std::optional<PendingChange> m_pendingChange;
     bool m_closed = false;
 };
 

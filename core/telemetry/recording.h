@@ -18,7 +18,7 @@
 namespace hatpic {
 
 //! Header of the CSV, in column order: the sample columns (samplecolumns.h), then "event", the
-//! text of what took effect on that sample.
+//! text of what the device applied (or what happened) on that sample.
 QStringList recordingColumns();
 
 struct RecordingMetadata

@@ -12,7 +12,7 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
 {
     connect(m_editor, &ParameterEditor::pushRequested, this, &DeviceParameterLink::onPushRequested);
     connect(m_editor, &ParameterEditor::vibrateRequested, this, [this](const Vibration &v) {
-        m_commands.insert(m_client->vibrate(v), Command::Vibrate);
+        m_commands.insert(m_client->vibrate(v), CommandKind::Vibrate);
     });
     connect(m_editor, &ParameterEditor::readRequested, this, &DeviceParameterLink::readFromDevice);
     connect(m_editor, &ParameterEditor::hostParamsChanged, m_client, &DeviceClient::setHostParams);
@@ -52,19 +52,19 @@ void DeviceParameterLink::onPushRequested(const DeviceParams &params,
 
 void DeviceParameterLink::readFromDevice()
 {
-    m_commands.insert(m_client->readParams(), Command::Read);
+    m_commands.insert(m_client->readParams(), CommandKind::GetParams);
     if (m_client->deviceInfo().hasEffects())
-        m_commands.insert(m_client->readEffects(), Command::ReadEffects);
+        m_commands.insert(m_client->readEffects(), CommandKind::GetEffects);
 }
 
 void DeviceParameterLink::zero()
 {
-    m_commands.insert(m_client->zero(), Command::Zero);
+    m_commands.insert(m_client->zero(), CommandKind::Zero);
 }
 
 void DeviceParameterLink::saveInDevice()
 {
-    m_commands.insert(m_client->saveParams(), Command::Save);
+    m_commands.insert(m_client->saveParams(), CommandKind::SaveParams);
 }
 
 void DeviceParameterLink::onStateChanged(SessionState state)
@@ -106,9 +106,9 @@ void DeviceParameterLink::onCommandFinished(quint64 id, const CommandResult &res
         if (m_push->result && (m_push->effectsId == 0 || m_push->effectsResult))
             finishPush();
     } else if (const auto it = m_commands.constFind(id); it != m_commands.cend()) {
-        const Command command = it.value();
+        const CommandKind kind = it.value();
         m_commands.erase(it);
-        finishCommand(command, result);
+        finishCommand(kind, result);
     }
 }
 
@@ -143,32 +143,34 @@ void DeviceParameterLink::finishPush()
     Q_EMIT commandFinished(m_lastMessage);
 }
 
-void DeviceParameterLink::finishCommand(Command command, const CommandResult &result)
+void DeviceParameterLink::finishCommand(CommandKind kind, const CommandResult &result)
 {
     QString what;
-    switch (command) {
-    case Command::Read:
+    switch (kind) {
+    case CommandKind::GetParams:
         what = tr("Read");
         break;
-    case Command::ReadEffects:
+    case CommandKind::GetEffects:
         if (result.ok())
             return; // the parameters' read says "done"
         what = tr("Read effects");
         break;
-    case Command::Vibrate:
+    case CommandKind::Vibrate:
         what = result.vibration.amplitude > 0 ? tr("Vibrate") : tr("Stop vibration");
         break;
-    case Command::Zero:
+    case CommandKind::Zero:
         what = tr("ZERO");
         break;
-    case Command::Save:
+    case CommandKind::SaveParams:
         what = tr("Save in device");
         break;
+    default:
+        return; // pushes finish in finishPush(); the link asks for nothing else
     }
     m_lastMessage = result.ok()
                         ? tr("%1: done.").arg(what)
                         : tr("%1 failed: %2").arg(what, CommandText::commandFailure(result));
-    if (result.ok() && command == Command::Zero)
+    if (result.ok() && kind == CommandKind::Zero)
         Q_EMIT deviceChanged(tr("ZERO: θ0 := current angle"));
     Q_EMIT commandFinished(m_lastMessage);
 }

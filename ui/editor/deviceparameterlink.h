@@ -45,15 +45,13 @@ Q_SIGNALS:
     void deviceChanged(const QString &what);
 
 private:
-    enum class Command { Read, ReadEffects, Zero, Save, Vibrate };
-
     void onStateChanged(SessionState state);
     void onDeviceInfo(const DeviceInfo &info);
     void refreshEffectsAvailability();
     void onPushRequested(const DeviceParams &params, const std::optional<EffectParams> &effects);
     void onCommandFinished(quint64 id, const CommandResult &result);
     void finishPush();
-    void finishCommand(Command command, const CommandResult &result);
+    void finishCommand(CommandKind kind, const CommandResult &result);
 
     DeviceClient *m_client;
     ParameterEditor *m_editor;
@@ -69,7 +67,7 @@ private:
         std::optional<CommandResult> effectsResult; //!< SET_EFFECTS' answer, once there
     };
     std::optional<Push> m_push;
-    QHash<quint64, Command> m_commands; //!< other commands in flight
+    QHash<quint64, CommandKind> m_commands; //!< other commands in flight
     QString m_lastMessage;
 };
 

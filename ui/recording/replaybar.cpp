@@ -1,6 +1,6 @@
 #include "recording/replaybar.h"
 
-#include "recording/replaycontroller.h"
+#include "plots/replaycontroller.h"
 
 #include <QComboBox>
 #include <QEvent>

@@ -1,12 +1,12 @@
 #include "window/abdock.h"
 
-#include "editor/abcomparepanel.h"
-#include "editor/blinddialog.h"
-#include "editor/blindrunner.h"
+#include "blindtest/blinddialog.h"
+#include "blindtest/blindrunner.h"
 #include "editor/parametereditor.h"
-#include "editor/profilecontroller.h"
-#include "editor/profilenotesedit.h"
-#include "editor/stiffnessview.h"
+#include "profiles/abcomparepanel.h"
+#include "profiles/profilecontroller.h"
+#include "profiles/profilenotesedit.h"
+#include "stiffness/stiffnessview.h"
 
 #include <QDate>
 #include <QDir>

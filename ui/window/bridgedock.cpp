@@ -2,7 +2,7 @@
 
 #include "connection/bridgepanel.h"
 #include "editor/parametereditor.h"
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 
 #include <QDockWidget>
 #include <QMainWindow>

@@ -1,7 +1,7 @@
 #include "window/experimentsdock.h"
 
-#include "editor/simulatorpanel.h"
 #include "experiments/experimentspanel.h"
+#include "simulator/simulatorpanel.h"
 
 #include <QDockWidget>
 #include <QMainWindow>

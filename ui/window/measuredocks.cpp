@@ -1,13 +1,13 @@
 #include "window/measuredocks.h"
 
 #include "editor/parametereditor.h"
-#include "editor/profilecontroller.h"
-#include "editor/stiffnessview.h"
 #include "plots/plotactions.h"
 #include "plots/plotexport.h"
 #include "plots/plotpanel.h"
 #include "plots/torquebreakdownview.h"
 #include "plots/xyview.h"
+#include "profiles/profilecontroller.h"
+#include "stiffness/stiffnessview.h"
 
 #include <QDockWidget>
 #include <QMainWindow>

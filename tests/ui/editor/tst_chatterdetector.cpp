@@ -4,9 +4,9 @@
 #include "editor/chatterdetector.h"
 #include "editor/derivedfiguresview.h"
 #include "editor/parametereditor.h"
-#include "editor/simulatorpanel.h"
 #include "profile/profile.h"
 #include "sim/offlinesimulation.h"
+#include "simulator/simulatorpanel.h"
 
 #include <QLabel>
 #include <QTest>

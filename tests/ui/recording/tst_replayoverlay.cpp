@@ -1,12 +1,12 @@
 // A second recording overlaid on the replay: aligned at the trigger (the first "trigger:" event)
 // or at the start, drawn fainter on the same plots by real QCustomPlot graphs, shown on the
 // replay bar, removed by its ✕ and by going back to live; a refused file changes nothing.
+#include "plots/plotfeed.h"
 #include "plots/plotghost.h"
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
-#include "recording/plotfeed.h"
+#include "plots/replaycontroller.h"
 #include "recording/replaybar.h"
-#include "recording/replaycontroller.h"
 #include "telemetry/recordingwriter.h"
 
 #include <QComboBox>

@@ -2,15 +2,15 @@
 // the stiffness view, the differences table, push on switch, the blind test driven by keys
 // (its trials file, what stays hidden, an abort), and the profile's notes (edit, undo, save,
 // open).
-#include "editor/abcomparepanel.h"
-#include "editor/blinddialog.h"
-#include "editor/blindrunner.h"
+#include "blindtest/blinddialog.h"
+#include "blindtest/blindrunner.h"
 #include "editor/parametereditor.h"
-#include "editor/profilecontroller.h"
-#include "editor/profilenotesedit.h"
-#include "editor/stiffnessview.h"
 #include "model/stiffness.h"
 #include "plots/qcp.h"
+#include "profiles/abcomparepanel.h"
+#include "profiles/profilecontroller.h"
+#include "profiles/profilenotesedit.h"
+#include "stiffness/stiffnessview.h"
 #include "window/mainwindow.h"
 
 #include <QAction>

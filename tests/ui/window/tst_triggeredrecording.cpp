@@ -3,7 +3,7 @@
 // with the span before it and the parameters before it, and the fixed length closes it
 // itself; an armed threshold that is called off writes nothing.
 #include "editor/parametereditor.h"
-#include "editor/profilecontroller.h"
+#include "profiles/profilecontroller.h"
 #include "recording/recordingcontrols.h"
 #include "session/deviceclient.h"
 #include "telemetry/recordingreader.h"

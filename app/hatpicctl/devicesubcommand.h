@@ -1,0 +1,30 @@
+// Base of the subcommands that talk to a device: shared options, connect, then the command.
+#pragma once
+
+#include "deviceoptions.h"
+#include "subcommand.h"
+
+namespace hatpic::cli {
+
+class DeviceRunner;
+
+class DeviceSubcommand : public Subcommand
+{
+public:
+    void addOptions(QCommandLineParser &parser) final;
+    int run(const QCommandLineParser &parser) final;
+
+protected:
+    //! The options specific to the subcommand.
+    virtual void addCommandOptions(QCommandLineParser &parser) { Q_UNUSED(parser); }
+    //! Checks the subcommand's own options before any port is opened (bad usage → 4); may
+    //! adjust the connection (e.g. the stream rate).
+    virtual int prepare(const QCommandLineParser &parser, DeviceOptions &options);
+    //! Runs once the device is connected.
+    virtual int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) = 0;
+
+    //! Text for the end of each device subcommand's --help.
+    static QString portHelp();
+};
+
+} // namespace hatpic::cli

@@ -1,0 +1,288 @@
+// hatpicctl experiment: a step, a frequency response or a spectrum measured on the device,
+// printed next to the model's figures (docs/experiments.md).
+#include "console.h"
+#include "devicerunner.h"
+#include "devicesubcommand.h"
+#include "exitcode.h"
+#include "experimenttext.h"
+#include "subcommands.h"
+
+#include "experiment/experimentcsv.h"
+#include "experiment/experimentrunner.h"
+#include "telemetry/numbertext.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QFile>
+#include <QFileInfo>
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <optional>
+
+namespace hatpic::cli {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+std::atomic<bool> g_stop{false}; // SIGINT / SIGTERM / SIGHUP: cancel, τ_ext back to 0
+
+//! While it lives, an interrupt sets g_stop instead of ending the program.
+class CancelOnInterrupt
+{
+public:
+    CancelOnInterrupt()
+    {
+        g_stop.store(false);
+        for (int i = 0; i < 3; ++i)
+            m_previous[i] = std::signal(kSignals[i], [](int) { g_stop.store(true); });
+    }
+    ~CancelOnInterrupt()
+    {
+        for (int i = 0; i < 3; ++i)
+            std::signal(kSignals[i], m_previous[i]);
+    }
+    CancelOnInterrupt(const CancelOnInterrupt &) = delete;
+    CancelOnInterrupt &operator=(const CancelOnInterrupt &) = delete;
+
+private:
+    static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+    void (*m_previous[3])(int) = {};
+};
+
+//! Options that override the plan's defaults: name → the field it sets.
+struct NumberOption
+{
+    const char16_t *name;
+    const char16_t *help;
+    double ExperimentPlan::*field;
+};
+
+const NumberOption kNumberOptions[] = {
+    {u"from", u"Step: tau_ext before the step, N·m (default: a quarter into the notch band).",
+     &ExperimentPlan::tauFrom},
+    {u"to", u"Step: tau_ext after it, N·m (default: three quarters into the band).",
+     &ExperimentPlan::tauTo},
+    {u"offset", u"Bode: the bias tau_ext, N·m (default: the middle of the band).",
+     &ExperimentPlan::offset},
+    {u"amplitude", u"Bode: the sine's amplitude, N·m (default: a quarter band's torque).",
+     &ExperimentPlan::amplitude},
+    {u"settle", u"Seconds at the bias before the step or the sines, and per frequency.",
+     &ExperimentPlan::settle},
+    {u"duration", u"Step: seconds recorded after the step; spectrum: seconds recorded.",
+     &ExperimentPlan::duration},
+};
+
+std::optional<ExperimentKind> kindOf(const QString &name)
+{
+    for (ExperimentKind kind :
+         {ExperimentKind::Step, ExperimentKind::Frequency, ExperimentKind::Spectrum}) {
+        if (experimentKindName(kind) == name)
+            return kind;
+    }
+    return std::nullopt;
+}
+
+class ExperimentSubcommand final : public DeviceSubcommand
+{
+public:
+    QString name() const override { return QStringLiteral("experiment"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Measure the knob's step or frequency response, or a spectrum.");
+    }
+    QString synopsis() const override
+    {
+        return QStringLiteral("experiment step|bode|spectrum --port PORT [options] [--csv FILE "
+                              "[--force]]");
+    }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Applies tau_ext through the feedback stream and measures how the knob\n"
+                   "responds (hands off the knob; with --port sim the simulated hand is idle\n"
+                   "for the run): 'step' steps tau_ext and fits omega_n and\n"
+                   "zeta; 'bode' applies stepped sines (--frequencies) and prints theta/tau_ext\n"
+                   "in dB and degrees with the -3 dB bandwidth; 'spectrum' records theta and\n"
+                   "tau at rest and prints their strongest lines (Hann window, dB). The model's\n"
+                   "figures for the device's parameters stand next to the measured ones.\n"
+                   "Defaults keep the knob in the notch band (docs/experiments.md); tau_ext is\n"
+                   "0 again when the experiment ends, fails or is interrupted. A protocol v2\n"
+                   "device is needed. --csv FILE writes the curves (never overwritten without\n"
+                   "--force).\n\n") +
+               portHelp();
+    }
+    bool acceptsPositional() const override { return true; }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        for (const NumberOption &o : kNumberOptions) {
+            parser.addOption(QCommandLineOption(QStringList{QString::fromUtf16(o.name)},
+                                                QString::fromUtf16(o.help), QStringLiteral("X")));
+        }
+        parser.addOption(QCommandLineOption(
+            QStringList{QStringLiteral("frequencies")},
+            QStringLiteral("Bode: ascending frequencies in Hz, comma-separated (default: 8 from\n"
+                           "a tenth to three times the model's bandwidth)."),
+            QStringLiteral("LIST")));
+        parser.addOption(QCommandLineOption(
+            QStringList{QStringLiteral("cycles")},
+            QStringLiteral("Bode: whole periods measured per frequency (default: 4)."),
+            QStringLiteral("N")));
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("csv")},
+                                            QStringLiteral("Write the curves to FILE."),
+                                            QStringLiteral("FILE")));
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("force")},
+                                            QStringLiteral("Overwrite FILE if it exists.")));
+    }
+
+    int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
+    {
+        Q_UNUSED(options);
+        const QStringList positional = parser.positionalArguments();
+        const std::optional<ExperimentKind> kind =
+            positional.size() == 1 ? kindOf(positional.first()) : std::nullopt;
+        if (!kind) {
+            printError(QStringLiteral("Name one experiment: step, bode or spectrum; run "
+                                      "'hatpicctl experiment --help' for the options."));
+            return ExitBadUsage;
+        }
+        m_kind = *kind;
+        for (const NumberOption &o : kNumberOptions) {
+            const QString name = QString::fromUtf16(o.name);
+            if (!parser.isSet(name))
+                continue;
+            bool ok = false;
+            const double v = parser.value(name).toDouble(&ok);
+            if (!ok || !std::isfinite(v)) {
+                printError(u"--" + name + u" must be a number, got '" + parser.value(name) + u"'.");
+                return ExitBadUsage;
+            }
+            m_overrides.append({o.field, v});
+        }
+        if (parser.isSet(QStringLiteral("frequencies"))) {
+            for (const QString &item : parser.value(QStringLiteral("frequencies")).split(u',')) {
+                bool ok = false;
+                const double f = item.trimmed().toDouble(&ok);
+                if (!ok) {
+                    printError(u"--frequencies must list numbers of Hz separated by commas, "
+                               u"got '" +
+                               item + u"'.");
+                    return ExitBadUsage;
+                }
+                m_frequencies.append(f);
+            }
+        }
+        if (parser.isSet(QStringLiteral("cycles"))) {
+            bool ok = false;
+            m_cycles = parser.value(QStringLiteral("cycles")).toInt(&ok);
+            if (!ok) {
+                printError(u"--cycles must be a whole number, got '" +
+                           parser.value(QStringLiteral("cycles")) + u"'.");
+                return ExitBadUsage;
+            }
+        }
+        m_csvPath = parser.value(QStringLiteral("csv"));
+        if (parser.isSet(QStringLiteral("csv")) && m_csvPath.isEmpty()) {
+            printError(QStringLiteral("--csv needs a file name."));
+            return ExitBadUsage;
+        }
+        if (!m_csvPath.isEmpty() && QFileInfo::exists(m_csvPath) &&
+            !parser.isSet(QStringLiteral("force"))) {
+            printError(m_csvPath + u" exists; add --force to overwrite it.");
+            return ExitBadUsage;
+        }
+        return ExitSuccess;
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        Q_UNUSED(parser);
+        DeviceClient &client = runner.client();
+        if (const QString why = ExperimentRunner::refusal(client);
+            !why.isEmpty() && client.deviceInfo().protocol == WireProtocol::Legacy) {
+            printError(why);
+            return ExitRejected;
+        }
+        CommandResult read;
+        if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
+            return code;
+        if (const int code = DeviceRunner::reportResult(read); code)
+            return code;
+
+        ExperimentPlan plan = ExperimentPlan::defaults(m_kind, client.deviceParams());
+        for (const auto &[field, value] : m_overrides)
+            plan.*field = value;
+        if (!m_frequencies.isEmpty())
+            plan.frequencies = m_frequencies;
+        if (m_cycles)
+            plan.cycles = *m_cycles;
+
+        ExperimentRunner experiment(client);
+        std::optional<ExperimentResult> result;
+        QObject::connect(&experiment, &ExperimentRunner::finished,
+                         [&](const ExperimentResult &r) { result = r; });
+        if (const QString why = experiment.start(plan); !why.isEmpty()) {
+            printError(why);
+            return ExitBadUsage;
+        }
+        printNote(u"Running the " + experimentKindName(m_kind) + u" experiment for " +
+                  QString::number(plan.totalDuration(), 'f', 1) + u" s; " +
+                  (experiment.hand() == RunHand::SimulatedIdle
+                       ? u"the simulated hand is idle meanwhile."_s
+                       : u"keep hands off the knob."_s));
+        int code = ExitSuccess;
+        {
+            const CancelOnInterrupt interrupts;
+            code = runner.runFor(0, [&] {
+                if (g_stop.load())
+                    experiment.cancel(); // reports Cancelled at once
+                return result.has_value();
+            });
+        }
+        if (!result) {
+            experiment.cancel();
+            return code == ExitSuccess ? ExitNoDevice : runner.reportLoss();
+        }
+        if (!result->completed()) {
+            printError(result->problem);
+            return ExitNoDevice;
+        }
+        // A spectrum of too few samples (a device that streams slowly) is no spectrum.
+        if (m_kind == ExperimentKind::Spectrum && result->thetaSpectrum.frequency.empty()) {
+            printError(result->problem);
+            return ExitNoDevice;
+        }
+        if (!result->problem.isEmpty())
+            printNote(u"Note: " + result->problem);
+        writeOut(experimentReport(*result));
+        if (!m_csvPath.isEmpty()) {
+            QFile file(m_csvPath);
+            if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+                file.write(experimentCsv(*result)) < 0 || !file.flush()) {
+                printError(u"Cannot write " + m_csvPath + u": " + file.errorString() + u'.');
+                return ExitBadUsage;
+            }
+        }
+        return ExitSuccess;
+    }
+
+private:
+    ExperimentKind m_kind = ExperimentKind::Step;
+    QList<std::pair<double ExperimentPlan::*, double>> m_overrides;
+    QList<double> m_frequencies;
+    std::optional<int> m_cycles;
+    QString m_csvPath;
+};
+
+} // namespace
+
+std::unique_ptr<Subcommand> makeExperimentSubcommand()
+{
+    return std::make_unique<ExperimentSubcommand>();
+}
+
+} // namespace hatpic::cli

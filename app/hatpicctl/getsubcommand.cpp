@@ -1,0 +1,87 @@
+// hatpicctl get: the parameters the device renders now (GET_PARAMS).
+#include "console.h"
+#include "devicerunner.h"
+#include "devicesubcommand.h"
+#include "exitcode.h"
+#include "paramtext.h"
+#include "subcommands.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+
+namespace hatpic::cli {
+
+namespace {
+
+class GetSubcommand final : public DeviceSubcommand
+{
+public:
+    QString name() const override { return QStringLiteral("get"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Print the device's current parameters (text or JSON).");
+    }
+    QString synopsis() const override { return QStringLiteral("get --port PORT [--json]"); }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Reads the parameters with GET_PARAMS. The text form has one line per\n"
+                   "parameter: name, value, unit, meaning. --json prints a complete profile\n"
+                   "that 'hatpicctl set --profile' accepts (host settings are defaults, with\n"
+                   "the device's tau_limit). The device holds 32-bit floats; each is shown\n"
+                   "as the shortest decimal that gives back that float. A device with the\n"
+                   "effects capability is also asked for its effect block (GET_EFFECTS): seven\n"
+                   "more lines, and the profile's device.effects when they are not the\n"
+                   "defaults.\n\n") +
+               portHelp();
+    }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
+                                            QStringLiteral("Print a profile (JSON).")));
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        CommandResult result;
+        if (const int code = runner.runCommand(&DeviceClient::readParams, &result); code)
+            return code;
+        if (const int code = DeviceRunner::reportResult(result); code)
+            return code;
+        // A device reporting NaN or values that break model.md is not printed as a profile
+        // (nor as a table that looks fine): it is refused with what is wrong.
+        if (const QString problem = deviceParamsProblem(runner.client().deviceParams());
+            !problem.isEmpty()) {
+            printError(u"The device reported parameters that are not valid: " + problem + u'.');
+            return ExitNoDevice;
+        }
+        std::optional<EffectParams> effects;
+        const DeviceInfo info = runner.client().deviceInfo();
+        if (info.hasEffects()) {
+            if (const int code = runner.runCommand(&DeviceClient::readEffects, &result); code)
+                return code;
+            if (const int code = DeviceRunner::reportResult(result); code)
+                return code;
+            effects = result.effectsReceived;
+            if (const QString problem = deviceEffectsProblem(*effects, info.tauLimit);
+                !problem.isEmpty()) {
+                printError(u"The device reported effects that are not valid: " + problem + u'.');
+                return ExitNoDevice;
+            }
+        }
+        writeOut(parameterOutput(runner.client().deviceParams(), effects, info,
+                                 parser.isSet(QStringLiteral("json"))));
+        return ExitSuccess;
+    }
+};
+
+} // namespace
+
+std::unique_ptr<Subcommand> makeGetSubcommand()
+{
+    return std::make_unique<GetSubcommand>();
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,49 @@
+// hatpicctl save: persist the device's parameters across power-up (SAVE_PARAMS).
+#include "console.h"
+#include "devicerunner.h"
+#include "devicesubcommand.h"
+#include "exitcode.h"
+#include "subcommands.h"
+
+#include <QCommandLineParser>
+
+namespace hatpic::cli {
+
+namespace {
+
+class SaveSubcommand final : public DeviceSubcommand
+{
+public:
+    QString name() const override { return QStringLiteral("save"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Make the device keep its current parameters at power-up.");
+    }
+    QString synopsis() const override { return QStringLiteral("save --port PORT"); }
+    QString description() const override
+    {
+        return QStringLiteral("Sends SAVE_PARAMS. Prints nothing on stdout.\n\n") + portHelp();
+    }
+
+protected:
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        Q_UNUSED(parser);
+        CommandResult result;
+        if (const int code = runner.runCommand(&DeviceClient::saveParams, &result); code)
+            return code;
+        if (const int code = DeviceRunner::reportResult(result); code)
+            return code;
+        printNote(QStringLiteral("The device saved its parameters."));
+        return ExitSuccess;
+    }
+};
+
+} // namespace
+
+std::unique_ptr<Subcommand> makeSaveSubcommand()
+{
+    return std::make_unique<SaveSubcommand>();
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,340 @@
+// hatpicctl stream: telemetry to stdout or to a recording, then the link statistics.
+#include "common/sessiontext.h"
+#include "console.h"
+#include "devicerunner.h"
+#include "devicesubcommand.h"
+#include "exitcode.h"
+#include "subcommands.h"
+
+#include "telemetry/recording.h"
+#include "telemetry/samplecolumns.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QDateTime>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <optional>
+
+namespace hatpic::cli {
+
+namespace {
+
+std::atomic<bool> g_interrupted{false}; // set by SIGINT / SIGTERM / SIGHUP
+
+void onInterrupt(int)
+{
+    g_interrupted.store(true);
+}
+
+constexpr int kDefaultRateHz = 1000;
+
+QString milliseconds(double ms)
+{
+    return ms < 0 ? QStringLiteral("–") : QString::number(ms, 'f', 3) + u" ms";
+}
+
+class StreamSubcommand final : public DeviceSubcommand
+{
+public:
+    QString name() const override { return QStringLiteral("stream"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Stream telemetry (CSV to stdout, or a recording); link stats.");
+    }
+    QString synopsis() const override
+    {
+        return QStringLiteral(
+            "stream --port PORT [--rate HZ] [--duration S] [--csv FILE [--force]]");
+    }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Streams telemetry for --duration seconds (default: until Ctrl+C).\n"
+                   "Without --csv every sample goes to stdout as CSV with the header\n") +
+               QString::fromLatin1(sampleCsvHeader()) +
+               QStringLiteral(
+                   ".\n"
+                   "With --csv FILE the samples are recorded to FILE (the tuner's recording\n"
+                   "format, metadata in FILE's .json sibling) and stdout stays empty. An\n"
+                   "existing FILE or .json is never overwritten without --force.\n"
+                   "Ctrl+C, SIGTERM and SIGHUP end the stream cleanly (recording closed).\n"
+                   "At the end the link statistics go to stderr: frames/s, frames, frames\n"
+                   "missing by sequence number, decoder drops by reason, round-trip time.\n\n") +
+               portHelp();
+    }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        parser.addOption(QCommandLineOption(
+            QStringList{QStringLiteral("rate")},
+            QStringLiteral("Telemetry rate to request (default: 1000); the device may clamp "
+                           "it."),
+            QStringLiteral("HZ"), QString::number(kDefaultRateHz)));
+        parser.addOption(QCommandLineOption(
+            QStringList{QStringLiteral("duration")},
+            QStringLiteral("How long to stream, in seconds (default: until interrupted)."),
+            QStringLiteral("S")));
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("csv")},
+                                            QStringLiteral("Record to FILE instead of stdout."),
+                                            QStringLiteral("FILE")));
+        parser.addOption(
+            QCommandLineOption(QStringList{QStringLiteral("force")},
+                               QStringLiteral("Overwrite FILE and its .json if they exist.")));
+    }
+
+    int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
+    {
+        bool ok = false;
+        const int rate = parser.value(QStringLiteral("rate")).toInt(&ok);
+        if (!ok || rate < 1 || rate > 65535) {
+            printError(u"--rate must be a whole number of Hz from 1 to 65535, got '" +
+                       parser.value(QStringLiteral("rate")) + u"'.");
+            return ExitBadUsage;
+        }
+        options.connect.streamRateHz = static_cast<quint16>(rate);
+        m_duration = 0;
+        if (parser.isSet(QStringLiteral("duration"))) {
+            m_duration = parser.value(QStringLiteral("duration")).toDouble(&ok);
+            if (!ok || !std::isfinite(m_duration) || m_duration <= 0 || m_duration > 1e6) {
+                printError(u"--duration must be a number of seconds above 0, got '" +
+                           parser.value(QStringLiteral("duration")) + u"'.");
+                return ExitBadUsage;
+            }
+        }
+        m_csvPath = parser.value(QStringLiteral("csv"));
+        m_force = parser.isSet(QStringLiteral("force"));
+        if (parser.isSet(QStringLiteral("csv")) && m_csvPath.isEmpty()) {
+            printError(QStringLiteral("--csv needs a file name; without --csv the samples go to "
+                                      "stdout."));
+            return ExitBadUsage;
+        }
+        // Everything about the files is checked before the port is opened or a file touched.
+        if (!m_csvPath.isEmpty()) {
+            if (const QString problem = recordingTargetProblem(m_csvPath, m_force);
+                !problem.isEmpty()) {
+                printError(problem);
+                return ExitBadUsage;
+            }
+        }
+        return ExitSuccess;
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        Q_UNUSED(parser);
+        DeviceClient &client = runner.client();
+        const DeviceInfo info = client.deviceInfo();
+
+        HostParams host;
+        if (std::isfinite(info.tauLimit) && info.tauLimit > 0 && info.tauLimit <= 10)
+            host.tau_limit = info.tauLimit;
+        client.setHostParams(host);
+
+        // The parameters in force, for the recording's metadata (legacy cannot tell).
+        DeviceParams params = client.deviceParams();
+        if (info.canSetParams()) {
+            CommandResult read;
+            if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
+                return code;
+            if (const int code = DeviceRunner::reportResult(read); code)
+                return code;
+            params = client.deviceParams();
+        }
+
+        // The recording is the session's own (the tuner's too): written on the link's thread,
+        // flushed every 0.5 s, with parameter events, closed cleanly if the port vanishes.
+        QObject context;
+        if (!m_csvPath.isEmpty()) {
+            // --force: the user allowed replacing whatever .json is there (a profile, say),
+            // which the recorder would otherwise refuse.
+            const QString json = recordingMetadataPath(m_csvPath);
+            if (m_force && QFileInfo(json).isFile() && !QFile::remove(json)) {
+                printError(u"Cannot replace " + json + u'.');
+                return ExitBadUsage;
+            }
+            // The session refuses a start with a notice (no device) or a status with an error.
+            std::optional<SessionNotice> refused;
+            QObject::connect(&client, &DeviceClient::notice, &context,
+                             [&](const SessionNotice &notice) {
+                                 if (notice.kind == SessionNotice::Kind::RecordingNeedsDevice)
+                                     refused = notice;
+                             });
+            client.startRecording(m_csvPath, QStringLiteral("hatpicctl stream"));
+            runner.runFor(kRecordingStartWaitS, [&] {
+                const RecordingStatus status = client.recordingStatus();
+                return status.active || !status.error.isEmpty() || refused;
+            });
+            if (!client.recordingStatus().active) {
+                printError(
+                    u"Cannot write the recording " + m_csvPath + u": " +
+                    asSentence(refused ? noticeText(*refused) : client.recordingStatus().error));
+                return ExitBadUsage;
+            }
+        } else {
+            writeOut(sampleCsvHeader() + '\n');
+        }
+
+        quint64 samples = 0;
+        bool recordingFailed = false;
+        QObject::connect(&client, &DeviceClient::recordingChanged, &context,
+                         [&](const RecordingStatus &status) {
+                             if (!status.active && !status.error.isEmpty())
+                                 recordingFailed = true;
+                         });
+        QObject::connect(&client, &DeviceClient::samplesReady, &context,
+                         [&](const SampleBatch &batch) {
+                             samples += static_cast<quint64>(batch.size());
+                             if (m_csvPath.isEmpty()) {
+                                 QByteArray rows;
+                                 for (const Sample &sample : batch) {
+                                     appendSampleCsvRow(rows, sample);
+                                     rows += '\n';
+                                 }
+                                 writeOut(rows);
+                             }
+                         });
+        QObject::connect(&client, &DeviceClient::statsUpdated, &context,
+                         [&](const LinkStats &) { ++m_statsUpdates; });
+
+        g_interrupted.store(false);
+        const auto previousInt = std::signal(SIGINT, onInterrupt);
+        const auto previousTerm = std::signal(SIGTERM, onInterrupt);
+        const auto previousHup = std::signal(SIGHUP, onInterrupt);
+        QElapsedTimer elapsed;
+        elapsed.start();
+        const int code =
+            runner.runFor(m_duration, [&] { return g_interrupted.load() || recordingFailed; });
+        const double seconds = elapsed.nsecsElapsed() * 1e-9;
+        QObject::disconnect(&client, &DeviceClient::samplesReady, &context, nullptr);
+        std::signal(SIGINT, previousInt);
+        std::signal(SIGTERM, previousTerm);
+        std::signal(SIGHUP, previousHup);
+
+        // The recording covers the requested duration, not the wait for statistics below.
+        RecordingStatus recorded = client.recordingStatus();
+        if (recorded.active) {
+            client.stopRecording();
+            runner.runFor(kRecordingStartWaitS, [&] { return !client.recordingStatus().active; });
+            recorded = client.recordingStatus();
+        }
+
+        // The statistics arrive periodically; wait for one more report (bounded) so the
+        // figures cover the whole run.
+        if (code == ExitSuccess) {
+            const quint64 before = m_statsUpdates;
+            runner.runFor(kStatsWaitS, [&] { return m_statsUpdates > before; });
+        }
+
+        flushOut();
+        // With a recording, the figure is its rows on disk (what a reader will find).
+        if (!m_csvPath.isEmpty())
+            samples = recorded.samples;
+        printStatistics(client, seconds, samples, recorded);
+
+        if (code == ExitNoDevice)
+            return runner.reportLoss();
+        if (recordingFailed) {
+            printError(u"The recording stopped: " + asSentence(recorded.error));
+            return ExitBadUsage;
+        }
+        if (code == ExitSuccess && samples == 0) {
+            printError(u"No telemetry arrived from " + info.port + u" in " +
+                       QString::number(seconds, 'f', 1) + u" s; the device did not stream.");
+            return ExitNoDevice;
+        }
+        return code;
+    }
+
+private:
+    static constexpr double kStatsWaitS = 1.5;
+    static constexpr double kRecordingStartWaitS = 2.0; //!< bound on opening/closing the files [s]
+
+    void printStatistics(const DeviceClient &client, double seconds, quint64 samples,
+                         const RecordingStatus &recorded) const
+    {
+        const LinkStats stats = client.stats();
+        const DeviceInfo info = client.deviceInfo();
+        const auto line = [](const char16_t *key, const QString &value) -> QString {
+            return QString::fromUtf16(key).leftJustified(14) + value + u'\n';
+        };
+        QString text;
+        text += line(u"link", info.port + u", " + wireProtocolName(info.protocol) + u", " +
+                                  QString::number(info.baud) + u" baud");
+        text += line(u"duration", QString::number(seconds, 'f', 3) + u" s");
+        text += line(u"samples", QString::number(samples) + u" (" +
+                                     QString::number(seconds > 0 ? samples / seconds : 0, 'f', 1) +
+                                     u" per second)");
+        text += line(u"frames/s",
+                     QString::number(stats.framesPerSecond, 'f', 1) + u" over the last second");
+        // Duplicates only when there were some: the line stays as it was on a sound link.
+        text += line(u"frames",
+                     QString::number(stats.frames) + u" received, " +
+                         QString::number(stats.seqDrops) + u" missing by seq" +
+                         (stats.duplicates > 0
+                              ? u", " + QString::number(stats.duplicates) + u" received twice"
+                              : QString()) +
+                         u" (since connecting)");
+        QStringList reasons;
+        for (int r = 0; r < v2::kDropReasonCount; ++r) {
+            reasons << v2::dropReasonName(static_cast<v2::DropReason>(r)) + u' ' +
+                           QString::number(stats.decoderDrops[static_cast<std::size_t>(r)]);
+        }
+        QString drops = QString::number(stats.totalDecoderDrops()) + u" (" +
+                        reasons.join(QStringLiteral(", ")) + u')';
+        if (info.protocol == WireProtocol::Legacy)
+            drops += u", legacy malformed " + QString::number(stats.legacyMalformed);
+        text += line(u"decoder drops", drops);
+        text += line(u"rtt", u"last " + milliseconds(stats.rttLastMs) + u", median " +
+                                 milliseconds(stats.rttMedianMs) + u", max " +
+                                 milliseconds(stats.rttMaxMs));
+        if (!m_csvPath.isEmpty()) {
+            text +=
+                line(u"recording", m_csvPath + u", " + QString::number(recorded.samples) +
+                                       u" samples, " + QString::number(recorded.bytes) + u" bytes");
+        }
+        printNote(text);
+    }
+
+    //! Why `csvPath` (and its .json) cannot be a new recording; empty when it can.
+    static QString recordingTargetProblem(const QString &csvPath, bool force)
+    {
+        const QStringList paths{csvPath, recordingMetadataPath(csvPath)};
+        for (const QString &path : paths) {
+            const QFileInfo info(path);
+            if (info.exists() && !info.isFile()) {
+                return path + u" is not a regular file (" +
+                       (info.isDir() ? QStringLiteral("a folder")
+                                     : QStringLiteral("a device or pipe")) +
+                       u"); a recording needs files of its own.";
+            }
+        }
+        for (const QString &path : paths) {
+            if (QFileInfo::exists(path) && !force)
+                return path + u" already exists; pass --force to overwrite it.";
+        }
+        if (!QFileInfo(QFileInfo(csvPath).absolutePath()).isDir())
+            return u"Cannot create " + csvPath + u": its folder does not exist.";
+        return {};
+    }
+
+    double m_duration = 0; //!< [s]; 0 = until interrupted
+    QString m_csvPath;
+    bool m_force = false;
+    quint64 m_statsUpdates = 0;
+};
+
+} // namespace
+
+std::unique_ptr<Subcommand> makeStreamSubcommand()
+{
+    return std::make_unique<StreamSubcommand>();
+}
+
+} // namespace hatpic::cli

@@ -1,0 +1,112 @@
+// hatpicctl vibrate: a vibration cue on the knob (VIBRATE, effects.md § 1).
+#include "console.h"
+#include "devicerunner.h"
+#include "devicesubcommand.h"
+#include "exitcode.h"
+#include "subcommands.h"
+
+#include "model/effects.h"
+#include "telemetry/numbertext.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+
+#include <array>
+#include <utility>
+
+namespace hatpic::cli {
+
+namespace {
+
+class VibrateSubcommand final : public DeviceSubcommand
+{
+public:
+    QString name() const override { return QStringLiteral("vibrate"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Play a vibration cue on the knob (devices with effects).");
+    }
+    QString synopsis() const override
+    {
+        return QStringLiteral("vibrate --port PORT --amplitude NM --frequency HZ --duration S");
+    }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Sends VIBRATE and waits for the device's ACK: the knob renders\n"
+                   "a·sin(2π·f·t) for d seconds on top of everything else. The amplitude is at\n"
+                   "most the device's tau_limit [N·m], the frequency 1 … 500 Hz and below half\n"
+                   "the device's control rate (only the device knows it: it refuses with exit\n"
+                   "2), the duration 0 … 10 s. Amplitude 0 stops a running cue. A new cue\n"
+                   "replaces the running one. Fire and forget: the command returns once the\n"
+                   "device has acknowledged, not when the cue ends. The published firmware and\n"
+                   "devices without the effects capability cannot vibrate (exit 2).\n\n") +
+               portHelp();
+    }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("amplitude")},
+                                            QStringLiteral("Amplitude a in N·m (required)."),
+                                            QStringLiteral("NM")));
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("frequency")},
+                                            QStringLiteral("Frequency f in Hz (required)."),
+                                            QStringLiteral("HZ")));
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("duration")},
+                                            QStringLiteral("Duration d in s (required)."),
+                                            QStringLiteral("S")));
+    }
+
+    int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
+    {
+        Q_UNUSED(options);
+        const std::array options3 = {std::pair{QStringLiteral("amplitude"), &m_cue.amplitude},
+                                     std::pair{QStringLiteral("frequency"), &m_cue.frequency},
+                                     std::pair{QStringLiteral("duration"), &m_cue.duration}};
+        for (const auto &[option, target] : options3) {
+            if (!parser.isSet(option)) {
+                printError(QStringLiteral(
+                    "vibrate needs --amplitude NM, --frequency HZ and --duration S."));
+                return ExitBadUsage;
+            }
+            bool ok = false;
+            *target = parser.value(option).toDouble(&ok);
+            if (!ok) {
+                printError(u"--" + option + u" must be a number, got '" + parser.value(option) +
+                           u"'.");
+                return ExitBadUsage;
+            }
+        }
+        return ExitSuccess;
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        Q_UNUSED(parser);
+        CommandResult result;
+        const Vibration cue = m_cue;
+        if (const int code = runner.runCommand(
+                [&cue](DeviceClient &client) { return client.vibrate(cue); }, &result);
+            code)
+            return code;
+        if (const int code = DeviceRunner::reportResult(result); code)
+            return code;
+        printNote(u"The device plays the cue: " + compactNumberText(cue.amplitude) + u" N·m at " +
+                  compactNumberText(cue.frequency) + u" Hz for " + compactNumberText(cue.duration) +
+                  u" s.");
+        return ExitSuccess;
+    }
+
+private:
+    Vibration m_cue;
+};
+
+} // namespace
+
+std::unique_ptr<Subcommand> makeVibrateSubcommand()
+{
+    return std::make_unique<VibrateSubcommand>();
+}
+
+} // namespace hatpic::cli

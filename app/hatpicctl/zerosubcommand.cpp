@@ -1,0 +1,63 @@
+// hatpicctl zero: make the knob's current angle the new center (ZERO).
+#include "console.h"
+#include "devicerunner.h"
+#include "devicesubcommand.h"
+#include "exitcode.h"
+#include "paramtext.h"
+#include "subcommands.h"
+#include "telemetry/numbertext.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+
+namespace hatpic::cli {
+
+namespace {
+
+class ZeroSubcommand final : public DeviceSubcommand
+{
+public:
+    QString name() const override { return QStringLiteral("zero"); }
+    QString summary() const override
+    {
+        return QStringLiteral("Make the current knob angle the center (theta0).");
+    }
+    QString synopsis() const override { return QStringLiteral("zero --port PORT [--json]"); }
+    QString description() const override
+    {
+        return QStringLiteral(
+                   "Sends ZERO, then prints the parameters read back (as 'get' does), whose\n"
+                   "theta0 is the new center. Not saved across power-up until 'save'.\n\n") +
+               portHelp();
+    }
+
+protected:
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
+                                            QStringLiteral("Print a profile (JSON).")));
+    }
+
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    {
+        CommandResult result;
+        if (const int code = runner.runCommand(&DeviceClient::zero, &result); code)
+            return code;
+        if (const int code = DeviceRunner::reportResult(result); code)
+            return code;
+        const DeviceParams params = runner.client().deviceParams();
+        printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");
+        writeOut(parameterOutput(params, runner.client().deviceInfo(),
+                                 parser.isSet(QStringLiteral("json"))));
+        return ExitSuccess;
+    }
+};
+
+} // namespace
+
+std::unique_ptr<Subcommand> makeZeroSubcommand()
+{
+    return std::make_unique<ZeroSubcommand>();
+}
+
+} // namespace hatpic::cli
