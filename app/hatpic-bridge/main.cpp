@@ -4,8 +4,8 @@
 #include "bridgeoptions.h"
 #include "bridgeprogram.h"
 
+#include "common/librarylog.h"
 #include "common/quitonsignal.h"
-#include "common/sessiontext.h"
 #include "session/sessiontypes.h"
 
 #include <QCoreApplication>

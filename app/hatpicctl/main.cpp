@@ -1,6 +1,6 @@
 // hatpicctl: command-line access to a HATPIC joystick and to the haptic model (docs/cli.md).
 #include "command.h"
-#include "common/sessiontext.h"
+#include "common/librarylog.h"
 
 #include <QCoreApplication>
 

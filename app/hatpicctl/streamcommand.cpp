@@ -1,10 +1,10 @@
 // hatpicctl stream: telemetry to stdout or to a recording, then the link statistics.
 #include "commands.h"
-#include "common/sessiontext.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
 #include "exitcode.h"
+#include "session/sessionwording.h"
 
 #include "telemetry/recording.h"
 #include "telemetry/samplecolumns.h"
@@ -172,9 +172,9 @@ protected:
                 return status.active || !status.error.isEmpty() || refused;
             });
             if (!client.recordingStatus().active) {
-                printError(
-                    u"Cannot write the recording " + m_csvPath + u": " +
-                    asSentence(refused ? noticeText(*refused) : client.recordingStatus().error));
+                printError(u"Cannot write the recording " + m_csvPath + u": " +
+                           asSentence(refused ? SessionWording::notice(*refused)
+                                              : client.recordingStatus().error));
                 return ExitBadUsage;
             }
         } else {
