@@ -1,8 +1,8 @@
 #include "command.h"
 
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

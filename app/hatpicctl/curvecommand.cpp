@@ -1,9 +1,9 @@
 // hatpicctl curve: the re-centering stiffness and torque of a profile, as CSV.
 #include "command.h"
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "curvetable.h"
-#include "exitcode.h"
 #include "profileinput.h"
 
 #include <QCommandLineOption>

@@ -1,7 +1,7 @@
 #include "devicerunner.h"
 
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 #include "session/sessionwording.h"
 
 #include "model/params.h"

@@ -1,10 +1,10 @@
 // hatpicctl experiment: a step, a frequency response or a spectrum measured on the device,
 // printed next to the model's figures (docs/experiments.md).
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 #include "experimenttext.h"
 
 #include "experiment/experimentcsv.h"

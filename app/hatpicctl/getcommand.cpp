@@ -1,9 +1,9 @@
 // hatpicctl get: the parameters the device renders now (GET_PARAMS).
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 #include "paramtext.h"
 
 #include <QCommandLineOption>

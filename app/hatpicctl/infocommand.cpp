@@ -1,9 +1,9 @@
 // hatpicctl info: who answered on the port.
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 #include "paramtext.h"
 #include "telemetry/numbertext.h"
 

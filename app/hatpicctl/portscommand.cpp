@@ -1,8 +1,8 @@
 // hatpicctl ports: the serial ports this machine has, and "sim".
 #include "command.h"
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 
 #include "session/sessiontypes.h"
 

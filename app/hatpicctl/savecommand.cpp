@@ -1,9 +1,9 @@
 // hatpicctl save: persist the device's parameters across power-up (SAVE_PARAMS).
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 
 #include <QCommandLineParser>
 

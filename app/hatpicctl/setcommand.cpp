@@ -1,10 +1,10 @@
 // hatpicctl set: push parameters and effects (a profile, or single values over the device's
 // current ones).
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 #include "paramtext.h"
 #include "profileinput.h"
 

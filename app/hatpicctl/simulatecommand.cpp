@@ -1,8 +1,8 @@
 // hatpicctl simulate: the simulated joystick's response to a hand input, offline, as CSV.
 #include "command.h"
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 #include "profileinput.h"
 
 #include "sim/offlinesimulation.h"

@@ -1,9 +1,9 @@
 // hatpicctl stream: telemetry to stdout or to a recording, then the link statistics.
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 #include "session/sessionwording.h"
 
 #include "telemetry/recording.h"

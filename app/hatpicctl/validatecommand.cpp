@@ -1,8 +1,8 @@
 // hatpicctl validate: is this profile usable? OK, or every error; warnings either way.
 #include "command.h"
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 
 #include "model/derived.h"
 #include "profile/profile.h"

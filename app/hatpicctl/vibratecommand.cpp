@@ -1,9 +1,9 @@
 // hatpicctl vibrate: a vibration cue on the knob (VIBRATE, effects.md § 1).
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 
 #include "model/effects.h"
 #include "telemetry/numbertext.h"

@@ -1,9 +1,9 @@
 // hatpicctl zero: make the knob's current angle the new center (ZERO).
 #include "commands.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicecommand.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 #include "paramtext.h"
 #include "telemetry/numbertext.h"
 
