@@ -1,7 +1,6 @@
 # hatpicctl: the command-line tool (docs/cli.md). Included from app/CMakeLists.txt.
 add_executable(hatpicctl
   hatpicctl/main.cpp
-  hatpicctl/exitcode.h
   hatpicctl/subcommand.cpp hatpicctl/subcommand.h
   hatpicctl/subcommands.h
   hatpicctl/console.cpp hatpicctl/console.h

@@ -1,5 +1,7 @@
 #include "common/ptyprogram.h"
 
+#include "common/connectionoptions.h"
+
 #include "firmware/devicecore.h"
 
 #include <QCoreApplication>
@@ -144,15 +146,11 @@ bool PtyProgram::readRate(double &hz) const
 
 std::optional<quint64> PtyProgram::seedValue() const
 {
-    const QString text = optionValue(SharedOption::Seed);
-    bool ok = false;
-    const quint64 value = text.toULongLong(&ok);
-    if (!ok) {
-        printError(
-            QStringLiteral("The seed \"%1\" must be a non-negative whole number.").arg(text));
-        return std::nullopt;
-    }
-    return value;
+    QString error;
+    const std::optional<quint64> seed = parseSeed(optionValue(SharedOption::Seed), &error);
+    if (!seed)
+        printError(error);
+    return seed;
 }
 
 bool PtyProgram::readServoId(std::uint8_t &id) const
@@ -188,8 +186,16 @@ bool PtyProgram::readStateFile(QString &file) const
 
 bool PtyProgram::readFaults(FaultSpec &faults) const
 {
-    return !optionIsSet(SharedOption::Faults) ||
-           parseInto(optionValue(SharedOption::Faults), &FaultSpec::parse, faults);
+    if (!optionIsSet(SharedOption::Faults))
+        return true;
+    QString error;
+    const std::optional<FaultSpec> parsed = parseFaults(optionValue(SharedOption::Faults), &error);
+    if (!parsed) {
+        printError(error);
+        return false;
+    }
+    faults = *parsed;
+    return true;
 }
 
 bool PtyProgram::readLink()

@@ -5,6 +5,7 @@
 // as the first stdout line.
 #pragma once
 
+#include "common/exitcodes.h"
 #include "common/quitonsignal.h"
 #include "link/faultinjector.h"
 #include "sim/handinput.h"
@@ -47,10 +48,11 @@ enum class SharedOption { Hand, Rate, Seed, ServoId, CenterTick, State, Faults, 
 class PtyProgram
 {
 public:
-    static constexpr int kExitOk = 0;
-    static constexpr int kExitFailure = 1;      //!< runtime failure (no pty, no link, no servo)
-    static constexpr int kExitBadOptions = 4;   //!< one sentence on stderr
-    static constexpr double kMaxRateHz = 20000; //!< highest --rate accepted [Hz]
+    // The shared table's codes (common/exitcodes.h).
+    static constexpr int kExitOk = ExitSuccess;
+    static constexpr int kExitFailure = ExitFailure;     //!< no pty, no link, no servo
+    static constexpr int kExitBadOptions = ExitBadUsage; //!< one sentence on stderr
+    static constexpr double kMaxRateHz = 20000;          //!< highest --rate accepted [Hz]
 
     //! `program` names the program in every sentence; `description` heads --help, followed by
     //! what all of them do ("Prints the terminal's path as the first line, …").

@@ -1,5 +1,6 @@
 #include "bridgeoptions.h"
 
+#include "common/connectionoptions.h"
 #include "profile/jsonfile.h"
 #include "ros/node.h"
 
@@ -16,7 +17,6 @@ namespace hatpic::bridge {
 namespace {
 
 constexpr qint64 kMaxConfigBytes = 64 * 1024;
-constexpr qint32 kMaxBaud = 4000000;
 constexpr int kMaxTelemetryHz = 65535;
 // The device's watchdog must never trip while the wrench is fresh: a frame at least every
 // 50 ms (ros.md).
@@ -94,11 +94,11 @@ Apply componentSetting(const char *choices, bool allowAuto,
 const std::vector<Setting> &settingTable()
 {
     static const std::vector<Setting> table = {
-        {"baud", "N", "Baud rate (default: the protocol's).",
+        {"baud", "N", "Baud rate, 300 to 4000000 (default: the protocol's).",
          [](AppOptions &o, const QString &t) {
-             const auto v = whole(t);
-             if (!v || *v <= 0 || *v > kMaxBaud)
-                 return QStringLiteral("needs a whole number of baud from 1 to 4000000");
+             const auto v = baudValue(t); // the bounds of every program's --baud
+             if (!v)
+                 return QString(u"needs " + baudRule());
              o.connect.baud = *v;
              return QString();
          }},
@@ -258,9 +258,8 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
         "roscpp): publishes its references, feeds the robot's wrench back as τ_ext. Statistics "
         "once a second on stdout; runs until SIGINT or SIGTERM. See docs/ros.md."));
     const QCommandLineOption helpOption = parser.addHelpOption();
-    const QCommandLineOption portOption(QStringLiteral("port"),
-                                        QStringLiteral("Device path, a pseudo-terminal, or sim."),
-                                        QStringLiteral("PATH|sim"));
+    const QCommandLineOption portOption = connectionOption(
+        ConnectionOption::Port, QStringLiteral("Device path, a pseudo-terminal, or sim."));
     const QCommandLineOption configOption(
         QStringLiteral("config"),
         QStringLiteral("JSON file of the settings below (keys without "

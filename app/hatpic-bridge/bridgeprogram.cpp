@@ -1,6 +1,6 @@
 #include "bridgeprogram.h"
 
-#include "common/sessiontext.h"
+#include "session/sessionwording.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -72,7 +72,7 @@ void BridgeProgram::onStateChanged(SessionState state, const StateDetail &event)
         m_lastDeviceTauExt.reset(); // what the device renders now is not known
     if (m_closing)
         return;
-    const QString detail = cli::stateDetailText(event);
+    const QString detail = SessionWording::stateDetail(event);
     printLine(stderr, u"hatpic-bridge: " + sessionStateName(state) +
                           (detail.isEmpty() ? QString() : u": " + detail));
     if (state == SessionState::Connected)

@@ -1,11 +1,12 @@
 // hatpic-bridge: the joystick on ROS 2 (or ROS 1) and the robot's wrench back in the operator's
 // hand (docs/ros.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4;
-// the middleware refused (or that ROS is not built in): exit 1.
+// the middleware refused (or that ROS is not built in): exit 1 (common/exitcodes.h).
 #include "bridgeoptions.h"
 #include "bridgeprogram.h"
 
+#include "common/exitcodes.h"
+#include "common/librarylog.h"
 #include "common/quitonsignal.h"
-#include "common/sessiontext.h"
 #include "session/sessiontypes.h"
 
 #include <QCoreApplication>
@@ -15,10 +16,6 @@
 using namespace hatpic;
 
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;
-constexpr int kExitBadOptions = 4;
 
 void printError(const QString &sentence)
 {
@@ -39,21 +36,21 @@ int main(int argc, char *argv[])
     if (!options) {
         if (!error.isEmpty()) {
             printError(error);
-            return kExitBadOptions;
+            return ExitBadUsage;
         }
         std::fputs(qPrintable(help), stdout);
-        return kExitOk;
+        return ExitSuccess;
     }
     if (!quitOnSignals()) {
         printError(QStringLiteral("Cannot install the signal handlers."));
-        return kExitFailure;
+        return ExitFailure;
     }
     bridge::BridgeProgram program(*options);
     if (const QString failure = program.start(); !failure.isEmpty()) {
         printError(failure);
-        return kExitFailure;
+        return ExitFailure;
     }
     app.exec();
     program.shutdown();
-    return kExitOk;
+    return ExitSuccess;
 }

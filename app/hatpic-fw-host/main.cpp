@@ -4,6 +4,7 @@
 // Prints the pty's slave path as the first stdout line, then runs until SIGINT/SIGTERM: the
 // control thread stops, the servo's torque goes off, the link is removed, exit 0. Bad options:
 // one sentence on stderr, exit 4. The servo does not answer or no pty: exit 1.
+#include "common/connectionoptions.h"
 #include "common/faultreport.h"
 #include "common/ptyprogram.h"
 #include "fwhost/firmwarehost.h"
@@ -37,7 +38,8 @@ bool readBusOptions(const PtyProgram &program, const BusOptions &options,
         return false;
     }
     // Each of the three says what is wrong with it.
-    const auto baud = program.wholeNumber(program.value(options.baud), 300, 4000000, "baud rate");
+    const auto baud =
+        program.wholeNumber(program.value(options.baud), kMinBaud, kMaxBaud, "baud rate");
     const bool idOk = program.readServoId(config.servoId);
     const bool centerOk = program.readCenterTick(config.centerTick);
     if (!baud || !idOk || !centerOk)

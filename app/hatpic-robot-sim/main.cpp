@@ -1,8 +1,9 @@
 // hatpic-robot-sim: a simulated robot at the other end of hatpic-bridge (robot.md,
 // docs/teleop.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4;
-// the middleware refused: exit 1.
+// the middleware refused: exit 1 (common/exitcodes.h).
 #include "robotsimoptions.h"
 
+#include "common/exitcodes.h"
 #include "common/quitonsignal.h"
 
 #include <QCoreApplication>
@@ -13,10 +14,6 @@
 using namespace hatpic;
 
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;
-constexpr int kExitBadOptions = 4;
 
 void printError(const QString &sentence)
 {
@@ -50,20 +47,20 @@ int main(int argc, char *argv[])
     if (!settings) {
         if (!error.isEmpty()) {
             printError(error);
-            return kExitBadOptions;
+            return ExitBadUsage;
         }
         std::fputs(qPrintable(help), stdout);
-        return kExitOk;
+        return ExitSuccess;
     }
     if (!quitOnSignals()) {
         printError(QStringLiteral("Cannot install the signal handlers."));
-        return kExitFailure;
+        return ExitFailure;
     }
     std::string why;
     auto robot = robot::RobotSimulator::start(*settings, &why);
     if (!robot) {
         printError(QString::fromStdString(why));
-        return kExitFailure;
+        return ExitFailure;
     }
     std::fprintf(stderr, "hatpic-robot-sim: on %s\n", robot->where().c_str());
     QTimer status;
@@ -71,5 +68,5 @@ int main(int argc, char *argv[])
     status.start(1000);
     app.exec();
     robot.reset();
-    return kExitOk;
+    return ExitSuccess;
 }

@@ -3,6 +3,7 @@
 // Prints the slave path as the first stdout line, then runs until SIGINT/SIGTERM (exit 0).
 // With --faults, prints what it injected on stderr at exit and on SIGUSR1.
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
+#include "common/connectionoptions.h"
 #include "common/faultreport.h"
 #include "common/ptyprogram.h"
 #include "sim/simulateddevice.h"
@@ -29,28 +30,23 @@ struct LinkOptions
 bool readLinkOptions(const PtyProgram &program, const LinkOptions &options,
                      SimulatedDevice::Config &config)
 {
-    const QString protocol = program.value(options.protocol);
-    if (protocol == QLatin1String("v2")) {
-        config.protocol = WireProtocol::V2;
-    } else if (protocol == QLatin1String("legacy")) {
-        config.protocol = WireProtocol::Legacy;
-    } else {
-        program.printError(
-            QStringLiteral("Unknown protocol \"%1\"; use v2 or legacy.").arg(protocol));
+    // The device speaks one protocol: the shared --protocol without auto.
+    QString error;
+    const auto protocol = parseProtocol(program.value(options.protocol), &error, false);
+    if (!protocol) {
+        program.printError(error);
         return false;
     }
+    config.protocol = *protocol == ProtocolChoice::V2 ? WireProtocol::V2 : WireProtocol::Legacy;
     if (!program.readRate(config.controlRateHz))
         return false;
     if (program.isSet(options.baud)) {
-        bool ok = false;
-        const qint32 baud = program.value(options.baud).toInt(&ok);
-        if (!ok || baud < 300) {
-            program.printError(QStringLiteral("The baud rate \"%1\" must be a whole number of at "
-                                              "least 300.")
-                                   .arg(program.value(options.baud)));
+        const auto baud = parseBaud(program.value(options.baud), &error);
+        if (!baud) {
+            program.printError(error);
             return false;
         }
-        config.baud = baud;
+        config.baud = *baud;
     }
     config.throttle = !program.isSet(options.noThrottle);
     return true;
@@ -66,8 +62,11 @@ int main(int argc, char *argv[])
     const auto protocol =
         program.add("protocol", "Wire protocol: v2 or legacy.", "v2|legacy", "v2");
     program.add(SharedOption::Rate);
-    const auto baud = program.add(
-        "baud", "Emulated link baud rate (default 921600 for v2, 115200 for legacy).", "N");
+    const auto baud =
+        program.add("baud",
+                    "Emulated link baud rate, 300 to 4000000 (default 921600 for v2, 115200 for "
+                    "legacy).",
+                    "N");
     const auto noThrottle = program.add("no-throttle", "Do not limit output to the baud rate.");
     program.add(SharedOption::Hand);
     program.add(SharedOption::Seed, "Seed of the load-reading noise and of the faults.");

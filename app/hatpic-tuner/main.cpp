@@ -1,5 +1,8 @@
 // hatpic-tuner [--port PATH|sim] [--baud N] [--protocol auto|v2|legacy] [--profile FILE]
 //              [--hand SPEC] [--bridge 1|2] [RECORDING.csv]
+// A bad option: one sentence on stderr, exit 4 (common/exitcodes.h), before any window.
+#include "common/connectionoptions.h"
+#include "common/exitcodes.h"
 #include "plots/plotpanel.h"
 #include "window/mainwindow.h"
 
@@ -9,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -38,7 +42,12 @@ void parseWithQt(int argc, char *argv[], QCommandLineParser &parser)
     arguments.push_back(nullptr);
     int count = argc + 2;
     const QApplication probe(count, arguments.data());
-    parser.process(probe);
+    // A bad option is bad usage, as in every program (Qt's process() would exit 1).
+    if (!parser.parse(QCoreApplication::arguments())) {
+        fail(parser.errorText());
+        std::exit(ExitBadUsage);
+    }
+    parser.process(probe); // help, help-all, version: printed, then exits
 }
 
 // True when every argument that looks like an option is one of `names` spelt out ("--port",
@@ -80,19 +89,12 @@ int main(int argc, char *argv[])
         QStringLiteral("Tune, plot and record the HATPIC single-axis haptic joystick."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption port(
-        {QStringLiteral("p"), QStringLiteral("port")},
-        QStringLiteral("Connect at once to PATH (a serial port or pty), or \"sim\" for the "
-                       "built-in simulated joystick."),
-        QStringLiteral("PATH|sim"));
-    const QCommandLineOption baud({QStringLiteral("b"), QStringLiteral("baud")},
-                                  QStringLiteral("Baud rate (default: 921600 for v2, 115200 for "
-                                                 "legacy; auto listens at 115200, then "
-                                                 "asks at 921600)."),
-                                  QStringLiteral("N"));
-    const QCommandLineOption protocol(QStringLiteral("protocol"),
-                                      QStringLiteral("auto (default), v2 or legacy."),
-                                      QStringLiteral("NAME"), QStringLiteral("auto"));
+    const QCommandLineOption port = connectionOption(
+        ConnectionOption::Port,
+        QStringLiteral("Connect at once to PORT (a serial port or pty), or 'sim' for the "
+                       "built-in simulated joystick."));
+    const QCommandLineOption baud = connectionOption(ConnectionOption::Baud);
+    const QCommandLineOption protocol = connectionOption(ConnectionOption::Protocol);
     const QCommandLineOption profile(QStringLiteral("profile"),
                                      QStringLiteral("Open this profile (JSON) in the editor."),
                                      QStringLiteral("FILE"));
@@ -108,15 +110,8 @@ int main(int argc, char *argv[])
                                        QStringLiteral("Close the window after SECONDS (for "
                                                       "scripted screenshots and measurements)."),
                                        QStringLiteral("SECONDS"));
-    const QCommandLineOption faults(QStringLiteral("faults"),
-                                    QStringLiteral("With --port sim: faults the simulated link "
-                                                   "injects, e.g. drop=0.01,cut=30s:2s "
-                                                   "(docs/simulator.md)."),
-                                    QStringLiteral("SPEC"));
-    const QCommandLineOption seed(QStringLiteral("seed"),
-                                  QStringLiteral("With --port sim: seed of the faults and the "
-                                                 "load noise (default 1)."),
-                                  QStringLiteral("N"));
+    const QCommandLineOption faults = connectionOption(ConnectionOption::Faults);
+    const QCommandLineOption seed = connectionOption(ConnectionOption::Seed);
     const QCommandLineOption bridge(QStringLiteral("bridge"),
                                     QStringLiteral("Open the Bridge panel and start the robot "
                                                    "bridge on ROS 1 or ROS 2, with the profile's "
@@ -147,26 +142,9 @@ int main(int argc, char *argv[])
     }
 
     ConnectOptions options;
-    options.port = parser.value(port);
-    if (parser.isSet(baud)) {
-        bool ok = false;
-        options.baud = parser.value(baud).toInt(&ok);
-        if (!ok || options.baud <= 0) {
-            fail(QStringLiteral("--baud: \"%1\" is not a positive number").arg(parser.value(baud)));
-            return 2;
-        }
-    }
-    const QString protocolName = parser.value(protocol).toLower();
-    if (protocolName == u"auto") {
-        options.protocol = ProtocolChoice::Auto;
-    } else if (protocolName == u"v2") {
-        options.protocol = ProtocolChoice::V2;
-    } else if (protocolName == u"legacy") {
-        options.protocol = ProtocolChoice::Legacy;
-    } else {
-        fail(QStringLiteral("--protocol: expected auto, v2 or legacy, got \"%1\"")
-                 .arg(parser.value(protocol)));
-        return 2;
+    if (QString error; !readConnectionOptions(parser, options, &error)) {
+        fail(error);
+        return ExitBadUsage;
     }
     std::optional<HandInput> handInput;
     if (parser.isSet(hand)) {
@@ -174,30 +152,8 @@ int main(int argc, char *argv[])
         handInput = HandInput::parse(parser.value(hand), &error);
         if (!handInput) {
             fail(QStringLiteral("--hand: %1").arg(error));
-            return 2;
+            return ExitBadUsage;
         }
-    }
-    if (parser.isSet(faults)) {
-        QString error;
-        const std::optional<FaultSpec> spec = FaultSpec::parse(parser.value(faults), &error);
-        if (!spec) {
-            fail(QStringLiteral("--faults: %1").arg(error));
-            return 2;
-        }
-        options.sim.faults = *spec;
-    }
-    if (parser.isSet(seed)) {
-        bool ok = false;
-        options.sim.seed = parser.value(seed).toULongLong(&ok);
-        if (!ok) {
-            fail(QStringLiteral("--seed: expected a non-negative whole number, got \"%1\"")
-                     .arg(parser.value(seed)));
-            return 2;
-        }
-    }
-    if ((parser.isSet(faults) || parser.isSet(seed)) && options.port != QStringView(kSimPortName)) {
-        fail(QStringLiteral("--faults and --seed need --port sim"));
-        return 2;
     }
     double repaintHz = PlotPanel::kDefaultRepaintHz;
     if (parser.isSet(repaint)) {
@@ -207,7 +163,7 @@ int main(int argc, char *argv[])
         if (!ok || !std::isfinite(repaintHz) || repaintHz < 1 || repaintHz > 240) {
             fail(QStringLiteral("--repaint-rate: expected 1 to 240 Hz, got \"%1\"")
                      .arg(parser.value(repaint)));
-            return 2;
+            return ExitBadUsage;
         }
     }
     double quitAfterSeconds = -1;
@@ -219,7 +175,7 @@ int main(int argc, char *argv[])
             fail(QStringLiteral("--quit-after: expected 0 to %1 seconds, got \"%2\"")
                      .arg(kMaxQuitAfterSeconds)
                      .arg(parser.value(quitAfter)));
-            return 2;
+            return ExitBadUsage;
         }
     }
     int bridgeRos = 0;
@@ -228,13 +184,13 @@ int main(int argc, char *argv[])
         if (v != u"1" && v != u"2") {
             fail(QStringLiteral("--bridge: expected 1 or 2 (the ROS version), got \"%1\"")
                      .arg(parser.value(bridge).left(40)));
-            return 2;
+            return ExitBadUsage;
         }
         bridgeRos = v.toInt();
     }
     if (parser.positionalArguments().size() > 1) {
         fail(QStringLiteral("at most one recording can be opened"));
-        return 2;
+        return ExitBadUsage;
     }
 
     QApplication app(argc, argv);

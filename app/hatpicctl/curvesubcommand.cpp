@@ -1,7 +1,7 @@
 // hatpicctl curve: the re-centering stiffness and torque of a profile, as CSV.
+#include "common/exitcodes.h"
 #include "console.h"
 #include "curvetable.h"
-#include "exitcode.h"
 #include "profileinput.h"
 #include "subcommand.h"
 #include "subcommands.h"

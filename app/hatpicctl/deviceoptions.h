@@ -1,4 +1,5 @@
-// The options every device subcommand shares: --port, --baud, --protocol, --timeout.
+// The options every device subcommand shares: the connection options (common/connectionoptions.h)
+// and --timeout.
 #pragma once
 
 #include "session/sessiontypes.h"

@@ -1,8 +1,8 @@
 #include "devicerunner.h"
 
-#include "common/sessiontext.h"
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
+#include "session/sessionwording.h"
 
 #include "model/params.h"
 #include "telemetry/numbertext.h"
@@ -56,7 +56,7 @@ void DeviceRunner::onStateChanged(SessionState state, const StateDetail &detail)
     const bool gone = state == SessionState::Lost || state == SessionState::Disconnected;
     if (gone && !m_lost) {
         m_lost = true;
-        m_lostDetail = stateDetailText(detail);
+        m_lostDetail = SessionWording::stateDetail(detail);
     }
 }
 
@@ -204,7 +204,7 @@ int DeviceRunner::reportResult(const CommandResult &result)
     if (result.status == Status::Ok)
         return ExitSuccess;
 
-    const QString sentence = commandFailureText(result).trimmed();
+    const QString sentence = SessionWording::commandFailure(result).trimmed();
     printError(asSentence(sentence));
 
     switch (result.status) {

@@ -1,7 +1,7 @@
 #include "devicesubcommand.h"
 
+#include "common/exitcodes.h"
 #include "devicerunner.h"
-#include "exitcode.h"
 
 namespace hatpic::cli {
 

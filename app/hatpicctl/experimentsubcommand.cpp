@@ -1,9 +1,9 @@
 // hatpicctl experiment: a step, a frequency response or a spectrum measured on the device,
 // printed next to the model's figures (docs/experiments.md).
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
 #include "experimenttext.h"
 #include "subcommands.h"
 

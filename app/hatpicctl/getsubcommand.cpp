@@ -1,8 +1,8 @@
 // hatpicctl get: the parameters the device renders now (GET_PARAMS).
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
 #include "paramtext.h"
 #include "subcommands.h"
 

@@ -1,8 +1,8 @@
 // hatpicctl info: who answered on the port.
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
 #include "paramtext.h"
 #include "subcommands.h"
 #include "telemetry/numbertext.h"

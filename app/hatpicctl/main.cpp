@@ -1,5 +1,5 @@
 // hatpicctl: command-line access to a HATPIC joystick and to the haptic model (docs/cli.md).
-#include "common/sessiontext.h"
+#include "common/librarylog.h"
 #include "subcommand.h"
 
 #include <QCoreApplication>

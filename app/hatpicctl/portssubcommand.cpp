@@ -1,6 +1,6 @@
 // hatpicctl ports: the serial ports this machine has, and "sim".
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 #include "subcommand.h"
 #include "subcommands.h"
 

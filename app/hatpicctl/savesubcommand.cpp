@@ -1,8 +1,8 @@
 // hatpicctl save: persist the device's parameters across power-up (SAVE_PARAMS).
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
 #include "subcommands.h"
 
 #include <QCommandLineParser>

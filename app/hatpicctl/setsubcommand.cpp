@@ -1,9 +1,9 @@
 // hatpicctl set: push parameters and effects (a profile, or single values over the device's
 // current ones).
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
 #include "paramtext.h"
 #include "profileinput.h"
 #include "subcommands.h"

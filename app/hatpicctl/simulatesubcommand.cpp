@@ -1,6 +1,6 @@
 // hatpicctl simulate: the simulated joystick's response to a hand input, offline, as CSV.
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 #include "profileinput.h"
 #include "subcommand.h"
 #include "subcommands.h"

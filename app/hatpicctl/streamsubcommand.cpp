@@ -1,9 +1,9 @@
 // hatpicctl stream: telemetry to stdout or to a recording, then the link statistics.
-#include "common/sessiontext.h"
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
+#include "session/sessionwording.h"
 #include "subcommands.h"
 
 #include "telemetry/recording.h"
@@ -172,9 +172,9 @@ protected:
                 return status.active || !status.error.isEmpty() || refused;
             });
             if (!client.recordingStatus().active) {
-                printError(
-                    u"Cannot write the recording " + m_csvPath + u": " +
-                    asSentence(refused ? noticeText(*refused) : client.recordingStatus().error));
+                printError(u"Cannot write the recording " + m_csvPath + u": " +
+                           asSentence(refused ? SessionWording::notice(*refused)
+                                              : client.recordingStatus().error));
                 return ExitBadUsage;
             }
         } else {

@@ -1,7 +1,7 @@
 #include "subcommand.h"
 
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 #include "subcommands.h"
 
 #include <QCommandLineOption>

@@ -1,6 +1,6 @@
 // hatpicctl validate: is this profile usable? OK, or every error; warnings either way.
+#include "common/exitcodes.h"
 #include "console.h"
-#include "exitcode.h"
 #include "subcommand.h"
 #include "subcommands.h"
 

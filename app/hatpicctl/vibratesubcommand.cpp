@@ -1,8 +1,8 @@
 // hatpicctl vibrate: a vibration cue on the knob (VIBRATE, effects.md § 1).
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
 #include "subcommands.h"
 
 #include "model/effects.h"

@@ -1,8 +1,8 @@
 // hatpicctl zero: make the knob's current angle the new center (ZERO).
+#include "common/exitcodes.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
-#include "exitcode.h"
 #include "paramtext.h"
 #include "subcommands.h"
 #include "telemetry/numbertext.h"

@@ -86,6 +86,8 @@ void TestTunerOptions::refusesBadNumbers_data()
         << QStringList{u"--repaint-rate"_s, u"0"_s} << u"--repaint-rate"_s;
     QTest::newRow("baud not a number") << QStringList{u"--baud"_s, u"fast"_s} << u"--baud"_s;
     QTest::newRow("baud negative") << QStringList{u"--baud"_s, u"-9600"_s} << u"--baud"_s;
+    QTest::newRow("baud below 300") << QStringList{u"--baud"_s, u"299"_s} << u"--baud"_s;
+    QTest::newRow("protocol unknown") << QStringList{u"--protocol"_s, u"v3"_s} << u"--protocol"_s;
     QTest::newRow("faults spec") << QStringList{u"--port"_s, u"sim"_s, u"--faults"_s, u"drop=2"_s}
                                  << u"--faults"_s;
     QTest::newRow("faults without the sim port")
@@ -101,7 +103,7 @@ void TestTunerOptions::refusesBadNumbers()
     // A refusal is immediate; a tuner that opened its window instead is killed after 15 s, so
     // that a silent acceptance fails here rather than hanging.
     const Run run = runTuner(m_config.path(), arguments, 15000);
-    QVERIFY2(run.code == 2, qPrintable(u"exit "_s + QString::number(run.code) + u", stderr: "_s +
+    QVERIFY2(run.code == 4, qPrintable(u"exit "_s + QString::number(run.code) + u", stderr: "_s +
                                        QString::fromUtf8(run.err)));
     const QString err = QString::fromUtf8(run.err).trimmed();
     QVERIFY2(err.startsWith(u"hatpic-tuner: "_s + option), qPrintable(err));
@@ -131,14 +133,15 @@ void TestTunerOptions::helpAndErrorsNeedNoDisplay_data()
         << QStringList{u"-style"_s, u"Fusion"_s, u"-h"_s} << 0 << u"Usage: "_s << QString();
     QTest::newRow("--help-all lists Qt's options")
         << QStringList{u"--help-all"_s} << 0 << u"Usage: "_s << QString();
-    QTest::newRow("unknown option") << QStringList{u"--bogus"_s} << 1 << QString()
+    // Bad usage exits 4 in every program (app/common/exitcodes.h), Qt's parse errors too.
+    QTest::newRow("unknown option") << QStringList{u"--bogus"_s} << 4 << QString()
                                     << u"hatpic-tuner: Unknown option 'bogus'.\n"_s;
-    QTest::newRow("missing value") << QStringList{u"--port"_s} << 1 << QString()
+    QTest::newRow("missing value") << QStringList{u"--port"_s} << 4 << QString()
                                    << u"hatpic-tuner: Missing value after '--port'.\n"_s;
-    QTest::newRow("bad number") << QStringList{u"--quit-after"_s, u"abc"_s} << 2 << QString()
+    QTest::newRow("bad number") << QStringList{u"--quit-after"_s, u"abc"_s} << 4 << QString()
                                 << u"hatpic-tuner: --quit-after"_s;
     QTest::newRow("bad number after a Qt option")
-        << QStringList{u"-reverse"_s, u"--repaint-rate"_s, u"0"_s} << 2 << QString()
+        << QStringList{u"-reverse"_s, u"--repaint-rate"_s, u"0"_s} << 4 << QString()
         << u"hatpic-tuner: --repaint-rate"_s;
 }
 

@@ -1,6 +1,6 @@
 #include "connection/linkbanner.h"
 
-#include "connection/sessiontext.h"
+#include "session/sessionwording.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -81,7 +81,7 @@ void LinkBanner::setState(SessionState state, const StateDetail &detail, const Q
 {
     const QString where = port.isEmpty() ? tr("the device") : port;
     // The session's full account (with the system's text, when there is one) is the details.
-    const QString details = SessionText::stateDetail(detail);
+    const QString details = SessionWording::stateDetail(detail);
     switch (state) {
     case SessionState::Lost:
         show(lostSentence(detail, where) %

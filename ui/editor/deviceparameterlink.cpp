@@ -1,8 +1,8 @@
 #include "editor/deviceparameterlink.h"
 
-#include "editor/commandtext.h"
 #include "editor/parametereditor.h"
 #include "session/deviceclient.h"
+#include "session/sessionwording.h"
 
 namespace hatpic {
 
@@ -94,7 +94,7 @@ void DeviceParameterLink::refreshEffectsAvailability()
     m_editor->setEffectsAvailable(
         available,
         connected && !available
-            ? CommandText::noEffectsReason(info.protocol == WireProtocol::Legacy)
+            ? SessionWording::noEffectsReason(info.protocol == WireProtocol::Legacy)
             : QString(),
         rate);
 }
@@ -138,7 +138,7 @@ void DeviceParameterLink::finishPush()
         if (!change.isEmpty())
             Q_EMIT deviceChanged(change);
     } else {
-        m_lastMessage = tr("Push failed: %1").arg(CommandText::commandFailure(result));
+        m_lastMessage = tr("Push failed: %1").arg(SessionWording::commandFailure(result));
     }
     Q_EMIT commandFinished(m_lastMessage);
 }
@@ -169,7 +169,7 @@ void DeviceParameterLink::finishCommand(CommandKind kind, const CommandResult &r
     }
     m_lastMessage = result.ok()
                         ? tr("%1: done.").arg(what)
-                        : tr("%1 failed: %2").arg(what, CommandText::commandFailure(result));
+                        : tr("%1 failed: %2").arg(what, SessionWording::commandFailure(result));
     if (result.ok() && kind == CommandKind::Zero)
         Q_EMIT deviceChanged(tr("ZERO: θ0 := current angle"));
     Q_EMIT commandFinished(m_lastMessage);

@@ -1,10 +1,10 @@
 #include "editor/synctracker.h"
 
+#include "session/sessionwording.h"
+
 #include <QCoreApplication>
 
 namespace hatpic {
-
-using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -96,41 +96,23 @@ bool SyncTracker::pushFinished(const CommandResult &result)
     }
     m_awaitingReadback = false;
     m_awaitingEffectsReadback = false;
-    const bool effects = isEffectCommand(result.command);
     switch (result.status) {
     case CommandResult::Status::Rejected: {
         m_failure = SyncState::Rejected;
-        QString reason = v2::ackStatusName(result.ackStatus);
-        const std::string_view field =
-            effects ? effectFieldName(result.field) : deviceFieldName(result.field);
-        const QString name = QString::fromLatin1(field.data(), qsizetype(field.size()));
-        if (!name.isEmpty() && !reason.contains(name))
-            reason += u" ("_s + name + u')';
-        m_failureText = effects ? tr("device rejected the effects: %1").arg(reason)
-                                : tr("device rejected: %1").arg(reason);
-        m_rejectedField = name;
+        const std::string_view field = isEffectCommand(result.command)
+                                           ? effectFieldName(result.field)
+                                           : deviceFieldName(result.field);
+        m_rejectedField = QString::fromLatin1(field.data(), qsizetype(field.size()));
         break;
     }
     case CommandResult::Status::Timeout:
         m_failure = SyncState::Timeout;
-        m_failureText = tr("timeout: the device did not answer");
-        break;
-    case CommandResult::Status::NotConnected:
-        m_failure = SyncState::Failed;
-        m_failureText = tr("push failed: not connected to the device");
-        break;
-    case CommandResult::Status::Unsupported:
-        m_failure = SyncState::Failed;
-        m_failureText = effects ? tr("push failed: this device cannot render effects")
-                                : tr("push failed: the device's protocol cannot carry parameters");
         break;
     default:
         m_failure = SyncState::Failed;
-        m_failureText = result.problems.isEmpty()
-                            ? tr("push failed: the command was not sent")
-                            : tr("push failed: %1").arg(result.problems.join(u"; "_s));
         break;
     }
+    m_failureText = SessionWording::commandFailureBrief(result);
     return true;
 }
 

@@ -5,7 +5,6 @@
 #include "connection/linkbanner.h"
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
-#include "connection/sessiontext.h"
 #include "editor/chatterdetector.h"
 #include "editor/deviceparameterlink.h"
 #include "editor/parametereditor.h"
@@ -17,6 +16,7 @@
 #include "recording/recordingcontrols.h"
 #include "recording/recordingplandialog.h"
 #include "recording/replaybar.h"
+#include "session/sessionwording.h"
 #include "simulator/simulatorpanel.h"
 #include "stiffness/stiffnessview.h"
 #include "window/abdock.h"
@@ -216,7 +216,7 @@ void MainWindow::connectParts()
         showStatus(tr("Device: %1").arg(line));
     });
     connect(m_client, &DeviceClient::notice, this, [this](const SessionNotice &notice) {
-        const QString text = SessionText::notice(notice);
+        const QString text = SessionWording::notice(notice);
         m_log->appendPlainText(text);
         showStatus(text);
         // How a recording ended stays beside the record button, not only for a few seconds.
@@ -306,7 +306,7 @@ void MainWindow::disconnectDevice()
 
 void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
 {
-    const QString detail = SessionText::stateDetail(event);
+    const QString detail = SessionWording::stateDetail(event);
     m_connection->setState(state);
     m_linkStatus->setState(state);
     m_banner->setState(state, event, m_port);

@@ -1,0 +1,42 @@
+// The one place that words, for a person, what the device session reports in codes and numbers:
+// the state's detail (connecting, connected, a link lost and why), a command's outcome and the
+// session's notices. The tuner, hatpicctl and hatpic-bridge all print these sentences; they are
+// translatable (context "hatpic::SessionWording"). No widgets; callable from any thread.
+#pragma once
+
+#include "session/sessiontypes.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+namespace hatpic {
+
+class SessionWording
+{
+    Q_DECLARE_TR_FUNCTIONS(hatpic::SessionWording)
+public:
+    //! "/dev/ttyUSB0 at 921600 baud", or "the simulated joystick" (no serial line, no baud).
+    static QString port(const StateDetail &detail);
+    //! One sentence for the status bar, the link banner and the programs' stderr, e.g. "Lost
+    //! /dev/ttyUSB0 at 921600 baud: reading from the port failed"; empty for Kind::None.
+    static QString stateDetail(const StateDetail &detail);
+    //! e.g. "Not connected: a recording starts once a device is connected."
+    static QString notice(const SessionNotice &notice);
+
+    //! Why a command failed, one sentence, e.g. "The device rejected K_max (field 3):
+    //! OUT_OF_RANGE; its parameters are unchanged."; empty for Ok.
+    static QString commandFailure(const CommandResult &result);
+    //! The same outcome as a short clause for the editor's sync line, e.g. "device rejected:
+    //! OUT_OF_RANGE (K_max)", "timeout: the device did not answer"; empty for Ok.
+    static QString commandFailureBrief(const CommandResult &result);
+    //! Why a device cannot render effects, as a clause: "it runs the published firmware, legacy
+    //! protocol" or "its firmware does not announce the effects capability".
+    static QString noEffectsReason(bool legacy);
+
+private:
+    static QString rejection(const CommandResult &result);
+    static QString unsupported(const CommandResult &result);
+    static QString invalid(const CommandResult &result);
+};
+
+} // namespace hatpic
