@@ -87,8 +87,7 @@ DeviceClient::~DeviceClient()
 {
     // Close the port and the recording on the session thread, then let the thread end;
     // the session deletes itself there when the thread finishes.
-    QMetaObject::invokeMethod(
-        m_session, [s = m_session] { s->shutdown(); }, Qt::BlockingQueuedConnection);
+    onSession<&DeviceSession::shutdown, Qt::BlockingQueuedConnection>();
     m_thread->quit();
     m_thread->wait();
 }
@@ -109,76 +108,73 @@ bool DeviceClient::post(std::atomic<int> &pending, int cap, Deliver deliver)
     return true;
 }
 
+template<auto Method, Qt::ConnectionType Type, typename... Args>
+void DeviceClient::onSession(Args &&...args)
+{
+    // The init-capture decays each argument: the functor owns a copy of every value.
+    QMetaObject::invokeMethod(
+        m_session, [s = m_session, ... args = std::forward<Args>(args)] { (s->*Method)(args...); },
+        Type);
+}
+
+template<auto Method, typename... Args> quint64 DeviceClient::command(Args &&...args)
+{
+    const quint64 id = nextId();
+    onSession<Method>(id, std::forward<Args>(args)...);
+    return id;
+}
+
 void DeviceClient::connectDevice(const ConnectOptions &options)
 {
     m_hasParams = false;
     m_hasEffects = false;
     m_hand = options.sim.hand;
-    QMetaObject::invokeMethod(m_session, [s = m_session, options] { s->connectDevice(options); });
+    onSession<&DeviceSession::connectDevice>(options);
 }
 
 void DeviceClient::disconnectDevice()
 {
-    QMetaObject::invokeMethod(m_session, [s = m_session] { s->disconnectDevice(); });
+    onSession<&DeviceSession::disconnectDevice>();
 }
 
 quint64 DeviceClient::pushParams(const DeviceParams &params)
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session,
-                              [s = m_session, id, params] { s->pushParams(id, params); });
-    return id;
+    return command<&DeviceSession::pushParams>(params);
 }
 
 quint64 DeviceClient::readParams()
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->readParams(id); });
-    return id;
+    return command<&DeviceSession::readParams>();
 }
 
 quint64 DeviceClient::zero()
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->zero(id); });
-    return id;
+    return command<&DeviceSession::zero>();
 }
 
 quint64 DeviceClient::saveParams()
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->saveParams(id); });
-    return id;
+    return command<&DeviceSession::saveParams>();
 }
 
 quint64 DeviceClient::setStreamRate(quint16 hz)
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session, [s = m_session, id, hz] { s->setStreamRate(id, hz); });
-    return id;
+    return command<&DeviceSession::setStreamRate>(hz);
 }
 
 quint64 DeviceClient::pushEffects(const EffectParams &effects)
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session,
-                              [s = m_session, id, effects] { s->pushEffects(id, effects); });
-    return id;
+    return command<&DeviceSession::pushEffects>(effects);
 }
 
 quint64 DeviceClient::readEffects()
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session, [s = m_session, id] { s->readEffects(id); });
-    return id;
+    return command<&DeviceSession::readEffects>();
 }
 
 quint64 DeviceClient::vibrate(const Vibration &vibration)
 {
-    const quint64 id = nextId();
-    QMetaObject::invokeMethod(m_session,
-                              [s = m_session, id, vibration] { s->vibrate(id, vibration); });
-    return id;
+    return command<&DeviceSession::vibrate>(vibration);
 }
 
 void DeviceClient::addSampleListener(SampleListener *listener)
@@ -206,18 +202,18 @@ void DeviceClient::setFeedback(double tauExt)
 
 void DeviceClient::setHostParams(const HostParams &host)
 {
-    QMetaObject::invokeMethod(m_session, [s = m_session, host] { s->setHostParams(host); });
+    onSession<&DeviceSession::setHostParams>(host);
 }
 
 void DeviceClient::resetReference()
 {
-    QMetaObject::invokeMethod(m_session, [s = m_session] { s->resetReference(); });
+    onSession<&DeviceSession::resetReference>();
 }
 
 void DeviceClient::setSimulatedHand(const HandInput &hand)
 {
     m_hand = hand;
-    QMetaObject::invokeMethod(m_session, [s = m_session, hand] { s->setSimulatedHand(hand); });
+    onSession<&DeviceSession::setSimulatedHand>(hand);
 }
 
 void DeviceClient::startRecording(const QString &csvPath, const QString &source)
@@ -228,14 +224,12 @@ void DeviceClient::startRecording(const QString &csvPath, const QString &source)
 void DeviceClient::startRecording(const QString &csvPath, const RecordingPlan &plan,
                                   const QString &source)
 {
-    QMetaObject::invokeMethod(m_session, [s = m_session, csvPath, plan, source] {
-        s->startRecording(csvPath, source, plan);
-    });
+    onSession<&DeviceSession::startRecording>(csvPath, source, plan);
 }
 
 void DeviceClient::stopRecording()
 {
-    QMetaObject::invokeMethod(m_session, [s = m_session] { s->stopRecording(); });
+    onSession<&DeviceSession::stopRecording>();
 }
 
 } // namespace hatpic

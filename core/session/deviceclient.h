@@ -100,6 +100,13 @@ Q_SIGNALS:
 
 private:
     quint64 nextId() { return ++m_lastId; }
+    //! Calls `(m_session->*Method)(args...)` on the session thread with copies of `args`, so
+    //! they outlive the caller's; queued (returns at once) unless `Type` says otherwise.
+    template<auto Method, Qt::ConnectionType Type = Qt::AutoConnection, typename... Args>
+    void onSession(Args &&...args);
+    //! A command: a request id taken on this thread, then `(m_session->*Method)(id, args...)`
+    //! queued as onSession() does. Returns the id.
+    template<auto Method, typename... Args> quint64 command(Args &&...args);
     //! Session thread: posts `deliver` to this object's thread unless `cap` deliveries counted
     //! by `pending` already wait there. False when dropped.
     template<typename Deliver> bool post(std::atomic<int> &pending, int cap, Deliver deliver);
