@@ -22,14 +22,15 @@
 // Prints one plain table; exit 1 when a program does not start or nothing arrives.
 #include "ros/node.h"
 
+#ifdef HATPIC_BENCH_ROS1
+#include "roscore.h"
+#endif
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -38,6 +39,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <csignal>
+#include <memory>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
@@ -150,32 +152,6 @@ void printRow(const char *what, std::vector<double> values, const char *note = "
                 values.empty() ? NAN : values.back(), note);
 }
 
-// A port nothing listens on now (the kernel's pick for port 0).
-int freePort()
-{
-    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    ::bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address);
-    ::getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length);
-    ::close(fd);
-    return ntohs(address.sin_port);
-}
-
-bool tcpAnswers(int port)
-{
-    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(quint16(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    const bool ok = ::connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0;
-    ::close(fd);
-    return ok;
-}
-
 QByteArray tail(const QString &path)
 {
     QFile file(path);
@@ -183,15 +159,13 @@ QByteArray tail(const QString &path)
 }
 
 // A program this bench started: its output in a file of the run's directory, stopped by its
-// own process id (roscore: its process group, which holds rosmaster and rosout).
+// process id.
 class Child
 {
 public:
-    Child(const QString &logPath, bool ownGroup) : m_log(logPath), m_group(ownGroup)
+    explicit Child(const QString &logPath) : m_log(logPath)
     {
         m_process.setProcessChannelMode(QProcess::MergedChannels);
-        if (ownGroup)
-            m_process.setChildProcessModifier([] { ::setpgid(0, 0); });
     }
     ~Child() { stop(); }
 
@@ -219,29 +193,16 @@ public:
     {
         if (m_process.state() == QProcess::NotRunning)
             return;
-        const pid_t target = m_group ? -pid_t(pid()) : pid_t(pid());
-        ::kill(target, SIGINT);
-        const auto deadline = Clock::now() + 10s;
-        while (Clock::now() < deadline) {
-            if (m_process.state() != QProcess::NotRunning)
-                m_process.waitForFinished(100);
-            else if (groupAlive(target))
-                std::this_thread::sleep_for(100ms); // roscore's children still shutting down
-            else
-                break;
-        }
-        if (m_process.state() != QProcess::NotRunning || groupAlive(target)) {
-            ::kill(target, SIGKILL);
+        ::kill(pid_t(pid()), SIGINT);
+        if (!m_process.waitForFinished(10000)) {
+            m_process.kill();
             m_process.waitForFinished(2000);
         }
     }
 
 private:
-    bool groupAlive(pid_t target) const { return m_group && ::kill(target, 0) == 0; }
-
     QProcess m_process;
     QString m_log;
-    bool m_group; //!< stopped as a process group
 };
 
 // The knob → topic figure: each JointState's arrival minus its stamp, while recording.
@@ -390,19 +351,6 @@ void confineToLoopback(int domain)
     qputenv("ROS_DOMAIN_ID", QByteArray::number(domain));
 }
 
-//! ROS 1's environment for this process and its children (inherited); returns the master's URI.
-QByteArray useRos1Master(int port, const QTemporaryDir &dir)
-{
-    const QByteArray uri = "http://127.0.0.1:" + QByteArray::number(port);
-    qputenv("ROS_MASTER_URI", uri);
-    qputenv("ROS_IP", "127.0.0.1");
-    qputenv("ROS_HOME", dir.path().toLocal8Bit());
-    qputenv("ROS_LOG_DIR", dir.filePath(QStringLiteral("log")).toLocal8Bit());
-    qunsetenv("ROS_HOSTNAME");
-    qunsetenv("ROS_NAMESPACE");
-    return uri;
-}
-
 int fail(const char *what, Child *child = nullptr)
 {
     std::fprintf(stderr, "bench_bridge: %s\n", what);
@@ -425,25 +373,27 @@ int main(int argc, char *argv[])
         return fail("no temporary directory");
 
     const QByteArray loadStart = loadAverage();
-    Child roscore(dir.filePath(QStringLiteral("roscore.log")), true);
+    // ROS 1: the tests' master (tests/core/ros/roscore.h): a free port, its own ROS_HOME and
+    // log directory, its process group stopped as one; its environment is this process's and
+    // so the children's.
+    std::unique_ptr<test::RosCore> roscore;
     QByteArray where;
     if (ros1) {
-        const int port = freePort();
-        where = "ROS 1, master " + useRos1Master(port, dir);
-        if (!roscore.start(QStringLiteral("roscore"), {QStringLiteral("-p"), QString::number(port)},
-                           nullptr))
-            return fail("roscore does not start");
-        const auto deadline = Clock::now() + 30s;
-        while (!tcpAnswers(port) && roscore.running() && Clock::now() < deadline)
-            std::this_thread::sleep_for(100ms);
-        if (!tcpAnswers(port))
-            return fail("roscore does not answer", &roscore);
+#ifdef HATPIC_BENCH_ROS1
+        roscore = std::make_unique<test::RosCore>();
+        roscore->exportEnvironment();
+        if (const QString why = roscore->start(); !why.isEmpty())
+            return fail(qPrintable(QStringLiteral("roscore: ") + why));
+        where = "ROS 1, master " + roscore->uri().toLocal8Bit();
+#else
+        return fail("ROS 1 is not in this build of the benchmark (it needs the tests' roscore)");
+#endif
     } else {
         confineToLoopback(options->domain);
         where = "ROS 2, domain " + QByteArray::number(options->domain) + ", Cyclone DDS on lo";
     }
 
-    Child sim(dir.filePath(QStringLiteral("sim.log")), false);
+    Child sim(dir.filePath(QStringLiteral("sim.log")));
     QByteArray pty;
     if (!sim.start(QStringLiteral(HATPIC_SIM_PATH), {}, &pty) || pty.isEmpty())
         return fail("hatpic-sim does not start", &sim);
@@ -456,7 +406,7 @@ int main(int argc, char *argv[])
     if (options->feedbackRate)
         bridgeArguments << QStringLiteral("--feedback-rate")
                         << QString::number(*options->feedbackRate);
-    Child bridge(dir.filePath(QStringLiteral("bridge.log")), false);
+    Child bridge(dir.filePath(QStringLiteral("bridge.log")));
     if (!bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH), bridgeArguments, nullptr))
         return fail("hatpic-bridge does not start", &bridge);
 
@@ -551,6 +501,7 @@ int main(int argc, char *argv[])
     feedbackSub.reset();
     bridge.stop();
     sim.stop();
-    roscore.stop();
+    if (roscore)
+        roscore->stop();
     return 0;
 }
