@@ -39,9 +39,9 @@
 #include <cmath>
 #include <condition_variable>
 #include <csignal>
-#include <memory>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
