@@ -31,7 +31,8 @@ void printStatus(const robot::RobotSimulator::Status &s)
         u"x " + num(s.x) + u" m, v " + num(s.v) + u" m/s, v_ref " + num(s.vRef) + u" m/s, F_e " +
         num(s.wallForce) + u" N | twists in " + QString::number(s.twistsIn) + u", wrenches out " +
         QString::number(s.wrenchesOut) + u", poses out " + QString::number(s.posesOut) +
-        (s.stale ? u", stale" : u"") + u", dropped " + QString::number(s.dropped);
+        (s.stale ? u", stale" : u"") + u", dropped " + QString::number(s.dropped) +
+        (s.overruns > 0 ? u", steps late " + QString::number(s.overruns) : QString());
     std::fprintf(stdout, "%s\n", line.toUtf8().constData());
     std::fflush(stdout);
 }
