@@ -90,7 +90,7 @@ void BridgeProgram::onConnected()
         host.tau_limit = limit;
     m_client.setHostParams(host);
     if (m_options.profile && m_client.deviceInfo().canSetParams())
-        m_client.pushParams(m_options.profile->device);
+        m_client.pushTuning({m_options.profile->device, std::nullopt});
 }
 
 void BridgeProgram::printStats()

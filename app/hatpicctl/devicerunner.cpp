@@ -80,7 +80,7 @@ DeviceRunner::Wait DeviceRunner::wait(const std::function<bool()> &done, double 
     };
     QObject::connect(&m_client, &DeviceClient::stateChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::deviceInfoChanged, &loop, check);
-    QObject::connect(&m_client, &DeviceClient::deviceParamsChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::deviceTuningChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::commandFinished, &loop, check);
     QObject::connect(&m_client, &DeviceClient::recordingChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::statsUpdated, &loop, check);

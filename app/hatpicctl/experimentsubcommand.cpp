@@ -208,12 +208,13 @@ protected:
             return ExitRejected;
         }
         CommandResult read;
-        if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
+        if (const int code = runner.runCommand(&DeviceClient::readTuning, &read); code)
             return code;
         if (const int code = DeviceRunner::reportResult(read); code)
             return code;
 
-        ExperimentPlan plan = ExperimentPlan::defaults(m_kind, client.deviceParams());
+        ExperimentPlan plan =
+            ExperimentPlan::defaults(m_kind, read.received.params.value_or(DeviceParams{}));
         for (const auto &[field, value] : m_overrides)
             plan.*field = value;
         if (!m_frequencies.isEmpty())

@@ -46,33 +46,27 @@ protected:
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         CommandResult result;
-        if (const int code = runner.runCommand(&DeviceClient::readParams, &result); code)
+        if (const int code = runner.runCommand(&DeviceClient::readTuning, &result); code)
             return code;
         if (const int code = DeviceRunner::reportResult(result); code)
             return code;
         // A device reporting NaN or values that break model.md is not printed as a profile
         // (nor as a table that looks fine): it is refused with what is wrong.
-        if (const QString problem = deviceParamsProblem(runner.client().deviceParams());
-            !problem.isEmpty()) {
+        const DeviceParams params = result.received.params.value_or(DeviceParams{});
+        if (const QString problem = deviceParamsProblem(params); !problem.isEmpty()) {
             printError(u"The device reported parameters that are not valid: " + problem + u'.');
             return ExitNoDevice;
         }
-        std::optional<EffectParams> effects;
+        const std::optional<EffectParams> effects = result.received.effects;
         const DeviceInfo info = runner.client().deviceInfo();
-        if (info.hasEffects()) {
-            if (const int code = runner.runCommand(&DeviceClient::readEffects, &result); code)
-                return code;
-            if (const int code = DeviceRunner::reportResult(result); code)
-                return code;
-            effects = result.effectsReceived;
+        if (effects) {
             if (const QString problem = deviceEffectsProblem(*effects, info.tauLimit);
                 !problem.isEmpty()) {
                 printError(u"The device reported effects that are not valid: " + problem + u'.');
                 return ExitNoDevice;
             }
         }
-        writeOut(parameterOutput(runner.client().deviceParams(), effects, info,
-                                 parser.isSet(QStringLiteral("json"))));
+        writeOut(parameterOutput(params, effects, info, parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;
     }
 };

@@ -168,54 +168,55 @@ protected:
         if (wantsEffects && !info.hasEffects()) {
             // The session refuses it with the reason (legacy, or no capability); nothing sent.
             CommandResult refused;
-            const EffectParams none;
+            const DeviceTuning none{std::nullopt, EffectParams{}};
             if (const int code = runner.runCommand(
-                    [&none](DeviceClient &client) { return client.pushEffects(none); }, &refused);
+                    [&none](DeviceClient &client) { return client.pushTuning(none); }, &refused);
                 code)
                 return code;
             return DeviceRunner::reportResult(refused);
         }
 
-        DeviceParams params;
-        if (m_profile) {
-            params = withAssignments(m_profile->device);
-        } else {
+        DeviceTuning held; // what --set starts from without a profile: the device's own
+        if (!m_profile) {
             CommandResult read;
-            if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
+            if (const int code = runner.runCommand(&DeviceClient::readTuning, &read); code)
                 return code;
             if (const int code = DeviceRunner::reportResult(read); code)
                 return code;
+            held = read.received;
+        }
+
+        DeviceTuning tuning;
+        if (m_profile) {
+            tuning.params = withAssignments(m_profile->device);
+        } else {
             // The device's floats as their shortest decimals: the same floats go back, and any
             // violation names readable values (0.4, not 0.4000000059604645).
-            const DeviceParams held = tidyDeviceParams(runner.client().deviceParams());
-            params = withAssignments(held);
-            if (!validate(params).empty()) {
+            const DeviceParams from = tidyDeviceParams(held.params.value_or(DeviceParams{}));
+            tuning.params = withAssignments(from);
+            if (!validate(*tuning.params).empty()) {
                 // Not the user's fault when the values --set starts from are the problem.
-                if (const QString problem = deviceParamsProblem(held); !problem.isEmpty()) {
+                if (const QString problem = deviceParamsProblem(from); !problem.isEmpty()) {
                     printError(u"The device's current parameters are not valid (" + problem +
                                u"), so --set cannot start from them; nothing was sent. Give "
                                u"every parameter with --profile.");
                     return ExitNoDevice;
                 }
             }
-            if (const int code = checkValid(params); code)
+            if (const int code = checkValid(*tuning.params); code)
                 return code;
         }
+        if (!pushesParams)
+            tuning.params.reset();
 
-        EffectParams effects;
         if (pushesEffects) {
             if (m_profile) {
-                effects = withEffectAssignments(m_profile->effects);
+                tuning.effects = withEffectAssignments(m_profile->effects);
             } else {
-                CommandResult read;
-                if (const int code = runner.runCommand(&DeviceClient::readEffects, &read); code)
-                    return code;
-                if (const int code = DeviceRunner::reportResult(read); code)
-                    return code;
-                const EffectParams held = tidyEffectParams(read.effectsReceived);
-                effects = withEffectAssignments(held);
-                if (!validate(effects, info.tauLimit).empty()) {
-                    if (const QString problem = deviceEffectsProblem(held, info.tauLimit);
+                const EffectParams from = tidyEffectParams(held.effects.value_or(EffectParams{}));
+                tuning.effects = withEffectAssignments(from);
+                if (!validate(*tuning.effects, info.tauLimit).empty()) {
+                    if (const QString problem = deviceEffectsProblem(from, info.tauLimit);
                         !problem.isEmpty()) {
                         printError(u"The device's current effects are not valid (" + problem +
                                    u"), so --set cannot start from them; nothing was sent. Give "
@@ -225,43 +226,37 @@ protected:
                 }
             }
             // Against the device's own torque limit, before anything is sent.
-            if (const int code = checkValidEffects(effects, info.tauLimit); code)
+            if (const int code = checkValidEffects(*tuning.effects, info.tauLimit); code)
                 return code;
         }
 
-        if (pushesParams) {
+        // Shown as `get` shows it: the read-back of the push, else what was read before.
+        DeviceTuning shown = runner.client().deviceTuning();
+        if (tuning.params || tuning.effects) {
             CommandResult result;
             const int code = runner.runCommand(
-                [&params](DeviceClient &client) { return client.pushParams(params); }, &result);
+                [&tuning](DeviceClient &client) { return client.pushTuning(tuning); }, &result);
             if (code)
                 return code;
             if (const int refused = DeviceRunner::reportResult(result); refused)
                 return refused;
-            if (!sameOnWire(runner.client().deviceParams(), params))
-                printNote(QStringLiteral("warning: the parameters read back differ from those "
-                                         "sent (beyond 32-bit rounding)."));
-            printNote(QStringLiteral("The device accepted the parameters."));
+            const DeviceTuning &back = result.received;
+            if (tuning.params) {
+                if (!back.params || !sameOnWire(*back.params, *tuning.params))
+                    printNote(QStringLiteral("warning: the parameters read back differ from "
+                                             "those sent (beyond 32-bit rounding)."));
+                printNote(QStringLiteral("The device accepted the parameters."));
+            }
+            if (tuning.effects) {
+                if (!back.effects || !sameOnWire(*back.effects, *result.sent.effects))
+                    printNote(QStringLiteral("warning: the effects read back differ from those "
+                                             "sent (beyond 32-bit rounding)."));
+                printNote(QStringLiteral("The device accepted the effects."));
+            }
+            shown = shown.updatedBy(back);
         }
-        // The effects are shown as `get` shows them: the read-back of a push, else the block
-        // the connect sequence read from a device with the capability.
-        std::optional<EffectParams> readBackEffects;
-        if (info.hasEffects() && runner.client().hasDeviceEffects())
-            readBackEffects = runner.client().deviceEffects();
-        if (pushesEffects) {
-            CommandResult result;
-            const int code = runner.runCommand(
-                [&effects](DeviceClient &client) { return client.pushEffects(effects); }, &result);
-            if (code)
-                return code;
-            if (const int refused = DeviceRunner::reportResult(result); refused)
-                return refused;
-            readBackEffects = result.effectsReceived;
-            if (!result.readBackMatches)
-                printNote(QStringLiteral("warning: the effects read back differ from those "
-                                         "sent (beyond 32-bit rounding)."));
-            printNote(QStringLiteral("The device accepted the effects."));
-        }
-        writeOut(parameterOutput(runner.client().deviceParams(), readBackEffects, info,
+        writeOut(parameterOutput(shown.params.value_or(DeviceParams{}),
+                                 info.hasEffects() ? shown.effects : std::nullopt, info,
                                  parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;
     }

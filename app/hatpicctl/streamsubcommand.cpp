@@ -137,15 +137,13 @@ protected:
             host.tau_limit = info.tauLimit;
         client.setHostParams(host);
 
-        // The parameters in force, for the recording's metadata (legacy cannot tell).
-        DeviceParams params = client.deviceParams();
+        // The tuning in force, for the recording's metadata (legacy cannot tell).
         if (info.canSetParams()) {
             CommandResult read;
-            if (const int code = runner.runCommand(&DeviceClient::readParams, &read); code)
+            if (const int code = runner.runCommand(&DeviceClient::readTuning, &read); code)
                 return code;
             if (const int code = DeviceRunner::reportResult(read); code)
                 return code;
-            params = client.deviceParams();
         }
 
         // The recording is the session's own (the tuner's too): written on the link's thread,

@@ -45,7 +45,7 @@ protected:
             return code;
         if (const int code = DeviceRunner::reportResult(result); code)
             return code;
-        const DeviceParams params = runner.client().deviceParams();
+        const DeviceParams params = result.received.params.value_or(DeviceParams{});
         printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");
         writeOut(parameterOutput(params, runner.client().deviceInfo(),
                                  parser.isSet(QStringLiteral("json"))));

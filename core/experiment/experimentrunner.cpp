@@ -53,7 +53,7 @@ QString ExperimentRunner::refusal(const DeviceClient &client)
             "Experiments need a protocol v2 device: the legacy firmware has no telemetry rate to "
             "ask for (it streams at its own few hertz) and reports no τ_ext, too little to "
             "measure a response.");
-    if (!client.hasDeviceParams())
+    if (!client.deviceTuning().params)
         return QStringLiteral("The device's parameters have not been read yet.");
     return {};
 }
@@ -66,7 +66,7 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
         return QStringLiteral("No device is connected.");
     if (QString why = refusal(*m_client); !why.isEmpty())
         return why;
-    const DeviceParams params = m_client->deviceParams();
+    const DeviceParams params = *m_client->deviceTuning().params;
     if (plan.kind != ExperimentKind::Spectrum && !(params.K_max > 0))
         return QStringLiteral("The knob has no re-centering stiffness (K_max = 0), so it has no "
                               "second-order response to measure.");

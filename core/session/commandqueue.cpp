@@ -5,6 +5,8 @@
 #include <QLoggingCategory>
 #include <QStringBuilder>
 
+#include <algorithm>
+
 Q_LOGGING_CATEGORY(lcCommands, "hatpic.device.commands", QtWarningMsg)
 
 namespace hatpic {
@@ -14,16 +16,17 @@ namespace {
 using Status = CommandResult::Status;
 using Reason = CommandResult::Reason;
 
+//! The frame of `cmd`'s step in flight.
 QByteArray encode(const Command &cmd)
 {
-    switch (cmd.kind) {
+    switch (cmd.stepKind()) {
     case CommandKind::Hello:
         // Led by a delimiter, as in detection: junk already on the line cannot spoil it.
         return QByteArray(1, '\0') + v2::encodeFrame(cmd.seq, v2::Hello{});
     case CommandKind::GetParams:
         return v2::encodeFrame(cmd.seq, v2::GetParams{});
     case CommandKind::SetParams:
-        return v2::encodeFrame(cmd.seq, v2::SetParams{cmd.params});
+        return v2::encodeFrame(cmd.seq, v2::SetParams{cmd.tuning.params.value_or(DeviceParams{})});
     case CommandKind::SetStream:
         return v2::encodeFrame(cmd.seq, v2::SetStream{cmd.rate});
     case CommandKind::Zero:
@@ -31,7 +34,8 @@ QByteArray encode(const Command &cmd)
     case CommandKind::SaveParams:
         return v2::encodeFrame(cmd.seq, v2::SaveParams{});
     case CommandKind::SetEffects:
-        return v2::encodeFrame(cmd.seq, v2::SetEffects{cmd.effects});
+        return v2::encodeFrame(cmd.seq,
+                               v2::SetEffects{cmd.tuning.effects.value_or(EffectParams{})});
     case CommandKind::GetEffects:
         return v2::encodeFrame(cmd.seq, v2::GetEffects{});
     case CommandKind::Vibrate:
@@ -42,7 +46,41 @@ QByteArray encode(const Command &cmd)
     return {};
 }
 
-//! Fields of the block a command carries: an ACK's `field` beyond them names nothing.
+//! The wire steps of `cmd`: a push sends each part it carries and reads it back, a read reads
+//! the parameters and the effects when it names them, ZERO reads the new θ0 back.
+std::vector<CommandKind> stepsOf(const Command &cmd)
+{
+    const bool params = cmd.tuning.params.has_value();
+    const bool effects = cmd.tuning.effects.has_value();
+    switch (cmd.kind) {
+    case CommandKind::SetParams:
+    case CommandKind::SetEffects: {
+        std::vector<CommandKind> steps;
+        if (params)
+            steps.insert(steps.end(), {CommandKind::SetParams, CommandKind::GetParams});
+        if (effects)
+            steps.insert(steps.end(), {CommandKind::SetEffects, CommandKind::GetEffects});
+        return steps;
+    }
+    case CommandKind::GetParams: // the parameters, and the effects when it names them
+        if (effects)
+            return {CommandKind::GetParams, CommandKind::GetEffects};
+        return {CommandKind::GetParams};
+    case CommandKind::Zero:
+        return {CommandKind::Zero, CommandKind::GetParams};
+    default:
+        return {cmd.kind};
+    }
+}
+
+//! True for the steps that change what the device holds (a read-back follows them).
+bool changes(CommandKind step)
+{
+    return step == CommandKind::SetParams || step == CommandKind::SetEffects ||
+           step == CommandKind::Zero;
+}
+
+//! Fields of the block a step carries: an ACK's `field` beyond them names nothing.
 int fieldCount(CommandKind kind)
 {
     switch (kind) {
@@ -57,27 +95,13 @@ int fieldCount(CommandKind kind)
     }
 }
 
-//! The read-back that follows an acknowledged `kind`, if any.
-std::optional<CommandKind> readBackOf(CommandKind kind)
-{
-    switch (kind) {
-    case CommandKind::SetParams:
-    case CommandKind::Zero:
-        return CommandKind::GetParams;
-    case CommandKind::SetEffects:
-        return CommandKind::GetEffects;
-    default:
-        return std::nullopt;
-    }
-}
-
-//! A result for `cmd` carrying what it sent.
+//! A result of `status` for `cmd` (its step `kind`) carrying what it sent and read.
 CommandResult resultFor(const Command &cmd, CommandKind kind, Status status,
                         Reason reason = Reason::None)
 {
     CommandResult r = commandResult(kind, status, reason);
-    r.sent = cmd.params;
-    r.effectsSent = cmd.effects;
+    r.sent = cmd.tuning;
+    r.received = cmd.received;
     r.vibration = cmd.vibration;
     r.rate = cmd.rate;
     return r;
@@ -108,6 +132,7 @@ void CommandQueue::enqueue(Command command)
         Q_EMIT finished(command, r);
         return;
     }
+    command.steps = stepsOf(command);
     m_queue.push_back(std::move(command));
     pump();
 }
@@ -118,7 +143,10 @@ void CommandQueue::pump()
         return;
     m_inflight = std::move(m_queue.front());
     m_queue.pop_front();
-    sendInflight();
+    if (m_inflight->steps.empty())
+        finishInflight(resultFor(*m_inflight, m_inflight->kind, Status::Ok)); // nothing to do
+    else
+        sendInflight();
 }
 
 void CommandQueue::sendInflight()
@@ -144,17 +172,18 @@ void CommandQueue::onTimeout()
         m_write(cmd.wire);
         return;
     }
-    if (cmd.kind == CommandKind::Hello) {
+    if (cmd.stepKind() == CommandKind::Hello) {
         m_inflight.reset();
         Q_EMIT helloUnanswered();
         return;
     }
-    if (cmd.readBack) {
-        // The device acknowledged the command; only its read-back went unanswered.
-        finishInflight(resultFor(cmd, cmd.origin, Status::Ok, Reason::ReadBackUnanswered));
+    if (cmd.step > 0 && changes(cmd.steps[cmd.step - 1])) {
+        // The device acknowledged the change; only its read-back went unanswered.
+        cmd.readBackUnanswered = true;
+        nextStep();
         return;
     }
-    CommandResult r = resultFor(cmd, cmd.kind, Status::Timeout);
+    CommandResult r = resultFor(cmd, cmd.stepKind(), Status::Timeout);
     r.attempts = kCommandRetries + 1;
     r.intervalMs = kCommandTimeoutMs;
     finishInflight(r);
@@ -164,7 +193,8 @@ void CommandQueue::onAck(const v2::Ack &ack)
 {
     if (!m_inflight || m_inflight->wire.isEmpty() || ack.ackedSeq != m_inflight->seq)
         return; // a late answer to a retry, or to nothing of ours
-    switch (m_inflight->kind) {
+    const CommandKind step = m_inflight->stepKind();
+    switch (step) {
     case CommandKind::Hello:
     case CommandKind::GetParams:
     case CommandKind::GetEffects:
@@ -179,76 +209,60 @@ void CommandQueue::onAck(const v2::Ack &ack)
     m_timer.stop();
 
     if (ack.status != v2::AckStatus::Ok) {
-        CommandResult r = resultFor(*m_inflight, m_inflight->kind, Status::Rejected);
+        CommandResult r = resultFor(*m_inflight, step, Status::Rejected);
         r.ackStatus = ack.status;
-        if (ack.field != v2::kNoField && ack.field < fieldCount(m_inflight->kind))
+        if (ack.field != v2::kNoField && ack.field < fieldCount(step))
             r.field = ack.field;
         finishInflight(r);
         return;
     }
+    if (step != CommandKind::SaveParams)
+        Q_EMIT acknowledged(*m_inflight);
+    nextStep();
+}
 
+void CommandQueue::onTuning(const DeviceTuning &told)
+{
+    if (!m_inflight)
+        return;
     Command &cmd = *m_inflight;
-    if (const auto readBack = readBackOf(cmd.kind)) {
-        Q_EMIT acknowledged(cmd);
-        // Read back what the device now holds, under the same request id.
-        cmd.origin = cmd.kind;
-        cmd.kind = *readBack;
-        cmd.readBack = true;
+    const CommandKind step = cmd.stepKind();
+    const bool afterChange = cmd.step > 0 && changes(cmd.steps[cmd.step - 1]);
+    if (step == CommandKind::GetParams && told.params) {
+        cmd.received.params = told.params;
+        // ZERO changes θ0 by design: its read-back is the new value, not a comparison.
+        if (afterChange && cmd.steps[cmd.step - 1] == CommandKind::SetParams)
+            cmd.readBackMatches &= sameOnWire(*cmd.tuning.params, *told.params);
+    } else if (step == CommandKind::GetEffects && told.effects) {
+        cmd.received.effects = told.effects;
+        if (afterChange)
+            cmd.readBackMatches &= sameOnWire(*cmd.tuning.effects, *told.effects);
+    } else {
+        return;
+    }
+    m_timer.stop();
+    nextStep();
+}
+
+void CommandQueue::nextStep()
+{
+    Command &cmd = *m_inflight;
+    if (++cmd.step < cmd.steps.size()) {
         cmd.retries = 0;
         sendInflight();
         return;
     }
-    switch (cmd.kind) {
-    case CommandKind::SetStream:
-    case CommandKind::Vibrate: {
-        Q_EMIT acknowledged(cmd);
-        finishInflight(resultFor(cmd, cmd.kind, Status::Ok));
-        return;
-    }
-    case CommandKind::SaveParams:
-        finishInflight(commandResult(CommandKind::SaveParams, Status::Ok));
-        return;
-    default: // HELLO, GET_PARAMS, GET_EFFECTS: answered above
-        return;
-    }
-}
-
-void CommandQueue::onParams(const DeviceParams &params)
-{
-    if (!m_inflight || m_inflight->kind != CommandKind::GetParams)
-        return;
-    m_timer.stop();
-    const Command &cmd = *m_inflight;
-    CommandResult r = commandResult(cmd.readBack ? cmd.origin : cmd.kind, Status::Ok);
-    r.received = params;
-    if (cmd.readBack) {
-        r.readBack = true;
-        r.sent = cmd.params;
-        // ZERO changes θ0 by design: its read-back is the new value, not a comparison.
-        r.readBackMatches = cmd.origin == CommandKind::Zero || sameOnWire(cmd.params, params);
-    }
-    finishInflight(r);
-}
-
-void CommandQueue::onEffects(const EffectParams &effects)
-{
-    if (!m_inflight || m_inflight->kind != CommandKind::GetEffects)
-        return;
-    m_timer.stop();
-    const Command &cmd = *m_inflight;
-    CommandResult r = commandResult(cmd.readBack ? cmd.origin : cmd.kind, Status::Ok);
-    r.effectsReceived = effects;
-    if (cmd.readBack) {
-        r.readBack = true;
-        r.effectsSent = cmd.effects;
-        r.readBackMatches = sameOnWire(cmd.effects, effects);
-    }
+    CommandResult r = resultFor(cmd, cmd.kind, Status::Ok,
+                                cmd.readBackUnanswered ? Reason::ReadBackUnanswered : Reason::None);
+    r.readBack =
+        !cmd.readBackUnanswered && std::any_of(cmd.steps.begin(), cmd.steps.end(), changes);
+    r.readBackMatches = r.readBack && cmd.readBackMatches;
     finishInflight(r);
 }
 
 void CommandQueue::onHelloReply()
 {
-    if (m_inflight && m_inflight->kind == CommandKind::Hello) {
+    if (m_inflight && m_inflight->stepKind() == CommandKind::Hello) {
         m_timer.stop();
         m_inflight.reset();
         pump();
@@ -278,8 +292,7 @@ void CommandQueue::failAll(CommandResult::Reason reason)
         failing.push_back(std::move(c));
     m_queue.clear();
     for (const Command &c : failing)
-        Q_EMIT finished(
-            c, commandResult(c.readBack ? c.origin : c.kind, Status::NotConnected, reason));
+        Q_EMIT finished(c, commandResult(c.kind, Status::NotConnected, reason));
 }
 
 } // namespace hatpic

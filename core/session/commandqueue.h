@@ -1,7 +1,9 @@
 // The v2 command channel: one command in flight, a bounded queue behind it, resends on a
-// timeout (same bytes, same seq, so the device answers a retry without applying it twice),
-// matching of ACKs, PARAMS and EFFECTS to the command in flight, and the read-back that follows
-// SET_PARAMS and ZERO (GET_PARAMS) and SET_EFFECTS (GET_EFFECTS) under the same request id.
+// timeout (same bytes, same seq, so the device answers a retry without applying it twice), and
+// the answers matched to the command in flight. A command is the wire steps it takes, in order:
+// a push of a tuning is SET_PARAMS, GET_PARAMS (the read-back), then SET_EFFECTS, GET_EFFECTS
+// for its effect part; a read is GET_PARAMS (and GET_EFFECTS); ZERO is ZERO, GET_PARAMS. It
+// finishes once, with what it sent and what it read.
 //
 // Writes through a function it is given; knows nothing of links, drivers or the session.
 #pragma once
@@ -17,23 +19,30 @@
 #include <deque>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace hatpic {
 
 struct Command
 {
     quint64 id = 0; //!< 0 = the session's own (connect sequence), not reported
-    CommandKind kind = CommandKind::GetParams;
-    DeviceParams params;  //!< SET_PARAMS: what was sent (float32-rounded)
-    EffectParams effects; //!< SET_EFFECTS: what was sent (float32-rounded)
-    Vibration vibration;  //!< VIBRATE
-    quint16 rate = 0;     //!< SET_STREAM
-    bool readBack =
-        false; //!< the GET_PARAMS (GET_EFFECTS) stage after SET_PARAMS, ZERO (SET_EFFECTS)
-    CommandKind origin = CommandKind::GetParams; //!< the command a read-back belongs to
+    CommandKind kind = CommandKind::GetParams; //!< what was asked for (its first step)
+    //! A push: what is sent (float32-rounded). A read: effects present to read them too.
+    DeviceTuning tuning;
+    Vibration vibration; //!< VIBRATE
+    quint16 rate = 0;    //!< SET_STREAM
+
+    // Set by the queue as the command goes.
+    std::vector<CommandKind> steps; //!< the wire steps, in order
+    std::size_t step = 0;           //!< the one in flight
+    DeviceTuning received;          //!< what the GET steps read so far
+    bool readBackMatches = true;    //!< every read-back so far equals what its step sent
+    bool readBackUnanswered = false;
     quint8 seq = 0;
     int retries = 0;
     QByteArray wire;
+
+    CommandKind stepKind() const { return steps.empty() ? kind : steps[step]; }
 };
 
 class CommandQueue : public QObject
@@ -62,10 +71,9 @@ public:
 
     //! An ACK arrived: finishes, reads back or ignores (late answers) the command in flight.
     void onAck(const v2::Ack &ack);
-    //! A PARAMS arrived: answers a GET_PARAMS (or a read-back) in flight.
-    void onParams(const DeviceParams &params);
-    //! An EFFECTS arrived: answers a GET_EFFECTS (or SET_EFFECTS' read-back) in flight.
-    void onEffects(const EffectParams &effects);
+    //! A PARAMS or EFFECTS arrived (`told` has the part it carried): answers the GET_PARAMS or
+    //! GET_EFFECTS step in flight.
+    void onTuning(const DeviceTuning &told);
     //! HELLO_REPLY arrived: a HELLO in flight is answered (detection handles the reply).
     void onHelloReply();
     //! Finishes every command (in flight and queued) as NotConnected for `reason`.
@@ -74,8 +82,8 @@ public:
 Q_SIGNALS:
     //! A command ended; `command.id == 0` for the session's own.
     void finished(const hatpic::Command &command, const hatpic::CommandResult &result);
-    //! The device acknowledged `command` (OK): SET_PARAMS, ZERO and SET_EFFECTS before their
-    //! read-back, SET_STREAM and VIBRATE before finished().
+    //! The device acknowledged `command`'s step in flight (stepKind(): SET_PARAMS, ZERO,
+    //! SET_EFFECTS before their read-back, SET_STREAM and VIBRATE before finished()).
     void acknowledged(const hatpic::Command &command);
     //! A command frame was sent again.
     void retried();
@@ -87,6 +95,8 @@ private:
     void sendInflight();
     void onTimeout();
     void finishInflight(const CommandResult &result);
+    //! The step in flight is done: the next one goes out, or the command finishes.
+    void nextStep();
 
     Writer m_write;
     QTimer m_timer;

@@ -27,22 +27,16 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
         m_info = info;
         Q_EMIT deviceInfoChanged(info);
     });
-    connect(m_session, &DeviceSession::deviceParamsChanged, this,
-            [this](const DeviceParams &params) {
-                m_params = params;
-                m_hasParams = true;
-                Q_EMIT deviceParamsChanged(params);
-            });
-    connect(m_session, &DeviceSession::deviceEffectsChanged, this,
-            [this](const EffectParams &effects) {
-                m_effects = effects;
-                m_hasEffects = true;
-                Q_EMIT deviceEffectsChanged(effects);
+    const SamplePipeline *samples = &m_session->samples();
+    connect(samples, &SamplePipeline::deviceTuningChanged, this,
+            [this](const DeviceTuning &tuning) {
+                m_tuning = tuning;
+                Q_EMIT deviceTuningChanged(tuning);
             });
     // The streams below are forwarded from the session thread (direct connections) and
     // posted here only while few of their kind wait, so a frozen thread's queue stays bounded.
     connect(
-        m_session, &DeviceSession::samplesReady, this,
+        samples, &SamplePipeline::samplesReady, this,
         [this](const SampleBatch &batch) {
             if (!post(m_pendingBatches, kMaxPendingBatches,
                       [this, batch] { Q_EMIT samplesReady(batch); }))
@@ -61,7 +55,7 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
         },
         Qt::DirectConnection);
     connect(
-        m_session, &DeviceSession::recordingChanged, this,
+        samples, &SamplePipeline::recordingChanged, this,
         [this](const RecordingStatus &status) {
             auto deliver = [this, status] {
                 m_recording = status;
@@ -126,8 +120,7 @@ template<auto Method, typename... Args> quint64 DeviceClient::command(Args &&...
 
 void DeviceClient::connectDevice(const ConnectOptions &options)
 {
-    m_hasParams = false;
-    m_hasEffects = false;
+    m_tuning = {};
     m_hand = options.sim.hand;
     onSession<&DeviceSession::connectDevice>(options);
 }
@@ -137,14 +130,14 @@ void DeviceClient::disconnectDevice()
     onSession<&DeviceSession::disconnectDevice>();
 }
 
-quint64 DeviceClient::pushParams(const DeviceParams &params)
+quint64 DeviceClient::pushTuning(const DeviceTuning &tuning)
 {
-    return command<&DeviceSession::pushParams>(params);
+    return command<&DeviceSession::pushTuning>(tuning);
 }
 
-quint64 DeviceClient::readParams()
+quint64 DeviceClient::readTuning()
 {
-    return command<&DeviceSession::readParams>();
+    return command<&DeviceSession::readTuning>();
 }
 
 quint64 DeviceClient::zero()
@@ -160,16 +153,6 @@ quint64 DeviceClient::saveParams()
 quint64 DeviceClient::setStreamRate(quint16 hz)
 {
     return command<&DeviceSession::setStreamRate>(hz);
-}
-
-quint64 DeviceClient::pushEffects(const EffectParams &effects)
-{
-    return command<&DeviceSession::pushEffects>(effects);
-}
-
-quint64 DeviceClient::readEffects()
-{
-    return command<&DeviceSession::readEffects>();
 }
 
 quint64 DeviceClient::vibrate(const Vibration &vibration)

@@ -1,5 +1,5 @@
 // The application's handle on a joystick: owns the session thread, forwards commands to it,
-// and re-emits its signals on the owner's thread. All methods return immediately.
+// and delivers the session's signals on the owner's thread. All methods return immediately.
 #pragma once
 
 #include "session/sessiontypes.h"
@@ -34,14 +34,14 @@ public:
     void disconnectDevice();
 
     //! Commands; each returns a request id that commandFinished() reports back.
-    quint64 pushParams(const DeviceParams &params);   //!< SET_PARAMS, then GET_PARAMS read-back
-    quint64 readParams();                             //!< GET_PARAMS
-    quint64 zero();                                   //!< ZERO, then GET_PARAMS
-    quint64 saveParams();                             //!< SAVE_PARAMS
-    quint64 setStreamRate(quint16 hz);                //!< SET_STREAM
-    quint64 pushEffects(const EffectParams &effects); //!< SET_EFFECTS, then GET_EFFECTS
-    quint64 readEffects();                            //!< GET_EFFECTS
-    quint64 vibrate(const Vibration &vibration);      //!< VIBRATE (fire-and-forget, ACKed)
+    //! Each part of `tuning` sent and read back (SET_PARAMS, GET_PARAMS, SET_EFFECTS,
+    //! GET_EFFECTS); its result carries what was sent and what the device holds.
+    quint64 pushTuning(const DeviceTuning &tuning);
+    quint64 readTuning();                        //!< GET_PARAMS (and GET_EFFECTS: effects)
+    quint64 zero();                              //!< ZERO, then GET_PARAMS
+    quint64 saveParams();                        //!< SAVE_PARAMS
+    quint64 setStreamRate(quint16 hz);           //!< SET_STREAM
+    quint64 vibrate(const Vibration &vibration); //!< VIBRATE (fire-and-forget, ACKed)
 
     //! τ_ext streamed to the device [N·m]: sent at once, within ConnectOptions'
     //! feedbackRateHz. Callable from any thread (the robot path calls it from the
@@ -73,11 +73,9 @@ public:
     // Last values seen on this thread (updated before the matching signal is emitted).
     SessionState state() const { return m_state; }
     DeviceInfo deviceInfo() const { return m_info; }
-    DeviceParams deviceParams() const { return m_params; }
-    bool hasDeviceParams() const { return m_hasParams; }
-    EffectParams deviceEffects() const { return m_effects; }
-    //! An EFFECTS arrived on this connection (a device with the effects capability).
-    bool hasDeviceEffects() const { return m_hasEffects; }
+    //! The device's tuning as read on this connection: each part once the device has told it
+    //! (effects: a device with the capability).
+    DeviceTuning deviceTuning() const { return m_tuning; }
     LinkStats stats() const { return m_stats; }
     RecordingStatus recordingStatus() const { return m_recording; }
     //! Sample batches never delivered because kMaxPendingBatches were already waiting (the
@@ -88,8 +86,7 @@ Q_SIGNALS:
     //! `detail` says why, in codes and numbers (ui/ and hatpicctl word it).
     void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
-    void deviceParamsChanged(const hatpic::DeviceParams &params);   //!< the device's read-back
-    void deviceEffectsChanged(const hatpic::EffectParams &effects); //!< the device's read-back
+    void deviceTuningChanged(const hatpic::DeviceTuning &tuning); //!< the device told a part
     void samplesReady(const hatpic::SampleBatch &batch);
     void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
@@ -116,10 +113,7 @@ private:
     quint64 m_lastId = 0;
     SessionState m_state = SessionState::Disconnected;
     DeviceInfo m_info;
-    DeviceParams m_params;
-    bool m_hasParams = false;
-    EffectParams m_effects;
-    bool m_hasEffects = false;
+    DeviceTuning m_tuning;
     LinkStats m_stats;
     RecordingStatus m_recording;
     HandInput m_hand;

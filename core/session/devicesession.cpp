@@ -6,7 +6,6 @@
 #include "sim/simlink.h"
 
 #include <QLoggingCategory>
-#include <QStringBuilder>
 
 #include <algorithm>
 #include <limits>
@@ -74,19 +73,14 @@ DeviceSession::DeviceSession(QObject *parent)
             m_options.streamRateHz = command.rate; // a reconnect asks for the same rate
     });
 
-    connect(&m_samples, &SamplePipeline::samplesReady, this, &DeviceSession::samplesReady);
-    connect(&m_samples, &SamplePipeline::recordingChanged, this, &DeviceSession::recordingChanged);
     connect(&m_samples, &SamplePipeline::notice, this, &DeviceSession::notice);
-    connect(&m_samples, &SamplePipeline::deviceParamsChanged, this,
-            &DeviceSession::deviceParamsChanged);
-    connect(&m_samples, &SamplePipeline::deviceEffectsChanged, this,
-            &DeviceSession::deviceEffectsChanged);
 }
 
 DeviceSession::~DeviceSession()
 {
-    // Nobody listens any more: close quietly.
+    // Nobody listens any more: close quietly (the samples' signals too, which go straight out).
     blockSignals(true);
+    m_samples.blockSignals(true);
     shutdown();
 }
 
@@ -195,6 +189,16 @@ bool DeviceSession::sendPing(quint32 token)
     return m_driver && m_link && m_driver->sendPing(token);
 }
 
+DriverLinks DeviceSession::driverLinks()
+{
+    return {m_samples,
+            m_statistics,
+            m_ping,
+            m_clock,
+            [this](const QByteArray &bytes) { write(bytes); },
+            [this](const QString &line) { Q_EMIT deviceLog(line); }};
+}
+
 void DeviceSession::write(const QByteArray &bytes)
 {
     if (m_link)
@@ -238,8 +242,8 @@ void DeviceSession::onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame
         failDetection(refused);
         return;
     }
-    auto driver = std::make_unique<V2Driver>(host(), m_queue, reply, m_options, m_link->baud(),
-                                             m_detector.takeDecoder());
+    auto driver = std::make_unique<V2Driver>(driverLinks(), m_queue, reply, m_options,
+                                             m_link->baud(), m_detector.takeDecoder());
     V2Driver *v2 = driver.get();
     becomeConnected(std::move(driver));
     if (m_driver.get() == v2)
@@ -248,7 +252,7 @@ void DeviceSession::onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame
 
 void DeviceSession::onFoundLegacy()
 {
-    becomeConnected(std::make_unique<LegacyDriver>(host(), m_options, m_link->baud()));
+    becomeConnected(std::make_unique<LegacyDriver>(driverLinks(), m_options, m_link->baud()));
 }
 
 void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
@@ -332,28 +336,35 @@ void DeviceSession::onStatsTick()
 
 // ---------------------------------------------------------------- commands
 
-void DeviceSession::pushParams(quint64 id, const DeviceParams &params)
+void DeviceSession::pushTuning(quint64 id, const DeviceTuning &tuning)
 {
+    Command cmd = command(id, tuning.params ? CommandKind::SetParams : CommandKind::SetEffects);
+    cmd.tuning = tuning;
     if (m_validate) {
-        const auto violations = validate(params);
-        if (!violations.empty()) {
-            CommandResult r =
-                commandResult(CommandKind::SetParams, Status::Invalid, Reason::InvalidParams);
-            r.sent = params;
-            for (const Violation &v : violations)
-                r.problems << QString::fromStdString(v.message());
-            Q_EMIT commandFinished(id, r);
-            return;
+        std::vector<Violation> violations;
+        if (tuning.params)
+            violations = validate(*tuning.params);
+        // The effects only once the device (its tau_limit) is known: submit() refuses before.
+        if (tuning.effects && m_driver) {
+            const auto more = validate(*tuning.effects, m_info.tauLimit);
+            violations.insert(violations.end(), more.begin(), more.end());
         }
+        if (refuseInvalid(cmd, violations))
+            return;
     }
-    Command cmd = command(id, CommandKind::SetParams);
-    cmd.params = roundedForWire(params);
+    if (tuning.params)
+        cmd.tuning.params = roundedForWire(*tuning.params);
+    if (tuning.effects)
+        cmd.tuning.effects = roundedForWire(*tuning.effects, m_info.tauLimit);
     submit(cmd);
 }
 
-void DeviceSession::readParams(quint64 id)
+void DeviceSession::readTuning(quint64 id)
 {
-    submit(command(id, CommandKind::GetParams));
+    Command cmd = command(id, CommandKind::GetParams);
+    if (m_info.hasEffects())
+        cmd.tuning.effects = EffectParams{};
+    submit(cmd);
 }
 
 void DeviceSession::zero(quint64 id)
@@ -373,22 +384,6 @@ void DeviceSession::setStreamRate(quint64 id, quint16 hz)
     submit(cmd);
 }
 
-void DeviceSession::pushEffects(quint64 id, const EffectParams &effects)
-{
-    Command cmd = command(id, CommandKind::SetEffects);
-    cmd.effects = effects;
-    // Validated only once the device (its tau_limit) is known: submit() refuses before then.
-    if (m_driver && m_validate && refuseInvalid(cmd, validate(effects, m_info.tauLimit)))
-        return;
-    cmd.effects = roundedForWire(effects, m_info.tauLimit);
-    submit(cmd);
-}
-
-void DeviceSession::readEffects(quint64 id)
-{
-    submit(command(id, CommandKind::GetEffects));
-}
-
 void DeviceSession::vibrate(quint64 id, const Vibration &vibration)
 {
     Command cmd = command(id, CommandKind::Vibrate);
@@ -401,12 +396,19 @@ void DeviceSession::vibrate(quint64 id, const Vibration &vibration)
     submit(cmd);
 }
 
+Reason DeviceSession::refusal(const Command &cmd) const
+{
+    const Reason why = m_driver->refusal(cmd.kind);
+    return why != Reason::None || !cmd.tuning.effects ? why
+                                                      : m_driver->refusal(CommandKind::SetEffects);
+}
+
 bool DeviceSession::refuseInvalid(const Command &cmd, const std::vector<Violation> &violations)
 {
-    if (violations.empty() || m_driver->refusal(cmd.kind) != Reason::None)
+    if (violations.empty() || (m_driver && refusal(cmd) != Reason::None))
         return false; // nothing wrong, or submit() gives the better reason (unsupported)
     CommandResult r = commandResult(cmd.kind, Status::Invalid, Reason::InvalidParams);
-    r.effectsSent = cmd.effects;
+    r.sent = cmd.tuning;
     r.vibration = cmd.vibration;
     for (const Violation &v : violations)
         r.problems << QString::fromStdString(v.message());
@@ -423,7 +425,7 @@ void DeviceSession::submit(Command command)
         }
         return;
     }
-    if (const Reason why = m_driver->refusal(command.kind); why != Reason::None) {
+    if (const Reason why = refusal(command); why != Reason::None) {
         if (command.id)
             Q_EMIT commandFinished(command.id,
                                    commandResult(command.kind, Status::Unsupported, why));

@@ -26,7 +26,7 @@ namespace hatpic {
 class ByteLink;
 class SimLink;
 
-class DeviceSession : public QObject, private DriverHost
+class DeviceSession : public QObject
 {
     Q_OBJECT
 public:
@@ -43,14 +43,14 @@ public:
     //! Disconnects and closes the recording; the session can be destroyed afterwards.
     void shutdown();
 
-    void pushParams(quint64 id, const DeviceParams &params);
-    void readParams(quint64 id);
+    //! Each part of `tuning` validated (the effects against the device's tau_limit), sent and
+    //! read back: SET_PARAMS, GET_PARAMS, then SET_EFFECTS, GET_EFFECTS. One result.
+    void pushTuning(quint64 id, const DeviceTuning &tuning);
+    //! GET_PARAMS, and GET_EFFECTS when the device renders effects. One result.
+    void readTuning(quint64 id);
     void zero(quint64 id);
     void saveParams(quint64 id);
     void setStreamRate(quint64 id, quint16 hz);
-    //! SET_EFFECTS, then GET_EFFECTS read-back; validated against the device's tau_limit.
-    void pushEffects(quint64 id, const EffectParams &effects);
-    void readEffects(quint64 id); //!< GET_EFFECTS
     //! VIBRATE; validated against the device's tau_limit (the device alone knows its control
     //! rate, so f < rate/2 is its check: OUT_OF_RANGE, field 1).
     void vibrate(quint64 id, const Vibration &vibration);
@@ -70,25 +70,24 @@ public:
     //! Each sample as it is decoded, on this thread (samplelisteners.h); callable from any
     //! thread.
     SampleListeners &sampleListeners() { return m_samples.listeners(); }
+    //! Where samples, the device's tuning and the recording's status come from (its signals:
+    //! samplesReady, deviceTuningChanged, recordingChanged); on this thread.
+    const SamplePipeline &samples() const { return m_samples; }
 
     // ---- test seams (session thread only) ----
     //! The in-process simulator's link while connected to "sim", else null.
     SimLink *simLink() const;
     //! Stops (or resumes) the feedback stream, e.g. to see the device's watchdog act.
     void setFeedbackPaused(bool paused) { m_feedback.setPaused(paused); }
-    //! Off: pushParams(), pushEffects() and vibrate() send without host-side validation, to
+    //! Off: pushTuning() and vibrate() send without host-side validation, to
     //! exercise device rejections.
     void setValidateBeforeSending(bool validate) { m_validate = validate; }
 
 Q_SIGNALS:
     void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
-    void deviceParamsChanged(const hatpic::DeviceParams &params);
-    void deviceEffectsChanged(const hatpic::EffectParams &effects);
-    void samplesReady(const hatpic::SampleBatch &batch);
     void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
-    void recordingChanged(const hatpic::RecordingStatus &status);
     //! What the device says for people (v2 LOG, legacy boot text).
     void deviceLog(const QString &line);
     void notice(const hatpic::SessionNotice &notice);
@@ -113,35 +112,15 @@ private:
 
     // commands
     void submit(Command command);
+    //! Reason::None when the driver carries every step of `cmd`; else why not.
+    CommandResult::Reason refusal(const Command &cmd) const;
     //! Emits Invalid (InvalidParams) with `violations` for `cmd`; false when there are none.
     bool refuseInvalid(const Command &cmd, const std::vector<Violation> &violations);
     void onCommandFinished(const Command &command, const CommandResult &result);
 
-    // DriverHost
-    DriverHost &host() { return *this; }
-    void write(const QByteArray &bytes) override;
-    SampleBuilder &builder() override { return m_samples.builder(); }
-    LinkStatistics &statistics() override { return m_statistics; }
-    qint64 hostUs() const override { return m_clock.nsecsElapsed() / 1000; }
-    void pushSample(const Sample &sample) override
-    {
-        Sample stamped = sample;
-        stamped.arrival_ns = sampleClockNs();
-        m_samples.push(stamped);
-    }
-    void paramsApplied(CommandKind kind, const DeviceParams &params) override
-    {
-        m_samples.paramsApplied(kind, params);
-    }
-    void paramsReceived(const DeviceParams &params) override { m_samples.paramsReceived(params); }
-    void effectsApplied(const EffectParams &effects) override { m_samples.effectsApplied(effects); }
-    void effectsReceived(const EffectParams &effects) override
-    {
-        m_samples.effectsReceived(effects);
-    }
-    void pongReceived(quint32 token) override { m_ping.onPong(token); }
-    void deviceText(const QString &line) override { Q_EMIT deviceLog(line); }
-    bool linkOpen() const override { return m_link != nullptr; }
+    //! What a new driver holds of this session.
+    DriverLinks driverLinks();
+    void write(const QByteArray &bytes);
 
     ConnectOptions m_options;
     SessionState m_state = SessionState::Disconnected;

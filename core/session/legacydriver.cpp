@@ -1,13 +1,13 @@
 #include "legacydriver.h"
 
 #include "session/linkstatistics.h"
-#include "session/samplebuilder.h"
+#include "session/samplepipeline.h"
 
 namespace hatpic {
 
-LegacyDriver::LegacyDriver(DriverHost &host, const ConnectOptions &options, qint32 baud)
-    : m_host(host), m_conversion(options.legacy), m_feedbackOn(options.feedbackRateHz > 0),
-      m_field(options.legacy.feedbackToField(0))
+LegacyDriver::LegacyDriver(DriverLinks links, const ConnectOptions &options, qint32 baud)
+    : m_links(std::move(links)), m_conversion(options.legacy),
+      m_feedbackOn(options.feedbackRateHz > 0), m_field(options.legacy.feedbackToField(0))
 {
     m_info.protocol = WireProtocol::Legacy;
     m_info.port = options.port;
@@ -24,7 +24,8 @@ void LegacyDriver::start()
 {
     // The published firmware renders its own fixed spring; the host estimates τ_rec from its
     // copy of the parameters, which stays at the defaults (θ0 = 0).
-    m_host.builder().setTauLimit(m_host.builder().hostParams().tau_limit);
+    SampleBuilder &builder = m_links.samples.builder();
+    builder.setTauLimit(builder.hostParams().tau_limit);
 }
 
 void LegacyDriver::feed(const QByteArray &bytes)
@@ -34,15 +35,15 @@ void LegacyDriver::feed(const QByteArray &bytes)
     m_decoder.feed(bytes, frames, &lines);
     for (const QString &line : std::as_const(lines)) {
         if (!line.isEmpty())
-            m_host.deviceText(line);
+            m_links.deviceText(line);
     }
     for (const legacy::Frame &frame : std::as_const(frames)) {
-        if (m_closed || !m_host.linkOpen())
+        if (m_closed)
             break;
-        m_host.statistics().countFrame();
+        m_links.statistics.countFrame();
         const double tauExt = m_feedbackOn ? m_conversion.fieldToFeedback(m_field) : 0.0;
-        m_host.pushSample(
-            m_host.builder().fromLegacy(frame, m_conversion, tauExt, m_host.hostUs()));
+        m_links.samples.push(m_links.samples.builder().fromLegacy(
+            frame, m_conversion, tauExt, m_links.clock.nsecsElapsed() / 1000));
     }
 }
 
@@ -50,7 +51,7 @@ void LegacyDriver::sendFeedback(double tauExt)
 {
     // One whole frame per write: the published firmware busy-waits from 'i' to 'o'.
     m_field = m_conversion.feedbackToField(tauExt);
-    m_host.write(legacy::encodeFrame(legacy::Frame{m_field, 0, 0, 0}));
+    m_links.write(legacy::encodeFrame(legacy::Frame{m_field, 0, 0, 0}));
 }
 
 CommandResult::Reason LegacyDriver::refusal(CommandKind kind) const
@@ -64,7 +65,7 @@ CommandResult::Reason LegacyDriver::refusal(CommandKind kind) const
 
 void LegacyDriver::hostParamsChanged(const HostParams &host)
 {
-    m_host.builder().setTauLimit(host.tau_limit);
+    m_links.samples.builder().setTauLimit(host.tau_limit);
 }
 
 void LegacyDriver::close()
@@ -72,7 +73,7 @@ void LegacyDriver::close()
     if (m_closed)
         return;
     m_closed = true;
-    m_host.statistics().absorb(m_decoder.stats());
+    m_links.statistics.absorb(m_decoder.stats());
     m_decoder.resetStats();
 }
 

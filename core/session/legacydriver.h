@@ -14,7 +14,7 @@ class LegacyDriver : public ProtocolDriver
 {
 public:
     //! @param feedbackOn whether feedback is streamed at all (else τ_ext is 0 in samples)
-    LegacyDriver(DriverHost &host, const ConnectOptions &options, qint32 baud);
+    LegacyDriver(DriverLinks links, const ConnectOptions &options, qint32 baud);
 
     DeviceInfo info() const override { return m_info; }
     void start() override;
@@ -33,7 +33,7 @@ public:
     StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedLegacy; }
 
 private:
-    DriverHost &m_host;
+    DriverLinks m_links;
     legacy::Conversion m_conversion;
     bool m_feedbackOn;
     DeviceInfo m_info;

@@ -12,40 +12,27 @@
 #include "telemetry/sample.h"
 
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QString>
+
+#include <functional>
 
 namespace hatpic {
 
 class LinkStatistics;
-class SampleBuilder;
+class PingProbe;
+class SamplePipeline;
 
-//! What a driver reaches of its session.
-class DriverHost
+//! What a driver works with, the session's parts it holds: where samples and the device's
+//! tuning go, the link's counts, the PING probe, the session's clock, and the way out.
+struct DriverLinks
 {
-public:
-    virtual void write(const QByteArray &bytes) = 0;
-    virtual SampleBuilder &builder() = 0;
-    virtual LinkStatistics &statistics() = 0;
-    virtual qint64 hostUs() const = 0;
-    //! A complete sample for the batch (and the recording).
-    virtual void pushSample(const Sample &sample) = 0;
-    //! The device applied `params` (SET_PARAMS) or zeroed (ZERO): it holds from the next
-    //! sample on.
-    virtual void paramsApplied(CommandKind kind, const DeviceParams &params) = 0;
-    //! A PARAMS message arrived.
-    virtual void paramsReceived(const DeviceParams &params) = 0;
-    //! The device applied `effects` (SET_EFFECTS): it holds from the next sample on.
-    virtual void effectsApplied(const EffectParams &effects) = 0;
-    //! An EFFECTS message arrived.
-    virtual void effectsReceived(const EffectParams &effects) = 0;
-    virtual void pongReceived(quint32 token) = 0;
-    //! Text the device sent for people (v2 LOG, legacy boot lines).
-    virtual void deviceText(const QString &line) = 0;
-    //! True while the link is open: a driver stops handling frames once it is gone.
-    virtual bool linkOpen() const = 0;
-
-protected:
-    ~DriverHost() = default;
+    SamplePipeline &samples;
+    LinkStatistics &statistics;
+    PingProbe &ping;
+    const QElapsedTimer &clock; //!< host time of samples
+    std::function<void(const QByteArray &bytes)> write;
+    std::function<void(const QString &line)> deviceText; //!< v2 LOG, legacy boot lines
 };
 
 class ProtocolDriver
@@ -69,7 +56,8 @@ public:
     virtual CommandResult::Reason refusal(CommandKind kind) const = 0;
     //! The host parameters changed (legacy: its τ limit is the host's).
     virtual void hostParamsChanged(const HostParams &host) = 0;
-    //! Stops handling anything and hands its decoder's counts to the statistics.
+    //! Stops handling anything (the link is gone) and hands its decoder's counts to the
+    //! statistics.
     virtual void close() = 0;
     //! The live decoder counts, for LinkStats (one of the two is null).
     virtual const v2::DecoderStats *v2Stats() const { return nullptr; }

@@ -137,26 +137,19 @@ void RecordingSink::addEvent(const QString &text)
         m_writer.addEvent(text);
 }
 
-void RecordingSink::paramsApplied(const DeviceParams &from, const DeviceParams &to)
+void RecordingSink::tuningApplied(const DeviceTuning &from, const DeviceTuning &to)
 {
-    const QString change = describeParamChange(from, to);
-    addEvent(change.isEmpty() ? QStringLiteral("SET_PARAMS (no change)") : change);
+    const QString change = describeTuningChange(from, to);
+    if (!change.isEmpty())
+        addEvent(change);
+    else
+        addEvent(to.params ? QStringLiteral("SET_PARAMS (no change)")
+                           : QStringLiteral("SET_EFFECTS (no change)"));
 }
 
-void RecordingSink::paramsReadBack(const DeviceParams &from, const DeviceParams &to)
+void RecordingSink::tuningReadBack(const DeviceTuning &from, const DeviceTuning &to)
 {
-    addEvent(describeParamChange(from, to) % u" (read back)");
-}
-
-void RecordingSink::effectsApplied(const EffectParams &from, const EffectParams &to)
-{
-    const QString change = describeEffectChange(from, to);
-    addEvent(change.isEmpty() ? QStringLiteral("SET_EFFECTS (no change)") : change);
-}
-
-void RecordingSink::effectsReadBack(const EffectParams &from, const EffectParams &to)
-{
-    addEvent(describeEffectChange(from, to) % u" (read back)");
+    addEvent(describeTuningChange(from, to) % u" (read back)");
 }
 
 void RecordingSink::zeroed(double theta0Before)

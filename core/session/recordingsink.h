@@ -49,11 +49,11 @@ public:
     //! Attaches an event to the next sample (nothing when closed). The events' text is part
     //! of the file format (recording.md), so it is composed here.
     void addEvent(const QString &text);
-    void paramsApplied(const DeviceParams &from, const DeviceParams &to);   //!< SET_PARAMS applied
-    void paramsReadBack(const DeviceParams &from, const DeviceParams &to);  //!< PARAMS differed
-    void zeroed(double theta0Before);                                       //!< ZERO applied
-    void effectsApplied(const EffectParams &from, const EffectParams &to);  //!< SET_EFFECTS applied
-    void effectsReadBack(const EffectParams &from, const EffectParams &to); //!< EFFECTS differed
+    //! SET_PARAMS or SET_EFFECTS applied: `to` has the part it carried.
+    void tuningApplied(const DeviceTuning &from, const DeviceTuning &to);
+    //! PARAMS or EFFECTS differed from what was held: `to` has the parts told.
+    void tuningReadBack(const DeviceTuning &from, const DeviceTuning &to);
+    void zeroed(double theta0Before); //!< ZERO applied
     void hostChanged(const HostParams &from, const HostParams &to);
     void referenceReset();
 Q_SIGNALS:

@@ -18,9 +18,7 @@ SamplePipeline::SamplePipeline(QObject *parent)
 
 void SamplePipeline::connectionStarted(const DeviceInfo &device)
 {
-    m_paramsKnown = false;
-    m_effectsKnown = false;
-    m_effects = {};
+    m_device = {};
     m_builder.markDiscontinuity();
     m_batchTimer.start();
     if (!m_gap)
@@ -42,8 +40,8 @@ void SamplePipeline::connectionStarted(const DeviceInfo &device)
     // Rows resume once the device has told what it holds, so the first row after the gap
     // carries every change against the parameters before it.
     m_gap->reconnected = true;
-    m_gap->paramsPending = device.canSetParams();
-    m_gap->effectsPending = device.hasEffects();
+    m_gap->pending = {device.canSetParams() ? std::optional(DeviceParams{}) : std::nullopt,
+                      device.hasEffects() ? std::optional(EffectParams{}) : std::nullopt};
     m_gap->resumeBy.reset();
     m_gap->changes.clear();
     resumeIfReady();
@@ -70,9 +68,7 @@ void SamplePipeline::connectionEnded(const StateDetail &lost, bool reconnecting)
         return;
     }
     Gap gap;
-    gap.params = m_builder.deviceParams();
-    if (m_effectsKnown)
-        gap.effects = m_effects;
+    gap.held = {m_builder.deviceParams(), m_device.effects};
     m_gap = gap;
     m_recording.suspend(m_recent.empty() ? 0.0 : m_recent.back().t_s, lost);
     Q_EMIT notice({SessionNotice::Kind::RecordingWaitsForDevice, {}});
@@ -80,7 +76,7 @@ void SamplePipeline::connectionEnded(const StateDetail &lost, bool reconnecting)
 
 void SamplePipeline::resumeIfReady()
 {
-    if (m_gap && m_gap->reconnected && !m_gap->paramsPending && !m_gap->effectsPending)
+    if (m_gap && m_gap->reconnected && m_gap->pending == DeviceTuning{})
         resume(false);
 }
 
@@ -98,8 +94,10 @@ void SamplePipeline::stop()
     m_batchTimer.stop();
 }
 
-void SamplePipeline::push(const Sample &sample)
+void SamplePipeline::push(const Sample &decoded)
 {
+    Sample sample = decoded;
+    sample.arrival_ns = sampleClockNs();
     m_listeners.dispatch(sample);
     if (m_gap && m_gap->reconnected) {
         if (!m_gap->resumeBy)
@@ -159,7 +157,7 @@ void SamplePipeline::record(const SampleBatch &batch)
     m_recording.close();
 }
 
-void SamplePipeline::paramsApplied(CommandKind kind, const DeviceParams &params)
+void SamplePipeline::tuningApplied(CommandKind kind, const DeviceTuning &applied)
 {
     flush(); // the event belongs to the next sample, not to those already waiting
     if (kind == CommandKind::Zero) {
@@ -168,51 +166,45 @@ void SamplePipeline::paramsApplied(CommandKind kind, const DeviceParams &params)
     }
     if (m_armed && m_armed->trigger.plan().start == RecordingPlan::Start::NextPush)
         fire(m_recent.empty() ? std::nullopt : std::optional(m_recent.back().t_s));
-    m_recording.paramsApplied(m_builder.deviceParams(), params);
-    m_builder.setDeviceParams(params);
+    m_recording.tuningApplied({m_builder.deviceParams(), m_device.effects}, applied);
+    if (applied.params)
+        m_builder.setDeviceParams(*applied.params);
+    if (applied.effects)
+        m_device.effects = applied.effects;
 }
 
-void SamplePipeline::paramsReceived(const DeviceParams &params)
+void SamplePipeline::tuningReceived(const DeviceTuning &told)
 {
-    const DeviceParams held = m_builder.deviceParams();
-    if (m_paramsKnown && !sameOnWire(held, params)) {
+    const DeviceTuning held{m_builder.deviceParams(), m_device.effects};
+    // What this connection already knew and the device now tells differently.
+    const DeviceTuning known{told.params && m_device.params ? told.params : std::nullopt,
+                             told.effects && m_device.effects ? told.effects : std::nullopt};
+    if (!sameOnWire(held.updatedBy(known), held)) {
         flush();
-        m_recording.paramsReadBack(held, params);
+        m_recording.tuningReadBack(held, known);
     }
-    if (m_gap && m_gap->reconnected && m_gap->paramsPending) {
+    // The parts a device back after a loss had yet to tell, as told now.
+    const DeviceTuning now =
+        m_gap && m_gap->reconnected
+            ? DeviceTuning{m_gap->pending.params ? told.params : std::nullopt,
+                           m_gap->pending.effects ? told.effects : std::nullopt}
+            : DeviceTuning{};
+    if (now != DeviceTuning{}) {
+        DeviceTuning compared = now; // effects compared only when known at the loss
+        if (!m_gap->held.effects)
+            compared.effects.reset();
         flush();
-        if (!sameOnWire(m_gap->params, params))
-            m_gap->changes << describeParamChange(m_gap->params, params);
-        m_gap->paramsPending = false;
+        if (const QString change = describeTuningChange(m_gap->held, compared); !change.isEmpty())
+            m_gap->changes << change;
+        if (now.params)
+            m_gap->pending.params.reset();
+        if (now.effects)
+            m_gap->pending.effects.reset();
     }
-    m_builder.setDeviceParams(params);
-    m_paramsKnown = true;
-    Q_EMIT deviceParamsChanged(params);
-    resumeIfReady();
-}
-
-void SamplePipeline::effectsApplied(const EffectParams &effects)
-{
-    flush(); // the event belongs to the next sample, not to those already waiting
-    m_recording.effectsApplied(m_effects, effects);
-    m_effects = effects;
-}
-
-void SamplePipeline::effectsReceived(const EffectParams &effects)
-{
-    if (m_effectsKnown && !sameOnWire(m_effects, effects)) {
-        flush();
-        m_recording.effectsReadBack(m_effects, effects);
-    }
-    if (m_gap && m_gap->reconnected && m_gap->effectsPending) {
-        flush();
-        if (m_gap->effects && !sameOnWire(*m_gap->effects, effects))
-            m_gap->changes << describeEffectChange(*m_gap->effects, effects);
-        m_gap->effectsPending = false;
-    }
-    m_effects = effects;
-    m_effectsKnown = true;
-    Q_EMIT deviceEffectsChanged(effects);
+    if (told.params)
+        m_builder.setDeviceParams(*told.params);
+    m_device = m_device.updatedBy(told);
+    Q_EMIT deviceTuningChanged(m_device);
     resumeIfReady();
 }
 
@@ -255,8 +247,7 @@ void SamplePipeline::fire(std::optional<double> anchor)
     meta.start = QDateTime::currentDateTimeUtc();
     meta.device = armed.device;
     meta.params = m_builder.deviceParams();
-    if (m_effectsKnown)
-        meta.effects = m_effects;
+    meta.effects = m_device.effects;
     meta.host = m_builder.hostParams();
     meta.source = armed.source;
     m_gap.reset();

@@ -57,19 +57,17 @@ public:
     //! Stops the batch timer (shutdown).
     void stop();
 
+    //! A complete sample: stamped with its arrival, to the listeners at once, then batched.
     void push(const Sample &sample);
     //! Hands on the samples waiting (to the recording and samplesReady).
     void flush();
 
-    //! The device applied SET_PARAMS (`params`) or ZERO: it holds from the next sample on.
-    void paramsApplied(CommandKind kind, const DeviceParams &params);
-    //! A PARAMS message: the copy follows it (an event when it differs from what was held).
-    void paramsReceived(const DeviceParams &params);
-    //! The device applied SET_EFFECTS (`effects`): it holds from the next sample on.
-    void effectsApplied(const EffectParams &effects);
-    //! An EFFECTS message: the copy follows it (an event when it differs from what was held).
-    void effectsReceived(const EffectParams &effects);
-    const EffectParams &deviceEffects() const { return m_effects; }
+    //! The device applied a change (`kind` SET_PARAMS or SET_EFFECTS: the part `applied`
+    //! carries; ZERO): it holds from the next sample on.
+    void tuningApplied(CommandKind kind, const DeviceTuning &applied);
+    //! A PARAMS or EFFECTS (`told` has its part): the device's tuning follows it (an event when
+    //! it differs from what was held), and deviceTuningChanged() says so.
+    void tuningReceived(const DeviceTuning &told);
     //! False when `host` equals the parameters in force (nothing changed).
     bool setHostParams(const HostParams &host);
     void resetReference();
@@ -89,8 +87,8 @@ public:
 Q_SIGNALS:
     void samplesReady(const hatpic::SampleBatch &batch);
     void recordingChanged(const hatpic::RecordingStatus &status);
-    void deviceParamsChanged(const hatpic::DeviceParams &params);
-    void deviceEffectsChanged(const hatpic::EffectParams &effects);
+    //! The device's tuning as read: each part once the device has told it on this connection.
+    void deviceTuningChanged(const hatpic::DeviceTuning &tuning);
     //! The recording waits for, resumed after or closed at a link loss.
     void notice(const hatpic::SessionNotice &notice);
 
@@ -99,11 +97,10 @@ private:
     //! that came back has told so far.
     struct Gap
     {
-        DeviceParams params;                 //!< the device's parameters at the loss
-        std::optional<EffectParams> effects; //!< its effect block at the loss, when known
+        DeviceTuning held; //!< the device's tuning at the loss (effects: when known)
         bool reconnected = false;
-        bool paramsPending = false;     //!< the device that came back has not sent PARAMS yet
-        bool effectsPending = false;    //!< …nor EFFECTS (a device with effects)
+        //! The parts the device that came back has yet to tell (effects: a device with them)
+        DeviceTuning pending;
         std::optional<double> resumeBy; //!< t_s after which rows resume regardless [s]
         QStringList changes; //!< what the device holds differently now ("K_max 0.6 → 0.4")
     };
@@ -120,7 +117,7 @@ private:
     void keepRecent(const Sample &sample);
     //! Appends to the recording up to its end time, and closes it there.
     void record(const SampleBatch &batch);
-    //! The device that came back has told its parameters (and effects): rows resume.
+    //! The device that came back has told its tuning: rows resume.
     void resumeIfReady();
     //! Rows resume after the gap; `unread`: without the device's parameters read back.
     void resume(bool unread);
@@ -130,9 +127,9 @@ private:
     SampleBatch m_batch;
     QTimer m_batchTimer;
     RecordingSink m_recording;
-    bool m_paramsKnown = false;  //!< a PARAMS arrived on this connection
-    EffectParams m_effects;      //!< the device's effect block as the host believes it
-    bool m_effectsKnown = false; //!< an EFFECTS arrived on this connection
+    //! The device's tuning as the host believes it: each part once told on this connection
+    //! (its parameters also live in the builder, which renders with them from the start).
+    DeviceTuning m_device;
     std::deque<Sample> m_recent;
     std::optional<Armed> m_armed;
     DeviceInfo m_recordingDevice;   //!< the device the open recording records

@@ -68,6 +68,8 @@ quint64 LinkStats::totalDecoderDrops() const
     return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));
 }
 
+namespace {
+
 QString describeParamChange(const DeviceParams &from, const DeviceParams &to)
 {
     QStringList parts;
@@ -94,6 +96,25 @@ QString describeEffectChange(const EffectParams &from, const EffectParams &to)
             parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
                          compactNumberText(a) % u" → " % compactNumberText(b);
         }
+    }
+    return parts.join(QStringLiteral("; "));
+}
+
+} // namespace
+
+QString describeTuningChange(const DeviceTuning &from, const DeviceTuning &to)
+{
+    QStringList parts;
+    if (to.params) {
+        if (const QString p = describeParamChange(from.params.value_or(DeviceParams{}), *to.params);
+            !p.isEmpty())
+            parts << p;
+    }
+    if (to.effects) {
+        if (const QString e =
+                describeEffectChange(from.effects.value_or(EffectParams{}), *to.effects);
+            !e.isEmpty())
+            parts << e;
     }
     return parts.join(QStringLiteral("; "));
 }
@@ -131,6 +152,7 @@ void registerSessionMetaTypes()
     qRegisterMetaType<hatpic::LinkStats>();
     qRegisterMetaType<hatpic::RecordingStatus>();
     qRegisterMetaType<hatpic::DeviceParams>();
+    qRegisterMetaType<hatpic::DeviceTuning>();
     qRegisterMetaType<hatpic::HostParams>();
     qRegisterMetaType<hatpic::EffectParams>();
     qRegisterMetaType<hatpic::Vibration>();

@@ -1,6 +1,7 @@
 // Value types that cross the session thread boundary.
 #pragma once
 
+#include "model/devicetuning.h"
 #include "model/effects.h"
 #include "model/params.h"
 #include "protocol/deviceinfo.h"
@@ -101,14 +102,12 @@ struct StateDetail
     friend bool operator==(const StateDetail &, const StateDetail &) = default;
 };
 
-//! "K_max 0.4 → 0.6; N 0.1 → 0.12": every device field that differs as it travels on the wire
-//! (the text of recording events and of the tuner's push markers). Empty when nothing does.
-//! Give it blocks as they travel (a device's, or CommandResult::sent): a value the wire moves
-//! inside its bound (±π) would otherwise read as a change.
-QString describeParamChange(const DeviceParams &from, const DeviceParams &to);
-//! "detent_strength 0 → 0.05": the same for the effect block (float32 on the wire; give it a
-//! device's block or CommandResult::effectsSent).
-QString describeEffectChange(const EffectParams &from, const EffectParams &to);
+//! "K_max 0.4 → 0.6; detent_strength 0 → 0.05": every field of the parts `to` has that differs
+//! from `from`'s as it travels on the wire (the text of recording events and of the tuner's push
+//! markers); a part `from` lacks compares with its defaults. Empty when nothing differs. Give it
+//! tunings as they travel (a device's, or CommandResult::sent): a value the wire moves inside its
+//! bound (±π) would otherwise read as a change.
+QString describeTuningChange(const DeviceTuning &from, const DeviceTuning &to);
 //! What tells two devices apart, as names and values ("device_id 1397312817 → 42",
 //! "tau_limit 0.44 → 0.3"): protocol, protocol version, device id, firmware, tau_limit,
 //! max_stream_hz, capabilities and baud, i.e. what a recording's metadata says of its device.
@@ -118,9 +117,9 @@ QStringList describeDeviceChange(const DeviceInfo &from, const DeviceInfo &to);
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
 
-//! Outcome of one command (SET_PARAMS, SET_STREAM, ZERO, SAVE_PARAMS, GET_PARAMS): what
-//! happened, in codes and numbers. The session composes no sentence; ui/ (with tr()) and
-//! hatpicctl word it.
+//! Outcome of one command (a push or a read of the tuning, SET_STREAM, ZERO, SAVE_PARAMS,
+//! VIBRATE): what happened, in codes and numbers. The session composes no sentence; ui/ (with tr())
+//! and hatpicctl word it.
 struct CommandResult
 {
     enum class Status {
@@ -150,13 +149,13 @@ struct CommandResult
     Reason reason = Reason::None;
     CommandKind command = CommandKind::GetParams; //!< the command (a rejection: the frame refused)
     v2::AckStatus ackStatus = v2::AckStatus::Ok;
-    int field = -1;        //!< ParamBlock (effect block, VIBRATE) index the device named, or -1
-    bool readBack = false; //!< a read-back followed (SET_PARAMS, ZERO: GET_PARAMS; SET_EFFECTS)
-    bool readBackMatches = false; //!< SET_PARAMS/EFFECTS: the read-back equals what was sent
-    DeviceParams sent;            //!< SET_PARAMS: what was sent (float32-rounded)
-    DeviceParams received;        //!< GET_PARAMS or a read-back: what the device holds
-    EffectParams effectsSent;     //!< SET_EFFECTS: what was sent (float32-rounded)
-    EffectParams effectsReceived; //!< GET_EFFECTS or SET_EFFECTS' read-back
+    int field = -1; //!< ParamBlock (effect block, VIBRATE) index the device named, or -1
+    //! A read-back followed each change the command made (SET_PARAMS and ZERO: GET_PARAMS;
+    //! SET_EFFECTS: GET_EFFECTS)
+    bool readBack = false;
+    bool readBackMatches = false; //!< …and it equals what was sent (ZERO's: always)
+    DeviceTuning sent;            //!< a push: what was sent (float32-rounded), the parts it carried
+    DeviceTuning received;        //!< a read or a read-back: what the device holds, the parts read
     Vibration vibration;          //!< VIBRATE: what was sent
     quint16 rate = 0;             //!< SET_STREAM: the rate asked for [Hz]; 0 = stop
     int attempts = 0;             //!< Timeout: frames sent
@@ -224,6 +223,7 @@ Q_DECLARE_METATYPE(hatpic::CommandResult)
 Q_DECLARE_METATYPE(hatpic::LinkStats)
 Q_DECLARE_METATYPE(hatpic::RecordingStatus)
 Q_DECLARE_METATYPE(hatpic::DeviceParams)
+Q_DECLARE_METATYPE(hatpic::DeviceTuning)
 Q_DECLARE_METATYPE(hatpic::HostParams)
 Q_DECLARE_METATYPE(hatpic::EffectParams)
 Q_DECLARE_METATYPE(hatpic::Vibration)

@@ -2,7 +2,8 @@
 
 #include "session/commandqueue.h"
 #include "session/linkstatistics.h"
-#include "session/samplebuilder.h"
+#include "session/samplepipeline.h"
+#include "session/streams.h"
 
 #include <QLoggingCategory>
 
@@ -12,9 +13,9 @@ Q_LOGGING_CATEGORY(lcV2, "hatpic.device.v2", QtWarningMsg)
 
 namespace hatpic {
 
-V2Driver::V2Driver(DriverHost &host, CommandQueue &queue, const v2::HelloReply &reply,
+V2Driver::V2Driver(DriverLinks links, CommandQueue &queue, const v2::HelloReply &reply,
                    const ConnectOptions &options, qint32 baud, v2::FrameDecoder decoder)
-    : m_host(host), m_queue(queue), m_streamRateHz(options.streamRateHz),
+    : m_links(std::move(links)), m_queue(queue), m_streamRateHz(options.streamRateHz),
       m_decoder(std::move(decoder))
 {
     m_info.protocol = WireProtocol::V2;
@@ -32,8 +33,8 @@ V2Driver::V2Driver(DriverHost &host, CommandQueue &queue, const v2::HelloReply &
                         << "; this host speaks" << v2::kProtocolVersion;
     }
     connect(&m_queue, &CommandQueue::acknowledged, this, &V2Driver::onAcknowledged);
-    m_host.builder().setTauLimit(m_info.tauLimit);
-    m_host.statistics().restartSeq();
+    m_links.samples.builder().setTauLimit(m_info.tauLimit);
+    m_links.statistics.restartSeq();
     // Discard the detection's noise (e.g. the tail of a stream we opened in the middle of).
     m_decoder.resetStats();
 }
@@ -42,14 +43,11 @@ V2Driver::~V2Driver() = default;
 
 void V2Driver::start()
 {
-    Command get;
-    get.kind = CommandKind::GetParams;
-    m_queue.enqueue(get);
-    if (m_info.hasEffects()) {
-        Command effects;
-        effects.kind = CommandKind::GetEffects;
-        m_queue.enqueue(effects);
-    }
+    Command read; // the device's tuning: its parameters, and its effects when it has them
+    read.kind = CommandKind::GetParams;
+    if (m_info.hasEffects())
+        read.tuning.effects = EffectParams{};
+    m_queue.enqueue(read);
     Command stream;
     stream.kind = CommandKind::SetStream;
     stream.rate = m_streamRateHz;
@@ -62,7 +60,7 @@ void V2Driver::close()
         return;
     m_closed = true;
     disconnect(&m_queue, nullptr, this, nullptr);
-    m_host.statistics().absorb(m_decoder.stats());
+    m_links.statistics.absorb(m_decoder.stats());
     m_decoder.resetStats();
 }
 
@@ -77,7 +75,7 @@ void V2Driver::handleFrames(const QList<v2::Frame> &frames)
 {
     // Handlers may close the link (e.g. a write that fails); stop as soon as it is gone.
     for (const v2::Frame &frame : frames) {
-        if (m_closed || !m_host.linkOpen())
+        if (m_closed)
             break;
         handleFrame(frame);
     }
@@ -93,13 +91,13 @@ void V2Driver::handleFrame(const v2::Frame &frame)
             else if constexpr (std::is_same_v<T, v2::Ack>)
                 m_queue.onAck(message);
             else if constexpr (std::is_same_v<T, v2::Params>)
-                handleParams(message.params);
+                handleTuning({message.params, std::nullopt});
             else if constexpr (std::is_same_v<T, v2::Effects>)
-                handleEffects(message.effects);
+                handleTuning({std::nullopt, message.effects});
             else if constexpr (std::is_same_v<T, v2::Pong>)
-                m_host.pongReceived(message.token);
+                m_links.ping.onPong(message.token);
             else if constexpr (std::is_same_v<T, v2::Log>)
-                m_host.deviceText(printableDeviceText(v2::toQString(message.text)));
+                m_links.deviceText(printableDeviceText(v2::toQString(message.text)));
             else if constexpr (std::is_same_v<T, v2::HelloReply>)
                 qCInfo(lcV2) << "late HELLO_REPLY ignored";
         },
@@ -113,47 +111,44 @@ void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &received)
     v2::Telemetry telemetry = received;
     if (!m_info.hasEffects())
         telemetry.tau_fx.reset();
-    if (!m_host.statistics().countTelemetry(seq, telemetry.t_us))
+    if (!m_links.statistics.countTelemetry(seq, telemetry.t_us))
         return;
     // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:
     // such a frame is counted and skipped, never integrated.
     if (!std::isfinite(telemetry.theta) || !std::isfinite(telemetry.omega) ||
         !std::isfinite(telemetry.tau) || !std::isfinite(telemetry.tau_rec) ||
         !std::isfinite(telemetry.tau_ext) || !std::isfinite(telemetry.tau_fx.value_or(0.0f))) {
-        m_host.statistics().countNonFinite();
+        m_links.statistics.countNonFinite();
         return;
     }
     if (m_pendingChange)
         applyPendingChange();
-    m_host.pushSample(m_host.builder().fromTelemetry(telemetry, m_host.hostUs()));
+    m_links.samples.push(
+        m_links.samples.builder().fromTelemetry(telemetry, m_links.clock.nsecsElapsed() / 1000));
 }
 
-void V2Driver::handleParams(const DeviceParams &params)
+void V2Driver::handleTuning(const DeviceTuning &told)
 {
     if (m_pendingChange)
         applyPendingChange(); // streaming off: no telemetry carried the change
-    m_host.paramsReceived(params);
-    m_queue.onParams(params);
-}
-
-void V2Driver::handleEffects(const EffectParams &effects)
-{
-    if (m_pendingChange)
-        applyPendingChange(); // streaming off: no telemetry carried the change
-    m_host.effectsReceived(effects);
-    m_queue.onEffects(effects);
+    m_links.samples.tuningReceived(told);
+    m_queue.onTuning(told);
 }
 
 void V2Driver::onAcknowledged(const Command &command)
 {
-    switch (command.kind) {
+    switch (command.stepKind()) {
     case CommandKind::SetParams:
-    case CommandKind::Zero:
+        m_pendingChange = PendingChange{CommandKind::SetParams, {command.tuning.params, {}}};
+        return;
     case CommandKind::SetEffects:
-        m_pendingChange = PendingChange{command.kind, command.params, command.effects};
+        m_pendingChange = PendingChange{CommandKind::SetEffects, {{}, command.tuning.effects}};
+        return;
+    case CommandKind::Zero:
+        m_pendingChange = PendingChange{CommandKind::Zero, {}};
         return;
     case CommandKind::SetStream:
-        m_host.statistics().restartSeq(); // a new stream: no gap to count against the old
+        m_links.statistics.restartSeq(); // a new stream: no gap to count against the old
         return;
     default:
         return;
@@ -164,15 +159,12 @@ void V2Driver::applyPendingChange()
 {
     const PendingChange change = *m_pendingChange;
     m_pendingChange.reset();
-    if (change.kind == CommandKind::SetEffects)
-        m_host.effectsApplied(change.effects);
-    else
-        m_host.paramsApplied(change.kind, change.params);
+    m_links.samples.tuningApplied(change.kind, change.applied);
 }
 
 void V2Driver::sendFeedback(double tauExt)
 {
-    m_host.write(v2::encodeFrame(m_feedbackSeq++, v2::SetFeedback{static_cast<float>(tauExt)}));
+    m_links.write(v2::encodeFrame(m_feedbackSeq++, v2::SetFeedback{static_cast<float>(tauExt)}));
 }
 
 bool V2Driver::sendPing(quint32 token)
@@ -182,7 +174,7 @@ bool V2Driver::sendPing(quint32 token)
     // ZERO twice. The probe simply waits for the next tick.
     if (m_queue.busy())
         return false;
-    m_host.write(v2::encodeFrame(m_queue.nextSeq(), v2::Ping{token}));
+    m_links.write(v2::encodeFrame(m_queue.nextSeq(), v2::Ping{token}));
     return true;
 }
 

@@ -1,5 +1,6 @@
-// The v2 protocol (protocol.md) of a connected device: frames in, telemetry to samples, ACKs
-// and PARAMS to the command queue, SET_FEEDBACK and PING out.
+// The v2 protocol (protocol.md) of a connected device: frames in, telemetry to samples, ACKs,
+// PARAMS and EFFECTS to the command queue (and the device's tuning to the samples), SET_FEEDBACK
+// and PING out.
 #pragma once
 
 #include "protocol/v2codec.h"
@@ -22,7 +23,7 @@ class V2Driver : public QObject, public ProtocolDriver
 public:
     //! `reply` is the device's HELLO_REPLY (checked by the caller); `decoder` continues
     //! detection's (the start of the frame after the reply may be in it).
-    V2Driver(DriverHost &host, CommandQueue &queue, const v2::HelloReply &reply,
+    V2Driver(DriverLinks links, CommandQueue &queue, const v2::HelloReply &reply,
              const ConnectOptions &options, qint32 baud, v2::FrameDecoder decoder);
     ~V2Driver() override;
 
@@ -52,21 +53,21 @@ public:
     StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedV2; }
 
 private:
+    //! An acknowledged change, applied with the next sample (or the read-back).
     struct PendingChange
     {
         CommandKind kind = CommandKind::SetParams; //!< SetParams, Zero or SetEffects
-        DeviceParams params;
-        EffectParams effects;
+        DeviceTuning applied;                      //!< the part it sent
     };
 
     void handleFrame(const v2::Frame &frame);
     void handleTelemetry(quint8 seq, const v2::Telemetry &telemetry);
-    void handleParams(const DeviceParams &params);
-    void handleEffects(const EffectParams &effects);
+    //! A PARAMS or EFFECTS: `told` has the part it carried.
+    void handleTuning(const DeviceTuning &told);
     void onAcknowledged(const Command &command);
     void applyPendingChange();
 
-    DriverHost &m_host;
+    DriverLinks m_links;
     CommandQueue &m_queue;
     DeviceInfo m_info;
     quint16 m_streamRateHz; //!< asked for on start()

@@ -48,7 +48,7 @@ ChatterWatch::ChatterWatch(ParameterEditor *editor) : QObject(editor), m_editor(
 
 void ChatterWatch::addSamples(const SampleBatch &batch)
 {
-    const std::optional<DeviceParams> params = m_editor->deviceParams();
+    const std::optional<DeviceParams> params = m_editor->deviceTuning().params;
     if (params != m_params) {
         m_params = params;
         m_detector.setParams(params);

@@ -19,10 +19,8 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
     connect(m_client, &DeviceClient::stateChanged, this,
             [this](SessionState state) { onStateChanged(state); });
     connect(m_client, &DeviceClient::deviceInfoChanged, this, &DeviceParameterLink::onDeviceInfo);
-    connect(m_client, &DeviceClient::deviceParamsChanged, m_editor,
-            &ParameterEditor::setDeviceParams);
-    connect(m_client, &DeviceClient::deviceEffectsChanged, m_editor,
-            [this](const EffectParams &effects) { m_editor->setDeviceEffects(effects); });
+    connect(m_client, &DeviceClient::deviceTuningChanged, m_editor,
+            &ParameterEditor::setDeviceTuning);
     connect(m_client, &DeviceClient::commandFinished, this,
             &DeviceParameterLink::onCommandFinished);
     onStateChanged(m_client->state());
@@ -37,24 +35,14 @@ void DeviceParameterLink::prepare(ConnectOptions &options)
     m_client->setHostParams(m_editor->hostParams());
 }
 
-void DeviceParameterLink::onPushRequested(const DeviceParams &params,
-                                          const std::optional<EffectParams> &effects)
+void DeviceParameterLink::onPushRequested(const DeviceTuning &tuning)
 {
-    Push push;
-    push.before = m_client->deviceParams();
-    push.id = m_client->pushParams(params);
-    if (effects) {
-        push.effectsBefore = m_client->deviceEffects();
-        push.effectsId = m_client->pushEffects(*effects);
-    }
-    m_push = push;
+    m_push = Push{m_client->pushTuning(tuning), m_client->deviceTuning()};
 }
 
 void DeviceParameterLink::readFromDevice()
 {
-    m_commands.insert(m_client->readParams(), CommandKind::GetParams);
-    if (m_client->deviceInfo().hasEffects())
-        m_commands.insert(m_client->readEffects(), CommandKind::GetEffects);
+    m_commands.insert(m_client->readTuning(), CommandKind::GetParams);
 }
 
 void DeviceParameterLink::zero()
@@ -73,7 +61,7 @@ void DeviceParameterLink::onStateChanged(SessionState state)
     m_editor->setCanPush(connected && m_client->deviceInfo().canSetParams(),
                          connected ? tr("the legacy protocol cannot carry parameters") : QString());
     if (state == SessionState::Disconnected)
-        m_editor->clearDeviceParams();
+        m_editor->setDeviceTuning({});
     refreshEffectsAvailability();
 }
 
@@ -101,10 +89,8 @@ void DeviceParameterLink::refreshEffectsAvailability()
 
 void DeviceParameterLink::onCommandFinished(quint64 id, const CommandResult &result)
 {
-    if (m_push && (m_push->id == id || (m_push->effectsId != 0 && m_push->effectsId == id))) {
-        (m_push->id == id ? m_push->result : m_push->effectsResult) = result;
-        if (m_push->result && (m_push->effectsId == 0 || m_push->effectsResult))
-            finishPush();
+    if (m_push && m_push->id == id) {
+        finishPush(result);
     } else if (const auto it = m_commands.constFind(id); it != m_commands.cend()) {
         const CommandKind kind = it.value();
         m_commands.erase(it);
@@ -112,28 +98,16 @@ void DeviceParameterLink::onCommandFinished(quint64 id, const CommandResult &res
     }
 }
 
-void DeviceParameterLink::finishPush()
+void DeviceParameterLink::finishPush(const CommandResult &result)
 {
     const Push push = *m_push;
     m_push.reset();
-    // The first failure is the push's outcome; SET_EFFECTS follows SET_PARAMS on the wire.
-    const CommandResult &result =
-        !push.result->ok() || !push.effectsResult ? *push.result : *push.effectsResult;
     m_editor->pushFinished(result);
     if (result.ok()) {
         // What changed is what the device held against what travelled (float32, bounds kept
         // by the session's one rounding: `sent`), never the editor's doubles: the walls' ±π
         // travel as the float just inside π, which the device already held.
-        QStringList changes;
-        if (const QString p = describeParamChange(push.before, push.result->sent); !p.isEmpty())
-            changes << p;
-        if (push.effectsResult) {
-            const QString fx =
-                describeEffectChange(push.effectsBefore, push.effectsResult->effectsSent);
-            if (!fx.isEmpty())
-                changes << fx;
-        }
-        const QString change = changes.join(u"; ");
+        const QString change = describeTuningChange(push.before, result.sent);
         m_lastMessage = change.isEmpty() ? tr("Pushed (no change).") : tr("Pushed: %1").arg(change);
         if (!change.isEmpty())
             Q_EMIT deviceChanged(change);
@@ -149,11 +123,6 @@ void DeviceParameterLink::finishCommand(CommandKind kind, const CommandResult &r
     switch (kind) {
     case CommandKind::GetParams:
         what = tr("Read");
-        break;
-    case CommandKind::GetEffects:
-        if (result.ok())
-            return; // the parameters' read says "done"
-        what = tr("Read effects");
         break;
     case CommandKind::Vibrate:
         what = result.vibration.amplitude > 0 ? tr("Vibrate") : tr("Stop vibration");

@@ -1,6 +1,6 @@
-// The round trip of the parameters and the effect block between the editor and the device, in
-// one place: edit → push (SET_PARAMS, and SET_EFFECTS when the device renders effects) → ACK →
-// read-back → in sync. It sends what the editor asks for (and its vibration tests),
+// The round trip of the device's tuning between the editor and the device, in one place: edit →
+// push (the parameters, and the effects when the device renders them) → ACK → read-back → in
+// sync, one command and one result. It sends what the editor asks for (and its vibration tests),
 // hands the device's answers and read-backs back to the editor (which shows the sync state),
 // keeps the editor's host parameters in the session, and words the outcome of every parameter
 // command (push, read, ZERO, save in the device) for the status bar and the event markers.
@@ -48,23 +48,18 @@ private:
     void onStateChanged(SessionState state);
     void onDeviceInfo(const DeviceInfo &info);
     void refreshEffectsAvailability();
-    void onPushRequested(const DeviceParams &params, const std::optional<EffectParams> &effects);
+    void onPushRequested(const DeviceTuning &tuning);
     void onCommandFinished(quint64 id, const CommandResult &result);
-    void finishPush();
+    void finishPush(const CommandResult &result);
     void finishCommand(CommandKind kind, const CommandResult &result);
 
     DeviceClient *m_client;
     ParameterEditor *m_editor;
-    //! The push in flight (the editor sends one at a time) and what it changes: SET_PARAMS,
-    //! and SET_EFFECTS when the effects go along. It finishes when both have answered.
+    //! The push in flight (the editor sends one at a time).
     struct Push
     {
         quint64 id = 0;
-        DeviceParams before;   //!< the device's values when the push was sent
-        quint64 effectsId = 0; //!< 0: no SET_EFFECTS
-        EffectParams effectsBefore;
-        std::optional<CommandResult> result;        //!< SET_PARAMS' answer, once there
-        std::optional<CommandResult> effectsResult; //!< SET_EFFECTS' answer, once there
+        DeviceTuning before; //!< the device's tuning when the push was sent
     };
     std::optional<Push> m_push;
     QHash<quint64, CommandKind> m_commands; //!< other commands in flight

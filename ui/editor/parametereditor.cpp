@@ -77,14 +77,15 @@ ParameterEditor::~ParameterEditor() = default;
 
 void ParameterEditor::revert()
 {
-    if (!m_sync.device())
+    const DeviceTuning &device = m_sync.device();
+    if (!device.params)
         return;
     Tuning t = tuning();
     for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        t.device.setField(i, shortestFloatDecimal(m_sync.device()->field(i)));
+        t.device.setField(i, shortestFloatDecimal(device.params->field(i)));
     // The device's float32 effects, unless they are the edited ones as sent: the defaults ±π
     // travel as the float just inside π and need no revert.
-    if (const auto &fx = m_sync.deviceEffects(); fx && !sameOnWire(effectsOnWire(), *fx)) {
+    if (const auto &fx = device.effects; fx && !sameOnWire(effectsOnWire(), *fx)) {
         for (int i = 0; i < EffectParams::kFieldCount; ++i)
             t.effects.setField(i, shortestFloatDecimal(fx->field(i)));
     }
@@ -94,6 +95,11 @@ void ParameterEditor::revert()
 EffectParams ParameterEditor::effectsOnWire() const
 {
     return roundedForWire(m_effects, m_host.tau_limit);
+}
+
+DeviceTuning ParameterEditor::editedOnWire() const
+{
+    return {m_params, m_sync.effectsTracked() ? std::optional(effectsOnWire()) : std::nullopt};
 }
 
 void ParameterEditor::onFieldEdited(const QString &key, double value)
@@ -187,26 +193,10 @@ void ParameterEditor::applyTuning(const Tuning &tuning)
     }
 }
 
-void ParameterEditor::setDeviceParams(const DeviceParams &device)
+void ParameterEditor::setDeviceTuning(const DeviceTuning &device)
 {
     m_sync.setDevice(device);
-    refreshDiff();
-    refreshSync();
-    refreshActions();
-}
-
-void ParameterEditor::clearDeviceParams()
-{
-    m_sync.setDevice(std::nullopt);
     revalidate();
-    refreshDiff();
-    refreshSync();
-    refreshActions();
-}
-
-void ParameterEditor::setDeviceEffects(const std::optional<EffectParams> &effects)
-{
-    m_sync.setDeviceEffects(effects);
     refreshDiff();
     refreshSync();
     refreshActions();
@@ -247,8 +237,9 @@ void ParameterEditor::setTauLimit(double tauLimit)
 void ParameterEditor::pushFinished(const CommandResult &result)
 {
     if (!m_sync.pushFinished(result))
-        return;   // a late answer after a disconnect
-    revalidate(); // shows or clears the field the device named
+        return;    // a late answer after a disconnect
+    revalidate();  // shows or clears the field the device named
+    refreshDiff(); // the result carries the read-back
     refreshSync();
     refreshActions();
     scheduleLivePush();
@@ -259,15 +250,15 @@ void ParameterEditor::startPush()
     // The effects go along while the device renders them and its read-back is not them yet.
     std::optional<EffectParams> effects;
     const EffectParams onWire = effectsOnWire();
-    if (m_sync.effectsTracked() &&
-        (!m_sync.deviceEffects() || !sameOnWire(onWire, *m_sync.deviceEffects())))
+    const std::optional<EffectParams> &fx = m_sync.device().effects;
+    if (m_sync.effectsTracked() && (!fx || !sameOnWire(onWire, *fx)))
         effects = m_effects;
-    m_sync.pushStarted(m_params, effects ? std::optional(onWire) : std::nullopt);
+    m_sync.pushStarted(editedOnWire());
     m_sinceLastPush.start();
     revalidate();
     refreshSync();
     refreshActions();
-    Q_EMIT pushRequested(m_params, effects);
+    Q_EMIT pushRequested({m_params, effects});
 }
 
 void ParameterEditor::scheduleLivePush()
@@ -345,12 +336,12 @@ void ParameterEditor::refreshDiff()
 {
     for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
         ParameterField *f = m_fields.value(QString::fromLatin1(deviceFieldName(i)));
-        const auto &device = m_sync.device();
+        const auto &device = m_sync.device().params;
         f->setDeviceValue(device ? std::optional<double>(device->field(i)) : std::nullopt);
     }
     // An effect field differs when what it sends differs from the read-back; the marker then
     // shows the device's value.
-    const auto &fx = m_sync.deviceEffects();
+    const auto &fx = m_sync.device().effects;
     const EffectParams onWire = effectsOnWire();
     for (int i = 0; i < EffectParams::kFieldCount; ++i) {
         ParameterField *f = m_fields.value(QString::fromLatin1(effectFieldName(i)));
@@ -371,9 +362,9 @@ void ParameterEditor::refreshDerived()
 
 void ParameterEditor::refreshSync()
 {
-    const EffectParams onWire = effectsOnWire();
-    const SyncState state = m_sync.state(m_params, onWire);
-    const QString text = m_sync.text(m_params, onWire);
+    const DeviceTuning edited = editedOnWire();
+    const SyncState state = m_sync.state(edited);
+    const QString text = m_sync.text(edited);
     m_syncBar->setState(state, text);
 
     if (state != m_syncState || text != m_syncText) {
@@ -392,8 +383,8 @@ void ParameterEditor::refreshActions()
                 : tr("Fix the invalid fields first:\n%1").arg(m_problems.join(u'\n')));
     m_syncBar->setProblems(m_problems);
     m_readAction->setEnabled(m_sync.canPush() && !pushing);
-    const auto &device = m_sync.device();
-    const auto &fx = m_sync.deviceEffects();
+    const auto &device = m_sync.device().params;
+    const auto &fx = m_sync.device().effects;
     const bool differs =
         device && (!sameOnWire(m_params, *device) || (fx && !sameOnWire(effectsOnWire(), *fx)));
     m_revertAction->setEnabled(!pushing && differs);

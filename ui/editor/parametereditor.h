@@ -56,14 +56,10 @@ public:
     void setParams(const DeviceParams &device, const HostParams &host, const QString &undoText);
     void applyParams(const DeviceParams &device, const HostParams &host);
 
-    //! The device's read-back: drives the diff markers and the sync state.
-    void setDeviceParams(const DeviceParams &device);
-    //! Disconnected: no diff markers, no sync state.
-    void clearDeviceParams();
-    std::optional<DeviceParams> deviceParams() const { return m_sync.device(); }
-    //! The device's effect block as read back; nullopt: unknown (or no effects).
-    void setDeviceEffects(const std::optional<EffectParams> &effects);
-    std::optional<EffectParams> deviceEffects() const { return m_sync.deviceEffects(); }
+    //! The device's tuning as read: drives the diff markers and the sync state. Without
+    //! parameters (disconnected): no diff markers, no sync state.
+    void setDeviceTuning(const DeviceTuning &device);
+    const DeviceTuning &deviceTuning() const { return m_sync.device(); }
     //! Whether the connected device renders effects (the effects are then pushed and kept in
     //! sync with the parameters); `reason` says why not. `controlRate` [Hz] is the device's
     //! control rate, for the passivity figures and the vibration test's Nyquist rule.
@@ -116,9 +112,8 @@ Q_SIGNALS:
     void paramsEdited(); //!< the edited set changed (edit, undo/redo, setParams)
     void hostParamsChanged(const hatpic::HostParams &host);
     //! Push or a live-push tick: the parameters, and the effects when the device renders
-    //! effects and its read-back differs from them (nullopt: not sent).
-    void pushRequested(const hatpic::DeviceParams &params,
-                       const std::optional<hatpic::EffectParams> &effects);
+    //! effects and its read-back differs from them (absent: not sent).
+    void pushRequested(const hatpic::DeviceTuning &tuning);
     //! The vibration test's Vibrate or Stop (already valid).
     void vibrateRequested(const hatpic::Vibration &vibration);
     void readRequested();
@@ -138,6 +133,9 @@ private:
     void recordEdit(const Tuning &tuning, const QString &text, const QString &field);
     //! The effects as SET_EFFECTS carries them (what the device's read-back must equal).
     EffectParams effectsOnWire() const;
+    //! The edited parameters, and the effects as they travel while the device renders them:
+    //! what the sync compares.
+    DeviceTuning editedOnWire() const;
     void revert();
     void startPush();
     void scheduleLivePush();

@@ -19,47 +19,28 @@ void SyncTracker::setCanPush(bool canPush, const QString &reason)
 {
     m_canPush = canPush;
     m_cannotPushReason = reason;
-    if (!canPush) {
-        m_pushing = false;
-        m_awaitingReadback = false;
-    }
+    if (!canPush)
+        m_pushing.reset();
 }
 
-void SyncTracker::setDevice(const std::optional<DeviceParams> &device)
+void SyncTracker::setDevice(const DeviceTuning &device)
 {
     m_device = device;
-    if (!device) {
-        m_pushing = false;
-        m_awaitingReadback = false;
-        m_awaitingEffectsReadback = false;
-        m_pushedOk = false;
+    if (!device.params) {
+        m_pushing.reset();
+        m_pushed.reset();
         m_failure.reset();
         m_rejectedField.clear();
-        m_deviceEffects.reset();
-    } else if (m_pushing) {
-        // The read-back of this push may arrive before the push's own result.
-        m_readbackDuringPush = true;
-    } else {
-        m_awaitingReadback = false;
+    } else if (m_failure == SyncState::AwaitingReadback) {
+        m_failure.reset(); // read at last
     }
 }
 
 void SyncTracker::setEffectsTracked(bool tracked)
 {
     m_effectsTracked = tracked;
-    if (!tracked) {
-        m_deviceEffects.reset();
-        m_awaitingEffectsReadback = false;
-    }
-}
-
-void SyncTracker::setDeviceEffects(const std::optional<EffectParams> &effects)
-{
-    m_deviceEffects = effects;
-    if (m_pushing)
-        m_effectsReadbackDuringPush = true; // it may arrive before the push's own result
-    else
-        m_awaitingEffectsReadback = false;
+    if (!tracked)
+        m_device.effects.reset();
 }
 
 void SyncTracker::edited()
@@ -68,34 +49,29 @@ void SyncTracker::edited()
     m_rejectedField.clear();
 }
 
-void SyncTracker::pushStarted(const DeviceParams &pushed,
-                              const std::optional<EffectParams> &effects)
+void SyncTracker::pushStarted(const DeviceTuning &edited)
 {
-    m_pushing = true;
-    m_awaitingReadback = true;
-    m_awaitingEffectsReadback = effects.has_value();
-    m_readbackDuringPush = false;
-    m_effectsReadbackDuringPush = false;
-    m_pushedOk = false;
+    m_pushing = edited;
+    m_pushed.reset();
     m_failure.reset();
     m_rejectedField.clear();
-    m_lastPushed = pushed;
-    m_lastPushedEffects = effects;
 }
 
 bool SyncTracker::pushFinished(const CommandResult &result)
 {
     if (!m_pushing)
         return false;
-    m_pushing = false;
+    const DeviceTuning pushed = *m_pushing;
+    m_pushing.reset();
     if (result.ok()) {
-        m_pushedOk = true;
-        m_awaitingReadback = !m_readbackDuringPush;
-        m_awaitingEffectsReadback = m_awaitingEffectsReadback && !m_effectsReadbackDuringPush;
+        m_device = m_device.updatedBy(result.received);
+        m_pushed = pushed;
+        if (!result.readBack) {
+            m_failure = SyncState::AwaitingReadback;
+            m_failureText = tr("pushing… (waiting for the read-back)");
+        }
         return true;
     }
-    m_awaitingReadback = false;
-    m_awaitingEffectsReadback = false;
     switch (result.status) {
     case CommandResult::Status::Rejected: {
         m_failure = SyncState::Rejected;
@@ -116,14 +92,7 @@ bool SyncTracker::pushFinished(const CommandResult &result)
     return true;
 }
 
-bool SyncTracker::inSync(const DeviceParams &edited, const EffectParams &editedEffects) const
-{
-    if (!sameOnWire(edited, *m_device))
-        return false;
-    return !m_effectsTracked || (m_deviceEffects && sameOnWire(editedEffects, *m_deviceEffects));
-}
-
-SyncState SyncTracker::state(const DeviceParams &edited, const EffectParams &editedEffects) const
+SyncState SyncTracker::state(const DeviceTuning &edited) const
 {
     if (!m_canPush)
         return SyncState::NotConnected;
@@ -131,22 +100,21 @@ SyncState SyncTracker::state(const DeviceParams &edited, const EffectParams &edi
         return SyncState::Pushing;
     if (m_failure)
         return *m_failure;
-    if (!m_device || (m_effectsTracked && !m_deviceEffects))
+    if (!m_device.params || (m_effectsTracked && !m_device.effects))
         return SyncState::NotRead;
-    if (m_awaitingReadback || m_awaitingEffectsReadback)
-        return SyncState::AwaitingReadback;
-    if (inSync(edited, editedEffects))
+    // The parts that count: the effects only while the device renders them.
+    const DeviceTuning device{m_device.params, m_effectsTracked ? m_device.effects : std::nullopt};
+    const DeviceTuning wanted{edited.params, m_effectsTracked ? edited.effects : std::nullopt};
+    if (sameOnWire(wanted, device))
         return SyncState::InSync;
-    const bool effectsAsPushed =
-        !m_effectsTracked || (m_lastPushedEffects && *m_lastPushedEffects == editedEffects);
-    if (m_pushedOk && edited == m_lastPushed && effectsAsPushed)
+    if (m_pushed && sameOnWire(wanted, *m_pushed))
         return SyncState::ReadbackDiffers;
     return SyncState::Edited;
 }
 
-QString SyncTracker::text(const DeviceParams &edited, const EffectParams &editedEffects) const
+QString SyncTracker::text(const DeviceTuning &edited) const
 {
-    switch (state(edited, editedEffects)) {
+    switch (state(edited)) {
     case SyncState::NotConnected:
         return m_cannotPushReason.isEmpty() ? tr("not connected") : m_cannotPushReason;
     case SyncState::NotRead:
@@ -155,12 +123,11 @@ QString SyncTracker::text(const DeviceParams &edited, const EffectParams &edited
         return tr("edited — not pushed");
     case SyncState::Pushing:
         return tr("pushing…");
-    case SyncState::AwaitingReadback:
-        return tr("pushing… (waiting for the read-back)");
     case SyncState::InSync:
         return tr("in sync");
     case SyncState::ReadbackDiffers:
         return tr("not in sync: the device's read-back differs (see ● markers)");
+    case SyncState::AwaitingReadback:
     case SyncState::Rejected:
     case SyncState::Timeout:
     case SyncState::Failed:

@@ -62,7 +62,7 @@ ExperimentsPanel::ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidg
         if (!running() && !m_result)
             showReadyHint();
     });
-    connect(m_client, &DeviceClient::deviceParamsChanged, this, [this] {
+    connect(m_client, &DeviceClient::deviceTuningChanged, this, [this] {
         if (!running() && !m_result)
             fillDefaults();
     });
@@ -255,8 +255,9 @@ void ExperimentsPanel::onKindChanged()
 
 void ExperimentsPanel::fillDefaults()
 {
-    const ExperimentPlan p = ExperimentPlan::defaults(ExperimentKind(m_kind->currentData().toInt()),
-                                                      m_client->deviceParams());
+    const ExperimentPlan p =
+        ExperimentPlan::defaults(ExperimentKind(m_kind->currentData().toInt()),
+                                 m_client->deviceTuning().params.value_or(DeviceParams{}));
     m_from->setValue(p.tauFrom);
     m_to->setValue(p.tauTo);
     m_offset->setValue(p.offset);

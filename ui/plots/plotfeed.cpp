@@ -60,29 +60,17 @@ void PlotFeed::appendLive(const SampleBatch &batch)
     }
 }
 
-void PlotFeed::setLiveDeviceParams(const std::optional<DeviceParams> &params)
+void PlotFeed::setLiveDeviceTuning(const DeviceTuning &tuning)
 {
-    m_liveParams = params;
-    if (!params)
-        setLiveDeviceEffects(std::nullopt);
-    else
-        m_live.setEffects(m_liveEffects, params->theta0); // θ0 may have changed
+    m_liveTuning = {tuning.params, tuning.params ? tuning.effects : std::nullopt};
+    // τ_fx's parts of the samples from now on; they need θ0 (which may have changed).
+    m_live.setEffects(m_liveTuning.effects, tuning.params ? tuning.params->theta0 : 0.0);
     if (isReplaying())
         return;
-    m_plots->setDeviceParams(params);
-    Q_EMIT deviceParamsShown(params);
-    if (!params)
+    m_plots->setDeviceParams(m_liveTuning.params);
+    Q_EMIT deviceTuningShown(m_liveTuning);
+    if (!tuning.params)
         Q_EMIT operatingPointCleared();
-}
-
-void PlotFeed::setLiveDeviceEffects(const std::optional<EffectParams> &effects)
-{
-    m_liveEffects = effects;
-    // τ_fx's parts of the samples from now on; they need θ0, so the device's parameters too.
-    m_live.setEffects(m_liveParams ? effects : std::nullopt,
-                      m_liveParams ? m_liveParams->theta0 : 0.0);
-    if (!isReplaying())
-        Q_EMIT deviceEffectsShown(effects);
 }
 
 void PlotFeed::setLiveHostParams(const HostParams &host)
@@ -148,24 +136,23 @@ void PlotFeed::onReplayActive(bool active)
         m_plots->setSource(&m_replay->buffer());
         m_plots->setFollowLatest(false);
         m_plots->setEvents(rec.events);
-        const std::optional<DeviceParams> params =
-            rec.hasMetadata ? std::optional(rec.metadata.params) : std::nullopt;
-        m_plots->setDeviceParams(params);
+        const DeviceTuning recorded = rec.hasMetadata
+                                          ? DeviceTuning{rec.metadata.params, rec.metadata.effects}
+                                          : DeviceTuning{};
+        m_plots->setDeviceParams(recorded.params);
         m_plots->setHostParams(rec.hasMetadata ? rec.metadata.host : m_liveHost);
         Q_EMIT replayingChanged(true);
-        Q_EMIT deviceParamsShown(params);
-        Q_EMIT deviceEffectsShown(rec.hasMetadata ? rec.metadata.effects : std::nullopt);
+        Q_EMIT deviceTuningShown(recorded);
         onReplayPosition(m_replay->position());
     } else {
         m_plots->setDataEnd(std::nullopt);
         m_plots->setSource(&m_live);
         m_plots->setFollowLatest(true);
         m_plots->setEvents(m_liveEvents);
-        m_plots->setDeviceParams(m_liveParams);
+        m_plots->setDeviceParams(m_liveTuning.params);
         m_plots->setHostParams(m_liveHost);
         Q_EMIT replayingChanged(false);
-        Q_EMIT deviceParamsShown(m_liveParams);
-        Q_EMIT deviceEffectsShown(m_liveEffects);
+        Q_EMIT deviceTuningShown(m_liveTuning);
         Q_EMIT operatingPointCleared();
     }
     Q_EMIT pausedChanged();

@@ -4,8 +4,7 @@
 // operating point other views follow all come from here.
 #pragma once
 
-#include "model/effects.h"
-#include "model/params.h"
+#include "model/devicetuning.h"
 #include "plots/samplebuffer.h"
 #include "telemetry/recording.h"
 
@@ -34,12 +33,9 @@ public:
     //! The live stream: every batch is kept (also while replaying or paused).
     void appendLive(const SampleBatch &batch);
     const SampleBuffer &liveBuffer() const { return m_live; }
-    //! The connected device's parameters (θ0 and the bands); nullopt: no device (and so no
-    //! device effects either).
-    void setLiveDeviceParams(const std::optional<DeviceParams> &params);
-    //! The connected device's effect block (its read-back); nullopt: none known (a device
-    //! without the effects capability).
-    void setLiveDeviceEffects(const std::optional<EffectParams> &effects);
+    //! The connected device's tuning as read: its parameters (θ0 and the bands; absent: no
+    //! device, and so no effects either) and its effect block (absent: none known).
+    void setLiveDeviceTuning(const DeviceTuning &tuning);
     //! The editor's host parameters (units of the reference plot; also for a replayed
     //! recording that carries none).
     void setLiveHostParams(const HostParams &host);
@@ -62,10 +58,8 @@ Q_SIGNALS:
     void replayingChanged(bool replaying);
     //! Live paused or thawed, replay played or paused.
     void pausedChanged();
-    //! The parameters of what is shown: the device's live, the recording's in replay.
-    void deviceParamsShown(const std::optional<hatpic::DeviceParams> &params);
-    //! The effect block of what is shown: the device's live, the recording's in replay.
-    void deviceEffectsShown(const std::optional<hatpic::EffectParams> &effects);
+    //! The device's tuning of what is shown: the device's live, the recording's in replay.
+    void deviceTuningShown(const hatpic::DeviceTuning &tuning);
     //! The knob's state at the newest live sample or at the replay's playhead: θ [rad] and the
     //! static torque measured, τ_rec + τ_fx (τ_rec alone where τ_fx is not known) [N·m].
     void operatingPoint(double theta, double tauRec);
@@ -79,8 +73,7 @@ private:
     ReplayController *m_replay = nullptr;
     SampleBuffer m_live;
     QList<RecordingEvent> m_liveEvents;
-    std::optional<DeviceParams> m_liveParams;
-    std::optional<EffectParams> m_liveEffects;
+    DeviceTuning m_liveTuning; //!< effects only with parameters
     HostParams m_liveHost;
 };
 

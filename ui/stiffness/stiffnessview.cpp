@@ -312,9 +312,10 @@ void StiffnessView::setEditedParams(const DeviceParams &params)
     rebuild();
 }
 
-void StiffnessView::setDeviceParams(const std::optional<DeviceParams> &params)
+void StiffnessView::setDeviceTuning(const DeviceTuning &device)
 {
-    m_device = params;
+    m_device = device.params;
+    m_deviceEffects = device.effects;
     rebuild();
 }
 
@@ -323,12 +324,6 @@ void StiffnessView::setEditedEffects(const EffectParams &effects)
     if (effects == m_editedEffects)
         return; // as setEditedParams: a parameter edit leaves the effects as they are
     m_editedEffects = effects;
-    rebuild();
-}
-
-void StiffnessView::setDeviceEffects(const std::optional<EffectParams> &effects)
-{
-    m_deviceEffects = effects;
     rebuild();
 }
 

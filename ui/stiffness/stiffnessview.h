@@ -5,8 +5,7 @@
 // nothing) the curves are τ_rec(θ) and K_rec(θ) alone.
 #pragma once
 
-#include "model/effects.h"
-#include "model/params.h"
+#include "model/devicetuning.h"
 
 #include <QVector>
 #include <QWidget>
@@ -41,13 +40,11 @@ public:
     ~StiffnessView() override;
 
     void setEditedParams(const DeviceParams &params);
-    //! The device's parameters, drawn dashed; nullopt hides them.
-    void setDeviceParams(const std::optional<DeviceParams> &params);
+    //! The device's tuning, drawn dashed: its parameters (absent: hidden) with its effect block
+    //! (absent: a device without the effects capability, drawn without effects).
+    void setDeviceTuning(const DeviceTuning &device);
     //! The edited effect block: its detents and walls join the edited static torque curve.
     void setEditedEffects(const EffectParams &effects);
-    //! The device's effect block, drawn with the device's parameters; nullopt (a device
-    //! without the effects capability, or none) draws them without effects.
-    void setDeviceEffects(const std::optional<EffectParams> &effects);
     //! Live operating point: knob angle [rad] and the measured static torque τ_rec + τ_fx
     //! (τ_rec alone where the device does not send τ_fx) [N·m].
     void setOperatingPoint(double theta, double tauRec);
@@ -118,8 +115,8 @@ private:
     double scale() const;
 
     DeviceParams m_edited;
-    std::optional<DeviceParams> m_device;
-    std::optional<DeviceParams> m_other; //!< the other A/B slot, when compared
+    std::optional<DeviceParams> m_device; //!< the device's tuning, as setDeviceTuning() gave it
+    std::optional<DeviceParams> m_other;  //!< the other A/B slot, when compared
     EffectParams m_editedEffects;
     std::optional<EffectParams> m_deviceEffects;
     EffectParams m_otherEffects;

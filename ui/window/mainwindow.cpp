@@ -229,18 +229,14 @@ void MainWindow::connectParts()
     connect(m_client, &DeviceClient::samplesReady, m_feed, &PlotFeed::appendLive);
     connect(m_client, &DeviceClient::samplesReady, new ChatterWatch(m_editor),
             &ChatterWatch::addSamples); // warns in the derived figures
-    connect(m_client, &DeviceClient::deviceParamsChanged, m_feed,
-            [this](const DeviceParams &params) { m_feed->setLiveDeviceParams(params); });
+    connect(m_client, &DeviceClient::deviceTuningChanged, m_feed, &PlotFeed::setLiveDeviceTuning);
     connect(m_editor, &ParameterEditor::hostParamsChanged, m_feed, &PlotFeed::setLiveHostParams);
     connect(m_paramLink, &DeviceParameterLink::deviceChanged, m_feed, &PlotFeed::addLiveEvent);
     connect(m_feed, &PlotFeed::replayingChanged, m_stiffness, &StiffnessView::setReplaying);
-    connect(m_feed, &PlotFeed::deviceParamsShown, m_stiffness, &StiffnessView::setDeviceParams);
+    connect(m_feed, &PlotFeed::deviceTuningShown, m_stiffness, &StiffnessView::setDeviceTuning);
     connect(m_feed, &PlotFeed::operatingPoint, m_stiffness, &StiffnessView::setOperatingPoint);
     connect(m_feed, &PlotFeed::operatingPointCleared, m_stiffness,
             &StiffnessView::clearOperatingPoint);
-    connect(m_client, &DeviceClient::deviceEffectsChanged, m_feed,
-            [this](const EffectParams &effects) { m_feed->setLiveDeviceEffects(effects); });
-    connect(m_feed, &PlotFeed::deviceEffectsShown, m_stiffness, &StiffnessView::setDeviceEffects);
     connect(m_feed, &PlotFeed::replayingChanged, this, &MainWindow::updateActions);
     connect(m_feed, &PlotFeed::pausedChanged, this, &MainWindow::updateActions);
     connect(m_replayBar, &ReplayBar::backToLiveRequested, this, &MainWindow::backToLive);
@@ -317,7 +313,7 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
         m_simDock->hide();
         m_simDock->toggleViewAction()->setEnabled(false);
         m_simPanel->statusLabel()->hide();
-        m_feed->setLiveDeviceParams(std::nullopt);
+        m_feed->setLiveDeviceTuning({});
     }
     // The banner already says why the link was lost or refused; the status bar, which clips a
     // long text against the link statistics, only repeats the other details.

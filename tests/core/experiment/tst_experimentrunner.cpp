@@ -56,7 +56,7 @@ struct Bench
     bool push(const DeviceParams &params)
     {
         QSignalSpy done(&client, &DeviceClient::commandFinished);
-        client.pushParams(params);
+        client.pushTuning({params, std::nullopt});
         return done.wait(kConnectMs) && done.first().at(1).value<CommandResult>().ok();
     }
 
@@ -110,8 +110,8 @@ void TestExperimentRunner::stepRecoversTheModel()
     QFETCH(double, M);
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
-    DeviceParams params = bench.client.deviceParams();
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
+    DeviceParams params = bench.client.deviceTuning().params.value();
     params.D_adm = D;
     params.M_adm = M;
     QVERIFY(bench.push(params));
@@ -171,15 +171,15 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
     QObject::connect(&client, &DeviceClient::samplesReady,
                      [&samples](const SampleBatch &b) { samples.append(b); });
     client.connectDevice(o);
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectMs);
-    DeviceParams params = client.deviceParams();
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params.has_value(), kConnectMs);
+    DeviceParams params = client.deviceTuning().params.value();
     params.D_adm = 2e-3; // the slow knob of stepRecoversTheModel: 14.1 rad/s, ζ 0.707
     params.M_adm = 4e-2;
     QSignalSpy pushed(&client, &DeviceClient::commandFinished);
-    client.pushParams(params);
+    client.pushTuning({params, std::nullopt});
     QVERIFY(pushed.wait(kConnectMs));
-    QTRY_VERIFY_WITH_TIMEOUT(std::abs(client.deviceParams().D_adm - params.D_adm) < 1e-9,
-                             kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        std::abs(client.deviceTuning().params.value().D_adm - params.D_adm) < 1e-9, kConnectMs);
 
     ExperimentRunner runner(client);
     QCOMPARE(ExperimentRunner::handFor(client), RunHand::SimulatedIdle);
@@ -218,9 +218,9 @@ void TestExperimentRunner::bodeMatchesTheModelBelowTheBandwidth()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
     ExperimentRunner runner(bench.client);
-    const DeviceParams params = bench.client.deviceParams();
+    const DeviceParams params = bench.client.deviceTuning().params.value();
     ExperimentPlan plan = ExperimentPlan::defaults(ExperimentKind::Frequency, params);
     // Fewer, higher points than the defaults (which start at a tenth of the bandwidth), so
     // the run stays short.
@@ -249,7 +249,7 @@ void TestExperimentRunner::spectrumShowsTheKnobAtRest()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
     ExperimentRunner runner(bench.client);
     ExperimentPlan plan = ExperimentPlan::defaults(ExperimentKind::Spectrum, {});
     plan.duration = 0.5;
@@ -265,10 +265,10 @@ void TestExperimentRunner::cancelRestoresZeroFeedback()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
     ExperimentRunner runner(bench.client);
     ExperimentPlan plan =
-        ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceParams());
+        ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceTuning().params.value());
     plan.duration = 10; // would run for 10 s
     QSignalSpy finished(&runner, &ExperimentRunner::finished);
     QVERIFY(runner.start(plan).isEmpty());
@@ -288,10 +288,10 @@ void TestExperimentRunner::lostDeviceFailsTheRun()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
     ExperimentRunner runner(bench.client);
     ExperimentPlan plan =
-        ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceParams());
+        ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceTuning().params.value());
     plan.duration = 10;
     QSignalSpy finished(&runner, &ExperimentRunner::finished);
     QVERIFY(runner.start(plan).isEmpty());

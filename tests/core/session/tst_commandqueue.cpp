@@ -51,12 +51,25 @@ struct Harness
         QObject::connect(&queue, &CommandQueue::retried, [this] { ++retried; });
         QObject::connect(&queue, &CommandQueue::helloUnanswered, [this] { ++helloUnanswered; });
     }
+    //! A push of `tuning` as request `id`; returns the command as queued.
+    Command push(quint64 id, const DeviceTuning &tuning)
+    {
+        Command c;
+        c.id = id;
+        c.kind = tuning.params ? CommandKind::SetParams : CommandKind::SetEffects;
+        c.tuning = tuning;
+        queue.enqueue(c);
+        return c;
+    }
     void enqueue(quint64 id, CommandKind kind, const DeviceParams &params = {})
     {
         Command c;
         c.id = id;
         c.kind = kind;
-        c.params = params;
+        if (kind == CommandKind::SetParams)
+            c.tuning.params = params;
+        if (kind == CommandKind::SetEffects)
+            c.tuning.effects = EffectParams{};
         queue.enqueue(c);
     }
     void ack(quint8 seq, v2::AckStatus status = v2::AckStatus::Ok, quint8 field = v2::kNoField)
@@ -81,6 +94,8 @@ class TestCommandQueue : public QObject
 private Q_SLOTS:
     void oneInFlightTheRestWait();
     void setEffectsIsReadBack();
+    void aTuningIsOnePushWithOneResult();
+    void aRefusedPartEndsThePush();
     void effectsReadBackThatDiffersIsReported();
     void vibrateFinishesOnItsAck();
     void effectRejectionsNameTheirField();
@@ -168,7 +183,7 @@ void TestCommandQueue::setParamsIsReadBack()
     QCOMPARE(h.acknowledged[0].kind, CommandKind::SetParams);
     QVERIFY(h.finished.isEmpty());
     QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
-    h.queue.onParams(p);
+    h.queue.onTuning({p, std::nullopt});
     QCOMPARE(h.finished.size(), 1);
     const CommandResult r = h.finished[0].second;
     QCOMPARE(h.finished[0].first.id, quint64(3));
@@ -176,7 +191,7 @@ void TestCommandQueue::setParamsIsReadBack()
     QCOMPARE(r.command, CommandKind::SetParams);
     QVERIFY(r.readBack);
     QVERIFY(r.readBackMatches);
-    QCOMPARE(r.received, p);
+    QCOMPARE(r.received.params.value(), p);
 }
 
 void TestCommandQueue::readBackThatDiffersIsReported()
@@ -188,13 +203,13 @@ void TestCommandQueue::readBackThatDiffersIsReported()
     h.ack(h.lastSeq());
     DeviceParams held = sent;
     held.K_max = 0.5;
-    h.queue.onParams(held);
+    h.queue.onTuning({held, std::nullopt});
     const CommandResult r = h.finished.value(0).second;
     QVERIFY(r.ok());
     QVERIFY(r.readBack);
     QVERIFY(!r.readBackMatches);
-    QCOMPARE(r.sent, sent);
-    QCOMPARE(r.received, held);
+    QCOMPARE(r.sent.params.value(), sent);
+    QCOMPARE(r.received.params.value(), held);
 }
 
 void TestCommandQueue::zeroReadBackCarriesTheNewTheta0()
@@ -204,12 +219,12 @@ void TestCommandQueue::zeroReadBackCarriesTheNewTheta0()
     h.ack(h.lastSeq());
     DeviceParams held;
     held.theta0 = 0.25;
-    h.queue.onParams(held);
+    h.queue.onTuning({held, std::nullopt});
     const CommandResult r = h.finished.value(0).second;
     QVERIFY(r.ok());
     QCOMPARE(r.command, CommandKind::Zero);
     QVERIFY(r.readBack && r.readBackMatches);
-    QCOMPARE(r.received.theta0, 0.25);
+    QCOMPARE(r.received.params.value().theta0, 0.25);
 }
 
 void TestCommandQueue::unansweredReadBackStillSucceeds()
@@ -242,11 +257,9 @@ void TestCommandQueue::rejectionNamesTheField()
 void TestCommandQueue::setEffectsIsReadBack()
 {
     Harness h;
-    Command c;
-    c.id = 11;
-    c.kind = CommandKind::SetEffects;
-    c.effects.detent_strength = 0.05;
-    h.queue.enqueue(c);
+    EffectParams fx;
+    fx.detent_strength = 0.05;
+    h.push(11, {std::nullopt, fx});
     const v2::Frame sent = h.link.last();
     const auto *set = std::get_if<v2::SetEffects>(&sent.message);
     QVERIFY(set && set->effects.detent_strength == double(0.05f));
@@ -256,34 +269,81 @@ void TestCommandQueue::setEffectsIsReadBack()
     QVERIFY(h.finished.isEmpty());
     // Read back under the same request id with GET_EFFECTS; a PARAMS does not answer it.
     QVERIFY(std::holds_alternative<v2::GetEffects>(h.link.last().message));
-    h.queue.onParams(DeviceParams{});
+    h.queue.onTuning({DeviceParams{}, std::nullopt});
     QVERIFY(h.finished.isEmpty());
-    h.queue.onEffects(set->effects);
+    h.queue.onTuning({std::nullopt, set->effects});
     QCOMPARE(h.finished.size(), 1);
     QCOMPARE(h.finished[0].first.id, quint64(11));
     const CommandResult r = h.finished[0].second;
     QVERIFY(r.ok());
     QCOMPARE(r.command, CommandKind::SetEffects);
     QVERIFY(r.readBack && r.readBackMatches);
-    QCOMPARE(r.effectsReceived.detent_strength, double(0.05f));
+    QCOMPARE(r.received.effects.value().detent_strength, double(0.05f));
+}
+
+//! Parameters and effects travel as one push: SET_PARAMS, GET_PARAMS, SET_EFFECTS, GET_EFFECTS
+//! under one request id, one result carrying both read-backs.
+void TestCommandQueue::aTuningIsOnePushWithOneResult()
+{
+    Harness h;
+    DeviceTuning tuning{DeviceParams{}, EffectParams{}};
+    tuning.params->K_max = 0.6;
+    tuning.effects->detent_strength = 0.05;
+    const Command c = h.push(13, tuning);
+    QVERIFY(std::holds_alternative<v2::SetParams>(h.link.last().message));
+    h.ack(h.lastSeq());
+    QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
+    h.queue.onTuning({std::nullopt, *c.tuning.effects}); // not what GET_PARAMS waits for
+    QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
+    h.queue.onTuning({c.tuning.params, std::nullopt});
+    QVERIFY(h.finished.isEmpty());
+    QVERIFY(std::holds_alternative<v2::SetEffects>(h.link.last().message));
+    h.ack(h.lastSeq());
+    QVERIFY(std::holds_alternative<v2::GetEffects>(h.link.last().message));
+    h.queue.onTuning({std::nullopt, c.tuning.effects});
+    QCOMPARE(h.finished.size(), 1);
+    QCOMPARE(h.finished[0].first.id, quint64(13));
+    QCOMPARE(h.acknowledged.size(), 2);
+    QCOMPARE(h.acknowledged[0].stepKind(), CommandKind::SetParams);
+    QCOMPARE(h.acknowledged[1].stepKind(), CommandKind::SetEffects);
+    const CommandResult r = h.finished[0].second;
+    QVERIFY(r.ok() && r.readBack && r.readBackMatches);
+    QCOMPARE(r.command, CommandKind::SetParams);
+    QVERIFY(sameOnWire(r.received, c.tuning));
+    QCOMPARE(h.link.writes.size(), 4);
+}
+
+void TestCommandQueue::aRefusedPartEndsThePush()
+{
+    Harness h;
+    const Command c = h.push(14, {DeviceParams{}, EffectParams{}});
+    h.ack(h.lastSeq());
+    h.queue.onTuning({c.tuning.params, std::nullopt});
+    h.ack(h.lastSeq(), v2::AckStatus::OutOfRange, 5); // SET_EFFECTS refused: wall_stiffness
+    QCOMPARE(h.finished.size(), 1);
+    const CommandResult r = h.finished[0].second;
+    QCOMPARE(r.status, CommandResult::Status::Rejected);
+    QCOMPARE(r.command, CommandKind::SetEffects); // the frame refused
+    QCOMPARE(r.field, 5);
+    QVERIFY(r.received.params.has_value()); // the parameters were taken and read back
+    QVERIFY(!r.received.effects.has_value());
+    QCOMPARE(h.link.writes.size(), 3);
 }
 
 void TestCommandQueue::effectsReadBackThatDiffersIsReported()
 {
     Harness h;
-    Command c;
-    c.id = 12;
-    c.kind = CommandKind::SetEffects;
-    c.effects.wall_max = 0.5;
-    h.queue.enqueue(c);
+    EffectParams fx;
+    fx.wall_max = 0.5;
+    const Command c = h.push(12, {std::nullopt, fx});
     h.ack(h.lastSeq());
-    EffectParams held = c.effects;
+    EffectParams held = *c.tuning.effects;
     held.wall_max = 0.25;
-    h.queue.onEffects(held);
+    h.queue.onTuning({std::nullopt, held});
     const CommandResult r = h.finished.value(0).second;
     QVERIFY(r.ok() && r.readBack && !r.readBackMatches);
-    QCOMPARE(r.effectsSent.wall_max, 0.5);
-    QCOMPARE(r.effectsReceived.wall_max, 0.25);
+    QCOMPARE(r.sent.effects.value().wall_max, 0.5);
+    QCOMPARE(r.received.effects.value().wall_max, 0.25);
 }
 
 void TestCommandQueue::vibrateFinishesOnItsAck()

@@ -116,7 +116,7 @@ void TestDeviceClient::connectsOnItsOwnThread()
     QVERIFY(sessionThread->isRunning());
     QCOMPARE(client.deviceInfo().protocol, WireProtocol::V2);
     QVERIFY(client.deviceInfo().simulated);
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params.has_value(), kConnectTimeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(client.stats().frames > 100, kConnectTimeoutMs);
 }
 
@@ -132,9 +132,9 @@ void TestDeviceClient::cacheIsUpdatedBeforeSignals()
         QCOMPARE(client.deviceInfo().deviceId, i.deviceId);
         ++checks;
     });
-    connect(&client, &DeviceClient::deviceParamsChanged, this, [&](const DeviceParams &p) {
-        QCOMPARE(client.deviceParams(), p);
-        QVERIFY(client.hasDeviceParams());
+    connect(&client, &DeviceClient::deviceTuningChanged, this, [&](const DeviceTuning &t) {
+        QCOMPARE(client.deviceTuning(), t);
+        QVERIFY(client.deviceTuning().params.has_value());
         ++checks;
     });
     connect(&client, &DeviceClient::statsUpdated, this, [&](const LinkStats &s) {
@@ -142,7 +142,7 @@ void TestDeviceClient::cacheIsUpdatedBeforeSignals()
         ++checks;
     });
     client.connectDevice(simOptions());
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams() && client.stats().frames > 0,
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params.has_value() && client.stats().frames > 0,
                              kConnectTimeoutMs);
     QVERIFY(checks >= 5);
 }
@@ -152,14 +152,14 @@ void TestDeviceClient::commandIdsComeBack()
     DeviceClient client;
     QSignalSpy finished(&client, &DeviceClient::commandFinished);
     client.connectDevice(simOptions());
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params.has_value(), kConnectTimeoutMs);
     DeviceParams p;
     p.M_adm = 0.02;
-    const quint64 a = client.pushParams(p);
-    const quint64 b = client.readParams();
+    const quint64 a = client.pushTuning({p, std::nullopt});
+    const quint64 b = client.readTuning();
     DeviceParams bad;
     bad.N = -1;
-    const quint64 c = client.pushParams(bad);
+    const quint64 c = client.pushTuning({bad, std::nullopt});
     QVERIFY(a != b && b != c);
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, kConnectTimeoutMs);
     QHash<quint64, CommandResult> results;
@@ -168,7 +168,7 @@ void TestDeviceClient::commandIdsComeBack()
     QVERIFY(results.value(a).ok() && results.value(a).readBackMatches);
     QVERIFY(results.value(b).ok());
     QCOMPARE(results.value(c).status, CommandResult::Status::Invalid);
-    QCOMPARE(client.deviceParams().M_adm, double(0.02f));
+    QCOMPARE(client.deviceTuning().params.value().M_adm, double(0.02f));
 }
 
 void TestDeviceClient::frozenMainThreadDoesNotStarveTheLink()

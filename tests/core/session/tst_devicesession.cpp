@@ -71,7 +71,7 @@ struct Harness
 
     Harness()
     {
-        QObject::connect(&session, &DeviceSession::samplesReady,
+        QObject::connect(&session.samples(), &SamplePipeline::samplesReady,
                          [this](const SampleBatch &b) { samples.append(b); });
         QObject::connect(&session, &DeviceSession::commandFinished,
                          [this](quint64 id, const CommandResult &r) { results.insert(id, r); });
@@ -79,9 +79,12 @@ struct Harness
                          [this](SessionState s, const StateDetail &d) {
                              states.append({s, d});
                          });
-        QObject::connect(&session, &DeviceSession::deviceParamsChanged,
-                         [this](const DeviceParams &p) { params.append(p); });
-        QObject::connect(&session, &DeviceSession::recordingChanged,
+        QObject::connect(&session.samples(), &SamplePipeline::deviceTuningChanged,
+                         [this](const DeviceTuning &t) {
+                             if (t.params)
+                                 params.append(*t.params);
+                         });
+        QObject::connect(&session.samples(), &SamplePipeline::recordingChanged,
                          [this](const RecordingStatus &r) { recording.append(r); });
         QObject::connect(&session, &DeviceSession::statsUpdated,
                          [this](const LinkStats &s) { lastStats = s; });
@@ -316,7 +319,7 @@ void TestDeviceSession::pushParamsReadsBack()
     p.K_max = 0.6;
     p.K_min = 0.2;
     p.N = 0.12;
-    h.session.pushParams(7, p);
+    h.session.pushTuning(7, {p, std::nullopt});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(7), kCommandWaitMs);
     const CommandResult r = h.results.value(7);
     QVERIFY2(r.ok(), qPrintable(statusText(r)));
@@ -350,7 +353,7 @@ void TestDeviceSession::invalidParamsAreRefusedOnTheHost()
     DeviceParams p;
     p.K_min = 0.9; // > K_max
     p.Q_dz = 0.5;  // > N
-    h.session.pushParams(1, p);
+    h.session.pushTuning(1, {p, std::nullopt});
     QTRY_VERIFY(h.results.contains(1));
     const CommandResult r = h.results.value(1);
     QCOMPARE(r.status, CommandResult::Status::Invalid);
@@ -367,7 +370,7 @@ void TestDeviceSession::rejectionLeavesDeviceParamsUnchanged()
     QTRY_VERIFY_WITH_TIMEOUT(!h.params.isEmpty(), kConnectTimeoutMs);
     DeviceParams good;
     good.K_max = 0.5;
-    h.session.pushParams(1, good);
+    h.session.pushTuning(1, {good, std::nullopt});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(1), kCommandWaitMs);
     QVERIFY(h.results.value(1).ok());
 
@@ -375,7 +378,7 @@ void TestDeviceSession::rejectionLeavesDeviceParamsUnchanged()
     DeviceParams bad = good;
     bad.K_min = 0.1;
     bad.K_max = 60; // above 50: the device names field 3
-    h.session.pushParams(2, bad);
+    h.session.pushTuning(2, {bad, std::nullopt});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(2), kCommandWaitMs);
     const CommandResult r = h.results.value(2);
     QCOMPARE(r.status, CommandResult::Status::Rejected);
@@ -383,7 +386,7 @@ void TestDeviceSession::rejectionLeavesDeviceParamsUnchanged()
     QCOMPARE(r.field, 3);
     QCOMPARE(r.command, CommandKind::SetParams);
 
-    h.session.readParams(3);
+    h.session.readTuning(3);
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(3), kCommandWaitMs);
     QCOMPARE(h.params.last().K_max, double(0.5f));
     QCOMPARE(h.params.last().K_min, double(float(DeviceParams().K_min)));
@@ -410,7 +413,7 @@ void TestDeviceSession::lostCommandIsRetried()
     h.session.simLink()->dropHostFrames(dropped, quint8(v2::MessageType::SetParams));
     DeviceParams p;
     p.K_max = 0.7;
-    h.session.pushParams(1, p);
+    h.session.pushTuning(1, {p, std::nullopt});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(1), kCommandWaitMs);
     const CommandResult r = h.results.value(1);
     QCOMPARE(h.session.simLink()->droppedHostFrames(), dropped);
@@ -445,9 +448,9 @@ void TestDeviceSession::legacyCommandsAreUnsupported()
     h.session.connectDevice(simOptions(WireProtocol::Legacy, ProtocolChoice::Legacy));
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
     if (command == u"push")
-        h.session.pushParams(1, DeviceParams());
+        h.session.pushTuning(1, {DeviceParams(), std::nullopt});
     else if (command == u"read")
-        h.session.readParams(1);
+        h.session.readTuning(1);
     else if (command == u"zero")
         h.session.zero(1);
     else if (command == u"save")
@@ -472,8 +475,8 @@ void TestDeviceSession::legacyCommandsAreUnsupported()
 void TestDeviceSession::commandsWhenDisconnected()
 {
     Harness h;
-    h.session.readParams(1);
-    h.session.pushParams(2, DeviceParams());
+    h.session.readTuning(1);
+    h.session.pushTuning(2, {DeviceParams(), std::nullopt});
     QCOMPARE(h.results.value(1).status, CommandResult::Status::NotConnected);
     QCOMPARE(h.results.value(2).status, CommandResult::Status::NotConnected);
 }
@@ -518,15 +521,16 @@ void TestDeviceSession::sampleListenersSeeEachSampleBeforeItsBatch()
     h.session.sampleListeners().add(&listener);
     qsizetype batched = 0;
     bool listenerFirst = true;
-    QObject::connect(&h.session, &DeviceSession::samplesReady, [&](const SampleBatch &batch) {
-        // Every sample of a batch reached the listener before the batch went out.
-        for (qsizetype i = 0; i < batch.size(); ++i) {
-            listenerFirst = listenerFirst && batched + i < listener.seen.size() &&
-                            listener.seen[batched + i].t_s == batch[i].t_s &&
-                            listener.seen[batched + i].theta == batch[i].theta;
-        }
-        batched += batch.size();
-    });
+    QObject::connect(&h.session.samples(), &SamplePipeline::samplesReady,
+                     [&](const SampleBatch &batch) {
+                         // Every sample of a batch reached the listener before the batch went out.
+                         for (qsizetype i = 0; i < batch.size(); ++i) {
+                             listenerFirst = listenerFirst && batched + i < listener.seen.size() &&
+                                             listener.seen[batched + i].t_s == batch[i].t_s &&
+                                             listener.seen[batched + i].theta == batch[i].theta;
+                         }
+                         batched += batch.size();
+                     });
     h.session.connectDevice(simOptions(WireProtocol::V2, ProtocolChoice::V2));
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > 200, kConnectTimeoutMs);
     QVERIFY(listenerFirst);
@@ -613,7 +617,7 @@ void TestDeviceSession::recordingEventsOnParamAndHostChanges()
 
     DeviceParams p;
     p.K_max = 0.6;
-    h.session.pushParams(1, p);
+    h.session.pushTuning(1, {p, std::nullopt});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(1), kCommandWaitMs);
     const qsizetype afterPush = h.samples.size();
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > afterPush + 100, kCommandWaitMs);

@@ -31,9 +31,9 @@ struct Harness
 
     Harness()
     {
-        QObject::connect(&session, &DeviceSession::samplesReady,
+        QObject::connect(&session.samples(), &SamplePipeline::samplesReady,
                          [this](const SampleBatch &b) { samples.append(b); });
-        QObject::connect(&session, &DeviceSession::recordingChanged,
+        QObject::connect(&session.samples(), &SamplePipeline::recordingChanged,
                          [this](const RecordingStatus &r) { recording.append(r); });
         QObject::connect(&session, &DeviceSession::notice,
                          [this](const SessionNotice &n) { notices.append(n); });

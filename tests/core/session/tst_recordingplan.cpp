@@ -104,11 +104,11 @@ void TestRecordingPlan::nextPushKeepsParamsBefore()
     const QString csv = path("push.csv");
     pipeline.startRecording(csv, QStringLiteral("test"), DeviceInfo{}, plan);
     pushRange(pipeline, 301, 400);
-    pipeline.paramsApplied(CommandKind::Zero, before); // a ZERO is no push
+    pipeline.tuningApplied(CommandKind::Zero, {}); // a ZERO is no push
     QVERIFY(pipeline.isArmed());
     DeviceParams after = before;
     after.K_max = 0.6;
-    pipeline.paramsApplied(CommandKind::SetParams, after);
+    pipeline.tuningApplied(CommandKind::SetParams, {after, std::nullopt});
     QVERIFY(pipeline.isRecording());
     pushRange(pipeline, 401, 600);
     pipeline.stopRecording();

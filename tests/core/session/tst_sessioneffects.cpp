@@ -96,26 +96,28 @@ void TestSessionEffects::effectsOverPty()
             [&](const SampleBatch &b) { samples.append(b); });
     QVERIFY(connectTo(client, sim));
     // The connect sequence reads the block back: defaults, which render nothing.
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceEffects(), kTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects.has_value(), kTimeoutMs);
     QVERIFY(client.deviceInfo().hasEffects());
-    QVERIFY(sameOnWire(client.deviceEffects(), roundedForWire(EffectParams{}, 0.44)));
+    QVERIFY(
+        sameOnWire(client.deviceTuning().effects.value(), roundedForWire(EffectParams{}, 0.44)));
     QTRY_VERIFY_WITH_TIMEOUT(!samples.isEmpty(), kTimeoutMs);
     QCOMPARE(samples.last().tau_fx, 0.0);
 
     const EffectParams fx = detentsAndWalls();
-    QSignalSpy effectsChanged(&client, &DeviceClient::deviceEffectsChanged);
-    const CommandResult pushed = waitFor(finished, client.pushEffects(fx));
+    QSignalSpy effectsChanged(&client, &DeviceClient::deviceTuningChanged);
+    const CommandResult pushed = waitFor(finished, client.pushTuning({std::nullopt, fx}));
     QVERIFY(pushed.ok());
     QCOMPARE(pushed.command, CommandKind::SetEffects);
     QVERIFY(pushed.readBack && pushed.readBackMatches);
-    QVERIFY(sameOnWire(pushed.effectsReceived, fx));
+    QVERIFY(sameOnWire(pushed.received.effects.value(), fx));
     QVERIFY(effectsChanged.count() >= 1);
-    QVERIFY(sameOnWire(client.deviceEffects(), fx));
+    QVERIFY(sameOnWire(client.deviceTuning().effects.value(), fx));
 
-    const CommandResult read = waitFor(finished, client.readEffects());
+    const CommandResult read = waitFor(finished, client.readTuning());
     QVERIFY(read.ok());
-    QCOMPARE(read.command, CommandKind::GetEffects);
-    QVERIFY(sameOnWire(read.effectsReceived, fx));
+    QCOMPARE(read.command, CommandKind::GetParams); // the tuning: parameters and effects
+    QVERIFY(read.received.params.has_value());
+    QVERIFY(sameOnWire(read.received.effects.value(), fx));
 
     // A strong, slow cue shows in τ_fx: the knob rests in a detent, where τ_det ≈ 0.
     samples.clear();
@@ -138,17 +140,17 @@ void TestSessionEffects::invalidEffectsAreRefusedBeforeSending()
     DeviceClient client;
     QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QVERIFY(connectTo(client, sim));
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceEffects(), kTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects.has_value(), kTimeoutMs);
 
     EffectParams bad;
     bad.detent_strength = 1.0; // above tau_limit 0.44
     bad.wall_min = 0.1;        // must be ≤ 0
-    const CommandResult r = waitFor(finished, client.pushEffects(bad));
+    const CommandResult r = waitFor(finished, client.pushTuning({std::nullopt, bad}));
     QCOMPARE(r.status, CommandResult::Status::Invalid);
     QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
     QCOMPARE(r.problems.size(), 2);
     QVERIFY2(r.problems.first().contains(u"detent_strength"), qPrintable(r.problems.join(u';')));
-    QVERIFY(sameOnWire(client.deviceEffects(),
+    QVERIFY(sameOnWire(client.deviceTuning().effects.value(),
                        roundedForWire(EffectParams{}, 0.44))); // nothing reached the device
 
     const CommandResult v = waitFor(finished, client.vibrate({0.1, 0.5, 1}));
@@ -164,7 +166,7 @@ void TestSessionEffects::deviceRejectsVibrationAboveNyquist()
     DeviceClient client;
     QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QVERIFY(connectTo(client, sim));
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceEffects(), kTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects.has_value(), kTimeoutMs);
     const CommandResult r = waitFor(finished, client.vibrate({0.1, 500, 1}));
     QCOMPARE(r.status, CommandResult::Status::Rejected);
     QCOMPARE(r.ackStatus, v2::AckStatus::OutOfRange);
@@ -182,15 +184,15 @@ void TestSessionEffects::legacyDeviceHasNoEffects()
     QVERIFY(connectTo(client, sim, ProtocolChoice::Legacy));
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), SessionState::Connected, kTimeoutMs);
     QVERIFY(!client.deviceInfo().hasEffects());
-    for (const quint64 id : {client.pushEffects(detentsAndWalls()), client.readEffects(),
-                             client.vibrate({0.1, 20, 1})}) {
+    for (const quint64 id :
+         {client.pushTuning({std::nullopt, detentsAndWalls()}), client.vibrate({0.1, 20, 1})}) {
         const CommandResult r = waitFor(finished, id);
         QCOMPARE(r.status, CommandResult::Status::Unsupported);
         QCOMPARE(r.reason, CommandResult::Reason::NoEffects);
     }
     QTRY_VERIFY_WITH_TIMEOUT(!samples.isEmpty(), kTimeoutMs);
     QVERIFY(std::isnan(samples.last().tau_fx)); // not carried: unknown, not zero
-    QVERIFY(!client.hasDeviceEffects());
+    QVERIFY(!client.deviceTuning().effects.has_value());
 }
 
 void TestSessionEffects::deviceWithoutCapabilityHasNoEffects()
@@ -202,7 +204,7 @@ void TestSessionEffects::deviceWithoutCapabilityHasNoEffects()
     QList<Sample> samples;
     connect(&session, &DeviceSession::commandFinished, this,
             [&](quint64, const CommandResult &r) { results.append(r); });
-    connect(&session, &DeviceSession::samplesReady, this,
+    connect(&session.samples(), &SamplePipeline::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
     ConnectOptions o;
     o.port = device.path();
@@ -211,8 +213,8 @@ void TestSessionEffects::deviceWithoutCapabilityHasNoEffects()
     session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, kTimeoutMs);
     QVERIFY(!session.deviceInfo().hasEffects());
-    session.pushEffects(1, detentsAndWalls());
-    session.readEffects(2);
+    session.pushTuning(1, {std::nullopt, detentsAndWalls()});
+    session.pushTuning(2, {DeviceParams{}, detentsAndWalls()}); // not half of it either
     session.vibrate(3, {0.1, 20, 1});
     QCOMPARE(results.size(), 3);
     for (const CommandResult &r : std::as_const(results)) {
@@ -240,8 +242,8 @@ void TestSessionEffects::pushedEffectsAreRecordedEvents()
     bool haveEffects = false;
     connect(&session, &DeviceSession::commandFinished, this,
             [&](quint64, const CommandResult &r) { results.append(r); });
-    connect(&session, &DeviceSession::deviceEffectsChanged, this,
-            [&](const EffectParams &) { haveEffects = true; });
+    connect(&session.samples(), &SamplePipeline::deviceTuningChanged, this,
+            [&](const DeviceTuning &t) { haveEffects = t.effects.has_value(); });
     ConnectOptions o;
     o.port = QString::fromUtf16(kSimPortName);
     session.connectDevice(o);
@@ -251,7 +253,7 @@ void TestSessionEffects::pushedEffectsAreRecordedEvents()
     EffectParams fx;
     fx.detent_strength = 0.05;
     fx.detent_range = 0.8;
-    session.pushEffects(1, fx);
+    session.pushTuning(1, {std::nullopt, fx});
     QTRY_COMPARE_WITH_TIMEOUT(results.size(), 1, kTimeoutMs);
     QVERIFY(results.first().ok());
     QTest::qWait(50);

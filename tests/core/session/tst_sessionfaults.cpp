@@ -108,7 +108,7 @@ private Q_SLOTS:
         // queue (SimulatedDevice::telemetryDropped, also seen as seq gaps).
         DeviceSession session;
         QList<Sample> samples;
-        connect(&session, &DeviceSession::samplesReady,
+        connect(&session.samples(), &SamplePipeline::samplesReady,
                 [&samples](const SampleBatch &b) { samples.append(b); });
         session.connectDevice(
             simWithFaults(u"drop=0.02,corrupt=0.01,dup=0.01,delay=0.01:5ms,hdrop=0.05"_s, 9));
@@ -144,9 +144,9 @@ private Q_SLOTS:
         DeviceSession session;
         QList<Sample> samples;
         QList<RecordingStatus> recording;
-        connect(&session, &DeviceSession::samplesReady,
+        connect(&session.samples(), &SamplePipeline::samplesReady,
                 [&samples](const SampleBatch &b) { samples.append(b); });
-        connect(&session, &DeviceSession::recordingChanged,
+        connect(&session.samples(), &SamplePipeline::recordingChanged,
                 [&recording](const RecordingStatus &r) { recording.append(r); });
         // 1.2 s at 1 kHz: more frames than the u8 seq can count, less than the silence that
         // declares the device lost (2 s).
@@ -198,7 +198,7 @@ private Q_SLOTS:
         QFETCH(bool, completes);
         DeviceSession session;
         QSignalSpy finished(&session, &DeviceSession::commandFinished);
-        QSignalSpy samples(&session, &DeviceSession::samplesReady);
+        QSignalSpy samples(&session.samples(), &SamplePipeline::samplesReady);
         session.connectDevice(simWithFaults(cut, 1));
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 0, kConnectMs);
         const FaultInjector *faults = session.simLink()->faults();
@@ -209,7 +209,7 @@ private Q_SLOTS:
         DeviceParams wanted = before;
         wanted.K_max = 0.7;
         wanted.N = 0.2;
-        session.pushParams(1, wanted);
+        session.pushTuning(1, {wanted, std::nullopt});
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 3000);
         const auto result = finished.first().at(1).value<CommandResult>();
         QCOMPARE(session.state(), SessionState::Connected);
@@ -234,7 +234,7 @@ private Q_SLOTS:
         // push through, and a retry the device already applied is answered, not applied.
         DeviceSession session;
         QSignalSpy finished(&session, &DeviceSession::commandFinished);
-        QSignalSpy samples(&session, &DeviceSession::samplesReady);
+        QSignalSpy samples(&session.samples(), &SamplePipeline::samplesReady);
         session.connectDevice(simWithFaults(u"hdrop=0.3,drop=0.3"_s, 5));
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 0, kConnectMs);
         const SimulatedDevice *device = session.simLink()->device();
@@ -248,7 +248,7 @@ private Q_SLOTS:
         for (int i = 1; i <= kPushes; ++i) {
             DeviceParams p = device->params();
             p.K_max = 0.3 + 0.02 * i;
-            session.pushParams(quint64(i), p);
+            session.pushTuning(quint64(i), {p, std::nullopt});
             QTRY_COMPARE_WITH_TIMEOUT(finished.size(), i, 3000);
             const auto r = finished.last().at(1).value<CommandResult>();
             // A timed-out push's last frame may still be on its way (the emulated UART, the
@@ -293,7 +293,7 @@ private Q_SLOTS:
         clock.start();
         const QString path = QString::fromUtf8(sim.readLine()).trimmed();
         DeviceSession session;
-        QSignalSpy samples(&session, &DeviceSession::samplesReady);
+        QSignalSpy samples(&session.samples(), &SamplePipeline::samplesReady);
         ConnectOptions o;
         o.port = path;
         o.protocol = ProtocolChoice::V2;

@@ -35,7 +35,7 @@ struct Session
     LinkStats stats;
     Session()
     {
-        QObject::connect(&session, &DeviceSession::samplesReady,
+        QObject::connect(&session.samples(), &SamplePipeline::samplesReady,
                          [this](const SampleBatch &b) { samples.append(b); });
         QObject::connect(&session, &DeviceSession::deviceInfoChanged,
                          [this](const DeviceInfo &i) { infos.append(i); });

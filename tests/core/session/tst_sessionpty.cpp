@@ -93,17 +93,17 @@ void TestSessionPty::paramsOverPty()
     ConnectOptions o;
     o.port = path;
     client.connectDevice(o);
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params.has_value(), kConnectTimeoutMs);
     DeviceParams p;
     p.K_max = 1.5;
     p.D_adm = 2e-4;
-    const quint64 id = client.pushParams(p);
+    const quint64 id = client.pushTuning({p, std::nullopt});
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kConnectTimeoutMs);
     QCOMPARE(finished.first().first().toULongLong(), id);
     const auto r = finished.first().last().value<CommandResult>();
     QVERIFY(r.ok() && r.readBackMatches);
-    QCOMPARE(client.deviceParams().K_max, 1.5);
-    QCOMPARE(client.deviceParams().D_adm, double(2e-4f));
+    QCOMPARE(client.deviceTuning().params.value().K_max, 1.5);
+    QCOMPARE(client.deviceTuning().params.value().D_adm, double(2e-4f));
 }
 
 void TestSessionPty::throughput_data()

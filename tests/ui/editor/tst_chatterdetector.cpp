@@ -132,7 +132,7 @@ void TestChatterDetector::warningInTheDerivedFigures()
     DeviceParams device;
     device.K_max = 1.5;
     device.Q_dz = 0.04;
-    editor.setDeviceParams(device);
+    editor.setDeviceTuning({device, std::nullopt});
     ChatterWatch watch(&editor);
     DerivedFiguresView *figures = editor.derivedFiguresView();
     QVERIFY(!figures->isShowingChatter());

@@ -78,7 +78,7 @@ void TestDeviceParameterLink::pushReachesTheDeviceAndComesBackInSync()
     // Connected, the device's read-back arrives by itself: the editor is in sync.
     QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
     QVERIFY(rig.editor.canPush());
-    QCOMPARE(rig.editor.deviceParams(), rig.client.deviceParams());
+    QCOMPARE(rig.editor.deviceTuning(), rig.client.deviceTuning());
 
     QSignalSpy changed(&rig.link, &DeviceParameterLink::deviceChanged);
     QSignalSpy finished(&rig.link, &DeviceParameterLink::commandFinished);
@@ -89,7 +89,7 @@ void TestDeviceParameterLink::pushReachesTheDeviceAndComesBackInSync()
     rig.editor.pushAction()->trigger();
     QCOMPARE(rig.editor.syncState(), SyncState::Pushing);
     QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
-    QCOMPARE(float(rig.client.deviceParams().K_max), 0.6f);
+    QCOMPARE(float(rig.client.deviceTuning().params->K_max), 0.6f);
     QCOMPARE(finished.size(), 1);
     QVERIFY2(rig.link.lastMessage().contains(QStringLiteral("K_max 0.4 → 0.6")),
              qPrintable(rig.link.lastMessage()));
@@ -137,7 +137,7 @@ void TestDeviceParameterLink::effectsArePushedWithTheParameters()
     QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
     QVERIFY(rig.client.deviceInfo().hasEffects());
     QVERIFY(rig.editor.effectsSection()->isAvailable());
-    QVERIFY(rig.editor.deviceEffects().has_value());
+    QVERIFY(rig.editor.deviceTuning().effects.has_value());
     QVERIFY(!rig.editor.field(QStringLiteral("wall_max"))->differsFromDevice());
 
     QSignalSpy finished(&rig.link, &DeviceParameterLink::commandFinished);
@@ -152,12 +152,14 @@ void TestDeviceParameterLink::effectsArePushedWithTheParameters()
     QVERIFY(rig.editor.field(QStringLiteral("detent_strength"))->differsFromDevice());
     rig.editor.pushAction()->trigger();
     QCOMPARE(pushes.size(), 1);
-    QVERIFY(pushes.constFirst().at(1).value<std::optional<EffectParams>>().has_value());
+    QVERIFY(pushes.constFirst().at(0).value<DeviceTuning>().effects.has_value());
     QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
     QCOMPARE(finished.size(), 1); // one push, one outcome, for both commands
-    QCOMPARE(float(rig.client.deviceEffects().detent_strength), 0.05f);
-    QCOMPARE(float(rig.client.deviceEffects().detent_range), 0.8f);
-    QCOMPARE(float(rig.client.deviceParams().K_max), 0.5f);
+    QVERIFY(rig.client.deviceTuning().effects && rig.client.deviceTuning().params);
+    QCOMPARE(float(rig.client.deviceTuning().effects->detent_strength), 0.05f);
+    QCOMPARE(float(rig.client.deviceTuning().effects->detent_range), 0.8f);
+    QCOMPARE(float(rig.client.deviceTuning().params->K_max), 0.5f);
+    QCOMPARE(rig.editor.deviceTuning(), rig.client.deviceTuning());
     QVERIFY2(rig.link.lastMessage().contains(QStringLiteral("K_max 0.4 → 0.5")) &&
                  rig.link.lastMessage().contains(QStringLiteral("detent_strength 0 → 0.05")),
              qPrintable(rig.link.lastMessage()));
@@ -167,7 +169,7 @@ void TestDeviceParameterLink::effectsArePushedWithTheParameters()
     // Unchanged effects are not sent again; undo brings the edit back as "edited".
     rig.editor.pushAction()->trigger();
     QCOMPARE(pushes.size(), 2);
-    QVERIFY(!pushes.at(1).at(1).value<std::optional<EffectParams>>().has_value());
+    QVERIFY(!pushes.at(1).at(0).value<DeviceTuning>().effects.has_value());
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, kConnectMs);
     QCOMPARE(rig.link.lastMessage(), QStringLiteral("Pushed (no change)."));
     rig.editor.undoAction()->trigger();
@@ -185,7 +187,7 @@ void TestDeviceParameterLink::effectsArePushedWithTheParameters()
     QTest::qWait(200);
     QCOMPARE(finished.size(), 3);
     QVERIFY(rig.disconnect());
-    QVERIFY(!rig.editor.deviceEffects());
+    QVERIFY(!rig.editor.deviceTuning().effects);
     QVERIFY(!rig.editor.effectsSection()->isAvailable());
 }
 
@@ -278,10 +280,10 @@ void TestDeviceParameterLink::disconnectForgetsTheDevice()
     QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
     // A v2 device reports its actuator limit: the editor takes it, as an undoable edit.
     QCOMPARE(float(rig.editor.hostParams().tau_limit), float(rig.client.deviceInfo().tauLimit));
-    QVERIFY(rig.editor.deviceParams().has_value());
+    QVERIFY(rig.editor.deviceTuning().params.has_value());
     QVERIFY(rig.disconnect());
     QVERIFY(!rig.editor.canPush());
-    QVERIFY(!rig.editor.deviceParams());
+    QVERIFY(!rig.editor.deviceTuning().params);
     QCOMPARE(rig.editor.syncState(), SyncState::NotConnected);
 }
 

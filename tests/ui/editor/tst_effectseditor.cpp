@@ -7,6 +7,7 @@
 #include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
 #include "model/paramtable.h"
+#include "pushresult.h"
 
 #include <QAction>
 #include <QGroupBox>
@@ -53,8 +54,7 @@ void connectWithEffects(ParameterEditor &editor)
 {
     editor.setCanPush(true);
     editor.setEffectsAvailable(true, QString(), 1000);
-    editor.setDeviceParams(asFloat(editor.params()));
-    editor.setDeviceEffects(onWire(editor.effects()));
+    editor.setDeviceTuning({asFloat(editor.params()), onWire(editor.effects())});
 }
 
 } // namespace
@@ -170,40 +170,56 @@ void TestEffectsEditor::pushCarriesEffectsOnlyToADeviceThatRendersThem()
 {
     ParameterEditor editor;
     editor.setCanPush(true);
-    editor.setDeviceParams(asFloat(editor.params()));
+    editor.setDeviceTuning({asFloat(editor.params()), std::nullopt});
     QCOMPARE(editor.syncState(), SyncState::InSync); // no effects to keep in sync
     QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
     spin(editor, u"wall_stiffness"_s)->setValue(2.0);
     QCOMPARE(editor.syncState(), SyncState::InSync); // a v2 device without effects
     editor.pushAction()->trigger();
     QCOMPARE(pushes.size(), 1);
-    QVERIFY(!pushes.takeFirst().at(1).value<std::optional<EffectParams>>());
-    editor.pushFinished({});
-    editor.setDeviceParams(asFloat(editor.params()));
+    const auto withoutEffects = pushes.takeFirst().at(0).value<DeviceTuning>();
+    QCOMPARE(withoutEffects.params, std::optional(editor.params()));
+    QVERIFY(!withoutEffects.effects);
+    editor.pushFinished(
+        pushed({asFloat(editor.params()), std::nullopt}, {asFloat(editor.params()), std::nullopt}));
+    QCOMPARE(editor.syncState(), SyncState::InSync);
 
     // Now a device that renders them, still at its defaults: the edited walls differ.
     editor.setEffectsAvailable(true, QString(), 1000);
     QCOMPARE(editor.syncState(), SyncState::NotRead);
-    editor.setDeviceEffects(onWire(EffectParams{}));
+    editor.setDeviceTuning({asFloat(editor.params()), onWire(EffectParams{})});
     QCOMPARE(editor.syncState(), SyncState::Edited);
     QVERIFY(editor.field(u"wall_stiffness"_s)->differsFromDevice());
     QVERIFY(!editor.field(u"wall_max"_s)->differsFromDevice()); // π travels as float(π)⁻
     editor.pushAction()->trigger();
     QCOMPARE(editor.syncState(), SyncState::Pushing);
-    const auto sent = pushes.takeFirst().at(1).value<std::optional<EffectParams>>();
-    QVERIFY(sent);
-    QCOMPARE(*sent, editor.effects());
-    editor.pushFinished({});
-    QCOMPARE(editor.syncState(), SyncState::AwaitingReadback);
-    editor.setDeviceParams(asFloat(editor.params()));
-    QCOMPARE(editor.syncState(), SyncState::AwaitingReadback); // the effects' is still out
+    const auto sent = pushes.takeFirst().at(0).value<DeviceTuning>();
+    QVERIFY(sent.effects);
+    QCOMPARE(*sent.effects, editor.effects());
+    QCOMPARE(sent.params, std::optional(editor.params()));
+    // One result for both parts; its read-back of the effects is not what was sent.
+    const DeviceTuning onTheWire{asFloat(editor.params()), onWire(editor.effects())};
     EffectParams readBack = onWire(editor.effects());
     readBack.wall_stiffness = 1.5; // a device that kept another value
-    editor.setDeviceEffects(readBack);
+    editor.pushFinished(pushed(onTheWire, {asFloat(editor.params()), readBack}));
     QCOMPARE(editor.syncState(), SyncState::ReadbackDiffers);
-    editor.setDeviceEffects(onWire(editor.effects()));
+    QVERIFY(editor.field(u"wall_stiffness"_s)->differsFromDevice());
+    QCOMPARE(editor.deviceTuning().effects, std::optional(readBack));
+    // Read again, the device holds what was sent.
+    editor.setDeviceTuning(onTheWire);
     QCOMPARE(editor.syncState(), SyncState::InSync);
+    QVERIFY(!editor.field(u"wall_stiffness"_s)->differsFromDevice());
     QVERIFY(!editor.revertAction()->isEnabled());
+
+    // Pushed again and read back as sent: in sync straight from the push's result.
+    spin(editor, u"wall_stiffness"_s)->setValue(3.0);
+    QCOMPARE(editor.syncState(), SyncState::Edited);
+    editor.pushAction()->trigger();
+    QCOMPARE(pushes.size(), 1);
+    const DeviceTuning again{asFloat(editor.params()), onWire(editor.effects())};
+    editor.pushFinished(pushed(again, again));
+    QCOMPARE(editor.syncState(), SyncState::InSync);
+    QVERIFY(!editor.field(u"wall_stiffness"_s)->differsFromDevice());
 }
 
 void TestEffectsEditor::rejectionNamesTheEffectField()

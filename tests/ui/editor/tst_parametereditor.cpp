@@ -5,6 +5,7 @@
 #include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
 #include "model/derived.h"
+#include "pushresult.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -45,9 +46,16 @@ DeviceParams asFloat(const DeviceParams &p)
     return out;
 }
 
+//! A result that carries nothing to check: for a push no longer in flight.
 CommandResult ok()
 {
     return {};
+}
+
+//! A push of `params` the device took and holds (float32) as sent.
+CommandResult echoed(const DeviceParams &params)
+{
+    return pushed({asFloat(params), std::nullopt}, {asFloat(params), std::nullopt});
 }
 
 } // namespace
@@ -314,7 +322,7 @@ void TestParameterEditor::clampNoteGoesWithRevertAndUndo()
     editor.setCanPush(true);
     DeviceParams device;
     device.K_max = 0.8f;
-    editor.setDeviceParams(device);
+    editor.setDeviceTuning({device, std::nullopt});
     QLabel *message = label(editor, u"error_K_max"_s);
 
     typeInto(editor, u"K_max"_s, u"100"_s);
@@ -384,12 +392,13 @@ void TestParameterEditor::pushEmitsExactValues()
 
     editor.pushAction()->trigger();
     QCOMPARE(pushes.count(), 1);
-    const auto pushed = pushes.at(0).at(0).value<DeviceParams>();
+    const auto sent = pushes.at(0).at(0).value<DeviceTuning>();
     DeviceParams expected;
     expected.K_max = 0.55;
     expected.D_adm = 2.5e-5;
     expected.theta0 = -0.125;
-    QCOMPARE(pushed, expected);
+    QCOMPARE(sent.params, std::optional(expected));
+    QVERIFY(!sent.effects); // a device that renders no effects gets none
     QCOMPARE(editor.syncState(), SyncState::Pushing);
     QCOMPARE(editor.syncText(), u"pushing…"_s);
     QVERIFY(!editor.pushAction()->isEnabled()); // one push at a time
@@ -411,17 +420,17 @@ void TestParameterEditor::ctrlReturnPushes()
 
 void TestParameterEditor::inSyncAfterAckAndReadback_data()
 {
-    QTest::addColumn<bool>("readbackFirst");
-    QTest::newRow("read-back before the ACK result") << true;
-    QTest::newRow("read-back after the ACK result") << false;
+    QTest::addColumn<bool>("readBackUnanswered");
+    QTest::newRow("read-back in the push's result") << false;
+    QTest::newRow("read-back unanswered, read again") << true;
 }
 
 void TestParameterEditor::inSyncAfterAckAndReadback()
 {
-    QFETCH(bool, readbackFirst);
+    QFETCH(bool, readBackUnanswered);
     ParameterEditor editor;
     editor.setCanPush(true);
-    editor.setDeviceParams(DeviceParams{});
+    editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     QCOMPARE(editor.syncState(), SyncState::InSync);
 
     spin(editor, u"K_max"_s)->setValue(0.4123457);
@@ -434,14 +443,18 @@ void TestParameterEditor::inSyncAfterAckAndReadback()
     const DeviceParams echo = asFloat(editor.params());
     QVERIFY(echo != editor.params()); // the comparison has to allow float32 rounding
 
-    if (readbackFirst) {
-        editor.setDeviceParams(echo);
-        QCOMPARE(editor.syncState(), SyncState::Pushing); // no ACK yet: not in sync
-        editor.pushFinished(ok());
-    } else {
-        editor.pushFinished(ok());
+    QCOMPARE(pushes.at(0).at(0).value<DeviceTuning>().params, std::optional(editor.params()));
+    if (readBackUnanswered) {
+        CommandResult acked = pushed({echo, std::nullopt}, {});
+        acked.reason = CommandResult::Reason::ReadBackUnanswered;
+        acked.readBack = false;
+        acked.readBackMatches = false;
+        editor.pushFinished(acked);
         QCOMPARE(editor.syncState(), SyncState::AwaitingReadback); // ACK alone is not enough
-        editor.setDeviceParams(echo);
+        QVERIFY(editor.syncText().contains(u"read-back"_s));
+        editor.setDeviceTuning({echo, std::nullopt}); // read again
+    } else {
+        editor.pushFinished(pushed({echo, std::nullopt}, {echo, std::nullopt}));
     }
     QCOMPARE(editor.syncState(), SyncState::InSync);
     QCOMPARE(editor.syncText(), u"in sync"_s);
@@ -453,30 +466,33 @@ void TestParameterEditor::mismatchingReadbackIsNotInSync()
 {
     ParameterEditor editor;
     editor.setCanPush(true);
-    editor.setDeviceParams(DeviceParams{});
+    editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(0.8);
     editor.pushAction()->trigger();
-    editor.pushFinished(ok());
     DeviceParams other = asFloat(editor.params());
     other.K_max = 0.75f; // the device stored something else
-    editor.setDeviceParams(other);
+    editor.pushFinished(pushed({asFloat(editor.params()), std::nullopt}, {other, std::nullopt}));
     QCOMPARE(editor.syncState(), SyncState::ReadbackDiffers);
     QVERIFY(editor.syncText().startsWith(u"not in sync"_s));
     QVERIFY(editor.field(u"K_max"_s)->differsFromDevice());
     QVERIFY(!editor.field(u"N"_s)->differsFromDevice());
+    // The markers show the read-back the result carried.
+    QCOMPARE(editor.deviceTuning().params, std::optional(other));
+    QCOMPARE(label(editor, u"diff_K_max"_s)->toolTip(), u"device: 0.75 N·m/rad"_s);
 }
 
 void TestParameterEditor::rejectionShowsReasonAndKeepsValues()
 {
     ParameterEditor editor;
     editor.setCanPush(true);
-    editor.setDeviceParams(DeviceParams{});
+    editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(3.0);
     const DeviceParams edited = editor.params();
     editor.pushAction()->trigger();
 
     CommandResult rejected;
     rejected.status = CommandResult::Status::Rejected;
+    rejected.command = CommandKind::SetParams;
     rejected.ackStatus = v2::AckStatus::OutOfRange;
     rejected.field = 3;
     editor.pushFinished(rejected);
@@ -497,7 +513,7 @@ void TestParameterEditor::timeoutShown()
 {
     ParameterEditor editor;
     editor.setCanPush(true);
-    editor.setDeviceParams(DeviceParams{});
+    editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(0.6);
     editor.pushAction()->trigger();
     CommandResult timeout;
@@ -508,7 +524,7 @@ void TestParameterEditor::timeoutShown()
     QCOMPARE(editor.params().K_max, 0.6);
 
     // A late answer after a disconnect changes nothing.
-    editor.clearDeviceParams();
+    editor.setDeviceTuning({});
     editor.setCanPush(false);
     editor.pushFinished(ok());
     QCOMPARE(editor.syncState(), SyncState::NotConnected);
@@ -615,7 +631,7 @@ void TestParameterEditor::diffMarkersFollowDevice()
 
     DeviceParams device;
     device.N = static_cast<float>(0.1); // float32 echo of the same value: no difference
-    editor.setDeviceParams(device);
+    editor.setDeviceTuning({device, std::nullopt});
     QVERIFY(marker->isHidden());
     QVERIFY(label(editor, u"diff_N"_s)->isHidden());
 
@@ -628,7 +644,7 @@ void TestParameterEditor::diffMarkersFollowDevice()
     QVERIFY(marker->isHidden());
 
     spin(editor, u"K_max"_s)->setValue(0.7);
-    editor.clearDeviceParams();
+    editor.setDeviceTuning({});
     QVERIFY(marker->isHidden());
     QVERIFY(!editor.revertAction()->isEnabled());
 }
@@ -640,7 +656,7 @@ void TestParameterEditor::revertLoadsDeviceValues()
     DeviceParams device;
     device.K_max = static_cast<float>(0.8); // as it comes off the wire
     device.theta0 = static_cast<float>(0.05);
-    editor.setDeviceParams(device);
+    editor.setDeviceTuning({device, std::nullopt});
     QVERIFY(editor.revertAction()->isEnabled());
     editor.revertAction()->trigger();
     // The shortest decimal of the float, not 0.800000011920929.
@@ -666,16 +682,17 @@ void TestParameterEditor::livePushOneInFlightLastValueSent()
     for (int i = 1; i <= 30; ++i)
         spin(editor, u"K_max"_s)->setValue(0.4 + 0.01 * i);
     QCOMPARE(pushes.count(), 1); // the first edit went out; the rest wait for its answer
-    QCOMPARE(pushes.at(0).at(0).value<DeviceParams>().K_max, 0.41);
+    QCOMPARE(pushes.at(0).at(0).value<DeviceTuning>().params->K_max, 0.41);
 
     // No answer yet: still one in flight, however long the event loop runs.
     QTest::qWait(60);
     QCOMPARE(pushes.count(), 1);
 
-    editor.pushFinished(ok());
+    editor.pushFinished(echoed(*pushes.at(0).at(0).value<DeviceTuning>().params));
     QTRY_COMPARE(pushes.count(), 2);
-    QCOMPARE(pushes.at(1).at(0).value<DeviceParams>().K_max, 0.4 + 0.01 * 30);
-    editor.pushFinished(ok());
+    QCOMPARE(pushes.at(1).at(0).value<DeviceTuning>().params->K_max, 0.4 + 0.01 * 30);
+    editor.pushFinished(echoed(*pushes.at(1).at(0).value<DeviceTuning>().params));
+    QCOMPARE(editor.syncState(), SyncState::InSync);
     QTest::qWait(60);
     QCOMPARE(pushes.count(), 2); // nothing new to send
 
@@ -699,15 +716,15 @@ void TestParameterEditor::livePushRateLimited()
     bool overlapped = false;
     bool inFlight = false;
     double lastPushed = 0;
-    connect(&editor, &ParameterEditor::pushRequested, &editor, [&](const DeviceParams &p) {
+    connect(&editor, &ParameterEditor::pushRequested, &editor, [&](const DeviceTuning &t) {
         overlapped = overlapped || inFlight;
         inFlight = true;
-        lastPushed = p.K_max;
+        lastPushed = t.params->K_max;
         times << clock.nsecsElapsed();
         // The device answers at once (on the next event loop turn).
-        QTimer::singleShot(0, &editor, [&] {
+        QTimer::singleShot(0, &editor, [&, params = *t.params] {
             inFlight = false;
-            editor.pushFinished(ok());
+            editor.pushFinished(echoed(params));
         });
     });
 

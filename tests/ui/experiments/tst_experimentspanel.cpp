@@ -74,16 +74,18 @@ void TestExperimentsPanel::stepFromTheRunButton()
     ExperimentsPanel panel(&client, nullptr);
     panel.resize(1000, 600);
     panel.show();
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
     // A knob the simulated servo follows closely (docs/experiments.md, the tolerance):
     // ω_n = 14.14 rad/s, ζ = 0.707.
-    DeviceParams slow = client.deviceParams();
+    DeviceParams slow = *client.deviceTuning().params;
     slow.D_adm = 2e-3;
     slow.M_adm = 4e-2;
     QSignalSpy pushed(&client, &DeviceClient::commandFinished);
-    client.pushParams(slow);
+    client.pushTuning({slow, std::nullopt});
     QVERIFY(pushed.wait(kConnectMs));
-    QTRY_VERIFY_WITH_TIMEOUT(std::abs(client.deviceParams().D_adm - 2e-3) < 1e-9, kConnectMs);
+    // The push's result comes after its read-back: the device's parameters are the new ones.
+    QVERIFY(pushed.constLast().at(1).value<CommandResult>().readBackMatches);
+    QVERIFY(std::abs(client.deviceTuning().params->D_adm - 2e-3) < 1e-9);
     panel.fillDefaults();
     // The defaults for the device's parameters (K_max 0.4, band [0.02, 0.1]).
     auto *to = panel.findChild<QDoubleSpinBox *>(u"stepTo"_s);
@@ -164,7 +166,7 @@ void TestExperimentsPanel::cancelStopsTheRun()
 {
     DeviceClient client;
     QVERIFY(connectSim(client));
-    QTRY_VERIFY_WITH_TIMEOUT(client.hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
     ExperimentsPanel panel(&client, nullptr);
     panel.findChild<QDoubleSpinBox *>(u"duration"_s)->setValue(20);
     QVERIFY(panel.run());

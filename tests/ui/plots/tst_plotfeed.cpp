@@ -92,18 +92,18 @@ void TestPlotFeed::liveParamsReachThePlotsAndTheViews()
 {
     PlotPanel panel;
     PlotFeed feed(&panel);
-    QSignalSpy shown(&feed, &PlotFeed::deviceParamsShown);
+    QSignalSpy shown(&feed, &PlotFeed::deviceTuningShown);
     QSignalSpy cleared(&feed, &PlotFeed::operatingPointCleared);
     DeviceParams device;
     device.K_max = 0.6;
-    feed.setLiveDeviceParams(device);
+    feed.setLiveDeviceTuning({device, std::nullopt});
     QCOMPARE(shown.size(), 1);
-    QCOMPARE(shown.constLast().at(0).value<std::optional<DeviceParams>>(), device);
+    QCOMPARE(shown.constLast().at(0).value<DeviceTuning>().params, std::optional(device));
     QCOMPARE(cleared.size(), 0);
     // No device: no bands and no operating point.
-    feed.setLiveDeviceParams(std::nullopt);
+    feed.setLiveDeviceTuning({});
     QCOMPARE(shown.size(), 2);
-    QVERIFY(!shown.constLast().at(0).value<std::optional<DeviceParams>>());
+    QVERIFY(!shown.constLast().at(0).value<DeviceTuning>().params);
     QCOMPARE(cleared.size(), 1);
 }
 
@@ -113,12 +113,12 @@ void TestPlotFeed::replayReplacesEverythingAndBackToLiveRestoresIt()
     PlotFeed feed(&panel);
     DeviceParams device;
     device.K_max = 0.6;
-    feed.setLiveDeviceParams(device);
+    feed.setLiveDeviceTuning({device, std::nullopt});
     feed.appendLive(ramp(1, 100));
     feed.addLiveEvent(QStringLiteral("live event"));
 
     QSignalSpy replaying(&feed, &PlotFeed::replayingChanged);
-    QSignalSpy shown(&feed, &PlotFeed::deviceParamsShown);
+    QSignalSpy shown(&feed, &PlotFeed::deviceTuningShown);
     QSignalSpy point(&feed, &PlotFeed::operatingPoint);
     QString error;
     QVERIFY2(feed.openRecording(m_recording, &error), qPrintable(error));
@@ -129,7 +129,7 @@ void TestPlotFeed::replayReplacesEverythingAndBackToLiveRestoresIt()
     QVERIFY(!panel.followsLatest());
     QCOMPARE(panel.events().size(), 1);
     QCOMPARE(panel.events().constFirst().text, QStringLiteral("K_max 0.4 → 0.45"));
-    QCOMPARE(shown.constLast().at(0).value<std::optional<DeviceParams>>()->K_max, 0.45);
+    QCOMPARE(shown.constLast().at(0).value<DeviceTuning>().params->K_max, 0.45);
     // On a full first window (the whole 5 s recording); the views follow the playhead.
     QCOMPARE(feed.replay()->position(), feed.replay()->endTime());
     QCOMPARE(panel.dataEnd(), feed.replay()->endTime());
@@ -139,7 +139,7 @@ void TestPlotFeed::replayReplacesEverythingAndBackToLiveRestoresIt()
     const int points = int(point.size());
     const int shownBefore = int(shown.size());
     feed.appendLive(ramp(2, 100));
-    feed.setLiveDeviceParams(DeviceParams());
+    feed.setLiveDeviceTuning({DeviceParams(), std::nullopt});
     QCOMPARE(feed.liveBuffer().size(), 200);
     QCOMPARE(point.size(), points);
     QCOMPARE(shown.size(), shownBefore);
@@ -155,7 +155,7 @@ void TestPlotFeed::replayReplacesEverythingAndBackToLiveRestoresIt()
     QCOMPARE(panel.events().size(), 1);
     QCOMPARE(panel.events().constFirst().text, QStringLiteral("live event"));
     // The live parameters as they are now, not as they were when the replay began.
-    QCOMPARE(shown.constLast().at(0).value<std::optional<DeviceParams>>(), DeviceParams());
+    QCOMPARE(shown.constLast().at(0).value<DeviceTuning>().params, std::optional(DeviceParams()));
     QCOMPARE(cleared.size(), 1);
 }
 

@@ -42,7 +42,7 @@ EffectParams walls()
 
 std::optional<EffectParams> shownEffects(const QSignalSpy &spy)
 {
-    return spy.constLast().at(0).value<std::optional<EffectParams>>();
+    return spy.constLast().at(0).value<DeviceTuning>().effects;
 }
 
 } // namespace
@@ -72,10 +72,11 @@ void TestPlotFeedEffects::liveEffectsReachTheViews()
 {
     PlotPanel panel;
     PlotFeed feed(&panel);
-    QSignalSpy shown(&feed, &PlotFeed::deviceEffectsShown);
-    feed.setLiveDeviceParams(DeviceParams{});
-    feed.setLiveDeviceEffects(walls());
+    QSignalSpy shown(&feed, &PlotFeed::deviceTuningShown);
+    feed.setLiveDeviceTuning({DeviceParams{}, walls()});
+    QCOMPARE(shown.size(), 1);
     QCOMPARE(shownEffects(shown), std::optional(walls()));
+    QCOMPARE(shown.constLast().at(0).value<DeviceTuning>().params, std::optional(DeviceParams{}));
     // τ_fx's parts of the live samples from now on, with the device's block and θ0: a wall
     // 0.1 beyond wall_max, at rest: τ_wall = −3·0.1.
     Sample s;
@@ -86,9 +87,15 @@ void TestPlotFeedEffects::liveEffectsReachTheViews()
     const SampleBuffer &live = feed.liveBuffer();
     QVERIFY(std::abs(live.value(Channel::TauWall, live.size() - 1) + 0.3) < 1e-12);
     // The device goes: its effects go with it.
-    feed.setLiveDeviceParams(std::nullopt);
+    feed.setLiveDeviceTuning({});
     QVERIFY(!shownEffects(shown));
     s.t_s = 1;
+    feed.appendLive({s});
+    QVERIFY(std::isnan(live.value(Channel::TauWall, live.size() - 1)));
+    // Effects without the device's parameters (no θ0) count for nothing.
+    feed.setLiveDeviceTuning({std::nullopt, walls()});
+    QVERIFY(!shownEffects(shown));
+    s.t_s = 2;
     feed.appendLive({s});
     QVERIFY(std::isnan(live.value(Channel::TauWall, live.size() - 1)));
 }
@@ -111,9 +118,8 @@ void TestPlotFeedEffects::replayShowsTheRecordingsEffects()
     }
     PlotPanel panel;
     PlotFeed feed(&panel);
-    feed.setLiveDeviceParams(DeviceParams{});
-    feed.setLiveDeviceEffects(walls());
-    QSignalSpy shown(&feed, &PlotFeed::deviceEffectsShown);
+    feed.setLiveDeviceTuning({DeviceParams{}, walls()});
+    QSignalSpy shown(&feed, &PlotFeed::deviceTuningShown);
     QSignalSpy point(&feed, &PlotFeed::operatingPoint);
     QString error;
     QVERIFY2(feed.openRecording(path, &error), qPrintable(error));
@@ -128,7 +134,7 @@ void TestPlotFeedEffects::replayShowsTheRecordingsEffects()
     QVERIFY(std::abs(replayed.value(Channel::TauVib, 0) - 0.02) < 1e-9);
     // Live effects arriving meanwhile are kept, not shown; back to live shows them.
     const qsizetype before = shown.size();
-    feed.setLiveDeviceEffects(std::nullopt);
+    feed.setLiveDeviceTuning({DeviceParams{}, std::nullopt});
     QCOMPARE(shown.size(), before);
     feed.backToLive();
     QVERIFY(!shownEffects(shown));

@@ -238,7 +238,7 @@ void TestStiffnessView::coloursMatchTheTimePlots()
     // stiffness view once shaded it blue and drew the device curve orange, τ_total's colour).
     StiffnessView view;
     view.setEditedParams(DeviceParams{});
-    view.setDeviceParams(DeviceParams{});
+    view.setDeviceTuning({DeviceParams{}, std::nullopt});
     const QColor tauRec = palette::channel(Channel::TauRec);
     QCOMPARE(view.torqueGraph()->pen().color(), tauRec);
     QCOMPARE(view.deviceTorqueGraph()->pen().color().hue(), tauRec.hue());
@@ -270,7 +270,7 @@ void TestStiffnessView::deviceCurveDashed()
     QCOMPARE(view.torqueGraph()->pen().style(), Qt::SolidLine);
 
     const DeviceParams device = params(0.1, 1.0, 0.15, 0.03, 0.05);
-    view.setDeviceParams(device);
+    view.setDeviceTuning({device, std::nullopt});
     QVERIFY(view.deviceTorqueGraph()->visible());
     QVERIFY(view.deviceStiffnessGraph()->visible());
     QCOMPARE(view.deviceTorqueGraph()->pen().style(), Qt::DashLine);
@@ -284,7 +284,7 @@ void TestStiffnessView::deviceCurveDashed()
     // Over the edited set's range.
     QCOMPARE(pts.first().x(), -StiffnessView::halfRange(DeviceParams{}));
 
-    view.setDeviceParams(std::nullopt);
+    view.setDeviceTuning({});
     QVERIFY(!view.deviceTorqueGraph()->visible());
     QVERIFY(view.deviceTorqueGraph()->data()->isEmpty());
 }
@@ -338,7 +338,7 @@ void TestStiffnessView::renders()
     StiffnessView view;
     view.resize(500, 400);
     view.setEditedParams(DeviceParams{});
-    view.setDeviceParams(params(0.1, 1.0, 0.15, 0.03, 0.05));
+    view.setDeviceTuning({params(0.1, 1.0, 0.15, 0.03, 0.05), std::nullopt});
     view.setOperatingPoint(0.08, -0.03);
     const QPixmap pixmap = view.plot()->toPixmap(500, 400);
     QVERIFY(!pixmap.isNull());
@@ -456,10 +456,10 @@ void TestStiffnessView::deviceEffectsAreDrawnWithTheDevice()
     EffectParams device = knob();
     device.wall_max = 0.3;
     // Effects without device parameters draw nothing.
-    view.setDeviceEffects(device);
+    view.setDeviceTuning({std::nullopt, device});
     QVERIFY(view.deviceMarks().wallKeys().isEmpty());
     QVERIFY(!view.deviceTorqueGraph()->visible());
-    view.setDeviceParams(linear(0.4, 0.1));
+    view.setDeviceTuning({linear(0.4, 0.1), device});
     const auto tau = points(view.deviceTorqueGraph());
     QVERIFY(!tau.isEmpty());
     for (const QPointF &p : tau)
@@ -472,7 +472,7 @@ void TestStiffnessView::deviceEffectsAreDrawnWithTheDevice()
     QCOMPARE(view.deviceMarks().restPositions()->scatterStyle().shape(), QCPScatterStyle::ssCircle);
     QCOMPARE(points(view.deviceMarks().restPositions()).size(), 5);
     // A device without the effects capability: its curve is τ_rec alone, no marks.
-    view.setDeviceEffects(std::nullopt);
+    view.setDeviceTuning({linear(0.4, 0.1), std::nullopt});
     for (const QPointF &p : points(view.deviceTorqueGraph()))
         QVERIFY(p.y() == recenteringTorque(linear(0.4, 0.1), p.x()));
     QVERIFY(view.deviceMarks().wallKeys().isEmpty());
@@ -506,12 +506,11 @@ void TestStiffnessView::defaultEffectsChangeNothing()
     device.K_max = 1.0;
     StiffnessView plain;
     plain.setEditedParams(p);
-    plain.setDeviceParams(device);
+    plain.setDeviceTuning({device, std::nullopt});
     StiffnessView withDefaults;
     withDefaults.setEditedParams(p);
-    withDefaults.setDeviceParams(device);
     withDefaults.setEditedEffects(EffectParams{});
-    withDefaults.setDeviceEffects(EffectParams{});
+    withDefaults.setDeviceTuning({device, EffectParams{}});
     QCOMPARE(points(withDefaults.torqueGraph()), points(plain.torqueGraph()));
     QCOMPARE(points(withDefaults.stiffnessGraph()), points(plain.stiffnessGraph()));
     QCOMPARE(points(withDefaults.deviceTorqueGraph()), points(plain.deviceTorqueGraph()));
@@ -534,7 +533,7 @@ void TestStiffnessView::deviceCurveReadsOnTheDarkTheme()
     // The device's dashed curve is τ_rec's own colour (which reads 3:1 on both themes,
     // tst_theme), not a darker shade that was faint on the dark one.
     StiffnessView view;
-    view.setDeviceParams(linear(0.5));
+    view.setDeviceTuning({linear(0.5), std::nullopt});
     QCOMPARE(view.deviceTorqueGraph()->pen().color(), palette::channel(Channel::TauRec));
     QCOMPARE(view.deviceStiffnessGraph()->pen().color(), palette::channel(Channel::TauRec));
     QCOMPARE(view.deviceTorqueGraph()->pen().style(), Qt::DashLine);

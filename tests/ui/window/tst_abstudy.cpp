@@ -83,6 +83,11 @@ private:
     ProfileController *profiles() const { return find<ProfileController>("profileController"); }
     ParameterEditor *editor() const { return find<ParameterEditor>("parameterEditor"); }
     DeviceClient *client() const { return find<DeviceClient>("deviceClient"); }
+    //! The device's parameters as read (DeviceParams{} until the device has told them).
+    DeviceParams deviceParams() const
+    {
+        return client()->deviceTuning().params.value_or(DeviceParams{});
+    }
     void connectSim();
     //! Starts slot B as a copy of A with K_max = `kMax` and θ0 = `theta0`; A stays active.
     void makeB(double kMax, double theta0 = 0.0);
@@ -123,7 +128,7 @@ void TestAbStudy::connectSim()
     options.protocol = ProtocolChoice::V2;
     m_window->connectTo(options);
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
-    QTRY_VERIFY_WITH_TIMEOUT(client()->hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client()->deviceTuning().params.has_value(), kConnectMs);
 }
 
 void TestAbStudy::makeB(double kMax, double theta0)
@@ -245,15 +250,15 @@ void TestAbStudy::pushOnSwitchPushesTheSlot()
     profiles()->abToggleAction()->trigger(); // to B: pushed
     QCOMPARE(profiles()->activeSlot(), 1);
     QTRY_COMPARE_WITH_TIMEOUT(editor()->syncState(), SyncState::InSync, kConnectMs);
-    QVERIFY(sameOnWire(client()->deviceParams(), profiles()->slotProfile(1).device));
+    QVERIFY(sameOnWire(deviceParams(), profiles()->slotProfile(1).device));
     profiles()->abToggleAction()->trigger(); // back to A: pushed
     QTRY_COMPARE_WITH_TIMEOUT(editor()->syncState(), SyncState::InSync, kConnectMs);
-    QVERIFY(sameOnWire(client()->deviceParams(), a));
+    QVERIFY(sameOnWire(deviceParams(), a));
     // Undo past a switch is a switch too.
     editor()->undoStack()->undo();
     QCOMPARE(profiles()->activeSlot(), 1);
     QTRY_COMPARE_WITH_TIMEOUT(editor()->syncState(), SyncState::InSync, kConnectMs);
-    QVERIFY(sameOnWire(client()->deviceParams(), profiles()->slotProfile(1).device));
+    QVERIFY(sameOnWire(deviceParams(), profiles()->slotProfile(1).device));
 }
 
 void TestAbStudy::blindRunByKeysWritesTheTrials()
@@ -279,7 +284,7 @@ void TestAbStudy::blindRunByKeysWritesTheTrials()
     for (int i = 0; i < kTrials; ++i) {
         QTRY_COMPARE_WITH_TIMEOUT(runner->phase(), BlindRunner::Phase::Feeling, kConnectMs);
         // Interval 1 is on the device before the trial starts.
-        QVERIFY(sameOnWire(client()->deviceParams(), orders[i][0] == 0 ? a : b));
+        QVERIFY(sameOnWire(deviceParams(), orders[i][0] == 0 ? a : b));
         for (const char *name : {"blind_trial", "blind_interval", "blind_prompt"}) {
             const QString text = part<QLabel>(dialog, name)->text();
             QVERIFY2(!text.contains(u'A') && !text.contains(u'B') && !text.contains(u'K'),
@@ -292,7 +297,7 @@ void TestAbStudy::blindRunByKeysWritesTheTrials()
         QTest::keyClick(dialog, Qt::Key_Space);
         QTRY_COMPARE_WITH_TIMEOUT(runner->phase(), BlindRunner::Phase::Answering, kConnectMs);
         QCOMPARE(part<QLabel>(dialog, "blind_interval")->text(), QStringLiteral("Interval 2"));
-        QVERIFY(sameOnWire(client()->deviceParams(), orders[i][1] == 0 ? a : b));
+        QVERIFY(sameOnWire(deviceParams(), orders[i][1] == 0 ? a : b));
         QTest::keyClick(dialog, answers[i] == 1 ? Qt::Key_1 : Qt::Key_2);
         QCOMPARE(runner->study()->answeredCount(), i + 1);
         // Each answer is in the file at once.

@@ -146,6 +146,11 @@ private:
     //! A part of the window by its object name.
     template<typename T> T *find(const char *name) const { return part<T>(m_window.get(), name); }
     DeviceClient *client() const { return find<DeviceClient>("deviceClient"); }
+    //! The device's parameters as read (DeviceParams{} until the device has told them).
+    DeviceParams deviceParams() const
+    {
+        return client()->deviceTuning().params.value_or(DeviceParams{});
+    }
     LinkStatusWidget *linkStatus() const { return find<LinkStatusWidget>("linkStatus"); }
     const SampleBuffer &liveBuffer() const { return find<PlotFeed>("plotFeed")->liveBuffer(); }
     bool waitForSamples(qsizetype count);
@@ -184,7 +189,8 @@ void TestMainWindow::connectSim(ProtocolChoice protocol)
 {
     m_window->connectTo(simOptions(protocol));
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
-    QTRY_VERIFY_WITH_TIMEOUT(client()->hasDeviceParams() || !client()->deviceInfo().canSetParams(),
+    QTRY_VERIFY_WITH_TIMEOUT(client()->deviceTuning().params.has_value() ||
+                                 !client()->deviceInfo().canSetParams(),
                              kConnectMs);
 }
 
@@ -233,7 +239,7 @@ void TestMainWindow::editPushInSyncChangesBehaviour()
     connectSim();
     ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
-    const DeviceParams before = client()->deviceParams();
+    const DeviceParams before = deviceParams();
 
     DeviceParams edited = editor->params();
     edited.K_max = 0.6;
@@ -242,7 +248,7 @@ void TestMainWindow::editPushInSyncChangesBehaviour()
     QVERIFY(editor->pushAction()->isEnabled());
     editor->pushAction()->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
-    QCOMPARE(float(client()->deviceParams().K_max), 0.6f);
+    QCOMPARE(float(deviceParams().K_max), 0.6f);
     QVERIFY2(find<DeviceParameterLink>("parameterLink")
                  ->lastMessage()
                  .contains(QStringLiteral("K_max 0.4 → 0.6")),
@@ -250,7 +256,7 @@ void TestMainWindow::editPushInSyncChangesBehaviour()
     QCOMPARE(find<PlotPanel>("plotPanel")->events().size(), 1);
     QVERIFY(
         find<PlotPanel>("plotPanel")->events().constFirst().text.contains(QStringLiteral("K_max")));
-    QVERIFY(before.K_max != client()->deviceParams().K_max);
+    QVERIFY(before.K_max != deviceParams().K_max);
 
     // The stiffness view draws the device curve with the new K_max.
     QCPGraph *device = find<StiffnessView>("stiffnessView")->deviceStiffnessGraph();
@@ -303,7 +309,7 @@ void TestMainWindow::invalidValueDisablesPush()
     // Ctrl+Return does nothing while invalid: the device keeps its values.
     editor->pushAction()->trigger();
     QTest::qWait(200); // nothing must arrive; there is no event to wait for
-    QCOMPARE(float(client()->deviceParams().K_min), float(DeviceParams().K_min));
+    QCOMPARE(float(deviceParams().K_min), float(DeviceParams().K_min));
     editor->undoStack()->undo();
     QVERIFY(editor->isValid());
     QVERIFY(editor->pushAction()->isEnabled() || editor->syncState() == SyncState::InSync);
@@ -381,7 +387,7 @@ void TestMainWindow::deviceRejectionIsShown()
              qPrintable(find<DeviceParameterLink>("parameterLink")->lastMessage()));
     QVERIFY2(editor->syncText().contains(QStringLiteral("Q_dz")), qPrintable(editor->syncText()));
     // The device kept its previous, valid set.
-    QCOMPARE(float(client()->deviceParams().Q_dz), float(DeviceParams().Q_dz));
+    QCOMPARE(float(deviceParams().Q_dz), float(DeviceParams().Q_dz));
     QVERIFY(find<PlotPanel>("plotPanel")->events().isEmpty());
 }
 

@@ -125,7 +125,7 @@ void TestWindowLayout::showAt(QSize size)
     m_window->connectTo(options);
     auto *client = find<DeviceClient>("deviceClient");
     QTRY_COMPARE_WITH_TIMEOUT(client->state(), SessionState::Connected, kConnectMs);
-    QTRY_VERIFY_WITH_TIMEOUT(client->hasDeviceParams(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(client->deviceTuning().params.has_value(), kConnectMs);
     QTRY_VERIFY(find<QDockWidget>("simulatorDock")->isVisible());
     settle();
 }
