@@ -15,49 +15,6 @@ using bridge::Component;
 
 namespace {
 
-// How a setting is held: text, a number, a whole number, or one of the special kinds below.
-struct AxisTag
-{}; // referenceAxis: "auto" or a twist component
-struct ComponentTag
-{}; // feedback.component: a wrench component
-struct QosTag
-{};
-struct OriginTag
-{}; // poseOrigin: [x, y, z]
-
-using Place =
-    std::variant<std::string BridgeSettings::*, double BridgeSettings::*, int BridgeSettings::*,
-                 std::string bridge::Topics::*, double bridge::FeedbackSettings::*, AxisTag,
-                 ComponentTag, QosTag, OriginTag>;
-
-struct Key
-{
-    const char *name;
-    Place place;
-};
-
-// The keys of the bridge object, in the order they are written (profile.md).
-const Key kKeys[] = {
-    {"joint_states_topic", &bridge::Topics::jointStates},
-    {"twist_topic", &bridge::Topics::twist},
-    {"twist_unstamped_topic", &bridge::Topics::twistUnstamped},
-    {"pose_topic", &bridge::Topics::pose},
-    {"feedback_topic", &bridge::Topics::feedback},
-    {"wrench_topic", &bridge::Topics::wrench},
-    {"wrench_unstamped_topic", &bridge::Topics::wrenchUnstamped},
-    {"rate", &BridgeSettings::publishRateHz},
-    {"frame_id", &BridgeSettings::frameId},
-    {"joint_name", &BridgeSettings::jointName},
-    {"axis", AxisTag{}},
-    {"origin", OriginTag{}},
-    {"component", ComponentTag{}},
-    {"gain", &bridge::FeedbackSettings::gain},
-    {"limit", &bridge::FeedbackSettings::limit},
-    {"stale", &bridge::FeedbackSettings::staleAfter},
-    {"qos", QosTag{}},
-    {"depth", &BridgeSettings::depth},
-};
-
 constexpr char kAuto[] = "auto";
 
 QByteArray text(const std::string &s)
@@ -65,7 +22,7 @@ QByteArray text(const std::string &s)
     return jsonString(QString::fromStdString(s));
 }
 
-QByteArray valueJson(const BridgeSettings &s, const Place &place)
+QByteArray valueJson(const BridgeSettings &s, const bridge::SettingPlace &place)
 {
     struct Visitor
     {
@@ -78,16 +35,19 @@ QByteArray valueJson(const BridgeSettings &s, const Place &place)
         {
             return jsonNumber(s.feedback.*m);
         }
-        QByteArray operator()(AxisTag) const
+        QByteArray operator()(bridge::AxisPlace) const
         {
             return text(s.referenceAxis ? s.referenceAxis->twistName() : kAuto);
         }
-        QByteArray operator()(ComponentTag) const
+        QByteArray operator()(bridge::ComponentPlace) const
         {
             return text(s.feedback.component.wrenchName());
         }
-        QByteArray operator()(QosTag) const { return text(bridge::qosProfileName(s.qos)); }
-        QByteArray operator()(OriginTag) const
+        QByteArray operator()(bridge::QosPlace) const
+        {
+            return text(bridge::qosProfileName(s.qos));
+        }
+        QByteArray operator()(bridge::OriginPlace) const
         {
             return '[' + jsonNumber(s.poseOrigin[0]) + ", " + jsonNumber(s.poseOrigin[1]) + ", " +
                    jsonNumber(s.poseOrigin[2]) + ']';
@@ -97,7 +57,7 @@ QByteArray valueJson(const BridgeSettings &s, const Place &place)
 }
 
 // Reads one value; returns what is wrong with it ("must be a number"), or an empty string.
-QString readValue(const QJsonValue &v, const Place &place, BridgeSettings &s)
+QString readValue(const QJsonValue &v, const bridge::SettingPlace &place, BridgeSettings &s)
 {
     struct Visitor
     {
@@ -132,7 +92,7 @@ QString readValue(const QJsonValue &v, const Place &place, BridgeSettings &s)
             s.*m = int(d);
             return {};
         }
-        QString operator()(AxisTag) const
+        QString operator()(bridge::AxisPlace) const
         {
             const std::string t = v.toString().toStdString();
             const auto c = Component::parse(t);
@@ -141,7 +101,7 @@ QString readValue(const QJsonValue &v, const Place &place, BridgeSettings &s)
             s.referenceAxis = c;
             return {};
         }
-        QString operator()(ComponentTag) const
+        QString operator()(bridge::ComponentPlace) const
         {
             const auto c = Component::parse(v.toString().toStdString());
             if (!v.isString() || !c)
@@ -149,7 +109,7 @@ QString readValue(const QJsonValue &v, const Place &place, BridgeSettings &s)
             s.feedback.component = *c;
             return {};
         }
-        QString operator()(QosTag) const
+        QString operator()(bridge::QosPlace) const
         {
             const auto q = bridge::parseQosProfile(v.toString().toStdString());
             if (!v.isString() || !q)
@@ -157,7 +117,7 @@ QString readValue(const QJsonValue &v, const Place &place, BridgeSettings &s)
             s.qos = *q;
             return {};
         }
-        QString operator()(OriginTag) const
+        QString operator()(bridge::OriginPlace) const
         {
             const QJsonArray a = v.toArray();
             if (!v.isArray() || a.size() != 3 || !a[0].isDouble() || !a[1].isDouble() ||
@@ -176,8 +136,10 @@ QString readValue(const QJsonValue &v, const Place &place, BridgeSettings &s)
 QByteArray bridgeSettingsJson(const BridgeSettings &settings, int indent)
 {
     JsonObjectWriter writer(indent);
-    for (const Key &key : kKeys)
-        writer.add(key.name, valueJson(settings, key.place));
+    for (const bridge::SettingSpec &spec : bridge::kSettings) {
+        if (spec.inProfile)
+            writer.add(spec.key.data(), valueJson(settings, spec.place));
+    }
     return writer.text();
 }
 
@@ -185,13 +147,15 @@ void readBridgeSettings(const QJsonObject &object, const QString &prefix, Bridge
                         QStringList &errors, QStringList &warnings)
 {
     QStringList known;
-    for (const Key &key : kKeys) {
-        const QString name = QString::fromLatin1(key.name);
+    for (const bridge::SettingSpec &spec : bridge::kSettings) {
+        if (!spec.inProfile)
+            continue;
+        const QString name = QString::fromLatin1(spec.key.data(), qsizetype(spec.key.size()));
         known.append(name);
         const QJsonValue value = object.value(name);
         if (value.isUndefined())
             continue;
-        if (const QString problem = readValue(value, key.place, settings); !problem.isEmpty())
+        if (const QString problem = readValue(value, spec.place, settings); !problem.isEmpty())
             errors.append(prefix + name + u": " + problem + u", got " + jsonValueText(value));
     }
     warnUnknownKeys(object, known, prefix, warnings);
