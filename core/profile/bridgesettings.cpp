@@ -50,20 +50,11 @@ void checkText(std::vector<std::string> &errors, const SettingSpec &spec, const 
                          formatNumber(spec.range.high) + " characters");
 }
 
-constexpr SettingRange from(double low, double high, std::string_view unit = {})
-{
-    return {low, high, false, unit};
-}
-
-constexpr SettingRange aboveAndAtMost(double low, double high, std::string_view unit)
-{
-    return {low, high, true, unit};
-}
-
 constexpr SettingSpec setting(std::string_view key, std::string_view label, SettingPlace place,
-                              SettingRange range, std::string_view valueName, std::string_view help)
+                              SettingRange range, std::string_view valueName, std::string_view help,
+                              bool inProfile = true)
 {
-    return {key, label, place, range, valueName, help};
+    return {key, label, place, range, valueName, help, inProfile};
 }
 
 constexpr SettingSpec topic(std::string_view key, std::string_view label,
@@ -72,21 +63,15 @@ constexpr SettingSpec topic(std::string_view key, std::string_view label,
     return setting(key, label, member, {}, "NAME", help);
 }
 
-// A setting of the network a machine is on, not of a tuning: no profile holds it.
-constexpr SettingSpec network(SettingSpec spec)
-{
-    spec.inProfile = false;
-    return spec;
-}
-
 } // namespace
 
 const std::array<SettingSpec, 20> kSettings = {
-    network(setting("ros", "ROS version", &BridgeSettings::rosVersion, from(1, 2), "VERSION",
-                    "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp "
-                    "(ROS_MASTER_URI).")),
-    network(setting("domain", "domain id", &BridgeSettings::domainId, from(0, kMaxDomainId), "ID",
-                    "DDS domain (default: ROS_DOMAIN_ID, else 0).")),
+    // The network's (withNetworkOf()): no profile holds them.
+    setting("ros", "ROS version", &BridgeSettings::rosVersion, {1, 2}, "VERSION",
+            "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp (ROS_MASTER_URI).",
+            false),
+    setting("domain", "domain id", &BridgeSettings::domainId, {0, kMaxDomainId}, "ID",
+            "DDS domain (default: ROS_DOMAIN_ID, else 0).", false),
     topic("joint_states_topic", "joint states topic", &Topics::jointStates,
           "sensor_msgs/JointState out (default /hatpic/joint_states; empty: none)."),
     topic("twist_topic", "twist topic", &Topics::twist,
@@ -102,30 +87,29 @@ const std::array<SettingSpec, 20> kSettings = {
     topic("wrench_unstamped_topic", "unstamped wrench topic", &Topics::wrenchUnstamped,
           "geometry_msgs/Wrench in (default: none)."),
     setting("rate", "publish rate", &BridgeSettings::publishRateHz,
-            aboveAndAtMost(0, kMaxPublishRateHz, "Hz"), "HZ",
+            {0, kMaxPublishRateHz, "Hz", true}, "HZ",
             "Messages per topic per second, at most (default 100)."),
-    setting("frame_id", "frame id", &BridgeSettings::frameId, from(0, kMaxTextLength), "ID",
+    setting("frame_id", "frame id", &BridgeSettings::frameId, {0, 256}, "ID",
             "header.frame_id (default hatpic)."),
-    setting("joint_name", "joint name", &BridgeSettings::jointName, from(1, kMaxTextLength), "NAME",
+    setting("joint_name", "joint name", &BridgeSettings::jointName, {1, 256}, "NAME",
             "JointState name (default hatpic_knob)."),
     setting("axis", "axis", AxisPlace{}, {}, "AXIS",
             "Twist/pose axis: linear.x … angular.z, or auto (default: linear.x, angular.z in "
             "rotation mode)."),
-    setting("origin", "pose origin", OriginPlace{}, from(-kMaxPoseOrigin, kMaxPoseOrigin, "m"),
-            "X,Y,Z", "Pose position origin [m] (default 0,0,0; MAVROS: 0,0,0.5)."),
+    setting("origin", "pose origin", OriginPlace{}, {-1e6, 1e6, "m"}, "X,Y,Z",
+            "Pose position origin [m] (default 0,0,0; MAVROS: 0,0,0.5)."),
     setting("component", "component", ComponentPlace{}, {}, "COMPONENT",
             "Wrench component fed back: force.x … torque.z (default force.z)."),
-    setting("gain", "gain", &FeedbackSettings::gain, from(-kMaxFeedbackGain, kMaxFeedbackGain),
+    setting("gain", "gain", &FeedbackSettings::gain, {-kMaxFeedbackGain, kMaxFeedbackGain},
             "NM_PER_N", "τ_ext per unit of the component (default 0.154)."),
-    setting("limit", "limit", &FeedbackSettings::limit, from(0, kMaxFeedbackLimit, "N·m"), "NM",
+    setting("limit", "limit", &FeedbackSettings::limit, {0, kMaxFeedbackLimit, "N·m"}, "NM",
             "|τ_ext| at most [N·m] (default 0.154)."),
-    setting("stale", "stale after", &FeedbackSettings::staleAfter,
-            aboveAndAtMost(0, kMaxStaleAfter, "s"), "S",
-            "A wrench older than this gives τ_ext 0 (default 0.5)."),
+    setting("stale", "stale after", &FeedbackSettings::staleAfter, {0, kMaxStaleAfter, "s", true},
+            "S", "A wrench older than this gives τ_ext 0 (default 0.5)."),
     setting("qos", "QoS", QosPlace{}, {}, "PROFILE",
             "Publishers' reliability: reliable (default) or best-effort; subscriptions take "
             "either."),
-    setting("depth", "depth", &BridgeSettings::depth, from(1, kMaxDepth), "N",
+    setting("depth", "depth", &BridgeSettings::depth, {1, 1000}, "N",
             "Publishers' history depth, keep last N (default 10)."),
 };
 

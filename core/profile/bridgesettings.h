@@ -92,10 +92,7 @@ constexpr double kMaxPublishRateHz = 1000; //!< the fastest telemetry there is
 constexpr double kMaxFeedbackGain = 100;   //!< |gain| [N·m per unit]
 constexpr double kMaxFeedbackLimit = 10;   //!< model.md's largest tau_limit [N·m]
 constexpr double kMaxStaleAfter = 10;      //!< [s]
-constexpr int kMaxDepth = 1000;
-constexpr int kMaxDomainId = 232;      //!< DDS's port mapping allows 0…232
-constexpr double kMaxPoseOrigin = 1e6; //!< |origin| per axis [m]
-constexpr int kMaxTextLength = 256;    //!< frame id, joint name [characters]
+constexpr int kMaxDomainId = 232;          //!< DDS's port mapping allows 0…232
 
 // The settings held in types of their own.
 struct AxisPlace
@@ -117,9 +114,13 @@ using SettingPlace =
 //! A number's or whole number's range ("must be RULE"); for text, its length.
 struct SettingRange
 {
-    double low = 0;
-    double high = 0;
-    bool aboveLow = false; //!< low itself is outside
+    constexpr SettingRange(double low = 0, double high = 0, std::string_view unit = {},
+                           bool aboveLow = false)
+        : low(low), high(high), aboveLow(aboveLow), unit(unit)
+    {}
+    double low;
+    double high;
+    bool aboveLow;         //!< low itself is outside
     std::string_view unit; //!< after the range in messages: "Hz"
 };
 
