@@ -1,6 +1,6 @@
-// The parameter table: every fact about each parameter in one place — name, symbol, unit,
-// meaning, bounds and cross-field rule, wire index — read by validation (params.cpp), wire
-// rounding, the editor, its tooltips, the CLI's tables and a test that checks the docs.
+// The parameter table: every fact about each parameter in one place — name, symbol, unit, meaning,
+// bounds and cross-field rule, tuning range and step, wire index — read by validation, wire
+// rounding, the JSON of profiles and recordings, the editor, the CLI's tables and the docs' test.
 // Defaults live in the structs' member initializers (params.h), which the table points to.
 //
 // Plain C++20, constexpr: the device core reads it too.
