@@ -9,10 +9,12 @@
 
 #include <cmath>
 #include <functional>
-#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace hatpic::bridge {
+
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -23,14 +25,14 @@ constexpr int kMaxTelemetryHz = 65535;
 constexpr double kMinFeedbackHz = 20;
 constexpr double kMaxFeedbackHz = 1000;
 
-// Reads `text` into the settings; returns an empty string or what is wrong with it.
+// Reads `text` into the options; returns an empty string or what is wrong with it.
 using Apply = std::function<QString(AppOptions &, const QString &text)>;
 
 struct Setting
 {
-    const char *name;      //!< long option and config key
-    const char *valueName; //!< in --help
-    const char *help;
+    QString name;      //!< long option and config key
+    QString valueName; //!< in --help
+    QString help;
     Apply apply;
 };
 
@@ -48,155 +50,132 @@ std::optional<int> whole(const QString &text)
     return ok ? std::optional(v) : std::nullopt;
 }
 
-// The setting that `place` finds in the options, read as its type: a number, a whole number
-// or text.
-template<typename Place> Apply at(Place place)
+template<typename T> QString assign(T &target, const std::optional<T> &value, const char *problem)
 {
-    return [place](AppOptions &o, const QString &t) -> QString {
-        auto &target = place(o);
-        using T = std::remove_reference_t<decltype(target)>;
-        if constexpr (std::is_same_v<T, std::string>) {
-            target = t.toStdString();
-        } else if constexpr (std::is_same_v<T, int>) {
-            const auto v = whole(t);
-            if (!v)
-                return QStringLiteral("needs a whole number");
-            target = *v;
-        } else {
-            const auto v = number(t);
-            if (!v)
-                return QStringLiteral("needs a number");
-            target = *v;
-        }
-        return {};
-    };
+    if (!value)
+        return QString::fromLatin1(problem);
+    target = *value;
+    return {};
 }
 
-// A twist or wrench component (either spelling); with `allowAuto` also "auto" (nullopt).
-Apply componentSetting(const char *choices, bool allowAuto,
-                       void (*assign)(AppOptions &, std::optional<Component>))
+// A twist or wrench component (either spelling): "needs CHOICES" for anything else.
+std::optional<Component> component(const QString &text, const char *choices, QString *problem)
 {
-    return [=](AppOptions &o, const QString &t) -> QString {
-        if (allowAuto && t == u"auto") {
-            assign(o, std::nullopt);
-            return {};
-        }
-        const auto c = Component::parse(t.toStdString());
-        if (!c)
-            return u"needs " + QString::fromLatin1(choices);
-        assign(o, c);
-        return {};
-    };
+    const auto c = Component::parse(text.toStdString());
+    if (!c)
+        *problem = u"needs " + QString::fromLatin1(choices);
+    return c;
 }
 
-#define HATPIC_SETTING(expr) at([](AppOptions & o) -> auto & { return o.expr; })
+// One of the bridge's settings (kSettings) from an option's text.
+QString applySetting(const SettingSpec &spec, BridgeSettings &s, const QString &t)
+{
+    return std::visit(
+        Overloaded{
+            [&](std::string Topics::*m) {
+                s.topics.*m = t.toStdString();
+                return QString();
+            },
+            [&](std::string BridgeSettings::*m) {
+                s.*m = t.toStdString();
+                return QString();
+            },
+            [&](double BridgeSettings::*m) { return assign(s.*m, number(t), "needs a number"); },
+            [&](double FeedbackSettings::*m) {
+                return assign(s.feedback.*m, number(t), "needs a number");
+            },
+            [&](int BridgeSettings::*m) { return assign(s.*m, whole(t), "needs a whole number"); },
+            [&](AxisPlace) {
+                QString problem;
+                if (t == u"auto")
+                    s.referenceAxis.reset();
+                else if (const auto c = component(t,
+                                                  "linear.x, linear.y, linear.z, angular.x, "
+                                                  "angular.y, angular.z or auto",
+                                                  &problem))
+                    s.referenceAxis = c;
+                return problem;
+            },
+            [&](ComponentPlace) {
+                QString problem;
+                if (const auto c = component(
+                        t, "force.x, force.y, force.z, torque.x, torque.y or torque.z", &problem))
+                    s.feedback.component = *c;
+                return problem;
+            },
+            [&](QosPlace) {
+                return assign(s.qos, parseQosProfile(t.toStdString()),
+                              "needs reliable or best-effort");
+            },
+            [&](OriginPlace) {
+                const QString needs = QStringLiteral("needs three numbers X,Y,Z");
+                const QStringList parts = t.split(u',');
+                if (parts.size() != 3)
+                    return needs;
+                std::array<double, 3> origin{};
+                for (std::size_t i = 0; i < 3; ++i) {
+                    const auto v = number(parts[qsizetype(i)]);
+                    if (!v)
+                        return needs;
+                    origin[i] = *v;
+                }
+                s.poseOrigin = origin;
+                return QString();
+            },
+        },
+        spec.place);
+}
 
+// hatpic-bridge's own options, then every setting of the bridge (kSettings), as --help lists
+// them.
 const std::vector<Setting> &settingTable()
 {
-    static const std::vector<Setting> table = {
-        {"baud", "N", "Baud rate, 300 to 4000000 (default: the protocol's).",
-         [](AppOptions &o, const QString &t) {
-             const auto v = baudValue(t); // the bounds of every program's --baud
-             if (!v)
-                 return QString(u"needs " + baudRule());
-             o.connect.baud = *v;
-             return QString();
-         }},
-        {"profile", "FILE", "Profile to push to the device; its host block sets v_max and mode.",
-         [](AppOptions &o, const QString &t) {
-             o.profilePath = t;
-             return QString();
-         }},
-        {"telemetry-rate", "HZ", "Telemetry rate to ask of the device (default 1000).",
-         [](AppOptions &o, const QString &t) {
-             const auto v = whole(t);
-             if (!v || *v < 1 || *v > kMaxTelemetryHz)
-                 return QStringLiteral("needs a whole number of Hz from 1 to 65535");
-             o.connect.streamRateHz = quint16(*v);
-             return QString();
-         }},
-        {"feedback-rate", "HZ",
-         "SET_FEEDBACK frames per second at most; a new tau_ext goes at once (default 1000; 20 "
-         "to 1000).",
-         [](AppOptions &o, const QString &t) {
-             const auto v = number(t);
-             if (!v || *v < kMinFeedbackHz || *v > kMaxFeedbackHz)
-                 return QStringLiteral("needs a number of Hz from 20 to 1000");
-             o.connect.feedbackRateHz = *v;
-             return QString();
-         }},
-        {"ros", "VERSION",
-         "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp (ROS_MASTER_URI).",
-         HATPIC_SETTING(settings.rosVersion)},
-        {"domain", "ID", "DDS domain (default: ROS_DOMAIN_ID, else 0).",
-         HATPIC_SETTING(settings.domainId)},
-        {"joint-states-topic", "NAME",
-         "sensor_msgs/JointState out (default /hatpic/joint_states; "
-         "empty: none).",
-         HATPIC_SETTING(settings.topics.jointStates)},
-        {"twist-topic", "NAME", "geometry_msgs/TwistStamped out (default /hatpic/twist).",
-         HATPIC_SETTING(settings.topics.twist)},
-        {"twist-unstamped-topic", "NAME",
-         "geometry_msgs/Twist out, the same twist unstamped (default: none).",
-         HATPIC_SETTING(settings.topics.twistUnstamped)},
-        {"pose-topic", "NAME", "geometry_msgs/PoseStamped out (default /hatpic/pose).",
-         HATPIC_SETTING(settings.topics.pose)},
-        {"feedback-topic", "NAME", "geometry_msgs/WrenchStamped out (default /hatpic/feedback).",
-         HATPIC_SETTING(settings.topics.feedback)},
-        {"wrench-topic", "NAME", "geometry_msgs/WrenchStamped in (default /wrench_estimation).",
-         HATPIC_SETTING(settings.topics.wrench)},
-        {"wrench-unstamped-topic", "NAME", "geometry_msgs/Wrench in (default: none).",
-         HATPIC_SETTING(settings.topics.wrenchUnstamped)},
-        {"rate", "HZ", "Messages per topic per second, at most (default 100).",
-         HATPIC_SETTING(settings.publishRateHz)},
-        {"frame-id", "ID", "header.frame_id (default hatpic).", HATPIC_SETTING(settings.frameId)},
-        {"joint-name", "NAME", "JointState name (default hatpic_knob).",
-         HATPIC_SETTING(settings.jointName)},
-        {"axis", "AXIS",
-         "Twist/pose axis: linear.x … angular.z, or auto (default: linear.x, "
-         "angular.z in rotation mode).",
-         componentSetting(
-             "linear.x, linear.y, linear.z, angular.x, angular.y, angular.z or auto", true,
-             [](AppOptions &o, std::optional<Component> c) { o.settings.referenceAxis = c; })},
-        {"origin", "X,Y,Z", "Pose position origin [m] (default 0,0,0; MAVROS: 0,0,0.5).",
-         [](AppOptions &o, const QString &t) {
-             const QStringList parts = t.split(u',');
-             if (parts.size() != 3)
-                 return QStringLiteral("needs three numbers X,Y,Z");
-             for (int i = 0; i < 3; ++i) {
-                 const auto v = number(parts[i]);
+    static const std::vector<Setting> table = [] {
+        std::vector<Setting> t = {
+            {u"baud"_s, u"N"_s, u"Baud rate, 300 to 4000000 (default: the protocol's)."_s,
+             [](AppOptions &o, const QString &text) {
+                 const auto v = baudValue(text); // the bounds of every program's --baud
                  if (!v)
-                     return QStringLiteral("needs three numbers X,Y,Z");
-                 o.settings.poseOrigin[i] = *v;
-             }
-             return QString();
-         }},
-        {"component", "COMPONENT",
-         "Wrench component fed back: force.x … torque.z (default "
-         "force.z).",
-         componentSetting("force.x, force.y, force.z, torque.x, torque.y or torque.z", false,
-                          [](AppOptions &o, std::optional<Component> c) {
-                              o.settings.feedback.component = *c;
-                          })},
-        {"gain", "NM_PER_N", "τ_ext per unit of the component (default 0.154).",
-         HATPIC_SETTING(settings.feedback.gain)},
-        {"limit", "NM", "|τ_ext| at most [N·m] (default 0.154).",
-         HATPIC_SETTING(settings.feedback.limit)},
-        {"stale", "S", "A wrench older than this gives τ_ext 0 (default 0.5).",
-         HATPIC_SETTING(settings.feedback.staleAfter)},
-        {"qos", "PROFILE",
-         "Publishers' reliability: reliable (default) or best-effort; subscriptions take "
-         "either.",
-         [](AppOptions &o, const QString &t) {
-             const auto p = parseQosProfile(t.toStdString());
-             if (!p)
-                 return QStringLiteral("needs reliable or best-effort");
-             o.settings.qos = *p;
-             return QString();
-         }},
-        {"depth", "N", "Publishers' history depth, keep last N (default 10).",
-         HATPIC_SETTING(settings.depth)},
-    };
+                     return QString(u"needs " + baudRule());
+                 o.connect.baud = *v;
+                 return QString();
+             }},
+            {u"profile"_s, u"FILE"_s,
+             u"Profile to push to the device; its host block sets v_max and mode."_s,
+             [](AppOptions &o, const QString &text) {
+                 o.profilePath = text;
+                 return QString();
+             }},
+            {u"telemetry-rate"_s, u"HZ"_s, u"Telemetry rate to ask of the device (default 1000)."_s,
+             [](AppOptions &o, const QString &text) {
+                 const auto v = whole(text);
+                 if (!v || *v < 1 || *v > kMaxTelemetryHz)
+                     return QStringLiteral("needs a whole number of Hz from 1 to 65535");
+                 o.connect.streamRateHz = quint16(*v);
+                 return QString();
+             }},
+            {u"feedback-rate"_s, u"HZ"_s,
+             u"SET_FEEDBACK frames per second at most; a new tau_ext goes at once (default 1000; "
+             u"20 to 1000)."_s,
+             [](AppOptions &o, const QString &text) {
+                 const auto v = number(text);
+                 if (!v || *v < kMinFeedbackHz || *v > kMaxFeedbackHz)
+                     return QStringLiteral("needs a number of Hz from 20 to 1000");
+                 o.connect.feedbackRateHz = *v;
+                 return QString();
+             }},
+        };
+        for (const SettingSpec &spec : kSettings) {
+            const auto utf8 = [](std::string_view v) {
+                return QString::fromUtf8(v.data(), qsizetype(v.size()));
+            };
+            t.push_back({utf8(spec.key).replace(u'_', u'-'), utf8(spec.valueName), utf8(spec.help),
+                         [&spec](AppOptions &o, const QString &text) {
+                             return applySetting(spec, o.settings, text);
+                         }});
+        }
+        return t;
+    }();
     return table;
 }
 
@@ -206,9 +185,9 @@ QString echoed(const QString &text)
     return QString::fromStdString(echoedText(text.toStdString()));
 }
 
-QString optionError(const char *name, const QString &value, const QString &problem)
+QString optionError(const QString &name, const QString &value, const QString &problem)
 {
-    return u"--" + QString::fromLatin1(name) + u" " + problem + u", got '" + echoed(value) + u"'.";
+    return u"--" + name + u" " + problem + u", got '" + echoed(value) + u"'.";
 }
 
 // The --config file's settings, applied first.
@@ -228,7 +207,7 @@ QString applyConfig(const QString &path, AppOptions &options)
     for (auto it = object.begin(); it != object.end(); ++it) {
         const Setting *setting = nullptr;
         for (const Setting &s : settingTable()) {
-            if (it.key() == QLatin1String(s.name))
+            if (it.key() == s.name)
                 setting = &s;
         }
         if (!setting)
@@ -268,8 +247,7 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
     parser.addOption(portOption);
     parser.addOption(configOption);
     for (const Setting &s : settingTable()) {
-        parser.addOption(QCommandLineOption(QString::fromLatin1(s.name), QString::fromUtf8(s.help),
-                                            QString::fromLatin1(s.valueName)));
+        parser.addOption(QCommandLineOption(s.name, s.help, s.valueName));
     }
     if (!parser.parse(arguments)) {
         // Qt's sentence quotes an unknown option whole; ours cuts a long one.
@@ -307,7 +285,7 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
             }
         }
         for (const Setting &s : settingTable()) {
-            const QString name = QString::fromLatin1(s.name);
+            const QString &name = s.name;
             if (!parser.isSet(name))
                 continue;
             if (const QString problem = s.apply(options, parser.value(name)); !problem.isEmpty()) {

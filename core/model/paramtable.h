@@ -1,6 +1,6 @@
-// The parameter table: every fact about each parameter in one place — name, symbol, unit,
-// meaning, bounds and cross-field rule, wire index — read by validation (params.cpp), wire
-// rounding, the editor, its tooltips, the CLI's tables and a test that checks the docs.
+// The parameter table: every fact about each parameter in one place — name, symbol, unit, meaning,
+// bounds and cross-field rule, tuning range and step, wire index — read by validation, wire
+// rounding, the JSON of profiles and recordings, the editor, the CLI's tables and the docs' test.
 // Defaults live in the structs' member initializers (params.h), which the table points to.
 //
 // Plain C++20, constexpr: the device core reads it too.
@@ -52,6 +52,16 @@ struct CrossRule
     bool strict = false;
 };
 
+//! How a person sets the value: the range it is usually tuned in (a slider's, narrower than the
+//! valid one) and the step a click moves it by [the field's unit].
+struct FieldDisplay
+{
+    double low = 0;
+    double high = 1;
+    double step = 0.01;
+    bool decades = false; //!< spans decades: a log scale, steps relative to the value
+};
+
 template<typename Params> struct FieldSpec
 {
     std::string_view name;    //!< key in files, CLI and protocol docs: "K_min"
@@ -64,6 +74,7 @@ template<typename Params> struct FieldSpec
     FieldBound upper;
     CrossRule cross;
     bool angle = false; //!< an angle: user interfaces may show degrees
+    FieldDisplay display;
 };
 
 using DeviceFieldSpec = FieldSpec<DeviceParams>;
@@ -101,7 +112,8 @@ inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceF
      paramtable::atLeast(1e-6),
      paramtable::atMost(1.0),
      {},
-     false},
+     false,
+     {1e-6, 1.0, 1e-5, true}},
     {"M_adm",
      "M_adm",
      "N·m·s/rad",
@@ -111,7 +123,8 @@ inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceF
      paramtable::above(0.0),
      paramtable::atMost(10.0),
      {},
-     false},
+     false,
+     {1e-5, 10.0, 1e-3, true}},
     {"K_min",
      "K_min",
      "N·m/rad",
@@ -121,7 +134,8 @@ inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceF
      paramtable::atLeast(0.0),
      {},
      {3, false},
-     false},
+     false,
+     {0.0, 5.0, 0.01}},
     {"K_max",
      "K_max",
      "N·m/rad",
@@ -131,7 +145,8 @@ inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceF
      paramtable::atLeast(0.0),
      paramtable::atMost(50.0),
      {},
-     false},
+     false,
+     {0.0, 5.0, 0.01}},
     {"N",
      "N",
      "rad",
@@ -141,7 +156,8 @@ inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceF
      paramtable::above(0.0),
      paramtable::atMost(paramtable::kPi / 2, "π/2"),
      {},
-     true},
+     true,
+     {0.0, paramtable::kPi / 2, 0.005}},
     {"Q_dz",
      "Q_dz",
      "rad",
@@ -151,7 +167,8 @@ inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceF
      paramtable::atLeast(0.0),
      {},
      {4, true},
-     true},
+     true,
+     {0.0, 0.5, 0.001}},
     {"theta0",
      "θ0",
      "rad",
@@ -161,7 +178,8 @@ inline constexpr std::array<DeviceFieldSpec, DeviceParams::kFieldCount> kDeviceF
      paramtable::atLeast(-paramtable::kPi, "−π"),
      paramtable::atMost(paramtable::kPi, "π"),
      {},
-     true},
+     true,
+     {-paramtable::kPi, paramtable::kPi, 0.01}},
 }};
 
 //! The host's numeric fields (model.md § 1); mode and ref_deadzone are not numbers.
@@ -175,7 +193,8 @@ inline constexpr std::array<HostFieldSpec, 2> kHostFields = {{
      paramtable::above(0.0),
      paramtable::atMost(100.0),
      {},
-     false},
+     false,
+     {0.01, 100.0, 0.1, true}},
     {"tau_limit",
      "tau_limit",
      "N·m",
@@ -185,14 +204,16 @@ inline constexpr std::array<HostFieldSpec, 2> kHostFields = {{
      paramtable::above(0.0),
      paramtable::atMost(10.0),
      {},
-     false},
+     false,
+     {0.0, 2.0, 0.01}},
 }};
 
 using EffectFieldSpec = FieldSpec<EffectParams>;
 using VibrationFieldSpec = FieldSpec<Vibration>;
 
 //! The effect block's fields in wire order (effects.md § 2). detent_strength's upper bound is
-//! the device's tau_limit.
+//! the device's tau_limit. Tuning ranges: a clearly felt detent is 0.02–0.1 N·m on the STS3032,
+//! and a wall stiffer than about 2.5 N·m/rad bounces there (docs/effects.md).
 inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectFields = {{
     {"detent_strength",
      "A_det",
@@ -203,7 +224,8 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      paramtable::atLeast(0.0),
      paramtable::atMostExternal("tau_limit"),
      {},
-     false},
+     false,
+     {0.0, 0.44, 0.005}},
     {"detent_spacing",
      "s_det",
      "rad",
@@ -213,7 +235,8 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      paramtable::atLeast(0.01),
      paramtable::atMost(paramtable::kPi, "π"),
      {},
-     true},
+     true,
+     {0.01, 1.0, 0.01}},
     {"detent_range",
      "R_det",
      "rad",
@@ -223,7 +246,8 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      paramtable::atLeast(0.0),
      paramtable::atMost(paramtable::kPi, "π"),
      {},
-     true},
+     true,
+     {0.0, paramtable::kPi, 0.01}},
     {"wall_min",
      "wall_min",
      "rad",
@@ -233,7 +257,8 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      paramtable::atLeast(-paramtable::kPi, "−π"),
      paramtable::atMost(0.0),
      {},
-     true},
+     true,
+     {-paramtable::kPi, 0.0, 0.01}},
     {"wall_max",
      "wall_max",
      "rad",
@@ -243,7 +268,8 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      paramtable::atLeast(0.0),
      paramtable::atMost(paramtable::kPi, "π"),
      {},
-     true},
+     true,
+     {0.0, paramtable::kPi, 0.01}},
     {"wall_stiffness",
      "K_w",
      "N·m/rad",
@@ -253,7 +279,8 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      paramtable::atLeast(0.0),
      paramtable::atMost(50.0),
      {},
-     false},
+     false,
+     {0.0, 10.0, 0.05}},
     {"wall_damping",
      "B_w",
      "N·m·s/rad",
@@ -263,7 +290,8 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      paramtable::atLeast(0.0),
      paramtable::atMost(1.0),
      {},
-     false},
+     false,
+     {0.0, 0.1, 0.001}},
 }};
 
 //! VIBRATE's fields (effects.md § 2); amplitude's upper bound is tau_limit, and the frequency
@@ -278,7 +306,8 @@ inline constexpr std::array<VibrationFieldSpec, 3> kVibrationFields = {{
      paramtable::atLeast(0.0),
      paramtable::atMostExternal("tau_limit"),
      {},
-     false},
+     false,
+     {0.0, 0.44, 0.005}},
     {"frequency",
      "f",
      "Hz",
@@ -288,7 +317,8 @@ inline constexpr std::array<VibrationFieldSpec, 3> kVibrationFields = {{
      paramtable::atLeast(1.0),
      paramtable::atMost(500.0),
      {},
-     false},
+     false,
+     {1.0, 500.0, 1.0}},
     {"duration",
      "d",
      "s",
@@ -298,8 +328,22 @@ inline constexpr std::array<VibrationFieldSpec, 3> kVibrationFields = {{
      paramtable::atLeast(0.0),
      paramtable::atMost(10.0),
      {},
-     false},
+     false,
+     {0.0, 2.0, 0.05}},
 }};
+
+//! The field called `name`; a name the table lacks does not compile.
+template<typename Params, std::size_t N>
+consteval const FieldSpec<Params> &fieldNamed(const std::array<FieldSpec<Params>, N> &table,
+                                              std::string_view name)
+{
+    const FieldSpec<Params> *found = nullptr;
+    for (const FieldSpec<Params> &f : table) {
+        if (f.name == name)
+            found = &f;
+    }
+    return *found;
+}
 
 //! The field's single-field range as numbers, with a cross rule's partner's range standing
 //! in for a missing upper bound (K_min ≤ K_max ≤ 50): what wire rounding must stay inside.

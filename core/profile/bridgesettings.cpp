@@ -8,20 +8,110 @@ namespace {
 
 constexpr const char *kAxisLetters[] = {"x", "y", "z"};
 
-// "name: must be …, got VALUE" unless `ok`.
-void check(std::vector<std::string> &errors, bool ok, const std::string &name,
-           const std::string &rule, double value)
+// The rule of a number's range in words: "above 0 and at most 1000 Hz", "from 0 to 10 N·m",
+// "a whole number from 1 to 1000", "1 or 2".
+std::string rangeRule(const SettingSpec &spec, bool whole)
 {
-    if (!ok)
-        errors.push_back(name + ": must be " + rule + ", got " + formatNumber(value));
+    const std::string low = formatNumber(spec.range.low);
+    const std::string high = formatNumber(spec.range.high);
+    const std::string unit = spec.range.unit.empty() ? "" : " " + std::string(spec.range.unit);
+    if (spec.range.aboveLow)
+        return "above " + low + " and at most " + high + unit;
+    if (whole && spec.range.high == spec.range.low + 1)
+        return low + " or " + high;
+    return (whole ? "a whole number from " : "from ") + low + " to " + high + unit;
 }
 
-bool within(double value, double low, double high)
+// "label: must be RULE, got VALUE" unless `value` is within the spec's range.
+void checkRange(std::vector<std::string> &errors, const SettingSpec &spec, const std::string &label,
+                double value, bool whole)
 {
-    return std::isfinite(value) && value >= low && value <= high;
+    const bool ok = std::isfinite(value) &&
+                    (spec.range.aboveLow ? value > spec.range.low : value >= spec.range.low) &&
+                    value <= spec.range.high;
+    if (!ok)
+        errors.push_back(label + ": must be " + rangeRule(spec, whole) + ", got " +
+                         formatNumber(value));
+}
+
+void checkTopic(std::vector<std::string> &errors, const SettingSpec &spec, const std::string &topic)
+{
+    if (!topic.empty() && !isValidTopicName(topic))
+        errors.push_back(std::string(spec.label) + ": '" + echoedText(topic) +
+                         "' is not a ROS topic name (letters, digits and '_' between single '/', "
+                         "not starting with a digit)");
+}
+
+void checkText(std::vector<std::string> &errors, const SettingSpec &spec, const std::string &text)
+{
+    if (text.size() < spec.range.low || text.size() > spec.range.high)
+        errors.push_back(std::string(spec.label) + ": must be " +
+                         (spec.range.low > 0 ? formatNumber(spec.range.low) + " to " : "at most ") +
+                         formatNumber(spec.range.high) + " characters");
+}
+
+constexpr SettingSpec setting(std::string_view key, std::string_view label, SettingPlace place,
+                              SettingRange range, std::string_view valueName, std::string_view help,
+                              bool inProfile = true)
+{
+    return {key, label, place, range, valueName, help, inProfile};
+}
+
+constexpr SettingSpec topic(std::string_view key, std::string_view label,
+                            std::string Topics::*member, std::string_view help)
+{
+    return setting(key, label, member, {}, "NAME", help);
 }
 
 } // namespace
+
+const std::array<SettingSpec, 20> kSettings = {
+    // The network's (withNetworkOf()): no profile holds them.
+    setting("ros", "ROS version", &BridgeSettings::rosVersion, {1, 2}, "VERSION",
+            "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp (ROS_MASTER_URI).",
+            false),
+    setting("domain", "domain id", &BridgeSettings::domainId, {0, kMaxDomainId}, "ID",
+            "DDS domain (default: ROS_DOMAIN_ID, else 0).", false),
+    topic("joint_states_topic", "joint states topic", &Topics::jointStates,
+          "sensor_msgs/JointState out (default /hatpic/joint_states; empty: none)."),
+    topic("twist_topic", "twist topic", &Topics::twist,
+          "geometry_msgs/TwistStamped out (default /hatpic/twist)."),
+    topic("twist_unstamped_topic", "unstamped twist topic", &Topics::twistUnstamped,
+          "geometry_msgs/Twist out, the same twist unstamped (default: none)."),
+    topic("pose_topic", "pose topic", &Topics::pose,
+          "geometry_msgs/PoseStamped out (default /hatpic/pose)."),
+    topic("feedback_topic", "feedback topic", &Topics::feedback,
+          "geometry_msgs/WrenchStamped out (default /hatpic/feedback)."),
+    topic("wrench_topic", "wrench topic", &Topics::wrench,
+          "geometry_msgs/WrenchStamped in (default /wrench_estimation)."),
+    topic("wrench_unstamped_topic", "unstamped wrench topic", &Topics::wrenchUnstamped,
+          "geometry_msgs/Wrench in (default: none)."),
+    setting("rate", "publish rate", &BridgeSettings::publishRateHz,
+            {0, kMaxPublishRateHz, "Hz", true}, "HZ",
+            "Messages per topic per second, at most (default 100)."),
+    setting("frame_id", "frame id", &BridgeSettings::frameId, {0, 256}, "ID",
+            "header.frame_id (default hatpic)."),
+    setting("joint_name", "joint name", &BridgeSettings::jointName, {1, 256}, "NAME",
+            "JointState name (default hatpic_knob)."),
+    setting("axis", "axis", AxisPlace{}, {}, "AXIS",
+            "Twist/pose axis: linear.x … angular.z, or auto (default: linear.x, angular.z in "
+            "rotation mode)."),
+    setting("origin", "pose origin", OriginPlace{}, {-1e6, 1e6, "m"}, "X,Y,Z",
+            "Pose position origin [m] (default 0,0,0; MAVROS: 0,0,0.5)."),
+    setting("component", "component", ComponentPlace{}, {}, "COMPONENT",
+            "Wrench component fed back: force.x … torque.z (default force.z)."),
+    setting("gain", "gain", &FeedbackSettings::gain, {-kMaxFeedbackGain, kMaxFeedbackGain},
+            "NM_PER_N", "τ_ext per unit of the component (default 0.154)."),
+    setting("limit", "limit", &FeedbackSettings::limit, {0, kMaxFeedbackLimit, "N·m"}, "NM",
+            "|τ_ext| at most [N·m] (default 0.154)."),
+    setting("stale", "stale after", &FeedbackSettings::staleAfter, {0, kMaxStaleAfter, "s", true},
+            "S", "A wrench older than this gives τ_ext 0 (default 0.5)."),
+    setting("qos", "QoS", QosPlace{}, {}, "PROFILE",
+            "Publishers' reliability: reliable (default) or best-effort; subscriptions take "
+            "either."),
+    setting("depth", "depth", &BridgeSettings::depth, {1, 1000}, "N",
+            "Publishers' history depth, keep last N (default 10)."),
+};
 
 std::string Component::twistName() const
 {
@@ -103,46 +193,26 @@ BridgeSettings withNetworkOf(BridgeSettings settings, const BridgeSettings &netw
 std::vector<std::string> validate(const BridgeSettings &s)
 {
     std::vector<std::string> errors;
-    const std::pair<const char *, const std::string *> topics[] = {
-        {"joint states topic", &s.topics.jointStates},
-        {"twist topic", &s.topics.twist},
-        {"unstamped twist topic", &s.topics.twistUnstamped},
-        {"pose topic", &s.topics.pose},
-        {"feedback topic", &s.topics.feedback},
-        {"wrench topic", &s.topics.wrench},
-        {"unstamped wrench topic", &s.topics.wrenchUnstamped}};
-    for (const auto &[what, topic] : topics) {
-        if (!topic->empty() && !isValidTopicName(*topic))
-            errors.push_back(std::string(what) + ": '" + echoedText(*topic) +
-                             "' is not a ROS topic name (letters, digits and '_' between single "
-                             "'/', not starting with a digit)");
+    for (const SettingSpec &spec : kSettings) {
+        const std::string label(spec.label);
+        std::visit(
+            Overloaded{
+                [&](std::string Topics::*m) { checkTopic(errors, spec, s.topics.*m); },
+                [&](std::string BridgeSettings::*m) { checkText(errors, spec, s.*m); },
+                [&](double BridgeSettings::*m) { checkRange(errors, spec, label, s.*m, false); },
+                [&](double FeedbackSettings::*m) {
+                    checkRange(errors, spec, label, s.feedback.*m, false);
+                },
+                [&](int BridgeSettings::*m) { checkRange(errors, spec, label, s.*m, true); },
+                [&](OriginPlace) {
+                    for (std::size_t i = 0; i < 3; ++i)
+                        checkRange(errors, spec, label + " " + kAxisLetters[i], s.poseOrigin[i],
+                                   false);
+                },
+                [](auto) {}, // an axis, a component or a QoS profile is valid by its type
+            },
+            spec.place);
     }
-    check(errors, within(s.publishRateHz, 0, kMaxPublishRateHz) && s.publishRateHz > 0,
-          "publish rate", "above 0 and at most " + formatNumber(kMaxPublishRateHz) + " Hz",
-          s.publishRateHz);
-    check(errors, within(s.feedback.gain, -kMaxFeedbackGain, kMaxFeedbackGain), "gain",
-          "a finite number from -" + formatNumber(kMaxFeedbackGain) + " to " +
-              formatNumber(kMaxFeedbackGain),
-          s.feedback.gain);
-    check(errors, within(s.feedback.limit, 0, kMaxFeedbackLimit), "limit",
-          "from 0 to " + formatNumber(kMaxFeedbackLimit) + " N·m", s.feedback.limit);
-    check(errors, within(s.feedback.staleAfter, 0, kMaxStaleAfter) && s.feedback.staleAfter > 0,
-          "stale after", "above 0 and at most " + formatNumber(kMaxStaleAfter) + " s",
-          s.feedback.staleAfter);
-    for (int i = 0; i < 3; ++i) {
-        check(errors, within(s.poseOrigin[i], -kMaxPoseOrigin, kMaxPoseOrigin),
-              std::string("pose origin ") + kAxisLetters[i],
-              "a finite number of metres within ±" + formatNumber(kMaxPoseOrigin), s.poseOrigin[i]);
-    }
-    check(errors, s.depth >= 1 && s.depth <= kMaxDepth, "depth",
-          "a whole number from 1 to " + std::to_string(kMaxDepth), s.depth);
-    check(errors, s.domainId >= 0 && s.domainId <= kMaxDomainId, "domain id",
-          "a whole number from 0 to " + std::to_string(kMaxDomainId), s.domainId);
-    check(errors, s.rosVersion == 1 || s.rosVersion == 2, "ROS version", "1 or 2", s.rosVersion);
-    if (s.frameId.size() > 256)
-        errors.push_back("frame id: must be at most 256 characters");
-    if (s.jointName.empty() || s.jointName.size() > 256)
-        errors.push_back("joint name: must be 1 to 256 characters");
     return errors;
 }
 

@@ -7,6 +7,8 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 namespace hatpic::bridge {
@@ -90,9 +92,61 @@ constexpr double kMaxPublishRateHz = 1000; //!< the fastest telemetry there is
 constexpr double kMaxFeedbackGain = 100;   //!< |gain| [N·m per unit]
 constexpr double kMaxFeedbackLimit = 10;   //!< model.md's largest tau_limit [N·m]
 constexpr double kMaxStaleAfter = 10;      //!< [s]
-constexpr int kMaxDepth = 1000;
-constexpr int kMaxDomainId = 232;      //!< DDS's port mapping allows 0…232
-constexpr double kMaxPoseOrigin = 1e6; //!< |origin| per axis [m]
+constexpr int kMaxDomainId = 232;          //!< DDS's port mapping allows 0…232
+
+// The settings held in types of their own.
+struct AxisPlace
+{}; //!< referenceAxis: "auto" or a twist component
+struct ComponentPlace
+{}; //!< feedback.component: a wrench component
+struct QosPlace
+{}; //!< qos
+struct OriginPlace
+{}; //!< poseOrigin: x, y, z [m]
+
+//! Where a setting lives, and so how it is held: a topic name, other text, a number, a whole
+//! number, or one of the four above.
+using SettingPlace =
+    std::variant<std::string Topics::*, std::string BridgeSettings::*, double BridgeSettings::*,
+                 double FeedbackSettings::*, int BridgeSettings::*, AxisPlace, ComponentPlace,
+                 QosPlace, OriginPlace>;
+
+//! A number's or whole number's range ("must be RULE"); for text, its length.
+struct SettingRange
+{
+    constexpr SettingRange(double low = 0, double high = 0, std::string_view unit = {},
+                           bool aboveLow = false)
+        : low(low), high(high), aboveLow(aboveLow), unit(unit)
+    {}
+    double low;
+    double high;
+    bool aboveLow;         //!< low itself is outside
+    std::string_view unit; //!< after the range in messages: "Hz"
+};
+
+//! One function per kind of place, for std::visit: Overloaded{[](AxisPlace) {…}, …}.
+template<typename... F> struct Overloaded : F...
+{
+    using F::operator()...;
+};
+
+//! One setting, described once: the profile's JSON (profile.md), hatpic-bridge's options and
+//! config file (ros.md) and validate() all follow from it. Defaults are BridgeSettings' own.
+struct SettingSpec
+{
+    std::string_view key;   //!< in a profile's host.bridge; with '-' for '_' the option's name
+    std::string_view label; //!< what a message calls it: "publish rate"
+    SettingPlace place;
+    //! Topics, the axis, the component and the QoS profile are valid by their form; the
+    //! origin's range is each coordinate's.
+    SettingRange range;
+    std::string_view valueName; //!< in --help: "HZ"
+    std::string_view help;      //!< --help's sentence
+    bool inProfile = true;      //!< false: the network's (withNetworkOf()), no profile holds it
+};
+
+//! Every setting, in --help's order; a profile writes those it holds in the same order.
+extern const std::array<SettingSpec, 20> kSettings;
 
 //! Every broken rule, one sentence each ("publish rate: must be above 0 and at most 1000 Hz,
 //! got 0"). Empty means valid.

@@ -1,5 +1,7 @@
 #include "paramsjson.h"
 
+#include "model/paramtable.h"
+
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -16,9 +18,7 @@ QString latin1(std::string_view text)
 
 // The keys of a `host` object, in the order they are written.
 const char *const kHostMode = "mode";
-const char *const kHostVMax = "v_max";
 const char *const kHostRefDeadzone = "ref_deadzone";
-const char *const kHostTauLimit = "tau_limit";
 
 } // namespace
 
@@ -161,11 +161,55 @@ QByteArray JsonObjectWriter::text() const
     return "{\n" + m_items.join(",\n") + '\n' + QByteArray(m_indent, ' ') + '}';
 }
 
+namespace {
+
+// The table's names are literals, so their data() ends in a NUL.
+template<typename Params>
+void addNumber(JsonObjectWriter &writer, const FieldSpec<Params> &f, const Params &params)
+{
+    writer.add(f.name.data(), jsonNumber(params.*f.member));
+}
+
+template<typename Params, std::size_t N>
+void addNumbers(JsonObjectWriter &writer, const std::array<FieldSpec<Params>, N> &table,
+                const Params &params)
+{
+    for (const FieldSpec<Params> &f : table)
+        addNumber(writer, f, params);
+}
+
+// Reads the table's number fields of `object` into `params` and appends their keys to `known`.
+// A key that is missing is an error only when `required`; one that holds no number always is.
+// Returns which fields were set.
+template<typename Params, std::size_t N>
+std::array<bool, N> readNumbers(const std::array<FieldSpec<Params>, N> &table,
+                                const QJsonObject &object, const QString &prefix, bool required,
+                                Params &params, QStringList &errors, QStringList &known)
+{
+    std::array<bool, N> present{};
+    for (std::size_t i = 0; i < N; ++i) {
+        const QString name = latin1(table[i].name);
+        known.append(name);
+        const QJsonValue value = object.value(name);
+        if (value.isUndefined()) {
+            if (required)
+                errors.append(prefix + name + u": missing, must be a number");
+        } else if (!value.isDouble()) {
+            errors.append(prefix + name + u": must be a number, got " + jsonValueText(value));
+        } else {
+            params.*table[i].member = value.toDouble();
+            present[i] = true;
+        }
+    }
+    return present;
+}
+
+} // namespace
+
 JsonObjectWriter deviceParamsWriter(const DeviceParams &params, int indent)
 {
     JsonObjectWriter writer(indent);
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        writer.add(deviceFieldName(i).data(), jsonNumber(params.field(i)));
+    addNumbers(writer, kDeviceFields, params);
     return writer;
 }
 
@@ -177,18 +221,18 @@ QByteArray deviceParamsJson(const DeviceParams &params, int indent)
 QByteArray effectParamsJson(const EffectParams &effects, int indent)
 {
     JsonObjectWriter writer(indent);
-    for (int i = 0; i < EffectParams::kFieldCount; ++i)
-        writer.add(effectFieldName(i).data(), jsonNumber(effects.field(i)));
+    addNumbers(writer, kEffectFields, effects);
     return writer.text();
 }
 
 JsonObjectWriter hostParamsWriter(const HostParams &params, int indent)
 {
+    // profile.md's order, the number fields between the others.
     JsonObjectWriter writer(indent);
-    writer.add(kHostMode, jsonString(latin1(referenceModeName(params.mode))))
-        .add(kHostVMax, jsonNumber(params.v_max))
-        .add(kHostRefDeadzone, jsonBool(params.ref_deadzone))
-        .add(kHostTauLimit, jsonNumber(params.tau_limit));
+    writer.add(kHostMode, jsonString(latin1(referenceModeName(params.mode))));
+    addNumber(writer, fieldNamed(kHostFields, "v_max"), params);
+    writer.add(kHostRefDeadzone, jsonBool(params.ref_deadzone));
+    addNumber(writer, fieldNamed(kHostFields, "tau_limit"), params);
     return writer;
 }
 
@@ -201,21 +245,8 @@ std::array<bool, DeviceParams::kFieldCount>
 readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams &params,
                  QStringList &errors, QStringList *warnings, const QStringList &otherKeys)
 {
-    std::array<bool, DeviceParams::kFieldCount> present{};
     QStringList known = otherKeys;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const QString name = latin1(deviceFieldName(i));
-        known.append(name);
-        const QJsonValue value = object.value(name);
-        if (value.isUndefined()) {
-            errors.append(prefix + name + u": missing, must be a number");
-        } else if (!value.isDouble()) {
-            errors.append(prefix + name + u": must be a number, got " + jsonValueText(value));
-        } else {
-            params.setField(i, value.toDouble());
-            present[static_cast<std::size_t>(i)] = true;
-        }
-    }
+    const auto present = readNumbers(kDeviceFields, object, prefix, true, params, errors, known);
     if (warnings)
         warnUnknownKeys(object, known, prefix, *warnings);
     return present;
@@ -225,21 +256,8 @@ std::array<bool, EffectParams::kFieldCount>
 readEffectParams(const QJsonObject &object, const QString &prefix, EffectParams &effects,
                  QStringList &errors, QStringList &warnings)
 {
-    std::array<bool, EffectParams::kFieldCount> present{};
     QStringList known;
-    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
-        const QString name = latin1(effectFieldName(i));
-        known.append(name);
-        const QJsonValue value = object.value(name);
-        if (value.isUndefined())
-            continue;
-        if (value.isDouble()) {
-            effects.setField(i, value.toDouble());
-            present[static_cast<std::size_t>(i)] = true;
-        } else {
-            errors.append(prefix + name + u": must be a number, got " + jsonValueText(value));
-        }
-    }
+    const auto present = readNumbers(kEffectFields, object, prefix, false, effects, errors, known);
     warnUnknownKeys(object, known, prefix, warnings);
     return present;
 }
@@ -248,13 +266,7 @@ QStringList readHostParams(const QJsonObject &object, const QString &prefix, Hos
                            QStringList &errors, QStringList *warnings, const QStringList &otherKeys)
 {
     const QString mode = QString::fromLatin1(kHostMode);
-    const QString vMax = QString::fromLatin1(kHostVMax);
     const QString refDeadzone = QString::fromLatin1(kHostRefDeadzone);
-    const QString tauLimit = QString::fromLatin1(kHostTauLimit);
-    if (warnings)
-        warnUnknownKeys(object, QStringList{mode, vMax, refDeadzone, tauLimit} + otherKeys, prefix,
-                        *warnings);
-
     if (const QJsonValue value = object.value(mode); !value.isUndefined()) {
         const QString text = value.isString() ? value.toString() : QString();
         if (text == latin1(referenceModeName(ReferenceMode::Translation)))
@@ -272,18 +284,15 @@ QStringList readHostParams(const QJsonObject &object, const QString &prefix, Hos
             errors.append(prefix + refDeadzone + u": must be true or false, got " +
                           jsonValueText(value));
     }
+    QStringList known = QStringList{mode, refDeadzone} + otherKeys;
+    const auto present = readNumbers(kHostFields, object, prefix, false, params, errors, known);
+    if (warnings)
+        warnUnknownKeys(object, known, prefix, *warnings);
     QStringList nonNumbers;
-    for (const auto &[key, target] :
-         {std::pair{vMax, &params.v_max}, std::pair{tauLimit, &params.tau_limit}}) {
-        const QJsonValue value = object.value(key);
-        if (value.isUndefined())
-            continue;
-        if (value.isDouble()) {
-            *target = value.toDouble();
-        } else {
-            errors.append(prefix + key + u": must be a number, got " + jsonValueText(value));
-            nonNumbers.append(key);
-        }
+    for (std::size_t i = 0; i < kHostFields.size(); ++i) {
+        const QString name = latin1(kHostFields[i].name);
+        if (!present[i] && object.contains(name))
+            nonNumbers.append(name);
     }
     return nonNumbers;
 }

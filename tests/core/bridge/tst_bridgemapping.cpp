@@ -171,16 +171,19 @@ private Q_SLOTS:
         s.topics.twist = "/hatpic//twist";
         s.topics.twistUnstamped = "/haptic twist";
         const auto errors = validate(s);
+        // In the settings' order (kSettings): the network's first.
         QCOMPARE(errors.size(), 9u);
-        QCOMPARE(errors.front(), std::string("twist topic: '/hatpic//twist' is not a ROS topic "
-                                             "name (letters, digits and '_' between single '/', "
-                                             "not starting with a digit)"));
-        QCOMPARE(errors[1], std::string("unstamped twist topic: '/haptic twist' is not a ROS "
+        QCOMPARE(errors.front(), std::string("ROS version: must be 1 or 2, got 3"));
+        QCOMPARE(errors[1],
+                 std::string("domain id: must be a whole number from 0 to 232, got 233"));
+        QCOMPARE(errors[2], std::string("twist topic: '/hatpic//twist' is not a ROS topic "
+                                        "name (letters, digits and '_' between single '/', "
+                                        "not starting with a digit)"));
+        QCOMPARE(errors[3], std::string("unstamped twist topic: '/haptic twist' is not a ROS "
                                         "topic name (letters, digits and '_' between single "
                                         "'/', not starting with a digit)"));
-        QCOMPARE(errors[2],
+        QCOMPARE(errors[4],
                  std::string("publish rate: must be above 0 and at most 1000 Hz, got 0"));
-        QCOMPARE(errors[8], std::string("ROS version: must be 1 or 2, got 3"));
         s.rosVersion = 1;
         QCOMPARE(validate(s).size(), 8u);
     }

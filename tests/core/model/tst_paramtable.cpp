@@ -123,6 +123,29 @@ private Q_SLOTS:
             QVERIFY(ok);
         }
     }
+
+    // A field's tuning range lies within its valid range and holds its default, so a slider
+    // neither offers refused values nor starts off its end; a step is a fraction of it.
+    void tuningRangesAreValid()
+    {
+        const auto check = [](const auto &table, const auto &defaults) {
+            for (const auto &f : table) {
+                const FieldDisplay &d = f.display;
+                const double upper = f.upper.external ? kHostFields[1].upper.value
+                                     : f.upper.present
+                                         ? f.upper.value
+                                         : table[std::size_t(f.cross.field)].upper.value;
+                QVERIFY2(d.low >= f.lower.value && d.high <= upper && d.low < d.high,
+                         f.name.data());
+                QVERIFY2(d.step > 0 && d.step < d.high - d.low, f.name.data());
+                const double value = defaults.*f.member;
+                QVERIFY2(value >= d.low && value <= d.high, f.name.data());
+            }
+        };
+        check(kDeviceFields, DeviceParams{});
+        check(kHostFields, HostParams{});
+        check(kEffectFields, EffectParams{});
+    }
 };
 
 QTEST_GUILESS_MAIN(TestParamTable)

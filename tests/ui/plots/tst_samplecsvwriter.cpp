@@ -19,18 +19,12 @@ class TestSampleCsvWriter : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
-    void headerIsRecordingHeader();
     void rowsAreTheColumnTablesRows();
     void channelsAreTheTablesQuantities();
     void writesRangeThatReadsBack_data();
     void writesRangeThatReadsBack();
     void reportsUnwritablePath();
 };
-
-void TestSampleCsvWriter::headerIsRecordingHeader()
-{
-    QCOMPARE(SampleCsvWriter::header(), recordingColumns().join(u','));
-}
 
 void TestSampleCsvWriter::rowsAreTheColumnTablesRows()
 {
