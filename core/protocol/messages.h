@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 
 namespace hatpic::v2 {
@@ -118,7 +119,8 @@ private:
 
 // ---- how a message describes its payload ----
 //
-// Each message names its wire type once (`kType`) and lists its payload fields once, in wire
+// Each message names its wire type once (`kType`, and `kName` as protocol.md spells it) and
+// lists its payload fields once, in wire
 // order, in `static constexpr void fields(auto &m, auto &v) { v(m.a); v(m.b); … }`. The codec
 // (framecodec.*) derives from that one list the payload size, the encoding, the decoding and
 // the lengths a receiver accepts. A message without fields() has no payload. A field's C++ type
@@ -148,16 +150,19 @@ template<typename Text> Rest(Text &) -> Rest<Text>;
 struct Hello
 {
     static constexpr MessageType kType = MessageType::Hello;
+    static constexpr std::string_view kName = "HELLO";
     friend bool operator==(const Hello &, const Hello &) = default;
 };
 struct GetParams
 {
     static constexpr MessageType kType = MessageType::GetParams;
+    static constexpr std::string_view kName = "GET_PARAMS";
     friend bool operator==(const GetParams &, const GetParams &) = default;
 };
 struct SetParams
 {
     static constexpr MessageType kType = MessageType::SetParams;
+    static constexpr std::string_view kName = "SET_PARAMS";
     DeviceParams params; //!< travels as 7 × f32
     static constexpr void fields(auto &m, auto &v) { v(m.params); }
     friend bool operator==(const SetParams &, const SetParams &) = default;
@@ -165,6 +170,7 @@ struct SetParams
 struct SetStream
 {
     static constexpr MessageType kType = MessageType::SetStream;
+    static constexpr std::string_view kName = "SET_STREAM";
     std::uint16_t rateHz = 0; //!< telemetry rate, 0 = stop [Hz]
     static constexpr void fields(auto &m, auto &v) { v(m.rateHz); }
     friend bool operator==(const SetStream &, const SetStream &) = default;
@@ -172,6 +178,7 @@ struct SetStream
 struct SetFeedback
 {
     static constexpr MessageType kType = MessageType::SetFeedback;
+    static constexpr std::string_view kName = "SET_FEEDBACK";
     float tauExt = 0; //!< external feedback torque [N·m]
     static constexpr void fields(auto &m, auto &v) { v(m.tauExt); }
     friend bool operator==(const SetFeedback &, const SetFeedback &) = default;
@@ -179,11 +186,13 @@ struct SetFeedback
 struct SaveParams
 {
     static constexpr MessageType kType = MessageType::SaveParams;
+    static constexpr std::string_view kName = "SAVE_PARAMS";
     friend bool operator==(const SaveParams &, const SaveParams &) = default;
 };
 struct Ping
 {
     static constexpr MessageType kType = MessageType::Ping;
+    static constexpr std::string_view kName = "PING";
     std::uint32_t token = 0;
     static constexpr void fields(auto &m, auto &v) { v(m.token); }
     friend bool operator==(const Ping &, const Ping &) = default;
@@ -191,11 +200,13 @@ struct Ping
 struct Zero
 {
     static constexpr MessageType kType = MessageType::Zero;
+    static constexpr std::string_view kName = "ZERO";
     friend bool operator==(const Zero &, const Zero &) = default;
 };
 struct SetEffects
 {
     static constexpr MessageType kType = MessageType::SetEffects;
+    static constexpr std::string_view kName = "SET_EFFECTS";
     EffectParams effects; //!< travels as 7 × f32
     static constexpr void fields(auto &m, auto &v) { v(m.effects); }
     friend bool operator==(const SetEffects &, const SetEffects &) = default;
@@ -203,11 +214,13 @@ struct SetEffects
 struct GetEffects
 {
     static constexpr MessageType kType = MessageType::GetEffects;
+    static constexpr std::string_view kName = "GET_EFFECTS";
     friend bool operator==(const GetEffects &, const GetEffects &) = default;
 };
 struct Vibrate
 {
     static constexpr MessageType kType = MessageType::Vibrate;
+    static constexpr std::string_view kName = "VIBRATE";
     float amplitude = 0; //!< a [N·m]; 0 stops a running cue
     float frequency = 0; //!< f [Hz]
     float duration = 0;  //!< d [s]
@@ -224,6 +237,7 @@ struct Vibrate
 struct HelloReply
 {
     static constexpr MessageType kType = MessageType::HelloReply;
+    static constexpr std::string_view kName = "HELLO_REPLY";
     std::uint8_t protocolVersion = kProtocolVersion;
     std::uint8_t capabilities = 0; //!< kCapability* bits (0 on devices before effects.md)
     std::uint16_t maxStreamHz = 0; //!< highest telemetry rate the device produces [Hz]
@@ -244,6 +258,7 @@ struct HelloReply
 struct Params
 {
     static constexpr MessageType kType = MessageType::Params;
+    static constexpr std::string_view kName = "PARAMS";
     DeviceParams params; //!< travels as 7 × f32
     static constexpr void fields(auto &m, auto &v) { v(m.params); }
     friend bool operator==(const Params &, const Params &) = default;
@@ -251,6 +266,7 @@ struct Params
 struct Effects
 {
     static constexpr MessageType kType = MessageType::Effects;
+    static constexpr std::string_view kName = "EFFECTS";
     EffectParams effects; //!< travels as 7 × f32
     static constexpr void fields(auto &m, auto &v) { v(m.effects); }
     friend bool operator==(const Effects &, const Effects &) = default;
@@ -258,6 +274,7 @@ struct Effects
 struct Ack
 {
     static constexpr MessageType kType = MessageType::Ack;
+    static constexpr std::string_view kName = "ACK";
     std::uint8_t ackedSeq = 0;
     AckStatus status = AckStatus::Ok;
     std::uint8_t field = kNoField; //!< first violating ParamBlock index for OUT_OF_RANGE
@@ -273,6 +290,7 @@ struct Ack
 struct Pong
 {
     static constexpr MessageType kType = MessageType::Pong;
+    static constexpr std::string_view kName = "PONG";
     std::uint32_t token = 0;
     static constexpr void fields(auto &m, auto &v) { v(m.token); }
     friend bool operator==(const Pong &, const Pong &) = default;
@@ -280,6 +298,7 @@ struct Pong
 struct Telemetry
 {
     static constexpr MessageType kType = MessageType::Telemetry;
+    static constexpr std::string_view kName = "TELEMETRY";
     std::uint32_t t_us = 0; //!< device clock, wraps at 2³² [µs]
     float theta = 0;        //!< absolute knob angle [rad]
     float omega = 0;        //!< knob rate [rad/s]
@@ -306,6 +325,7 @@ struct Telemetry
 struct Log
 {
     static constexpr MessageType kType = MessageType::Log;
+    static constexpr std::string_view kName = "LOG";
     FixedText<kMaxPayload> text; //!< 1…240 UTF-8 bytes on the wire
     static constexpr void fields(auto &m, auto &v) { v(Rest{m.text}); }
     friend bool operator==(const Log &, const Log &) = default;
@@ -329,6 +349,22 @@ using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback
 
 //! The wire type of a message (Refused gives its original type).
 std::uint8_t messageType(const Message &message);
+
+//! The name of a wire type as protocol.md spells it ("SET_PARAMS"); empty for an unknown one.
+constexpr std::string_view messageName(MessageType type)
+{
+    std::string_view name;
+    const auto nameIf = [&]<typename M>(std::type_identity<M>) {
+        if constexpr (requires { M::kName; }) {
+            if (M::kType == type)
+                name = M::kName;
+        }
+    };
+    [&]<typename... M>(std::type_identity<std::variant<M...>>) {
+        (nameIf(std::type_identity<M>{}), ...);
+    }(std::type_identity<Message>{});
+    return name;
+}
 
 //! One decoded frame.
 struct Frame

@@ -42,8 +42,9 @@ QByteArray encode(const Command &cmd)
         return v2::encodeFrame(cmd.seq, v2::Vibrate{static_cast<float>(cmd.vibration.amplitude),
                                                     static_cast<float>(cmd.vibration.frequency),
                                                     static_cast<float>(cmd.vibration.duration)});
+    default: // not a command
+        return {};
     }
-    return {};
 }
 
 //! The wire steps of `cmd`: a push sends each part it carries and reads it back, a read reads

@@ -28,31 +28,6 @@ QString sessionStateName(SessionState state)
     return QStringLiteral("unknown");
 }
 
-QString commandName(CommandKind kind)
-{
-    switch (kind) {
-    case CommandKind::Hello:
-        return QStringLiteral("HELLO");
-    case CommandKind::GetParams:
-        return QStringLiteral("GET_PARAMS");
-    case CommandKind::SetParams:
-        return QStringLiteral("SET_PARAMS");
-    case CommandKind::SetStream:
-        return QStringLiteral("SET_STREAM");
-    case CommandKind::Zero:
-        return QStringLiteral("ZERO");
-    case CommandKind::SaveParams:
-        return QStringLiteral("SAVE_PARAMS");
-    case CommandKind::SetEffects:
-        return QStringLiteral("SET_EFFECTS");
-    case CommandKind::GetEffects:
-        return QStringLiteral("GET_EFFECTS");
-    case CommandKind::Vibrate:
-        return QStringLiteral("VIBRATE");
-    }
-    return {};
-}
-
 CommandResult commandResult(CommandKind command, CommandResult::Status status,
                             CommandResult::Reason reason)
 {

@@ -39,25 +39,21 @@ struct ConnectOptions
     SimulatedDevice::Config sim; //!< used when port == "sim"
 };
 
-//! The commands of the v2 protocol the session sends (HELLO only while detecting).
-enum class CommandKind {
-    Hello,
-    GetParams,
-    SetParams,
-    SetStream,
-    Zero,
-    SaveParams,
-    SetEffects, //!< effects.md § 3
-    GetEffects,
-    Vibrate,
-};
+//! A command of the v2 protocol the session sends, by its wire type: HELLO (only while
+//! detecting), GET_PARAMS, SET_PARAMS, SET_STREAM, ZERO, SAVE_PARAMS, SET_EFFECTS, GET_EFFECTS,
+//! VIBRATE (messages.h).
+using CommandKind = v2::MessageType;
 //! True for the commands only a device with the effects capability takes.
 constexpr bool isEffectCommand(CommandKind kind)
 {
     return kind == CommandKind::SetEffects || kind == CommandKind::GetEffects ||
            kind == CommandKind::Vibrate;
 }
-QString commandName(CommandKind kind); //!< the wire name: "SET_PARAMS", …
+//! The wire name: "SET_PARAMS", … (messages.h's kName).
+inline QString commandName(CommandKind kind)
+{
+    return QString::fromLatin1(v2::messageName(kind));
+}
 
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
 QString sessionStateName(SessionState state); //!< "disconnected", "opening", …
