@@ -300,7 +300,7 @@ QStringList presetNames()
 
 QStringList presetDirectories()
 {
-    // The resources live in the static hatpic_core library; registering them explicitly keeps
+    // The resources live in the static hatpic_profile library; registering them explicitly keeps
     // them working for any consumer, whatever its linker does with unreferenced objects.
     static const bool registered = (initPresetResources(), true);
     Q_UNUSED(registered);
