@@ -7,22 +7,18 @@
 // the DeviceClient and brings back the answers and read-backs.
 #pragma once
 
+#include "editor/editoractions.h"
+#include "editor/livepush.h"
 #include "editor/synctracker.h"
 #include "editor/tuning.h"
 #include "session/sessiontypes.h"
 
-#include <QElapsedTimer>
-#include <QHash>
 #include <QWidget>
 
 #include <optional>
 
 class QAction;
-class QCheckBox;
-class QComboBox;
-class QLabel;
 class QScrollArea;
-class QTimer;
 class QUndoStack;
 
 namespace hatpic {
@@ -30,6 +26,7 @@ namespace hatpic {
 class DerivedFiguresView;
 class EffectsSection;
 class ParameterField;
+class ParameterForm;
 class SyncBar;
 
 class ParameterEditor : public QWidget
@@ -38,7 +35,7 @@ class ParameterEditor : public QWidget
 public:
     using SyncState = hatpic::SyncState;
 
-    static constexpr int kDefaultLivePushIntervalMs = 100; //!< ≤ 10 live pushes per second
+    static constexpr int kDefaultLivePushIntervalMs = LivePush::kDefaultIntervalMs;
 
     explicit ParameterEditor(QWidget *parent = nullptr);
     ~ParameterEditor() override;
@@ -81,11 +78,11 @@ public:
     //! The answer to the last pushRequested() (DeviceParameterLink hands it over).
     void pushFinished(const hatpic::CommandResult &result);
 
-    QAction *pushAction() const { return m_pushAction; }     //!< Ctrl+Return
-    QAction *readAction() const { return m_readAction; }     //!< "Read from device"
-    QAction *revertAction() const { return m_revertAction; } //!< "Revert to device values"
-    QAction *undoAction() const { return m_undoAction; }     //!< no shortcut of its own
-    QAction *redoAction() const { return m_redoAction; }     //!< no shortcut of its own
+    QAction *pushAction() const { return m_actions->push; }     //!< Ctrl+Return
+    QAction *readAction() const { return m_actions->read; }     //!< "Read from device"
+    QAction *revertAction() const { return m_actions->revert; } //!< "Revert to device values"
+    QAction *undoAction() const { return m_actions->undo; }     //!< no shortcut of its own
+    QAction *redoAction() const { return m_actions->redo; }     //!< no shortcut of its own
 
     SyncState syncState() const { return m_syncState; }
     QString syncText() const { return m_syncText; }
@@ -93,18 +90,18 @@ public:
     //! Push on every edit while valid, at most one in flight and one per interval; the last
     //! value is always sent.
     void setLivePush(bool enabled);
-    bool livePush() const { return m_livePush; }
+    bool livePush() const { return m_live->isEnabled(); }
     void setLivePushInterval(int milliseconds);
-    int livePushInterval() const { return m_liveInterval; }
+    int livePushInterval() const { return m_live->interval(); }
 
     //! Display only: θ0, N and Q_dz in degrees; params() stays in rad.
     void setAngleInDegrees(bool degrees);
     bool angleInDegrees() const { return m_degrees; }
 
     //! The row of a numeric field by model name ("K_max", "v_max", "wall_max", …), or nullptr.
-    ParameterField *field(const QString &key) const { return m_fields.value(key); }
+    ParameterField *field(const QString &key) const;
     DerivedFiguresView *derivedFiguresView() const { return m_derived; }
-    EffectsSection *effectsSection() const { return m_effectsSection; }
+    EffectsSection *effectsSection() const;
     //! Read, Revert and "Go to <field>" (Alt+1 … Alt+9), for the shortcut table.
     QList<QAction *> keyboardActions() const;
 
@@ -123,11 +120,6 @@ Q_SIGNALS:
 
 private:
     void buildUi();
-    void addGoToActions();
-    QWidget *buildDeviceGroups();
-    QWidget *buildHostGroup();
-    QWidget *buildEffectsGroup();
-    void connectField(ParameterField *field);
     void onFieldEdited(const QString &key, double value);
     //! Puts the change on the undo stack (merged within one gesture) and applies it.
     void recordEdit(const Tuning &tuning, const QString &text, const QString &field);
@@ -138,7 +130,6 @@ private:
     DeviceTuning editedOnWire() const;
     void revert();
     void startPush();
-    void scheduleLivePush();
     void revalidate();
     void refreshDiff();
     void refreshDerived();
@@ -158,29 +149,16 @@ private:
     SyncState m_syncState = SyncState::NotConnected;
     QString m_syncText;
 
-    bool m_livePush = false;
-    bool m_livePending = false;
-    int m_liveInterval = kDefaultLivePushIntervalMs;
-    QElapsedTimer m_sinceLastPush;
-    QTimer *m_liveTimer = nullptr;
-
+    LivePush *m_live = nullptr;
     bool m_degrees = false;
     quint64 m_gesture = 0; //!< edits merge into one undo step only within one gesture
 
     QUndoStack *m_undo = nullptr;
-    QHash<QString, ParameterField *> m_fields;
-    QList<QAction *> m_goToActions;
-    QComboBox *m_mode = nullptr;
-    QCheckBox *m_refDeadzone = nullptr;
+    EditorActions *m_actions = nullptr;
+    ParameterForm *m_form = nullptr;
     SyncBar *m_syncBar = nullptr;
-    QScrollArea *m_scroll = nullptr; //!< the fields
+    QScrollArea *m_scroll = nullptr; //!< scrolls m_form
     DerivedFiguresView *m_derived = nullptr;
-    EffectsSection *m_effectsSection = nullptr;
-    QAction *m_pushAction = nullptr;
-    QAction *m_readAction = nullptr;
-    QAction *m_revertAction = nullptr;
-    QAction *m_undoAction = nullptr;
-    QAction *m_redoAction = nullptr;
 };
 
 } // namespace hatpic
