@@ -19,33 +19,22 @@
 #include "session/sessionwording.h"
 #include "simulator/simulatorpanel.h"
 #include "stiffness/stiffnessview.h"
-#include "window/abdock.h"
-#include "window/bottomdocks.h"
-#include "window/bridgedock.h"
-#include "window/experimentsdock.h"
-#include "window/measuredocks.h"
-#include "window/shortcutsdialog.h"
 #include "window/statusline.h"
 #include "window/theme.h"
 #include "window/wheelguard.h"
 #include "window/windowactions.h"
 #include "window/windowgeometry.h"
+#include "window/windowmenus.h"
 
 #include <QAction>
-#include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
-#include <QMenu>
-#include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QSettings>
 #include <QStatusBar>
-#include <QToolBar>
 #include <QVBoxLayout>
-
-#include <algorithm>
 
 // The window icon lives in this static library: its resources must be registered by hand.
 static void initPlotsResources()
@@ -69,9 +58,22 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     setWindowIcon(QIcon(QStringLiteral(":/icons/hatpic-tuner.png")));
     createParts();
     createActions();
-    createMenus();
-    createToolBars();
-    createDocks();
+    m_menus = new WindowMenus(this, {.actions = m_actions,
+                                     .editor = m_editor,
+                                     .profiles = m_profiles,
+                                     .plotActions = m_plotActions,
+                                     .recording = m_recording,
+                                     .theme = m_theme,
+                                     .connection = m_connection,
+                                     .linkStatus = m_linkStatus});
+    m_docks = addWindowDocks(this, {.client = m_client,
+                                    .plots = m_plots,
+                                    .plotActions = m_plotActions,
+                                    .profiles = m_profiles,
+                                    .editor = m_editor,
+                                    .stiffness = m_stiffness,
+                                    .simPanel = m_simPanel,
+                                    .view = m_menus->viewMenu()});
     connectParts();
     setWindowTitle(m_profiles->windowTitle());
     readSettings();
@@ -80,7 +82,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 
 MainWindow::~MainWindow()
 {
-    delete m_bridgeDock; // first: its bridge stops through the client, an earlier child
+    delete m_docks.bridge; // first: its bridge stops through the client, an earlier child
 }
 
 void MainWindow::createParts()
@@ -143,148 +145,12 @@ void MainWindow::createActions()
             &MainWindow::openRecordingInteractive);
     connect(m_actions->backToLive, &QAction::triggered, m_feed, &PlotFeed::backToLive);
     connect(m_actions->quit, &QAction::triggered, this, &QWidget::close);
-    connect(m_actions->shortcuts, &QAction::triggered, this, &MainWindow::showShortcuts);
-    connect(m_actions->about, &QAction::triggered, this, &MainWindow::showAbout);
 
     QAction *undo = m_editor->undoAction();
     undo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
     QAction *redo = m_editor->redoAction();
     redo->setShortcuts(
         {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
-}
-
-// The menus and toolbars: which action sits where. The actions themselves belong to the parts
-// (editor, profiles, plots, recording) and to WindowActions.
-
-void MainWindow::createMenus()
-{
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    file->addAction(m_profiles->openAction());
-    file->addMenu(m_profiles->recentMenu());
-    file->addMenu(m_profiles->presetsMenu());
-    file->addAction(m_profiles->saveAction());
-    file->addAction(m_profiles->saveAsAction());
-    file->addSeparator();
-    file->addAction(m_actions->openRecording);
-    file->addAction(m_plotActions->exportImageAction());
-    file->addAction(m_plotActions->exportCsvAction());
-    file->addSeparator();
-    file->addAction(m_actions->quit);
-
-    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    edit->addAction(m_editor->undoAction());
-    edit->addAction(m_editor->redoAction());
-    edit->addSeparator();
-    edit->addAction(m_profiles->abToggleAction());
-    edit->addAction(m_profiles->pushOnSwitchAction());
-
-    QMenu *device = menuBar()->addMenu(tr("&Device"));
-    device->addAction(m_actions->connectDevice);
-    device->addSeparator();
-    device->addAction(m_editor->pushAction());
-    device->addAction(m_editor->readAction());
-    device->addAction(m_editor->revertAction());
-    device->addSeparator();
-    device->addAction(m_actions->resetReference);
-    device->addAction(m_actions->zero);
-    device->addAction(m_actions->saveInDevice);
-    device->addSeparator();
-    device->addAction(m_recording->recordAction());
-    device->addAction(m_recording->planAction());
-
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    m_viewMenu = view;
-    view->addAction(m_actions->pause);
-    view->addAction(m_actions->backToLive);
-    QMenu *window = view->addMenu(tr("&Window Length"));
-    window->addActions(m_plotActions->windowActions());
-    view->addAction(m_plotActions->autoscaleAction());
-    view->addAction(m_actions->degrees);
-    view->addAction(m_plotActions->measureAction());
-    m_plotActions->addSeriesActions(view->addMenu(tr("&Series")));
-    view->addMenu(m_theme->menu());
-    view->addSeparator(); // the docks' toggles follow (createDocks)
-
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(m_actions->shortcuts);
-    help->addAction(m_actions->about);
-}
-
-void MainWindow::createToolBars()
-{
-    QToolBar *link = addToolBar(tr("Connection"));
-    link->setObjectName(QStringLiteral("connectionToolBar"));
-    link->addWidget(m_connection);
-    link->addSeparator();
-    link->addWidget(m_linkStatus);
-
-    addToolBarBreak();
-    QToolBar *plots = addToolBar(tr("Plots"));
-    plots->setObjectName(QStringLiteral("plotsToolBar"));
-    plots->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    plots->addAction(m_actions->pause);
-    plots->addSeparator();
-    plots->addActions(m_plotActions->windowActions());
-    plots->addSeparator();
-    plots->addAction(m_plotActions->autoscaleAction());
-    plots->addAction(m_actions->degrees);
-    plots->addAction(m_plotActions->measureAction());
-    plots->addAction(m_actions->resetReference);
-    plots->addSeparator();
-    plots->addWidget(m_recording);
-    plots->addAction(m_actions->openRecording);
-}
-
-void MainWindow::createDocks()
-{
-    auto makeDock = [this](const QString &title, const QString &name, QWidget *widget,
-                           Qt::DockWidgetArea area) {
-        auto *dock = new QDockWidget(title, this);
-        dock->setObjectName(name);
-        dock->setWidget(widget);
-        addDockWidget(area, dock);
-        return dock;
-    };
-    m_editorDock = makeDock(tr("Parameters"), QStringLiteral("parametersDock"), m_editor,
-                            Qt::RightDockWidgetArea);
-    m_stiffnessDock = makeDock(tr("Stiffness"), QStringLiteral("stiffnessDock"), m_stiffness,
-                               Qt::RightDockWidgetArea);
-    // Under the plots, so that the hand and the stiffness view are in sight together.
-    m_simDock = makeDock(tr("Simulated hand"), QStringLiteral("simulatorDock"), m_simPanel,
-                         Qt::BottomDockWidgetArea);
-    m_log = new QPlainTextEdit(this);
-    m_log->setReadOnly(true);
-    m_log->setMaximumBlockCount(2000);
-    m_logDock =
-        makeDock(tr("Device log"), QStringLiteral("logDock"), m_log, Qt::BottomDockWidgetArea);
-    m_logDock->hide();
-    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea); // the hand's dock: plots only
-    // The robot bridge is opened from View → Bridge, beside the device log: never in front of
-    // the hand, which must stay in sight with the stiffness view.
-    m_bridgeDock = addBridgeDock(this, m_client, m_profiles, m_editor, m_logDock);
-    m_bridgeDock->hide();
-    // Tuning experiments (docs/experiments.md): View → Experiments, beside the device log.
-    QDockWidget *experiments = addExperimentsDock(this, m_client, m_plots, m_simPanel, m_logDock);
-    // As wide as the editor wants (within reason): its rows are long.
-    resizeDocks({m_editorDock}, {std::clamp(m_editor->sizeHint().width() + 24, 420, 600)},
-                Qt::Horizontal);
-    // The stiffness view's two plots stay readable at 720 px (issue 21: once 40 px each).
-    resizeDocks({m_editorDock, m_stiffnessDock}, {500, 360}, Qt::Vertical);
-
-    for (QDockWidget *dock : {m_editorDock, m_stiffnessDock, m_simDock, m_bridgeDock, m_logDock})
-        m_viewMenu->addAction(dock->toggleViewAction());
-    m_viewMenu->addAction(experiments->toggleViewAction());
-    // A/B comparison and the profile's notes, opened from the View menu, beside the log.
-    for (QDockWidget *dock : addAbDocks(this, m_profiles, m_editor, m_stiffness, m_logDock))
-        m_viewMenu->addAction(dock->toggleViewAction());
-    addMeasureDocks(this, m_plots, m_plotActions, m_profiles, m_editor, m_stiffness, m_viewMenu,
-                    m_logDock);
-    // The panels under the plots open usable, beside the hand or tabbed with it.
-    auto *bottom = new BottomDocks(this, m_simDock);
-    for (QDockWidget *dock : findChildren<QDockWidget *>()) {
-        if (dock != m_simDock && dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
-            bottom->add(dock);
-    }
 }
 
 void MainWindow::connectParts()
@@ -295,12 +161,12 @@ void MainWindow::connectParts()
     connect(m_client, &DeviceClient::deviceInfoChanged, this, &MainWindow::onDeviceInfo);
     connect(m_client, &DeviceClient::statsUpdated, m_stats, &LinkStatsWidget::setStats);
     connect(m_client, &DeviceClient::deviceLog, this, [this](const QString &line) {
-        m_log->appendPlainText(line);
+        m_docks.logView->appendPlainText(line);
         showStatus(tr("Device: %1").arg(line));
     });
     connect(m_client, &DeviceClient::notice, this, [this](const SessionNotice &notice) {
         const QString text = SessionWording::notice(notice);
-        m_log->appendPlainText(text);
+        m_docks.logView->appendPlainText(text);
         showStatus(text);
         // How a recording ended stays beside the record button, not only for a few seconds.
         if (notice.kind == SessionNotice::Kind::RecordingClosedOtherDevice ||
@@ -361,9 +227,9 @@ void MainWindow::setSimulatedHand(const HandInput &hand)
 
 bool MainWindow::startBridge(int rosVersion)
 {
-    m_bridgeDock->show();
-    m_bridgeDock->raise();
-    auto *panel = qobject_cast<BridgePanel *>(m_bridgeDock->widget());
+    m_docks.bridge->show();
+    m_docks.bridge->raise();
+    auto *panel = qobject_cast<BridgePanel *>(m_docks.bridge->widget());
     return panel && panel->startOn(rosVersion);
 }
 
@@ -393,8 +259,8 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
     if (state == SessionState::Disconnected) {
         m_stats->clear();
         m_linkStatus->setDeviceInfo(std::nullopt);
-        m_simDock->hide();
-        m_simDock->toggleViewAction()->setEnabled(false);
+        m_docks.simulator->hide();
+        m_docks.simulator->toggleViewAction()->setEnabled(false);
         m_simPanel->statusLabel()->hide();
         m_feed->setLiveDeviceTuning({});
     }
@@ -408,8 +274,8 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
 void MainWindow::onDeviceInfo(const DeviceInfo &info)
 {
     m_linkStatus->setDeviceInfo(info);
-    m_simDock->toggleViewAction()->setEnabled(info.simulated);
-    m_simDock->setVisible(info.simulated);
+    m_docks.simulator->toggleViewAction()->setEnabled(info.simulated);
+    m_docks.simulator->setVisible(info.simulated);
     m_simPanel->statusLabel()->setVisible(info.simulated);
     updateActions();
 }
@@ -460,42 +326,7 @@ void MainWindow::updateActions()
 
 QList<QAction *> MainWindow::shortcutActions() const
 {
-    return QList<QAction *>{m_actions->connectDevice,
-                            m_editor->pushAction(),
-                            m_actions->pause,
-                            m_recording->recordAction(),
-                            m_editor->undoAction(),
-                            m_editor->redoAction(),
-                            m_profiles->abToggleAction(),
-                            m_profiles->openAction(),
-                            m_profiles->saveAction(),
-                            m_profiles->saveAsAction(),
-                            m_actions->openRecording,
-                            m_actions->backToLive,
-                            m_plotActions->autoscaleAction(),
-                            m_actions->degrees,
-                            m_actions->resetReference,
-                            m_plotActions->exportImageAction(),
-                            m_plotActions->exportCsvAction(),
-                            m_plotActions->measureAction(),
-                            m_actions->shortcuts,
-                            m_actions->quit} +
-           m_editor->keyboardActions() + m_plotActions->windowActions();
-}
-
-void MainWindow::showShortcuts()
-{
-    ShortcutsDialog dialog(shortcutActions(), this);
-    dialog.exec();
-}
-
-void MainWindow::showAbout()
-{
-    QMessageBox::about(
-        this, tr("About HATPIC Tuner"),
-        tr("<b>HATPIC Tuner %1</b><p>Tuning and live plots for the HATPIC single-axis haptic "
-           "joystick (Mellet, Ruggiero, Lippiello).</p>")
-            .arg(QApplication::applicationVersion()));
+    return m_menus->shortcutActions();
 }
 
 void MainWindow::openRecordingInteractive()

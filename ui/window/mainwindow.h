@@ -2,17 +2,17 @@
 // link state, the plots and their feed (live or replay), recording, and docks for the parameter
 // editor, the stiffness view, the simulated hand and the device log. It owns the one
 // DeviceClient; the parameter round trip belongs to DeviceParameterLink, what the plots show to
-// PlotFeed. Tests reach the parts by their object names (findChild), not through the window.
+// PlotFeed, which action sits in which menu and toolbar to WindowMenus, where each dock opens
+// to addWindowDocks. Tests reach the parts by their object names (findChild), not through the
+// window.
 #pragma once
 
 #include "session/deviceclient.h"
+#include "window/windowdocks.h"
 
 #include <QMainWindow>
 
 class QAction;
-class QDockWidget;
-class QMenu;
-class QPlainTextEdit;
 
 namespace hatpic {
 
@@ -33,6 +33,7 @@ class SimulatorPanel;
 class StatusLine;
 class StiffnessView;
 class WindowActions;
+class WindowMenus;
 
 class MainWindow : public QMainWindow
 {
@@ -74,9 +75,6 @@ protected:
 private:
     void createParts();
     void createActions();
-    void createMenus();
-    void createToolBars();
-    void createDocks();
     void connectParts();
     void readSettings();
     void writeSettings() const;
@@ -87,8 +85,6 @@ private:
     void showStatus(const QString &message);
     void openRecordingInteractive();
     void overlayInteractive();
-    void showShortcuts();
-    void showAbout();
     void updateActions();
 
     DeviceClient *m_client = nullptr;
@@ -108,15 +104,10 @@ private:
     StiffnessView *m_stiffness = nullptr;
     ProfileController *m_profiles = nullptr;
     SimulatorPanel *m_simPanel = nullptr;
-    QPlainTextEdit *m_log = nullptr;
-    QDockWidget *m_editorDock = nullptr;
-    QDockWidget *m_stiffnessDock = nullptr;
-    QDockWidget *m_simDock = nullptr;
-    QDockWidget *m_bridgeDock = nullptr;
-    QDockWidget *m_logDock = nullptr;
 
     WindowActions *m_actions = nullptr;
-    QMenu *m_viewMenu = nullptr;
+    WindowMenus *m_menus = nullptr;
+    WindowDocks m_docks;
     ThemeController *m_theme = nullptr;
 
     QString m_port; //!< port of the current or last connection

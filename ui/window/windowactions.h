@@ -1,6 +1,7 @@
 // The window's own commands, with their texts, keys, tooltips and object names, and when each
-// is enabled. The other parts bring their own actions (editor, profiles, plots, recording); the
-// window puts all of them into its menus and toolbars and connects what these trigger.
+// is enabled. The other parts bring their own actions (editor, profiles, plots, recording);
+// WindowMenus puts all of them into the menus and toolbars, the window connects what these
+// trigger.
 #pragma once
 
 #include "session/sessiontypes.h"
