@@ -129,6 +129,8 @@ template<typename... F> struct Overloaded : F...
 {
     using F::operator()...;
 };
+// Spelled out for compilers without C++20's aggregate deduction (clang 14, the fuzz build's).
+template<typename... F> Overloaded(F...) -> Overloaded<F...>;
 
 //! One setting, described once: the profile's JSON (profile.md), hatpic-bridge's options and
 //! config file (ros.md) and validate() all follow from it. Defaults are BridgeSettings' own.
