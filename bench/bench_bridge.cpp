@@ -1,4 +1,5 @@
 // bench_bridge [--ros 1|2] [--seconds S] [--steps N] [--domain ID] [--feedback-rate HZ]
+//              [--load N] [--windows K]
 //
 // The robot path as users run it: `hatpic-sim` on a pseudo-terminal, `hatpic-bridge --port
 // <pty> --rate 1000` on it, and this program as the robot, a node made through the project's
@@ -19,6 +20,10 @@
 //     is the new value (gain 0.154: ±0.077 N·m). ROS 2: once with a reliable publisher (ROS
 //     2's default QoS), once best effort; ROS 1 has no QoS (TCPROS).
 //   CPU: hatpic-bridge's utime + stime (/proc/PID/stat) over each window, as % of one core.
+//   --load N: `stress-ng --cpu N` runs for the whole measurement (N CPU-bound processes, as a
+//     robot host running a simulator or a build); --windows K: the knob → topic window and the
+//     wrench steps K times, one row each, and the worst of them (performance.md § The loop
+//     with the CPU busy). Every program runs as it starts by itself: real-time where allowed.
 // Prints one plain table; exit 1 when a program does not start or nothing arrives.
 #include "ros/node.h"
 
@@ -67,6 +72,8 @@ struct Options
     int steps = 100;                    //!< wrench steps per QoS
     int domain = 81;                    //!< ROS 2's private DDS domain
     std::optional<double> feedbackRate; //!< passed on as --feedback-rate [Hz]
+    int load = 0;                       //!< stress-ng --cpu N during the measurement
+    int windows = 1;                    //!< measurement windows
 };
 
 std::optional<Options> parseOptions(int argc, char *argv[])
@@ -89,10 +96,15 @@ std::optional<Options> parseOptions(int argc, char *argv[])
             o.domain = std::atoi(value);
         } else if (name == "--feedback-rate" && std::atof(value) > 0) {
             o.feedbackRate = std::atof(value);
+        } else if (name == "--load" && std::atoi(value) >= 0) {
+            o.load = std::atoi(value);
+        } else if (name == "--windows" && std::atoi(value) > 0) {
+            o.windows = std::atoi(value);
         } else {
             std::fprintf(stderr,
                          "bench_bridge: bad option %s %s; usage: bench_bridge [--ros 1|2] "
-                         "[--seconds S] [--steps N] [--domain ID] [--feedback-rate HZ]\n",
+                         "[--seconds S] [--steps N] [--domain ID] [--feedback-rate HZ] "
+                         "[--load N] [--windows K]\n",
                          name.c_str(), value);
             return std::nullopt;
         }
@@ -413,7 +425,7 @@ int main(int argc, char *argv[])
     KnobProbe knob; // before the node: its subscriptions call them until they are gone
     FeedbackProbe feedback;
     std::string error;
-    const auto node = ros::Node::open({options->ros, "hatpic_bench", options->domain}, &error);
+    const auto node = ros::Node::open({options->ros, "hatpic_bench", options->domain, {}}, &error);
     if (!node)
         return fail(error.c_str());
     auto joints = node->subscribe(
@@ -433,25 +445,21 @@ int main(int argc, char *argv[])
         return fail("no JointState arrives from hatpic-bridge", &bridge);
     std::this_thread::sleep_for(1s);
 
-    // knob → topic, with the bridge's CPU over the same window.
-    knob.record(true, std::size_t(options->seconds * 1100));
-    const CpuWindow knobCpu(bridge.pid());
-    const CpuWindow knobSimCpu(sim.pid());
-    const auto knobStart = Clock::now();
-    std::this_thread::sleep_for(std::chrono::duration<double>(options->seconds));
-    knob.record(false);
-    const double knobSeconds = msBetween(knobStart, Clock::now()) * 1e-3;
-    const double bridgeCpu = knobCpu.percent();
-    const double simCpu = knobSimCpu.percent();
-    const std::vector<double> knobMs = knob.latencies();
+    // N CPU hogs for the whole measurement.
+    Child hogs(dir.filePath(QStringLiteral("stress.log")));
+    if (options->load > 0 &&
+        !hogs.start(QStringLiteral("stress-ng"),
+                    {QStringLiteral("--cpu"), QString::number(options->load)}, nullptr))
+        return fail("stress-ng does not start (apt-get install stress-ng)", &hogs);
+    if (options->load > 0)
+        std::this_thread::sleep_for(1s); // the hogs at full speed
 
     // The wrench round trip, per publisher QoS (ROS 1: none).
     struct Run
     {
         const char *qosName;
         ros::Qos qos;
-        RoundTrips trips;
-        double bridgeCpu = NAN; //!< [% of one core]
+        std::unique_ptr<ros::Publisher> publisher;
     };
     std::vector<Run> runs;
     if (ros1) {
@@ -463,39 +471,86 @@ int main(int argc, char *argv[])
                         {}});
     }
     for (Run &run : runs) {
-        auto publisher =
+        run.publisher =
             node->advertise("/wrench_estimation", ros::MessageType::WrenchStamped, run.qos, &error);
-        if (!publisher)
+        if (!run.publisher)
             return fail(error.c_str());
-        const CpuWindow cpu(bridge.pid());
-        run.trips = measureRoundTrips(*publisher, feedback, options->steps);
-        run.bridgeCpu = cpu.percent();
-        if (!run.trips.warmedUp)
-            return fail("the wrench never came back on /hatpic/feedback", &bridge);
     }
+
+    struct Window
+    {
+        std::vector<double> knobMs;
+        double knobSeconds = 0;
+        double bridgeCpu = NAN, simCpu = NAN; //!< [% of one core]
+        std::vector<RoundTrips> trips;        //!< per run
+        std::vector<double> tripCpu;          //!< per run
+    };
+    std::vector<Window> windows(std::size_t(options->windows));
+    for (Window &w : windows) {
+        // knob → topic, with the bridge's CPU over the same window.
+        knob.record(true, std::size_t(options->seconds * 1100));
+        const CpuWindow knobCpu(bridge.pid());
+        const CpuWindow knobSimCpu(sim.pid());
+        const auto knobStart = Clock::now();
+        std::this_thread::sleep_for(std::chrono::duration<double>(options->seconds));
+        knob.record(false);
+        w.knobSeconds = msBetween(knobStart, Clock::now()) * 1e-3;
+        w.bridgeCpu = knobCpu.percent();
+        w.simCpu = knobSimCpu.percent();
+        w.knobMs = knob.latencies();
+        for (Run &run : runs) {
+            const CpuWindow cpu(bridge.pid());
+            w.trips.push_back(measureRoundTrips(*run.publisher, feedback, options->steps));
+            w.tripCpu.push_back(cpu.percent());
+            if (!w.trips.back().warmedUp)
+                return fail("the wrench never came back on /hatpic/feedback", &bridge);
+        }
+    }
+    hogs.stop();
     const QByteArray loadEnd = loadAverage();
 
     std::printf("bench_bridge: %s; hatpic-sim on %s; hatpic-bridge --rate 1000", where.constData(),
                 pty.constData());
     if (options->feedbackRate)
         std::printf(" --feedback-rate %g", *options->feedbackRate);
+    if (options->load > 0)
+        std::printf("; stress-ng --cpu %d", options->load);
     std::printf("\nload average %s at the start, %s at the end; %ld cores online\n",
                 loadStart.constData(), loadEnd.constData(), sysconf(_SC_NPROCESSORS_ONLN));
     std::printf("%-40s %7s %8s %8s %8s %8s\n", "latency [ms]", "count", "p50", "p95", "p99", "max");
-    const QByteArray rate = QByteArray::number(double(knobMs.size()) / knobSeconds, 'f', 1) +
-                            " messages/s over " + QByteArray::number(knobSeconds, 'f', 1) + " s";
-    printRow("knob -> /hatpic/joint_states", knobMs, rate.constData());
-    for (const Run &run : runs) {
-        const std::string name = std::string("wrench (") + run.qosName + ") -> /hatpic/feedback";
-        const std::string lost = std::to_string(run.trips.lost) + " lost (none within 1 s)";
-        printRow(name.c_str(), run.trips.ms, lost.c_str());
+    double worstKnobP99 = 0, worstTripP95 = 0, worstRate = INFINITY;
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        const Window &w = windows[i];
+        const std::string prefix =
+            windows.size() > 1 ? "[" + std::to_string(i + 1) + "] " : std::string();
+        const double rate = double(w.knobMs.size()) / w.knobSeconds;
+        const QByteArray note = QByteArray::number(rate, 'f', 1) + " messages/s over " +
+                                QByteArray::number(w.knobSeconds, 'f', 1) + " s";
+        printRow((prefix + "knob -> /hatpic/joint_states").c_str(), w.knobMs, note.constData());
+        std::vector<double> sorted = w.knobMs;
+        std::sort(sorted.begin(), sorted.end());
+        worstKnobP99 = std::max(worstKnobP99, percentile(sorted, 0.99));
+        worstRate = std::min(worstRate, rate);
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            const std::string name =
+                prefix + "wrench (" + runs[r].qosName + ") -> /hatpic/feedback";
+            const std::string lost = std::to_string(w.trips[r].lost) + " lost (none within 1 s)";
+            printRow(name.c_str(), w.trips[r].ms, lost.c_str());
+            std::vector<double> trip = w.trips[r].ms;
+            std::sort(trip.begin(), trip.end());
+            worstTripP95 = std::max(worstTripP95, percentile(trip, 0.95));
+        }
+        std::printf("%shatpic-bridge CPU [%% of one core]: %.1f during the joint_states window "
+                    "(hatpic-sim %.1f)",
+                    prefix.c_str(), w.bridgeCpu, w.simCpu);
+        for (std::size_t r = 0; r < runs.size(); ++r)
+            std::printf(", %.1f during the %s steps", w.tripCpu[r], runs[r].qosName);
+        std::printf("\n");
     }
-    std::printf("hatpic-bridge CPU [%% of one core]: %.1f during the joint_states window "
-                "(hatpic-sim %.1f)",
-                bridgeCpu, simCpu);
-    for (const Run &run : runs)
-        std::printf(", %.1f during the %s steps", run.bridgeCpu, run.qosName);
-    std::printf("\n");
+    if (windows.size() > 1)
+        std::printf("worst of %zu windows: knob -> topic p99 %.2f ms, round trip p95 %.2f ms, "
+                    "%.1f messages/s\n",
+                    windows.size(), worstKnobP99, worstTripP95, worstRate);
 
     joints.reset();
     feedbackSub.reset();

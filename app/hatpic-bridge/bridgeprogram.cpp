@@ -1,5 +1,6 @@
 #include "bridgeprogram.h"
 
+#include "realtime/realtime.h"
 #include "session/sessionwording.h"
 
 #include <QElapsedTimer>
@@ -57,6 +58,10 @@ BridgeProgram::BridgeProgram(const AppOptions &options, QObject *parent)
 
 QString BridgeProgram::start()
 {
+    // The robot path real-time where the system allows it: memory locked here, the session
+    // thread's scheduling by the client (said on connecting), the middleware's by core/ros.
+    if (const std::string problem = realtime::lockMemory(); !problem.empty())
+        printLine(stderr, u"hatpic-bridge: " + QString::fromStdString(problem) + u'.');
     if (m_options.profile)
         m_bridge.setReferenceMode(m_options.profile->host.mode);
     if (const QString error = m_bridge.start(m_options.settings); !error.isEmpty())
@@ -75,8 +80,13 @@ void BridgeProgram::onStateChanged(SessionState state, const StateDetail &event)
     const QString detail = SessionWording::stateDetail(event);
     printLine(stderr, u"hatpic-bridge: " + sessionStateName(state) +
                           (detail.isEmpty() ? QString() : u": " + detail));
-    if (state == SessionState::Connected)
+    if (state == SessionState::Connected) {
+        if (const std::string problem = m_client.realtimeProblem();
+            !problem.empty() && realtime::firstTimeFor(problem))
+            printLine(stderr,
+                      u"hatpic-bridge: session thread: " + QString::fromStdString(problem) + u'.');
         onConnected();
+    }
     // A first connection that failed is tried again; a lost one reconnects by itself.
     if (state == SessionState::Disconnected)
         m_retryTimer.start();
@@ -116,7 +126,11 @@ void BridgeProgram::printStats()
                   spread(s.timing.stampDelay) + u", echo " + spread(s.timing.echoDelay) +
                   u" (median/p95), lost ~" + QString::number(s.timing.lost) + u" | energy " +
                   num(s.passivity.energy * 1e3) + u" mJ" +
-                  (s.passivity.warning ? QStringLiteral(", GENERATING") : QString()));
+                  (s.passivity.warning ? QStringLiteral(", GENERATING") : QString()) +
+                  // The dead man's state, when there is one (ros.md § Enable switch).
+                  (m_options.settings.topics.enable.empty() ? QString()
+                   : s.engaged                              ? QStringLiteral(" | engaged")
+                                                            : QStringLiteral(" | released")));
 }
 
 void BridgeProgram::shutdown()

@@ -6,6 +6,7 @@
 #include "common/connectionoptions.h"
 #include "common/faultreport.h"
 #include "common/ptyprogram.h"
+#include "realtime/realtime.h"
 #include "sim/simulateddevice.h"
 #include "sim/simulatorhost.h"
 
@@ -85,6 +86,12 @@ int main(int argc, char *argv[])
         !program.readLink())
         return PtyProgram::kExitBadOptions;
 
+    // This thread runs the simulated device, standing in for hardware: real-time where allowed.
+    for (const std::string &problem :
+         {realtime::makeThreadRealtime(realtime::kDevicePriority), realtime::lockMemory()}) {
+        if (!problem.empty())
+            program.printError(QString::fromStdString(problem) + u'.');
+    }
     SimulatorHost host(config);
     for (const QString &warning : {host.device().stateWarning(), host.device().saveWarning()}) {
         if (!warning.isEmpty())

@@ -1,6 +1,7 @@
 #include "bridge.h"
 
 #include <chrono>
+#include <cmath>
 
 namespace hatpic::bridge {
 
@@ -44,7 +45,8 @@ QString Bridge::start(const BridgeSettings &settings)
     // endpoints that fail are deleted here, which waits for that handler.
     std::string error;
     auto endpoints = RosEndpoints::open(
-        settings, [this](const RosEndpoints::Wrench &w) { onWrench(w); }, &error);
+        settings, [this](const RosEndpoints::Wrench &w) { onWrench(w); },
+        [this](bool value) { onEnable(value); }, &error);
     if (!endpoints)
         return QString::fromStdString(error);
     {
@@ -56,6 +58,9 @@ QString Bridge::start(const BridgeSettings &settings)
         m_passivity.reset();
         m_rate = RateLimiter(settings.publishRateHz);
         m_released = false;
+        m_gate = EnableGate(!settings.topics.enable.empty(), kEnableTimeout);
+        m_lastWrench.fill(NAN);
+        m_otherComponentStreak = 0;
         m_tauExt = 0;
         m_endpoints = std::move(endpoints);
     }
@@ -104,8 +109,16 @@ void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
     m_settings.feedback = feedback;
     m_feedback.setSettings(feedback);
     m_timing.setPauseAfter(feedback.staleAfter);
-    if (m_endpoints && !m_released)
-        applyTorque(m_feedback.torqueAt(now()));
+    if (m_endpoints)
+        applyTorque(torqueAt(now()));
+}
+
+void Bridge::setEngaged(bool engaged)
+{
+    const std::lock_guard lock(m_mutex);
+    m_gate.setLocal(engaged);
+    if (m_endpoints)
+        applyTorque(torqueAt(now()));
 }
 
 bool Bridge::setPublishRate(double rateHz)
@@ -151,10 +164,14 @@ BridgeStats Bridge::stats() const
     }
     s.wrenches = m_feedback.counters();
     s.lastWrench = m_feedback.lastValue();
+    s.lastWrenchValues = m_lastWrench;
+    s.otherComponentStreak = m_otherComponentStreak;
     s.tauExt = m_tauExt;
     s.publishedTauExt = m_publishedTauExt;
     s.timing = m_timing.stats(now());
     s.passivity = m_passivity.state();
+    s.engaged = m_gate.engaged(now());
+    s.localEngaged = m_gate.local();
     return s;
 }
 
@@ -166,11 +183,18 @@ void Bridge::sampleDecoded(const Sample &sample)
     m_passivity.add(sample.t_s, sample.tau_ext, sample.omega);
     if (sample.arrival_ns > 0)
         m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
-    applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now())); // counts a wrench gone stale
+    const double t = now();
+    applyTorque(torqueAt(t)); // counts a wrench gone stale
+    // Released: no motion asked of the robot, the pose held; engaged again: re-anchored.
+    const bool engaged = m_gate.engaged(t);
+    Sample gated = sample;
+    gated.p_ref = m_gate.reference(sample.p_ref, engaged);
+    if (!engaged)
+        gated.v_ref = 0;
     if (!m_rate.due(sample.t_s))
         return;
     const ReferenceMessages m =
-        referenceMessages(sample, wallSecondsOf(sample), m_settings, m_settings.axisFor(m_mode));
+        referenceMessages(gated, wallSecondsOf(sample), m_settings, m_settings.axisFor(m_mode));
     m_endpoints->publish(m);
     m_publishedTauExt = m.feedbackTorque;
 }
@@ -184,17 +208,40 @@ void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
         return;
     m_timing.arrived(arrived, wall, wrench.stamp);
     const Component c = m_settings.feedback.component;
-    const double tau = m_feedback.receive(wrench.values[(c.angular ? 3 : 0) + c.index], arrived);
-    if (tau != m_tauExt)
-        m_timing.torqueAsked(tau, arrived);
-    applyTorque(tau);
+    const int chosen = (c.angular ? 3 : 0) + c.index;
+    m_lastWrench = wrench.values;
+    bool another = false;
+    for (int i = 0; i < 6; ++i)
+        another =
+            another || (i != chosen && wrench.values[i] != 0 && std::isfinite(wrench.values[i]));
+    m_otherComponentStreak = wrench.values[chosen] == 0 && another ? m_otherComponentStreak + 1 : 0;
+    const double tau = m_feedback.receive(wrench.values[chosen], arrived);
+    const double applied = m_gate.engaged(arrived) ? tau : 0.0;
+    if (applied != m_tauExt)
+        m_timing.torqueAsked(applied, arrived);
+    applyTorque(applied);
+}
+
+void Bridge::onEnable(bool value)
+{
+    const double t = now();
+    const std::lock_guard lock(m_mutex);
+    if (!m_endpoints)
+        return;
+    m_gate.received(value, t);
+    applyTorque(torqueAt(t));
 }
 
 void Bridge::checkStale()
 {
     const std::lock_guard lock(m_mutex);
     if (m_endpoints)
-        applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now()));
+        applyTorque(torqueAt(now()));
+}
+
+double Bridge::torqueAt(double t)
+{
+    return m_released || !m_gate.engaged(t) ? 0.0 : m_feedback.torqueAt(t);
 }
 
 void Bridge::applyTorque(double tau)

@@ -6,6 +6,7 @@
 // the statistics, and checks staleness on a timer as a second line behind the samples.
 #pragma once
 
+#include "enablegate.h"
 #include "profile/bridgesettings.h"
 #include "referencemessages.h"
 #include "rosendpoints.h"
@@ -20,6 +21,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <cmath>
 #include <memory>
 #include <mutex>
 
@@ -31,11 +33,18 @@ struct BridgeStats
     std::uint64_t writeErrors = 0;                         //!< writes the middleware refused
     WrenchFeedback::Counters wrenches;                     //!< wrenches in, rejected, stale
     double lastWrench = 0;                                 //!< last component received (NaN: none)
-    double tauExt = 0;                                     //!< τ_ext asked of the device [N·m]
+    //! The last wrench received, whole: force x y z [N], torque x y z [N·m]; NaN: none yet.
+    std::array<double, 6> lastWrenchValues{NAN, NAN, NAN, NAN, NAN, NAN};
+    //! Wrenches in a row, up to the last, whose chosen component was 0 while another was not:
+    //! a robot that sends its force on another axis (the Bridge panel warns).
+    std::uint64_t otherComponentStreak = 0;
+    double tauExt = 0;          //!< τ_ext asked of the device [N·m]
     double publishedTauExt = 0; //!< torque.z of the last /hatpic/feedback message [N·m]
     WrenchTiming::Stats timing; //!< the wrenches' age, delays and (estimated) losses
     //! The energy τ_ext has put into the knob since start(), and the contact warning.
     analysis::PassivityObserver::State passivity;
+    bool engaged = true;      //!< the enable switch: the knob drives the robot (ros.md)
+    bool localEngaged = true; //!< the local switch (setEngaged())
 };
 
 class Bridge : public QObject, private SampleListener
@@ -63,6 +72,10 @@ public:
     //! Messages per topic per second from the next sample on, while running. A rate
     //! validate() refuses is ignored (false).
     bool setPublishRate(double rateHz);
+    //! The local enable switch (the tuner's key or toggle), with the enable topic's if there
+    //! is one: released, the twist, the joint jog and τ_ext are zero and the pose holds; engaged
+    //! again, the pose goes on from where it held (ros.md § Enable switch). Engaged at start().
+    void setEngaged(bool engaged);
     //! The reference mode picks the default axis (linear.x, or angular.z in rotation).
     void setReferenceMode(ReferenceMode mode);
 
@@ -74,7 +87,10 @@ public:
 private:
     void sampleDecoded(const Sample &sample) override; //!< the session thread
     void onWrench(const RosEndpoints::Wrench &wrench); //!< a middleware thread
-    void checkStale();                                 //!< any thread
+    void onEnable(bool value);                         //!< a middleware thread
+    //! With m_mutex held: the τ_ext the wrench asks for at `t`, or 0 when released.
+    double torqueAt(double t);
+    void checkStale(); //!< any thread
     //! With m_mutex held: τ_ext becomes `tau`; the device is told when it changed.
     void applyTorque(double tau);
     //! The monotonic clock wrenches are dated on [s].
@@ -97,6 +113,9 @@ private:
     double m_tauExt = 0;
     double m_publishedTauExt = 0;
     bool m_released = false; //!< releaseFeedback(): wrenches ignored, τ_ext held at 0
+    std::array<double, 6> m_lastWrench{NAN, NAN, NAN, NAN, NAN, NAN};
+    std::uint64_t m_otherComponentStreak = 0;
+    EnableGate m_gate;
     std::array<std::uint64_t, kOutTopicCount> m_publishedBefore{}; //!< by endpoints now closed
     std::uint64_t m_writeErrorsBefore = 0;
 };

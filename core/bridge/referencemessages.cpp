@@ -23,6 +23,7 @@ ReferenceMessages referenceMessages(const Sample &sample, double wallSeconds,
         m.posePosition[axis.index] += sample.p_ref;
     }
     m.feedbackTorque = sample.tau_ext;
+    m.jointJogVelocity = sample.v_ref;
     return m;
 }
 

@@ -24,7 +24,8 @@ struct ReferenceMessages
     std::array<double, 6> twist{};        //!< linear x y z, angular x y z: v_ref on the axis
     std::array<double, 3> posePosition{}; //!< origin, plus p_ref on a linear axis [m]
     std::array<double, 4> poseOrientation{0, 0, 0, 1}; //!< x y z w: p_ref about an angular axis
-    double feedbackTorque = 0; //!< WrenchStamped torque.z: the τ_ext the device applies
+    double feedbackTorque = 0;   //!< WrenchStamped torque.z: the τ_ext the device applies
+    double jointJogVelocity = 0; //!< JointJog velocities[0]: v_ref [m/s or rad/s]
 };
 
 //! The messages for `sample`, stamped `wallSeconds` (Unix time of the sample), with the

@@ -1,5 +1,7 @@
 #include "rosendpoints.h"
 
+#include <tuple>
+
 namespace hatpic::bridge {
 
 namespace {
@@ -34,12 +36,15 @@ const char *outTopicKey(OutTopic topic)
         return "pose";
     case OutTopic::Feedback:
         return "feedback";
+    case OutTopic::JointJog:
+        return "joint_jog";
     }
     return "";
 }
 
-RosEndpoints::RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench)
-    : m_settings(settings), m_onWrench(std::move(onWrench))
+RosEndpoints::RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench,
+                           EnableHandler onEnable)
+    : m_settings(settings), m_onWrench(std::move(onWrench)), m_onEnable(std::move(onEnable))
 {}
 
 RosEndpoints::~RosEndpoints()
@@ -51,9 +56,11 @@ RosEndpoints::~RosEndpoints()
 }
 
 std::unique_ptr<RosEndpoints> RosEndpoints::open(const BridgeSettings &settings,
-                                                 WrenchHandler onWrench, std::string *error)
+                                                 WrenchHandler onWrench, EnableHandler onEnable,
+                                                 std::string *error)
 {
-    std::unique_ptr<RosEndpoints> endpoints(new RosEndpoints(settings, std::move(onWrench)));
+    std::unique_ptr<RosEndpoints> endpoints(
+        new RosEndpoints(settings, std::move(onWrench), std::move(onEnable)));
     const std::string problem = endpoints->create();
     if (!problem.empty()) {
         if (error)
@@ -72,6 +79,13 @@ ros::Qos RosEndpoints::writerQos(const BridgeSettings &settings)
     return qos;
 }
 
+std::string RosEndpoints::resolved(const BridgeSettings &settings, std::string Topics::*topic)
+{
+    const auto version = settings.rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
+    return topicInNamespace(settings.topics.*topic, Topics{}.*topic,
+                            ros::effectiveNamespace(version, settings.nodeNamespace));
+}
+
 std::string RosEndpoints::create()
 {
     std::string error;
@@ -79,6 +93,7 @@ std::string RosEndpoints::create()
     options.version = m_settings.rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
     options.name = "hatpic_bridge";
     options.domainId = m_settings.domainId;
+    options.nameSpace = m_settings.nodeNamespace;
     m_node = ros::Node::open(options, &error);
     if (!m_node)
         return error;
@@ -88,16 +103,18 @@ std::string RosEndpoints::create()
         {OutTopic::Twist, ros::MessageType::TwistStamped},
         {OutTopic::TwistUnstamped, ros::MessageType::Twist},
         {OutTopic::Pose, ros::MessageType::PoseStamped},
-        {OutTopic::Feedback, ros::MessageType::WrenchStamped}};
-    const std::string *names[] = {&m_settings.topics.jointStates, &m_settings.topics.twist,
-                                  &m_settings.topics.twistUnstamped, &m_settings.topics.pose,
-                                  &m_settings.topics.feedback};
+        {OutTopic::Feedback, ros::MessageType::WrenchStamped},
+        {OutTopic::JointJog, ros::MessageType::JointJog}};
+    std::string Topics::*const names[] = {&Topics::jointStates,    &Topics::twist,
+                                          &Topics::twistUnstamped, &Topics::pose,
+                                          &Topics::feedback,       &Topics::jointJog};
     static_assert(std::size(out) == kOutTopicCount && std::size(names) == kOutTopicCount);
     for (int i = 0; i < kOutTopicCount; ++i) {
-        if (names[i]->empty())
+        const std::string name = resolved(m_settings, names[i]);
+        if (name.empty())
             continue;
         auto &publisher = m_publishers[int(out[i].first)];
-        publisher = m_node->advertise(*names[i], out[i].second, writerQos(m_settings), &error);
+        publisher = m_node->advertise(name, out[i].second, writerQos(m_settings), &error);
         if (!publisher)
             return error;
     }
@@ -109,13 +126,19 @@ std::string RosEndpoints::create()
         else if (const auto *wrench = std::get_if<ros::Wrench>(&message))
             m_onWrench(wrenchOf(*wrench));
     };
-    const std::pair<const std::string *, ros::MessageType> in[] = {
-        {&m_settings.topics.wrench, ros::MessageType::WrenchStamped},
-        {&m_settings.topics.wrenchUnstamped, ros::MessageType::Wrench}};
-    for (const auto &[name, type] : in) {
-        if (name->empty())
+    const auto enableHandler = [this](const ros::Message &message) {
+        if (const auto *b = std::get_if<ros::Bool>(&message))
+            m_onEnable(b->data);
+    };
+    const std::tuple<std::string Topics::*, ros::MessageType, ros::MessageHandler> in[] = {
+        {&Topics::wrench, ros::MessageType::WrenchStamped, handler},
+        {&Topics::wrenchUnstamped, ros::MessageType::Wrench, handler},
+        {&Topics::enable, ros::MessageType::Bool, enableHandler}};
+    for (const auto &[topic, type, onMessage] : in) {
+        const std::string name = resolved(m_settings, topic);
+        if (name.empty())
             continue;
-        auto subscription = m_node->subscribe(*name, type, ros::Qos::matchAny(), handler, &error);
+        auto subscription = m_node->subscribe(name, type, ros::Qos::matchAny(), onMessage, &error);
         if (!subscription)
             return error;
         m_subscriptions.push_back(std::move(subscription));
@@ -146,6 +169,9 @@ void RosEndpoints::publish(const ReferenceMessages &m)
     });
     send(OutTopic::Feedback, [&] {
         return ros::WrenchStamped{header, {{0, 0, 0}, {0, 0, m.feedbackTorque}}};
+    });
+    send(OutTopic::JointJog, [&] {
+        return ros::JointJog{header, {m_settings.jointName}, {}, {m.jointJogVelocity}, 0};
     });
 }
 

@@ -20,9 +20,9 @@
 namespace hatpic::bridge {
 
 //! The outgoing topics, in the order of every per-topic array.
-enum class OutTopic { JointStates, Twist, TwistUnstamped, Pose, Feedback };
-constexpr int kOutTopicCount = 5;
-//! "joint_states", "twist", "twist_unstamped", "pose", "feedback"
+enum class OutTopic { JointStates, Twist, TwistUnstamped, Pose, Feedback, JointJog };
+constexpr int kOutTopicCount = 6;
+//! "joint_states", "twist", "twist_unstamped", "pose", "feedback", "joint_jog"
 const char *outTopicKey(OutTopic topic);
 
 class RosEndpoints
@@ -38,20 +38,28 @@ public:
     };
     //! Called on a middleware thread, once per wrench received (stamped or not).
     using WrenchHandler = std::function<void(const Wrench &)>;
+    //! Called on a middleware thread, once per std_msgs/Bool on the enable topic.
+    using EnableHandler = std::function<void(bool)>;
 
-    //! Opens the node "hatpic_bridge" of settings.rosVersion (ROS 2: in settings.domainId,
-    //! ROS's discovery variables and CYCLONEDDS_URI apply; ROS 1: ROS_MASTER_URI applies), a
-    //! publisher of every named outgoing topic with writerQos() and a subscription of every named
-    //! wrench topic with ros::Qos::matchAny(). Null with `*error` set to one sentence when the
-    //! middleware refuses.
+    //! Opens the node "hatpic_bridge" of settings.rosVersion in settings.nodeNamespace (ROS 2:
+    //! in settings.domainId, ROS's discovery variables and CYCLONEDDS_URI apply; ROS 1:
+    //! ROS_MASTER_URI and ROS_NAMESPACE apply), a publisher of every named outgoing topic with
+    //! writerQos() and a subscription of every named wrench topic and the enable topic with
+    //! ros::Qos::matchAny(), each under the namespace as topicInNamespace() says. Null with
+    //! `*error` set to one sentence when the middleware refuses.
     static std::unique_ptr<RosEndpoints> open(const BridgeSettings &settings,
-                                              WrenchHandler onWrench, std::string *error);
+                                              WrenchHandler onWrench, EnableHandler onEnable,
+                                              std::string *error);
     ~RosEndpoints(); //!< closes the node; no handler call runs after it returns
     RosEndpoints(const RosEndpoints &) = delete;
     RosEndpoints &operator=(const RosEndpoints &) = delete;
 
     //! The QoS of the bridge's publishers: settings.qos and settings.depth, volatile.
     static ros::Qos writerQos(const BridgeSettings &settings);
+
+    //! The name `topic` of `settings` has on the network (topicInNamespace() in the node's
+    //! effective namespace).
+    static std::string resolved(const BridgeSettings &settings, std::string Topics::*topic);
 
     //! Publishes `m` on every outgoing topic that has a name.
     void publish(const ReferenceMessages &m);
@@ -62,11 +70,12 @@ public:
     std::string where() const;
 
 private:
-    RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench);
+    RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench, EnableHandler onEnable);
     std::string create();
 
     BridgeSettings m_settings;
     WrenchHandler m_onWrench;
+    EnableHandler m_onEnable;
     std::unique_ptr<ros::Node> m_node;
     std::array<std::unique_ptr<ros::Publisher>, kOutTopicCount> m_publishers;
     std::vector<std::unique_ptr<ros::Subscription>> m_subscriptions;

@@ -65,7 +65,7 @@ constexpr SettingSpec topic(std::string_view key, std::string_view label,
 
 } // namespace
 
-const std::array<SettingSpec, 20> kSettings = {
+const std::array<SettingSpec, 23> kSettings = {
     // The network's (withNetworkOf()): no profile holds them.
     setting("ros", "ROS version", &BridgeSettings::rosVersion, {1, 2}, "VERSION",
             "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp (ROS_MASTER_URI).",
@@ -86,13 +86,21 @@ const std::array<SettingSpec, 20> kSettings = {
           "geometry_msgs/WrenchStamped in (default /wrench_estimation)."),
     topic("wrench_unstamped_topic", "unstamped wrench topic", &Topics::wrenchUnstamped,
           "geometry_msgs/Wrench in (default: none)."),
+    topic("enable_topic", "enable topic", &Topics::enable,
+          "std_msgs/Bool in, a dead man: references and τ_ext only while true, released 0.5 s "
+          "after the last message (default: none, always enabled)."),
+    topic("joint_jog_topic", "joint jog topic", &Topics::jointJog,
+          "control_msgs/JointJog out, for MoveIt Servo; ROS 2 only (default: none)."),
+    setting("namespace", "namespace", &BridgeSettings::nodeNamespace, {0, 200}, "NS",
+            "The node's namespace; default and relative topics go under it (default: none; "
+            "ROS 1: ROS_NAMESPACE)."),
     setting("rate", "publish rate", &BridgeSettings::publishRateHz,
             {0, kMaxPublishRateHz, "Hz", true}, "HZ",
             "Messages per topic per second, at most (default 100)."),
     setting("frame_id", "frame id", &BridgeSettings::frameId, {0, 256}, "ID",
             "header.frame_id (default hatpic)."),
     setting("joint_name", "joint name", &BridgeSettings::jointName, {1, 256}, "NAME",
-            "JointState name (default hatpic_knob)."),
+            "JointState's and JointJog's joint name (default hatpic_knob)."),
     setting("axis", "axis", AxisPlace{}, {}, "AXIS",
             "Twist/pose axis: linear.x … angular.z, or auto (default: linear.x, angular.z in "
             "rotation mode)."),
@@ -183,6 +191,30 @@ bool isValidTopicName(const std::string &name)
     return true;
 }
 
+bool isValidNamespace(const std::string &name)
+{
+    return name.empty() || name == "/" ||
+           isValidTopicName(name.front() == '/' ? name.substr(1) : name);
+}
+
+std::string topicInNamespace(const std::string &topic, const std::string &defaultTopic,
+                             const std::string &ns)
+{
+    const std::string stripped = ns.starts_with('/') ? ns.substr(1) : ns;
+    if (stripped.empty() || topic.empty())
+        return topic;
+    if (topic == defaultTopic || !topic.starts_with('/'))
+        return "/" + stripped + (topic.starts_with('/') ? "" : "/") + topic;
+    return topic;
+}
+
+BridgeSettings panelDefaults()
+{
+    BridgeSettings s;
+    s.feedback.component = Component{false, 0};
+    return s;
+}
+
 BridgeSettings withNetworkOf(BridgeSettings settings, const BridgeSettings &network)
 {
     settings.domainId = network.domainId;
@@ -213,6 +245,10 @@ std::vector<std::string> validate(const BridgeSettings &s)
             },
             spec.place);
     }
+    if (!isValidNamespace(s.nodeNamespace))
+        errors.push_back("namespace: '" + echoedText(s.nodeNamespace) +
+                         "' is not a ROS namespace (letters, digits and '_' between single '/', "
+                         "not starting with a digit)");
     return errors;
 }
 

@@ -46,6 +46,8 @@ struct Topics
     std::string feedback = "/hatpic/feedback";        //!< out: geometry_msgs/WrenchStamped
     std::string wrench = "/wrench_estimation";        //!< in: geometry_msgs/WrenchStamped
     std::string wrenchUnstamped;                      //!< in: geometry_msgs/Wrench (off)
+    std::string enable;                               //!< in: std_msgs/Bool, dead man (off)
+    std::string jointJog;                             //!< out: control_msgs/JointJog (off)
 
     friend bool operator==(const Topics &, const Topics &) = default;
 };
@@ -65,9 +67,12 @@ struct FeedbackSettings
 struct BridgeSettings
 {
     Topics topics;
-    double publishRateHz = 100;             //!< messages per topic per second, at most [Hz]
-    std::string frameId = "hatpic";         //!< header.frame_id of every message out
-    std::string jointName = "hatpic_knob";  //!< JointState.name[0]
+    double publishRateHz = 100;            //!< messages per topic per second, at most [Hz]
+    std::string frameId = "hatpic";        //!< header.frame_id of every message out
+    std::string jointName = "hatpic_knob"; //!< JointState.name[0], JointJog.joint_names[0]
+    //! The node's namespace ("knob1", "lab/knob1"; empty: the root, or ROS_NAMESPACE on ROS 1).
+    //! The node and every topic at its default value, or relative, go under it.
+    std::string nodeNamespace;
     std::optional<Component> referenceAxis; //!< unset: linear.x, angular.z in rotation mode
     std::array<double, 3> poseOrigin{};     //!< added to the pose's position [m]
     FeedbackSettings feedback;              //!< the wrench that comes back
@@ -82,6 +87,11 @@ struct BridgeSettings
     friend bool operator==(const BridgeSettings &, const BridgeSettings &) = default;
 };
 
+//! What the tuner's Bridge panel starts from: the defaults, with the feedback on force.x, the
+//! component the project's own robot (hatpic-robot-sim, scripts/teleop-demo) sends its force
+//! on. (hatpic-bridge keeps force.z, the published driver's.)
+BridgeSettings panelDefaults();
+
 //! `settings` with the network settings of `network`: the ROS version and the DDS domain. They
 //! describe the network a machine is on, not a tuning, so a profile holds neither and opening
 //! one keeps those in use (profile.md).
@@ -93,6 +103,9 @@ constexpr double kMaxFeedbackGain = 100;   //!< |gain| [N·m per unit]
 constexpr double kMaxFeedbackLimit = 10;   //!< model.md's largest tau_limit [N·m]
 constexpr double kMaxStaleAfter = 10;      //!< [s]
 constexpr int kMaxDomainId = 232;          //!< DDS's port mapping allows 0…232
+//! With an enable topic, the switch counts as released when no message came for this long [s]
+//! (ros.md § Enable switch): a dead man that stops talking must fail safe.
+constexpr double kEnableTimeout = 0.5;
 
 // The settings held in types of their own.
 struct AxisPlace
@@ -148,7 +161,7 @@ struct SettingSpec
 };
 
 //! Every setting, in --help's order; a profile writes those it holds in the same order.
-extern const std::array<SettingSpec, 20> kSettings;
+extern const std::array<SettingSpec, 23> kSettings;
 
 //! Every broken rule, one sentence each ("publish rate: must be above 0 and at most 1000 Hz,
 //! got 0"). Empty means valid.
@@ -156,5 +169,12 @@ std::vector<std::string> validate(const BridgeSettings &settings);
 //! A topic name rmw would accept: '/'-separated tokens of [A-Za-z0-9_], not starting with a
 //! digit, no "//", no trailing '/'.
 bool isValidTopicName(const std::string &name);
+//! A namespace rmw and roscpp would accept: a topic name's form, with or without a leading '/'.
+bool isValidNamespace(const std::string &name);
+//! The name `topic` (the setting of `defaultTopic`'s place) has on the network under the
+//! namespace `ns`: unchanged when `ns` is empty or `topic` is empty; "/NS/…" for a topic at its
+//! default value (`defaultTopic`) or a relative one; any other absolute name as given.
+std::string topicInNamespace(const std::string &topic, const std::string &defaultTopic,
+                             const std::string &ns);
 
 } // namespace hatpic::bridge

@@ -90,22 +90,29 @@ std::unique_ptr<RobotSimulator> RobotSimulator::start(const RobotSimSettings &se
     sim->m_node = ros::Node::open(settings.node, &why);
     if (!sim->m_node)
         return fail(why);
+    // A topic at its default, or relative, goes under the node's namespace (as the bridge's).
+    const std::string ns = ros::effectiveNamespace(settings.node.version, settings.node.nameSpace);
+    const auto placed = [&](std::string RobotSimSettings::*topic) {
+        return bridge::topicInNamespace(settings.*topic, RobotSimSettings{}.*topic, ns);
+    };
     if (!settings.wrenchTopic.empty()) {
         // As a wrench estimator publishes its sensor-data stream.
-        sim->m_wrenchOut = sim->m_node->advertise(
-            settings.wrenchTopic, ros::MessageType::WrenchStamped, ros::Qos::matchAny(), &why);
+        sim->m_wrenchOut =
+            sim->m_node->advertise(placed(&RobotSimSettings::wrenchTopic),
+                                   ros::MessageType::WrenchStamped, ros::Qos::matchAny(), &why);
         if (!sim->m_wrenchOut)
             return fail(why);
     }
     if (!settings.poseTopic.empty()) {
-        sim->m_poseOut = sim->m_node->advertise(settings.poseTopic, ros::MessageType::PoseStamped,
-                                                ros::Qos::defaults(), &why);
+        sim->m_poseOut =
+            sim->m_node->advertise(placed(&RobotSimSettings::poseTopic),
+                                   ros::MessageType::PoseStamped, ros::Qos::defaults(), &why);
         if (!sim->m_poseOut)
             return fail(why);
     }
     RobotSimulator *self = sim.get();
     sim->m_twistIn = sim->m_node->subscribe(
-        settings.twistTopic, ros::MessageType::TwistStamped, ros::Qos::matchAny(),
+        placed(&RobotSimSettings::twistTopic), ros::MessageType::TwistStamped, ros::Qos::matchAny(),
         [self](const ros::Message &m) { self->onTwist(m); }, &why);
     if (!sim->m_twistIn)
         return fail(why);

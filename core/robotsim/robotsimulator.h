@@ -32,7 +32,7 @@ struct RobotSimSettings
     std::string frameId = "robot";                  //!< header.frame_id of what goes out
     double rateHz = 200;                            //!< outputs per second (≤ 1000) [Hz]
     double staleAfter = 0.5; //!< v_ref = 0 once the last twist is this old [s]
-    ros::NodeOptions node{ros::RosVersion::Ros2, "hatpic_robot_sim", -1};
+    ros::NodeOptions node{ros::RosVersion::Ros2, "hatpic_robot_sim", -1, {}};
 };
 
 constexpr double kMaxRobotRateHz = 1000; //!< one output per step

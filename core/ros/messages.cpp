@@ -42,6 +42,10 @@ const char *rosTypeName(MessageType type)
         return "geometry_msgs/msg/WrenchStamped";
     case MessageType::Wrench:
         return "geometry_msgs/msg/Wrench";
+    case MessageType::Bool:
+        return "std_msgs/msg/Bool";
+    case MessageType::JointJog:
+        return "control_msgs/msg/JointJog";
     }
     return "";
 }

@@ -99,10 +99,39 @@ struct JointState
     friend bool operator==(const JointState &, const JointState &) = default;
 };
 
+//! std_msgs/Bool: the enable switch's (ros.md § Enable switch).
+struct Bool
+{
+    bool data = false;
+    friend bool operator==(const Bool &, const Bool &) = default;
+};
+
+//! control_msgs/JointJog (MoveIt Servo's joint command). ROS 2 only: Debian has no ROS 1
+//! control_msgs.
+struct JointJog
+{
+    Header header;
+    std::vector<std::string> jointNames;
+    std::vector<double> displacements; //!< [rad] or [m]
+    std::vector<double> velocities;    //!< [rad/s] or [m/s]
+    double duration = 0;               //!< [s]
+    friend bool operator==(const JointJog &, const JointJog &) = default;
+};
+
 //! Every message type a topic can carry; the index of each alternative is its MessageType.
-using Message = std::variant<JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench>;
-enum class MessageType { JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench };
-constexpr int kMessageTypeCount = 6;
+using Message = std::variant<JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench,
+                             Bool, JointJog>;
+enum class MessageType {
+    JointState,
+    TwistStamped,
+    Twist,
+    PoseStamped,
+    WrenchStamped,
+    Wrench,
+    Bool,
+    JointJog
+};
+constexpr int kMessageTypeCount = 8;
 
 inline MessageType typeOf(const Message &message)
 {

@@ -40,6 +40,14 @@ std::optional<int> domainFromEnvironment(std::string *error)
     return int(id);
 }
 
+std::string effectiveNamespace(RosVersion version, const std::string &given)
+{
+    if (!given.empty() || version != RosVersion::Ros1)
+        return given;
+    const char *text = std::getenv("ROS_NAMESPACE");
+    return text ? std::string(text) : std::string();
+}
+
 bool Node::isAvailable(RosVersion version)
 {
     switch (version) {

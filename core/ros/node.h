@@ -49,7 +49,14 @@ struct NodeOptions
     //! ros_discovery_info), so `ros2 node list` does not show it (ros.md § Discovery).
     std::string name;
     int domainId = -1; //!< ROS 2: the DDS domain; −1: ROS_DOMAIN_ID, else 0
+    //! The node's namespace ("knob1"); empty: the root, or on ROS 1 ROS_NAMESPACE. Topic names
+    //! given to advertise() and subscribe() are taken as they are (resolve them first).
+    std::string nameSpace;
 };
+
+//! The namespace a node of `version` is in when NodeOptions::nameSpace is `given`: `given`
+//! when not empty, else on ROS 1 ROS_NAMESPACE (as roscpp reads it), else empty (the root).
+std::string effectiveNamespace(RosVersion version, const std::string &given);
 
 //! Publishes one topic. publish() may be called from any thread, one call at a time; it does
 //! not block on the network. written() and writeErrors() may be read from any thread.

@@ -2,6 +2,8 @@
 
 #include "session/devicesession.h"
 
+#include "realtime/realtime.h"
+
 #include <QThread>
 
 #include <limits>
@@ -74,7 +76,22 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
             post(m_pendingLogLines, kMaxPendingLogLines, [this, line] { Q_EMIT deviceLog(line); });
         },
         Qt::DirectConnection);
+    // The robot path's thread: real-time where the system allows it (else as before).
+    connect(
+        m_thread, &QThread::started, this,
+        [this] {
+            const std::string problem = realtime::makeThreadRealtime();
+            const std::lock_guard lock(m_realtimeMutex);
+            m_realtimeProblem = problem;
+        },
+        Qt::DirectConnection);
     m_thread->start(QThread::HighestPriority);
+}
+
+std::string DeviceClient::realtimeProblem() const
+{
+    const std::lock_guard lock(m_realtimeMutex);
+    return m_realtimeProblem;
 }
 
 DeviceClient::~DeviceClient()

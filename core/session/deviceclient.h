@@ -9,6 +9,8 @@
 #include <QObject>
 
 #include <atomic>
+#include <mutex>
+#include <string>
 
 class QThread;
 
@@ -32,6 +34,11 @@ public:
 
     void connectDevice(const ConnectOptions &options);
     void disconnectDevice();
+
+    //! Empty once the session thread runs SCHED_FIFO (realtime::kPriority), else the sentence
+    //! saying why it does not (performance.md § The loop with the CPU busy); empty before the
+    //! thread started. Any thread.
+    std::string realtimeProblem() const;
 
     //! Commands; each returns a request id that commandFinished() reports back.
     //! Each part of `tuning` sent and read back (SET_PARAMS, GET_PARAMS, SET_EFFECTS,
@@ -109,6 +116,8 @@ private:
     template<typename Deliver> bool post(std::atomic<int> &pending, int cap, Deliver deliver);
 
     QThread *m_thread = nullptr;
+    mutable std::mutex m_realtimeMutex;
+    std::string m_realtimeProblem;      //!< set on the session thread as it starts
     DeviceSession *m_session = nullptr; //!< lives on m_thread
     quint64 m_lastId = 0;
     SessionState m_state = SessionState::Disconnected;

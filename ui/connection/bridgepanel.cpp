@@ -15,6 +15,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -53,8 +54,16 @@ constexpr TopicField kTopicFields[] = {
      &bridge::Topics::wrench},
     {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Wrench, unstamped (in)"),
      u"bridge_topic_wrench_unstamped", &bridge::Topics::wrenchUnstamped},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Enable, dead man (in)"), u"bridge_topic_enable",
+     &bridge::Topics::enable},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Joint jog, MoveIt Servo (out)"),
+     u"bridge_topic_joint_jog", &bridge::Topics::jointJog},
 };
-static_assert(std::size(kTopicFields) == 7);
+static_assert(std::size(kTopicFields) == 9);
+
+//! Wrenches in a row whose chosen component was 0 while another was not, before the panel
+//! says so (at 50 Hz, a fifth of a second).
+constexpr std::uint64_t kOtherComponentStreak = 10;
 
 // What the bridge needs to do its work, a line each (issue 21: the panel once said nothing of
 // it). A new way to get a robot's wrench (a simulated robot) is one more line.
@@ -209,10 +218,23 @@ void BridgePanel::buildForm()
     m_domain->setKeyboardTracking(false);
     m_domain->setToolTip(tr("DDS domain (ROS_DOMAIN_ID); not saved in profiles"));
     top->addRow(tr("Domain"), m_domain);
+    m_namespace = new QLineEdit(ros);
+    m_namespace->setObjectName(u"bridge_namespace"_s);
+    m_namespace->setToolTip(tr("The node's namespace: the default topics go under it (a knob per "
+                               "student on one network); empty: none"));
+    top->addRow(tr("Namespace"), m_namespace);
     m_rate = spin(ros, u"bridge_rate"_s, 0.01, bridge::kMaxPublishRateHz, 2, u" Hz"_s);
     m_rate->setToolTip(tr("Messages per topic per second, at most"));
     top->addRow(tr("Rate"), m_rate);
     rosLayout->addLayout(top);
+    m_engaged = new QPushButton(tr("Engaged"), ros);
+    m_engaged->setObjectName(u"bridge_engaged"_s);
+    m_engaged->setCheckable(true);
+    m_engaged->setChecked(true);
+    m_engaged->setToolTip(tr("The enable switch: released, the twist and τ_ext are zero and the "
+                             "pose holds; engaged again, the pose goes on from there (with an "
+                             "enable topic, both must be on)"));
+    rosLayout->addWidget(m_engaged);
     rosLayout->addStretch(1);
 
     QWidget *content = ros->parentWidget();
@@ -239,6 +261,11 @@ void BridgePanel::buildForm()
     m_wrench = new QLabel(feedback);
     m_wrench->setObjectName(u"bridge_last_wrench"_s);
     feedbackForm->addRow(tr("Last wrench"), m_wrench);
+    m_otherComponent = new QLabel(feedback);
+    m_otherComponent->setObjectName(u"bridge_other_component"_s);
+    m_otherComponent->setWordWrap(true);
+    m_otherComponent->setStyleSheet(u"color: #b00020;"_s);
+    feedbackForm->addRow(m_otherComponent);
     m_tauExt = new QLabel(feedback);
     m_tauExt->setObjectName(u"bridge_tau_ext"_s);
     feedbackForm->addRow(tr("τ_ext"), m_tauExt);
@@ -278,6 +305,13 @@ void BridgePanel::buildForm()
     for (QDoubleSpinBox *box : {m_gain, m_limit, m_stale})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { edited(false); });
     connect(m_component, &QComboBox::currentIndexChanged, this, [this] { edited(false); });
+    connect(m_namespace, &QLineEdit::editingFinished, this, [this] { edited(true); });
+    connect(m_engaged, &QPushButton::toggled, this, [this](bool engaged) {
+        m_engaged->setText(engaged ? tr("Engaged") : tr("Released"));
+#ifdef HATPIC_HAVE_BRIDGE
+        m_bridge->setEngaged(engaged);
+#endif
+    });
 }
 
 void BridgePanel::resizeEvent(QResizeEvent *event)
@@ -328,6 +362,7 @@ void BridgePanel::showSettings()
     m_stale->setValue(m_settings.feedback.staleAfter);
     for (std::size_t i = 0; i < std::size(kTopicFields); ++i)
         m_topics[i]->setText(QString::fromStdString(m_settings.topics.*kTopicFields[i].topic));
+    m_namespace->setText(QString::fromStdString(m_settings.nodeNamespace));
 }
 
 void BridgePanel::setSettings(const BridgeSettings &settings)
@@ -353,6 +388,7 @@ void BridgePanel::edited(bool reopen)
     s.feedback.staleAfter = taken(m_stale, m_settings.feedback.staleAfter);
     for (std::size_t i = 0; i < std::size(kTopicFields); ++i)
         s.topics.*kTopicFields[i].topic = m_topics[i]->text().trimmed().toStdString();
+    s.nodeNamespace = m_namespace->text().trimmed().toStdString();
     if (s == m_settings)
         return;
     if (const auto errors = bridge::validate(s); !errors.empty()) {
@@ -453,8 +489,26 @@ void BridgePanel::refresh()
         return;
     const bridge::BridgeStats s = m_bridge->stats();
     const Component c = m_settings.feedback.component;
-    m_wrench->setText(QString::fromStdString(c.wrenchName()) + u' ' + number(s.lastWrench) +
-                      (c.angular ? u" N·m"_s : u" N"_s));
+    // The whole wrench, so that a robot sending on another component shows.
+    const auto &w = s.lastWrenchValues;
+    m_wrench->setText(tr("force %1 %2 %3 N, torque %4 %5 %6 N·m")
+                          .arg(number(w[0]), number(w[1]), number(w[2]), number(w[3]), number(w[4]),
+                               number(w[5])));
+    m_wrench->setToolTip(
+        tr("x y z; the component fed back: %1").arg(QString::fromStdString(c.wrenchName())));
+    QString other;
+    if (s.otherComponentStreak >= kOtherComponentStreak) {
+        int largest = 0;
+        for (int i = 1; i < 6; ++i)
+            largest = std::abs(w[i]) > std::abs(w[largest]) ? i : largest;
+        const Component o{largest >= 3, largest % 3};
+        other =
+            tr("%1 stays 0 while the robot sends %2 = %3 %4: is the component right?")
+                .arg(QString::fromStdString(c.wrenchName()), QString::fromStdString(o.wrenchName()),
+                     number(w[largest]), o.angular ? u"N·m"_s : u"N"_s);
+    }
+    m_otherComponent->setText(other);
+    m_otherComponent->setVisible(!other.isEmpty());
     m_tauExt->setText(number(s.tauExt) + u" N·m"_s);
     m_counts->setText(tr("%1 received, %2 non-finite, %3 stale, %4 limited")
                           .arg(s.wrenches.received)

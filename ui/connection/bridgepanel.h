@@ -2,7 +2,10 @@
 // DeviceClient. Enable/disable; ROS 2 (with its domain) or ROS 1 (with its master), topics and
 // rate (a change of ROS, domain or topic reopens the endpoints while running); gain, limit,
 // component and staleness applied at once, so the feel can be tuned while the robot runs; the
-// last wrench, the τ_ext it produced and the rejected counts. Without HATPIC_BUILD_BRIDGE the
+// last wrench (all six components, with a warning when the chosen one stays 0 while another
+// does not), the τ_ext it produced and the rejected counts; the node's namespace and the
+// enable switch (Engaged / Released: the dead man's local half). It starts from
+// bridge::panelDefaults() (force.x, the project's own robot). Without HATPIC_BUILD_BRIDGE the
 // panel only says that the bridge is not built.
 //
 // It first says what the bridge needs (a line each in kNeeds: add one when a new way to get a
@@ -26,6 +29,7 @@ class QFormLayout;
 class QLabel;
 class QGridLayout;
 class QLineEdit;
+class QPushButton;
 class QSpinBox;
 
 namespace hatpic {
@@ -92,7 +96,7 @@ private:
 
     DeviceClient &m_client;
     bridge::Bridge *m_bridge = nullptr; //!< a child; null when not built
-    bridge::BridgeSettings m_settings;
+    bridge::BridgeSettings m_settings = bridge::panelDefaults();
     QTimer m_refresh;
 
     QGridLayout *m_grid = nullptr; //!< the sections, in m_columns columns
@@ -105,13 +109,16 @@ private:
     QComboBox *m_ros = nullptr; //!< ROS 2, ROS 1 (data: the version)
     QLabel *m_master = nullptr; //!< ROS 1: ROS_MASTER_URI
     QSpinBox *m_domain = nullptr;
-    QLineEdit *m_topics[7] = {};
+    QLineEdit *m_topics[9] = {};
+    QLineEdit *m_namespace = nullptr;
+    QPushButton *m_engaged = nullptr; //!< the local enable switch (dead man)
     QDoubleSpinBox *m_rate = nullptr;
     QComboBox *m_component = nullptr;
     QDoubleSpinBox *m_gain = nullptr;
     QDoubleSpinBox *m_limit = nullptr;
     QDoubleSpinBox *m_stale = nullptr;
     QLabel *m_wrench = nullptr;
+    QLabel *m_otherComponent = nullptr; //!< the chosen component stays 0, another does not
     QLabel *m_tauExt = nullptr;
     QLabel *m_counts = nullptr;
     QLabel *m_published = nullptr;

@@ -68,6 +68,8 @@ Vector3 fromRos(const Vector3Msg &v)
 
 std::string rosTypeName1(MessageType type)
 {
+    if (!hasRos1Type(type))
+        return "control_msgs/JointJog";
     return visitType(type, [](auto tag) {
         return std::string(::ros::message_traits::datatype<typename decltype(tag)::Type>());
     });
@@ -163,6 +165,18 @@ Wrench fromRos(const WrenchMsg &m)
 WrenchStamped fromRos(const WrenchStampedMsg &m)
 {
     return {fromRos(m.header), fromRos(m.wrench)};
+}
+
+BoolMsg toRos(const Bool &m)
+{
+    BoolMsg r;
+    r.data = m.data;
+    return r;
+}
+
+Bool fromRos(const BoolMsg &m)
+{
+    return {m.data != 0};
 }
 
 } // namespace hatpic::ros::ros1

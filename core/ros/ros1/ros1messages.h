@@ -11,6 +11,9 @@
 #include <geometry_msgs/Wrench.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <sensor_msgs/JointState.h>
+#include <std_msgs/Bool.h>
+
+#include <cstdlib>
 
 #include <memory>
 #include <string>
@@ -36,6 +39,7 @@ using TwistMsg = geometry_msgs::Twist_<Allocator<void>>;
 using PoseStampedMsg = geometry_msgs::PoseStamped_<Allocator<void>>;
 using WrenchStampedMsg = geometry_msgs::WrenchStamped_<Allocator<void>>;
 using WrenchMsg = geometry_msgs::Wrench_<Allocator<void>>;
+using BoolMsg = std_msgs::Bool_<Allocator<void>>;
 using HeaderMsg = std_msgs::Header_<Allocator<void>>;
 using Vector3Msg = geometry_msgs::Vector3_<Allocator<void>>;
 
@@ -45,7 +49,15 @@ template<typename T> struct RosType
     using Type = T;
 };
 
-//! Calls `f(RosType<T>{})` with T the roscpp type of `type` (TwistStampedMsg, …).
+//! Whether ROS 1 has `type`: all but control_msgs/JointJog (Debian packages no ROS 1
+//! control_msgs).
+constexpr bool hasRos1Type(MessageType type)
+{
+    return type != MessageType::JointJog;
+}
+
+//! Calls `f(RosType<T>{})` with T the roscpp type of `type` (TwistStampedMsg, …); `type` must
+//! be one hasRos1Type() accepts.
 template<typename F> decltype(auto) visitType(MessageType type, F &&f)
 {
     switch (type) {
@@ -60,9 +72,13 @@ template<typename F> decltype(auto) visitType(MessageType type, F &&f)
     case MessageType::WrenchStamped:
         return f(RosType<WrenchStampedMsg>{});
     case MessageType::Wrench:
+        return f(RosType<WrenchMsg>{});
+    case MessageType::Bool:
+        return f(RosType<BoolMsg>{});
+    case MessageType::JointJog:
         break;
     }
-    return f(RosType<WrenchMsg>{});
+    std::abort(); // refused before: Ros1Node's prepare()
 }
 
 //! "geometry_msgs/TwistStamped": the type as ROS 1 names it (roscpp's own traits).
@@ -74,6 +90,7 @@ TwistMsg toRos(const Twist &m);
 PoseStampedMsg toRos(const PoseStamped &m);
 WrenchStampedMsg toRos(const WrenchStamped &m);
 WrenchMsg toRos(const Wrench &m);
+BoolMsg toRos(const Bool &m);
 
 //! ROS 1 header stamps are unsigned: a stamp beyond int32 seconds is clamped to its largest.
 JointState fromRos(const JointStateMsg &m);
@@ -82,5 +99,6 @@ Twist fromRos(const TwistMsg &m);
 PoseStamped fromRos(const PoseStampedMsg &m);
 WrenchStamped fromRos(const WrenchStampedMsg &m);
 Wrench fromRos(const WrenchMsg &m);
+Bool fromRos(const BoolMsg &m);
 
 } // namespace hatpic::ros::ros1

@@ -6,6 +6,7 @@
 #include <ros/init.h>
 
 #include <algorithm>
+#include <type_traits>
 
 namespace hatpic::ros::ros1 {
 
@@ -32,7 +33,12 @@ public:
             ++slot.errors; // no master reached yet, or the node was shut down
             return false;
         }
-        std::visit([&](const auto &m) { slot.publisher.publish(toRos(m)); }, message);
+        std::visit(
+            [&](const auto &m) {
+                if constexpr (!std::is_same_v<std::decay_t<decltype(m)>, JointJog>)
+                    slot.publisher.publish(toRos(m));
+            },
+            message); // a JointJog publisher is refused in prepare()
         ++slot.written;
         return true;
     }
@@ -100,6 +106,12 @@ private:
     bool prepare(Slot &slot, const std::string &topic, MessageType type, const Qos &qos,
                  std::string *error)
     {
+        if (!hasRos1Type(type)) {
+            if (error)
+                *error = std::string(rosTypeName(type)) +
+                         " is ROS 2 only: Debian has no ROS 1 control_msgs (topic " + topic + ").";
+            return false;
+        }
         slot.topic = m_runtime.resolve(topic, error);
         if (slot.topic.empty())
             return false;
@@ -121,7 +133,7 @@ private:
 
 std::unique_ptr<Node> openNode(const NodeOptions &options, std::string *error)
 {
-    Runtime *runtime = Runtime::acquire(options.name, error);
+    Runtime *runtime = Runtime::acquire(options.name, options.nameSpace, error);
     if (!runtime)
         return nullptr;
     return std::make_unique<Ros1Node>(*runtime);

@@ -3,6 +3,11 @@
 #include "ros/ros1/ros1master.h"
 #include "ros/ros1/ros1messages.h"
 
+#include "realtime/realtime.h"
+
+#include <pthread.h>
+#include <sched.h>
+
 #include <ros/console.h>
 #include <ros/init.h>
 #include <ros/master.h>
@@ -63,9 +68,11 @@ void SubscriptionSlot::deliver(const Message &message)
         handler(message);
 }
 
-Runtime::Runtime(std::string name) : m_name(std::move(name)) {}
+Runtime::Runtime(std::string name, std::string nameSpace)
+    : m_name(std::move(name)), m_nameSpace(std::move(nameSpace))
+{}
 
-Runtime *Runtime::acquire(const std::string &name, std::string *error)
+Runtime *Runtime::acquire(const std::string &name, const std::string &nameSpace, std::string *error)
 {
     const auto fail = [error](const std::string &sentence) -> Runtime * {
         if (error)
@@ -74,9 +81,10 @@ Runtime *Runtime::acquire(const std::string &name, std::string *error)
     };
     const std::lock_guard lock(g_acquireMutex);
     if (g_runtime) {
-        if (g_runtime->m_name != name)
+        if (g_runtime->m_name != name || g_runtime->m_nameSpace != nameSpace)
             return fail("ROS 1 allows one node per process, and this process's node is " +
-                        g_runtime->nodeName() + ": it cannot also be '" + name + "'.");
+                        g_runtime->nodeName() + ": it cannot also be '" + name + "'" +
+                        (nameSpace.empty() ? "" : " in '" + nameSpace + "'") + ".");
         if (g_runtime->state() == State::Dead)
             return fail("This process's ROS 1 node " + g_runtime->nodeName() +
                         " was shut down by its master, and roscpp cannot start it again: "
@@ -86,7 +94,11 @@ Runtime *Runtime::acquire(const std::string &name, std::string *error)
     if (const std::string problem = masterUriProblem(); !problem.empty())
         return fail(problem);
     try {
-        ::ros::init(::ros::M_string(), name, ::ros::init_options::NoSigintHandler);
+        // "__ns" as a remapping, as `_ns:=` on a command line: it wins over ROS_NAMESPACE.
+        ::ros::M_string remappings;
+        if (!nameSpace.empty())
+            remappings["__ns"] = nameSpace;
+        ::ros::init(remappings, name, ::ros::init_options::NoSigintHandler);
     } catch (const std::exception &e) {
         return fail("roscpp refused the node '" + name + "': " + e.what() +
                     " (check ROS_NAMESPACE).");
@@ -94,7 +106,7 @@ Runtime *Runtime::acquire(const std::string &name, std::string *error)
     // Master calls made while it is gone give up instead of waiting for ever (they run on the
     // runtime's thread, which must keep checking).
     ::ros::master::setRetryTimeout(::ros::WallDuration(kMasterRetryTimeoutS));
-    g_runtime = new Runtime(name);
+    g_runtime = new Runtime(name, nameSpace);
     std::atexit(&Runtime::atExit); // before roscpp's last handler, registered by ros::init
     g_runtime->m_thread = std::thread(&Runtime::run, g_runtime);
     return g_runtime;
@@ -284,8 +296,16 @@ void Runtime::checkMaster()
 
 void Runtime::start()
 {
+    // roscpp's threads (the poll thread that reads every connection, and the spinner's that
+    // runs the handlers, below) inherit this thread's scheduling as they are created: made
+    // real-time for their creation where the system allows it, this thread then goes back.
+    sched_param normal{};
+    int normalPolicy = SCHED_OTHER;
+    pthread_getschedparam(pthread_self(), &normalPolicy, &normal);
+    m_realtimeProblem = realtime::makeThreadRealtime();
     ::ros::start();
     if (!::ros::ok()) {
+        pthread_setschedparam(pthread_self(), normalPolicy, &normal);
         m_state = State::Dead;
         return;
     }
@@ -299,6 +319,9 @@ void Runtime::start()
                  nodeName().c_str());
     m_spinner = std::make_unique<::ros::AsyncSpinner>(1, &m_queue);
     m_spinner->start();
+    pthread_setschedparam(pthread_self(), normalPolicy, &normal);
+    if (!m_realtimeProblem.empty())
+        ROS_WARN("%s's callback threads: %s.", nodeName().c_str(), m_realtimeProblem.c_str());
     m_state = State::Connected;
     ROS_INFO("%s is registered with the ROS 1 master at %s.", nodeName().c_str(),
              masterUri().c_str());

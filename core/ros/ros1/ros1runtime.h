@@ -76,7 +76,8 @@ public:
     //! The runtime, initialising roscpp with `name` on the first call. Null with `*error` (one
     //! sentence) when ROS_MASTER_URI, ROS_NAMESPACE or the name is refused, when the process's
     //! node already has another name, or when roscpp was shut down.
-    static Runtime *acquire(const std::string &name, std::string *error);
+    static Runtime *acquire(const std::string &name, const std::string &nameSpace,
+                            std::string *error);
     //! The master's URI, as roscpp uses it (ROS_MASTER_URI, else http://localhost:11311).
     std::string masterUri() const;
     std::string nodeName() const; //!< resolved: "/hatpic_bridge", "/ns/hatpic_bridge"
@@ -95,7 +96,7 @@ public:
     void remove(const std::shared_ptr<SubscriptionSlot> &slot);
 
 private:
-    explicit Runtime(std::string name);
+    Runtime(std::string name, std::string nameSpace);
     static void atExit();
     void stopForExit();
 
@@ -108,7 +109,9 @@ private:
     void createSubscriber(const std::shared_ptr<SubscriptionSlot> &slot);
     void registerAgain();
 
-    const std::string m_name; //!< as asked for, without namespace
+    const std::string m_name;      //!< as asked for, without namespace
+    const std::string m_nameSpace; //!< as asked for (empty: ROS_NAMESPACE applies)
+    std::string m_realtimeProblem; //!< why roscpp's threads are not real-time (runtime thread)
     std::atomic<State> m_state{State::Waiting};
 
     // The runtime's thread's own.

@@ -41,6 +41,9 @@ std::string idlType(const FieldDef &field)
     case FieldKind::Double:
         value = "double";
         break;
+    case FieldKind::Bool:
+        value = "boolean";
+        break;
     case FieldKind::String:
         value = "string";
         break;

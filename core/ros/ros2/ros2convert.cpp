@@ -65,6 +65,31 @@ std::vector<double> fromC(const dds_sequence_double &s)
                      : std::vector<double>();
 }
 
+// A string sequence's C view of `strings`, which must outlive the write.
+struct CStrings
+{
+    explicit CStrings(const std::vector<std::string> &strings)
+    {
+        pointers.reserve(strings.size());
+        for (const std::string &s : strings)
+            pointers.push_back(text(s));
+    }
+    template<typename Sequence> Sequence sequence()
+    {
+        return {std::uint32_t(pointers.size()), std::uint32_t(pointers.size()), pointers.data(),
+                false};
+    }
+    std::vector<char *> pointers;
+};
+
+template<typename Sequence> std::vector<std::string> fromC(const Sequence &s)
+{
+    std::vector<std::string> out;
+    for (std::uint32_t i = 0; s._buffer && i < s._length; ++i)
+        out.emplace_back(s._buffer[i] ? s._buffer[i] : "");
+    return out;
+}
+
 } // namespace
 
 const dds_topic_descriptor_t *descriptorOf(MessageType type)
@@ -82,6 +107,10 @@ const dds_topic_descriptor_t *descriptorOf(MessageType type)
         return &geometry_msgs_msg_dds__WrenchStamped__desc;
     case MessageType::Wrench:
         return &geometry_msgs_msg_dds__Wrench__desc;
+    case MessageType::Bool:
+        return &std_msgs_msg_dds__Bool__desc;
+    case MessageType::JointJog:
+        return &control_msgs_msg_dds__JointJog__desc;
     }
     return nullptr;
 }
@@ -92,16 +121,12 @@ dds_return_t writeMessage(dds_entity_t writer, const Message &message)
         [writer](const auto &m) -> dds_return_t {
             using T = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<T, JointState>) {
-                std::vector<char *> names;
-                names.reserve(m.name.size());
-                for (const std::string &n : m.name)
-                    names.push_back(text(n));
-                const sensor_msgs_msg_dds__JointState_ c{
-                    toC(m.header),
-                    {std::uint32_t(names.size()), std::uint32_t(names.size()), names.data(), false},
-                    doubles<dds_sequence_double>(m.position),
-                    doubles<dds_sequence_double>(m.velocity),
-                    doubles<dds_sequence_double>(m.effort)};
+                CStrings names(m.name);
+                const sensor_msgs_msg_dds__JointState_ c{toC(m.header),
+                                                         names.sequence<decltype(c.name)>(),
+                                                         doubles<dds_sequence_double>(m.position),
+                                                         doubles<dds_sequence_double>(m.velocity),
+                                                         doubles<dds_sequence_double>(m.effort)};
                 return dds_write(writer, &c);
             } else if constexpr (std::is_same_v<T, TwistStamped>) {
                 const geometry_msgs_msg_dds__TwistStamped_ c{toC(m.header), toC(m.twist)};
@@ -118,9 +143,19 @@ dds_return_t writeMessage(dds_entity_t writer, const Message &message)
             } else if constexpr (std::is_same_v<T, WrenchStamped>) {
                 const geometry_msgs_msg_dds__WrenchStamped_ c{toC(m.header), toC(m.wrench)};
                 return dds_write(writer, &c);
-            } else {
-                static_assert(std::is_same_v<T, Wrench>);
+            } else if constexpr (std::is_same_v<T, Wrench>) {
                 const CWrench c = toC(m);
+                return dds_write(writer, &c);
+            } else if constexpr (std::is_same_v<T, Bool>) {
+                const std_msgs_msg_dds__Bool_ c{m.data};
+                return dds_write(writer, &c);
+            } else {
+                static_assert(std::is_same_v<T, JointJog>);
+                CStrings names(m.jointNames);
+                const control_msgs_msg_dds__JointJog_ c{
+                    toC(m.header), names.sequence<decltype(c.joint_names)>(),
+                    doubles<dds_sequence_double>(m.displacements),
+                    doubles<dds_sequence_double>(m.velocities), m.duration};
                 return dds_write(writer, &c);
             }
         },
@@ -132,10 +167,8 @@ Message messageOf(MessageType type, const void *sample)
     switch (type) {
     case MessageType::JointState: {
         const auto &c = *static_cast<const sensor_msgs_msg_dds__JointState_ *>(sample);
-        JointState m{fromC(c.header), {}, fromC(c.position), fromC(c.velocity), fromC(c.effort)};
-        for (std::uint32_t i = 0; c.name._buffer && i < c.name._length; ++i)
-            m.name.emplace_back(c.name._buffer[i] ? c.name._buffer[i] : "");
-        return m;
+        return JointState{fromC(c.header), fromC(c.name), fromC(c.position), fromC(c.velocity),
+                          fromC(c.effort)};
     }
     case MessageType::TwistStamped: {
         const auto &c = *static_cast<const geometry_msgs_msg_dds__TwistStamped_ *>(sample);
@@ -155,6 +188,13 @@ Message messageOf(MessageType type, const void *sample)
     }
     case MessageType::Wrench:
         return fromC(*static_cast<const CWrench *>(sample));
+    case MessageType::Bool:
+        return Bool{static_cast<const std_msgs_msg_dds__Bool_ *>(sample)->data};
+    case MessageType::JointJog: {
+        const auto &c = *static_cast<const control_msgs_msg_dds__JointJog_ *>(sample);
+        return JointJog{fromC(c.header), fromC(c.joint_names), fromC(c.displacements),
+                        fromC(c.velocities), c.duration};
+    }
     }
     return {};
 }

@@ -1,5 +1,7 @@
 #include "ros/ros2/ros2node.h"
 
+#include "realtime/realtime.h"
+
 #include "ros/ros2/discovery.h"
 #include "ros/ros2/ros2endpoints.h"
 
@@ -49,6 +51,17 @@ void releaseDomain(int id)
     if (it->second.handle > 0)
         dds_delete(it->second.handle); // with any participant still in it
     domains().erase(it);
+}
+
+// Cyclone DDS's threads on the path of a sample in and out, SCHED_FIFO at `priority`.
+std::string realtimeThreadsConfig(int priority)
+{
+    std::string threads;
+    for (const char *name : {"recv", "recvUC", "recvMC", "dq.user", "tev"})
+        threads += std::string("<Thread name=\"") + name +
+                   "\"><Scheduling><Class>realtime</Class><Priority>" + std::to_string(priority) +
+                   "</Priority></Scheduling></Thread>";
+    return "<CycloneDDS><Domain><Threads>" + threads + "</Threads></Domain></CycloneDDS>";
 }
 
 // A participant of domain `id` (configured with `config` if the domain is new to the
@@ -164,7 +177,11 @@ std::unique_ptr<Node> openNode(const NodeOptions &options, std::string *error)
     const std::optional<Discovery> discovery = discoveryFrom(environment, error);
     if (!discovery)
         return nullptr;
-    const std::string config = cycloneConfig(*discovery, environment.cycloneUri, long(getpid()));
+    // Cyclone's receive and delivery threads (where a wrench's handler runs) real-time where
+    // the system allows it; CYCLONEDDS_URI, after this fragment, may say otherwise.
+    std::string config = cycloneConfig(*discovery, environment.cycloneUri, long(getpid()));
+    if (realtime::probeRealtime().empty())
+        config = realtimeThreadsConfig(realtime::kPriority) + "," + config;
     const dds_entity_t participant = openParticipant(*domain, config, error);
     if (participant == 0)
         return nullptr;
@@ -174,6 +191,10 @@ std::unique_ptr<Node> openNode(const NodeOptions &options, std::string *error)
         where += (i == 0 ? " + " : ", ") + discovery->staticPeers[i];
     if (!environment.cycloneUri.empty())
         where += " (CYCLONEDDS_URI applies)";
+    const std::string ns =
+        options.nameSpace.starts_with('/') ? options.nameSpace.substr(1) : options.nameSpace;
+    if (!ns.empty())
+        where += ", node /" + ns + "/" + options.name;
     return std::make_unique<Ros2Node>(*domain, participant, std::move(where));
 }
 

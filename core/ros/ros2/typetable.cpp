@@ -9,7 +9,8 @@ namespace {
 
 using K = FieldKind;
 
-// The fields of each type, as its .msg file lists them (ROS 2 Jazzy's common_interfaces).
+// The fields of each type, as its .msg file lists them (ROS 2 Jazzy's common_interfaces and
+// control_msgs).
 constexpr FieldDef kTime[] = {{"sec", K::Int32}, {"nanosec", K::Uint32}};
 constexpr FieldDef kHeader[] = {{"stamp", K::Nested, false, "builtin_interfaces/msg/Time"},
                                 {"frame_id", K::String}};
@@ -34,6 +35,12 @@ constexpr FieldDef kJointState[] = {{"header", K::Nested, false, "std_msgs/msg/H
                                     {"position", K::Double, true},
                                     {"velocity", K::Double, true},
                                     {"effort", K::Double, true}};
+constexpr FieldDef kBool[] = {{"data", K::Bool}};
+constexpr FieldDef kJointJog[] = {{"header", K::Nested, false, "std_msgs/msg/Header"},
+                                  {"joint_names", K::String, true},
+                                  {"displacements", K::Double, true},
+                                  {"velocities", K::Double, true},
+                                  {"duration", K::Double}};
 
 constexpr TypeDef kTypes[] = {
     {"builtin_interfaces/msg/Time", kTime},
@@ -48,6 +55,8 @@ constexpr TypeDef kTypes[] = {
     {"geometry_msgs/msg/Wrench", kWrench},
     {"geometry_msgs/msg/WrenchStamped", kWrenchStamped},
     {"sensor_msgs/msg/JointState", kJointState},
+    {"std_msgs/msg/Bool", kBool},
+    {"control_msgs/msg/JointJog", kJointJog},
 };
 
 bool isIdentifier(std::string_view s)

@@ -1,6 +1,6 @@
 // The ROS 2 message types HATPIC speaks, each described once (ros.md § Type hashes): its ROS
 // name and its fields in the order of the .msg files of builtin_interfaces, std_msgs,
-// geometry_msgs and sensor_msgs, with the field types of type_description_interfaces'
+// geometry_msgs, sensor_msgs and control_msgs, with the field types of type_description_interfaces'
 // FieldType. From this one table come the IDL that idlc compiles into the DDS types (the
 // build-time generator idlgen.cpp) and the REP 2011 type hash that every reader and writer
 // announces (typehash.h). Plain C++, no Qt, no DDS.
@@ -18,6 +18,7 @@ enum class FieldKind : int {
     Int32 = 6,   //!< FIELD_TYPE_INT32
     Uint32 = 7,  //!< FIELD_TYPE_UINT32
     Double = 11, //!< FIELD_TYPE_DOUBLE (float64)
+    Bool = 15,   //!< FIELD_TYPE_BOOLEAN
     String = 17, //!< FIELD_TYPE_STRING (unbounded)
 };
 //! FieldType numbers an unbounded sequence of a value type this much above the value type

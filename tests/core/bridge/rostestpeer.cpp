@@ -111,7 +111,7 @@ struct RosTestPeer::Entities
 {
     dds_entity_t domain = 0, participant = 0, joint = 0, twist = 0, bestEffortTwist = 0,
                  unstampedTwist = 0, pose = 0, feedback = 0, wrench = 0, unstamped = 0,
-                 publications = 0, subscriptions = 0;
+                 publications = 0, subscriptions = 0, enable = 0, jog = 0;
 
     dds_entity_t topic(const dds_topic_descriptor_t *desc, const char *name) const
     {
@@ -119,9 +119,10 @@ struct RosTestPeer::Entities
     }
 };
 
-RosTestPeer::RosTestPeer(int domain, const std::string &domainConfig)
+RosTestPeer::RosTestPeer(int domain, const std::string &domainConfig, const std::string &ns)
     : m_e(std::make_unique<Entities>())
 {
+    const auto under = [&ns](const char *name) { return "rt" + ns + name; };
     Entities &e = *m_e;
     if (!domainConfig.empty()) {
         e.domain = dds_create_domain(dds_domainid_t(domain), domainConfig.c_str());
@@ -131,27 +132,33 @@ RosTestPeer::RosTestPeer(int domain, const std::string &domainConfig)
     e.participant = dds_create_participant(dds_domainid_t(domain), nullptr, nullptr);
     // ROS 2's default subscription (reliable, volatile), deep enough to keep all for a test.
     dds_qos_t *qos = rmwQos(true, false, 1000);
-    const auto reader = [&](const dds_topic_descriptor_t *desc, const char *name) {
-        return dds_create_reader(e.participant, e.topic(desc, name), qos, nullptr);
+    const auto reader = [&](const dds_topic_descriptor_t *desc, const std::string &name) {
+        return dds_create_reader(e.participant, e.topic(desc, name.c_str()), qos, nullptr);
     };
-    e.joint = reader(&sensor_msgs_msg_dds__JointState__desc, "rt/hatpic/joint_states");
-    e.twist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, "rt/hatpic/twist");
+    e.joint = reader(&sensor_msgs_msg_dds__JointState__desc, under("/hatpic/joint_states"));
+    e.twist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, under("/hatpic/twist"));
     e.unstampedTwist = reader(&geometry_msgs_msg_dds__Twist__desc, kTwistUnstampedTopic);
-    e.pose = reader(&geometry_msgs_msg_dds__PoseStamped__desc, "rt/hatpic/pose");
-    e.feedback = reader(&geometry_msgs_msg_dds__WrenchStamped__desc, "rt/hatpic/feedback");
+    e.pose = reader(&geometry_msgs_msg_dds__PoseStamped__desc, under("/hatpic/pose"));
+    e.feedback = reader(&geometry_msgs_msg_dds__WrenchStamped__desc, under("/hatpic/feedback"));
+    e.jog = reader(&control_msgs_msg_dds__JointJog__desc, kJointJogTopic);
     dds_delete_qos(qos);
     qos = rmwQos(false, false, 1000); // a sensor-data subscription
-    e.bestEffortTwist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, "rt/hatpic/twist");
+    e.bestEffortTwist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, under("/hatpic/twist"));
     dds_delete_qos(qos);
     // The published driver's wrench publisher, as every sensor-data publisher: best effort,
     // transient local, keep last 1.
     qos = rmwQos(false, true, 1);
     e.wrench = dds_create_writer(
-        e.participant, e.topic(&geometry_msgs_msg_dds__WrenchStamped__desc, "rt/wrench_estimation"),
+        e.participant,
+        e.topic(&geometry_msgs_msg_dds__WrenchStamped__desc, under("/wrench_estimation").c_str()),
         qos, nullptr);
     e.unstamped = dds_create_writer(e.participant,
                                     e.topic(&geometry_msgs_msg_dds__Wrench__desc, kUnstampedTopic),
                                     qos, nullptr);
+    dds_delete_qos(qos);
+    qos = rmwQos(true, false, 1); // a teleop node's dead man: reliable, keep last 1
+    e.enable = dds_create_writer(
+        e.participant, e.topic(&std_msgs_msg_dds__Bool__desc, kEnableTopic), qos, nullptr);
     dds_delete_qos(qos);
     e.publications =
         dds_create_reader(e.participant, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
@@ -172,7 +179,7 @@ bool RosTestPeer::isValid() const
     const Entities &e = *m_e;
     for (const dds_entity_t h :
          {e.participant, e.joint, e.twist, e.bestEffortTwist, e.unstampedTwist, e.pose, e.feedback,
-          e.wrench, e.unstamped, e.publications, e.subscriptions}) {
+          e.wrench, e.unstamped, e.publications, e.subscriptions, e.enable, e.jog}) {
         if (h <= 0)
             return false;
     }
@@ -213,8 +220,15 @@ void RosTestPeer::publishUnstampedWrench(double forceZ)
     dds_write(m_e->unstamped, &w);
 }
 
+void RosTestPeer::publishEnable(bool enabled)
+{
+    const std_msgs_msg_dds__Bool_ b{enabled};
+    dds_write(m_e->enable, &b);
+}
+
 void RosTestPeer::clear()
 {
+    jogs.clear();
     joints.clear();
     twists.clear();
     bestEffortTwists.clear();
@@ -252,6 +266,15 @@ void RosTestPeer::take()
                          m.header.frame_id,
                          {p.position.x, p.position.y, p.position.z},
                          {p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w}});
+    });
+    takeAll<control_msgs_msg_dds__JointJog_>(m_e->jog, [this](const auto &m) {
+        JogGot g{timeOf(m.header), {}, {}, {}, m.duration};
+        for (std::uint32_t i = 0; i < m.joint_names._length; ++i)
+            g.names.emplace_back(m.joint_names._buffer[i]);
+        g.displacements.assign(m.displacements._buffer,
+                               m.displacements._buffer + m.displacements._length);
+        g.velocities.assign(m.velocities._buffer, m.velocities._buffer + m.velocities._length);
+        jogs.push_back(std::move(g));
     });
     takeAll<geometry_msgs_msg_dds__WrenchStamped_>(m_e->feedback, [this](const auto &m) {
         feedbacks.push_back(

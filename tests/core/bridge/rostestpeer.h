@@ -55,6 +55,14 @@ struct PoseGot
     std::array<double, 4> orientation{};
 };
 
+struct JogGot //!< control_msgs/JointJog
+{
+    TimeGot stamp;
+    std::vector<std::string> names;
+    std::vector<double> displacements, velocities;
+    double duration = 0;
+};
+
 //! A remote reader or writer as DDS's built-in topics announce it.
 struct EndpointSeen
 {
@@ -72,11 +80,18 @@ public:
     static constexpr const char *kUnstampedTopic = "rt/robot/wrench";
     //! Where it reads geometry_msgs/Twist (ROS name "/haptic_twist", the published driver's).
     static constexpr const char *kTwistUnstampedTopic = "rt/haptic_twist";
+    //! Where it publishes std_msgs/Bool, a dead man (ROS name "/teleop/enable").
+    static constexpr const char *kEnableTopic = "rt/teleop/enable";
+    //! Where it reads control_msgs/JointJog (ROS name "/servo_node/delta_joint_cmds", MoveIt
+    //! Servo's).
+    static constexpr const char *kJointJogTopic = "rt/servo_node/delta_joint_cmds";
 
     //! A peer in `domain`. With `domainConfig` the peer creates that domain itself with this
     //! Cyclone DDS configuration (dds_create_domain, as rmw_cyclonedds does), and the process
-    //! must have no other participant in it.
-    explicit RosTestPeer(int domain, const std::string &domainConfig = {});
+    //! must have no other participant in it. With `ns` ("/knob1") the bridge's default topics
+    //! are read and written under it (the enable and jog topics stay as they are).
+    explicit RosTestPeer(int domain, const std::string &domainConfig = {},
+                         const std::string &ns = {});
     ~RosTestPeer();
     RosTestPeer(const RosTestPeer &) = delete;
     RosTestPeer &operator=(const RosTestPeer &) = delete;
@@ -90,6 +105,7 @@ public:
     //! a sender that does not fill it).
     void publishWrench(double forceZ, double torqueZ = 0, double stampSeconds = 0);
     void publishUnstampedWrench(double forceZ);
+    void publishEnable(bool enabled);
 
     //! Takes everything that arrived into joints, twists, … (reliable readers, as ROS 2's
     //! default subscription) and bestEffortTwists (a sensor-data subscription).
@@ -105,6 +121,7 @@ public:
     std::vector<VectorsGot> unstampedTwists;
     std::vector<PoseGot> poses;
     std::vector<VectorsGot> feedbacks;
+    std::vector<JogGot> jogs;
 
 private:
     struct Entities;

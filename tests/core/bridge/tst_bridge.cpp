@@ -46,23 +46,13 @@ private Q_SLOTS:
     {
         hatpic::test::confineDdsToLoopback();
         registerSessionMetaTypes();
-        ConnectOptions options;
-        options.port = QString::fromUtf16(kSimPortName);
-        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, kHeldAngle};
-        connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
-            if (!batch.isEmpty()) {
-                m_deviceTauExt = batch.last().tau_ext;
-                m_deviceTheta = batch.last().theta;
-            }
-        });
-        m_client.connectDevice(options);
-        QTRY_COMPARE_WITH_TIMEOUT(m_client.state(), SessionState::Connected, 10000);
-        m_client.setHostParams(HostParams{});
+        QVERIFY(connectKnob(m_client, kHeldAngle, m_deviceTauExt, &m_deviceTheta));
 
         BridgeSettings settings;
         settings.domainId = kDomain;
         settings.topics.wrenchUnstamped = "/robot/wrench";
         settings.topics.twistUnstamped = "/haptic_twist";
+        settings.topics.jointJog = "/servo_node/delta_joint_cmds";
         m_peer = std::make_unique<RosTestPeer>(kDomain);
         QCOMPARE(m_bridge.start(settings), QString());
         QVERIFY(m_peer->isValid());
@@ -124,6 +114,24 @@ private Q_SLOTS:
         QVERIFY(std::any_of(m_peer->twists.begin(), m_peer->twists.end(), [&](const auto &t) {
             return t.a == m_peer->unstampedTwists.back().a;
         }));
+
+        // MoveIt Servo's joint command: the twist's v_ref as the velocity of the joint named,
+        // no displacement, no duration; received by a peer without type information.
+        QVERIFY(m_peer->jogs.size() >= 20);
+        int jogsMatched = 0;
+        for (const auto &jog : m_peer->jogs) {
+            QCOMPARE(jog.names, std::vector<std::string>{"hatpic_knob"});
+            QVERIFY(jog.displacements.empty());
+            QCOMPARE(jog.velocities.size(), 1u);
+            QCOMPARE(jog.duration, 0.0);
+            const auto t = std::find_if(m_peer->twists.begin(), m_peer->twists.end(),
+                                        [&](const auto &t) { return t.stamp == jog.stamp; });
+            if (t == m_peer->twists.end())
+                continue;
+            ++jogsMatched;
+            QCOMPARE(jog.velocities[0], t->a[0]);
+        }
+        QVERIFY(jogsMatched >= 20);
     }
 
     // Every reader and writer under ROS 2's topic and type names, announcing its type hash in
@@ -148,7 +156,10 @@ private Q_SLOTS:
                                           "586d3a5c83fa78f77";
         const std::string wrench = "RIHS01_018e8519d57c16adbe97c9fe1460ef21fec7e31bc541de3d653a35"
                                    "895677ce52";
+        const std::string jog = "RIHS01_ba249455a20f70168a1acb7bf43b776b72ff1f7eb5fc4cfea443f749"
+                                "e963c6e7";
         const Expected writers[] = {
+            {"rt/servo_node/delta_joint_cmds", "control_msgs::msg::dds_::JointJog_", jog, true},
             {"rt/hatpic/joint_states", "sensor_msgs::msg::dds_::JointState_", joint, true},
             {"rt/hatpic/twist", "geometry_msgs::msg::dds_::TwistStamped_", twistStamped, true},
             {"rt/haptic_twist", "geometry_msgs::msg::dds_::Twist_", twist, true},
@@ -356,7 +367,172 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 300); // well before staleness would
     }
 
+    // The dead man (ros.md § Enable switch): with an enable topic, nothing moves and no force
+    // comes back until the first true; released (false, silence or the local switch), the
+    // twist and τ_ext are zero and the pose holds; engaged again, the pose goes on from there.
+    void enableSwitch()
+    {
+        BridgeSettings settings = m_bridge.settings();
+        settings.topics.enable = "/teleop/enable";
+        QCOMPARE(m_bridge.start(settings), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
+        bool enabled = false, talking = false;
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] {
+            m_peer->publishWrench(0.5);
+            if (talking)
+                m_peer->publishEnable(enabled);
+        });
+        robot.start(20);
+        const double tau = 0.5 * m_bridge.settings().feedback.gain;
+
+        // No enable message yet: released.
+        QTest::qWait(600);
+        QVERIFY(!m_bridge.stats().engaged);
+        QCOMPARE(m_deviceTauExt, 0.0);
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(200);
+        m_peer->take();
+        QVERIFY(!m_peer->twists.empty() && !m_peer->jogs.empty());
+        QVERIFY(allTwistsZero());
+
+        // Engaged by the first true.
+        enabled = talking = true;
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - tau) < kTauExtTolerance, 3000);
+        QVERIFY(m_bridge.stats().engaged);
+        QTRY_VERIFY_WITH_TIMEOUT(lastTwist() > 0.1, 3000);
+
+        // Released by false: τ_ext and the twist zero, the pose held.
+        enabled = false;
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 1000);
+        QTest::qWait(100);
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(300);
+        m_peer->take();
+        QVERIFY(allTwistsZero());
+        QVERIFY(m_peer->poses.size() >= 10);
+        const double held = m_peer->poses.back().position[0];
+        for (const auto &p : m_peer->poses)
+            QCOMPARE(p.position[0], held);
+
+        // Engaged again: the pose goes on from where it held (one sample's step, not the
+        // distance the device's p_ref went on meanwhile).
+        enabled = true;
+        QTRY_VERIFY_WITH_TIMEOUT(lastTwist() > 0.1, 3000);
+        const auto first = std::find_if(m_peer->poses.begin(), m_peer->poses.end(),
+                                        [&](const auto &p) { return p.position[0] != held; });
+        QVERIFY(first != m_peer->poses.end());
+        QVERIFY2(first->position[0] > held && first->position[0] - held < 0.01,
+                 qPrintable(QStringLiteral("%1 after %2").arg(first->position[0]).arg(held)));
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - tau) < kTauExtTolerance, 3000);
+
+        // The local switch (the tuner's) releases it too.
+        m_bridge.setEngaged(false);
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 500);
+        m_bridge.setEngaged(true);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - tau) < kTauExtTolerance, 3000);
+
+        // The dead man falls silent: released after kEnableTimeout, though the wrench goes on.
+        talking = false;
+        QElapsedTimer silent;
+        silent.start();
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
+        QVERIFY2(silent.elapsed() >= 400, qPrintable(QString::number(silent.elapsed())));
+        QVERIFY(!m_bridge.stats().engaged);
+        QTest::qWait(100);
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(200);
+        m_peer->take();
+        QVERIFY(allTwistsZero());
+        robot.stop();
+        settings.topics.enable.clear();
+        QCOMPARE(m_bridge.start(settings), QString());
+    }
+
+    // Two knobs side by side (a class, a lab): a second knob and bridge in the namespace knob2
+    // on the same domain. Each peer sees only its own knob's references, and each robot's
+    // wrench reaches only its own knob.
+    void twoKnobsSideBySide()
+    {
+        double secondTauExt = 0; // outlives the client that writes it
+        DeviceClient second;
+        QVERIFY(connectKnob(second, -kHeldAngle, secondTauExt));
+        BridgeSettings settings;
+        settings.domainId = kDomain;
+        settings.nodeNamespace = "knob2";
+        Bridge bridge2(second);
+        RosTestPeer peer2(kDomain, {}, "/knob2");
+        QVERIFY(peer2.isValid());
+        QCOMPARE(bridge2.start(settings), QString());
+        QVERIFY(bridge2.where().contains(u"node /knob2/hatpic_bridge"));
+
+        QTest::qWait(1500);
+        m_peer->take();
+        peer2.take();
+        m_peer->clear();
+        peer2.clear();
+        QTest::qWait(500);
+        m_peer->take();
+        peer2.take();
+        QVERIFY(m_peer->joints.size() >= 20 && peer2.joints.size() >= 20);
+        for (const auto &j : m_peer->joints)
+            QVERIFY(j.position[0] > 0.25);
+        for (const auto &j : peer2.joints)
+            QVERIFY(j.position[0] < -0.25);
+
+        QTRY_VERIFY_WITH_TIMEOUT(peer2.wrenchMatched(), 5000);
+        QTimer robot2;
+        connect(&robot2, &QTimer::timeout, this, [&] { peer2.publishWrench(0.5); });
+        robot2.start(20);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(secondTauExt - 0.077) < kTauExtTolerance, 5000);
+        QTest::qWait(200);
+        QCOMPARE(m_deviceTauExt, 0.0);
+        robot2.stop();
+        bridge2.stop();
+        second.disconnectDevice();
+    }
+
 private:
+    //! Connects `client` to an in-process simulated knob whose virtual hand holds `angle`;
+    //! its telemetry's τ_ext (and θ) are copied into `tauExt` (and `theta`). True once
+    //! connected.
+    bool connectKnob(DeviceClient &client, double angle, double &tauExt, double *theta = nullptr)
+    {
+        ConnectOptions options;
+        options.port = QString::fromUtf16(kSimPortName);
+        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, angle};
+        connect(&client, &DeviceClient::samplesReady, this, [&tauExt, theta](const SampleBatch &b) {
+            if (b.isEmpty())
+                return;
+            tauExt = b.last().tau_ext;
+            if (theta)
+                *theta = b.last().theta;
+        });
+        client.connectDevice(options);
+        QElapsedTimer waited;
+        waited.start();
+        while (client.state() != SessionState::Connected && waited.elapsed() < 10000)
+            QTest::qWait(20);
+        client.setHostParams(HostParams{});
+        return client.state() == SessionState::Connected;
+    }
+
+    bool allTwistsZero() const
+    {
+        return std::all_of(m_peer->twists.begin(), m_peer->twists.end(),
+                           [](const auto &t) { return t.a[0] == 0.0; }) &&
+               std::all_of(m_peer->jogs.begin(), m_peer->jogs.end(),
+                           [](const auto &j) { return j.velocities.at(0) == 0.0; });
+    }
+    double lastTwist()
+    {
+        m_peer->take();
+        return m_peer->twists.empty() ? 0.0 : m_peer->twists.back().a[0];
+    }
+
     bool feedbackSeen(double tau)
     {
         m_peer->take();

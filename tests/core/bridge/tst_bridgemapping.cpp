@@ -1,6 +1,7 @@
 // The bridge's DDS-independent parts: wrench → τ_ext (gain, limit, stale, non-finite), the
 // outgoing messages' content, sample times, the rate limiter, the settings' rules and the
 // publishers' QoS they give.
+#include "bridge/enablegate.h"
 #include "bridge/referencemessages.h"
 #include "bridge/rosendpoints.h"
 #include "bridge/wrenchfeedback.h"
@@ -234,6 +235,70 @@ private Q_SLOTS:
         QVERIFY(!Component::parse("force.w"));
         QCOMPARE(parseQosProfile("best-effort"), QosProfile::BestEffort);
         QVERIFY(!parseQosProfile("sometimes"));
+    }
+
+    // --namespace: a topic at its default, or relative, goes under the namespace; any other
+    // absolute name stays as given; no namespace changes nothing.
+    void topicsUnderANamespace()
+    {
+        const Topics defaults;
+        QCOMPARE(topicInNamespace(defaults.jointStates, defaults.jointStates, "knob1"),
+                 std::string("/knob1/hatpic/joint_states"));
+        QCOMPARE(topicInNamespace(defaults.wrench, defaults.wrench, "/lab/knob2"),
+                 std::string("/lab/knob2/wrench_estimation"));
+        QCOMPARE(topicInNamespace("/robot/twist", defaults.twist, "knob1"),
+                 std::string("/robot/twist"));
+        QCOMPARE(topicInNamespace("cmd", defaults.twist, "knob1"), std::string("/knob1/cmd"));
+        QCOMPARE(topicInNamespace(defaults.pose, defaults.pose, ""), defaults.pose);
+        QCOMPARE(topicInNamespace("", "", "knob1"), std::string());
+        QVERIFY(isValidNamespace("knob1") && isValidNamespace("/lab/knob_2") &&
+                isValidNamespace(""));
+        QVERIFY(!isValidNamespace("1knob") && !isValidNamespace("a//b") &&
+                !isValidNamespace("a b") && !isValidNamespace("ns/"));
+        BridgeSettings s;
+        s.nodeNamespace = "a b";
+        const auto errors = validate(s);
+        QCOMPARE(errors.size(), 1u);
+        QVERIFY(errors.front().starts_with("namespace: 'a b' is not a ROS namespace"));
+    }
+
+    // The dead man: without a topic only the local switch counts; with one, released until the
+    // first true and again when it falls silent; the published reference holds while released
+    // and goes on from there without a jump.
+    void enableGate()
+    {
+        EnableGate none;
+        QVERIFY(none.engaged(0));
+        none.setLocal(false);
+        QVERIFY(!none.engaged(0));
+
+        EnableGate gate(true, 0.5);
+        QVERIFY(!gate.engaged(0));
+        gate.received(true, 1.0);
+        QVERIFY(gate.engaged(1.2));
+        QVERIFY(gate.engaged(1.5));
+        QVERIFY(!gate.engaged(1.51)); // silent for longer than the timeout
+        gate.received(false, 2.0);
+        QVERIFY(!gate.engaged(2.1));
+        gate.received(true, 2.2);
+        gate.setLocal(false);
+        QVERIFY(!gate.engaged(2.3));
+
+        // The reference: engaged 0 → 1, released while the device's p_ref goes to 3, engaged
+        // again: it goes on from 1 and follows the device's motion from there.
+        EnableGate ref;
+        QCOMPARE(ref.reference(0.0, true), 0.0);
+        QCOMPARE(ref.reference(1.0, true), 1.0);
+        QCOMPARE(ref.reference(2.0, false), 1.0);
+        QCOMPARE(ref.reference(3.0, false), 1.0);
+        QCOMPARE(ref.reference(3.0, true), 1.0);
+        QCOMPARE(ref.reference(3.5, true), 1.5);
+        QCOMPARE(ref.offset(), 2.0);
+        // Released from the start: held where the device's reference was.
+        EnableGate late(true);
+        QCOMPARE(late.reference(0.4, false), 0.4);
+        QCOMPARE(late.reference(0.9, false), 0.4);
+        QCOMPARE(late.reference(1.0, true), 0.4);
     }
 };
 

@@ -12,6 +12,7 @@
 #include <QJsonArray>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace hatpic;
@@ -65,7 +66,8 @@ private Q_SLOTS:
                                u"--sub"_s, u"/hatpic/pose=geometry_msgs/PoseStamped"_s, u"--sub"_s,
                                u"/hatpic/feedback=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
                                u"/wrench_estimation=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
-                               u"/robot/wrench=geometry_msgs/Wrench"_s}),
+                               u"/robot/wrench=geometry_msgs/Wrench"_s, u"--pub"_s,
+                               u"/teleop/enable=std_msgs/Bool"_s}),
                  QString());
     }
     void cleanupTestCase()
@@ -163,6 +165,47 @@ private Q_SLOTS:
         m_peer.send(u"stop /robot/wrench"_s);
     }
 
+    // The dead man over ROS 1 (ros.md § Enable switch): released until the first true, by
+    // false and by silence; the twist zero and τ_ext zero while released.
+    void enableSwitch()
+    {
+        BridgeSettings settings = m_bridge.settings();
+        settings.topics.enable = "/teleop/enable";
+        QCOMPARE(m_bridge.start(settings), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.connections(u"/teleop/enable"_s) >= 1, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.connections(u"/wrench_estimation"_s) >= 1, 10000);
+        m_peer.send(uR"(set /wrench_estimation {"wrench": {"force": {"z": 0.5}}})"_s);
+        QTest::qWait(700);
+        QCOMPARE(m_deviceTauExt, 0.0);
+        QVERIFY(!m_bridge.stats().engaged);
+        m_peer.clear();
+        QTest::qWait(300);
+        QVERIFY(twistsAllZero());
+
+        m_peer.send(uR"(set /teleop/enable {"data": true})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.077) < kTauExtTolerance, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            field(m_peer.received(u"/hatpic/twist"_s).last(), u"twist.linear.x"_s) > 0.1, 3000);
+
+        m_peer.send(uR"(set /teleop/enable {"data": false})"_s);
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
+        QTest::qWait(100);
+        m_peer.clear();
+        QTest::qWait(300);
+        QVERIFY(twistsAllZero());
+
+        m_peer.send(uR"(set /teleop/enable {"data": true})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.077) < kTauExtTolerance, 5000);
+        m_peer.send(u"stop /teleop/enable"_s); // the teleop node dies
+        QElapsedTimer silent;
+        silent.start();
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 3000);
+        QVERIFY2(silent.elapsed() >= 400, qPrintable(QString::number(silent.elapsed())));
+        m_peer.send(u"stop /wrench_estimation"_s);
+        settings.topics.enable.clear();
+        QCOMPARE(m_bridge.start(settings), QString());
+    }
+
     void stopLeavesTauExtZero()
     {
         m_peer.send(uR"(set /wrench_estimation {"wrench": {"force": {"z": 0.5}}})"_s);
@@ -174,6 +217,13 @@ private Q_SLOTS:
     }
 
 private:
+    bool twistsAllZero() const
+    {
+        const auto twists = m_peer.received(u"/hatpic/twist"_s);
+        return !twists.isEmpty() && std::all_of(twists.begin(), twists.end(), [](const auto &t) {
+            return field(t, u"twist.linear.x"_s) == 0.0;
+        });
+    }
     bool feedbackSeen(double tau) const
     {
         const auto feedbacks = m_peer.received(u"/hatpic/feedback"_s);

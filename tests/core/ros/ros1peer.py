@@ -28,8 +28,9 @@ import rosgraph
 import rospy
 from geometry_msgs.msg import PoseStamped, Twist, TwistStamped, Wrench, WrenchStamped
 from sensor_msgs.msg import JointState
+from std_msgs.msg import Bool
 
-TYPES = {cls._type: cls for cls in (JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench)}
+TYPES = {cls._type: cls for cls in (JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench, Bool)}
 out_lock = threading.Lock()
 
 

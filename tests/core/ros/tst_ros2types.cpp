@@ -53,6 +53,12 @@ private Q_SLOTS:
             "8dc3deaf06b2ab281f9f9a742a8961c328ca7cec16e3fd6586d3a5c83fa78f77");
         row("sensor_msgs/msg/JointState",
             "a13ee3a330e346c9d87b5aa18d24e11690752bd33a0350f11c5882bc9179260e");
+        // As rosidl_generator_c writes them into the generated bool__description.c and
+        // joint_jog__description.c (the latter with Time's and Header's hashes above).
+        row("std_msgs/msg/Bool",
+            "feb91e995ff9ebd09c0cb3d2aed18b11077585839fb5db80193b62d74528f6c9");
+        row("control_msgs/msg/JointJog",
+            "ba249455a20f70168a1acb7bf43b776b72ff1f7eb5fc4cfea443f749e963c6e7");
     }
     void hashesAreThePublishedOnes()
     {

@@ -15,6 +15,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -84,11 +85,47 @@ private Q_SLOTS:
     void wrenchBecomesTauExt()
     {
         QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 10000);
+        // The panel's default component is force.x, the project's own robot's; this robot
+        // sends force.z: the whole wrench shows, τ_ext stays 0, and the panel says why.
+        QCOMPARE(find<QComboBox>(u"bridge_component"_s)->currentText(), u"force.x"_s);
         startRobot(0.5);
-        // The defaults: 0.154 N·m per N, ±0.154 N·m.
+        QTRY_COMPARE_WITH_TIMEOUT(label(u"bridge_last_wrench"_s),
+                                  u"force 0 0 0.5 N, torque 0 0 0 N·m"_s, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(label(u"bridge_other_component"_s),
+                                  u"force.x stays 0 while the robot sends force.z = 0.5 N: is the "
+                                  u"component right?"_s,
+                                  2000);
+        QVERIFY(find<QLabel>(u"bridge_other_component"_s)->isVisible());
+        QCOMPARE(m_deviceTauExt, 0.0);
+        QCOMPARE(label(u"bridge_tau_ext"_s), u"0 N·m"_s);
+
+        // force.z chosen: the defaults' 0.154 N·m per N, ±0.154 N·m, and no warning.
+        find<QComboBox>(u"bridge_component"_s)->setCurrentText(u"force.z"_s);
         expectTauExt(0.077);
-        QCOMPARE(label(u"bridge_last_wrench"_s), u"force.z 0.5 N"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(!find<QLabel>(u"bridge_other_component"_s)->isVisible(), 2000);
         QCOMPARE(label(u"bridge_tau_ext"_s), u"0.077 N·m"_s);
+    }
+
+    // The enable switch's local half (ros.md § Enable switch): released, τ_ext and the twist
+    // are 0; engaged again, both come back.
+    void engagedButtonReleases()
+    {
+        auto *engaged = find<QPushButton>(u"bridge_engaged"_s);
+        QVERIFY(engaged->isChecked());
+        engaged->click();
+        QCOMPARE(engaged->text(), u"Released"_s);
+        expectTauExt(0);
+        QTest::qWait(100);
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(200);
+        m_peer->take();
+        QVERIFY(!m_peer->twists.empty());
+        for (const auto &t : m_peer->twists)
+            QCOMPARE(t.a[0], 0.0);
+        engaged->click();
+        QCOMPARE(engaged->text(), u"Engaged"_s);
+        expectTauExt(0.077);
     }
 
     void gainAndLimitWhileRunning()

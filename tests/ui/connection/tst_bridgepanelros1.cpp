@@ -92,6 +92,7 @@ private Q_SLOTS:
                  u"/hatpic_bridge"_s);
 
         QTRY_VERIFY_WITH_TIMEOUT(m_peer.connections(u"/wrench_estimation"_s) >= 1, 10000);
+        find<QComboBox>(u"bridge_component"_s)->setCurrentText(u"force.z"_s); // the peer's
         m_peer.send(uR"(set /wrench_estimation {"wrench": {"force": {"z": 0.5}}})"_s);
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - 0.077) < kTauExtTolerance, 5000);
         QTRY_COMPARE_WITH_TIMEOUT(label(u"bridge_tau_ext"_s), u"0.077 N·m"_s, 2000);
