@@ -86,12 +86,6 @@ int main(int argc, char *argv[])
         !program.readLink())
         return PtyProgram::kExitBadOptions;
 
-    // This thread runs the simulated device, standing in for hardware: real-time where allowed.
-    for (const std::string &problem :
-         {realtime::makeThreadRealtime(realtime::kDevicePriority), realtime::lockMemory()}) {
-        if (!problem.empty())
-            program.printError(QString::fromStdString(problem) + u'.');
-    }
     SimulatorHost host(config);
     for (const QString &warning : {host.device().stateWarning(), host.device().saveWarning()}) {
         if (!warning.isEmpty())
@@ -100,6 +94,13 @@ int main(int argc, char *argv[])
     const Serving serving = program.serve(host); // after the host, which it must not outlive
     if (!serving)
         return PtyProgram::kExitFailure;
+    // This thread runs the simulated device, standing in for hardware: real-time where allowed
+    // (said after the pty's path, the first line a client reads).
+    for (const std::string &problem :
+         {realtime::makeThreadRealtime(realtime::kDevicePriority), realtime::lockMemory()}) {
+        if (!problem.empty())
+            program.printError(QString::fromStdString(problem) + u'.');
+    }
     std::fprintf(stderr, "hatpic-sim: %s protocol, %g Hz control, %d baud%s\n",
                  qPrintable(wireProtocolName(config.protocol)), config.controlRateHz,
                  host.device().baud(), config.throttle ? "" : " (not throttled)");

@@ -1,6 +1,7 @@
 #include "bridgesettings.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace hatpic::bridge {
 
@@ -8,38 +9,18 @@ namespace {
 
 constexpr const char *kAxisLetters[] = {"x", "y", "z"};
 
-// The rule of a number's range in words: "above 0 and at most 1000 Hz", "from 0 to 10 N·m",
-// "a whole number from 1 to 1000", "1 or 2".
-std::string rangeRule(const SettingSpec &spec, bool whole)
-{
-    const std::string low = formatNumber(spec.range.low);
-    const std::string high = formatNumber(spec.range.high);
-    const std::string unit = spec.range.unit.empty() ? "" : " " + std::string(spec.range.unit);
-    if (spec.range.aboveLow)
-        return "above " + low + " and at most " + high + unit;
-    if (whole && spec.range.high == spec.range.low + 1)
-        return low + " or " + high;
-    return (whole ? "a whole number from " : "from ") + low + " to " + high + unit;
-}
-
 // "label: must be RULE, got VALUE" unless `value` is within the spec's range.
 void checkRange(std::vector<std::string> &errors, const SettingSpec &spec, const std::string &label,
                 double value, bool whole)
 {
-    const bool ok = std::isfinite(value) &&
-                    (spec.range.aboveLow ? value > spec.range.low : value >= spec.range.low) &&
-                    value <= spec.range.high;
-    if (!ok)
-        errors.push_back(label + ": must be " + rangeRule(spec, whole) + ", got " +
-                         formatNumber(value));
+    if (const std::string problem = rangeProblem(spec.range, value, whole); !problem.empty())
+        errors.push_back(label + ": " + problem);
 }
 
 void checkTopic(std::vector<std::string> &errors, const SettingSpec &spec, const std::string &topic)
 {
     if (!topic.empty() && !isValidTopicName(topic))
-        errors.push_back(std::string(spec.label) + ": '" + echoedText(topic) +
-                         "' is not a ROS topic name (letters, digits and '_' between single '/', "
-                         "not starting with a digit)");
+        errors.push_back(std::string(spec.label) + ": " + topicNameProblem(topic));
 }
 
 void checkText(std::vector<std::string> &errors, const SettingSpec &spec, const std::string &text)
@@ -121,6 +102,45 @@ const std::array<SettingSpec, 23> kSettings = {
             "Publishers' history depth, keep last N (default 10)."),
 };
 
+std::string rangeRule(const SettingRange &range, bool whole)
+{
+    const std::string low = formatNumber(range.low);
+    const std::string high = formatNumber(range.high);
+    const std::string unit = range.unit.empty() ? "" : " " + std::string(range.unit);
+    if (range.aboveLow)
+        return "above " + low + " and at most " + high + unit;
+    if (whole && range.high == range.low + 1)
+        return low + " or " + high;
+    return (whole ? "a whole number from " : "from ") + low + " to " + high + unit;
+}
+
+std::string rangeProblem(const SettingRange &range, double value, bool whole)
+{
+    const bool ok = std::isfinite(value) &&
+                    (range.aboveLow ? value > range.low : value >= range.low) &&
+                    value <= range.high && (!whole || value == std::floor(value));
+    return ok ? std::string()
+              : "must be " + rangeRule(range, whole) + ", got " + formatNumber(value);
+}
+
+std::string topicNameProblem(const std::string &topic)
+{
+    if (isValidTopicName(topic))
+        return {};
+    return "'" + echoedText(topic) +
+           "' is not a ROS topic name (letters, digits and '_' between single '/', not starting "
+           "with a digit)";
+}
+
+const SettingSpec &settingSpec(std::string_view key)
+{
+    for (const SettingSpec &spec : kSettings) {
+        if (spec.key == key)
+            return spec;
+    }
+    throw std::logic_error("no bridge setting " + std::string(key));
+}
+
 std::string Component::twistName() const
 {
     return std::string(angular ? "angular." : "linear.") + kAxisLetters[index];
@@ -197,6 +217,15 @@ bool isValidNamespace(const std::string &name)
            isValidTopicName(name.front() == '/' ? name.substr(1) : name);
 }
 
+std::string namespaceProblem(const std::string &name)
+{
+    if (isValidNamespace(name))
+        return {};
+    return "'" + echoedText(name) +
+           "' is not a ROS namespace (letters, digits and '_' between single '/', not starting "
+           "with a digit)";
+}
+
 std::string topicInNamespace(const std::string &topic, const std::string &defaultTopic,
                              const std::string &ns)
 {
@@ -245,10 +274,8 @@ std::vector<std::string> validate(const BridgeSettings &s)
             },
             spec.place);
     }
-    if (!isValidNamespace(s.nodeNamespace))
-        errors.push_back("namespace: '" + echoedText(s.nodeNamespace) +
-                         "' is not a ROS namespace (letters, digits and '_' between single '/', "
-                         "not starting with a digit)");
+    if (const std::string problem = namespaceProblem(s.nodeNamespace); !problem.empty())
+        errors.push_back("namespace: " + problem);
     return errors;
 }
 

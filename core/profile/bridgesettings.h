@@ -162,6 +162,19 @@ struct SettingSpec
 
 //! Every setting, in --help's order; a profile writes those it holds in the same order.
 extern const std::array<SettingSpec, 23> kSettings;
+//! The row of kSettings with this key (a program error when there is none).
+const SettingSpec &settingSpec(std::string_view key);
+
+//! A range's rule in words: "above 0 and at most 1000 Hz", "from 0 to 10 N·m", "a whole number
+//! from 1 to 1000", "1 or 2". The one wording of every setting's and option's range (the
+//! bridge's settings, hatpic-robot-sim's options).
+std::string rangeRule(const SettingRange &range, bool whole);
+//! Empty when `value` is within `range` (a whole number when `whole`), else "must be RULE, got
+//! VALUE".
+std::string rangeProblem(const SettingRange &range, double value, bool whole);
+//! Empty for a valid topic name, else "'NAME' is not a ROS topic name (RULE)", the name cut as
+//! echoedText() cuts it.
+std::string topicNameProblem(const std::string &topic);
 
 //! Every broken rule, one sentence each ("publish rate: must be above 0 and at most 1000 Hz,
 //! got 0"). Empty means valid.
@@ -171,6 +184,8 @@ std::vector<std::string> validate(const BridgeSettings &settings);
 bool isValidTopicName(const std::string &name);
 //! A namespace rmw and roscpp would accept: a topic name's form, with or without a leading '/'.
 bool isValidNamespace(const std::string &name);
+//! Empty for a valid namespace, else "'NS' is not a ROS namespace (RULE)", cut as echoedText().
+std::string namespaceProblem(const std::string &name);
 //! The name `topic` (the setting of `defaultTopic`'s place) has on the network under the
 //! namespace `ns`: unchanged when `ns` is empty or `topic` is empty; "/NS/…" for a topic at its
 //! default value (`defaultTopic`) or a relative one; any other absolute name as given.

@@ -21,7 +21,33 @@ std::vector<Violation> validate(const RobotParams &params)
     check("wall-stiffness", params.wallStiffness, params.wallStiffness >= 0, "must be ≥ 0");
     check("wall-damping", params.wallDamping, params.wallDamping >= 0, "must be ≥ 0");
     check("start", params.start, true, "");
+    if (!out.empty())
+        return out;
+    // The step's stability (robotmodel.h), once each value is valid on its own.
+    const auto bound = [](const char *what, double value, const char *unit) {
+        return std::string("must be below ") + what + " = " + formatNumber(value) + " " + unit +
+               " for the 1 ms step to be stable";
+    };
+    const double damping = dampingBound(params);
+    if (!(params.kv + params.wallDamping < damping))
+        out.push_back({"kv", -1, "plus wall-damping " + bound("2·m/h", damping, "N·s/m"),
+                       params.kv + params.wallDamping});
+    else if (!(params.wallStiffness < stiffnessBound(params)))
+        out.push_back({"wall-stiffness", -1,
+                       bound("(4·m − 2·h·(K_v + b_w))/h²", stiffnessBound(params), "N/m"),
+                       params.wallStiffness});
     return out;
+}
+
+double dampingBound(const RobotParams &params)
+{
+    return 2 * params.mass / RobotModel::kStep;
+}
+
+double stiffnessBound(const RobotParams &params)
+{
+    const double h = RobotModel::kStep;
+    return (4 * params.mass - 2 * h * (params.kv + params.wallDamping)) / (h * h);
 }
 
 double controlForce(const RobotParams &params, double vRef, double v)

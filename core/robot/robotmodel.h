@@ -24,10 +24,24 @@ struct RobotParams
     friend bool operator==(const RobotParams &, const RobotParams &) = default;
 };
 
-//! Every broken rule (finite values, m > 0, K_v ≥ 0, F_max > 0, k_w ≥ 0, b_w ≥ 0), named by
-//! the field's option name ("mass", "kv", "fmax", "wall", "wall-stiffness", "wall-damping",
-//! "start"). Empty means valid.
+//! Every broken rule (finite values, m > 0, K_v ≥ 0, F_max > 0, k_w ≥ 0, b_w ≥ 0, and the
+//! step's stability: dampingBound() and stiffnessBound()), named by the field's option name
+//! ("mass", "kv", "fmax", "wall", "wall-stiffness", "wall-damping", "start"). Empty means
+//! valid.
 std::vector<Violation> validate(const RobotParams &params);
+
+//! The 1 ms semi-implicit Euler step is stable only while the damping and stiffness it
+//! integrates are small enough for the mass (robot.md's integrator; docs/teleop.md § The
+//! robot's limits). In the wall, with the controller unsaturated, the step maps (v, x) by a
+//! matrix of determinant 1 − a and trace 2 − a − b, where a = h·(K_v + b_w)/m and
+//! b = h²·k_w/m; Jury's test makes both eigenvalues lie inside the unit circle iff 0 ≤ a < 2
+//! and b < 4 − 2a:
+//!   K_v + b_w < 2·m/h                       (dampingBound)
+//!   k_w < (4·m − 2·h·(K_v + b_w)) / h²      (stiffnessBound)
+//! Outside the wall (b = 0) and with the controller saturated (K_v's term gone) the bounds are
+//! looser, so these two cover every regime. [N·s/m], [N/m]
+double dampingBound(const RobotParams &params);
+double stiffnessBound(const RobotParams &params);
 
 class RobotModel
 {

@@ -48,20 +48,6 @@ ros::Pose poseAlong(bridge::Component c, double x)
 
 } // namespace
 
-std::vector<Violation> validate(const RobotSimSettings &settings)
-{
-    std::vector<Violation> out = validate(settings.robot);
-    for (Violation &v : validate(settings.faults))
-        out.push_back(std::move(v));
-    if (!(std::isfinite(settings.rateHz) && settings.rateHz > 0 &&
-          settings.rateHz <= kMaxRobotRateHz))
-        out.push_back({"rate", -1, "must be above 0 and at most 1000 Hz", settings.rateHz});
-    if (!(std::isfinite(settings.staleAfter) && settings.staleAfter > 0 &&
-          settings.staleAfter <= kMaxRobotStale))
-        out.push_back({"stale", -1, "must be above 0 and at most 10 s", settings.staleAfter});
-    return out;
-}
-
 RobotSimulator::RobotSimulator(const RobotSimSettings &settings)
     : m_settings(settings), m_model(settings.robot), m_inbound(settings.faults, settings.seed),
       m_outbound(settings.faults, settings.seed + 1)
@@ -76,14 +62,7 @@ std::unique_ptr<RobotSimulator> RobotSimulator::start(const RobotSimSettings &se
         return nullptr;
     };
     if (const auto violations = validate(settings); !violations.empty())
-        return fail(violations.front().message() + ".");
-    for (const auto &[name, topic, optional] :
-         {std::tuple{"twist topic", settings.twistTopic, false},
-          std::tuple{"wrench topic", settings.wrenchTopic, true},
-          std::tuple{"pose topic", settings.poseTopic, true}}) {
-        if ((!optional || !topic.empty()) && !bridge::isValidTopicName(topic))
-            return fail(std::string(name) + ": '" + topic + "' is not a ROS topic name.");
-    }
+        return fail(violations.front() + ".");
 
     std::unique_ptr<RobotSimulator> sim(new RobotSimulator(settings));
     std::string why;
@@ -154,7 +133,9 @@ void RobotSimulator::run()
 {
     constexpr auto kStep = std::chrono::microseconds(1000);
     constexpr auto kMaxLag = std::chrono::milliseconds(100); // beyond this, skip ahead
-    const int stepsPerOutput = std::max(1, int(std::lround(1000.0 / m_settings.rateHz)));
+    // validate() bounds the rate (0.1 … 1000 Hz): 1 … 10 000 steps per output.
+    const auto stepsPerOutput = std::max<std::uint64_t>(
+        1, std::uint64_t(std::llround(1 / (RobotModel::kStep * m_settings.rateHz))));
     auto next = Clock::now();
     std::uint64_t step = 0;
     while (!m_stop) {
@@ -186,7 +167,7 @@ void RobotSimulator::run()
             m_status.vRef = vRef;
             m_status.wallForce = m_model.wallForce();
             m_status.stale = stale;
-            output = ++step % std::uint64_t(stepsPerOutput) == 0;
+            output = ++step % stepsPerOutput == 0;
             if (output) {
                 ros::WrenchStamped wrench;
                 wrench.header = {wallTime(), m_settings.frameId};

@@ -5,10 +5,7 @@
 // between knob and robot can be made worse in both directions (robot/linkfaults.h).
 #pragma once
 
-#include "profile/bridgesettings.h"
-#include "robot/linkfaults.h"
-#include "robot/robotmodel.h"
-#include "ros/node.h"
+#include "robotsim/robotsimsettings.h"
 
 #include <atomic>
 #include <cstdint>
@@ -19,29 +16,6 @@
 #include <vector>
 
 namespace hatpic::robot {
-
-struct RobotSimSettings
-{
-    RobotParams robot;
-    LinkFaults faults;      //!< both directions: the twist in, the wrench out
-    std::uint64_t seed = 1; //!< of the faults' randomness
-    bridge::Component axis; //!< the twist component followed, and the wrench's (linear.x)
-    std::string twistTopic = "/hatpic/twist";       //!< in: geometry_msgs/TwistStamped
-    std::string wrenchTopic = "/wrench_estimation"; //!< out: geometry_msgs/WrenchStamped
-    std::string poseTopic = "/robot/pose";          //!< out: geometry_msgs/PoseStamped
-    std::string frameId = "robot";                  //!< header.frame_id of what goes out
-    double rateHz = 200;                            //!< outputs per second (≤ 1000) [Hz]
-    double staleAfter = 0.5; //!< v_ref = 0 once the last twist is this old [s]
-    ros::NodeOptions node{ros::RosVersion::Ros2, "hatpic_robot_sim", -1, {}};
-};
-
-constexpr double kMaxRobotRateHz = 1000; //!< one output per step
-constexpr double kMaxRobotStale = 10;    //!< [s]
-
-//! Every broken rule, fields named as the options: the robot's and the faults' rules, the
-//! rate (0 < rate ≤ 1000), stale (0 < stale ≤ 10), topic names (an output may be empty:
-//! off). Empty means valid.
-std::vector<Violation> validate(const RobotSimSettings &settings);
 
 class RobotSimulator
 {

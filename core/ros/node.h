@@ -51,7 +51,7 @@ struct NodeOptions
     int domainId = -1; //!< ROS 2: the DDS domain; −1: ROS_DOMAIN_ID, else 0
     //! The node's namespace ("knob1"); empty: the root, or on ROS 1 ROS_NAMESPACE. Topic names
     //! given to advertise() and subscribe() are taken as they are (resolve them first).
-    std::string nameSpace;
+    std::string nameSpace = {};
 };
 
 //! The namespace a node of `version` is in when NodeOptions::nameSpace is `given`: `given`

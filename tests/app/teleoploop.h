@@ -55,17 +55,19 @@ public:
     };
     using Series = std::vector<Point> Watcher::*;
 
-    //! Opens the node `name` and subscribes; empty, or why not.
-    QString open(ros::RosVersion version, int domain, const std::string &name)
+    //! Opens the node `name` and subscribes to the loop's topics, under the namespace `ns`
+    //! ("/knob2") when given; empty, or why not.
+    QString open(ros::RosVersion version, int domain, const std::string &name,
+                 const std::string &ns = {})
     {
         std::string why;
-        m_node = ros::Node::open({version, name, domain}, &why);
+        m_node = ros::Node::open({version, name, domain, {}}, &why);
         if (!m_node)
             return QString::fromStdString(why);
         const auto add = [&](const char *topic, ros::MessageType type, std::vector<Point> *into,
                              auto read) {
             auto sub = m_node->subscribe(
-                topic, type, ros::Qos::matchAny(),
+                ns + topic, type, ros::Qos::matchAny(),
                 [this, into, read](const ros::Message &m) {
                     const std::lock_guard lock(m_mutex);
                     if (const auto value = read(m))
@@ -237,6 +239,7 @@ struct LoopSetup
     QStringList robotArguments;  //!< more for hatpic-robot-sim, e.g. {"--delay", "0.02"}
     QStringList bridgeArguments; //!< more for hatpic-bridge, e.g. {"--profile", FILE}
     std::string nodeName = "hatpic_teleop_watcher";
+    QString nameSpace; //!< --namespace of the bridge and the robot ("knob2"); empty: none
 };
 
 //! The three programs and the watcher; destroyed robot, bridge, sim, then the watcher.
@@ -254,7 +257,11 @@ inline QString startLoop(Loop &loop, const LoopSetup &setup)
     const QString rosArg = setup.version == ros::RosVersion::Ros1 ? u"1"_s : u"2"_s;
     qputenv("ROS_DOMAIN_ID", QByteArray::number(setup.domain));
     qputenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST");
-    if (const QString why = loop.watcher.open(setup.version, setup.domain, setup.nodeName);
+    const QStringList nsArguments =
+        setup.nameSpace.isEmpty() ? QStringList() : QStringList{u"--namespace"_s, setup.nameSpace};
+    const std::string ns =
+        setup.nameSpace.isEmpty() ? std::string() : "/" + setup.nameSpace.toStdString();
+    if (const QString why = loop.watcher.open(setup.version, setup.domain, setup.nodeName, ns);
         !why.isEmpty())
         return u"the watching node: "_s + why;
 
@@ -268,13 +275,14 @@ inline QString startLoop(Loop &loop, const LoopSetup &setup)
         return u"hatpic-sim made no link: "_s + QString::fromUtf8(loop.sim->output());
 
     loop.robot = std::make_unique<Program>(setup.robotPath);
-    if (!loop.robot->start(QStringList{u"--ros"_s, rosArg} + setup.robotArguments, setup.env))
+    if (!loop.robot->start(QStringList{u"--ros"_s, rosArg} + nsArguments + setup.robotArguments,
+                           setup.env))
         return u"hatpic-robot-sim did not start"_s;
     loop.bridge = std::make_unique<Program>(setup.bridgePath);
     if (!loop.bridge->start(QStringList{u"--ros"_s, rosArg, u"--port"_s, setup.link,
                                         u"--component"_s, u"force.x"_s, u"--gain"_s,
                                         QString::number(setup.gain)} +
-                                setup.bridgeArguments,
+                                nsArguments + setup.bridgeArguments,
                             setup.env))
         return u"hatpic-bridge did not start"_s;
     return {};

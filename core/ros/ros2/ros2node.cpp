@@ -57,7 +57,7 @@ void releaseDomain(int id)
 std::string realtimeThreadsConfig(int priority)
 {
     std::string threads;
-    for (const char *name : {"recv", "recvUC", "recvMC", "dq.user", "tev"})
+    for (const char *name : {"recv", "dq.user", "tev"})
         threads += std::string("<Thread name=\"") + name +
                    "\"><Scheduling><Class>realtime</Class><Priority>" + std::to_string(priority) +
                    "</Priority></Scheduling></Thread>";

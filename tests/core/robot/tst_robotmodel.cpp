@@ -21,6 +21,9 @@ private Q_SLOTS:
     void badValuesAreNamed_data();
     void badValuesAreNamed();
     void oneStepBySemiImplicitEuler();
+    void stiffnessBoundIsTheStepsStability_data();
+    void stiffnessBoundIsTheStepsStability();
+    void unstableStepIsRefused();
     void controllerIsClamped();
     void wallPushesNeverPulls();
     void restsAgainstTheWall();
@@ -92,6 +95,72 @@ void TestRobotModel::oneStepBySemiImplicitEuler()
     QCOMPARE(robot.velocity(), v);
     QCOMPARE(robot.position(), 1e-3 * v);
     QCOMPARE(robot.wallForce(), 0.0);
+}
+
+void TestRobotModel::stiffnessBoundIsTheStepsStability_data()
+{
+    QTest::addColumn<double>("mass");
+    QTest::addColumn<double>("kv");
+    QTest::addColumn<double>("wallDamping");
+    QTest::newRow("robot.md") << 1.5 << 40.0 << 5.0;
+    QTest::newRow("light, damped") << 0.2 << 100.0 << 50.0;
+    QTest::newRow("heavy, wall undamped") << 20.0 << 400.0 << 0.0;
+}
+
+// Pressed into the wall (v_ref 1 m/s, F_max out of the way) from 10 % past its rest, the robot
+// settles against the wall just below the bound and never does just above it: the bound is
+// the integrator's, not a guess.
+void TestRobotModel::stiffnessBoundIsTheStepsStability()
+{
+    QFETCH(double, mass);
+    QFETCH(double, kv);
+    QFETCH(double, wallDamping);
+    const RobotParams p{.mass = mass, .kv = kv, .fMax = 1e9, .wallDamping = wallDamping};
+    const double bound = stiffnessBound(p);
+    QVERIFY(bound > 0);
+    const double vRef = 1;
+    const double restForce = kv * vRef; // at rest v = 0: F_e = F_c = K_v·v_ref
+    // The largest |F_e − K_v·v_ref| / (K_v·v_ref) over the last 0.2 s of 3 s.
+    const auto unrest = [&](double k) {
+        RobotParams q = p;
+        q.wallStiffness = k;
+        q.start = q.wall + 1.1 * restForce / k;
+        RobotModel robot(q);
+        double worst = 0;
+        for (int i = 0; i < 3000; ++i) {
+            robot.step(vRef);
+            if (i >= 2800)
+                worst = std::max(worst, std::abs(robot.wallForce() - restForce) / restForce);
+        }
+        return worst;
+    };
+    QVERIFY2(unrest(0.98 * bound) < 1e-6, qPrintable(QString::number(unrest(0.98 * bound))));
+    QVERIFY2(unrest(1.02 * bound) > 0.5, qPrintable(QString::number(unrest(1.02 * bound))));
+    RobotParams below = p;
+    below.wallStiffness = 0.98 * bound;
+    QVERIFY(validate(below).empty());
+    below.wallStiffness = 1.02 * bound;
+    QCOMPARE(validate(below).size(), std::size_t(1));
+}
+
+void TestRobotModel::unstableStepIsRefused()
+{
+    // robot.md's robot: K_v + b_w = 45, so k_w < (4·1.5 − 2·0.001·45)/1e-6 = 5 910 000 N/m.
+    RobotParams p;
+    QCOMPARE(stiffnessBound(p), 5.91e6);
+    p.wallStiffness = 1e7;
+    auto violations = validate(p);
+    QCOMPARE(violations.size(), std::size_t(1));
+    QCOMPARE(QString::fromStdString(violations.front().message()),
+             QString::fromUtf8("wall-stiffness: must be below (4·m − 2·h·(K_v + b_w))/h² = 5910000 "
+                               "N/m for the 1 ms step to be stable, got 1e+07"));
+    p = RobotParams{};
+    p.kv = 3000; // 2·m/h = 3000 N·s/m
+    violations = validate(p);
+    QCOMPARE(violations.size(), std::size_t(1));
+    QCOMPARE(violations.front().field, std::string("kv"));
+    QVERIFY(QString::fromStdString(violations.front().message())
+                .contains(QString::fromUtf8("2·m/h = 3000 N·s/m")));
 }
 
 void TestRobotModel::controllerIsClamped()

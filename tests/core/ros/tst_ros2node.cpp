@@ -80,6 +80,10 @@ Message sampleMessage(MessageType type)
         return WrenchStamped{header, {a, b}};
     case MessageType::Wrench:
         return Wrench{b, a};
+    case MessageType::Bool:
+        return Bool{true};
+    case MessageType::JointJog:
+        return JointJog{header, {"joint_1", "joint ü"}, {0.125}, {-0.5, 2}, 0.25};
     }
     return {};
 }

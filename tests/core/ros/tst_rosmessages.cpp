@@ -51,13 +51,15 @@ private Q_SLOTS:
         QTest::newRow("PoseStamped") << 3 << QStringLiteral("geometry_msgs/msg/PoseStamped");
         QTest::newRow("WrenchStamped") << 4 << QStringLiteral("geometry_msgs/msg/WrenchStamped");
         QTest::newRow("Wrench") << 5 << QStringLiteral("geometry_msgs/msg/Wrench");
+        QTest::newRow("Bool") << 6 << QStringLiteral("std_msgs/msg/Bool");
+        QTest::newRow("JointJog") << 7 << QStringLiteral("control_msgs/msg/JointJog");
     }
     void typeOfFollowsTheVariant()
     {
         QFETCH(int, index);
         QFETCH(QString, rosName);
-        const Message messages[] = {JointState{},  TwistStamped{},  Twist{},
-                                    PoseStamped{}, WrenchStamped{}, Wrench{}};
+        const Message messages[] = {JointState{},    TwistStamped{}, Twist{}, PoseStamped{},
+                                    WrenchStamped{}, Wrench{},       Bool{},  JointJog{}};
         static_assert(std::size(messages) == kMessageTypeCount);
         QCOMPARE(int(typeOf(messages[index])), index);
         QCOMPARE(QString::fromLatin1(rosTypeName(MessageType(index))), rosName);
