@@ -58,7 +58,10 @@ QString Bridge::start(const BridgeSettings &settings)
         m_passivity.reset();
         m_rate = RateLimiter(settings.publishRateHz);
         m_released = false;
+        // The local switch stays as the user set it: a reopening never engages by itself.
+        const bool local = m_gate.local();
         m_gate = EnableGate(!settings.topics.enable.empty(), kEnableTimeout);
+        m_gate.setLocal(local);
         m_lastWrench.fill(NAN);
         m_otherComponentStreak = 0;
         m_tauExt = 0;

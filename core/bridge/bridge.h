@@ -74,7 +74,8 @@ public:
     bool setPublishRate(double rateHz);
     //! The local enable switch (the tuner's key or toggle), with the enable topic's if there
     //! is one: released, the twist, the joint jog and τ_ext are zero and the pose holds; engaged
-    //! again, the pose goes on from where it held (ros.md § Enable switch). Engaged at start().
+    //! again, the pose goes on from where it held (ros.md § Enable switch). Engaged until
+    //! released; start() keeps it as it is.
     void setEngaged(bool engaged);
     //! The reference mode picks the default axis (linear.x, or angular.z in rotation).
     void setReferenceMode(ReferenceMode mode);

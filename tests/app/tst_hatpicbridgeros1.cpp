@@ -154,8 +154,9 @@ private Q_SLOTS:
         QCOMPARE(err.count(said), 1);
     }
 
-    // ROS_NAMESPACE: the node and a relative topic are in it; absolute topics are not.
-    void namespaceHoldsTheNodeAndRelativeTopics()
+    // ROS_NAMESPACE (ros.md § Several knobs): the node, a relative topic and the topics at
+    // their defaults are in it; an absolute topic given explicitly is not.
+    void namespaceHoldsTheNodeAndItsTopics()
     {
         QCOMPARE(m_core.start(), QString());
         SimulatorHost host{SimulatedDevice::Config{}};
@@ -166,25 +167,48 @@ private Q_SLOTS:
         bridge.setProcessEnvironment(env);
         bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH),
                      {u"--ros"_s, u"1"_s, u"--port"_s, host.slavePath(), u"--twist-topic"_s,
-                      u"hatpic/twist"_s});
+                      u"hatpic/twist"_s, u"--pose-topic"_s, u"/elsewhere/pose"_s});
         QVERIFY(bridge.waitForStarted());
         Ros1Peer peer;
         QCOMPARE(peer.start(m_core.environment(),
                             {u"--sub"_s, u"/robot1/hatpic/twist=geometry_msgs/TwistStamped"_s,
-                             u"--sub"_s, u"/hatpic/joint_states=sensor_msgs/JointState"_s}),
+                             u"--sub"_s, u"/robot1/hatpic/joint_states=sensor_msgs/JointState"_s,
+                             u"--sub"_s, u"/elsewhere/pose=geometry_msgs/PoseStamped"_s}),
                  QString());
-        QTRY_VERIFY_WITH_TIMEOUT(!peer.received(u"/robot1/hatpic/twist"_s).isEmpty(), 15000);
-        QTRY_VERIFY_WITH_TIMEOUT(!peer.received(u"/hatpic/joint_states"_s).isEmpty(), 5000);
-        QCOMPARE(peer.received(u"/robot1/hatpic/twist"_s).last().value(u"callerid"_s).toString(),
-                 u"/robot1/hatpic_bridge"_s);
-        ::kill(pid_t(bridge.processId()), SIGINT);
-        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
-        QCOMPARE(bridge.exitCode(), 0);
+        QTRY_VERIFY_WITH_TIMEOUT(!peer.received(u"/robot1/hatpic/joint_states"_s).isEmpty(), 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(!peer.received(u"/elsewhere/pose"_s).isEmpty(), 5000);
+        twistFromThen(peer, u"/robot1"_s, bridge);
+        if (QTest::currentTestFailed())
+            return;
+
+        // --namespace wins over ROS_NAMESPACE.
+        bridge.start(
+            QStringLiteral(HATPIC_BRIDGE_PATH),
+            {u"--ros"_s, u"1"_s, u"--port"_s, host.slavePath(), u"--namespace"_s, u"knob2"_s});
+        QVERIFY(bridge.waitForStarted());
+        Ros1Peer second;
+        QCOMPARE(second.start(m_core.environment(),
+                              {u"--sub"_s, u"/knob2/hatpic/twist=geometry_msgs/TwistStamped"_s}),
+                 QString());
+        twistFromThen(second, u"/knob2"_s, bridge);
     }
 
     void cleanupTestCase() { m_core.stop(); }
 
 private:
+    // `peer` receives NS/hatpic/twist from the node NS/hatpic_bridge; then the bridge stops on
+    // SIGINT with exit code 0.
+    void twistFromThen(const Ros1Peer &peer, const QString &ns, QProcess &bridge)
+    {
+        const QString topic = ns + u"/hatpic/twist"_s;
+        QTRY_VERIFY_WITH_TIMEOUT(!peer.received(topic).isEmpty(), 15000);
+        QCOMPARE(peer.received(topic).last().value(u"callerid"_s).toString(),
+                 ns + u"/hatpic_bridge"_s);
+        ::kill(pid_t(bridge.processId()), SIGINT);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
+        QCOMPARE(bridge.exitCode(), 0);
+    }
+
     RosCore m_core;
 };
 

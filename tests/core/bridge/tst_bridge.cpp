@@ -431,6 +431,11 @@ private Q_SLOTS:
         // The local switch (the tuner's) releases it too.
         m_bridge.setEngaged(false);
         QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 500);
+        QCOMPARE(m_bridge.start(settings), QString()); // a reopening keeps it released
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
+        QTest::qWait(300);
+        QCOMPARE(m_deviceTauExt, 0.0);
+        QVERIFY(!m_bridge.stats().localEngaged);
         m_bridge.setEngaged(true);
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt - tau) < kTauExtTolerance, 3000);
 
