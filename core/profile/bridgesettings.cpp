@@ -14,7 +14,11 @@ std::string rangeRule(const SettingSpec &spec, bool whole)
 {
     const std::string low = formatNumber(spec.range.low);
     const std::string high = formatNumber(spec.range.high);
-    const std::string unit = spec.range.unit.empty() ? "" : " " + std::string(spec.range.unit);
+    // Appended, not `" " + std::string(...)`: GCC 12 at -O3 reports a false -Wrestrict on the
+    // operator+ of a literal and a temporary string.
+    std::string unit;
+    if (!spec.range.unit.empty())
+        unit.append(" ").append(spec.range.unit);
     if (spec.range.aboveLow)
         return "above " + low + " and at most " + high + unit;
     if (whole && spec.range.high == spec.range.low + 1)
