@@ -229,8 +229,12 @@ void applyMetadata(const QByteArray &text, const QString &fileName, Recording &r
             // Within what the CSV's rows were read for, and within the bounds on events.
             if (rec.heldUntil_s && event.t_s > *rec.heldUntil_s)
                 continue;
-            if (rec.events.size() >= kMaxReadEvents)
+            if (rec.events.size() >= kMaxReadEvents) {
+                warnings.prepend(fileName % u": events after the first " %
+                                 QString::number(kMaxReadEvents) %
+                                 u" are not shown: a replay holds at most that many.");
                 break;
+            }
             fromMetadata.insert({event.text, event.t_s});
             rec.events.append(event);
         }
