@@ -1,8 +1,12 @@
 // hatpic-tuner [--port PATH|sim] [--baud N] [--protocol auto|v2|legacy] [--profile FILE]
-//              [--hand SPEC] [--bridge 1|2] [RECORDING.csv]
+//              [--hand SPEC] [--bridge 1|2] [--record FILE.csv] [RECORDING.csv]
 // A bad option: one sentence on stderr, exit 4 (common/exitcodes.h), before any window.
+// SIGTERM, SIGHUP, SIGINT (and every other signal that would end it and can wait) quit as the
+// window's Quit does, without its questions: the recording is closed with every row written,
+// the device left without the bridge's force; exit 0 (SIGINT, SIGTERM) or 128 + the signal.
 #include "common/connectionoptions.h"
 #include "common/exitcodes.h"
+#include "common/quitonsignal.h"
 #include "plots/plotpanel.h"
 #include "window/mainwindow.h"
 
@@ -11,6 +15,7 @@
 #include <QTimer>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -117,8 +122,12 @@ int main(int argc, char *argv[])
                                                    "bridge on ROS 1 or ROS 2, with the profile's "
                                                    "bridge settings (docs/teleop.md)."),
                                     QStringLiteral("1|2"));
+    const QCommandLineOption record(QStringLiteral("record"),
+                                    QStringLiteral("Record every sample to FILE.csv (and its "
+                                                   ".json) once connected, as Record does."),
+                                    QStringLiteral("FILE.csv"));
     parser.addOptions(
-        {port, baud, protocol, profile, hand, repaint, quitAfter, faults, seed, bridge});
+        {port, baud, protocol, profile, hand, repaint, quitAfter, faults, seed, bridge, record});
     parser.addPositionalArgument(QStringLiteral("recording"),
                                  QStringLiteral("A recording (CSV) to open in replay."),
                                  QStringLiteral("[RECORDING.csv]"));
@@ -127,8 +136,8 @@ int main(int argc, char *argv[])
     for (int i = 0; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);
     QStringList names{u"h"_s, u"help"_s, u"help-all"_s, u"v"_s, u"version"_s};
-    for (const QCommandLineOption *o :
-         {&port, &baud, &protocol, &profile, &hand, &repaint, &quitAfter, &faults, &seed, &bridge})
+    for (const QCommandLineOption *o : {&port, &baud, &protocol, &profile, &hand, &repaint,
+                                        &quitAfter, &faults, &seed, &bridge, &record})
         names << o->names();
     if (!onlyOwnOptions(arguments, names) || !parser.parse(arguments) ||
         parser.isSet(QStringLiteral("help-all"))) {
@@ -193,8 +202,16 @@ int main(int argc, char *argv[])
         return ExitBadUsage;
     }
 
+    if (parser.isSet(record) && options.port.isEmpty()) {
+        fail(QStringLiteral("--record needs --port: a recording is of a connected device"));
+        return ExitBadUsage;
+    }
+
     QApplication app(argc, argv);
     QApplication::setDesktopFileName(QStringLiteral("hatpic-tuner"));
+    if (!quitOnSignals())
+        fail(QStringLiteral("cannot install the signal handlers; a kill will not close a "
+                            "recording"));
     MainWindow window;
     window.setRepaintRate(repaintHz);
     if (parser.isSet(profile)) {
@@ -205,6 +222,8 @@ int main(int argc, char *argv[])
     if (handInput)
         window.setSimulatedHand(*handInput);
     window.show();
+    if (parser.isSet(record))
+        window.recordOnConnect(parser.value(record));
     if (!options.port.isEmpty())
         window.connectTo(options);
     if (bridgeRos != 0 && !window.startBridge(bridgeRos))
@@ -217,5 +236,10 @@ int main(int argc, char *argv[])
     if (quitAfterSeconds >= 0)
         QTimer::singleShot(static_cast<int>(std::lround(quitAfterSeconds * 1000)), &window,
                            &QWidget::close);
-    return app.exec();
+    const int code = app.exec();
+    // Quit by a signal: the window's destruction below closes the recording and the link.
+    const int signal = quitSignal();
+    if (signal != 0 && signal != SIGINT && signal != SIGTERM)
+        return 128 + signal;
+    return code;
 }

@@ -1,5 +1,7 @@
 #include "console.h"
 
+#include <QFileInfo>
+
 #include <cstdio>
 
 namespace hatpic::cli {
@@ -17,6 +19,26 @@ void writeOut(const QString &text)
 bool flushOut()
 {
     return std::fflush(stdout) == 0 && !std::ferror(stdout);
+}
+
+QString outputTargetProblem(const QStringList &paths, bool force, const QString &ownFiles)
+{
+    for (const QString &path : paths) {
+        const QFileInfo info(path);
+        if (info.exists() && !info.isFile()) {
+            return path + u" is not a regular file (" +
+                   (info.isDir() ? QStringLiteral("a folder")
+                                 : QStringLiteral("a device or pipe")) +
+                   u"); " + ownFiles + u'.';
+        }
+    }
+    for (const QString &path : paths) {
+        if (QFileInfo::exists(path) && !force)
+            return path + u" already exists; pass --force to overwrite it.";
+    }
+    if (!paths.isEmpty() && !QFileInfo(QFileInfo(paths.constFirst()).absolutePath()).isDir())
+        return u"Cannot create " + paths.constFirst() + u": its folder does not exist.";
+    return {};
 }
 
 void printError(const QString &sentence)

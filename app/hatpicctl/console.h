@@ -18,6 +18,12 @@ void printError(const QString &sentence);
 //! Writes lines to stderr as they are (for lists under an error sentence, notes, statistics).
 void printNote(const QString &text);
 
+//! Why the files `paths` (FILE first, then what is written beside it) cannot be written:
+//! one is a folder, a device or a pipe ("…; `ownFiles`", e.g. "a recording needs files of its
+//! own"), one exists and `force` is not given, or FILE's folder does not exist. Empty when they
+//! can. Checked before the port is opened, so that no measurement is lost to a bad target.
+QString outputTargetProblem(const QStringList &paths, bool force, const QString &ownFiles);
+
 //! Ensures `text` ends like a sentence (adds a full stop if it has no final punctuation).
 QString asSentence(const QString &text);
 

@@ -9,6 +9,7 @@
 
 #include "experiment/experimentcsv.h"
 #include "experiment/experimentrunner.h"
+#include "profile/jsonfile.h"
 #include "telemetry/numbertext.h"
 
 #include <QCommandLineOption>
@@ -190,10 +191,15 @@ protected:
             printError(QStringLiteral("--csv needs a file name."));
             return ExitBadUsage;
         }
-        if (!m_csvPath.isEmpty() && QFileInfo::exists(m_csvPath) &&
-            !parser.isSet(QStringLiteral("force"))) {
-            printError(m_csvPath + u" exists; add --force to overwrite it.");
-            return ExitBadUsage;
+        // Checked before the port is opened: a bad target must not cost a measurement.
+        if (!m_csvPath.isEmpty()) {
+            if (const QString problem =
+                    outputTargetProblem({m_csvPath}, parser.isSet(QStringLiteral("force")),
+                                        QStringLiteral("the curves need a file of their own"));
+                !problem.isEmpty()) {
+                printError(problem);
+                return ExitBadUsage;
+            }
         }
         return ExitSuccess;
     }
@@ -261,10 +267,11 @@ protected:
             printNote(u"Note: " + result->problem);
         writeOut(experimentReport(*result));
         if (!m_csvPath.isEmpty()) {
-            QFile file(m_csvPath);
-            if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-                file.write(experimentCsv(*result)) < 0 || !file.flush()) {
-                printError(u"Cannot write " + m_csvPath + u": " + file.errorString() + u'.');
+            // Through a temporary file renamed over it: a failed write (a full disk) leaves
+            // an old FILE as it was, never cut short.
+            if (const QString why = replaceFileContents(m_csvPath, experimentCsv(*result));
+                !why.isEmpty()) {
+                printError(u"Cannot write " + m_csvPath + u": " + why + u'.');
                 return ExitBadUsage;
             }
         }

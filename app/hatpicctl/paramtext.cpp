@@ -22,14 +22,6 @@ QString fieldName(int index)
 
 } // namespace
 
-DeviceParams tidyDeviceParams(const DeviceParams &params)
-{
-    DeviceParams tidy = params;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        tidy.setField(i, shortestFloatDecimal(params.field(i)));
-    return tidy;
-}
-
 QString fieldUnit(int index)
 {
     if (index < 0 || index >= DeviceParams::kFieldCount)
@@ -53,14 +45,6 @@ QString parameterTable(const DeviceParams &params)
                 fieldUnit(i).leftJustified(11) + fieldMeaning(i) + u'\n';
     }
     return text;
-}
-
-EffectParams tidyEffectParams(const EffectParams &effects)
-{
-    EffectParams tidy = effects;
-    for (int i = 0; i < EffectParams::kFieldCount; ++i)
-        tidy.setField(i, shortestFloatDecimal(effects.field(i)));
-    return tidy;
 }
 
 QString effectTable(const EffectParams &effects)

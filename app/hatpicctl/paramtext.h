@@ -12,10 +12,6 @@
 
 namespace hatpic::cli {
 
-//! Each field replaced by the double nearest to compactNumberText(field): sending it back gives
-//! the device the identical floats, and a profile written from it reads like a person wrote it.
-DeviceParams tidyDeviceParams(const DeviceParams &params);
-
 QString fieldUnit(int index);    //!< "kg·m²"
 QString fieldMeaning(int index); //!< "virtual inertia of the admittance filter"
 
@@ -34,8 +30,6 @@ QByteArray parameterOutput(const DeviceParams &params, const DeviceInfo &info, b
 QByteArray parameterOutput(const DeviceParams &params, const std::optional<EffectParams> &effects,
                            const DeviceInfo &info, bool json);
 
-//! tidyDeviceParams() for the effect block.
-EffectParams tidyEffectParams(const EffectParams &effects);
 //! One line per effect field: name, value, unit, meaning.
 QString effectTable(const EffectParams &effects);
 //! Why an effect block a device reported is not usable (effects.md § 2 against `tauLimit`);

@@ -117,7 +117,9 @@ protected:
         }
         // Everything about the files is checked before the port is opened or a file touched.
         if (!m_csvPath.isEmpty()) {
-            if (const QString problem = recordingTargetProblem(m_csvPath, m_force);
+            if (const QString problem =
+                    outputTargetProblem({m_csvPath, recordingMetadataPath(m_csvPath)}, m_force,
+                                        QStringLiteral("a recording needs files of its own"));
                 !problem.isEmpty()) {
                 printError(problem);
                 return ExitBadUsage;
@@ -298,28 +300,6 @@ private:
                                        u" samples, " + QString::number(recorded.bytes) + u" bytes");
         }
         printNote(text);
-    }
-
-    //! Why `csvPath` (and its .json) cannot be a new recording; empty when it can.
-    static QString recordingTargetProblem(const QString &csvPath, bool force)
-    {
-        const QStringList paths{csvPath, recordingMetadataPath(csvPath)};
-        for (const QString &path : paths) {
-            const QFileInfo info(path);
-            if (info.exists() && !info.isFile()) {
-                return path + u" is not a regular file (" +
-                       (info.isDir() ? QStringLiteral("a folder")
-                                     : QStringLiteral("a device or pipe")) +
-                       u"); a recording needs files of its own.";
-            }
-        }
-        for (const QString &path : paths) {
-            if (QFileInfo::exists(path) && !force)
-                return path + u" already exists; pass --force to overwrite it.";
-        }
-        if (!QFileInfo(QFileInfo(csvPath).absolutePath()).isDir())
-            return u"Cannot create " + csvPath + u": its folder does not exist.";
-        return {};
     }
 
     double m_duration = 0; //!< [s]; 0 = until interrupted

@@ -137,7 +137,19 @@ QString FirmwareHost::start()
     core.linkLimitHz = 0; // a pty has no baud rate
     m_core = std::make_unique<fw::DeviceCore<double>>(core, *m_hostPort, *m_actuator, *m_clock,
                                                       m_store.get());
-    if (!m_core->start(m_clock->micros())) {
+    bool started = false;
+    for (int attempt = 0, pauseMs = kServoStartPauseMs; attempt < kServoStartAttempts;
+         ++attempt, pauseMs *= 2) {
+        if (attempt > 0) {
+            // A late reply lands in the pause and is discarded by the next request.
+            const timespec pause{0, long(pauseMs) * 1000000L};
+            nanosleep(&pause, nullptr);
+        }
+        started = m_core->start(m_clock->micros());
+        if (started)
+            break;
+    }
+    if (!started) {
         m_pty.close();
         return servoStartFailure(m_bus->lastError());
     }

@@ -46,6 +46,13 @@ public:
     //! USB–TTL adapters deliver replies in USB frames (1 ms on full-speed USB, plus the
     //! driver's latency timer): 5 ms covers them with margin, where the ESP32 uses 1 ms.
     static constexpr std::uint32_t kDefaultServoTimeoutUs = 5000;
+    //! The servo's start-up (ping, position mode, present position, torque on) is tried this
+    //! often before the servo is declared absent: a servo (or hatpic-servo-sim on a loaded
+    //! machine) may answer its first request late. Between attempts the program waits
+    //! kServoStartPauseMs, doubling each time (20, 40, 80, 160 ms): at most about 0.3 s and
+    //! five timeouts before "does not answer". The ESP32 retries every second, forever.
+    static constexpr int kServoStartAttempts = 5;
+    static constexpr int kServoStartPauseMs = 20;
     static constexpr int kLinkTickMs = 1; //!< link service period when no bytes arrive [ms]
 
     struct Config

@@ -9,24 +9,32 @@ namespace hatpic {
 namespace {
 
 //! `file` with the device's blocks in it. A field the device holds as the same float keeps
-//! the file's value (0.15 stays 0.15, not 0.15000000596…); a block whose mix would break a
-//! cross-field rule is the device's whole.
+//! the file's value (0.15 stays 0.15, not 0.15000000596…); a changed one is written as the
+//! shortest decimal of the device's float (0.45, not 0.44999998807907104: the same numbers
+//! `hatpicctl get --json` writes); a block whose mix would break a cross-field rule is the
+//! device's whole. When the device's effects need more torque than the file's own
+//! host.tau_limit allows (a file written for a weaker device), that limit becomes the
+//! device's: the file must read back with what the device holds.
 Profile merged(const Profile &file, const fw::StoredSettings &settings, double tauLimit)
 {
+    const DeviceParams device = tidyDeviceParams(settings.params);
+    const EffectParams effects = tidyEffectParams(settings.effects);
     Profile out = file;
     for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
         if (float(file.device.field(i)) != float(settings.params.field(i)))
-            out.device.setField(i, settings.params.field(i));
+            out.device.setField(i, device.field(i));
     }
     if (!validate(out.device).empty())
-        out.device = settings.params;
+        out.device = device;
     const EffectParams fileOnWire = roundedForWire(file.effects, tauLimit);
     for (int i = 0; i < EffectParams::kFieldCount; ++i) {
         if (fileOnWire.field(i) != settings.effects.field(i))
-            out.effects.setField(i, settings.effects.field(i));
+            out.effects.setField(i, effects.field(i));
     }
     if (!validate(out.effects, out.host.tau_limit).empty())
-        out.effects = settings.effects;
+        out.effects = effects;
+    if (!validate(out.effects, out.host.tau_limit).empty())
+        out.host.tau_limit = shortestFloatDecimal(tauLimit);
     return out;
 }
 
@@ -78,9 +86,9 @@ bool ProfileParamStore::save(const fw::StoredSettings &settings)
     } else {
         profile.name = m_owner + QStringLiteral(" state");
         profile.notes = QStringLiteral("Parameters saved by %1 (SAVE_PARAMS).").arg(m_owner);
-        profile.device = settings.params;
-        profile.effects = settings.effects;
-        profile.host.tau_limit = m_tauLimit;
+        profile.device = tidyDeviceParams(settings.params);
+        profile.effects = tidyEffectParams(settings.effects);
+        profile.host.tau_limit = shortestFloatDecimal(m_tauLimit);
     }
     const QString error = writeProfile(profile, m_path);
     m_failure = error.toUtf8();

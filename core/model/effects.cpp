@@ -64,6 +64,14 @@ EffectParams roundedForWire(const EffectParams &effects, double tauLimit)
     return out;
 }
 
+EffectParams tidyEffectParams(const EffectParams &effects)
+{
+    EffectParams tidy = effects;
+    for (int i = 0; i < EffectParams::kFieldCount; ++i)
+        tidy.setField(i, shortestFloatDecimal(effects.field(i)));
+    return tidy;
+}
+
 bool sameOnWire(const EffectParams &a, const EffectParams &b)
 {
     for (int i = 0; i < EffectParams::kFieldCount; ++i) {

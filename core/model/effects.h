@@ -61,6 +61,8 @@ int firstViolatingField(const Vibration &vibration, double tauLimit, double cont
 EffectParams roundedForWire(const EffectParams &effects, double tauLimit);
 //! True when both blocks are the same float32 fields (what "in sync" means for a read-back).
 bool sameOnWire(const EffectParams &a, const EffectParams &b);
+//! tidyDeviceParams() (params.h) for the effect block.
+EffectParams tidyEffectParams(const EffectParams &effects);
 
 //! The torque-relevant fields in the scalar type that evaluates them.
 template<typename T> struct EffectShape

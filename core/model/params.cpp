@@ -147,6 +147,14 @@ double shortestFloatDecimal(double value)
     return out;
 }
 
+DeviceParams tidyDeviceParams(const DeviceParams &params)
+{
+    DeviceParams tidy = params;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
+        tidy.setField(i, shortestFloatDecimal(params.field(i)));
+    return tidy;
+}
+
 std::string formatNumber(double value)
 {
     if (std::isnan(value))

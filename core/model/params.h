@@ -92,6 +92,10 @@ bool sameOnWire(const DeviceParams &a, const DeviceParams &b);
 //! does not litter files with noise digits. Values that are not exactly a float are returned
 //! unchanged.
 double shortestFloatDecimal(double value);
+//! Each field through shortestFloatDecimal(): a block read from a device, as a person would
+//! write it (sending it back gives the device the identical floats). Every writer of a
+//! device's values (hatpicctl, the --state file's SAVE_PARAMS) uses it.
+DeviceParams tidyDeviceParams(const DeviceParams &params);
 
 //! Shortest decimal text that reads back as the same double ("0.4", "1e-06", "nan").
 std::string formatNumber(double value);

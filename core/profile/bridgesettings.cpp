@@ -106,7 +106,11 @@ std::string rangeRule(const SettingRange &range, bool whole)
 {
     const std::string low = formatNumber(range.low);
     const std::string high = formatNumber(range.high);
-    const std::string unit = range.unit.empty() ? "" : " " + std::string(range.unit);
+    // Appended, not `" " + std::string(...)`: GCC 12 at -O3 reports a false -Wrestrict on the
+    // operator+ of a literal and a temporary string.
+    std::string unit;
+    if (!range.unit.empty())
+        unit.append(" ").append(range.unit);
     if (range.aboveLow)
         return "above " + low + " and at most " + high + unit;
     if (whole && range.high == range.low + 1)

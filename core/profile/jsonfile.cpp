@@ -6,6 +6,7 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonParseError>
+#include <QSaveFile>
 
 #include <cerrno>
 #include <cmath>
@@ -49,6 +50,27 @@ QString illegalNumberDetail(const QByteArray &json, qsizetype end)
 }
 
 } // namespace
+
+QString replaceFileContents(const QString &path, const QByteArray &data)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return file.errorString();
+    // Flush and check before commit(): Qt 6.4's QSaveFile::commit() does not notice when the
+    // final flush of its write buffer fails (e.g. EFBIG, ENOSPC) and renames the truncated
+    // temporary file over the good one. A short write also comes back without an error text,
+    // so the system's errno is kept for the message. See docs/profile.md.
+    errno = 0;
+    if (file.write(data) != data.size() || !file.flush()) {
+        const int systemError = errno;
+        file.cancelWriting();
+        file.commit(); // discards the temporary file
+        return systemError != 0 ? qt_error_string(systemError) : file.errorString();
+    }
+    if (!file.commit())
+        return file.errorString();
+    return {};
+}
 
 QString byteLimitText(qint64 bytes)
 {

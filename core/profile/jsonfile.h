@@ -34,6 +34,12 @@ struct JsonObjectRead
 //! `json` as one JSON object whose every object names each key once.
 JsonObjectRead parseJsonObject(const QByteArray &json);
 
+//! Writes `data` to `path` through a temporary file in its folder that is renamed over it
+//! (QSaveFile): a write that fails (a full disk, the file-size limit) leaves the old file as it
+//! was, never cut short. Empty on success, else why, in the system's words ("No space left on
+//! device").
+QString replaceFileContents(const QString &path, const QByteArray &data);
+
 //! A size limit as people read it: "1 MiB", "64 KiB", else "N bytes".
 QString byteLimitText(qint64 bytes);
 

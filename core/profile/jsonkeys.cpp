@@ -2,20 +2,22 @@
 
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QList>
 #include <QSet>
+
+#include <vector>
 
 namespace hatpic {
 
 namespace {
 
+// One open object or array. No path is kept per level (that cost O(depth² · key length) in a
+// deeply nested file): the path of a duplicate is put together from the stack when one is found.
 struct Level
 {
     bool object = false;
     bool expectKey = false; //!< the next string is a key
-    QString path;           //!< the container's own path: "" at the top, "device", "a[]"
-    QString lastKey;
-    QSet<QString> keys;
+    QString lastKey;        //!< an object's latest key: the name of what it holds now
+    QSet<QString> keys;     //!< an object's keys so far
 };
 
 // The text of one JSON string token (quotes included), escapes resolved by Qt's own reader.
@@ -24,8 +26,16 @@ QString decodeString(const QByteArray &token)
     return QJsonDocument::fromJson('[' + token + ']').array().at(0).toString();
 }
 
-QString member(const QString &path, const QString &key)
+//! "device.K_max", "extra[].a": the path of `key` in the innermost of `stack`.
+QString pathOf(const std::vector<Level> &stack, const QString &key)
 {
+    QString path;
+    for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
+        if (stack[i].object)
+            path += (path.isEmpty() ? QString() : QStringLiteral(".")) + stack[i].lastKey;
+        else
+            path += QStringLiteral("[]");
+    }
     return path.isEmpty() ? key : path + u'.' + key;
 }
 
@@ -33,20 +43,20 @@ QString member(const QString &path, const QString &key)
 
 QString firstDuplicateKey(const QByteArray &json)
 {
-    QList<Level> stack;
+    std::vector<Level> stack;
     for (qsizetype i = 0; i < json.size(); ++i) {
         const char c = json.at(i);
         if (c == '"') {
             qsizetype end = i + 1;
             while (end < json.size() && json.at(end) != '"')
                 end += json.at(end) == '\\' ? 2 : 1;
-            if (!stack.isEmpty() && stack.last().object && stack.last().expectKey) {
-                Level &level = stack.last();
-                const QString key = decodeString(json.mid(i, end - i + 1));
+            if (!stack.empty() && stack.back().object && stack.back().expectKey) {
+                Level &level = stack.back();
+                QString key = decodeString(json.mid(i, end - i + 1));
                 if (level.keys.contains(key))
-                    return member(level.path, key);
+                    return pathOf(stack, key);
                 level.keys.insert(key);
-                level.lastKey = key;
+                level.lastKey = std::move(key);
                 level.expectKey = false;
             }
             i = end;
@@ -54,17 +64,12 @@ QString firstDuplicateKey(const QByteArray &json)
             Level level;
             level.object = c == '{';
             level.expectKey = level.object;
-            if (!stack.isEmpty()) {
-                const Level &outer = stack.last();
-                level.path = outer.object ? member(outer.path, outer.lastKey)
-                                          : outer.path + QStringLiteral("[]");
-            }
-            stack.append(std::move(level));
+            stack.push_back(std::move(level));
         } else if (c == '}' || c == ']') {
-            if (!stack.isEmpty())
-                stack.removeLast();
-        } else if (c == ',' && !stack.isEmpty() && stack.last().object) {
-            stack.last().expectKey = true;
+            if (!stack.empty())
+                stack.pop_back();
+        } else if (c == ',' && !stack.empty() && stack.back().object) {
+            stack.back().expectKey = true;
         }
     }
     return {};

@@ -269,24 +269,20 @@ QString writeProfile(const Profile &profile, const QString &path)
         return u"refusing to write an invalid profile to \"" + path + u"\": " +
                problems.join(u"; ");
 
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return u"cannot write profile \"" + path + u"\": " + file.errorString();
+    // Nor one that reads would refuse: larger than a profile may be (long notes, say, grown by
+    // a save), or anything else parseProfile() would not take back.
     const QByteArray data = serializeProfile(profile);
-    // Flush and check before commit(): Qt 6.4's QSaveFile::commit() does not notice when the
-    // final flush of its write buffer fails (e.g. EFBIG, ENOSPC) and renames the truncated
-    // temporary file over the good one. A short write also comes back without an error text,
-    // so the system's errno is kept for the message. See docs/profile.md.
-    errno = 0;
-    if (file.write(data) != data.size() || !file.flush()) {
-        const int systemError = errno;
-        file.cancelWriting();
-        file.commit(); // discards the temporary file
-        const QString reason = systemError != 0 ? qt_error_string(systemError) : file.errorString();
-        return u"cannot write profile \"" + path + u"\": " + reason;
-    }
-    if (!file.commit())
-        return u"cannot write profile \"" + path + u"\": " + file.errorString();
+    if (data.size() > kMaxProfileBytes)
+        return u"refusing to write profile \"" + path + u"\": it would be " +
+               QString::number(data.size()) + u" bytes, more than the " +
+               byteLimitText(kMaxProfileBytes) + u" a profile may be, so it could not be read " +
+               u"back (shorten its notes or name)";
+    if (const ProfileReadResult back = parseProfile(data); !back.ok())
+        return u"refusing to write profile \"" + path + u"\": it would not read back (" +
+               back.errors.join(u"; ") + u')';
+
+    if (const QString why = replaceFileContents(path, data); !why.isEmpty())
+        return u"cannot write profile \"" + path + u"\": " + why;
     return {};
 }
 

@@ -38,18 +38,21 @@ QString violationsText(const DeviceParams &p)
     return parts.join(QStringLiteral("; "));
 }
 
-//! The simulated clock as the device reads it: whole µs, wrapping at 2³².
+//! The clock as the device core reads it between cycles (it stamps SET_FEEDBACK with it):
+//! whole µs, wrapping at 2³².
 class SimClock : public fw::Clock
 {
 public:
-    explicit SimClock(const double &seconds) : m_seconds(seconds) {}
+    explicit SimClock(std::function<std::int64_t()> microseconds)
+        : m_microseconds(std::move(microseconds))
+    {}
     std::uint32_t micros() override
     {
-        return std::uint32_t(std::uint64_t(std::llround(m_seconds * 1e6)) & 0xFFFFFFFFu);
+        return std::uint32_t(std::uint64_t(m_microseconds()) & 0xFFFFFFFFu);
     }
 
 private:
-    const double &m_seconds;
+    std::function<std::int64_t()> m_microseconds;
 };
 
 //! Ideal mode's actuator: no servo, no quantisation, no noise. The knob *is* the admittance
@@ -126,7 +129,11 @@ public:
     std::optional<fw::StsActuator<double>> stsActuator;
     std::optional<IdealActuator> idealActuator;
     EmulatedUart uart;
-    SimClock simClock{clock};
+    // The start of the next cycle to run, not the simulated time: cycle n runs once the clock
+    // has passed its end, (n+1)·h, but renders from n·h on. A SET_FEEDBACK that arrives
+    // meanwhile is rendered from cycle n on, so it is stamped n·h; stamped with the clock, the
+    // watchdog held τ_ext up to one period longer than its 200 ms (issue 27).
+    SimClock simClock{[this] { return cycleMicros(cycles); }};
     std::optional<ProfileParamStore> store; //!< SAVE_PARAMS into a profile (simulator.md § 7)
 
     // v2: our firmware's device core. Legacy: the published firmware's protocol around the

@@ -30,6 +30,9 @@ using recording::kFormatTag;
 using recording::kFormatVersion;
 using recording::kMaxLineBytes;
 using recording::kMaxMetadataBytes;
+using recording::kMaxReadEventChars;
+using recording::kMaxReadEvents;
+using recording::kMaxReadSamples;
 constexpr int kMaxWarnings = 20; //!< warnings a reader lists before it stops listing
 
 //! Splits one CSV line (no line break) into fields; false on a broken quote.
@@ -223,6 +226,15 @@ void applyMetadata(const QByteArray &text, const QString &fileName, Recording &r
             }
         }
         if (!known && !fromMetadata.contains({event.text, event.t_s})) {
+            // Within what the CSV's rows were read for, and within the bounds on events.
+            if (rec.heldUntil_s && event.t_s > *rec.heldUntil_s)
+                continue;
+            if (rec.events.size() >= kMaxReadEvents) {
+                warnings.prepend(fileName % u": events after the first " %
+                                 QString::number(kMaxReadEvents) %
+                                 u" are not shown: a replay holds at most that many.");
+                break;
+            }
             fromMetadata.insert({event.text, event.t_s});
             rec.events.append(event);
         }
@@ -295,6 +307,8 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
     QList<QByteArray> fields;
     QString problem;
     const QStringList columns = recordingColumns();
+    qint64 eventChars = 0;
+    bool eventsCut = false;
     int warningsLeft = kMaxWarnings;
     auto warn = [&](const QString &message) {
         if (warningsLeft-- > 0)
@@ -420,10 +434,29 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
         if (!rec.samples.isEmpty() && s.t_s < rec.samples.last().t_s) {
             warn(u"line " % QString::number(lineNumber) % u": t_s goes back in time.");
         }
-        if (index[kColEvent] >= 0) {
+        if (rec.samples.size() >= kMaxReadSamples) {
+            // Bounded: what a replay holds. Said first, whatever else was said.
+            rec.heldUntil_s = rec.samples.constLast().t_s;
+            out.warnings.prepend(
+                u"Only the first " % QString::number(kMaxReadSamples) % u" samples (to t_s = " %
+                QString::number(*rec.heldUntil_s, 'f', 3) % u" s) are shown: " % name %
+                u" holds more, and a replay holds at most that many; the rest was not read.");
+            break;
+        }
+        if (index[kColEvent] >= 0 && !fields[index[kColEvent]].isEmpty() && !eventsCut) {
             const QString event = QString::fromUtf8(fields[index[kColEvent]]);
-            if (!event.isEmpty())
+            eventsCut = rec.events.size() >= kMaxReadEvents ||
+                        eventChars + event.size() > kMaxReadEventChars;
+            if (eventsCut) {
+                out.warnings.prepend(u"Events from line " % QString::number(lineNumber) %
+                                     u" on are not shown: a replay holds at most " %
+                                     QString::number(kMaxReadEvents) % u" events and " %
+                                     QString::number(kMaxReadEventChars) %
+                                     u" characters of their text.");
+            } else {
+                eventChars += event.size();
                 rec.events.append({s.t_s, event});
+            }
         }
         rec.samples.append(s);
     }

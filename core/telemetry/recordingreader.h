@@ -18,6 +18,9 @@ struct Recording
     bool hasMetadata = false;
     QList<Sample> samples;
     QList<RecordingEvent> events; //!< from the event column (and the .json)
+    //! Set when the file holds more samples than a reader holds (recordingformat.h): the time
+    //! of the last sample read; the rest of the file was not read [s].
+    std::optional<double> heldUntil_s;
 };
 
 struct RecordingReadResult
@@ -28,7 +31,9 @@ struct RecordingReadResult
 };
 
 //! Reads a recording CSV (and its .json beside it when present). Bounded: refuses files
-//! over `maxBytes`.
+//! over `maxBytes`, and holds at most recording::kMaxReadSamples samples and kMaxReadEvents
+//! events (kMaxReadEventChars of their text); a file with more is read up to there, with a
+//! warning that says so first.
 RecordingReadResult readRecording(const QString &csvPath, qint64 maxBytes = 2LL << 30);
 //! The same reading from memory: `csv` holds the CSV file, `metadata` its .json (std::nullopt
 //! when there is none); `name` stands for the CSV's path in messages.

@@ -1,5 +1,6 @@
 // `hatpicctl experiment`, run as a real process against the in-process simulated joystick:
 // its usage errors, the three experiments' tables and CSV files, and the refusals.
+#include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
@@ -7,6 +8,8 @@
 #include <QTest>
 
 #include <cmath>
+#include <sys/resource.h>
+#include <sys/stat.h>
 
 using namespace Qt::StringLiterals;
 
@@ -25,10 +28,17 @@ struct Outcome
     }
 };
 
-Outcome hatpicctl(QStringList arguments)
+//! `fileSizeLimit` > 0: run under that RLIMIT_FSIZE [bytes] (a disk that fills up).
+Outcome hatpicctl(QStringList arguments, qint64 fileSizeLimit = 0)
 {
     arguments.prepend(u"experiment"_s);
     QProcess p;
+    if (fileSizeLimit > 0) {
+        p.setChildProcessModifier([fileSizeLimit] {
+            const rlimit limit{rlim_t(fileSizeLimit), rlim_t(fileSizeLimit)};
+            ::setrlimit(RLIMIT_FSIZE, &limit);
+        });
+    }
     p.start(QStringLiteral(HATPICCTL_PATH), arguments);
     Outcome o;
     if (p.waitForFinished(kTimeoutMs) && p.exitStatus() == QProcess::NormalExit)
@@ -110,6 +120,9 @@ private Q_SLOTS:
     void spectrumOfAConstantKnob();
     void refusesALegacyDevice();
     void keepsAnExistingCsv();
+    void csvTargetCheckedBeforeThePort_data();
+    void csvTargetCheckedBeforeThePort();
+    void failedCsvWriteKeepsTheOldFile();
 
 private:
     QTemporaryDir m_dir;
@@ -283,8 +296,60 @@ void TestHatpicCtlExperiment::keepsAnExistingCsv()
     }
     const Outcome o = hatpicctl({u"spectrum"_s, u"--port"_s, u"sim"_s, u"--csv"_s, csv});
     QVERIFY2(o.exitCode == 4, qPrintable(o.text()));
-    QVERIFY(o.err.contains(u"add --force"_s));
+    QVERIFY(o.err.contains(u"--force"_s));
     QCOMPARE(csvLines(csv), QStringList{u"mine"_s});
+}
+
+void TestHatpicCtlExperiment::csvTargetCheckedBeforeThePort_data()
+{
+    QTest::addColumn<QString>("target"); // in the test's folder
+    QTest::addColumn<QString>("says");
+    QTest::newRow("missing folder") << u"nowhere/out.csv"_s << u"its folder does not exist"_s;
+    QTest::newRow("FIFO") << u"fifo.csv"_s << u"is not a regular file (a device or pipe)"_s;
+    QTest::newRow("folder") << u"afolder"_s << u"is not a regular file (a folder)"_s;
+}
+
+// The CSV's target is checked before the port is opened, as stream's is (issue 27: found
+// after the run; a FIFO hung forever): here no port could be opened at all, and the target's
+// problem is what is said.
+void TestHatpicCtlExperiment::csvTargetCheckedBeforeThePort()
+{
+    QFETCH(QString, target);
+    QFETCH(QString, says);
+    QTemporaryDir dir;
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath(u"fifo.csv"_s)).constData(), 0600) == 0);
+    QVERIFY(QDir(dir.path()).mkdir(u"afolder"_s));
+    const QString path = dir.filePath(target);
+    for (const QStringList &force : {QStringList{}, QStringList{u"--force"_s}}) {
+        const Outcome o = hatpicctl(
+            QStringList{u"step"_s, u"--port"_s, dir.filePath(u"no-port"_s), u"--csv"_s, path} +
+            force);
+        QVERIFY2(o.exitCode == 4, qPrintable(o.text()));
+        QVERIFY2(o.err.contains(path) && o.err.contains(says), qPrintable(o.text()));
+        QVERIFY(o.out.isEmpty());
+    }
+}
+
+// --force over an existing CSV on a disk that fills up (RLIMIT_FSIZE: EFBIG): the write fails
+// with the reason, and the old file stays whole (issue 27: left at 0 bytes).
+void TestHatpicCtlExperiment::failedCsvWriteKeepsTheOldFile()
+{
+    const QString csv = m_dir.filePath(u"full.csv"_s);
+    const QByteArray old = QByteArray("frequency_hz,magnitude\n") + QByteArray(100, '1') + '\n';
+    {
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(old);
+    }
+    const Outcome o = hatpicctl({u"bode"_s, u"--port"_s, u"sim"_s, u"--frequencies"_s, u"4,8,16"_s,
+                                 u"--cycles"_s, u"2"_s, u"--csv"_s, csv, u"--force"_s},
+                                64);
+    QVERIFY2(o.exitCode == 4, qPrintable(o.text()));
+    QVERIFY2(o.err.contains(u"Cannot write "_s + csv + u": File too large"_s),
+             qPrintable(o.text()));
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), old);
 }
 
 QTEST_GUILESS_MAIN(TestHatpicCtlExperiment)

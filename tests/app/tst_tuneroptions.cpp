@@ -1,9 +1,14 @@
 // hatpic-tuner as a real process: numeric options out of range or not numbers are refused
 // before the window opens, with one sentence and exit code 2 (issue 10, "Hostile input").
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <csignal>
 
 using namespace Qt::StringLiterals;
 
@@ -55,6 +60,8 @@ private Q_SLOTS:
     void refusesBadNumbers_data();
     void refusesBadNumbers();
     void quitAfterCloses();
+    void signalClosesTheRecording_data();
+    void signalClosesTheRecording();
     void helpAndErrorsNeedNoDisplay_data();
     void helpAndErrorsNeedNoDisplay();
     void qtOptionsStillWork();
@@ -115,6 +122,58 @@ void TestTunerOptions::quitAfterCloses()
     const Run run = runTuner(m_config.path(), {u"--quit-after"_s, u"0.5"_s}, 30000);
     QVERIFY2(run.code == 0, qPrintable(u"exit "_s + QString::number(run.code) + u", stderr: "_s +
                                        QString::fromUtf8(run.err)));
+}
+
+void TestTunerOptions::signalClosesTheRecording_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::addColumn<int>("code");
+    QTest::newRow("SIGTERM") << int(SIGTERM) << 0;
+    QTest::newRow("SIGHUP") << int(SIGHUP) << 128 + SIGHUP;
+    QTest::newRow("SIGINT") << int(SIGINT) << 0;
+}
+
+// The real tuner, offscreen, recording the simulated joystick, ended by a signal: the
+// recording is closed — every buffered row on disk, its .json saying so (issue 27: a kill lost
+// the rows and left "closed": false).
+void TestTunerOptions::signalClosesTheRecording()
+{
+    QFETCH(int, signal);
+    QFETCH(int, code);
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(u"run.csv"_s);
+    QProcess process;
+    process.setProgram(QStringLiteral(HATPIC_TUNER_PATH));
+    process.setArguments({u"--port"_s, u"sim"_s, u"--record"_s, csv});
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
+    env.insert(u"XDG_CONFIG_HOME"_s, m_config.path());
+    env.insert(u"XDG_RUNTIME_DIR"_s, m_config.path());
+    process.setProcessEnvironment(env);
+    process.start();
+    QVERIFY(process.waitForStarted(10000));
+    // Recording: the .json is written at the start; then a second of samples.
+    const QString json = dir.filePath(u"run.json"_s);
+    QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(json), 30000);
+    QTest::qWait(1500);
+    QCOMPARE(::kill(pid_t(process.processId()), signal), 0);
+    QVERIFY(process.waitForFinished(15000));
+    QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(process.exitCode() == code,
+             qPrintable(u"exit %1: %2"_s.arg(process.exitCode())
+                            .arg(QString::fromUtf8(process.readAllStandardError()))));
+
+    QFile metaFile(json);
+    QVERIFY(metaFile.open(QIODevice::ReadOnly));
+    const QJsonObject meta = QJsonDocument::fromJson(metaFile.readAll()).object();
+    QCOMPARE(meta.value(u"closed"_s).toBool(false), true);
+    QFile csvFile(csv);
+    QVERIFY(csvFile.open(QIODevice::ReadOnly));
+    const QByteArray rows = csvFile.readAll();
+    QVERIFY(rows.endsWith('\n'));
+    const qint64 samples = rows.count('\n') - 1; // the header
+    QVERIFY2(samples > 100, qPrintable(QString::number(samples)));
+    QCOMPARE(qint64(meta.value(u"samples"_s).toDouble()), samples);
 }
 
 // Without a display QApplication aborts (SIGABRT): help and option errors come before it

@@ -141,14 +141,11 @@ void ParameterEditor::revert()
     if (!device.params)
         return;
     Tuning t = tuning();
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        t.device.setField(i, shortestFloatDecimal(device.params->field(i)));
+    t.device = tidyDeviceParams(*device.params);
     // The device's float32 effects, unless they are the edited ones as sent: the defaults ±π
     // travel as the float just inside π and need no revert.
-    if (const auto &fx = device.effects; fx && !sameOnWire(effectsOnWire(), *fx)) {
-        for (int i = 0; i < EffectParams::kFieldCount; ++i)
-            t.effects.setField(i, shortestFloatDecimal(fx->field(i)));
-    }
+    if (const auto &fx = device.effects; fx && !sameOnWire(effectsOnWire(), *fx))
+        t.effects = tidyEffectParams(*fx);
     setTuning(t, tr("Revert to device values"));
 }
 

@@ -21,7 +21,16 @@ struct EventMarker
 //! Four times the live-push interval: a drag stays one burst, separate pushes stay apart.
 inline constexpr double kEventBurstGap = 0.4; // [s]
 
-//! Groups time-ordered `events` into bursts (the gap is between neighbours).
-QList<EventMarker> groupEvents(const QList<RecordingEvent> &events, double gap = kEventBurstGap);
+//! Most markers the plots draw: a long recording's events become at most this many (a plot item
+//! each per plot; QCustomPlot's item lists cost O(n) per item added or removed).
+inline constexpr qsizetype kMaxEventMarkers = 500;
+//! Most lines of a marker's details; the rest are counted ("(and 12 more)").
+inline constexpr qsizetype kMaxDetailLines = 20;
+
+//! Groups time-ordered `events` into bursts (the gap is between neighbours), at most
+//! `maxMarkers` of them: a burst also lasts at least the events' span over that many, and the
+//! last marker takes whatever is left. Linear in the events.
+QList<EventMarker> groupEvents(const QList<RecordingEvent> &events, double gap = kEventBurstGap,
+                               qsizetype maxMarkers = kMaxEventMarkers);
 
 } // namespace hatpic

@@ -397,6 +397,22 @@ void MainWindow::writeSettings() const
     settings.setValue(QStringLiteral("view/theme"), ThemeController::key(m_theme->choice()));
 }
 
+void MainWindow::recordOnConnect(const QString &csvPath)
+{
+    auto start = [this, csvPath] { m_client->startRecording(csvPath, RecordingPlan{}); };
+    if (m_client->state() == SessionState::Connected) {
+        start();
+        return;
+    }
+    auto *once = new QObject(this);
+    connect(m_client, &DeviceClient::stateChanged, once, [once, start](SessionState state) {
+        if (state != SessionState::Connected)
+            return;
+        start();
+        once->deleteLater();
+    });
+}
+
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     if (!m_profiles->maybeSave()) {

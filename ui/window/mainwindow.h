@@ -55,6 +55,11 @@ public:
     //! when it could not start; the panel says why.
     bool startBridge(int rosVersion);
 
+    //! Records every sample to `csvPath` (and its .json) from the next time the device is
+    //! connected (at once when it is), as Record would, starting at once whatever the plan
+    //! (hatpic-tuner --record).
+    void recordOnConnect(const QString &csvPath);
+
     //! Enters replay of a recording; false (with `error`) when it cannot be read.
     bool openRecording(const QString &csvPath, QString *error = nullptr);
     void backToLive();

@@ -110,6 +110,7 @@ private Q_SLOTS:
     void everyEndingSignalDisablesTorque_data();
     void everyEndingSignalDisablesTorque();
     void silentServoFails();
+    void servoAnsweringLateAtStartIsWaitedFor();
     void wronglyAnsweringServoFails();
     void experimentFailsWhenTheTorqueGoesOff();
     void badOptions_data();
@@ -385,6 +386,48 @@ void TestFirmwareHost::silentServoFails()
     QVERIFY(host.readAllStandardOutput().isEmpty());
     const QString error = QString::fromUtf8(host.readAllStandardError());
     QVERIFY2(error.contains(u"does not answer"_s), qPrintable(error));
+}
+
+namespace {
+
+//! Write system calls `pid` has made so far (/proc/PID/io's syscw); -1 when unknown.
+qint64 writeCalls(qint64 pid)
+{
+    QFile io(u"/proc/%1/io"_s.arg(pid));
+    if (!io.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray &line : io.readAll().split('\n')) {
+        if (line.startsWith("syscw:"))
+            return line.mid(6).trimmed().toLongLong();
+    }
+    return -1;
+}
+
+} // namespace
+
+// hatpic-servo-sim stopped while hatpic-fw-host (default 5 ms reply timeout) sends its first
+// start-up ping, continued once that ping has timed out: the start-up is tried again and the
+// program comes up (issue 27: one unanswered ping ended it).
+void TestFirmwareHost::servoAnsweringLateAtStartIsWaitedFor()
+{
+    PtyProgram servo(servoSim(), {});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    const auto servoPid = pid_t(servo.process().processId());
+    QCOMPARE(::kill(servoPid, SIGSTOP), 0);
+    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    QVERIFY(host.process().waitForStarted(kTimeoutMs));
+    const qint64 hostPid = host.process().processId();
+    // Its first write is the ping (nothing is printed before the servo is up).
+    const qint64 before = writeCalls(hostPid);
+    QElapsedTimer waited;
+    waited.start();
+    while (writeCalls(hostPid) <= std::max<qint64>(before, 0) &&
+           host.process().state() == QProcess::Running && waited.elapsed() < kTimeoutMs)
+        QTest::qWait(1);
+    QTest::qWait(10); // twice the reply timeout: the first ping went unanswered
+    QCOMPARE(::kill(servoPid, SIGCONT), 0);
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    QVERIFY2(!host.errors().contains(u"does not answer"_s), qPrintable(host.errors()));
 }
 
 // Something answers on the bus, but not as a servo: told apart from silence (issue 21).

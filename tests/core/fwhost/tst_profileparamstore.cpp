@@ -60,6 +60,9 @@ private Q_SLOTS:
     void fileItCannotRewriteWholeIsLeftAlone();
     void failureSaysWhy();
     void saveProblemAtStart();
+    void savedNumbersAreTheFloatsShortestDecimals();
+    void effectsAboveTheFilesTauLimitAreSaved();
+    void saveThatWouldNotReadBackIsRefused();
 };
 
 void TestProfileParamStore::newFileNamesItsOwner()
@@ -108,7 +111,7 @@ void TestProfileParamStore::saveChangesOnlyTheDeviceAndEffects()
     const ProfileReadResult read = readProfile(path);
     QVERIFY2(read.ok(), qPrintable(read.errors.join(u"; ")));
     Profile expected = userProfile();
-    expected.device.K_max = double(0.35f);
+    expected.device.K_max = 0.35; // the float's shortest decimal, as `get --json` writes it
     expected.effects.wall_stiffness = 2.0;
     QCOMPARE(read.profile->name, expected.name);
     QCOMPARE(read.profile->notes, expected.notes);
@@ -182,6 +185,80 @@ void TestProfileParamStore::saveProblemAtStart()
     QCOMPARE(
         ProfileParamStore(dir.filePath(u"state.json"_s), u"hatpic-sim"_s, kTauLimit).saveProblem(),
         QString());
+}
+
+void TestProfileParamStore::savedNumbersAreTheFloatsShortestDecimals()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(u"knob.json"_s);
+    QCOMPARE(writeProfile(userProfile(), path), QString());
+    ProfileParamStore store(path, u"hatpic-sim"_s, kTauLimit);
+    fw::StoredSettings settings = asDevice(userProfile());
+    settings.params.K_max = double(0.45f); // 0.44999998807907104
+    settings.effects.detent_range = double(1.1f);
+    QVERIFY(store.save(settings));
+    const QByteArray text = contents(path);
+    QVERIFY2(text.contains("\"K_max\": 0.45,") && text.contains("\"detent_range\": 1.1"),
+             text.constData());
+    QVERIFY2(!text.contains("0.449999") && !text.contains("1.100000"), text.constData());
+    // And a new file likewise.
+    const QString fresh = dir.filePath(u"new.json"_s);
+    QVERIFY(ProfileParamStore(fresh, u"hatpic-sim"_s, kTauLimit).save(settings));
+    QVERIFY2(contents(fresh).contains("\"K_max\": 0.45,"), contents(fresh).constData());
+}
+
+void TestProfileParamStore::effectsAboveTheFilesTauLimitAreSaved()
+{
+    // The file's own host.tau_limit (0.4) is below the device's (0.44), and the device holds a
+    // detent stronger than the file's limit: the save keeps the device's effects and raises
+    // the file's limit to the device's, so that the file reads back.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(u"knob.json"_s);
+    QCOMPARE(writeProfile(userProfile(), path), QString());
+    ProfileParamStore store(path, u"hatpic-sim"_s, kTauLimit);
+    fw::StoredSettings settings = asDevice(userProfile());
+    settings.effects.detent_strength = double(0.42f);
+    QVERIFY2(store.save(settings), store.failure().data());
+    const ProfileReadResult read = readProfile(path);
+    QVERIFY2(read.ok(), qPrintable(read.errors.join(u"; ")));
+    QCOMPARE(read.profile->effects.detent_strength, 0.42);
+    QCOMPARE(read.profile->host.tau_limit, kTauLimit);
+    fw::StoredSettings loaded;
+    QVERIFY(store.load(loaded));
+    // Effects within the file's limit leave it as the user wrote it.
+    settings.effects.detent_strength = double(0.25f);
+    QCOMPARE(writeProfile(userProfile(), path), QString());
+    QVERIFY(store.save(settings));
+    QCOMPARE(readProfile(path).profile->host.tau_limit, 0.4);
+}
+
+void TestProfileParamStore::saveThatWouldNotReadBackIsRefused()
+{
+    // A profile just under the 1 MiB a profile may be (long notes); SAVE_PARAMS changes K_max
+    // from 0.3 to 0.375, two characters more: the file would be just over the limit, which
+    // load() (and every reader) refuses. The save is refused and the old file stays.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(u"knob.json"_s);
+    Profile profile = userProfile();
+    profile.notes = QString();
+    const qsizetype base = serializeProfile(profile).size();
+    profile.notes = QString(kMaxProfileBytes - 1 - base, u'n');
+    QCOMPARE(serializeProfile(profile).size(), kMaxProfileBytes - 1);
+    QCOMPARE(writeProfile(profile, path), QString());
+    const QByteArray before = contents(path);
+
+    ProfileParamStore store(path, u"hatpic-sim"_s, kTauLimit);
+    fw::StoredSettings settings = asDevice(profile);
+    settings.params.K_max = 0.375;
+    QVERIFY(!store.save(settings));
+    const QString failure = QString::fromUtf8(store.failure());
+    QVERIFY2(failure.contains(path) && failure.contains(u"1048577 bytes"_s) &&
+                 failure.contains(u"1 MiB"_s),
+             qPrintable(failure));
+    QCOMPARE(contents(path), before);
+    fw::StoredSettings loaded;
+    QVERIFY2(store.load(loaded), qPrintable(store.warning()));
+    QCOMPARE(loaded.params.K_max, 0.3);
 }
 
 QTEST_GUILESS_MAIN(TestProfileParamStore)

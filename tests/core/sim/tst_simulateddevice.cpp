@@ -127,6 +127,7 @@ private Q_SLOTS:
     void telemetryConsistent();
     void telemetryClockWraps();
     void watchdog();
+    void watchdogHoldsNoLongerThanItsTimeAtLowRates();
     void feedbackAppliedWhateverSeq();
     void zeroAndRepeatedSeq();
     void repeatedCommandAnsweredNotApplied();
@@ -447,6 +448,40 @@ void TestSimulatedDevice::watchdog()
     QCOMPARE(cycle.tau_ext, 0.0);
 }
 
+void TestSimulatedDevice::watchdogHoldsNoLongerThanItsTimeAtLowRates()
+{
+    // At 37 Hz a period is 27 ms. A SET_FEEDBACK arriving just before a cycle's interval ends
+    // is rendered from that cycle's start on: its 200 ms run from there, not from its arrival
+    // (issue 27: 8 cycles, 216 ms).
+    SimulatedDevice::Config c = fastConfig();
+    c.ideal = true;
+    c.controlRateHz = 37;
+    Host host(c);
+    const double period = 1.0 / c.controlRateHz;
+    for (int i = 0; i < 10; ++i)
+        host.device.step();
+    host.send(1, v2::SetFeedback{0.1f});
+    QVERIFY(host.device.step().tau_ext == double(0.1f)); // fresh feedback for the clock to run
+    for (int i = 0; i < 10; ++i)
+        host.device.step();
+    host.device.advance(period * 0.99); // the next cycle's interval is nearly over
+    host.send(2, v2::SetFeedback{0.2f});
+    double first = -1;
+    double end = -1;
+    for (int i = 0; i < 20; ++i) {
+        const SimulatedDevice::Cycle cycle = host.device.step();
+        if (cycle.tau_ext == double(0.2f)) {
+            if (first < 0)
+                first = cycle.t;
+            end = cycle.t + period; // in force until the next cycle
+        }
+    }
+    QVERIFY(first >= 0);
+    const double held = end - first;
+    QVERIFY2(held <= 0.200 + 1e-9, qPrintable(u"held %1 ms"_s.arg(held * 1e3)));
+    QVERIFY2(held > 0.200 - period, qPrintable(u"held %1 ms"_s.arg(held * 1e3)));
+}
+
 void TestSimulatedDevice::feedbackAppliedWhateverSeq()
 {
     SimulatedDevice::Config c = fastConfig();
@@ -584,7 +619,9 @@ void TestSimulatedDevice::saveParamsPersistsAndReloads()
     }
     const ProfileReadResult read = readProfile(path);
     QVERIFY2(read.ok(), qPrintable(read.errors.join(u"; "_s)));
-    QCOMPARE(read.profile->device, f32Params(saved));
+    // The file holds each float's shortest decimal (1.2, not 1.2000000476837158).
+    QCOMPARE(read.profile->device, tidyDeviceParams(f32Params(saved)));
+    QCOMPARE(read.profile->device.K_max, 1.2);
     // Power-up again: the saved block is restored and the device starts at its theta0.
     Host again(c);
     QVERIFY(again.device.stateWarning().isEmpty());

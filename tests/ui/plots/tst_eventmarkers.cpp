@@ -14,6 +14,8 @@ private Q_SLOTS:
     void dragIsOneMarker();
     void multiParameterPushHasShortLabel();
     void otherTextAppearsOnce();
+    void manyBurstsBecomeAtMostTheMostMarkers();
+    void longBurstListsAFewAndCountsTheRest();
 };
 
 void TestEventMarkers::separateEventsStaySeparate()
@@ -65,6 +67,40 @@ void TestEventMarkers::otherTextAppearsOnce()
     QCOMPARE(m.size(), 1);
     QCOMPARE(m[0].label, u"p_ref, K_max"_s);
     QCOMPARE(m[0].details, u"K_max 1 → 2\np_ref reset to 0\n(3 events)"_s);
+}
+
+// A recording with 20 000 separate events (issue 27): at most kMaxEventMarkers markers, every
+// event in one of them.
+void TestEventMarkers::manyBurstsBecomeAtMostTheMostMarkers()
+{
+    QList<RecordingEvent> events;
+    for (int i = 0; i < 20000; ++i)
+        events.append({1.0 * i, u"note %1"_s.arg(i)});
+    const QList<EventMarker> m = groupEvents(events);
+    QVERIFY2(m.size() <= kMaxEventMarkers && m.size() > kMaxEventMarkers / 2,
+             qPrintable(QString::number(m.size())));
+    int count = 0;
+    for (const EventMarker &marker : m)
+        count += marker.count;
+    QCOMPARE(count, 20000);
+    QCOMPARE(m.first().t_s, 0.0);
+}
+
+// 5000 different parameters changed in one burst: the details list kMaxDetailLines of them
+// and count the rest.
+void TestEventMarkers::longBurstListsAFewAndCountsTheRest()
+{
+    QList<RecordingEvent> events;
+    for (int i = 0; i < 5000; ++i)
+        events.append({0.01 * i, u"p%1 1 → 2"_s.arg(i)});
+    const QList<EventMarker> m = groupEvents(events);
+    QCOMPARE(m.size(), 1);
+    QCOMPARE(m[0].label, u"p0 +4999"_s);
+    const QStringList lines = m[0].details.split(u'\n');
+    QCOMPARE(lines.size(), kMaxDetailLines + 2);
+    QCOMPARE(lines.first(), u"p0 1 → 2"_s);
+    QCOMPARE(lines[kMaxDetailLines], u"(and 4980 more)"_s);
+    QCOMPARE(lines.last(), u"(5000 events)"_s);
 }
 
 QTEST_APPLESS_MAIN(TestEventMarkers)

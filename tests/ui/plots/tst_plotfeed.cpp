@@ -1,9 +1,12 @@
 // PlotFeed: the plots' one source. Live it keeps every batch and shows the device's parameters
 // and events; a recording replaces all of that at once, and back to live restores it; pause
 // means the plots live and the playback in replay; a refused file changes nothing.
+#include "plots/eventmarkers.h"
 #include "plots/plotfeed.h"
 #include "plots/plotpanel.h"
+#include "plots/qcp.h"
 #include "plots/replaycontroller.h"
+#include "telemetry/recordingformat.h"
 #include "telemetry/recordingwriter.h"
 
 #include <QFile>
@@ -28,6 +31,27 @@ SampleBatch ramp(double start, int count)
     return batch;
 }
 
+//! A recording with only t_s, theta and the event column: `rows` rows `step` s apart, each with
+//! an event of its own text ("e17": every one a different name).
+QString bareRecording(const QString &path, qint64 rows, double step, bool events)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return {};
+    file.write("t_s,theta,event\n");
+    QByteArray chunk;
+    for (qint64 i = 0; i < rows; ++i) {
+        chunk += QByteArray::number(i * step, 'g', 10) + ",0," +
+                 (events ? "e" + QByteArray::number(i) : QByteArray()) + '\n';
+        if (chunk.size() > (1 << 20)) {
+            file.write(chunk);
+            chunk.clear();
+        }
+    }
+    file.write(chunk);
+    return path;
+}
+
 } // namespace
 
 class TestPlotFeed : public QObject
@@ -41,6 +65,8 @@ private Q_SLOTS:
     void pauseMeansPlotsLiveAndPlaybackInReplay();
     void windowLengthKeepsTheReplayOnItsPlayhead();
     void refusedRecordingChangesNothing();
+    void manyEventsOpenBounded();
+    void moreSamplesThanHeldAreSaidSo();
 
 private:
     QTemporaryDir m_dir;
@@ -216,6 +242,49 @@ void TestPlotFeed::refusedRecordingChangesNothing()
     QVERIFY(!feed.isReplaying());
     QCOMPARE(replaying.size(), 0);
     QCOMPARE(panel.source(), &feed.liveBuffer());
+}
+
+// 200 000 events (an hour at the recorder's 50 events/s), every text different, then the same
+// number a second apart: the replay opens (issue 27: quadratic, it never did), holds at most
+// kMaxReadEvents events, says so, and draws at most kMaxEventMarkers markers.
+void TestPlotFeed::manyEventsOpenBounded()
+{
+    for (const double step : {0.02, 1.0}) {
+        const QString path =
+            bareRecording(m_dir.filePath(QStringLiteral("events.csv")), 200000, step, true);
+        PlotPanel panel;
+        PlotFeed feed(&panel);
+        QString error;
+        QVERIFY2(feed.openRecording(path, &error), qPrintable(error));
+        const ReplayController *replay = feed.replay();
+        QCOMPARE(replay->buffer().size(), qsizetype(200000));
+        QCOMPARE(replay->recording().events.size(), recording::kMaxReadEvents);
+        QVERIFY2(replay->warnings().constFirst().startsWith(u"Events from line 50002 on"),
+                 qPrintable(replay->warnings().join(u'\n')));
+        // Three plots draw a line per marker, the angle plot its label too.
+        const int items = panel.customPlot()->itemCount();
+        QVERIFY2(items <= 4 * kMaxEventMarkers + 50, qPrintable(QString::number(items)));
+    }
+}
+
+// A file with more samples than a replay holds: the first kMaxReadSamples are shown, and the
+// first warning says so (issue 27: a 20 MB CSV held 1.09 GB).
+void TestPlotFeed::moreSamplesThanHeldAreSaidSo()
+{
+    const qint64 rows = recording::kMaxReadSamples + 1000;
+    const QString path =
+        bareRecording(m_dir.filePath(QStringLiteral("long.csv")), rows, 0.001, false);
+    PlotPanel panel;
+    PlotFeed feed(&panel);
+    QString error;
+    QVERIFY2(feed.openRecording(path, &error), qPrintable(error));
+    const ReplayController *replay = feed.replay();
+    QCOMPARE(replay->buffer().size(), recording::kMaxReadSamples);
+    QCOMPARE(replay->endTime(), (recording::kMaxReadSamples - 1) * 0.001);
+    const QString first = replay->warnings().constFirst();
+    QVERIFY2(first.startsWith(u"Only the first 1000000 samples (to t_s = 999.999 s) are shown"),
+             qPrintable(first));
+    QFile::remove(path);
 }
 
 QTEST_MAIN(TestPlotFeed)
