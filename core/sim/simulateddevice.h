@@ -27,6 +27,9 @@ namespace hatpic {
 class SimulatedDevice
 {
 public:
+    //! The load-reading noise hatpic-sim and hatpic-servo-sim run with: std-dev [N·m].
+    static constexpr double kProgramNoise = 0.0005;
+
     struct Config
     {
         WireProtocol protocol = WireProtocol::V2;

@@ -3,8 +3,9 @@
 // publishers' QoS they give.
 #include "bridge/referencemessages.h"
 #include "bridge/rosendpoints.h"
-#include "bridge/wrenchfeedback.h"
 #include "profile/bridgesettings.h"
+#include "teleop/ratelimiter.h"
+#include "teleop/wrenchfeedback.h"
 
 #include <QTest>
 
