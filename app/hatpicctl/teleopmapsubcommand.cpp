@@ -79,7 +79,8 @@ public:
     QString synopsis() const override
     {
         return u"teleop-map [--profile FILE] [--delays LIST] [--gains LIST] "
-               u"[--vary FIELD=LIST] [--hand SPEC] [--duration S] [--seed N] [--jitter S] "
+               u"[--pc LIST | --vary FIELD=LIST] [--hand SPEC] [--duration S] [--seed N] [--jitter "
+               u"S] "
                u"[--loss P] [--threads N] [--csv FILE] [--svg FILE] [--force]"_s;
     }
     QString description() const override
@@ -100,8 +101,10 @@ public:
                u"\n"
                u"LIST is comma-separated items, each a number, FROM:TO:STEP (FROM, FROM+STEP,\n"
                u"… up to TO) or FROM:TO/N (N values from FROM to TO): --delays 0:0.3/10.\n"
-               u"--vary FIELD=LIST maps each value of a tuning field (a device parameter or\n"
-               u"host setting by its profile name, e.g. M_adm=0.01,0.05) side by side.\n"
+               u"--pc LIST maps each pc_damping_max (the passivity controller's most damping;\n"
+               u"0 = off) side by side: --pc 0,0.5 compares the controller off and on.\n"
+               u"--vary FIELD=LIST does so for any tuning field (a device parameter, host\n"
+               u"setting or passivity parameter by its profile name, e.g. M_adm=0.01,0.05).\n"
                u"\n"
                u"--csv FILE writes the table, --svg FILE the chart (settled cells coloured by\n"
                u"settle time, the others grey and crossed); an existing file needs --force.\n"
@@ -118,6 +121,8 @@ public:
             u"LIST"_s);
         add(u"gains"_s,
             u"Feedback gains, N·m/N (default: "_s + QString::fromUtf16(kDefaultGains) + u")."_s,
+            u"LIST"_s);
+        add(u"pc"_s, u"Values of pc_damping_max (0: the controller off): one map each."_s,
             u"LIST"_s);
         add(u"vary"_s, u"A tuning field and its values: one map each."_s, u"FIELD=LIST"_s);
         add(u"hand"_s, u"The hand on the knob (default: const:0.05)."_s, u"SPEC"_s);
@@ -144,6 +149,8 @@ public:
             spec.base.host = profile->host;
             spec.base.effects = profile->effects;
         }
+        // The passivity controller as the device runs it by default (passivity.md); a
+        // profile does not hold it yet.
         const auto list = [&](const QString &option, const QString &fallback,
                               std::vector<double> &into) {
             const QString text = parser.isSet(option) ? parser.value(option) : fallback;
@@ -159,8 +166,14 @@ public:
         if (!list(u"delays"_s, QString::fromUtf16(kDefaultDelays), spec.delays) ||
             !list(u"gains"_s, QString::fromUtf16(kDefaultGains), spec.gains))
             return ExitBadUsage;
-        if (parser.isSet(u"vary"_s)) {
-            const QString vary = parser.value(u"vary"_s);
+        if (parser.isSet(u"pc"_s) && parser.isSet(u"vary"_s)) {
+            printError(u"--pc and --vary each choose the field to map; give one of them."_s);
+            return ExitBadUsage;
+        }
+        if (parser.isSet(u"pc"_s) || parser.isSet(u"vary"_s)) {
+            const QString vary = parser.isSet(u"pc"_s)
+                                     ? u"pc_damping_max="_s + parser.value(u"pc"_s)
+                                     : parser.value(u"vary"_s);
             const qsizetype eq = vary.indexOf(u'=');
             if (eq <= 0) {
                 printError(u"--vary needs FIELD=LIST, got '"_s + vary + u"'."_s);
@@ -175,7 +188,8 @@ public:
             QString why;
             const auto values = teleop::parseValueList(vary.mid(eq + 1), &why);
             if (!values) {
-                printError(u"--vary "_s + spec.field.name + u' ' + why + u'.');
+                printError((parser.isSet(u"pc"_s) ? u"--pc"_s : u"--vary "_s + spec.field.name) +
+                           u' ' + why + u'.');
                 return ExitBadUsage;
             }
             spec.field.values = *values;
@@ -260,8 +274,11 @@ public:
     }
 
 private:
-    static void printTable(const std::vector<teleop::MapCell> &cells, const QString &field)
+    static void printTable(const std::vector<teleop::MapCell> &cells, QString field)
     {
+        if (field == u"pc_damping_max")
+            field.clear(); // the pc column shows it
+
         QString out = u"   delay     gain       pc"_s;
         if (!field.isEmpty())
             out += u' ' + field.rightJustified(10);

@@ -64,6 +64,7 @@ LoopSimulation::Private::Private(const LoopConfig &c)
     dc.hand = c.hand;
     dc.tauLimit = c.host.tau_limit;
     dc.params = c.device;
+    dc.passivity = roundedForWire(c.passivity); // as the device holds it: float32
     device = std::make_unique<SimulatedDevice>(dc);
     // The host's reference reads the parameters the device holds (its floats).
     shape = ReferenceShape::from(c.host, device->params());
@@ -90,6 +91,8 @@ QString LoopSimulation::check(const LoopConfig &config)
     if (const auto v = validate(roundedForWire(config.device)); !v.empty())
         return sentence(v, "The device parameters are not valid once rounded to the device's "
                            "32-bit floats: ");
+    if (const auto v = validate(config.passivity); !v.empty())
+        return sentence(v, "The passivity controller's settings are not valid: ");
     if (const auto v = validate(config.host); !v.empty())
         return sentence(v, "The host settings are not valid: ");
     if (const auto v = validate(config.effects, config.host.tau_limit); !v.empty())
@@ -172,7 +175,7 @@ LoopSimulation::Step LoopSimulation::step()
     s.theta = cycle.theta;
     s.omega = cycle.omega;
     s.tauExt = cycle.tau_ext;
-    s.tauPc = 0;
+    s.tauPc = cycle.tau_pc;
     s.x = p.robot.model().position();
 
     if (!std::isfinite(s.theta) || !std::isfinite(s.omega) || !std::isfinite(s.x)) {

@@ -8,6 +8,7 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 #include "profile/bridgesettings.h"
 #include "robot/loopequilibrium.h"
 #include "robot/robotend.h"
@@ -30,6 +31,8 @@ struct LoopConfig
     DeviceParams device; //!< the knob's tuning (rounded to the device's floats when sent)
     HostParams host;     //!< v_max, the reference's dead zone, tau_limit
     EffectParams effects;
+    //! The passivity controller's block (passivity.md; pc_damping_max 0: off).
+    PassivityParams passivity;
     //! The hand on the knob (hatpic-sim --hand); robot.md's loop pushes 0.05 N·m.
     HandInput hand{HandInput::Kind::Constant, 0.05};
     //! The bridge's wrench → τ_ext (hatpic-bridge --component force.x --gain 0.02).
@@ -54,7 +57,7 @@ struct LoopResult
     bool contact = false;    //!< τ_ext ≠ 0 in some cycle
     double contactAt = kNaN; //!< the first such cycle [s]
     double thetaEq = kNaN;   //!< where the loop must rest (robot.md), NaN: no rest known [rad]
-    //! At rest at θ_eq: every θ of the last 2 s within kBand of θ_eq (so p2p ≤ kBand there).
+    //! At rest at θ_eq: every θ of the last 2 s within kBand of θ_eq.
     bool settled = false;
     //! From contact to the last cycle with |θ − θ_eq| > kBand (passivity.md); NaN when not
     //! settled [s].

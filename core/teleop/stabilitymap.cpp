@@ -53,6 +53,10 @@ FieldPlace placeOf(LoopConfig &config, const QString &name)
         if (fromView(f.name) == name)
             return {&(config.host.*f.member)};
     }
+    for (const PassivityFieldSpec &f : kPassivityFields) {
+        if (fromView(f.name) == name)
+            return {&(config.passivity.*f.member)};
+    }
     return {};
 }
 
@@ -136,6 +140,8 @@ QStringList mapFieldNames()
     for (const DeviceFieldSpec &f : kDeviceFields)
         names.append(fromView(f.name));
     for (const HostFieldSpec &f : kHostFields)
+        names.append(fromView(f.name));
+    for (const PassivityFieldSpec &f : kPassivityFields)
         names.append(fromView(f.name));
     return names;
 }
@@ -241,7 +247,7 @@ std::vector<MapCell> runMap(const MapSpec &spec,
                              ? kNaN
                              : spec.field.values[std::size_t(
                                    i / qsizetype(spec.delays.size() * spec.gains.size()))];
-            cell.pc = fieldValue(c, QStringLiteral("pc_damping_max")).value_or(0.0);
+            cell.pc = c.passivity.pc_damping_max;
             cell.result = LoopSimulation::run(c);
             ran[std::size_t(i)] = 1;
             const qsizetype n = ++done;

@@ -16,6 +16,7 @@ class TestHatpicctlTeleopMap : public QObject
 private Q_SLOTS:
     void tableCsvAndSvg();
     void variesAField();
+    void controllerOffAndOn();
     void badOptions_data();
     void badOptions();
     void keepsAnExistingFile();
@@ -25,8 +26,9 @@ void TestHatpicctlTeleopMap::tableCsvAndSvg()
 {
     QTemporaryDir dir;
     const QString csv = dir.filePath(u"map.csv"_s), svg = dir.filePath(u"map.svg"_s);
-    const Run run = runCtl({u"teleop-map"_s, u"--delays"_s, u"0,0.15"_s, u"--gains"_s, u"0.02"_s,
-                            u"--duration"_s, u"8"_s, u"--csv"_s, csv, u"--svg"_s, svg});
+    const Run run =
+        runCtl({u"teleop-map"_s, u"--delays"_s, u"0,0.15"_s, u"--gains"_s, u"0.02"_s, u"--pc"_s,
+                u"0"_s, u"--duration"_s, u"8"_s, u"--csv"_s, csv, u"--svg"_s, svg});
     QVERIFY2(run.code == 0, run.err.constData());
     const QList<QByteArray> lines = run.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 3);
@@ -62,7 +64,23 @@ void TestHatpicctlTeleopMap::variesAField()
     // Four times the damping settles 120 and 150 ms (docs/teleop.md § Measured).
     QVERIFY2(lines[3].simplified().split(' ').at(4) == "1", lines[3].constData());
     QVERIFY2(lines[4].simplified().split(' ').at(4) == "1", lines[4].constData());
-    QVERIFY2(lines[1].simplified().split(' ').at(4) == "0", lines[1].constData());
+    QVERIFY2(lines[1].simplified().split(' ').at(3) == "0.0100", lines[1].constData());
+}
+
+void TestHatpicctlTeleopMap::controllerOffAndOn()
+{
+    const Run run = runCtl({u"teleop-map"_s, u"--delays"_s, u"0.3"_s, u"--pc"_s, u"0,0.5"_s});
+    QVERIFY2(run.code == 0, run.err.constData());
+    const QList<QByteArray> lines = run.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 3);
+    const QList<QByteArray> off = lines[1].simplified().split(' ');
+    const QList<QByteArray> on = lines[2].simplified().split(' ');
+    QCOMPARE(off.at(2), QByteArray("0.000"));
+    QCOMPARE(off.at(3), QByteArray("0")); // swings for good at 300 ms
+    QCOMPARE(on.at(2), QByteArray("0.500"));
+    QCOMPARE(on.at(3), QByteArray("1"));                         // the controller holds the contact
+    QVERIFY(on.at(6).toDouble() > 0 && on.at(7).toDouble() > 0); // and its price shows
+    QVERIFY(off.at(6).toDouble() == 0 && off.at(7).toDouble() == 0);
 }
 
 void TestHatpicctlTeleopMap::badOptions_data()
@@ -83,6 +101,10 @@ void TestHatpicctlTeleopMap::badOptions_data()
                              << QByteArray("--threads needs a whole number from 1 to 64, got '0'");
     QTest::newRow("loss") << QStringList{u"--loss"_s, u"2"_s}
                           << QByteArray("loss: must be from 0 to 1, got 2.");
+    QTest::newRow("pc and vary") << QStringList{u"--pc"_s, u"0"_s, u"--vary"_s, u"M_adm=0.1"_s}
+                                 << QByteArray("give one of them");
+    QTest::newRow("pc value") << QStringList{u"--pc"_s, u"2"_s}
+                              << QByteArray("pc_damping_max: must be");
     QTest::newRow("hand") << QStringList{u"--hand"_s, u"push"_s} << QByteArray("--hand");
     QTest::newRow("folder") << QStringList{u"--csv"_s, u"/nonexistent/m.csv"_s}
                             << QByteArray("the folder /nonexistent does not exist");

@@ -2,7 +2,10 @@
 // delays 0, 0.04 and 0.15 s at robot.md's gain) run as a user runs the loop — hatpic-sim
 // --hand const:0.05, hatpic-bridge --component force.x --gain 0.02, hatpic-robot-sim --delay D
 // on loopback over ROS 2 — and compared with the in-process loop's cell for the same settings:
-// settled or not alike, and where a settled loop rests (θ, τ_ext, x) alike.
+// settled or not alike, and where a settled loop rests (θ, τ_ext, x) alike. Both run the
+// device's passivity controller as hatpic-sim does, with its defaults (on; the map's cells
+// with it off are compared with programs built without it: docs/teleop.md § The stability
+// map).
 #include "teleop/loopsimulation.h"
 #include "teleoploop.h"
 

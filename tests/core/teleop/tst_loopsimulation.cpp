@@ -15,11 +15,15 @@ using namespace hatpic::teleop;
 
 namespace {
 
-LoopConfig robotMdLoop(double delay, double duration = 12)
+//! robot.md's loop (const:0.05, force.x, gain 0.02, the robot's defaults), the passivity
+//! controller off unless `controller`.
+LoopConfig robotMdLoop(double delay, double duration = 12, bool controller = false)
 {
-    LoopConfig c; // robot.md: const:0.05, force.x, gain 0.02, the robot's defaults
+    LoopConfig c;
     c.robot.faults.delay = delay;
     c.duration = duration;
+    if (!controller)
+        c.passivity = PassivityParams::off();
     return c;
 }
 
@@ -32,6 +36,9 @@ private Q_SLOTS:
     void restsAtRobotMdsEquilibrium_data();
     void restsAtRobotMdsEquilibrium();
     void swingsForGoodAt150ms();
+    void controllerHoldsContact_data();
+    void controllerHoldsContact();
+    void controllerCostsNothingWithoutDelay();
     void sameSeedSameRun();
     void jitterAndLossFollowTheSeed();
     void noContactWithoutAHandTowardsTheWall();
@@ -77,6 +84,38 @@ void TestLoopSimulation::swingsForGoodAt150ms()
     QVERIFY(std::isnan(r.settleS));
     // The real programs: 0.69 rad peak to peak, for good.
     QVERIFY2(r.p2p > 0.3, qPrintable(QString::number(r.p2p)));
+}
+
+void TestLoopSimulation::controllerHoldsContact_data()
+{
+    QTest::addColumn<double>("delay");
+    QTest::newRow("150 ms") << 0.15;
+    QTest::newRow("300 ms") << 0.3;
+}
+
+// With the controller's defaults the loop that swings for good comes to rest at robot.md's
+// equilibrium, and its price shows: τ_pc during the transient, energy taken out.
+void TestLoopSimulation::controllerHoldsContact()
+{
+    QFETCH(double, delay);
+    QVERIFY(!LoopSimulation::run(robotMdLoop(delay, 20)).settled);
+    const LoopResult r = LoopSimulation::run(robotMdLoop(delay, 20, true));
+    QVERIFY2(r.settled, qPrintable(QStringLiteral("p2p %1").arg(r.p2p)));
+    QVERIFY(std::abs(r.thetaRest - 0.0625) < 0.004);
+    QVERIFY(std::abs(r.tauExtRest + 0.025) < 0.003);
+    QVERIFY(r.settleS < 18);
+    QVERIFY2(r.rmsTauPcRatio > 0.05, qPrintable(QString::number(r.rmsTauPcRatio)));
+    QVERIFY2(r.dissipatedJ > 0.001, qPrintable(QString::number(r.dissipatedJ)));
+}
+
+// passivity.md: at 0 delay the settle time is at most 1.25 × the one without it.
+void TestLoopSimulation::controllerCostsNothingWithoutDelay()
+{
+    const LoopResult off = LoopSimulation::run(robotMdLoop(0));
+    const LoopResult on = LoopSimulation::run(robotMdLoop(0, 12, true));
+    QVERIFY(off.settled && on.settled);
+    QVERIFY2(on.settleS <= 1.25 * off.settleS,
+             qPrintable(QStringLiteral("%1 vs %2").arg(on.settleS).arg(off.settleS)));
 }
 
 void TestLoopSimulation::sameSeedSameRun()

@@ -20,6 +20,7 @@ private Q_SLOTS:
     void threadsGiveTheSameCells();
     void csvAndSvg();
     void variesATuningField();
+    void controllerOffAndOn();
     void badSpecs();
 };
 
@@ -106,6 +107,7 @@ void TestStabilityMap::csvAndSvg()
 {
     MapSpec spec;
     spec.base.duration = 6;
+    spec.base.passivity = PassivityParams::off();
     spec.delays = {0, 0.15};
     spec.gains = {0.02};
     const auto cells = runMap(spec);
@@ -139,6 +141,28 @@ void TestStabilityMap::variesATuningField()
     QCOMPARE(cells[1].field, 0.05);
     QVERIFY(mapCsv(cells, spec.field.name).startsWith("delay,gain,pc,M_adm,settled"));
     QVERIFY(mapSvg(cells, spec.field.name, 3).contains("M_adm = 0.05"));
+}
+
+// The controller off and on side by side: 150 ms swings off and settles on; the pc column says
+// which.
+void TestStabilityMap::controllerOffAndOn()
+{
+    MapSpec spec;
+    spec.base.duration = 12;
+    spec.delays = {0.15};
+    spec.field = {QStringLiteral("pc_damping_max"), {0, 0.5}};
+    QVERIFY(checkSpec(spec).isEmpty());
+    const auto cells = runMap(spec);
+    QCOMPARE(cells.size(), std::size_t(2));
+    QCOMPARE(cells[0].pc, 0.0);
+    QVERIFY(!cells[0].result.settled);
+    QCOMPARE(cells[1].pc, 0.5);
+    QVERIFY(cells[1].result.settled);
+    const QByteArray csv = mapCsv(cells, spec.field.name);
+    QVERIFY(csv.startsWith("delay,gain,pc,settled,"));
+    QVERIFY(csv.contains("\n0.15,0.02,0.5,1,"));
+    QVERIFY(mapSvg(cells, spec.field.name, 12).contains("pc_damping_max = 0.5"));
+    QVERIFY(mapFieldNames().contains(u"pc_reserve_max"));
 }
 
 void TestStabilityMap::badSpecs()
