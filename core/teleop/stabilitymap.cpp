@@ -60,6 +60,13 @@ FieldPlace placeOf(LoopConfig &config, const QString &name)
     return {};
 }
 
+//! A value a range generated, without the last bits' rounding noise (0.045, not
+//! 0.045000000000000005): 12 significant digits.
+double tidy(double v)
+{
+    return QString::number(v, 'g', 12).toDouble();
+}
+
 QString cellText(double v)
 {
     return std::isfinite(v) ? compactNumberText(v) : QString();
@@ -111,7 +118,7 @@ std::optional<std::vector<double>> parseValueList(const QString &text, QString *
                 return fail(u"needs FROM ≤ TO, got '" + echoed(item) + u"'");
             if (count) {
                 for (int i = 0; i < *count; ++i)
-                    out.push_back(*from + (*to - *from) * i / (*count - 1));
+                    out.push_back(tidy(*from + (*to - *from) * i / (*count - 1)));
             } else {
                 const auto step = number(parts[2]);
                 if (!step || *step <= 0)
@@ -123,7 +130,7 @@ std::optional<std::vector<double>> parseValueList(const QString &text, QString *
                                 u" values, got '" + echoed(item) + u"'");
                 const int n = int(std::floor(span + 1e-9)) + 1;
                 for (int i = 0; i < n; ++i)
-                    out.push_back(*from + *step * i);
+                    out.push_back(tidy(*from + *step * i));
             }
         } else {
             return fail(u"needs a number, FROM:TO:STEP or FROM:TO/N, got '" + echoed(item) + u"'");
@@ -356,7 +363,7 @@ QByteArray mapSvg(const std::vector<MapCell> &cells, const QString &fieldName, d
     if (fields.empty())
         fields.push_back(0);
 
-    constexpr double kPanelW = 320, kPanelH = 260, kLeft = 70, kTop = 40, kGap = 30;
+    constexpr double kPanelW = 320, kPanelH = 260, kLeft = 90, kTop = 40, kGap = 30;
     constexpr double kBottom = 60, kLegendW = 110;
     const double width = kLeft + double(fields.size()) * (kPanelW + kGap) + kLegendW;
     const double height = kTop + kPanelH + kBottom;
@@ -415,7 +422,7 @@ QByteArray mapSvg(const std::vector<MapCell> &cells, const QString &fieldName, d
                      num(kTop + kPanelH - (double(i) + 0.5) * ch + 4) + u"\" text-anchor=\"end\">" +
                      compactNumberText(gains[i]) + u"</text>\n";
             }
-            s += u"<text transform=\"translate(14 " + num(kTop + kPanelH / 2) +
+            s += u"<text transform=\"translate(16 " + num(kTop + kPanelH / 2) +
                  u") rotate(-90)\" text-anchor=\"middle\">feedback gain [N·m/N]</text>\n";
         }
         s += u"<rect x=\"" + num(x0) + u"\" y=\"" + num(kTop) + u"\" width=\"" + num(kPanelW) +

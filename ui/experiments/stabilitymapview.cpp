@@ -118,12 +118,25 @@ void StabilityMapView::setTuning(const DeviceParams &device, const HostParams &h
         m_status->setText(tr("The tuning changed since this map: compute it again."));
 }
 
+void StabilityMapView::setPassivity(const PassivityParams &passivity)
+{
+    if (passivity == m_passivity)
+        return;
+    m_passivity = passivity;
+    if (!m_cells.empty() && !computing())
+        m_status->setText(tr("The tuning changed since this map: compute it again."));
+}
+
 teleop::MapSpec StabilityMapView::spec(QString *error) const
 {
     teleop::MapSpec s;
     s.base.device = m_device;
     s.base.host = m_host;
     s.base.effects = m_effects;
+    s.base.passivity = m_passivity;
+    // What the controller buys: off beside as edited.
+    if (m_passivity.pc_damping_max > 0)
+        s.field = {QStringLiteral("pc_damping_max"), {0.0, m_passivity.pc_damping_max}};
     s.base.duration = m_duration->value();
     s.threads = std::clamp(QThread::idealThreadCount(), 1, teleop::kMaxMapThreads);
     QString why;
@@ -208,8 +221,9 @@ void StabilityMapView::onFinished(quint64 generation, std::vector<teleop::MapCel
                                            [](const auto &c) { return c.result.settled; });
         m_status->setText(
             tr("%1 of %2 cells settle within %3 s. Grey, crossed cells keep swinging: there "
-               "the contact chatters. Lower the gain, or add damping (M_adm) — what it costs "
-               "is the settle time's colour.")
+               "the contact chatters. Lower the gain, add damping (M_adm) or the passivity "
+               "controller (pc_damping_max, right) — what it costs is the settle time's "
+               "colour.")
                 .arg(settled)
                 .arg(m_cells.size())
                 .arg(m_shown.base.duration));
@@ -224,8 +238,10 @@ void StabilityMapView::redraw()
 {
     if (m_cells.empty())
         return;
-    m_svg = teleop::mapSvg(m_cells, m_shown.field.name, m_shown.base.duration,
-                           teleop::MapMark{m_delayInUse->value(), m_gainInUse->value(), NAN});
+    m_svg = teleop::mapSvg(
+        m_cells, m_shown.field.name, m_shown.base.duration,
+        teleop::MapMark{m_delayInUse->value(), m_gainInUse->value(),
+                        m_shown.field.name.isEmpty() ? NAN : m_passivity.pc_damping_max});
     m_chart->load(m_svg);
 }
 

@@ -1,12 +1,13 @@
 // The stability map in the Experiments panel (docs/experiments.md § Stability map): the
 // teleoperation loop of robot.md run in process for the tuning being edited over a grid of
-// one-way delays × feedback gains, with the passivity controller's setting too, drawn as
+// one-way delays × feedback gains, the passivity controller off and as edited, drawn as
 // `hatpicctl teleop-map` draws it (teleop/stabilitymap.h) with the settings in use marked.
 // The cells run on threads of their own; the GUI thread only starts, cancels and shows.
 #pragma once
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 #include "teleop/stabilitymap.h"
 
 #include <QWidget>
@@ -34,6 +35,9 @@ public:
 
     //! The tuning being edited: the next map runs it; a map on screen is marked stale.
     void setTuning(const DeviceParams &device, const HostParams &host, const EffectParams &effects);
+    //! The passivity controller being edited: with pc_damping_max > 0 the map shows it off
+    //! and on side by side, else one map with it off.
+    void setPassivity(const PassivityParams &passivity);
     //! The map the form describes for the tuning, or the reason it cannot run.
     teleop::MapSpec spec(QString *error = nullptr) const;
     //! Starts computing; false with the reason in the status line.
@@ -60,6 +64,7 @@ private:
     DeviceParams m_device;
     HostParams m_host;
     EffectParams m_effects;
+    PassivityParams m_passivity;
 
     QLineEdit *m_delays{}, *m_gains{};
     QDoubleSpinBox *m_duration{}, *m_delayInUse{}, *m_gainInUse{};

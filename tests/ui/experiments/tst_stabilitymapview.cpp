@@ -37,7 +37,7 @@ void TestStabilityMapView::computesTheEditedTuningsMap()
     view.show();
     child<QLineEdit>(view, "mapDelays")->setText(QStringLiteral("0,0.15"));
     child<QLineEdit>(view, "mapGains")->setText(QStringLiteral("0.02"));
-    child<QDoubleSpinBox>(view, "mapDuration")->setValue(6);
+    child<QDoubleSpinBox>(view, "mapDuration")->setValue(10);
     child<QDoubleSpinBox>(view, "mapDelayInUse")->setValue(0.15);
     QSignalSpy finished(&view, &StabilityMapView::finished);
     QTest::mouseClick(child<QPushButton>(view, "computeMap"), Qt::LeftButton);
@@ -47,10 +47,15 @@ void TestStabilityMapView::computesTheEditedTuningsMap()
     QVERIFY(child<QPushButton>(view, "cancelMap")->isEnabled());
     QVERIFY(finished.wait(60000));
     QVERIFY(!view.computing());
-    QCOMPARE(view.cells().size(), std::size_t(2));
+    // The controller off, then as edited (the defaults: on).
+    QCOMPARE(view.cells().size(), std::size_t(4));
+    QCOMPARE(view.cells()[1].pc, 0.0);
     QVERIFY(view.cells()[0].result.settled);  // 0 s: settles
-    QVERIFY(!view.cells()[1].result.settled); // 150 ms: swings
-    QVERIFY2(view.status().contains(u"1 of 2 cells settle"), qPrintable(view.status()));
+    QVERIFY(!view.cells()[1].result.settled); // 150 ms: swings without the controller
+    QCOMPARE(view.cells()[3].pc, PassivityParams{}.pc_damping_max);
+    QVERIFY(view.cells()[3].result.settled); // and holds the contact with it
+    QVERIFY2(view.status().contains(u"3 of 4 cells settle"), qPrintable(view.status()));
+    QVERIFY(view.svg().contains("pc_damping_max = 0.5"));
     QVERIFY(view.svg().contains("the settings in use"));
     QVERIFY(view.svg().contains("not settled"));
 
@@ -58,6 +63,11 @@ void TestStabilityMapView::computesTheEditedTuningsMap()
     teleop::MapSpec spec = view.spec();
     const auto direct = teleop::runMap(spec);
     QCOMPARE(direct[1].result.p2p, view.cells()[1].result.p2p);
+    QCOMPARE(direct[3].result.settleS, view.cells()[3].result.settleS);
+
+    // The controller turned off in the editor: one map, off.
+    view.setPassivity(PassivityParams::off());
+    QCOMPARE(view.spec().cellCount(), 2);
 
     // A heavier damping edited: the map is stale, and the next one runs it.
     DeviceParams damped;
