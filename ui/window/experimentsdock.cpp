@@ -28,6 +28,9 @@ QDockWidget *addExperimentsDock(QMainWindow *window, DeviceClient *client, PlotP
     QObject::connect(editor, &ParameterEditor::hostParamsChanged, map, follow);
     auto *tabs = new QTabWidget(window);
     tabs->setObjectName(QStringLiteral("experimentsTabs"));
+    // Tabs on the side: the panel's height is what fits at 720 px (tst_windowlayout).
+    tabs->setTabPosition(QTabWidget::West);
+    tabs->setDocumentMode(true);
     tabs->addTab(panel, QObject::tr("Measure"));
     tabs->addTab(map, QObject::tr("Stability map"));
     auto *dock = new QDockWidget(QObject::tr("Experiments"), window);
