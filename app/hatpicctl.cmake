@@ -22,7 +22,8 @@ add_executable(hatpicctl
   hatpicctl/validatesubcommand.cpp
   hatpicctl/experimentsubcommand.cpp
   hatpicctl/experimenttext.cpp hatpicctl/experimenttext.h
-  hatpicctl/vibratesubcommand.cpp)
+  hatpicctl/vibratesubcommand.cpp
+  hatpicctl/teleopmapsubcommand.cpp)
 target_link_libraries(hatpicctl PRIVATE hatpic::core hatpic_appcommon hatpic::build_settings)
 target_compile_definitions(hatpicctl PRIVATE HATPIC_VERSION="${PROJECT_VERSION}")
 set_target_properties(hatpicctl PROPERTIES AUTOMOC ON)

@@ -6,18 +6,13 @@
 // Bad options: one sentence on stderr, exit 4. Runtime failure (no pty, no link): exit 1.
 #include "common/ptyprogram.h"
 #include "sim/servobushost.h"
+#include "sim/simulateddevice.h"
 
 #include <QCoreApplication>
 
 #include <cstdio>
 
 using namespace hatpic;
-
-namespace {
-
-constexpr double kLoadNoise = 0.0005; //!< std-dev of the load-reading noise, as hatpic-sim [N·m]
-
-} // namespace
 
 int main(int argc, char *argv[])
 {
@@ -33,7 +28,7 @@ int main(int argc, char *argv[])
     program.add(SharedOption::Link);
 
     ServoBusHost::Config config;
-    config.noise = kLoadNoise;
+    config.noise = SimulatedDevice::kProgramNoise;
     if (!program.parse() || !program.readHand(config.hand) || !program.readSeed(config.seed) ||
         !program.readServoId(config.id) || !program.readCenterTick(config.centerTick) ||
         !program.readLink())

@@ -18,8 +18,6 @@ using namespace hatpic;
 
 namespace {
 
-constexpr double kLoadNoise = 0.0005; //!< std-dev of the load-reading noise [N·m]
-
 // hatpic-sim's own options: the wire protocol and the emulated link's speed.
 struct LinkOptions
 {
@@ -79,7 +77,7 @@ int main(int argc, char *argv[])
                 "(docs/simulator.md).");
 
     SimulatedDevice::Config config;
-    config.noise = kLoadNoise;
+    config.noise = SimulatedDevice::kProgramNoise;
     if (!program.parse() || !readLinkOptions(program, {protocol, baud, noThrottle}, config) ||
         !program.readHand(config.hand) || !program.readSeed(config.seed) ||
         !program.readStateFile(config.stateFile) || !program.readFaults(config.faults) ||

@@ -58,6 +58,7 @@ std::vector<std::unique_ptr<Subcommand>> allSubcommands()
     commands.push_back(makeValidateSubcommand());
     commands.push_back(makeExperimentSubcommand());
     commands.push_back(makeVibrateSubcommand());
+    commands.push_back(makeTeleopMapSubcommand());
     return commands;
 }
 

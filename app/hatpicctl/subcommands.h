@@ -19,5 +19,6 @@ std::unique_ptr<Subcommand> makeSimulateSubcommand();
 std::unique_ptr<Subcommand> makeValidateSubcommand();
 std::unique_ptr<Subcommand> makeExperimentSubcommand();
 std::unique_ptr<Subcommand> makeVibrateSubcommand();
+std::unique_ptr<Subcommand> makeTeleopMapSubcommand();
 
 } // namespace hatpic::cli

@@ -10,7 +10,8 @@
 #include "profile/bridgesettings.h"
 #include "referencemessages.h"
 #include "rosendpoints.h"
-#include "wrenchfeedback.h"
+#include "teleop/ratelimiter.h"
+#include "teleop/wrenchfeedback.h"
 #include "wrenchtiming.h"
 
 #include "analysis/passivityobserver.h"

@@ -1,6 +1,6 @@
 // The joystick's state as the content of the bridge's outgoing ROS messages (ros.md § Topics),
 // and the rate at which they go out. Plain C++: what goes on the wire is decided here, the
-// DDS side only copies it.
+// DDS side only copies it. The rate they go out at is teleop/ratelimiter.h's.
 #pragma once
 
 #include "profile/bridgesettings.h"
@@ -10,7 +10,6 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 
 namespace hatpic::bridge {
 
@@ -39,22 +38,5 @@ inline double sampleWallSeconds(double arrivalWallSeconds, double newestT, doubl
 {
     return arrivalWallSeconds - (newestT - sampleT);
 }
-
-//! Picks samples so that at most `rateHz` per second go out, on average exactly that many when
-//! the samples come faster, by the samples' own clock (so batching on the host does not
-//! change the rate).
-class RateLimiter
-{
-public:
-    explicit RateLimiter(double rateHz) { setRate(rateHz); }
-    void setRate(double rateHz) { m_period = 1.0 / rateHz; }
-    //! True when the sample at time `t` [s] is to be published.
-    bool due(double t);
-    void reset() { m_next.reset(); }
-
-private:
-    double m_period = 0.01;
-    std::optional<double> m_next;
-};
 
 } // namespace hatpic::bridge

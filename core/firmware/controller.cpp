@@ -14,6 +14,8 @@ Controller<T>::Controller(const Config &config, Actuator<T> &actuator)
     m_period = 1.0 / config.rateHz;
     m_periodUs = std::uint32_t(std::llround(1e6 * m_period));
     m_tauLimit = T(config.tauLimit);
+    m_h = T(m_period);
+    m_tank.configure(m_passivity);
 }
 
 template<typename T> bool Controller<T>::start(const DeviceParams &params, std::uint32_t nowUs)
@@ -26,6 +28,8 @@ template<typename T> bool Controller<T>::start(const DeviceParams &params, std::
     m_filter = {theta, T(0)};
     m_measured = {theta, T(0), T(0)};
     m_record.theta = theta;
+    m_tank.fill(); // passivity.md: the tank starts full at start and after a reset
+    m_record.pc_reserve = m_tank.reserve();
     return true;
 }
 
@@ -34,12 +38,20 @@ template<typename T> void Controller<T>::setParams(const DeviceParams &params)
     m_params = params;
     m_shape = StiffnessShape<T>::from(params);
     m_stepper = AdmittanceStepper<T>(AdmittanceCoefficients::compute(params, m_period));
+    m_dAdm = T(params.D_adm);
+    m_mAdm = T(params.M_adm);
 }
 
 template<typename T> void Controller<T>::setEffects(const EffectParams &effects)
 {
     m_effects = effects;
     m_fx = EffectShape<T>::from(effects);
+}
+
+template<typename T> void Controller<T>::setPassivity(const PassivityParams &passivity)
+{
+    m_passivity = passivity;
+    m_tank.configure(passivity);
 }
 
 template<typename T> void Controller<T>::vibrate(const Vibration &cue)
@@ -120,8 +132,23 @@ template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t no
         r.flags |= v2::kFlagTorqueOff;
 
     // 3–4. The filter advances its own state with u = −τ + τ_total; its position is the goal.
+    // The passivity controller (passivity.md) watches the energy τ_ext delivers at the
+    // filter's rate and, when the port has given back more than it absorbed, steps the filter
+    // with the damping M_adm + β (the exact discretisation with α = (M_adm + β)/D_adm). With
+    // β = 0 the step is the very one without it, bit for bit.
+    r.tau_pc = T(0);
+    r.pc_reserve = m_tank.reserve();
     if (measured) {
-        m_filter = m_stepper.step(m_filter, -r.tau + r.tau_total);
+        const auto pc = m_tank.step(r.tau_ext, m_filter.omega, m_h);
+        r.tau_pc = pc.tauPc;
+        r.pc_reserve = pc.reserve;
+        const T u = -r.tau + r.tau_total;
+        if (pc.beta > T(0)) {
+            m_filter =
+                AdmittanceStepper<T>::computeIn(m_dAdm, m_mAdm + pc.beta, m_h).step(m_filter, u);
+        } else {
+            m_filter = m_stepper.step(m_filter, u);
+        }
         if (!m_actuator.command(m_filter.theta, m_filter.omega))
             busError();
     }

@@ -12,6 +12,7 @@
 #include "model/admittance.h"
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 #include "model/stiffness.h"
 
 #include <cstdint>
@@ -29,6 +30,8 @@ template<typename T> struct CycleRecord
     T tau_ext{};            //!< feedback rendered (0 when stale) [N·m]
     T tau_fx{};             //!< τ_det + τ_wall + τ_vib (effects.md § 1) [N·m]
     T tau_total{};          //!< τ_rec + τ_fx + τ_ext clamped to ±tau_limit [N·m]
+    T tau_pc{};             //!< −β·ω: the passivity controller's torque (passivity.md) [N·m]
+    T pc_reserve{};         //!< R, the passivity controller's energy reserve after the cycle [J]
     std::uint8_t flags = 0; //!< v2::kFlag* bits
 };
 
@@ -59,6 +62,9 @@ public:
     void setParams(const DeviceParams &params);
     //! A new valid effect block, in force from the next cycle.
     void setEffects(const EffectParams &effects);
+    //! A new valid passivity block (passivity.md), in force from the next cycle. A smaller
+    //! pc_reserve_max caps the reserve at once.
+    void setPassivity(const PassivityParams &passivity);
     //! Starts a vibration cue at the next cycle, replacing a running one (a = 0 stops it).
     void vibrate(const Vibration &cue);
     //! The host's τ_ext [N·m], received at `atUs`; it feeds the watchdog.
@@ -72,6 +78,7 @@ public:
     const CycleRecord<T> &last() const { return m_record; }
     const DeviceParams &params() const { return m_params; }
     const EffectParams &effects() const { return m_effects; }
+    const PassivityParams &passivity() const { return m_passivity; }
     double period() const { return m_period; }
     bool faulted() const { return m_faulted; }
     std::uint64_t busErrors() const { return m_busErrors; }
@@ -84,11 +91,16 @@ private:
     double m_period = 1e-3;          //!< [s]
     std::uint32_t m_periodUs = 1000; //!< the same, rounded [µs]
     T m_tauLimit{};
+    T m_h{}; //!< the period in T [s]
 
     DeviceParams m_params;
     StiffnessShape<T> m_shape;
-    AdmittanceStepper<T> m_stepper;
+    AdmittanceStepper<T> m_stepper;   //!< the step without the passivity controller's damping
+    T m_dAdm{}, m_mAdm{};             //!< D_adm, M_adm in T, for a step with M_adm + β
     BasicAdmittanceState<T> m_filter; //!< θ_f, ω_f: the filter's own state (servo.md § 4)
+    //! Off until the device core sets its block: the legacy firmware's emulation has none.
+    PassivityParams m_passivity = PassivityParams::off();
+    PassivityTank<T> m_tank;
     EffectParams m_effects;
     EffectShape<T> m_fx = EffectShape<T>::from(EffectParams{});
     struct Cue

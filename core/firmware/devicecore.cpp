@@ -36,13 +36,19 @@ template<typename T> const DeviceParams &DeviceCore<T>::loadParams()
     }
     // The defaults' ±π are not floats: kept as the nearest floats inside the range.
     EffectParams effects = roundedForWire(EffectParams{}, m_config.control.tauLimit);
+    PassivityParams passivity = roundedForWire(m_config.powerUpPassivity);
+    if (firstViolatingField(passivity) >= 0)
+        passivity = roundedForWire(PassivityParams{});
     StoredSettings stored;
     if (m_store && m_store->load(stored)) {
         const DeviceParams candidate = roundedToFloat(stored.params);
         const EffectParams candidateFx = roundedForWire(stored.effects, m_config.control.tauLimit);
-        if (valid(candidate) && firstViolatingField(candidateFx, m_config.control.tauLimit) < 0) {
+        const PassivityParams candidatePc = roundedForWire(stored.passivity);
+        if (valid(candidate) && firstViolatingField(candidateFx, m_config.control.tauLimit) < 0 &&
+            firstViolatingField(candidatePc) < 0) {
             params = candidate;
             effects = candidateFx;
+            passivity = candidatePc;
             m_powerUp = PowerUp::Stored;
         } else {
             m_storedRejected = true;
@@ -50,7 +56,8 @@ template<typename T> const DeviceParams &DeviceCore<T>::loadParams()
     }
     m_accepted = params;
     m_effects = effects;
-    m_flash = StoredSettings{params, effects};
+    m_passivity = passivity;
+    m_flash = StoredSettings{params, effects, passivity};
     m_lastTheta.store(float(params.theta0));
     return m_accepted;
 }
@@ -60,6 +67,7 @@ template<typename T> bool DeviceCore<T>::start(std::uint32_t nowUs)
     if (!m_loaded)
         loadParams();
     m_controller.setEffects(m_effects);
+    m_controller.setPassivity(m_passivity);
     const bool ok = m_controller.start(m_accepted, nowUs);
     m_lastTheta.store(float(m_controller.last().theta));
     return ok;
@@ -170,7 +178,7 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
         return ack(v2::AckStatus::Ok);
     }
     if (std::holds_alternative<v2::SaveParams>(m)) {
-        const StoredSettings settings{m_accepted, m_effects};
+        const StoredSettings settings{m_accepted, m_effects, m_passivity};
         if (m_store && !m_store->save(settings)) {
             // The reason first, so that a host that stops at the ACK has already read it.
             const std::string_view why = m_store->failure();
@@ -281,6 +289,9 @@ template<typename T> const CycleRecord<T> &DeviceCore<T>::controlCycle(std::uint
             break;
         case ControlInput::Kind::Vibrate:
             m_controller.vibrate(input.cue);
+            break;
+        case ControlInput::Kind::Passivity:
+            m_controller.setPassivity(input.passivity);
             break;
         case ControlInput::Kind::Stream:
             m_stream = input.rateHz;

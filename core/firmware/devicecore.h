@@ -35,10 +35,11 @@ public:
     struct Config
     {
         typename Controller<T>::Config control;
-        std::uint32_t deviceId = 0;    //!< HELLO_REPLY device_id
-        std::string_view firmware;     //!< HELLO_REPLY firmware name (≤ 16 UTF-8 bytes)
-        std::uint16_t linkLimitHz = 0; //!< most TELEMETRY frames/s the link carries; 0 = any
-        DeviceParams powerUp;          //!< used when the store has no valid block
+        std::uint32_t deviceId = 0;       //!< HELLO_REPLY device_id
+        std::string_view firmware;        //!< HELLO_REPLY firmware name (≤ 16 UTF-8 bytes)
+        std::uint16_t linkLimitHz = 0;    //!< most TELEMETRY frames/s the link carries; 0 = any
+        DeviceParams powerUp;             //!< used when the store has no valid block
+        PassivityParams powerUpPassivity; //!< the same for the passivity block (passivity.md)
     };
 
     //! Where the parameters in force at power-up came from.
@@ -79,6 +80,8 @@ public:
     const DeviceParams &savedParams() const { return m_flash.params; }
     //! The effect block last accepted (in force from the next cycle).
     const EffectParams &effects() const { return m_effects; }
+    //! The passivity block last accepted (in force from the next cycle).
+    const PassivityParams &passivity() const { return m_passivity; }
     std::uint16_t streamRate() const { return m_streamHz; } //!< in force after SET_STREAM [Hz]
     std::uint16_t maxStreamHz() const { return m_maxStreamHz; }
     //! Telemetry frames lost because the host port or the queue to it was full (seq gaps).
@@ -95,10 +98,11 @@ public:
 private:
     struct ControlInput
     {
-        enum class Kind : std::uint8_t { Params, Stream, Effects, Vibrate };
+        enum class Kind : std::uint8_t { Params, Stream, Effects, Vibrate, Passivity };
         Kind kind = Kind::Params;
         DeviceParams params;
         EffectParams effects;
+        PassivityParams passivity;
         Vibration cue;
         std::uint16_t rateHz = 0;
     };
@@ -130,9 +134,10 @@ private:
 
     // link context
     v2::WireDecoder m_decoder{v2::Direction::FromHost};
-    DeviceParams m_accepted; //!< latest accepted block
-    EffectParams m_effects;  //!< latest accepted effect block
-    StoredSettings m_flash;  //!< what SAVE_PARAMS saved (or power-up's blocks)
+    DeviceParams m_accepted;     //!< latest accepted block
+    EffectParams m_effects;      //!< latest accepted effect block
+    PassivityParams m_passivity; //!< latest accepted passivity block
+    StoredSettings m_flash;      //!< what SAVE_PARAMS saved (or power-up's blocks)
     std::uint16_t m_streamHz = 0;
     std::uint8_t m_replySeq = 0;
     std::uint32_t m_unanswered = 0;

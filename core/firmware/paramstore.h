@@ -4,6 +4,7 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 
 #include <string_view>
 
@@ -13,7 +14,8 @@ namespace hatpic::fw {
 struct StoredSettings
 {
     DeviceParams params;
-    EffectParams effects; //!< effects.md § 3: SAVE_PARAMS persists the effect block too
+    EffectParams effects;      //!< effects.md § 3: SAVE_PARAMS persists the effect block too
+    PassivityParams passivity; //!< passivity.md: and the passivity controller's block
     friend bool operator==(const StoredSettings &, const StoredSettings &) = default;
 };
 

@@ -8,6 +8,8 @@
 
 #include "params.h"
 
+#include <cmath>
+
 namespace hatpic {
 
 template<typename T> struct BasicAdmittanceState
@@ -23,6 +25,37 @@ using AdmittanceState = BasicAdmittanceState<double>;
 //!   θ' = θ + ω·h·φ1(x) + u·h²·φ2(x)/D
 //! This is algebraically model.md's formula, but it divides by D (≥ 1e-6) instead of M (which
 //! may be arbitrarily close to 0) and has no cancellation when x is tiny.
+namespace detail {
+
+// φ1(x) = (1 − e^{−x})/x, with φ1(0) = 1. expm1 keeps full precision for tiny x.
+template<typename T> T phi1(T x)
+{
+    if (x == T(0))
+        return T(1);
+    return -std::expm1(-x) / x;
+}
+
+// φ2(x) = (x − 1 + e^{−x})/x², with φ2(0) = 1/2. The closed form cancels catastrophically
+// for small x (relative error ≈ 2ε/x), so below 1/2 the alternating series
+// Σ (−x)ⁿ/(n+2)! is summed instead; it converges in at most about 16 terms there.
+template<typename T> T phi2(T x)
+{
+    if (x >= T(0.5))
+        return (x + std::expm1(-x)) / (x * x);
+    T term = T(0.5);
+    T sum = term;
+    for (int n = 1; n < 30; ++n) {
+        term *= -x / T(n + 2);
+        const T next = sum + term;
+        if (next == sum)
+            break;
+        sum = next;
+    }
+    return sum;
+}
+
+} // namespace detail
+
 struct AdmittanceCoefficients
 {
     double decay = 1;        //!< e^{−x} [-]
@@ -42,6 +75,21 @@ public:
         : m_decay(T(c.decay)), m_omegaToTheta(T(c.omegaToTheta)), m_uToOmega(T(c.uToOmega)),
           m_uToTheta(T(c.uToTheta))
     {}
+
+    //! The step for inertia `D`, damping `M` and step `h`, computed in T itself: for a damping
+    //! that changes from cycle to cycle (the passivity controller's M_adm + β), where the
+    //! ESP32 must not fall back to software double arithmetic.
+    static AdmittanceStepper computeIn(T D, T M, T h)
+    {
+        const T x = (M / D) * h;
+        const T f1 = detail::phi1(x);
+        AdmittanceStepper s;
+        s.m_decay = std::exp(-x);
+        s.m_omegaToTheta = h * f1;
+        s.m_uToOmega = h * f1 / D;
+        s.m_uToTheta = h * h * detail::phi2(x) / D;
+        return s;
+    }
 
     //! One step with u = −τ + τ_total held constant over it [N·m].
     BasicAdmittanceState<T> step(BasicAdmittanceState<T> s, T u) const

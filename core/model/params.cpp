@@ -95,6 +95,7 @@ template std::string rangeText(const DeviceFieldSpec &);
 template std::string rangeText(const HostFieldSpec &);
 template std::string rangeText(const EffectFieldSpec &);
 template std::string rangeText(const VibrationFieldSpec &);
+template std::string rangeText(const PassivityFieldSpec &);
 
 double roundedForWire(int index, double value)
 {

@@ -8,6 +8,7 @@
 
 #include "effects.h"
 #include "params.h"
+#include "passivity.h"
 
 #include <array>
 #include <cstddef>
@@ -287,6 +288,36 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
      "wall damping",
      "damping of the end stops while moving further in",
      &EffectParams::wall_damping,
+     paramtable::atLeast(0.0),
+     paramtable::atMost(1.0),
+     {},
+     false,
+     {0.0, 0.1, 0.001}},
+}};
+
+using PassivityFieldSpec = FieldSpec<PassivityParams>;
+
+//! The passivity controller's fields in wire order (passivity.md, "Parameters"). Tuning
+//! ranges: β_max 0.1 fails at 0.5 s one-way delay, 0.5 holds it; a tank of 0.02 J lets a
+//! rate-controlled robot's stable contact (about 15 mJ back through the knob) pass undamped.
+inline constexpr std::array<PassivityFieldSpec, PassivityParams::kFieldCount> kPassivityFields = {{
+    {"pc_damping_max",
+     "β_max",
+     "N·m·s/rad",
+     "passivity damping (max)",
+     "most damping the passivity controller adds to the knob (0 = controller off)",
+     &PassivityParams::pc_damping_max,
+     paramtable::atLeast(0.0),
+     paramtable::atMost(1.0),
+     {},
+     false,
+     {0.0, 1.0, 0.01}},
+    {"pc_reserve_max",
+     "R_max",
+     "J",
+     "passivity reserve (max)",
+     "energy a contact may give back through the knob undamped (the tank's size)",
+     &PassivityParams::pc_reserve_max,
      paramtable::atLeast(0.0),
      paramtable::atMost(1.0),
      {},

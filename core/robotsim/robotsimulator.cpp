@@ -49,8 +49,8 @@ ros::Pose poseAlong(bridge::Component c, double x)
 } // namespace
 
 RobotSimulator::RobotSimulator(const RobotSimSettings &settings)
-    : m_settings(settings), m_model(settings.robot), m_inbound(settings.faults, settings.seed),
-      m_outbound(settings.faults, settings.seed + 1)
+    : m_settings(settings),
+      m_end({settings.robot, settings.faults, settings.seed, settings.rateHz, settings.staleAfter})
 {}
 
 std::unique_ptr<RobotSimulator> RobotSimulator::start(const RobotSimSettings &settings,
@@ -117,15 +117,14 @@ void RobotSimulator::onTwist(const ros::Message &message)
         return;
     const double v = component(twist->twist, m_settings.axis);
     const std::lock_guard lock(m_mutex);
-    m_inbound.send(v, monotonicSeconds());
+    m_end.twistSent(v, monotonicSeconds());
 }
 
 RobotSimulator::Status RobotSimulator::status() const
 {
     const std::lock_guard lock(m_mutex);
     Status s = m_status;
-    s.dropped = m_inbound.counters().lost + m_inbound.counters().overflow +
-                m_outbound.counters().lost + m_outbound.counters().overflow;
+    s.dropped = m_end.dropped();
     return s;
 }
 
@@ -133,11 +132,7 @@ void RobotSimulator::run()
 {
     constexpr auto kStep = std::chrono::microseconds(1000);
     constexpr auto kMaxLag = std::chrono::milliseconds(100); // beyond this, skip ahead
-    // validate() bounds the rate (0.1 … 1000 Hz): 1 … 10 000 steps per output.
-    const auto stepsPerOutput = std::max<std::uint64_t>(
-        1, std::uint64_t(std::llround(1 / (RobotModel::kStep * m_settings.rateHz))));
     auto next = Clock::now();
-    std::uint64_t step = 0;
     while (!m_stop) {
         std::this_thread::sleep_until(next);
         next += kStep;
@@ -153,30 +148,24 @@ void RobotSimulator::run()
         bool output = false;
         {
             const std::lock_guard lock(m_mutex);
-            m_inbound.deliverDue(t, [&](double v) {
-                // A non-finite component is no reference.
-                m_vRef = std::isfinite(v) ? v : 0.0;
-                m_lastTwistAt = t;
-                ++m_status.twistsIn;
-            });
-            const bool stale = m_lastTwistAt < 0 || t - m_lastTwistAt > m_settings.staleAfter;
-            const double vRef = stale ? 0.0 : m_vRef;
-            m_model.step(vRef);
-            m_status.x = m_model.position();
-            m_status.v = m_model.velocity();
-            m_status.vRef = vRef;
-            m_status.wallForce = m_model.wallForce();
-            m_status.stale = stale;
-            output = ++step % stepsPerOutput == 0;
-            if (output) {
-                ros::WrenchStamped wrench;
-                wrench.header = {wallTime(), m_settings.frameId};
-                setComponent(wrench.wrench, m_settings.axis, m_model.estimatedForce());
-                m_outbound.send(wrench, t);
-                pose.header = wrench.header;
-                pose.pose = poseAlong(m_settings.axis, m_model.position());
-            }
-            m_outbound.deliverDue(t, [&](const ros::WrenchStamped &w) { due.push_back(w); });
+            output = m_end.step(
+                t,
+                [&](const RobotModel &model) {
+                    ros::WrenchStamped wrench;
+                    wrench.header = {wallTime(), m_settings.frameId};
+                    setComponent(wrench.wrench, m_settings.axis, model.estimatedForce());
+                    pose.header = wrench.header;
+                    pose.pose = poseAlong(m_settings.axis, model.position());
+                    return wrench;
+                },
+                [&](const ros::WrenchStamped &w) { due.push_back(w); });
+            const RobotModel &model = m_end.model();
+            m_status.x = model.position();
+            m_status.v = model.velocity();
+            m_status.vRef = m_end.vRef();
+            m_status.wallForce = model.wallForce();
+            m_status.stale = m_end.stale();
+            m_status.twistsIn = m_end.twistsIn();
         }
         // Published outside the lock: status() never waits for the middleware.
         for (const ros::WrenchStamped &w : due) {

@@ -5,7 +5,9 @@
 // between knob and robot can be made worse in both directions (robot/linkfaults.h).
 #pragma once
 
+#include "robot/robotend.h"
 #include "robotsim/robotsimsettings.h"
+#include "ros/node.h"
 
 #include <atomic>
 #include <cstdint>
@@ -56,12 +58,8 @@ private:
     std::unique_ptr<ros::Publisher> m_poseOut;
     std::unique_ptr<ros::Subscription> m_twistIn;
 
-    mutable std::mutex m_mutex; //!< guards everything below
-    RobotModel m_model;
-    FaultyChannel<double> m_inbound;              //!< the twist's component, knob → robot
-    FaultyChannel<ros::WrenchStamped> m_outbound; //!< robot → knob
-    double m_vRef = 0;
-    double m_lastTwistAt = -1; //!< when the last twist reached the robot [s, monotonic]
+    mutable std::mutex m_mutex;         //!< guards everything below
+    RobotEnd<ros::WrenchStamped> m_end; //!< the model between its two fault channels
     Status m_status;
 
     std::atomic<bool> m_stop{false};

@@ -207,6 +207,7 @@ SimulatedDevice::Private::Private(const Config &c)
         dc.firmware = kFirmware;
         dc.linkLimitHz = c.throttle ? linkLimitedRate() : 0;
         dc.powerUp = c.params;
+        dc.powerUpPassivity = c.passivity;
         core.emplace(dc, uart, *actuator, simClock, store ? &*store : nullptr);
         powerUp = core->loadParams();
         if (store && !store->warning().isEmpty())
@@ -334,6 +335,8 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
     c.tau_rec = r.tau_rec;
     c.tau_ext = r.tau_ext;
     c.tau_fx = r.tau_fx;
+    c.tau_pc = r.tau_pc;
+    c.pc_reserve = r.pc_reserve;
     c.tau_total = r.tau_total;
     c.flags = r.flags;
 

@@ -9,6 +9,7 @@
 #include "link/faultinjector.h"
 #include "model/admittance.h"
 #include "model/params.h"
+#include "model/passivity.h"
 #include "protocol/deviceinfo.h"
 #include "protocol/legacy.h"
 #include "protocol/v2codec.h"
@@ -27,6 +28,9 @@ namespace hatpic {
 class SimulatedDevice
 {
 public:
+    //! The load-reading noise hatpic-sim and hatpic-servo-sim run with: std-dev [N·m].
+    static constexpr double kProgramNoise = 0.0005;
+
     struct Config
     {
         WireProtocol protocol = WireProtocol::V2;
@@ -41,6 +45,7 @@ public:
         quint32 deviceId = 0x53494D31; //!< "SIM1"
         double tauLimit = 0.44;        //!< actuator torque limit [N·m]
         DeviceParams params;           //!< power-up parameters (a valid stateFile overrides)
+        PassivityParams passivity;     //!< power-up passivity block (the same; v2 only)
         //! Faults the link to the host injects (SimLink, SimulatorHost); empty = none.
         FaultSpec faults;
     };
@@ -48,15 +53,17 @@ public:
     //! One control cycle as the device saw it (what TELEMETRY reports).
     struct Cycle
     {
-        double t = 0;         //!< simulated time at the cycle [s]
-        double theta = 0;     //!< measured knob angle used this cycle [rad]
-        double omega = 0;     //!< knob rate [rad/s]
-        double tau = 0;       //!< measured interaction torque [N·m]
-        double tau_rec = 0;   //!< [N·m]
-        double tau_ext = 0;   //!< [N·m]
-        double tau_fx = 0;    //!< τ_det + τ_wall + τ_vib (effects.md; legacy: 0) [N·m]
-        double tau_total = 0; //!< clamped to tau_limit [N·m]
-        quint8 flags = 0;     //!< v2::kFlag* bits
+        double t = 0;          //!< simulated time at the cycle [s]
+        double theta = 0;      //!< measured knob angle used this cycle [rad]
+        double omega = 0;      //!< knob rate [rad/s]
+        double tau = 0;        //!< measured interaction torque [N·m]
+        double tau_rec = 0;    //!< [N·m]
+        double tau_ext = 0;    //!< [N·m]
+        double tau_fx = 0;     //!< τ_det + τ_wall + τ_vib (effects.md; legacy: 0) [N·m]
+        double tau_total = 0;  //!< clamped to tau_limit [N·m]
+        double tau_pc = 0;     //!< the passivity controller's −β·ω (passivity.md) [N·m]
+        double pc_reserve = 0; //!< its energy reserve R [J]
+        quint8 flags = 0;      //!< v2::kFlag* bits
 
         //! The sample of this cycle as TELEMETRY would carry it: t_s = t, t_us the wrapping
         //! 32-bit microseconds of t, the torques and flags; no reference model (v_ref,

@@ -1,21 +1,41 @@
 #include "window/experimentsdock.h"
 
+#include "editor/parametereditor.h"
 #include "experiments/experimentspanel.h"
+#include "experiments/stabilitymapview.h"
 #include "simulator/simulatorpanel.h"
 
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QTabWidget>
 
 namespace hatpic {
 
 QDockWidget *addExperimentsDock(QMainWindow *window, DeviceClient *client, PlotPanel *plots,
-                                SimulatorPanel *hand, QDockWidget *tabWith)
+                                SimulatorPanel *hand, ParameterEditor *editor, QDockWidget *tabWith)
 {
     auto *panel = new ExperimentsPanel(client, plots, window);
     panel->setObjectName(QStringLiteral("experimentsPanel"));
+    // The stability map of the teleoperation loop for the tuning being edited, beside the
+    // measurements (docs/experiments.md § Stability map).
+    auto *map = new StabilityMapView(window);
+    map->setObjectName(QStringLiteral("stabilityMap"));
+    const auto follow = [map, editor] {
+        map->setTuning(editor->params(), editor->hostParams(), editor->effects());
+    };
+    follow();
+    QObject::connect(editor, &ParameterEditor::paramsEdited, map, follow);
+    QObject::connect(editor, &ParameterEditor::hostParamsChanged, map, follow);
+    auto *tabs = new QTabWidget(window);
+    tabs->setObjectName(QStringLiteral("experimentsTabs"));
+    // Tabs on the side: the panel's height is what fits at 720 px (tst_windowlayout).
+    tabs->setTabPosition(QTabWidget::West);
+    tabs->setDocumentMode(true);
+    tabs->addTab(panel, QObject::tr("Measure"));
+    tabs->addTab(map, QObject::tr("Stability map"));
     auto *dock = new QDockWidget(QObject::tr("Experiments"), window);
     dock->setObjectName(QStringLiteral("experimentsDock"));
-    dock->setWidget(panel);
+    dock->setWidget(tabs);
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
     if (tabWith)
         window->tabifyDockWidget(tabWith, dock);

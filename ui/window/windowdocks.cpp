@@ -48,8 +48,8 @@ WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts)
     docks.bridge = addBridgeDock(window, parts.client, parts.profiles, parts.editor, docks.log);
     docks.bridge->hide();
     // Tuning experiments (docs/experiments.md): View → Experiments, beside the device log.
-    QDockWidget *experiments =
-        addExperimentsDock(window, parts.client, parts.plots, parts.simPanel, docks.log);
+    QDockWidget *experiments = addExperimentsDock(window, parts.client, parts.plots, parts.simPanel,
+                                                  parts.editor, docks.log);
     // As wide as the editor wants (within reason): its rows are long.
     window->resizeDocks({docks.parameters},
                         {std::clamp(parts.editor->sizeHint().width() + 24, 420, 600)},

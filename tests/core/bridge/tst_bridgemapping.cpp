@@ -4,8 +4,9 @@
 #include "bridge/enablegate.h"
 #include "bridge/referencemessages.h"
 #include "bridge/rosendpoints.h"
-#include "bridge/wrenchfeedback.h"
 #include "profile/bridgesettings.h"
+#include "teleop/ratelimiter.h"
+#include "teleop/wrenchfeedback.h"
 
 #include <QTest>
 

@@ -758,6 +758,7 @@ void TestSimulatedDevice::idealMatchesModel()
     c.controlRateHz = rate;
     c.hand = handOf(hand);
     c.params.theta0 = 0.05;
+    c.passivity = PassivityParams::off(); // model.md alone (the controller: tst_passivity)
     SimulatedDevice device(c);
     if (feedback != 0)
         device.receive(v2::encodeFrame(0, v2::SetFeedback{float(feedback)}));

@@ -1,4 +1,4 @@
-#include "wrenchfeedback.h"
+#include "teleop/wrenchfeedback.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,146 @@
+// hatpicctl teleop-map as a real process: the table on stdout, the CSV's columns and rows, the
+// SVG, ranges, a tuning field varied; bad options and output targets refused before anything
+// runs (exit 4, naming option, rule and value), an existing file kept without --force.
+#include "ctlprocess.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace hatpic::test;
+
+class TestHatpicctlTeleopMap : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void tableCsvAndSvg();
+    void variesAField();
+    void controllerOffAndOn();
+    void badOptions_data();
+    void badOptions();
+    void keepsAnExistingFile();
+};
+
+void TestHatpicctlTeleopMap::tableCsvAndSvg()
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(u"map.csv"_s), svg = dir.filePath(u"map.svg"_s);
+    const Run run =
+        runCtl({u"teleop-map"_s, u"--delays"_s, u"0,0.15"_s, u"--gains"_s, u"0.02"_s, u"--pc"_s,
+                u"0"_s, u"--duration"_s, u"8"_s, u"--csv"_s, csv, u"--svg"_s, svg});
+    QVERIFY2(run.code == 0, run.err.constData());
+    const QList<QByteArray> lines = run.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 3);
+    QVERIFY(lines[0].contains("settled") && lines[0].contains("settle_s"));
+    QVERIFY2(lines[1].simplified().startsWith("0.000 0.0200 0.000 1 "), lines[1].constData());
+    QVERIFY2(lines[2].simplified().startsWith("0.150 0.0200 0.000 0 - "), lines[2].constData());
+    QVERIFY(run.err.contains("2 cells of 8 s in "));
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QList<QByteArray> rows = file.readAll().trimmed().split('\n');
+    QCOMPARE(rows.size(), 3);
+    QVERIFY(rows[0].startsWith(
+        "delay,gain,pc,settled,settle_s,p2p,rms_tau_pc_ratio,dissipated_j,theta_rest,"));
+    QVERIFY(rows[1].startsWith("0,0.02,0,1,"));
+    QVERIFY(rows[2].startsWith("0.15,0.02,0,0,,"));
+    QFile chart(svg);
+    QVERIFY(chart.open(QIODevice::ReadOnly));
+    const QByteArray image = chart.readAll();
+    QVERIFY(image.startsWith("<svg") && image.contains("not settled"));
+    QCOMPARE(image.count("<title>delay "), 2);
+    // No temporary file left beside them.
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 2);
+}
+
+void TestHatpicctlTeleopMap::variesAField()
+{
+    const Run run = runCtl({u"teleop-map"_s, u"--delays"_s, u"0.12:0.15/2"_s, u"--vary"_s,
+                            u"M_adm=0.01,0.04"_s, u"--duration"_s, u"12"_s});
+    QVERIFY2(run.code == 0, run.err.constData());
+    const QList<QByteArray> lines = run.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);
+    QVERIFY(lines[0].contains("M_adm"));
+    // Four times the damping settles 120 and 150 ms (docs/teleop.md § Measured).
+    QVERIFY2(lines[3].simplified().split(' ').at(4) == "1", lines[3].constData());
+    QVERIFY2(lines[4].simplified().split(' ').at(4) == "1", lines[4].constData());
+    QVERIFY2(lines[1].simplified().split(' ').at(3) == "0.0100", lines[1].constData());
+}
+
+void TestHatpicctlTeleopMap::controllerOffAndOn()
+{
+    const Run run = runCtl({u"teleop-map"_s, u"--delays"_s, u"0.3"_s, u"--pc"_s, u"0,0.5"_s});
+    QVERIFY2(run.code == 0, run.err.constData());
+    const QList<QByteArray> lines = run.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 3);
+    const QList<QByteArray> off = lines[1].simplified().split(' ');
+    const QList<QByteArray> on = lines[2].simplified().split(' ');
+    QCOMPARE(off.at(2), QByteArray("0.000"));
+    QCOMPARE(off.at(3), QByteArray("0")); // swings for good at 300 ms
+    QCOMPARE(on.at(2), QByteArray("0.500"));
+    QCOMPARE(on.at(3), QByteArray("1"));                         // the controller holds the contact
+    QVERIFY(on.at(6).toDouble() > 0 && on.at(7).toDouble() > 0); // and its price shows
+    QVERIFY(off.at(6).toDouble() == 0 && off.at(7).toDouble() == 0);
+}
+
+void TestHatpicctlTeleopMap::badOptions_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QByteArray>("message");
+    QTest::newRow("delay word") << QStringList{u"--delays"_s, u"0,soon"_s}
+                                << QByteArray("--delays needs a number, got 'soon'.");
+    QTest::newRow("delay range") << QStringList{u"--delays"_s, u"0,20"_s}
+                                 << QByteArray("delay: must be from 0 to 10 s, got 20.");
+    QTest::newRow("step") << QStringList{u"--gains"_s, u"0:1:0"_s}
+                          << QByteArray("--gains needs a STEP above 0");
+    QTest::newRow("field") << QStringList{u"--vary"_s, u"speed=1"_s}
+                           << QByteArray("no tuning field 'speed'");
+    QTest::newRow("field value") << QStringList{u"--vary"_s, u"M_adm=-1"_s}
+                                 << QByteArray("M_adm: must be > 0, got -1.");
+    QTest::newRow("threads") << QStringList{u"--threads"_s, u"0"_s}
+                             << QByteArray("--threads needs a whole number from 1 to 64, got '0'");
+    QTest::newRow("loss") << QStringList{u"--loss"_s, u"2"_s}
+                          << QByteArray("loss: must be from 0 to 1, got 2.");
+    QTest::newRow("pc and vary") << QStringList{u"--pc"_s, u"0"_s, u"--vary"_s, u"M_adm=0.1"_s}
+                                 << QByteArray("give one of them");
+    QTest::newRow("pc value") << QStringList{u"--pc"_s, u"2"_s}
+                              << QByteArray("pc_damping_max: must be");
+    QTest::newRow("hand") << QStringList{u"--hand"_s, u"push"_s} << QByteArray("--hand");
+    QTest::newRow("folder") << QStringList{u"--csv"_s, u"/nonexistent/m.csv"_s}
+                            << QByteArray("the folder /nonexistent does not exist");
+}
+
+void TestHatpicctlTeleopMap::badOptions()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QByteArray, message);
+    const Run run = runCtl(QStringList{u"teleop-map"_s} + arguments);
+    QCOMPARE(run.code, 4);
+    QVERIFY2(run.err.startsWith("hatpicctl: ") && run.err.contains(message), run.err.constData());
+    QVERIFY(run.out.isEmpty()); // refused before anything ran
+}
+
+void TestHatpicctlTeleopMap::keepsAnExistingFile()
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(u"map.csv"_s);
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("mine\n");
+    file.close();
+    Run run =
+        runCtl({u"teleop-map"_s, u"--delays"_s, u"0"_s, u"--duration"_s, u"3"_s, u"--csv"_s, csv});
+    QCOMPARE(run.code, 4);
+    QVERIFY(run.err.contains("exists; add --force"));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), QByteArray("mine\n"));
+    file.close();
+    run = runCtl({u"teleop-map"_s, u"--delays"_s, u"0"_s, u"--duration"_s, u"3"_s, u"--csv"_s, csv,
+                  u"--force"_s});
+    QCOMPARE(run.code, 0);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.readAll().startsWith("delay,gain,pc,"));
+}
+
+QTEST_GUILESS_MAIN(TestHatpicctlTeleopMap)
+#include "tst_hatpicctlteleopmap.moc"

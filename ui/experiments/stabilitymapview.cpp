@@ -1,0 +1,259 @@
+#include "experiments/stabilitymapview.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMetaObject>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSvgWidget>
+#include <QThread>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hatpic {
+
+namespace {
+
+QDoubleSpinBox *spin(QWidget *parent, const char *name, double low, double high, int decimals,
+                     double value, const QString &suffix)
+{
+    auto *box = new QDoubleSpinBox(parent);
+    box->setObjectName(QLatin1String(name));
+    box->setRange(low, high);
+    box->setDecimals(decimals);
+    box->setSingleStep(std::pow(10.0, 1 - decimals));
+    box->setValue(value);
+    box->setSuffix(suffix);
+    return box;
+}
+
+} // namespace
+
+StabilityMapView::StabilityMapView(QWidget *parent) : QWidget(parent)
+{
+    m_delays = new QLineEdit(QStringLiteral("0:0.3/7"), this);
+    m_delays->setObjectName(QStringLiteral("mapDelays"));
+    m_delays->setToolTip(tr("One-way delays in s: numbers separated by commas, FROM:TO:STEP or "
+                            "FROM:TO/N (N values)."));
+    m_gains = new QLineEdit(QStringLiteral("0.01:0.04/7"), this);
+    m_gains->setObjectName(QStringLiteral("mapGains"));
+    m_gains->setToolTip(tr("Feedback gains in N·m/N, as the delays."));
+    m_duration = spin(this, "mapDuration", teleop::LoopResult::kRestWindow, 120, 1, 20, tr(" s"));
+    m_duration->setToolTip(tr("Virtual time each cell runs; it settles when the last 2 s rest."));
+    m_delayInUse = spin(this, "mapDelayInUse", 0, robot::kMaxLinkDelay, 3, 0, tr(" s"));
+    m_delayInUse->setToolTip(tr("Your network's one-way delay: marked on the map."));
+    m_gainInUse = spin(this, "mapGainInUse", 0, bridge::kMaxFeedbackGain, 4,
+                       teleop::LoopConfig{}.feedback.gain, tr(" N·m/N"));
+    m_gainInUse->setToolTip(tr("The bridge's feedback gain: marked on the map."));
+
+    auto *form = new QFormLayout;
+    form->addRow(tr("Delays [s]"), m_delays);
+    form->addRow(tr("Gains [N·m/N]"), m_gains);
+    form->addRow(tr("Run each"), m_duration);
+    form->addRow(tr("Delay in use"), m_delayInUse);
+    form->addRow(tr("Gain in use"), m_gainInUse);
+
+    m_compute = new QPushButton(tr("Compute map"), this);
+    m_compute->setObjectName(QStringLiteral("computeMap"));
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setObjectName(QStringLiteral("cancelMap"));
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, 100);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("mapStatus"));
+    m_status->setWordWrap(true);
+    m_status->setText(tr("The loop of robot.md (hand 0.05 N·m, robot against its wall) for the "
+                         "tuning you edit: where does contact settle, and how fast?"));
+
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_compute);
+    buttons->addWidget(m_cancel);
+    auto *controls = new QVBoxLayout;
+    controls->addLayout(form);
+    controls->addLayout(buttons);
+    controls->addWidget(m_progress);
+    controls->addWidget(m_status, 1);
+
+    m_chart = new QSvgWidget(this);
+    m_chart->setObjectName(QStringLiteral("mapChart"));
+    m_chart->setMinimumSize(320, 200);
+
+    auto *layout = new QHBoxLayout(this);
+    layout->addLayout(controls, 0);
+    layout->addWidget(m_chart, 1);
+
+    connect(m_compute, &QPushButton::clicked, this, [this] { compute(); });
+    connect(m_cancel, &QPushButton::clicked, this, &StabilityMapView::cancel);
+    for (QDoubleSpinBox *box : {m_delayInUse, m_gainInUse})
+        connect(box, &QDoubleSpinBox::valueChanged, this, &StabilityMapView::redraw);
+    updateButtons();
+}
+
+StabilityMapView::~StabilityMapView()
+{
+    m_cancelled = true;
+    joinWorker();
+}
+
+void StabilityMapView::joinWorker()
+{
+    if (m_worker.joinable())
+        m_worker.join();
+}
+
+void StabilityMapView::setTuning(const DeviceParams &device, const HostParams &host,
+                                 const EffectParams &effects)
+{
+    if (device == m_device && host == m_host && effects == m_effects)
+        return;
+    m_device = device;
+    m_host = host;
+    m_effects = effects;
+    if (!m_cells.empty() && !computing())
+        m_status->setText(tr("The tuning changed since this map: compute it again."));
+}
+
+void StabilityMapView::setPassivity(const PassivityParams &passivity)
+{
+    if (passivity == m_passivity)
+        return;
+    m_passivity = passivity;
+    if (!m_cells.empty() && !computing())
+        m_status->setText(tr("The tuning changed since this map: compute it again."));
+}
+
+teleop::MapSpec StabilityMapView::spec(QString *error) const
+{
+    teleop::MapSpec s;
+    s.base.device = m_device;
+    s.base.host = m_host;
+    s.base.effects = m_effects;
+    s.base.passivity = m_passivity;
+    // What the controller buys: off beside as edited.
+    if (m_passivity.pc_damping_max > 0)
+        s.field = {QStringLiteral("pc_damping_max"), {0.0, m_passivity.pc_damping_max}};
+    s.base.duration = m_duration->value();
+    s.threads = std::clamp(QThread::idealThreadCount(), 1, teleop::kMaxMapThreads);
+    QString why;
+    const auto delays = teleop::parseValueList(m_delays->text(), &why);
+    if (!delays) {
+        if (error)
+            *error = tr("Delays: %1.").arg(why);
+        return s;
+    }
+    const auto gains = teleop::parseValueList(m_gains->text(), &why);
+    if (!gains) {
+        if (error)
+            *error = tr("Gains: %1.").arg(why);
+        return s;
+    }
+    s.delays = *delays;
+    s.gains = *gains;
+    if (error)
+        *error = teleop::checkSpec(s);
+    return s;
+}
+
+bool StabilityMapView::compute()
+{
+    if (computing())
+        return false;
+    QString error;
+    const teleop::MapSpec s = spec(&error);
+    if (!error.isEmpty()) {
+        m_status->setText(error);
+        return false;
+    }
+    joinWorker(); // a finished one
+    m_cancelled = false;
+    m_done = false;
+    const quint64 generation = ++m_generation;
+    m_progress->setValue(0);
+    m_status->setText(tr("Computing %n cell(s)…", nullptr, int(s.cellCount())));
+    m_shown = s;
+    m_worker = std::thread([this, s, generation] {
+        std::vector<teleop::MapCell> cells = teleop::runMap(
+            s,
+            [this](qsizetype done, qsizetype total) {
+                QMetaObject::invokeMethod(
+                    this, [this, done, total] { onProgress(done, total); }, Qt::QueuedConnection);
+            },
+            &m_cancelled);
+        m_done = true;
+        QMetaObject::invokeMethod(
+            this,
+            [this, generation, cells = std::move(cells)]() mutable {
+                onFinished(generation, std::move(cells));
+            },
+            Qt::QueuedConnection);
+    });
+    updateButtons();
+    return true;
+}
+
+void StabilityMapView::cancel()
+{
+    m_cancelled = true;
+}
+
+void StabilityMapView::onProgress(qsizetype done, qsizetype total)
+{
+    if (total > 0)
+        m_progress->setValue(int(100 * done / total));
+}
+
+void StabilityMapView::onFinished(quint64 generation, std::vector<teleop::MapCell> cells)
+{
+    if (generation != m_generation)
+        return;
+    joinWorker();
+    const bool complete = qsizetype(cells.size()) == m_shown.cellCount();
+    if (!complete) {
+        m_status->setText(tr("Cancelled."));
+    } else {
+        m_cells = std::move(cells);
+        const auto settled = std::count_if(m_cells.begin(), m_cells.end(),
+                                           [](const auto &c) { return c.result.settled; });
+        m_status->setText(
+            tr("%1 of %2 cells settle within %3 s. Grey, crossed cells keep swinging: there "
+               "the contact chatters. Lower the gain, add damping (M_adm) or the passivity "
+               "controller (pc_damping_max, right) — what it costs is the settle time's "
+               "colour.")
+                .arg(settled)
+                .arg(m_cells.size())
+                .arg(m_shown.base.duration));
+        redraw();
+    }
+    m_progress->setValue(complete ? 100 : 0);
+    updateButtons();
+    Q_EMIT finished();
+}
+
+void StabilityMapView::redraw()
+{
+    if (m_cells.empty())
+        return;
+    m_svg = teleop::mapSvg(
+        m_cells, m_shown.field.name, m_shown.base.duration,
+        teleop::MapMark{m_delayInUse->value(), m_gainInUse->value(),
+                        m_shown.field.name.isEmpty() ? NAN : m_passivity.pc_damping_max});
+    m_chart->load(m_svg);
+}
+
+void StabilityMapView::updateButtons()
+{
+    m_compute->setEnabled(!computing());
+    m_cancel->setEnabled(computing());
+}
+
+QString StabilityMapView::status() const
+{
+    return m_status->text();
+}
+
+} // namespace hatpic
