@@ -240,7 +240,7 @@ void PlotFrame::autoscale(const std::array<DecimationResult, kChannelCount> &ran
 void PlotFrame::fitTickCounts()
 {
     for (QCPAxisRect *r : m_rects) {
-        const int ticks = std::clamp(r->height() / kTickSpacing, 3, 5);
+        const int ticks = std::clamp(r->height() / kTickSpacing, 2, 5);
         for (QCPAxis *y : {r->axis(QCPAxis::atLeft), r->axis(QCPAxis::atRight)}) {
             if (y->ticker()->tickCount() != ticks)
                 y->ticker()->setTickCount(ticks);
