@@ -503,6 +503,9 @@ void BridgePanel::showLoopState(const QString &text, LoopState state)
     m_loopText = text;
     m_loopState = state;
     m_loop->setText(u"<b>"_s + text.toHtmlEscaped() + u"</b>"_s);
+    // Only while there is a loop: off, the ROS section's status says so, and the room goes
+    // to what the bridge needs and its switch (in sight at 1280×720).
+    m_loop->setVisible(state != LoopState::Off);
     // Good in green, bad in the warnings' red, off in the window's own colours.
     m_loop->setStyleSheet(state == LoopState::Generating ? u"color: white; background: #b00020;"_s
                           : state == LoopState::Passive  ? u"color: #1b7f3b;"_s

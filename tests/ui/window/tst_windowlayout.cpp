@@ -214,7 +214,7 @@ void TestWindowLayout::bridgePanelSaysWhatItNeeds()
     QVERIFY2(bridge->columns() >= 2, qPrintable(QString::number(bridge->columns())));
     // Issue 27: the loop's state at a glance, and the Passivity section in sight without a
     // scroll (it once sat two scrolls down, under the topics).
-    QVERIFY(wholeInSight(find<QWidget>("bridge_loop_state")));
+    QVERIFY(find<QWidget>("bridge_loop_state")->isHidden()); // no loop yet: the needs have room
     QVERIFY(!find<QWidget>("bridge_section_passivity")->visibleRegion().isEmpty());
     // The status bar says it too, whichever panel is in front (the panel's own signal is
     // tested on real DDS in tst_bridgepanel).
