@@ -20,20 +20,9 @@ void printError(const QString &sentence)
     std::fprintf(stderr, "hatpic-robot-sim: %s\n", qPrintable(sentence));
 }
 
-QString num(double v)
-{
-    return QString::number(v, 'g', 4);
-}
-
 void printStatus(const robot::RobotSimulator::Status &s)
 {
-    const QString line =
-        u"x " + num(s.x) + u" m, v " + num(s.v) + u" m/s, v_ref " + num(s.vRef) + u" m/s, F_e " +
-        num(s.wallForce) + u" N | twists in " + QString::number(s.twistsIn) + u", wrenches out " +
-        QString::number(s.wrenchesOut) + u", poses out " + QString::number(s.posesOut) +
-        (s.stale ? u", stale" : u"") + u", dropped " + QString::number(s.dropped) +
-        (s.overruns > 0 ? u", steps late " + QString::number(s.overruns) : QString());
-    std::fprintf(stdout, "%s\n", line.toUtf8().constData());
+    std::fprintf(stdout, "%s\n", s.line().c_str());
     std::fflush(stdout);
 }
 

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace hatpic::robot {
 
@@ -179,6 +181,32 @@ void RobotSimulator::run()
             ++m_status.posesOut;
         }
     }
+}
+
+namespace {
+
+//! `value` in 4 significant digits, a negligible one as 0.
+std::string statusNumber(double value)
+{
+    if (std::abs(value) < RobotSimulator::kNegligible)
+        value = 0; // also −0
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    return text;
+}
+
+} // namespace
+
+std::string RobotSimulator::Status::line() const
+{
+    std::string out = "x " + statusNumber(x) + " m, v " + statusNumber(v) + " m/s, v_ref " +
+                      statusNumber(vRef) + " m/s, F_e " + statusNumber(wallForce) +
+                      " N | twists in " + std::to_string(twistsIn) + ", wrenches out " +
+                      std::to_string(wrenchesOut) + ", poses out " + std::to_string(posesOut) +
+                      (stale ? ", stale" : "") + ", dropped " + std::to_string(dropped);
+    if (overruns > 0)
+        out += ", steps late " + std::to_string(overruns);
+    return out;
 }
 
 } // namespace hatpic::robot

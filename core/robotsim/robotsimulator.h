@@ -34,7 +34,15 @@ public:
         std::uint64_t dropped = 0;  //!< lost or overflowed on purpose, both directions
         std::uint64_t overruns = 0; //!< steps the host was too late for (caught up, or skipped)
         bool stale = true;          //!< no fresh twist: v_ref held at 0
+
+        //! The status line hatpic-robot-sim prints each second (docs/teleop.md): "x 0.05625 m,
+        //! v -1.38e-05 m/s, v_ref …". A value below kNegligible prints as 0 (issue 27: a
+        //! velocity decaying at rest printed as "v -1.745e-257").
+        std::string line() const;
     };
+    //! Below this, x [m], v [m/s], v_ref [m/s] and F_e [N] are nothing: a picometre, a
+    //! piconewton, far under any robot's resolution.
+    static constexpr double kNegligible = 1e-12;
 
     //! Opens the node, the subscription and the publishers, and starts stepping. Null with
     //! `*error` one sentence when settings are invalid or the middleware refuses.

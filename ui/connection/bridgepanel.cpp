@@ -75,6 +75,10 @@ constexpr const char *kNeeds[] = {
     QT_TRANSLATE_NOOP("hatpic::BridgePanel",
                       "A robot, or any ROS node, publishing its wrench on the Wrench topic: "
                       "the knob's force."),
+    QT_TRANSLATE_NOOP("hatpic::BridgePanel",
+                      "No robot? hatpic-robot-sim is a simulated one, a wall to push against; "
+                      "scripts/teleop-demo starts it and this tuner with the bridge running "
+                      "(docs/teleop.md)."),
 };
 
 QDoubleSpinBox *spin(QWidget *parent, const QString &name, double low, double high, int decimals,
@@ -129,7 +133,15 @@ BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent
     scroll->setWidget(content);
     auto *outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
+    // The loop's state at a glance, above what scrolls (issue 27: the passivity warning sat at
+    // the bottom of the scroll area, out of sight).
+    m_loop = new QLabel(this);
+    m_loop->setObjectName(u"bridge_loop_state"_s);
+    m_loop->setWordWrap(true);
+    m_loop->setContentsMargins(6, 4, 6, 4);
+    outer->addWidget(m_loop);
     outer->addWidget(scroll);
+    showLoopState(tr("Bridge off"), LoopState::Off);
 
     auto *ros = new QGroupBox(tr("ROS"), content);
     ros->setObjectName(u"bridge_section_ros"_s);
@@ -290,9 +302,12 @@ void BridgePanel::buildForm()
     topicForm->addRow(m_published);
     m_sections.append(topics);
 #ifdef HATPIC_HAVE_BRIDGE
+    // What the running loop does comes right after ROS, before the settings: the robot side
+    // and the passivity in reach without scrolling past the topics (issue 27).
     m_robotSide = new RobotSideView(content);
     m_passivityView = new PassivityView(content);
-    m_sections << m_robotSide << m_passivityView;
+    m_sections.insert(1, m_passivityView);
+    m_sections.insert(2, m_robotSide);
 #endif
 
     connect(m_enable, &QCheckBox::toggled, this, &BridgePanel::setBridgeEnabled);
@@ -468,6 +483,8 @@ void BridgePanel::setBridgeEnabled(bool on)
         const QSignalBlocker blocker(m_enable);
         m_enable->setChecked(running);
     }
+    // What the bridge needs is for starting it: once it runs, the loop's sections take its room.
+    m_needs->setVisible(!running);
     if (running) {
         m_refresh.start();
         setStatus(runningText(), false);
@@ -522,7 +539,32 @@ void BridgePanel::refresh()
     m_published->setText(out);
     m_robotSide->setStats(s, c);
     m_passivityView->setState(s.passivity);
+    if (!m_bridge->isRunning())
+        showLoopState(tr("Bridge off"), LoopState::Off);
+    else if (s.passivity.warning)
+        showLoopState(tr("Loop generating energy: see Passivity below"), LoopState::Generating);
+    else if (s.passivity.inContact)
+        showLoopState(tr("Loop passive, in contact"), LoopState::Passive);
+    else
+        showLoopState(tr("Loop passive, no contact"), LoopState::Passive);
 #endif
+}
+
+void BridgePanel::showLoopState(const QString &text, LoopState state)
+{
+    if (text == m_loopText && state == m_loopState)
+        return;
+    m_loopText = text;
+    m_loopState = state;
+    m_loop->setText(u"<b>"_s + text.toHtmlEscaped() + u"</b>"_s);
+    // Only while there is a loop: off, the ROS section's status says so, and the room goes
+    // to what the bridge needs and its switch (in sight at 1280×720).
+    m_loop->setVisible(state != LoopState::Off);
+    // Good in green, bad in the warnings' red, off in the window's own colours.
+    m_loop->setStyleSheet(state == LoopState::Generating ? u"color: white; background: #b00020;"_s
+                          : state == LoopState::Passive  ? u"color: #1b7f3b;"_s
+                                                         : QString());
+    Q_EMIT loopStateChanged(text, state);
 }
 
 QString BridgePanel::runningText() const

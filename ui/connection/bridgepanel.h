@@ -13,7 +13,8 @@
 // rate), the wrench's feedback, the topics — stand side by side as far as the panel's width
 // allows, else under each other, and scroll: a new section is one more entry in m_sections.
 // Two show the robot side as measured (RobotSideView) and the energy at the knob's port
-// (PassivityView). It scrolls on its own, so it never sets the dock's size.
+// (PassivityView); they come right after ROS, and a header above the scroll area says the
+// loop's state at a glance. It scrolls on its own, so it never sets the dock's size.
 #pragma once
 
 #include "model/params.h"
@@ -46,6 +47,10 @@ class BridgePanel : public QWidget
 {
     Q_OBJECT
 public:
+    //! The robot loop at a glance: the panel's header and the window's status bar.
+    enum class LoopState { Off, Passive, Generating };
+    Q_ENUM(LoopState)
+
     static constexpr int kRefreshMs = 200; //!< readouts while running
     //! Whether this build has the bridge (HATPIC_BUILD_BRIDGE).
     static bool isBuilt();
@@ -60,6 +65,9 @@ public:
     static QString needsText();
     //! Sections side by side now (1 … the number of sections).
     int columns() const { return m_columns; }
+    //! The loop's state, as its header says it ("Loop passive, no contact", …).
+    LoopState loopState() const { return m_loopState; }
+    QString loopText() const { return m_loopText; }
 
 public Q_SLOTS:
     //! New settings (a profile was opened); the ROS version and domain stay. While running they
@@ -77,6 +85,8 @@ public Q_SLOTS:
 Q_SIGNALS:
     //! The user changed a setting (valid as a whole): for the profile.
     void settingsEdited(const hatpic::bridge::BridgeSettings &settings);
+    //! The loop's state changed (the header's text and its state).
+    void loopStateChanged(const QString &text, hatpic::BridgePanel::LoopState state);
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
@@ -93,6 +103,7 @@ private:
     QString runningText() const;
     //! The Domain row for ROS 2, the Master row for ROS 1.
     void showNetworkRows();
+    void showLoopState(const QString &text, LoopState state);
 
     DeviceClient &m_client;
     bridge::Bridge *m_bridge = nullptr; //!< a child; null when not built
@@ -102,6 +113,9 @@ private:
     QGridLayout *m_grid = nullptr; //!< the sections, in m_columns columns
     QList<QWidget *> m_sections;
     int m_columns = 0;
+    QLabel *m_loop = nullptr; //!< the loop's state, above the scroll area
+    QString m_loopText;
+    LoopState m_loopState = LoopState::Off;
     QLabel *m_needs = nullptr;
     QLabel *m_status = nullptr;
     QCheckBox *m_enable = nullptr;

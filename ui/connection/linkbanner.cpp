@@ -51,10 +51,11 @@ void LinkBanner::show(const QString &text, const QString &details, const char *b
     m_details->setVisible(!details.isEmpty() && m_detailsButton->isChecked());
     m_detailsButton->setVisible(!details.isEmpty());
     m_label->setToolTip(details);
-    setStyleSheet(QStringLiteral("#linkBanner { background: %1; border-radius: 4px; }"
-                                 "#linkBanner QLabel { color: white; font-weight: bold; }"
-                                 "#linkBanner #linkBannerDetails { font-weight: normal; }")
-                      .arg(QLatin1String(background)));
+    setStyleSheet(
+        QStringLiteral("#linkBanner { background: %1; border-radius: 4px; }"
+                       "#linkBanner QLabel { color: white; background: %1; font-weight: bold; }"
+                       "#linkBanner #linkBannerDetails { font-weight: normal; }")
+            .arg(QLatin1String(background)));
     setVisible(true);
 }
 
@@ -91,7 +92,7 @@ void LinkBanner::setState(SessionState state, const StateDetail &detail, const Q
         break;
     case SessionState::Disconnected:
         if (detail.kind == StateDetail::Kind::None)
-            hide();
+            show(startHint(port), QString(), "#1565c0"); // how to start, not an alarm
         else if (detail.kind == StateDetail::Kind::OpenFailed)
             show(tr("Could not open %1: it may be missing, in use by another program, or not "
                     "open to your user.")
@@ -108,6 +109,16 @@ void LinkBanner::setState(SessionState state, const StateDetail &detail, const Q
         break; // keep a "lost" banner up while reconnecting
     }
 }
+QString LinkBanner::startHint(const QString &port)
+{
+    // Issue 27: the window opened disconnected with nothing saying how to begin.
+    if (port.isEmpty() || port == QStringView(kSimPortName))
+        return tr("Not connected. Press Connect (Ctrl+K) to try the simulated knob.");
+    return tr("Not connected. Press Connect (Ctrl+K) to open %1, or choose the simulated "
+              "joystick in the port list to try the simulated knob.")
+        .arg(port);
+}
+
 QString LinkBanner::text() const
 {
     return isVisibleTo(parentWidget()) ? m_label->text() : QString();

@@ -21,7 +21,9 @@ public:
 
     //! `port` names the port in the message; `detail` is the session's structured reason.
     void setState(SessionState state, const StateDetail &detail, const QString &port);
-    QString text() const;        //!< the sentence shown
+    QString text() const; //!< the sentence shown
+    //! While disconnected: how to start, on `port` (the simulated joystick's name: try it).
+    static QString startHint(const QString &port);
     QString detailsText() const; //!< the system's and the session's own text; may be empty
 
 private:

@@ -91,11 +91,22 @@ void PassivityView::setState(const analysis::PassivityObserver::State &s,
     if (s.samples == 0) {
         m_energy->setText(tr("No sample yet"));
     } else {
-        m_energy->setText(s.inContact ? tr("E %1; generated lately %2 (in contact)")
-                                            .arg(millijoules(s.energy), millijoules(s.generated))
-                                      : tr("E %1 (no contact: |τ_ext| ≤ %2 N·m)")
-                                            .arg(millijoules(s.energy))
-                                            .arg(settings.contactTorque));
+        // What is good and what is bad, in words first, the figures after (issue 27).
+        if (s.warning)
+            m_energy->setText(tr("Bad: generating energy in contact. E %1; generated lately %2 "
+                                 "(more than %3 is unstable).")
+                                  .arg(millijoules(s.energy), millijoules(s.generated),
+                                       millijoules(settings.threshold)));
+        else if (s.inContact)
+            m_energy->setText(tr("Good: passive in contact. E %1; generated lately %2 (up to "
+                                 "%3 is fine).")
+                                  .arg(millijoules(s.energy), millijoules(s.generated),
+                                       millijoules(settings.threshold)));
+        else
+            m_energy->setText(tr("Good: no contact (|τ_ext| ≤ %2 N·m), nothing to dissipate. "
+                                 "E %1.")
+                                  .arg(millijoules(s.energy))
+                                  .arg(settings.contactTorque));
     }
     m_warning->setText(
         tr("The loop is generating energy in contact (%1 within %2 s): it can chatter or push "

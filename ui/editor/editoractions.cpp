@@ -37,7 +37,7 @@ EditorActions::EditorActions(QWidget *editor, QUndoStack *undoStack)
     editor->addAction(push);
 }
 
-void EditorActions::addGoTo(const ParameterForm *form)
+void EditorActions::addGoTo(const ParameterForm *form, std::function<void(ParameterField *)> goTo)
 {
     QStringList order;
     for (int i = 0; i < DeviceParams::kFieldCount; ++i)
@@ -48,10 +48,7 @@ void EditorActions::addGoTo(const ParameterForm *form)
         auto *go = new QAction(tr("Go to %1").arg(f->spec().symbol), m_editor);
         go->setObjectName(u"action_goto_"_s + order[i]);
         go->setShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_1 + int(i))));
-        connect(go, &QAction::triggered, this, [f] {
-            f->spinBox()->setFocus(Qt::ShortcutFocusReason);
-            f->spinBox()->selectAll();
-        });
+        connect(go, &QAction::triggered, this, [f, goTo] { goTo(f); });
         m_editor->addAction(go);
         m_goTo << go;
     }

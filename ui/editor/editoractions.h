@@ -3,6 +3,8 @@
 // and "Go to <field>" (Alt+1 … Alt+9). The editor connects what they trigger.
 #pragma once
 
+#include <functional>
+
 #include <QList>
 #include <QObject>
 
@@ -12,6 +14,7 @@ class QWidget;
 
 namespace hatpic {
 
+class ParameterField;
 class ParameterForm;
 
 class EditorActions : public QObject
@@ -22,8 +25,8 @@ public:
     EditorActions(QWidget *editor, QUndoStack *undoStack);
 
     //! Alt+1 … Alt+9 put the cursor in the device fields, v_max and tau_limit, in the order
-    //! they are shown.
-    void addGoTo(const ParameterForm *form);
+    //! they are shown, through `goTo` (which scrolls the field into view first).
+    void addGoTo(const ParameterForm *form, std::function<void(ParameterField *)> goTo);
     //! Read, Revert and the Go-to actions, for the shortcut table.
     QList<QAction *> keyboardActions() const;
 

@@ -51,7 +51,7 @@ ParameterEditor::ParameterEditor(QWidget *parent)
     connect(m_actions->revert, &QAction::triggered, this, &ParameterEditor::revert);
 
     buildUi();
-    m_actions->addGoTo(m_form);
+    m_actions->addGoTo(m_form, [this](ParameterField *field) { goTo(field); });
     applyParams(DeviceParams{}, HostParams{});
     m_undo->clear();
     refreshSync();
@@ -128,10 +128,16 @@ void ParameterEditor::buildUi()
 void ParameterEditor::showFirstProblem()
 {
     ParameterField *field = m_problemFields.isEmpty() ? nullptr : m_form->field(m_problemFields[0]);
-    if (!field)
-        return;
-    m_scroll->ensureWidgetVisible(field->spinBox());
-    field->spinBox()->setFocus(Qt::OtherFocusReason);
+    if (field)
+        goTo(field);
+}
+
+void ParameterEditor::goTo(ParameterField *field)
+{
+    // In view first, even when it has the focus already (scrolled away since): never typed
+    // into blind (issue 27).
+    m_scroll->ensureWidgetVisible(field->spinBox(), 12, 12);
+    field->spinBox()->setFocus(Qt::ShortcutFocusReason);
     field->spinBox()->selectAll();
 }
 

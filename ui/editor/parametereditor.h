@@ -137,6 +137,8 @@ private:
     void refreshActions();
     //! Brings the field of the first broken rule into sight, with the cursor in it.
     void showFirstProblem();
+    //! Scrolls `field` into view and puts the cursor in it, its text selected.
+    void goTo(ParameterField *field);
 
     DeviceParams m_params;
     HostParams m_host;

@@ -101,8 +101,12 @@ SyncBar::SyncBar(QUndoStack *undo, QAction *read, QAction *revert, QAction *push
     grid->addLayout(options, 2, 0, 1, 2);
     grid->setColumnStretch(0, 1);
     // Only the fields are Tab stops; the buttons have shortcuts (Ctrl+Return, Ctrl+Shift+R, …).
+    // A click on a button leaves the focus where it was (issue 27: Push took it, and handed it
+    // on to the simulated hand's selector once disabled while pushing); a check box takes it.
     for (QWidget *w : findChildren<QWidget *>()) {
-        if (w->focusPolicy() & Qt::TabFocus)
+        if (qobject_cast<QToolButton *>(w))
+            w->setFocusPolicy(Qt::NoFocus);
+        else if (w->focusPolicy() & Qt::TabFocus)
             w->setFocusPolicy(Qt::ClickFocus);
     }
 }

@@ -1,5 +1,7 @@
 #include "experimentplots.h"
 
+#include "plots/plottheme.h"
+
 #include "plots/axistitle.h"
 #include "plots/palette.h"
 #include "plots/qcp.h"
@@ -114,6 +116,9 @@ ExperimentPlots::ExperimentPlots(QWidget *parent) : QTabWidget(parent)
     m_spectrum->yAxis2->setVisible(true);
     m_spectrum->yAxis2->setLabel(tr("τ [dB re 1 N·m]"));
     addTab(m_spectrum, tr("Spectrum"));
+    // The theme's colours, as the main plots (issue 27: these stayed white in the dark theme).
+    for (QCustomPlot *plot : {m_step, m_bode, m_spectrum})
+        plottheme::follow(plot);
 }
 
 QCustomPlot *ExperimentPlots::plot(Tab tab) const
@@ -174,7 +179,7 @@ void ExperimentPlots::showStep(const ExperimentResult &r)
     }
     model->setData(t, y, true);
     m_step->rescaleAxes();
-    m_step->replot();
+    plottheme::apply(m_step, m_step->palette()); // the new legend entries too; replots
     setCurrentWidget(m_step);
 }
 
@@ -198,7 +203,7 @@ void ExperimentPlots::showBode(const ExperimentResult &r)
     for (QCPGraph *g : {measuredMag, measuredPhase})
         g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
     if (r.points.empty()) {
-        m_bode->replot();
+        plottheme::apply(m_bode, m_bode->palette()); // the new legend entries too; replots
         return;
     }
     const double lo = r.points.front().frequency / 2;
@@ -228,7 +233,7 @@ void ExperimentPlots::showBode(const ExperimentResult &r)
         rect->axis(QCPAxis::atLeft)->rescale();
         rect->axis(QCPAxis::atLeft)->scaleRange(1.1);
     }
-    m_bode->replot();
+    plottheme::apply(m_bode, m_bode->palette()); // the new legend entries too; replots
     setCurrentWidget(m_bode);
 }
 
@@ -252,7 +257,7 @@ void ExperimentPlots::showSpectra(const analysis::Spectrum &theta, const analysi
     };
     fill(th, theta);
     fill(ta, tau);
-    m_spectrum->replot();
+    plottheme::apply(m_spectrum, m_spectrum->palette()); // the new legend entries too; replots
     setCurrentWidget(m_spectrum);
 }
 

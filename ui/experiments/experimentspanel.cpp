@@ -2,11 +2,13 @@
 
 #include "experiment/experimentcsv.h"
 #include "experiment/experimentrunner.h"
+#include "experiment/operatingpoint.h"
 #include "experimentplots.h"
 #include "plots/plotpanel.h"
 #include "plots/samplebuffer.h"
 #include "session/deviceclient.h"
 
+#include <QColor>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -62,9 +64,14 @@ ExperimentsPanel::ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidg
         if (!running() && !m_result)
             showReadyHint();
     });
+    // The levels follow the device's tuning, after a run as before it (issue 27: they froze
+    // after the first run, and the next one left the notch band); the fields the user typed
+    // are kept until Defaults.
     connect(m_client, &DeviceClient::deviceTuningChanged, this, [this] {
+        if (!running())
+            refreshDefaults();
         if (!running() && !m_result)
-            fillDefaults();
+            showReadyHint(); // the effects' caution
     });
     onKindChanged(); // shows the kind's fields and fills its defaults
     showReadyHint();
@@ -73,9 +80,23 @@ ExperimentsPanel::ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidg
 
 void ExperimentsPanel::showReadyHint()
 {
-    m_status->setText(ExperimentRunner::handFor(*m_client) == RunHand::SimulatedIdle
-                          ? tr("The simulated hand is idle while an experiment runs.")
-                          : tr("Let go of the knob while an experiment runs."));
+    const QString hand = ExperimentRunner::handFor(*m_client) == RunHand::SimulatedIdle
+                             ? tr("The simulated hand is idle while an experiment runs.")
+                             : tr("Let go of the knob while an experiment runs.");
+    m_status->setText(
+        withCaution(hand, operatingPointWarnings(currentKind(), m_client->deviceTuning())));
+}
+
+ExperimentKind ExperimentsPanel::currentKind() const
+{
+    return ExperimentKind(m_kind->currentData().toInt());
+}
+
+QString ExperimentsPanel::withCaution(const QString &text, const QStringList &cautions)
+{
+    if (cautions.isEmpty())
+        return text;
+    return text + u'\n' + tr("Caution: %1").arg(cautions.join(u' '));
 }
 
 ExperimentsPanel::~ExperimentsPanel() = default;
@@ -201,6 +222,17 @@ void ExperimentsPanel::buildForm()
     layout->addWidget(m_split);
     placeFigures();
 
+    // A field the user changed keeps its value when the device's tuning changes.
+    for (QDoubleSpinBox *field : {m_from, m_to, m_offset, m_amplitude, m_settle, m_duration})
+        connect(field, &QDoubleSpinBox::valueChanged, this, [this, field] {
+            if (!m_filling)
+                m_typed.insert(field);
+        });
+    connect(m_cycles, &QSpinBox::valueChanged, this, [this] {
+        if (!m_filling)
+            m_typed.insert(m_cycles);
+    });
+    connect(m_frequencies, &QLineEdit::textEdited, this, [this] { m_typed.insert(m_frequencies); });
     connect(m_kind, &QComboBox::currentIndexChanged, this, &ExperimentsPanel::onKindChanged);
     connect(m_defaults, &QPushButton::clicked, this, &ExperimentsPanel::fillDefaults);
     connect(m_run, &QPushButton::clicked, this, &ExperimentsPanel::run);
@@ -250,25 +282,44 @@ void ExperimentsPanel::onKindChanged()
                        static_cast<QWidget *>(m_frequencies), static_cast<QWidget *>(m_cycles)})
         m_form->setRowVisible(w, sine);
     m_form->setRowVisible(m_duration, !sine);
-    fillDefaults();
+    refreshDefaults();
 }
 
 void ExperimentsPanel::fillDefaults()
 {
-    const ExperimentPlan p =
-        ExperimentPlan::defaults(ExperimentKind(m_kind->currentData().toInt()),
-                                 m_client->deviceTuning().params.value_or(DeviceParams{}));
-    m_from->setValue(p.tauFrom);
-    m_to->setValue(p.tauTo);
-    m_offset->setValue(p.offset);
-    m_amplitude->setValue(p.amplitude);
-    m_settle->setValue(p.settle);
-    m_duration->setValue(p.duration);
-    QStringList f;
-    for (double v : p.frequencies)
-        f.append(QString::number(v, 'g', 3));
-    m_frequencies->setText(f.join(QStringLiteral(", ")));
-    m_cycles->setValue(p.cycles);
+    m_typed.clear();
+    refreshDefaults();
+}
+
+void ExperimentsPanel::refreshDefaults()
+{
+    const ExperimentPlan p = ExperimentPlan::defaults(
+        currentKind(), m_client->deviceTuning().params.value_or(DeviceParams{}));
+    m_filling = true;
+    const auto fill = [this](QDoubleSpinBox *field, double value) {
+        if (!m_typed.contains(field))
+            field->setValue(value);
+    };
+    fill(m_from, p.tauFrom);
+    fill(m_to, p.tauTo);
+    fill(m_offset, p.offset);
+    fill(m_amplitude, p.amplitude);
+    fill(m_settle, p.settle);
+    fill(m_duration, p.duration);
+    if (!m_typed.contains(m_frequencies)) {
+        QStringList f;
+        for (double v : p.frequencies)
+            f.append(QString::number(v, 'g', 3));
+        m_frequencies->setText(f.join(QStringLiteral(", ")));
+    }
+    if (!m_typed.contains(m_cycles))
+        m_cycles->setValue(p.cycles);
+    m_filling = false;
+}
+
+bool ExperimentsPanel::typed(const QWidget *field) const
+{
+    return m_typed.contains(field);
 }
 
 ExperimentPlan ExperimentsPanel::plan() const
@@ -298,9 +349,10 @@ bool ExperimentsPanel::run()
         return false;
     }
     m_progress->setValue(0);
-    m_status->setText(m_runner->hand() == RunHand::SimulatedIdle
-                          ? tr("Running… the simulated hand is idle until it ends.")
-                          : tr("Running… let go of the knob."));
+    m_status->setText(withCaution(m_runner->hand() == RunHand::SimulatedIdle
+                                      ? tr("Running… the simulated hand is idle until it ends.")
+                                      : tr("Running… let go of the knob."),
+                                  operatingPointWarnings(currentKind(), m_client->deviceTuning())));
     updateButtons();
     Q_EMIT runningChanged(true);
     return true;
@@ -333,8 +385,11 @@ void ExperimentsPanel::onFinished(const ExperimentResult &result)
     const QString done = result.hand == RunHand::SimulatedIdle
                              ? tr("Done; τ_ext is back to 0, the simulated hand as it was.")
                              : tr("Done; τ_ext is back to 0.");
-    // The headline figures where they are always in sight; the table has them all.
-    m_status->setText(result.problem.isEmpty() ? done + u' ' + headline(result) : result.problem);
+    // The headline figures where they are always in sight; the table has them all. When the
+    // knob was not where the model's figures apply, the status says so next to them.
+    m_status->setText(
+        withCaution(result.problem.isEmpty() ? done + u' ' + headline(result) : result.problem,
+                    operatingPointCaveats(result)));
     showFigures(result);
     m_plots->showResult(result);
     updateButtons();
@@ -403,18 +458,46 @@ void ExperimentsPanel::showFigures(const ExperimentResult &r)
     m_figures->setItem(0, 0, new QTableWidgetItem(tr("Hand on the knob")));
     m_figures->setItem(0, 1, new QTableWidgetItem(runHandText(r.hand)));
     m_figures->setItem(0, 2, new QTableWidgetItem(tr("none")));
+    // Then whether the knob was where the model's figures apply (the status line says why not).
+    int first = 1;
+    if (r.plan.kind != ExperimentKind::Spectrum) {
+        const bool off = !operatingPointCaveats(r).isEmpty();
+        m_figures->insertRow(1);
+        m_figures->setItem(1, 0, new QTableWidgetItem(tr("Operating point")));
+        auto *measured =
+            new QTableWidgetItem(off ? tr("not the model's (see the status)") : tr("in band"));
+        if (off)
+            measured->setForeground(QColor(0xc0, 0x39, 0x2b));
+        m_figures->setItem(1, 1, measured);
+        m_figures->setItem(1, 2, new QTableWidgetItem(tr("in band")));
+        first = 2;
+    }
     for (int i = 0; i < rows.size(); ++i) {
-        m_figures->setItem(i + 1, 0, new QTableWidgetItem(rows[i].name));
-        m_figures->setItem(i + 1, 1,
+        m_figures->setItem(i + first, 0, new QTableWidgetItem(rows[i].name));
+        m_figures->setItem(i + first, 1,
                            new QTableWidgetItem(cell(rows[i].measured, rows[i].decimals)));
-        m_figures->setItem(i + 1, 2, new QTableWidgetItem(cell(rows[i].model, rows[i].decimals)));
+        m_figures->setItem(i + first, 2,
+                           new QTableWidgetItem(cell(rows[i].model, rows[i].decimals)));
     }
 }
 
 void ExperimentsPanel::updateButtons()
 {
     const bool busy = running();
-    m_run->setEnabled(!busy && m_client->state() == SessionState::Connected);
+    const bool canRun = !busy && m_client->state() == SessionState::Connected;
+    // The keyboard stays on the panel's buttons (issue 27: Run, disabled once clicked, handed
+    // the focus on to the simulated hand's selector): Run gives it to Cancel, Cancel back.
+    const bool onButtons = m_run->hasFocus() || m_cancel->hasFocus();
+    if (busy) {
+        m_cancel->setEnabled(true);
+        if (onButtons)
+            m_cancel->setFocus(Qt::OtherFocusReason);
+    } else {
+        m_run->setEnabled(canRun);
+        if (onButtons)
+            (canRun ? static_cast<QWidget *>(m_run) : m_kind)->setFocus(Qt::OtherFocusReason);
+    }
+    m_run->setEnabled(canRun);
     m_cancel->setEnabled(busy);
     m_kind->setEnabled(!busy);
     m_defaults->setEnabled(!busy);

@@ -7,6 +7,7 @@
 
 #include "experiment/experimentresult.h"
 
+#include <QSet>
 #include <QWidget>
 
 #include <optional>
@@ -42,8 +43,12 @@ public:
 
     //! The plan the form describes.
     ExperimentPlan plan() const;
-    //! Fills the form with the defaults for the chosen kind and the device's parameters.
+    //! Fills the form with the defaults for the chosen kind and the device's parameters
+    //! (the Defaults button): the fields the user typed too.
     void fillDefaults();
+    //! True when the user changed `field` since the last fillDefaults(): the device's new
+    //! tuning then leaves it as typed.
+    bool typed(const QWidget *field) const;
     //! Starts the plan; false with the reason in the status line.
     bool run();
     void cancel();
@@ -73,11 +78,16 @@ private:
     //! The figures beside the plots, or behind a tab when the panel is narrow.
     void placeFigures();
     void onKindChanged();
+    //! The defaults for the device's parameters into the fields the user has not typed.
+    void refreshDefaults();
     void onFinished(const ExperimentResult &result);
     void showFigures(const ExperimentResult &result);
     //! The result's main figures next to the model's, in one sentence.
     static QString headline(const ExperimentResult &result);
     void updateButtons();
+    ExperimentKind currentKind() const;
+    //! `text`, then "Caution: …" on a line of its own when `cautions` has any.
+    static QString withCaution(const QString &text, const QStringList &cautions);
     //! Before a run: what to do with the hand, for the connected device.
     void showReadyHint();
     void saveCsvAs();
@@ -101,6 +111,8 @@ private:
     QWidget *m_results{}; //!< the figures and their export buttons
     QSplitter *m_split{}; //!< controls | plots [| results]
     ExperimentPlots *m_plots{};
+    QSet<const QWidget *> m_typed; //!< fields the user changed since the last Defaults
+    bool m_filling = false;        //!< the panel, not the user, is setting the fields
 };
 
 } // namespace hatpic

@@ -109,8 +109,12 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
     addGraph(Channel::VRef, PlotKind::Reference, false);
     addGraph(Channel::PRef, PlotKind::Reference, true);
     // τ_total = τ_rec + τ_ext lies exactly on τ_rec while τ_ext = 0: τ_rec goes wide underneath,
-    // τ_total dashed on top, so both stay visible.
-    graph(Channel::TauRec)->setPen(QPen(palette::channel(Channel::TauRec), 3.0));
+    // τ_total dashed on top, so both stay visible. In a robot's wall τ_ext equals τ_rec (the
+    // teleoperation demo's equilibrium): τ_ext, drawn after τ_rec, is 2 px inside τ_rec's 4, so
+    // the wall's push shows in its own colour with τ_rec on both sides (issue 27: a 1 px τ_ext
+    // vanished in a 3 px τ_rec). The two wide pens cost as the one did (docs/performance.md).
+    graph(Channel::TauRec)->setPen(QPen(palette::channel(Channel::TauRec), 4.0));
+    graph(Channel::TauExt)->setPen(QPen(palette::channel(Channel::TauExt), 2.0));
     graph(Channel::TauTotal)->setPen(QPen(palette::channel(Channel::TauTotal), 1.0, Qt::DashLine));
     graph(Channel::Omega)->setVisible(false);
     // τ_fx's parts, off until asked for: τ_fx's colour, each in its own line style.
@@ -231,6 +235,17 @@ void PlotFrame::autoscale(const std::array<DecimationResult, kChannelCount> &ran
     collect({Channel::PRef});
     fit(rect(PlotKind::Reference)->axis(QCPAxis::atRight), lo, hi,
         kMinSpan[2] * units.scale(Channel::PRef));
+}
+
+void PlotFrame::fitTickCounts()
+{
+    for (QCPAxisRect *r : m_rects) {
+        const int ticks = std::clamp(r->height() / kTickSpacing, 2, 5);
+        for (QCPAxis *y : {r->axis(QCPAxis::atLeft), r->axis(QCPAxis::atRight)}) {
+            if (y->ticker()->tickCount() != ticks)
+                y->ticker()->setTickCount(ticks);
+        }
+    }
 }
 
 void PlotFrame::setWideLegends(bool wide)

@@ -52,6 +52,13 @@ public:
     //! leaves the plots more room.
     void setWideLegends(bool wide);
 
+    //! Vertical room one y tick label takes, with a gap to the next [px]. The y axes get as
+    //! many ticks as their plot's height holds at this spacing, so labels never print over
+    //! each other in a short plot (issue 27).
+    static constexpr int kTickSpacing = 26;
+    //! Fits the y axes' tick counts to the plots' heights (done after every layout).
+    void fitTickCounts();
+
     //! Axis labels with the units of `units` ("θ [°]", "v_ref [m/s]", …).
     void setAxisLabels(const DisplayUnits &units);
     //! Keeps the y ranges on the same physical values when the display units change.

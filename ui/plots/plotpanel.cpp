@@ -27,7 +27,7 @@ PlotPanel::PlotPanel(QWidget *parent) : QWidget(parent)
     m_plot->setNoAntialiasingOnDrag(true);
     m_plot->setPlottingHint(QCP::phFastPolylines, true);
     m_plot->setFocusPolicy(Qt::ClickFocus); // so Space pauses after a click on the plots
-    m_plot->setMinimumHeight(300);
+    m_plot->setMinimumHeight(kMinPlotsHeight);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
@@ -55,6 +55,9 @@ void PlotPanel::buildPlots()
             connect(y, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), this,
                     [this] { m_replotNeeded = true; });
     }
+    // After every layout: as many y ticks as each plot's height holds (issue 27: a bottom
+    // panel squeezed the plots until tick labels printed over each other).
+    connect(m_plot, &QCustomPlot::afterLayout, this, [this] { m_frame->fitTickCounts(); });
     m_overlays = std::make_unique<PlotOverlays>(m_plot, m_frame->rects());
     m_ghost = std::make_unique<PlotGhost>(*m_frame);
     m_measure = new MeasureCursors(this);

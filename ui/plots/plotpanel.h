@@ -46,6 +46,8 @@ public:
     using Plot = PlotKind;
     static constexpr int kPlotCount = PlotFrame::kPlotCount;
     static constexpr double kDefaultRepaintHz = 30; //!< [Hz]
+    //! The least height of the three plots [px].
+    static constexpr int kMinPlotsHeight = 300;
 
     //! Timing of the repaints, for the status line, the benchmark and the performance notes.
     struct RepaintStats

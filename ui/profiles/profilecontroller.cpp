@@ -4,6 +4,8 @@
 #include "profiles/abswitchcommand.h"
 #include "profiles/noteseditcommand.h"
 
+#include <algorithm>
+
 #include <QAction>
 #include <QDir>
 #include <QFileDialog>
@@ -125,6 +127,37 @@ bool ProfileController::isModified(int slot) const
     const Profile &saved = m_slots[slot].saved;
     return p.device != saved.device || p.host != saved.host || p.effects != saved.effects ||
            p.bridge != saved.bridge || p.notes != saved.notes;
+}
+
+QStringList ProfileController::unsavedParts(int slot) const
+{
+    QStringList parts;
+    if (!isModified(slot))
+        return parts;
+    const Profile p = currentProfile(slot);
+    const Profile &saved = m_slots[slot].saved;
+    QStringList fields;
+    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
+        if (p.device.field(i) != saved.device.field(i))
+            fields << QString::fromLatin1(deviceFieldName(i));
+    }
+    if (p.host.v_max != saved.host.v_max)
+        fields << u"v_max"_s;
+    if (p.host.tau_limit != saved.host.tau_limit)
+        fields << u"tau_limit"_s;
+    if (p.host.mode != saved.host.mode || p.host.ref_deadzone != saved.host.ref_deadzone)
+        fields << tr("the reference settings");
+    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+        if (p.effects.field(i) != saved.effects.field(i))
+            fields << QString::fromLatin1(effectFieldName(i));
+    }
+    if (!fields.isEmpty())
+        parts << fields.join(u", "_s);
+    if (p.bridge != saved.bridge)
+        parts << tr("a bridge setting");
+    if (p.notes != saved.notes)
+        parts << tr("the notes");
+    return parts;
 }
 
 bool ProfileController::isModified() const
@@ -323,10 +356,12 @@ bool ProfileController::maybeSaveSlot(int slot)
 {
     if (!isModified(slot))
         return true;
+    // What is unsaved, by name (issue 27: a changed bridge setting asked to save a profile
+    // whose parameters had not changed, without saying why).
     const QString text =
-        tr("Profile \"%1\" (slot %2) has unsaved changes. Save them?")
+        tr("Profile \"%1\" (slot %2) has unsaved changes: %3. Save them?")
             .arg(m_slots[slot].saved.name.isEmpty() ? tr("Untitled") : m_slots[slot].saved.name,
-                 slotName(slot));
+                 slotName(slot), unsavedParts(slot).join(u"; "_s));
     switch (m_question(text)) {
     case QMessageBox::Save:
         return saveSlotInteractive(slot, false);
@@ -353,7 +388,8 @@ void ProfileController::toggleSlot()
     if (!m_slots[to].used) {
         Slot &b = m_slots[to];
         b.saved = currentProfile(m_active);
-        b.saved.name = profileName() + u" ("_s + slotName(to) + u')';
+        // "(copy)", not "(B)": the title names the slot already (issue 27: "[B]" twice).
+        b.saved.name = tr("%1 (copy)").arg(profileName());
         b.working = b.saved;
         b.path.clear();
         b.used = true;
@@ -453,14 +489,36 @@ void ProfileController::rebuildRecentMenu()
     });
 }
 
+QString ProfileController::presetSummary(const QString &notes)
+{
+    static constexpr qsizetype kMaxChars = 64;
+    qsizetype end = notes.size();
+    for (const QChar stop : {u'.', u':', u';'}) {
+        const qsizetype at = notes.indexOf(stop);
+        if (at > 0)
+            end = std::min(end, at);
+    }
+    QString summary = notes.left(end).trimmed();
+    if (summary.size() > kMaxChars)
+        summary = summary.left(kMaxChars - 1).trimmed() + u'…';
+    return summary;
+}
+
 void ProfileController::rebuildPresetsMenu()
 {
     clearLater(m_presetsMenu.get());
     for (const QString &name : presetNames()) {
         QAction *a = m_presetsMenu->addAction(name);
         a->setData(name);
-        if (const auto p = preset(name))
+        if (const auto p = preset(name)) {
+            // What it is, in the menu itself (issue 27: only a tooltip said it, unseen): the
+            // notes' first clause; all of them in the tooltip.
+            const QString summary = presetSummary(p->notes);
+            if (!summary.isEmpty())
+                a->setText(name + u" — "_s + summary);
             a->setToolTip(p->notes);
+            a->setStatusTip(p->notes);
+        }
         connect(a, &QAction::triggered, this, [this, name] {
             if (maybeSaveSlot(m_active))
                 loadPreset(name);

@@ -61,6 +61,11 @@ public:
     //! Asks for every slot with unsaved changes: Save / Discard / Cancel. False on cancel.
     bool maybeSave();
 
+    //! What `slot` has unsaved, by name: "K_max, N", "a bridge setting", "the notes".
+    QStringList unsavedParts(int slot) const;
+    //! A preset's description for its menu entry: the first clause of its notes, at most 64
+    //! characters ("A knob that clicks").
+    static QString presetSummary(const QString &notes);
     bool isModified() const; //!< the active slot differs from its file (or preset)
     bool isModified(int slot) const;
     QString profileName() const;

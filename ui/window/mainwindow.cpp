@@ -19,6 +19,7 @@
 #include "session/sessionwording.h"
 #include "simulator/simulatorpanel.h"
 #include "stiffness/stiffnessview.h"
+#include "window/focusreveal.h"
 #include "window/statusline.h"
 #include "window/theme.h"
 #include "window/wheelguard.h"
@@ -30,10 +31,12 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QVBoxLayout>
 
 // The window icon lives in this static library: its resources must be registered by hand.
@@ -53,7 +56,8 @@ const QString kSimPort = QString::fromUtf16(kSimPortName);
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
-    WheelGuard::install(); // the wheel edits only the field that has the focus
+    WheelGuard::install();  // the wheel edits only the field that has the focus
+    FocusReveal::install(); // a field given the focus is scrolled into view
     initPlotsResources();
     setWindowIcon(QIcon(QStringLiteral(":/icons/hatpic-tuner.png")));
     createParts();
@@ -76,6 +80,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
                                     .view = m_menus->viewMenu()});
     connectParts();
     setWindowTitle(m_profiles->windowTitle());
+    m_firstState = saveState(); // before the saved layout: what Reset layout returns to
     readSettings();
     onStateChanged(SessionState::Disconnected, {});
 }
@@ -145,6 +150,7 @@ void MainWindow::createActions()
             &MainWindow::openRecordingInteractive);
     connect(m_actions->backToLive, &QAction::triggered, m_feed, &PlotFeed::backToLive);
     connect(m_actions->quit, &QAction::triggered, this, &QWidget::close);
+    connect(m_actions->resetLayout, &QAction::triggered, this, &MainWindow::resetLayout);
 
     QAction *undo = m_editor->undoAction();
     undo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
@@ -212,6 +218,25 @@ void MainWindow::connectParts()
     connect(m_profiles, &ProfileController::titleChanged, this, &QWidget::setWindowTitle);
     connect(m_profiles, &ProfileController::statusMessage, this, &MainWindow::showStatus);
     connect(m_simPanel, &SimulatorPanel::handChanged, m_client, &DeviceClient::setSimulatedHand);
+
+    // The robot loop's state at a glance, whichever panel is in front (issue 27).
+    if (auto *bridge = qobject_cast<BridgePanel *>(m_docks.bridge->widget())) {
+        auto *loop = new QLabel(this);
+        loop->setObjectName(QStringLiteral("statusLoop"));
+        loop->hide();
+        m_statusLine->readouts()->layout()->addWidget(loop);
+        connect(bridge, &BridgePanel::loopStateChanged, loop,
+                [loop](const QString &text, BridgePanel::LoopState state) {
+                    loop->setVisible(state != BridgePanel::LoopState::Off);
+                    loop->setText(state == BridgePanel::LoopState::Generating
+                                      ? tr("Loop generating energy: see the Bridge panel")
+                                      : text);
+                    loop->setStyleSheet(state == BridgePanel::LoopState::Generating
+                                            ? QStringLiteral("color: white; background: #b00020; "
+                                                             "padding: 0 4px;")
+                                            : QString());
+                });
+    }
 }
 
 void MainWindow::showStatus(const QString &message)
@@ -254,7 +279,8 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
     const QString detail = SessionWording::stateDetail(event);
     m_connection->setState(state);
     m_linkStatus->setState(state);
-    m_banner->setState(state, event, m_port);
+    // Before the first connection, the port chosen in the bar (the banner says how to start).
+    m_banner->setState(state, event, m_port.isEmpty() ? m_connection->port() : m_port);
     m_recording->setCanRecord(state == SessionState::Connected);
     if (state == SessionState::Disconnected) {
         m_stats->clear();
@@ -326,7 +352,7 @@ void MainWindow::updateActions()
 
 QList<QAction *> MainWindow::shortcutActions() const
 {
-    return m_menus->shortcutActions();
+    return m_menus->shortcutActions() + m_docks.panelShortcuts;
 }
 
 void MainWindow::openRecordingInteractive()
@@ -359,8 +385,10 @@ void MainWindow::readSettings()
         static_cast<ProtocolChoice>(
             settings.value(QStringLiteral("connection/protocol"), int(ProtocolChoice::Auto))
                 .toInt()));
-    if (!restoreWindowGeometry(this, settings))
+    if (!restoreWindowGeometry(this, settings)) {
         resizeToDefault(this); // the first launch; what is saved on close is fitted
+        m_firstSize = size();  // shown at it, its frame is fitted too
+    }
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     setAngleInDegrees(settings.value(QStringLiteral("view/degrees"), false).toBool());
     setWindowSeconds(
@@ -411,6 +439,37 @@ void MainWindow::recordOnConnect(const QString &csvPath)
         start();
         once->deleteLater();
     });
+}
+
+void MainWindow::resetLayout()
+{
+    restoreState(m_firstState);
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        dock->setFloating(false);
+    // The simulated hand's panel follows the device, not the first launch.
+    const bool simulated =
+        m_client->state() != SessionState::Disconnected && m_client->deviceInfo().simulated;
+    m_docks.simulator->setVisible(simulated);
+    if (isMaximized() || isFullScreen())
+        showNormal();
+    resizeToDefault(this);
+    resizeDocksToDefault(this, m_docks);
+    showStatus(tr("Layout reset: the panels where and as large as at a first launch."));
+}
+
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    if (m_shown)
+        return;
+    m_shown = true;
+    // Under a window manager the frame (title bar, borders) comes on top of the size asked
+    // for: a window as large as the screen had its status bar below it (issue 27). Once the
+    // frame is known, the whole frame is fitted into the screen.
+    if (m_firstSize.isEmpty() || size() != m_firstSize)
+        return; // a size restored or asked for: the program's or the user's
+    QTimer::singleShot(0, this, [this] { fitFrameIntoScreen(this); });
+    QTimer::singleShot(500, this, [this] { fitFrameIntoScreen(this); });
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

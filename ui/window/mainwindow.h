@@ -73,9 +73,14 @@ public:
 
     //! Actions with a shortcut, in menu order (the Help → Keyboard shortcuts table).
     QList<QAction *> shortcutActions() const;
+    //! View → Reset layout: the docks where, as large as, and shown as at a first launch (a
+    //! dock shrunk once no longer stays shrunk across launches), the window fitted to its
+    //! screen.
+    void resetLayout();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     void createParts();
@@ -115,7 +120,10 @@ private:
     WindowDocks m_docks;
     ThemeController *m_theme = nullptr;
 
-    QString m_port; //!< port of the current or last connection
+    QString m_port;          //!< port of the current or last connection
+    QByteArray m_firstState; //!< the docks as at a first launch (View → Reset layout)
+    bool m_shown = false;    //!< shown once: the first window's frame fitted
+    QSize m_firstSize;       //!< a first launch's size (nothing restored), else empty
 };
 
 } // namespace hatpic

@@ -18,7 +18,8 @@ namespace {
 
 QString actionName(const QAction *action)
 {
-    QString text = action->text();
+    const QVariant name = action->property(ShortcutsDialog::kNameProperty);
+    QString text = name.isValid() ? name.toString() : action->text();
     text.remove(u'&');
     if (text.endsWith(u'…'))
         text.chop(1);
@@ -26,6 +27,11 @@ QString actionName(const QAction *action)
 }
 
 } // namespace
+
+void ShortcutsDialog::setName(QAction *action, const QString &name)
+{
+    action->setProperty(kNameProperty, name);
+}
 
 QStringList ShortcutsDialog::describe(const QList<QAction *> &actions)
 {

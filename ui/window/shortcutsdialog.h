@@ -14,8 +14,14 @@ class ShortcutsDialog : public QDialog
 public:
     ShortcutsDialog(const QList<QAction *> &actions, QWidget *parent = nullptr);
 
-    //! "Ctrl+K\tConnect / disconnect" lines, as shown (for tests and the user guide).
+    //! An action's name for the table, set as this property where its text says its state
+    //! ("Disconnect", "Stop recording"): the table names what the keys do, not what is now.
+    static constexpr const char *kNameProperty = "shortcutName";
+
+    //! "Ctrl+K\tConnect or disconnect" lines, as shown (for tests and the user guide).
     static QStringList describe(const QList<QAction *> &actions);
+    //! Gives `action` its name for the table (kNameProperty).
+    static void setName(QAction *action, const QString &name);
 };
 
 } // namespace hatpic

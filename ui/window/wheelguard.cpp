@@ -1,5 +1,8 @@
 #include "window/wheelguard.h"
 
+#include "plots/qcp.h"
+
+#include <QAbstractScrollArea>
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
 #include <QApplication>
@@ -7,6 +10,7 @@
 #include <QEvent>
 #include <QPointer>
 #include <QScrollBar>
+#include <QWheelEvent>
 
 namespace hatpic {
 
@@ -41,6 +45,12 @@ void WheelGuard::noWheelFocus(QWidget *widget)
         widget->setFocusPolicy(Qt::FocusPolicy(policy & ~wheelBit));
 }
 
+bool WheelGuard::isStillPlot(const QWidget *widget)
+{
+    const auto *plot = qobject_cast<const QCustomPlot *>(widget);
+    return plot && !plot->interactions().testFlag(QCP::iRangeZoom);
+}
+
 bool WheelGuard::eventFilter(QObject *watched, QEvent *event)
 {
     if (!watched->isWidgetType())
@@ -48,6 +58,22 @@ bool WheelGuard::eventFilter(QObject *watched, QEvent *event)
     auto *widget = static_cast<QWidget *>(watched);
     if (event->type() == QEvent::Polish && isValueField(widget)) {
         noWheelFocus(widget);
+    } else if (event->type() == QEvent::Wheel && isStillPlot(widget)) {
+        // QCustomPlot stops the wheel going to its parents (WA_NoMousePropagation): the scroll
+        // area that holds it gets the turn directly.
+        for (QWidget *p = widget->parentWidget(); p; p = p->parentWidget()) {
+            auto *area = qobject_cast<QAbstractScrollArea *>(p);
+            if (!area)
+                continue;
+            const auto *wheel = static_cast<QWheelEvent *>(event);
+            const QPointF at = widget->mapTo(area->viewport(), wheel->position().toPoint());
+            QWheelEvent turn(at, wheel->globalPosition(), wheel->pixelDelta(), wheel->angleDelta(),
+                             wheel->buttons(), wheel->modifiers(), wheel->phase(),
+                             wheel->inverted(), wheel->source());
+            QCoreApplication::sendEvent(area->viewport(), &turn);
+            break;
+        }
+        return true;
     } else if (event->type() == QEvent::Wheel && isValueField(widget) && !widget->hasFocus()) {
         // Ignored and consumed: Qt offers the wheel to the field's parents, as it does for a
         // widget that has no use for it.

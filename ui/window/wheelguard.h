@@ -5,7 +5,8 @@
 // with live push on, never reaches the device). A wheel turned over a field without focus goes
 // on to what holds the field (the Parameters panel's scroll area scrolls); a field that has
 // the focus (clicked, or reached with Tab) takes the wheel as Qt makes it. Fields no longer
-// take the focus from the wheel itself, which would otherwise hand them the next turn.
+// take the focus from the wheel itself, which would otherwise hand them the next turn. A plot
+// that does not zoom with the wheel passes it on likewise.
 #pragma once
 
 #include <QObject>
@@ -24,6 +25,9 @@ public:
     //! A field whose value the wheel changes: a spin box, a slider (not a scroll bar) or a
     //! combo box.
     static bool isValueField(const QWidget *widget);
+    //! A plot the wheel does not zoom (the Bridge panel's energy plot): QCustomPlot takes every
+    //! wheel event, so without the guard a panel did not scroll over it (issue 27).
+    static bool isStillPlot(const QWidget *widget);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;

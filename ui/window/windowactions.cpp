@@ -45,6 +45,9 @@ WindowActions::WindowActions(QWidget *window) : QObject(window)
     backToLive = make(tr("Back to &Live"), "backToLiveAction");
     backToLive->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
 
+    resetLayout = make(tr("&Reset Layout"), "resetLayoutAction");
+    resetLayout->setToolTip(tr("The panels where and as large as at a first launch"));
+
     quit = make(tr("&Quit"));
     quit->setShortcut(QKeySequence::Quit);
     shortcuts = make(tr("&User Guide and Shortcuts"));

@@ -31,6 +31,7 @@ public:
     QAction *saveInDevice = nullptr;
     QAction *openRecording = nullptr; //!< Ctrl+Shift+O
     QAction *backToLive = nullptr;    //!< Ctrl+L
+    QAction *resetLayout = nullptr;   //!< "resetLayoutAction": View → Reset layout
     QAction *quit = nullptr;
     QAction *shortcuts = nullptr; //!< F1
     QAction *about = nullptr;

@@ -9,14 +9,61 @@
 #include "window/experimentsdock.h"
 #include "window/measuredocks.h"
 
+#include <QAction>
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QMenu>
 #include <QPlainTextEdit>
 
 #include <algorithm>
+#include <utility>
 
 namespace hatpic {
+
+namespace {
+
+//! An action of `window` with `key` that brings `dock` to the front, or hides it when it is in
+//! front already (a dock behind another's tab is shown, not hidden, as its toggle would).
+QAction *panelShortcut(QMainWindow *window, QDockWidget *dock, QKeyCombination key)
+{
+    auto *action =
+        new QAction(QObject::tr("Show or hide the %1 panel").arg(dock->windowTitle()), window);
+    action->setObjectName(dock->objectName() + QStringLiteral("Shortcut"));
+    action->setShortcut(QKeySequence(key));
+    action->setShortcutContext(Qt::WindowShortcut);
+    window->addAction(action);
+    QObject::connect(action, &QAction::triggered, dock, [dock] {
+        if (dock->isVisible() && !dock->visibleRegion().isEmpty()) {
+            dock->hide();
+            return;
+        }
+        dock->show();
+        dock->raise();
+        // The keyboard follows: the panel's first field that takes Tab.
+        for (QWidget *w : dock->findChildren<QWidget *>()) {
+            if ((w->focusPolicy() & Qt::TabFocus) && w->isVisibleTo(dock) && w->isEnabled()) {
+                w->setFocus(Qt::ShortcutFocusReason);
+                break;
+            }
+        }
+    });
+    // The View menu's entry shows the keys too.
+    dock->toggleViewAction()->setToolTip(QStringLiteral("%1 (%2)").arg(
+        action->text(), action->shortcut().toString(QKeySequence::NativeText)));
+    return action;
+}
+
+} // namespace
+
+void resizeDocksToDefault(QMainWindow *window, const WindowDocks &docks)
+{
+    // As wide as the editor wants (within reason): its rows are long.
+    window->resizeDocks({docks.parameters},
+                        {std::clamp(docks.editor->sizeHint().width() + 24, 420, 600)},
+                        Qt::Horizontal);
+    // The stiffness view's two plots stay readable at 720 px (issue 21: once 40 px each).
+    window->resizeDocks({docks.parameters, docks.stiffness}, {500, 360}, Qt::Vertical);
+}
 
 WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts)
 {
@@ -50,12 +97,8 @@ WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts)
     // Tuning experiments (docs/experiments.md): View → Experiments, beside the device log.
     QDockWidget *experiments = addExperimentsDock(window, parts.client, parts.plots, parts.simPanel,
                                                   parts.editor, docks.log);
-    // As wide as the editor wants (within reason): its rows are long.
-    window->resizeDocks({docks.parameters},
-                        {std::clamp(parts.editor->sizeHint().width() + 24, 420, 600)},
-                        Qt::Horizontal);
-    // The stiffness view's two plots stay readable at 720 px (issue 21: once 40 px each).
-    window->resizeDocks({docks.parameters, docks.stiffness}, {500, 360}, Qt::Vertical);
+    docks.editor = parts.editor;
+    resizeDocksToDefault(window, docks);
 
     for (QDockWidget *dock :
          {docks.parameters, docks.stiffness, docks.simulator, docks.bridge, docks.log})
@@ -67,6 +110,18 @@ WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts)
         parts.view->addAction(dock->toggleViewAction());
     addMeasureDocks(window, parts.plots, parts.plotActions, parts.profiles, parts.editor,
                     parts.stiffness, parts.view, docks.log);
+    // Keys for the panels under the plots (issue 27: none had one).
+    const std::pair<const char *, QKeyCombination> keys[] = {
+        {"bridgeDock", Qt::CTRL | Qt::SHIFT | Qt::Key_B},
+        {"experimentsDock", Qt::CTRL | Qt::SHIFT | Qt::Key_X},
+        {"abDock", Qt::CTRL | Qt::SHIFT | Qt::Key_C},
+        {"notesDock", Qt::CTRL | Qt::SHIFT | Qt::Key_N},
+        {"logDock", Qt::CTRL | Qt::SHIFT | Qt::Key_L},
+    };
+    for (const auto &[name, key] : keys) {
+        if (auto *dock = window->findChild<QDockWidget *>(QString::fromLatin1(name)))
+            docks.panelShortcuts << panelShortcut(window, dock, key);
+    }
     // The panels under the plots open usable, beside the hand or tabbed with it.
     auto *bottom = new BottomDocks(window, docks.simulator);
     for (QDockWidget *dock : window->findChildren<QDockWidget *>()) {

@@ -4,6 +4,9 @@
 // (BottomDocks). Each dock's toggle goes into the View menu.
 #pragma once
 
+#include <QList>
+
+class QAction;
 class QDockWidget;
 class QMainWindow;
 class QMenu;
@@ -41,9 +44,15 @@ struct WindowDocks
     QDockWidget *bridge = nullptr;     //!< "bridgeDock": its bridge stops through the client
     QDockWidget *log = nullptr;        //!< "logDock"
     QPlainTextEdit *logView = nullptr; //!< the device's log lines and the session's notices
+    //! Ctrl+Shift+B Bridge, X Experiments, C A/B, N Notes, L Device log: each brings its panel
+    //! to the front (shown, its tab raised), or hides it when it is in front already.
+    QList<QAction *> panelShortcuts;
+    ParameterEditor *editor = nullptr; //!< the Parameters dock's (its width follows it)
 };
 
 //! Adds every dock to `window`, sized and placed, their toggles to `parts.view`.
 WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts);
+//! The docks' sizes of a first launch (View → Reset layout applies them again).
+void resizeDocksToDefault(QMainWindow *window, const WindowDocks &docks);
 
 } // namespace hatpic

@@ -62,6 +62,21 @@ void resizeToDefault(QMainWindow *window)
     window->resize(fittedInto(wanted, availableGeometryFor(window, QRect())).size());
 }
 
+void fitFrameIntoScreen(QMainWindow *window)
+{
+    if (!window->isVisible() || window->isMaximized() || window->isFullScreen())
+        return;
+    const QRect frame = window->frameGeometry();
+    const QRect inner = window->geometry();
+    const QRect fitted = fittedInto(frame, availableGeometryFor(window, frame));
+    if (fitted == frame)
+        return;
+    // The same frame around a smaller or moved window.
+    const QMargins margins(inner.left() - frame.left(), inner.top() - frame.top(),
+                           frame.right() - inner.right(), frame.bottom() - inner.bottom());
+    window->setGeometry(fitted.marginsRemoved(margins));
+}
+
 void saveWindowGeometry(const QMainWindow *window, QSettings &settings)
 {
     const QRect normal = window->isMaximized() || window->isFullScreen() ? window->normalGeometry()

@@ -21,4 +21,9 @@ void saveWindowGeometry(const QMainWindow *window, QSettings &settings);
 //! a window no larger than itself).
 void resizeToDefault(QMainWindow *window);
 
+//! Moves and shrinks a shown window so that its frame (a window manager's title bar and
+//! borders included) lies inside its screen's available area; a maximized or full-screen
+//! window is left alone.
+void fitFrameIntoScreen(QMainWindow *window);
+
 } // namespace hatpic

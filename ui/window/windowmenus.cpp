@@ -10,6 +10,7 @@
 #include "window/theme.h"
 #include "window/windowactions.h"
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
 #include <QMainWindow>
@@ -27,6 +28,10 @@ WindowMenus::WindowMenus(QMainWindow *window, const Parts &parts)
     connect(m_parts.actions->about, &QAction::triggered, this, &WindowMenus::showAbout);
     createMenus();
     createToolBars();
+    // The table names what the keys do; these actions' texts say their state.
+    ShortcutsDialog::setName(m_parts.actions->connectDevice, tr("Connect or disconnect"));
+    ShortcutsDialog::setName(m_parts.actions->pause, tr("Pause or resume (replay: play/pause)"));
+    ShortcutsDialog::setName(m_parts.recording->recordAction(), tr("Record, or stop recording"));
 }
 
 void WindowMenus::createMenus()
@@ -81,6 +86,7 @@ void WindowMenus::createMenus()
     m_view->addAction(plotActions->measureAction());
     plotActions->addSeriesActions(m_view->addMenu(tr("&Series")));
     m_view->addMenu(m_parts.theme->menu());
+    m_view->addAction(actions->resetLayout);
     m_view->addSeparator(); // the docks' toggles follow
 
     QMenu *help = bar->addMenu(tr("&Help"));
@@ -114,6 +120,12 @@ void WindowMenus::createToolBars()
     plots->addSeparator();
     plots->addWidget(m_parts.recording);
     plots->addAction(actions->openRecording);
+    // The toolbars' buttons are no Tab stops (their actions have menus and keys, docs/user-
+    // guide.md): Tab goes from field to field.
+    for (QToolBar *bar : {link, plots}) {
+        for (QAbstractButton *button : bar->findChildren<QAbstractButton *>())
+            button->setFocusPolicy(Qt::NoFocus);
+    }
 }
 
 QList<QAction *> WindowMenus::shortcutActions() const

@@ -68,11 +68,18 @@ private Q_SLOTS:
         QTest::addColumn<bool>("inContact");
         QTest::addColumn<bool>("warning");
         QTest::addColumn<QString>("energy");
-        QTest::newRow("free") << false << false << u"E 1.00 mJ (no contact: |τ_ext| ≤ 0.005 N·m)"_s;
+        // What is good and what is bad, in words first (issue 27).
+        QTest::newRow("free") << false << false
+                              << u"Good: no contact (|τ_ext| ≤ 0.005 N·m), nothing to "
+                                 "dissipate. E 1.00 mJ."_s;
         QTest::newRow("passive contact")
-            << true << false << u"E 1.00 mJ; generated lately -0.40 mJ (in contact)"_s;
+            << true << false
+            << u"Good: passive in contact. E 1.00 mJ; generated lately -0.40 mJ (up to 0.50 mJ "
+               "is fine)."_s;
         QTest::newRow("generating")
-            << true << true << u"E 1.00 mJ; generated lately -0.40 mJ (in contact)"_s;
+            << true << true
+            << u"Bad: generating energy in contact. E 1.00 mJ; generated lately -0.40 mJ (more "
+               "than 0.50 mJ is unstable)."_s;
     }
     void passivityWarning()
     {

@@ -67,6 +67,12 @@ private Q_SLOTS:
     {
         QVERIFY(!m_panel->isRunning());
         QCOMPARE(label(u"bridge_status"_s), u"Off"_s);
+        QCOMPARE(m_panel->loopState(), BridgePanel::LoopState::Off);
+        QVERIFY(label(u"bridge_loop_state"_s).contains(u"Bridge off"_s));
+        // What it needs, with where to find a robot when there is none (issue 27).
+        QVERIFY(find<QLabel>(u"bridge_needs"_s)->isVisible());
+        QVERIFY(BridgePanel::needsText().contains(u"hatpic-robot-sim"_s));
+        QVERIFY(BridgePanel::needsText().contains(u"scripts/teleop-demo"_s));
         QSignalSpy edited(m_panel.get(), &BridgePanel::settingsEdited);
         find<QSpinBox>(u"bridge_domain"_s)->setValue(kDomain);
         QCOMPARE(m_panel->settings().domainId, kDomain);
@@ -76,6 +82,10 @@ private Q_SLOTS:
         find<QCheckBox>(u"bridge_enable"_s)->click();
         QVERIFY(m_panel->isRunning());
         QCOMPARE(label(u"bridge_status"_s), u"Running on domain 73"_s);
+        // Running: the loop's state in the header, the needs out of the way.
+        QTRY_COMPARE(m_panel->loopState(), BridgePanel::LoopState::Passive);
+        QVERIFY(label(u"bridge_loop_state"_s).contains(u"Loop passive, no contact"_s));
+        QVERIFY(!find<QLabel>(u"bridge_needs"_s)->isVisible());
         QTRY_VERIFY_WITH_TIMEOUT((m_peer->take(), m_peer->twists.size() >= 20), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(label(u"bridge_published"_s).contains(u"twist "_s) &&
                                      !label(u"bridge_published"_s).contains(u"twist 0,"_s),
@@ -154,15 +164,21 @@ private Q_SLOTS:
 
         QLabel *warning = find<QLabel>(u"bridge_passivity_warning"_s);
         QTRY_VERIFY_WITH_TIMEOUT(warning->isVisible(), 3000);
+        // At a glance, above the scroll area: the header says it (the window's status bar shows
+        // loopText(), tst_windowlayout).
+        QTRY_COMPARE(m_panel->loopState(), BridgePanel::LoopState::Generating);
+        QVERIFY(label(u"bridge_loop_state"_s).contains(u"Loop generating energy"_s));
+        QCOMPARE(m_panel->loopText(), u"Loop generating energy: see Passivity below"_s);
         for (const QString &advice : {u"lower the gain"_s, u"raise M_adm"_s, u"cut the delay"_s})
             QVERIFY2(warning->text().contains(advice), qPrintable(warning->text()));
-        QVERIFY2(label(u"bridge_energy"_s).contains(u"(in contact)"_s),
+        QVERIFY2(label(u"bridge_energy"_s).startsWith(u"Bad: generating energy in contact"_s),
                  qPrintable(label(u"bridge_energy"_s)));
         QVERIFY(find<QCustomPlot>(u"bridge_energy_plot"_s)->graph(0)->dataCount() > 2);
 
         // Held still (the knob has settled): nothing more is generated; once the rise has
         // left the window and the hold is over, the warning goes.
         QTRY_VERIFY_WITH_TIMEOUT(!warning->isVisible(), 6000);
+        QTRY_COMPARE(m_panel->loopState(), BridgePanel::LoopState::Passive);
         m_robot.stop();
         expectTauExt(0);
     }

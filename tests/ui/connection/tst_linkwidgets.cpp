@@ -19,6 +19,7 @@ private Q_SLOTS:
     void identity();
     void banner_data();
     void banner();
+    void startHintForTheSimulator();
     void stats();
 };
 
@@ -110,11 +111,20 @@ void TestLinkWidgets::banner_data()
     QTest::newRow("failed to open") << SessionState::Disconnected << open
                                     << QStringLiteral("Could not open /dev/ttyUSB0") << open.error;
     StateDetail none;
+    // Disconnected by the user (or never connected): how to start (issue 27).
     QTest::newRow("user disconnected")
-        << SessionState::Disconnected << none << QString() << QString();
+        << SessionState::Disconnected << none
+        << QStringLiteral("Press Connect (Ctrl+K) to open /dev/ttyUSB0") << QString();
     StateDetail connected;
     connected.kind = StateDetail::Kind::ConnectedV2;
     QTest::newRow("connected") << SessionState::Connected << connected << QString() << QString();
+}
+
+void TestLinkWidgets::startHintForTheSimulator()
+{
+    QCOMPARE(LinkBanner::startHint(QString::fromUtf16(kSimPortName)),
+             QStringLiteral("Not connected. Press Connect (Ctrl+K) to try the simulated knob."));
+    QVERIFY(LinkBanner::startHint(QStringLiteral("/dev/ttyACM0")).contains(u"simulated knob"));
 }
 
 void TestLinkWidgets::banner()

@@ -20,6 +20,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QVBoxLayout>
 
 #include <cmath>
 #include <numbers>
@@ -62,6 +63,9 @@ private Q_SLOTS:
     void stepFromTheRunButton();
     void refusesALegacyDevice();
     void cancelStopsTheRun();
+    void levelsFollowTheTuningAfterARun();
+    void cautionOnADetent();
+    void runKeepsTheKeyboard();
     void spectrumOfTheVisibleWindow();
     void bodePlotReadableWhenShort();
     void figuresBesideThePlotsOrATab();
@@ -174,6 +178,133 @@ void TestExperimentsPanel::cancelStopsTheRun()
     QVERIFY(!panel.running());
     QCOMPARE(panel.status(), u"The experiment was cancelled."_s);
     QVERIFY(!panel.result()); // nothing half-measured is shown as a result
+}
+
+namespace {
+
+//! Pushes `params` and waits for the device's read-back.
+bool pushParams(DeviceClient &client, const DeviceParams &params)
+{
+    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
+    client.pushTuning({params, std::nullopt});
+    return pushed.wait(kConnectMs) &&
+           QTest::qWaitFor([&] { return client.deviceTuning().params == roundedToFloat(params); },
+                           kConnectMs);
+}
+
+} // namespace
+
+// Issue 27: the levels followed the device's parameters until a run, then kept the old ones,
+// and the next step left the notch band. They follow it always, except the fields typed.
+void TestExperimentsPanel::levelsFollowTheTuningAfterARun()
+{
+    DeviceClient client;
+    QVERIFY(connectSim(client));
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
+    ExperimentsPanel panel(&client, nullptr);
+    panel.show();
+    auto *kind = panel.findChild<QComboBox *>(u"experimentKind"_s);
+    auto *from = panel.findChild<QDoubleSpinBox *>(u"stepFrom"_s);
+    auto *to = panel.findChild<QDoubleSpinBox *>(u"stepTo"_s);
+    // A short run: a spectrum of 0.1 s, so the panel holds a result.
+    kind->setCurrentIndex(kind->findData(int(ExperimentKind::Spectrum)));
+    panel.findChild<QDoubleSpinBox *>(u"duration"_s)->setValue(0.1);
+    QSignalSpy finished(&panel, &ExperimentsPanel::finished);
+    QVERIFY(panel.run());
+    QVERIFY(finished.wait(kRunMs));
+    QVERIFY(panel.result());
+    kind->setCurrentIndex(kind->findData(int(ExperimentKind::Step)));
+
+    DeviceParams stiff = *client.deviceTuning().params;
+    stiff.K_max = 0.8;
+    QVERIFY(pushParams(client, stiff));
+    const ExperimentPlan expected = ExperimentPlan::defaults(ExperimentKind::Step, stiff);
+    QTRY_VERIFY(std::abs(to->value() - expected.tauTo) < 1e-5);
+    QVERIFY(std::abs(from->value() - expected.tauFrom) < 1e-5);
+
+    // A level the user typed stays; the other follows.
+    to->setFocus();
+    to->selectAll();
+    QTest::keyClicks(to, u"0.05"_s);
+    QVERIFY(std::abs(to->value() - 0.05) < 1e-9);
+    QVERIFY(panel.typed(to));
+    stiff.K_max = 0.6;
+    QVERIFY(pushParams(client, stiff));
+    const ExperimentPlan next = ExperimentPlan::defaults(ExperimentKind::Step, stiff);
+    QTRY_VERIFY(std::abs(from->value() - next.tauFrom) < 1e-5);
+    QVERIFY(std::abs(to->value() - 0.05) < 1e-9);
+    // Defaults fills them all again.
+    panel.fillDefaults();
+    QVERIFY(std::abs(to->value() - next.tauTo) < 1e-5);
+    QVERIFY(!panel.typed(to));
+}
+
+// Issue 27: on the Detents preset a detent held the knob, the step moved it 2 encoder counts,
+// and its ω_n was reported as a result. The effects are named before the run, and the result
+// says its operating point is not the model's.
+void TestExperimentsPanel::cautionOnADetent()
+{
+    DeviceClient client;
+    QVERIFY(connectSim(client));
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
+    ExperimentsPanel panel(&client, nullptr);
+    panel.resize(1000, 600);
+    panel.show();
+    QVERIFY(!panel.status().contains(u"Caution"_s));
+    // The Detents preset (resources/presets/detents.json).
+    DeviceParams p = *client.deviceTuning().params;
+    p.M_adm = 0.015;
+    p.K_min = 0.03;
+    p.K_max = 1.3;
+    p.N = 0.01;
+    p.Q_dz = 0.005;
+    EffectParams fx;
+    fx.detent_strength = 0.04;
+    fx.detent_spacing = 0.2;
+    fx.detent_range = 0.9;
+    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
+    client.pushTuning({p, fx});
+    QVERIFY(pushed.wait(kConnectMs));
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects &&
+                                 client.deviceTuning().effects->detent_strength > 0,
+                             kConnectMs);
+    QTRY_VERIFY2(panel.status().contains(u"Caution: Detents are on"_s), qPrintable(panel.status()));
+    QSignalSpy finished(&panel, &ExperimentsPanel::finished);
+    QVERIFY(panel.run());
+    QVERIFY(finished.wait(kRunMs));
+    QVERIFY2(panel.status().contains(u"encoder counts"_s), qPrintable(panel.status()));
+    QCOMPARE(panel.figures()->item(1, 0)->text(), u"Operating point"_s);
+    QCOMPARE(panel.figures()->item(1, 1)->text(), u"not the model's (see the status)"_s);
+}
+
+// Issue 27: Run, disabled once pressed, handed the focus on to the next widget of the window (the
+// simulated hand's selector). It goes to Cancel, and back to Run when the run ends.
+void TestExperimentsPanel::runKeepsTheKeyboard()
+{
+    DeviceClient client;
+    QVERIFY(connectSim(client));
+    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
+    QWidget window;
+    auto *panel = new ExperimentsPanel(&client, nullptr, &window);
+    auto *after = new QComboBox(&window); // what comes next in the window's focus chain
+    auto *layout = new QVBoxLayout(&window);
+    layout->addWidget(panel);
+    layout->addWidget(after);
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    auto *kind = panel->findChild<QComboBox *>(u"experimentKind"_s);
+    kind->setCurrentIndex(kind->findData(int(ExperimentKind::Spectrum)));
+    panel->findChild<QDoubleSpinBox *>(u"duration"_s)->setValue(0.2);
+    auto *run = panel->findChild<QPushButton *>(u"runExperiment"_s);
+    auto *cancel = panel->findChild<QPushButton *>(u"cancelExperiment"_s);
+    run->setFocus(Qt::TabFocusReason);
+    QSignalSpy finished(panel, &ExperimentsPanel::finished);
+    QTest::keyClick(run, Qt::Key_Space);
+    QVERIFY(panel->running());
+    QCOMPARE(QApplication::focusWidget(), cancel);
+    QVERIFY(finished.wait(kRunMs));
+    QCOMPARE(QApplication::focusWidget(), run);
 }
 
 void TestExperimentsPanel::spectrumOfTheVisibleWindow()

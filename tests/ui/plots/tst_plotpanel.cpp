@@ -4,6 +4,7 @@
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
 
+#include <QFontMetrics>
 #include <QSet>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -61,6 +62,8 @@ private Q_SLOTS:
     void bandsFollowDeviceParams();
     void eventsAreMarked();
     void oneColourPerQuantity();
+    void tauExtSeenOnTauRec();
+    void shortPlotsStayReadable();
     void eventLabelAtTheRightEdgeStaysReadable();
     void autoscaleFitsAndFixedStays();
     void exportsImage_data();
@@ -300,6 +303,86 @@ void TestPlotPanel::oneColourPerQuantity()
     QCOMPARE(m_panel->graph(Channel::TauTotal)->layer(), layer);
     QVERIFY(layer->children().indexOf(m_panel->graph(Channel::TauRec)) <
             layer->children().indexOf(m_panel->graph(Channel::TauTotal)));
+}
+
+// Issue 27: at the teleoperation demo's equilibrium τ_ext equals τ_rec, and its 1 px line
+// vanished in τ_rec's 3 px one: the wall's push could not be seen. τ_ext is drawn on top,
+// wide enough to be seen as its own colour, with τ_rec still showing on both sides of it.
+void TestPlotPanel::tauExtSeenOnTauRec()
+{
+    for (int i = 0; i < 3000; ++i) {
+        Sample s;
+        s.t_s = i / 1000.0;
+        s.tau_rec = -0.025;
+        s.tau_ext = -0.025;
+        s.tau_total = -0.05;
+        s.tau = -0.05;
+        m_buffer->append(s);
+    }
+    m_panel->setAutoscale(false);
+    m_panel->axisRect(PlotPanel::Plot::Torque)->axis(QCPAxis::atLeft)->setRange(-0.1, 0.1);
+    m_panel->repaintIfNeeded();
+    QCustomPlot *plot = m_panel->customPlot();
+    plot->replot();
+    const QImage image = plot->grab().toImage();
+    if (qEnvironmentVariableIsSet("HATPIC_DUMP"))
+        image.save(QStringLiteral("/tmp/tauext.png"));
+    QCPAxisRect *torque = m_panel->axisRect(PlotPanel::Plot::Torque);
+    QCPLayer *layer = m_panel->graph(Channel::TauRec)->layer();
+    QVERIFY(layer->children().indexOf(m_panel->graph(Channel::TauRec)) <
+            layer->children().indexOf(m_panel->graph(Channel::TauExt)));
+    const auto near = [](QRgb pixel, const QColor &colour) {
+        const QColor c(pixel);
+        return std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                   std::abs(c.blue() - colour.blue()) <
+               60;
+    };
+    const int y = int(std::lround(torque->axis(QCPAxis::atLeft)->coordToPixel(-0.025)));
+    int columns = 0;
+    const int dataEnd = int(torque->axis(QCPAxis::atBottom)->coordToPixel(2.9));
+    for (int x = torque->left() + 20; x < std::min(dataEnd, torque->right() - 20); x += 17) {
+        int ext = 0, rec = 0;
+        for (int dy = -6; dy <= 6; ++dy) {
+            const QRgb pixel = image.pixel(x, y + dy);
+            ext += near(pixel, palette::channel(Channel::TauExt));
+            rec += near(pixel, palette::channel(Channel::TauRec));
+        }
+        QVERIFY2(ext >= 2, qPrintable(QStringLiteral("x %1: τ_ext %2 px").arg(x).arg(ext)));
+        QVERIFY2(rec >= 2, qPrintable(QStringLiteral("x %1: τ_rec %2 px").arg(x).arg(rec)));
+        ++columns;
+    }
+    QVERIFY(columns > 5);
+}
+
+// Issue 27: at 1280×720 a bottom panel squeezed the plots until their tick labels printed over
+// each other. However short the panel is asked to be, each y axis has its labels apart.
+void TestPlotPanel::shortPlotsStayReadable()
+{
+    fill(*m_buffer, 0, 3);
+    m_panel->resize(1000, 200); // less than the plots need: the minimum holds
+    QCustomPlot *plot = m_panel->customPlot();
+    for (int i = 0; i < 3; ++i) {
+        m_panel->repaintIfNeeded();
+        plot->replot();
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    }
+    QVERIFY(plot->height() >= PlotPanel::kMinPlotsHeight);
+    const int label = QFontMetrics(plot->xAxis->tickLabelFont()).height();
+    for (PlotPanel::Plot kind :
+         {PlotPanel::Plot::Angle, PlotPanel::Plot::Torque, PlotPanel::Plot::Reference}) {
+        QCPAxis *y = m_panel->axisRect(kind)->axis(QCPAxis::atLeft);
+        const QVector<double> ticks = y->tickVector();
+        QVERIFY2(!ticks.isEmpty(), qPrintable(QString::number(int(kind))));
+        for (qsizetype i = 1; i < ticks.size(); ++i) {
+            const double apart =
+                std::abs(y->coordToPixel(ticks[i]) - y->coordToPixel(ticks[i - 1]));
+            QVERIFY2(apart >= label,
+                     qPrintable(QStringLiteral("plot %1: ticks %2 px apart, labels %3 px")
+                                    .arg(int(kind))
+                                    .arg(apart)
+                                    .arg(label)));
+        }
+    }
 }
 
 void TestPlotPanel::eventsAreMarked()

@@ -71,6 +71,7 @@ private Q_SLOTS:
     void recentFiles();
     void maybeSaveAsks_data();
     void maybeSaveAsks();
+    void quitPromptNamesABridgeSetting();
     void enterInThePromptOverwritesNothing();
 
 private:
@@ -271,6 +272,10 @@ void TestProfileController::modifiedMarkerInTitle()
     QCOMPARE(controller.windowTitle(), u"Wide [A] — HATPIC Tuner"_s);
     setValue(editor, u"N"_s, 0.3);
     QCOMPARE(controller.windowTitle(), u"Wide* [A] — HATPIC Tuner"_s);
+
+    // Issue 27: slot B, a copy of A, said "B" twice ("Wide (B) [B]"). The slot is said once.
+    controller.toggleSlot();
+    QCOMPARE(controller.windowTitle(), u"Wide (copy) [B] — HATPIC Tuner"_s);
 }
 
 void TestProfileController::abSwitch()
@@ -346,6 +351,14 @@ void TestProfileController::presetsMenuLoadsPreset()
         names << a->data().toString();
     QCOMPARE(names, presetNames());
     QVERIFY(names.contains(u"Notchy"_s));
+    // Each says what it is in the menu itself (issue 27), its notes whole in the tooltip.
+    for (QAction *a : controller.presetsMenu()->actions()) {
+        QVERIFY2(a->text().startsWith(a->data().toString() + u" — "_s), qPrintable(a->text()));
+        QVERIFY(!a->toolTip().isEmpty());
+        if (a->data().toString() == u"Detents")
+            QCOMPARE(a->text(), u"Detents — A knob that clicks"_s);
+    }
+    QCOMPARE(ProfileController::presetSummary(QString(100, u'x')).size(), 64);
     // The user guide names every preset the menu offers (it once lacked Detents and Walled).
     QFile guide(qEnvironmentVariable("HATPIC_SOURCE_DIR") + u"/docs/user-guide.md"_s);
     QVERIFY(guide.open(QIODevice::ReadOnly));
@@ -454,11 +467,37 @@ void TestProfileController::maybeSaveAsks()
         setValue(editor, u"Q_dz"_s, 0.05);
     QCOMPARE(controller.maybeSave(), result);
     QCOMPARE(asked.size(), questions);
-    if (questions > 0)
+    if (questions > 0) {
         QVERIFY(asked.first().contains(u"kept"_s));
+        // It says what is unsaved (issue 27).
+        QVERIFY2(asked.first().contains(u"unsaved changes: Q_dz."_s), qPrintable(asked.first()));
+    }
     const ProfileReadResult onDisk = readProfile(path);
     QVERIFY(onDisk.ok());
     QCOMPARE(onDisk.profile->device.Q_dz == 0.05, savedToFile);
+}
+
+// Issue 27: a bridge setting changed, and the quit prompt asked to save the profile without
+// saying why; it names it.
+void TestProfileController::quitPromptNamesABridgeSetting()
+{
+    ParameterEditor editor;
+    ProfileController controller(&editor, nullptr);
+    QVERIFY(controller.saveTo(m_dir->filePath(u"bridged.json"_s)));
+    bridge::BridgeSettings settings = controller.bridgeSettings();
+    settings.feedback.gain *= 2;
+    controller.setBridgeSettings(settings);
+    QCOMPARE(controller.unsavedParts(controller.activeSlot()), QStringList{u"a bridge setting"_s});
+    setValue(editor, u"K_max"_s, 0.5);
+    QStringList asked;
+    controller.setQuestion([&](const QString &text) {
+        asked << text;
+        return QMessageBox::Cancel;
+    });
+    QVERIFY(!controller.maybeSave());
+    QCOMPARE(asked.size(), 1);
+    QVERIFY2(asked.first().contains(u"unsaved changes: K_max; a bridge setting. Save them?"_s),
+             qPrintable(asked.first()));
 }
 
 void TestProfileController::enterInThePromptOverwritesNothing()

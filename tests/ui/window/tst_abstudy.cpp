@@ -313,7 +313,7 @@ void TestAbStudy::blindRunByKeysWritesTheTrials()
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QStringList lines = QString::fromUtf8(file.readAll()).split(u'\n');
     QCOMPARE(lines[1], QStringLiteral("# profile A: Untitled"));
-    QCOMPARE(lines[2], QStringLiteral("# profile B: Untitled (B)"));
+    QCOMPARE(lines[2], QStringLiteral("# profile B: Untitled (copy)"));
     QCOMPARE(lines[3], QStringLiteral("# seed: 1234"));
     QCOMPARE(lines[5], QStringLiteral("# question: Which felt stiffer?"));
     QCOMPARE(lines[6], QLatin1StringView(BlindStudy::kColumns));

@@ -23,6 +23,7 @@
 #include "window/shortcutsdialog.h"
 #include "window/wheelguard.h"
 
+#include <QAbstractButton>
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
@@ -44,12 +45,14 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBrowser>
+#include <QToolBar>
 #include <QUndoStack>
 
 #include <cmath>
 #include <memory>
 
 using namespace hatpic;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -138,6 +141,9 @@ private Q_SLOTS:
     void oversizedSettingsAreFitted();
     void handAndStiffnessInSightTogether();
     void keyboardReachesFieldsAndActions();
+    void goToScrollsTheFieldIntoView();
+    void keyboardFocusAndPanelKeys();
+    void resetLayoutRestoresTheDocks();
     void derivedFiguresInSightAtEverySize_data();
     void derivedFiguresInSightAtEverySize();
 
@@ -1028,6 +1034,138 @@ void TestMainWindow::oversizedSettingsAreFitted()
                                                        .arg(saved.y())
                                                        .arg(saved.width())
                                                        .arg(saved.height())));
+}
+
+// Issue 27: Alt+1…9 put the cursor in a field without scrolling it into view; the user typed
+// blind. Every Alt+N brings its field in sight, even when it had the focus already.
+void TestMainWindow::goToScrollsTheFieldIntoView()
+{
+    m_window->resize(1280, 560); // the Parameters panel scrolls
+    connectSim();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    auto *scroll = find<QScrollArea>("parameterScroll");
+    QScrollBar *bar = scroll->verticalScrollBar();
+    QVERIFY2(bar->maximum() > 0, "the Parameters panel does not scroll");
+    const auto inView = [scroll](const char *name) {
+        auto *w = scroll->findChild<QWidget *>(QString::fromLatin1(name));
+        return scroll->viewport()->rect().contains(
+            QRect(w->mapTo(scroll->viewport(), QPoint()), w->size()));
+    };
+    bar->setValue(0);
+    QVERIFY(!inView("spin_tau_limit"));
+    QTest::keyClick(m_window.get(), Qt::Key_9, Qt::AltModifier);
+    QCOMPARE(QApplication::focusWidget(), find<QWidget>("spin_tau_limit"));
+    QVERIFY(inView("spin_tau_limit"));
+    // Scrolled away with the focus kept: Alt+9 brings it back.
+    bar->setValue(0);
+    QVERIFY(!inView("spin_tau_limit"));
+    QTest::keyClick(m_window.get(), Qt::Key_9, Qt::AltModifier);
+    QVERIFY(inView("spin_tau_limit"));
+    QTest::keyClick(m_window.get(), Qt::Key_1, Qt::AltModifier);
+    QVERIFY(inView("spin_D_adm"));
+}
+
+// Issue 27: toolbar buttons were Tab stops; Push handed the focus on to the simulated hand's
+// selector; the panels under the plots had no keys; F1 named "Disconnect" for Ctrl+K.
+void TestMainWindow::keyboardFocusAndPanelKeys()
+{
+    m_window->resize(1280, 720);
+    // Opened disconnected, the window says how to start (issue 27).
+    QCOMPARE(find<LinkBanner>("linkBanner")->text(),
+             u"Not connected. Press Connect (Ctrl+K) to try the simulated knob."_s);
+    connectSim();
+    QVERIFY(find<LinkBanner>("linkBanner")->text().isEmpty());
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    for (QToolBar *bar : m_window->findChildren<QToolBar *>()) {
+        for (QAbstractButton *button : bar->findChildren<QAbstractButton *>())
+            QVERIFY2(button->focusPolicy() == Qt::NoFocus, qPrintable(button->text()));
+    }
+
+    // F1 names what the keys do, whatever the actions' states.
+    const QStringList lines = ShortcutsDialog::describe(m_window->shortcutActions());
+    const auto line = [&](const QKeySequence &key) {
+        const QString text = key.toString(QKeySequence::NativeText) + u'\t';
+        for (const QString &l : lines) {
+            if (l.startsWith(text) || l.contains(u" or "_s + text))
+                return l.section(u'\t', 1);
+        }
+        return QString();
+    };
+    QCOMPARE(line(QKeySequence(Qt::CTRL | Qt::Key_K)), u"Connect or disconnect"_s);
+    QCOMPARE(line(QKeySequence(Qt::CTRL | Qt::Key_R)), u"Record, or stop recording"_s);
+
+    // A key for each panel under the plots: it comes to the front, again hides it.
+    const std::pair<const char *, QKeyCombination> panels[] = {
+        {"bridgeDock", Qt::CTRL | Qt::SHIFT | Qt::Key_B},
+        {"experimentsDock", Qt::CTRL | Qt::SHIFT | Qt::Key_X},
+        {"abDock", Qt::CTRL | Qt::SHIFT | Qt::Key_C},
+        {"notesDock", Qt::CTRL | Qt::SHIFT | Qt::Key_N},
+        {"logDock", Qt::CTRL | Qt::SHIFT | Qt::Key_L},
+    };
+    for (const auto &[name, key] : panels) {
+        auto *dock = find<QDockWidget>(name);
+        QVERIFY2(!line(QKeySequence(key)).isEmpty(), name);
+        QTest::keySequence(m_window.get(), QKeySequence(key));
+        QTRY_VERIFY2(dock->isVisible() && !dock->visibleRegion().isEmpty(), name);
+        QTest::keySequence(m_window.get(), QKeySequence(key));
+        QTRY_VERIFY2(!dock->isVisible(), name);
+    }
+
+    // A click on Push leaves the cursor in the field being tuned.
+    auto *box = find<QAbstractSpinBox>("spin_K_max");
+    QTest::keyClick(m_window.get(), Qt::Key_4, Qt::AltModifier);
+    QCOMPARE(QApplication::focusWidget(), box);
+    QTest::keyClicks(box, u"0.5"_s);
+    QTest::keyClick(box, Qt::Key_Return);
+    QSignalSpy done(find<DeviceParameterLink>("parameterLink"),
+                    &DeviceParameterLink::commandFinished);
+    QTest::mouseClick(find<QWidget>("button_push"), Qt::LeftButton);
+    QVERIFY(done.wait(kConnectMs));
+    QCOMPARE(QApplication::focusWidget(), box);
+}
+
+// Issue 27: a dock shrunk once stayed shrunk across launches; View → Reset layout.
+void TestMainWindow::resetLayoutRestoresTheDocks()
+{
+    m_window->resize(1280, 720);
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    auto *parameters = find<QDockWidget>("parametersDock");
+    const int width = parameters->width();
+    QVERIFY(width >= 400);
+    m_window->resizeDocks({parameters}, {width - 120}, Qt::Horizontal);
+    auto *bridge = find<QDockWidget>("bridgeDock");
+    bridge->show();
+    auto *stiffness = find<QDockWidget>("stiffnessDock");
+    stiffness->hide();
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QVERIFY2(parameters->width() < width - 60, qPrintable(QString::number(parameters->width())));
+
+    // Across a launch, the shrunk dock stays: saved, read back.
+    m_window->close();
+    m_window = std::make_unique<MainWindow>();
+    m_window->resize(1280, 720);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    parameters = find<QDockWidget>("parametersDock");
+    QVERIFY2(parameters->width() < width - 60, qPrintable(QString::number(parameters->width())));
+
+    auto *reset = find<QAction>("resetLayoutAction");
+    QVERIFY(reset);
+    reset->trigger();
+    for (int i = 0; i < 4; ++i)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QTRY_VERIFY2(parameters->width() >= 420, // resizeDocksToDefault: at least 420 px
+                 qPrintable(QString::number(parameters->width())));
+    QVERIFY(find<QDockWidget>("stiffnessDock")->isVisible());
+    QVERIFY(!find<QDockWidget>("bridgeDock")->isVisible());
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -166,6 +166,17 @@ void TestTheme::switchingChangesThePlots()
     QCOMPARE(window.findChild<PlotPanel *>()->legend(PlotPanel::Plot::Angle)->textColor(),
              QApplication::palette().color(QPalette::Text));
 
+    // Issue 27: the Experiments plots stayed white in the dark theme.
+    for (const char *name : {"stepPlot", "bodePlot", "spectrumPlot"}) {
+        auto *experiment = window.findChild<QCustomPlot *>(QString::fromLatin1(name));
+        QVERIFY2(experiment, name);
+        experiment->replot();
+        QVERIFY2(QColor(experiment->grab().toImage().pixel(3, 3)).lightness() < 60, name);
+        for (QCPAxisRect *rect : experiment->axisRects())
+            QCOMPARE(rect->axis(QCPAxis::atLeft)->tickLabelColor(),
+                     QApplication::palette().color(QPalette::Text));
+    }
+
     window.findChild<QAction *>(QStringLiteral("theme_light"))->trigger();
     QVERIFY(!theme->isDark());
     QVERIFY2(background() > 200, "the plots' background follows the light theme");

@@ -1,6 +1,7 @@
 // WheelGuard: the wheel scrolls a panel past its fields and changes a value only in the field
 // that has the focus. Real widgets in a real scroll area, wheel events delivered as the window
 // system delivers them (spontaneous, to the widget under the pointer, offered to its parents).
+#include "plots/qcp.h"
 #include "wheelevent.h"
 #include "window/wheelguard.h"
 
@@ -79,6 +80,7 @@ private Q_SLOTS:
     void focusedFieldTakesTheWheel_data() { kinds_data(); }
     void focusedFieldTakesTheWheel();
     void scrollBarKeepsTheWheel();
+    void panelScrollsPastAStillPlot();
 };
 
 void TestWheelGuard::initTestCase()
@@ -152,6 +154,36 @@ void TestWheelGuard::scrollBarKeepsTheWheel()
     QScrollBar *bar = panel.scroll.verticalScrollBar();
     turnWheel(bar, bar->rect().center(), -120);
     QVERIFY(bar->value() > 0);
+}
+
+// Issue 27: the Bridge panel's energy plot (a QCustomPlot that does not zoom) took every wheel
+// turn, and the panel stopped scrolling under the pointer. A plot that zooms keeps the wheel.
+void TestWheelGuard::panelScrollsPastAStillPlot()
+{
+    QScrollArea scroll;
+    auto *content = new QWidget;
+    auto *column = new QVBoxLayout(content);
+    auto *still = new QCustomPlot(content);
+    still->setMinimumHeight(300);
+    auto *zooming = new QCustomPlot(content);
+    zooming->setMinimumHeight(300);
+    zooming->setInteractions(QCP::iRangeZoom);
+    column->addWidget(still);
+    column->addWidget(zooming);
+    scroll.setWidget(content);
+    scroll.setWidgetResizable(true);
+    scroll.resize(300, 200);
+    scroll.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&scroll));
+    QScrollBar *bar = scroll.verticalScrollBar();
+    QVERIFY(bar->maximum() > 0);
+    turnWheel(still, still->rect().center(), -120);
+    QVERIFY(bar->value() > 0);
+    bar->setValue(bar->maximum());
+    const QCPRange before = zooming->xAxis->range();
+    turnWheel(zooming, zooming->rect().center(), 120);
+    QCOMPARE(bar->value(), bar->maximum());
+    QVERIFY(zooming->xAxis->range().size() < before.size());
 }
 
 QTEST_MAIN(TestWheelGuard)

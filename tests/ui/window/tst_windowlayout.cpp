@@ -212,9 +212,28 @@ void TestWindowLayout::bridgePanelSaysWhatItNeeds()
     // Its sections stand side by side as far as the width allows.
     auto *bridge = find<BridgePanel>("bridgePanel");
     QVERIFY2(bridge->columns() >= 2, qPrintable(QString::number(bridge->columns())));
+    // Issue 27: the loop's state at a glance, and the Passivity section in sight without a
+    // scroll (it once sat two scrolls down, under the topics).
+    QVERIFY(find<QWidget>("bridge_loop_state")->isHidden()); // no loop yet: the needs have room
+    QVERIFY(!find<QWidget>("bridge_section_passivity")->visibleRegion().isEmpty());
+    // The status bar says it too, whichever panel is in front (the panel's own signal is
+    // tested on real DDS in tst_bridgepanel).
+    auto *loop = find<QLabel>("statusLoop");
+    QVERIFY(loop->isHidden());
+    Q_EMIT bridge->loopStateChanged(u"Loop passive, no contact"_s, BridgePanel::LoopState::Passive);
+    QVERIFY(loop->isVisible());
+    QCOMPARE(loop->text(), u"Loop passive, no contact"_s);
+    Q_EMIT bridge->loopStateChanged(u"Loop generating energy: see Passivity below"_s,
+                                    BridgePanel::LoopState::Generating);
+    QCOMPARE(loop->text(), u"Loop generating energy: see the Bridge panel"_s);
+    QVERIFY(wholeInSight(loop));
+    Q_EMIT bridge->loopStateChanged(u"Bridge off"_s, BridgePanel::LoopState::Off);
+    QVERIFY(loop->isHidden());
     m_window->resize(1920, 1080);
     settle();
-    QTRY_COMPARE(bridge->columns(), 3);
+    QTRY_VERIFY(bridge->columns() >= 3);
+    QVERIFY(!find<QWidget>("bridge_section_passivity")->visibleRegion().isEmpty());
+    QVERIFY(!find<QWidget>("bridge_section_robot")->visibleRegion().isEmpty());
 }
 
 // Once, the simulated hand went on pushing during a step; the panel said "Let go of the knob",
