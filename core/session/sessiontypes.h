@@ -185,6 +185,15 @@ struct SessionNotice
     QStringList problems;
 };
 
+//! What a push that failed part-way had already changed: the parts the device acknowledged
+//! before the step that failed (`result.command`) — each as read back where the read-back came,
+//! else as sent. Empty for a push that changed nothing (its first step failed, or it was refused
+//! before sending), for any other command, and for a success.
+DeviceTuning appliedBeforeFailure(const CommandResult &result);
+//! A push whose SET_EFFECTS went out and was never answered (no ACK, or the link went): whether
+//! the device applied the effects is unknown.
+bool effectsUnknownAfterFailure(const CommandResult &result);
+
 //! A result for `command` with `status` and `reason`; the other fields at their defaults.
 CommandResult commandResult(CommandKind command, CommandResult::Status status,
                             CommandResult::Reason reason = CommandResult::Reason::None);
