@@ -189,7 +189,8 @@ protected:
             m_cycles = parser.value(QStringLiteral("cycles")).toInt(&ok);
             if (!ok) {
                 printError(u"--cycles " + unreadNumber(u"a whole number"_s,
-                                                       parser.value(QStringLiteral("cycles"))));
+                                                       parser.value(QStringLiteral("cycles")),
+                                                       true));
                 return ExitBadUsage;
             }
         }

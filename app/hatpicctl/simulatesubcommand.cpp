@@ -127,7 +127,7 @@ public:
             if (!ok) {
                 printError(u"--seed " + unreadNumber(QStringLiteral("a whole number from 0 to "
                                                                     "18446744073709551615"),
-                                                     parser.value(QStringLiteral("seed"))));
+                                                     parser.value(QStringLiteral("seed")), true));
                 return ExitBadUsage;
             }
         }

@@ -143,7 +143,9 @@ struct CommandResult
     };
     Status status = Status::Ok;
     Reason reason = Reason::None;
-    CommandKind command = CommandKind::GetParams; //!< the command (a rejection: the frame refused)
+    //! The command; a failure on the wire names the step it stopped at (a rejection: the frame
+    //! refused; a timeout: the frame unanswered; a loss: the frame in flight)
+    CommandKind command = CommandKind::GetParams;
     v2::AckStatus ackStatus = v2::AckStatus::Ok;
     int field = -1; //!< ParamBlock (effect block, VIBRATE) index the device named, or -1
     //! A read-back followed each change the command made (SET_PARAMS and ZERO: GET_PARAMS;
