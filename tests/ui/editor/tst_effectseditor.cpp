@@ -57,6 +57,17 @@ void connectWithEffects(ParameterEditor &editor)
     editor.setDeviceTuning({asFloat(editor.params()), onWire(editor.effects())});
 }
 
+//! The device's OUT_OF_RANGE for SET_EFFECTS, naming wall_stiffness (field 5).
+CommandResult wallStiffnessRejected()
+{
+    CommandResult rejected;
+    rejected.status = CommandResult::Status::Rejected;
+    rejected.command = CommandKind::SetEffects;
+    rejected.ackStatus = v2::AckStatus::OutOfRange;
+    rejected.field = 5;
+    return rejected;
+}
+
 } // namespace
 
 class TestEffectsEditor : public QObject
@@ -234,11 +245,7 @@ void TestEffectsEditor::refusedEffectsAfterAcceptedParametersSayWhatIsInForce()
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
     QVERIFY(editor.field(u"K_max"_s)->differsFromDevice());
     editor.pushAction()->trigger();
-    CommandResult rejected;
-    rejected.status = CommandResult::Status::Rejected;
-    rejected.command = CommandKind::SetEffects;
-    rejected.ackStatus = v2::AckStatus::OutOfRange;
-    rejected.field = 5;
+    CommandResult rejected = wallStiffnessRejected();
     rejected.sent = {asFloat(editor.params()), onWire(editor.effects())};
     rejected.received.params = asFloat(editor.params()); // the read-back of SET_PARAMS
     editor.pushFinished(rejected);
@@ -255,11 +262,7 @@ void TestEffectsEditor::rejectionNamesTheEffectField()
     connectWithEffects(editor);
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
     editor.pushAction()->trigger();
-    CommandResult rejected;
-    rejected.status = CommandResult::Status::Rejected;
-    rejected.command = CommandKind::SetEffects;
-    rejected.ackStatus = v2::AckStatus::OutOfRange;
-    rejected.field = 5;
+    CommandResult rejected = wallStiffnessRejected();
     editor.pushFinished(rejected);
     QCOMPARE(editor.syncState(), SyncState::Rejected);
     QCOMPARE(editor.syncText(), u"device rejected the effects: OUT_OF_RANGE (wall_stiffness)"_s);
