@@ -1,6 +1,9 @@
 #include "console.h"
 
+#include "model/params.h"
+
 #include <QFileInfo>
+#include <QRegularExpression>
 
 #include <cstdio>
 
@@ -54,6 +57,17 @@ void printNote(const QString &text)
     if (!bytes.endsWith('\n'))
         bytes += '\n';
     std::fwrite(bytes.constData(), 1, static_cast<size_t>(bytes.size()), stderr);
+}
+
+QString unreadNumber(const QString &what, const QString &text, bool whole)
+{
+    static const QRegularExpression integer(QStringLiteral("^[+-]?[0-9]+$"));
+    static const QRegularExpression number(
+        QStringLiteral("^[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?$"));
+    const QString quoted = QString::fromStdString(echoedText(text.toStdString()));
+    if ((whole ? integer : number).match(text.trimmed()).hasMatch())
+        return u"is out of range: it must be " + what + u", got '" + quoted + u"'.";
+    return u"must be " + what + u", got '" + quoted + u"'.";
 }
 
 QString asSentence(const QString &text)

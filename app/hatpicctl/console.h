@@ -24,6 +24,12 @@ void printNote(const QString &text);
 //! can. Checked before the port is opened, so that no measurement is lost to a bad target.
 QString outputTargetProblem(const QStringList &paths, bool force, const QString &ownFiles);
 
+//! The rest of the sentence for an option whose value `text` did not read as `what` ("a whole
+//! number from 1 to 1000"): "must be <what>, got 'abc'." — or, for a number too large for its
+//! type ("99999999999", "1e999"), "is out of range: it must be <what>, got '…'." A long integer
+//! is a number, only not one that fits; for a `whole` option, "2.5" is not one at all.
+QString unreadNumber(const QString &what, const QString &text, bool whole = false);
+
 //! Ensures `text` ends like a sentence (adds a full stop if it has no final punctuation).
 QString asSentence(const QString &text);
 

@@ -18,6 +18,7 @@ namespace hatpic::cli {
 namespace {
 
 constexpr int kPollMs = 50;
+constexpr int kResultAfterLossMs = 500; //!< wait for a command's result once the link is lost
 
 QString portText(const QString &port)
 {
@@ -170,16 +171,31 @@ int DeviceRunner::runCommand(const std::function<quint64(DeviceClient &)> &issue
                          });
     id = issue(m_client);
     const Wait outcome = wait([&] { return finished.has_value(); }, m_options.timeoutS);
-    QObject::disconnect(connection);
 
     switch (outcome) {
     case Wait::Done:
+        QObject::disconnect(connection);
         if (result)
             *result = *finished;
         return ExitSuccess;
     case Wait::Lost:
+        // The session fails the command in flight with the loss, just after or before telling
+        // the loss: its result says what a push had changed by then (the caller tells it).
+        if (!finished) {
+            QEventLoop loop;
+            QTimer::singleShot(kResultAfterLossMs, &loop, &QEventLoop::quit);
+            QObject::connect(&m_client, &DeviceClient::commandFinished, &loop, [&] {
+                if (finished)
+                    loop.quit();
+            });
+            loop.exec();
+        }
+        QObject::disconnect(connection);
+        if (result && finished)
+            *result = *finished;
         return reportLoss();
     case Wait::TimedOut:
+        QObject::disconnect(connection);
         break;
     }
     printError(u"The device did not answer within " + secondsText(m_options.timeoutS) + u'.');

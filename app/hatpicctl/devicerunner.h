@@ -30,7 +30,8 @@ public:
     //! Opens the port and waits until the session reports Connected.
     int connect();
     //! Issues one command (`issue` returns its request id) and waits for commandFinished.
-    //! The result is stored in `*result` when given, whatever its status.
+    //! The result is stored in `*result` when given, whatever its status — also when the link
+    //! was lost (the loss is reported and ExitNoDevice returned), if the result came.
     int runCommand(const std::function<quint64(DeviceClient &)> &issue,
                    CommandResult *result = nullptr);
     //! Lets the link run for `seconds` (≤ 0: no limit) or until `stop()` returns true; `stop`

@@ -152,6 +152,14 @@ protected:
             return ExitBadUsage;
         }
         m_kind = *kind;
+        for (const QString &option : parser.optionNames()) {
+            if (const QString owner = experimentOfOption(option); !owner.isEmpty()) {
+                printError(u"--" + option + u" is an option of '" + owner + u"', not of '" +
+                           experimentKindName(m_kind) +
+                           u"'; run 'hatpicctl experiment --help' for the options.");
+                return ExitBadUsage;
+            }
+        }
         for (const NumberOption &o : kNumberOptions) {
             const QString name = QString::fromUtf16(o.name);
             if (!parser.isSet(name))
@@ -159,7 +167,7 @@ protected:
             bool ok = false;
             const double v = parser.value(name).toDouble(&ok);
             if (!ok || !std::isfinite(v)) {
-                printError(u"--" + name + u" must be a number, got '" + parser.value(name) + u"'.");
+                printError(u"--" + name + u' ' + unreadNumber(u"a number"_s, parser.value(name)));
                 return ExitBadUsage;
             }
             m_overrides.append({o.field, v});
@@ -181,8 +189,9 @@ protected:
             bool ok = false;
             m_cycles = parser.value(QStringLiteral("cycles")).toInt(&ok);
             if (!ok) {
-                printError(u"--cycles must be a whole number, got '" +
-                           parser.value(QStringLiteral("cycles")) + u"'.");
+                printError(u"--cycles " + unreadNumber(u"a whole number"_s,
+                                                       parser.value(QStringLiteral("cycles")),
+                                                       true));
                 return ExitBadUsage;
             }
         }
@@ -258,8 +267,9 @@ protected:
             printError(result->problem);
             return ExitNoDevice;
         }
-        // A spectrum of too few samples (a device that streams slowly) is no spectrum.
-        if (m_kind == ExperimentKind::Spectrum && result->thetaSpectrum.frequency.empty()) {
+        // A run without its measurement (no step in τ_ext, frequencies without samples, a
+        // spectrum of too few samples) prints no figures: a table of dashes is no result.
+        if (result->unmeasured) {
             printError(result->problem);
             return ExitNoDevice;
         }
@@ -279,6 +289,22 @@ protected:
     }
 
 private:
+    //! The experiments `option` belongs to when it is not one of m_kind's ("bode"); empty
+    //! when it is, or when it is no experiment's own option.
+    QString experimentOfOption(const QString &option) const
+    {
+        static const QStringList step{u"from"_s, u"to"_s};
+        static const QStringList bode{u"offset"_s, u"amplitude"_s, u"frequencies"_s, u"cycles"_s};
+        static const QStringList shared{u"duration"_s}; // step and spectrum, not bode
+        if (step.contains(option) && m_kind != ExperimentKind::Step)
+            return u"step"_s;
+        if (bode.contains(option) && m_kind != ExperimentKind::Frequency)
+            return u"bode"_s;
+        if (shared.contains(option) && m_kind == ExperimentKind::Frequency)
+            return u"step' and 'spectrum"_s;
+        return {};
+    }
+
     ExperimentKind m_kind = ExperimentKind::Step;
     QList<std::pair<double ExperimentPlan::*, double>> m_overrides;
     QList<double> m_frequencies;

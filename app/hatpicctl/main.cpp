@@ -11,6 +11,10 @@ int main(int argc, char *argv[])
     // A file-size limit (ulimit -f) must fail the write with EFBIG, which the recorder
     // handles (whole rows kept, files closed), instead of killing the process mid-row.
     std::signal(SIGXFSZ, SIG_IGN);
+    // A reader that closes stdout early (`hatpicctl stream | head`) must fail the write with
+    // EPIPE, which ends the command with exit 4 ("stdout cannot be written"), instead of
+    // killing the process by SIGPIPE (141) before it closes its port and files.
+    std::signal(SIGPIPE, SIG_IGN);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("hatpicctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(HATPIC_VERSION));

@@ -6,6 +6,7 @@
 #include "devicesubcommand.h"
 #include "paramtext.h"
 #include "profileinput.h"
+#include "session/sessionwording.h"
 #include "subcommands.h"
 
 #include "model/effects.h"
@@ -236,10 +237,18 @@ protected:
             CommandResult result;
             const int code = runner.runCommand(
                 [&tuning](DeviceClient &client) { return client.pushTuning(tuning); }, &result);
-            if (code)
+            if (code) {
+                // The link went after part of the push: say what it had changed.
+                if (const QString applied = SessionWording::appliedBeforeFailure(result);
+                    !applied.isEmpty())
+                    printNote(applied);
+                writeInForce(shown, result, info, parser);
                 return code;
-            if (const int refused = DeviceRunner::reportResult(result); refused)
+            }
+            if (const int refused = DeviceRunner::reportResult(result); refused) {
+                writeInForce(shown, result, info, parser);
                 return refused;
+            }
             const DeviceTuning &back = result.received;
             if (tuning.params) {
                 if (!back.params || !sameOnWire(*back.params, *tuning.params))
@@ -262,6 +271,23 @@ protected:
     }
 
 private:
+    //! A push that failed part-way: what is in force goes to stdout as `get` shows it (the
+    //! read-back where it came), so a script sees the device's state; the effects are left
+    //! out when the failed step leaves them unknown. Nothing when the push changed nothing.
+    static void writeInForce(const DeviceTuning &before, const CommandResult &result,
+                             const DeviceInfo &info, const QCommandLineParser &parser)
+    {
+        const DeviceTuning applied = appliedBeforeFailure(result);
+        if (!applied.params && !applied.effects)
+            return;
+        const DeviceTuning inForce = before.updatedBy(applied);
+        const bool effectsUnknown = effectsUnknownAfterFailure(result);
+        writeOut(
+            parameterOutput(inForce.params.value_or(DeviceParams{}),
+                            info.hasEffects() && !effectsUnknown ? inForce.effects : std::nullopt,
+                            info, parser.isSet(QStringLiteral("json"))));
+    }
+
     bool assigns(bool effect) const
     {
         return std::any_of(m_assignments.cbegin(), m_assignments.cend(),

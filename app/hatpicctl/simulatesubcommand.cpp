@@ -125,8 +125,9 @@ public:
             bool ok = false;
             config.seed = parser.value(QStringLiteral("seed")).toULongLong(&ok);
             if (!ok) {
-                printError(u"--seed must be a whole number, got '" +
-                           parser.value(QStringLiteral("seed")) + u"'.");
+                printError(u"--seed " + unreadNumber(QStringLiteral("a whole number from 0 to "
+                                                                    "18446744073709551615"),
+                                                     parser.value(QStringLiteral("seed")), true));
                 return ExitBadUsage;
             }
         }

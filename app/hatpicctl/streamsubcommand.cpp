@@ -23,6 +23,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 std::atomic<bool> g_interrupted{false}; // set by SIGINT / SIGTERM / SIGHUP
@@ -183,6 +185,7 @@ protected:
 
         quint64 samples = 0;
         bool recordingFailed = false;
+        bool stdoutClosed = false; // its reader went away (`| head`): the stream ends
         QObject::connect(&client, &DeviceClient::recordingChanged, &context,
                          [&](const RecordingStatus &status) {
                              if (!status.active && !status.error.isEmpty())
@@ -198,6 +201,7 @@ protected:
                                      rows += '\n';
                                  }
                                  writeOut(rows);
+                                 stdoutClosed = stdoutClosed || !flushOut();
                              }
                          });
         QObject::connect(&client, &DeviceClient::statsUpdated, &context,
@@ -209,8 +213,8 @@ protected:
         const auto previousHup = std::signal(SIGHUP, onInterrupt);
         QElapsedTimer elapsed;
         elapsed.start();
-        const int code =
-            runner.runFor(m_duration, [&] { return g_interrupted.load() || recordingFailed; });
+        const int code = runner.runFor(
+            m_duration, [&] { return g_interrupted.load() || recordingFailed || stdoutClosed; });
         const double seconds = elapsed.nsecsElapsed() * 1e-9;
         QObject::disconnect(&client, &DeviceClient::samplesReady, &context, nullptr);
         std::signal(SIGINT, previousInt);
@@ -244,9 +248,28 @@ protected:
             printError(u"The recording stopped: " + asSentence(recorded.error));
             return ExitBadUsage;
         }
+        if (stdoutClosed) {
+            printError(u"Standard output was closed by its reader after " +
+                       QString::number(samples) + u" samples; the stream stopped.");
+            return ExitBadUsage;
+        }
         if (code == ExitSuccess && samples == 0) {
-            printError(u"No telemetry arrived from " + info.port + u" in " +
-                       QString::number(seconds, 'f', 1) + u" s; the device did not stream.");
+            const quint64 frames = client.stats().frames;
+            if (frames == 0) {
+                printError(u"No telemetry arrived from " + info.port + u" in " +
+                           QString::number(seconds, 'f', 1) + u" s; the device did not stream.");
+            } else {
+                // It streams, only no frame fell within the run (a slow rate, a short run).
+                const quint16 rate = runner.options().connect.streamRateHz;
+                printError(u"No sample arrived within the " + QString::number(seconds, 'f', 1) +
+                           u" s of the stream, though the device streams (" +
+                           QString::number(frames) + (frames == 1 ? u" frame"_s : u" frames"_s) +
+                           u" since connecting); at " + QString::number(rate) +
+                           u" Hz a frame comes every " + QString::number(1.0 / rate, 'g', 3) +
+                           u" s, so give a --duration of "
+                           u"at least " +
+                           QString::number(2.0 / rate, 'g', 3) + u" s.");
+            }
             return ExitNoDevice;
         }
         return code;

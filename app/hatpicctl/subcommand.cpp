@@ -7,6 +7,8 @@
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 
+#include <algorithm>
+
 namespace hatpic::cli {
 
 namespace {
@@ -20,8 +22,11 @@ QString overview(const std::vector<std::unique_ptr<Subcommand>> &commands)
         "offline. Data (CSV, JSON, tables) goes to stdout, messages to stderr.\n"
         "\n"
         "Commands:\n");
+    qsizetype width = 0; // the longest name, then a gap of two
     for (const auto &command : commands)
-        text += u"  " + command->name().leftJustified(10) + command->summary() + u'\n';
+        width = std::max(width, command->name().size());
+    for (const auto &command : commands)
+        text += u"  " + command->name().leftJustified(width + 2) + command->summary() + u'\n';
     text += QStringLiteral(
         "\n"
         "Run 'hatpicctl COMMAND --help' for the options of one command.\n"

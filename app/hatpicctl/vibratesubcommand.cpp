@@ -12,6 +12,7 @@
 #include <QCommandLineParser>
 
 #include <array>
+#include <limits>
 #include <utility>
 
 namespace hatpic::cli {
@@ -73,10 +74,21 @@ protected:
             bool ok = false;
             *target = parser.value(option).toDouble(&ok);
             if (!ok) {
-                printError(u"--" + option + u" must be a number, got '" + parser.value(option) +
-                           u"'.");
+                printError(u"--" + option + u' ' +
+                           unreadNumber(QStringLiteral("a number"), parser.value(option)));
                 return ExitBadUsage;
             }
+        }
+        // Every rule that does not depend on the device (NaN, the ranges, an amplitude that
+        // travels as 0), before any port is opened; the torque limit and the control rate
+        // are the device's, checked once it answered.
+        const auto violations = validate(m_cue, std::numeric_limits<double>::infinity(),
+                                         std::numeric_limits<double>::infinity());
+        if (!violations.empty()) {
+            printError(QStringLiteral("The vibration cue is not valid; nothing was sent:"));
+            for (const Violation &violation : violations)
+                printNote(u"  " + QString::fromStdString(violation.message()));
+            return ExitBadUsage;
         }
         return ExitSuccess;
     }

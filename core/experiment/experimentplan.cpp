@@ -110,6 +110,10 @@ QString ExperimentPlan::check(double tauLimit) const
         }
         if (tauFrom == tauTo)
             return QStringLiteral("The step must change the torque: its two levels are equal.");
+        // τ_ext travels as a 32-bit float: levels that round to one float are no step.
+        if (static_cast<float>(tauFrom) == static_cast<float>(tauTo))
+            return u"The step must change the torque: its levels " + number(tauFrom) + u" and " +
+                   number(tauTo) + u" N·m are one and the same 32-bit float, as τ_ext travels.";
         break;
     case ExperimentKind::Frequency:
         if (!std::isfinite(offset) || !(amplitude > 0) || !std::isfinite(amplitude) ||
@@ -117,6 +121,12 @@ QString ExperimentPlan::check(double tauLimit) const
             return u"The sine (offset " + number(offset) + u" N·m, amplitude " + number(amplitude) +
                    u" N·m) must have an amplitude above 0 and stay within the torque limit ±" +
                    number(tauLimit) + u" N·m.";
+        // τ_ext travels as a 32-bit float: a sine its rounding flattens excites nothing.
+        if (static_cast<float>(offset + amplitude) == static_cast<float>(offset) ||
+            static_cast<float>(offset - amplitude) == static_cast<float>(offset))
+            return u"The sine's amplitude " + number(amplitude) +
+                   u" N·m is lost around its offset " + number(offset) +
+                   u" N·m in the 32-bit float τ_ext travels as; give a larger amplitude.";
         if (frequencies.isEmpty() || frequencies.size() > kMaxFrequencies)
             return u"A frequency response needs 1 to " + QString::number(kMaxFrequencies) +
                    u" frequencies, got " + QString::number(frequencies.size()) + u'.';

@@ -60,8 +60,10 @@ void analyseStep(ExperimentResult &r)
     const StepSeries measured =
         stepSeries(plan, r.samples, r.clock.deviceTime(plan.settle / 2), plan.settle);
     if (measured.t.empty()) {
-        r.problem = QStringLiteral("No step appears in the device's τ_ext column: the feedback "
-                                   "did not reach the device.");
+        r.problem = QStringLiteral("No step appears in the device's τ_ext column: the device did "
+                                   "not apply the feedback (it ignores τ_ext, or it did not "
+                                   "reach it).");
+        r.unmeasured = true;
         return;
     }
     r.stepAt = measured.stepAt;
@@ -108,8 +110,11 @@ void analyseFrequency(ExperimentResult &r)
     }
     analysis::unwrapPhase(r.points);
     r.bandwidth = analysis::measuredBandwidth(r.points);
-    if (!missing.isEmpty())
-        r.problem = u"Too few samples to measure " + missing.join(u", ") + u'.';
+    if (!missing.isEmpty()) {
+        r.problem = u"Too few samples to measure " + missing.join(u", ") +
+                    u": the device stopped streaming, or streams too slowly for them.";
+        r.unmeasured = true;
+    }
 }
 
 } // namespace
@@ -201,9 +206,11 @@ ExperimentResult analyseExperiment(const ExperimentPlan &plan, const QList<Sampl
                 window.resize(expected);
         }
         spectraOf(window, r.thetaSpectrum, r.tauSpectrum);
-        if (r.thetaSpectrum.frequency.empty())
+        if (r.thetaSpectrum.frequency.empty()) {
             r.problem = u"Too few samples for a spectrum: " + QString::number(window.size()) +
                         u" in the " + QString::number(plan.duration, 'g', 3) + u" s recorded.";
+            r.unmeasured = true;
+        }
         break;
     }
     }

@@ -57,6 +57,10 @@ struct ExperimentResult
     Outcome outcome = Outcome::Completed;
     //! Cancelled/Failed: why; Completed: empty, or why part of the analysis is missing.
     QString problem;
+    //! Completed, but without the measurement the experiment exists for (no step in the
+    //! device's τ_ext column, a frequency without samples, too few samples for a spectrum):
+    //! no figure stands for the knob; `problem` says why.
+    bool unmeasured = false;
     DeviceParams params;    //!< the device's parameters during the run
     double tauLimit = 0.44; //!< the device's torque limit [N·m]
     DerivedFigures figures; //!< the model's figures for `params`

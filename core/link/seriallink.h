@@ -1,4 +1,9 @@
 // ByteLink over a QSerialPort: 8N1, no flow control, fully asynchronous (no waitFor*).
+//
+// The port is opened by its resolved path (symlinks followed), so every name of one device
+// takes the same lock file: a /dev/pts/N alias of a port in use is refused as in use. A name
+// with a '/' is a path (relative to the working directory); only a bare name ("ttyUSB0") is
+// looked up under /dev.
 #pragma once
 
 #include "link/bytelink.h"
@@ -28,14 +33,26 @@ public:
 
     qint64 bytesToWrite() const { return m_port.bytesToWrite(); } //!< not yet sent [B]
     quint64 droppedWrites() const { return m_droppedWrites; }     //!< writes refused when full
+    //! Times the port said "try again" (EAGAIN: its buffer full, e.g. another process floods
+    //! the terminal): back-pressure, which QSerialPort retries on its own, never a lost port.
+    quint64 backPressureEvents() const { return m_backPressure; }
+
+    //! The file a port name opens: a name with a '/' is a path (relative to the working
+    //! directory), a bare name is under /dev; symlinks resolved when the file exists.
+    static QString resolvedPath(const QString &portName);
+    //! Who holds the lock of the port at `path` ("hatpicctl, PID 1234"), empty when unknown.
+    static QString lockHolder(const QString &path);
 
 private:
+    void forwardReceived();
     void onError(QSerialPort::SerialPortError error);
 
     QSerialPort m_port;
+    QString m_portName; //!< as given
     qint32 m_baud;
     QString m_error;
     quint64 m_droppedWrites = 0;
+    quint64 m_backPressure = 0;
 };
 
 } // namespace hatpic

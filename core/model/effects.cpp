@@ -3,6 +3,8 @@
 #include "fieldcheck.h"
 #include "paramtable.h"
 
+#include <limits>
+
 namespace hatpic {
 
 double EffectParams::field(int index) const
@@ -88,6 +90,16 @@ template<typename Report>
 void checkVibration(const Vibration &v, double tauLimit, double controlRate, Report &&report)
 {
     detail::checkFields(v, kVibrationFields, true, report, tauLimit);
+    // VIBRATE carries float32: an amplitude below half the smallest float above 0 travels as 0,
+    // which the device reads as "stop" — not the cue that was asked for.
+    if (v.amplitude > 0 && static_cast<float>(v.amplitude) == 0.0f) {
+        report(kVibrationFields[0].name, 0, v.amplitude, [] {
+            return "must be 0 (stop) or at least " +
+                   formatNumber(std::numeric_limits<float>::denorm_min()) +
+                   ", the smallest 32-bit float above 0: a smaller one travels as 0, which stops "
+                   "the cue";
+        });
+    }
     const double nyquist = controlRate / 2;
     if (std::isfinite(v.frequency) && !(v.frequency < nyquist)) {
         report(kVibrationFields[1].name, 1, v.frequency, [nyquist] {

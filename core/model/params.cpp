@@ -1,5 +1,7 @@
 #include "params.h"
 
+#include "printabletext.h"
+
 #include "fieldcheck.h"
 #include "paramtable.h"
 
@@ -170,11 +172,11 @@ std::string formatNumber(double value)
 std::string echoedText(std::string_view text)
 {
     if (text.size() <= kMaxEchoedBytes)
-        return std::string(text);
+        return printableText(text);
     std::size_t n = kMaxEchoedBytes;
     while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80)
         --n; // never half a character
-    return std::string(text.substr(0, n)) + "… (" + std::to_string(text.size()) + " bytes)";
+    return printableText(text.substr(0, n)) + "… (" + std::to_string(text.size()) + " bytes)";
 }
 
 } // namespace hatpic

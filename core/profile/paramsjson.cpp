@@ -300,9 +300,27 @@ QStringList readHostParams(const QJsonObject &object, const QString &prefix, Hos
 void warnUnknownKeys(const QJsonObject &object, const QStringList &known, const QString &prefix,
                      QStringList &warnings)
 {
+    qsizetype unknown = 0;
     for (auto it = object.begin(); it != object.end(); ++it) {
-        if (!known.contains(it.key()))
-            warnings.append(u"unknown key \"" + prefix + it.key() + u"\" ignored");
+        if (known.contains(it.key()))
+            continue;
+        if (++unknown <= kMaxUnknownKeysNamed) {
+            warnings.append(
+                u"unknown key \"" +
+                QString::fromStdString(echoedText(QString(prefix + it.key()).toStdString())) +
+                u"\" ignored");
+        }
+    }
+    if (unknown > kMaxUnknownKeysNamed) {
+        const QString where =
+            prefix.isEmpty()
+                ? QStringLiteral("the file")
+                : u'"' +
+                      QString::fromStdString(
+                          echoedText(prefix.chopped(prefix.endsWith(u'.') ? 1 : 0).toStdString())) +
+                      u'"';
+        warnings.append(u"… and " + QString::number(unknown - kMaxUnknownKeysNamed) +
+                        u" more unknown keys in " + where + u" ignored");
     }
 }
 

@@ -75,8 +75,11 @@ QStringList readHostParams(const QJsonObject &object, const QString &prefix, Hos
                            QStringList &errors, QStringList *warnings,
                            const QStringList &otherKeys = {});
 
-//! Reports every key of `object` that `known` does not hold as a warning: "unknown key
-//! \"<prefix>colour\" ignored".
+//! Most unknown keys of one object named, one warning each; the rest are counted in one more.
+inline constexpr int kMaxUnknownKeysNamed = 10;
+//! Reports the keys of `object` that `known` does not hold as warnings: "unknown key
+//! \"<prefix>colour\" ignored", each key quoted as echoedText() does (printable, cut); beyond
+//! kMaxUnknownKeysNamed, one "… and 49990 more unknown keys in \"<prefix>\" ignored".
 void warnUnknownKeys(const QJsonObject &object, const QStringList &known, const QString &prefix,
                      QStringList &warnings);
 

@@ -1,5 +1,7 @@
 #include "deviceinfo.h"
 
+#include "model/printabletext.h"
+
 #include <QStringBuilder>
 
 #include <cmath>
@@ -13,16 +15,7 @@ QString wireProtocolName(WireProtocol protocol)
 
 QString printableDeviceText(const QString &text)
 {
-    QString out;
-    out.reserve(text.size());
-    for (const QChar c : text) {
-        const char16_t u = c.unicode();
-        if (u < 0x20 || (u >= 0x7F && u < 0xA0))
-            out += u"\\x" % QString::number(u, 16).rightJustified(2, u'0');
-        else
-            out += c;
-    }
-    return out;
+    return QString::fromStdString(printableText(text.toStdString()));
 }
 
 QString helloReplyProblem(const v2::HelloReply &reply)

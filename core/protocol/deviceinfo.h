@@ -39,8 +39,8 @@ struct DeviceInfo
     }
 };
 
-//! Text a device sent, safe to print: control characters (ESC, CR, LF, …, DEL and C1) become
-//! "\x1b"-style escapes, so a device's name can never drive a terminal.
+//! Text a device sent, safe to print: printableText() (model/printabletext.h), the one rule for all
+//! foreign text, on a QString.
 QString printableDeviceText(const QString &text);
 
 //! Why a HELLO_REPLY is nonsense (model.md bounds: tau_limit finite, > 0 and ≤ 10 N·m;

@@ -101,7 +101,9 @@ CommandResult resultFor(const Command &cmd, CommandKind kind, Status status,
                         Reason reason = Reason::None)
 {
     CommandResult r = commandResult(kind, status, reason);
-    r.sent = cmd.tuning;
+    // Only a push sends a tuning; a read's `tuning` merely names the parts it reads.
+    if (cmd.kind == CommandKind::SetParams || cmd.kind == CommandKind::SetEffects)
+        r.sent = cmd.tuning;
     r.received = cmd.received;
     r.vibration = cmd.vibration;
     r.rate = cmd.rate;
@@ -292,8 +294,10 @@ void CommandQueue::failAll(CommandResult::Reason reason)
     for (Command &c : m_queue)
         failing.push_back(std::move(c));
     m_queue.clear();
+    // Each result names the step it stopped at and carries what was sent and read, so a push
+    // that the loss cut after SET_PARAMS says what it had changed (appliedBeforeFailure()).
     for (const Command &c : failing)
-        Q_EMIT finished(c, commandResult(c.kind, Status::NotConnected, reason));
+        Q_EMIT finished(c, resultFor(c, c.stepKind(), Status::NotConnected, reason));
 }
 
 } // namespace hatpic

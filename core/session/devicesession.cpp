@@ -48,7 +48,7 @@ DeviceSession::DeviceSession(QObject *parent)
       m_feedback([this](double tauExt) { sendFeedback(tauExt); }, this),
       m_ping(
           m_clock, [this](quint32 token) { return sendPing(token); }, this),
-      m_samples(this)
+      m_deviceText(this), m_samples(this)
 {
     registerSessionMetaTypes();
     m_clock.start();
@@ -66,6 +66,7 @@ DeviceSession::DeviceSession(QObject *parent)
     connect(&m_detector, &ProtocolDetector::foundV2, this, &DeviceSession::onFoundV2);
     connect(&m_detector, &ProtocolDetector::failed, this, &DeviceSession::failDetection);
 
+    connect(&m_deviceText, &DeviceTextGate::line, this, &DeviceSession::deviceLog);
     connect(&m_queue, &CommandQueue::finished, this, &DeviceSession::onCommandFinished);
     connect(&m_queue, &CommandQueue::retried, this, [this] { m_statistics.countRetry(); });
     connect(&m_queue, &CommandQueue::acknowledged, this, [this](const Command &command) {
@@ -160,6 +161,7 @@ void DeviceSession::openLink()
 
 void DeviceSession::closeLink()
 {
+    m_deviceText.flush();
     m_detector.stop();
     m_queue.setWriter({});
     m_feedback.stop();
@@ -196,7 +198,7 @@ DriverLinks DeviceSession::driverLinks()
             m_ping,
             m_clock,
             [this](const QByteArray &bytes) { write(bytes); },
-            [this](const QString &line) { Q_EMIT deviceLog(line); }};
+            [this](const QString &line) { m_deviceText.feed(line); }};
 }
 
 void DeviceSession::write(const QByteArray &bytes)

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "session/commandqueue.h"
+#include "session/devicetext.h"
 #include "session/linkstatistics.h"
 #include "session/protocoldetector.h"
 #include "session/protocoldriver.h"
@@ -142,6 +143,7 @@ private:
     std::unique_ptr<ProtocolDriver> m_retired; //!< the last one, closed (it may be on the stack)
     FeedbackStream m_feedback;
     PingProbe m_ping;
+    DeviceTextGate m_deviceText; //!< the device's lines: printable, bounded in rate
     SamplePipeline m_samples;
 };
 

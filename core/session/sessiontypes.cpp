@@ -38,6 +38,32 @@ CommandResult commandResult(CommandKind command, CommandResult::Status status,
     return r;
 }
 
+DeviceTuning appliedBeforeFailure(const CommandResult &r)
+{
+    using Status = CommandResult::Status;
+    DeviceTuning applied;
+    // Only a failure on the wire can follow an acknowledged step: a refusal on the host
+    // (Invalid, Unsupported) comes before anything is sent.
+    if (r.status != Status::Rejected && r.status != Status::Timeout &&
+        r.status != Status::NotConnected)
+        return applied;
+    // A push's steps run in order: SET_PARAMS, GET_PARAMS, SET_EFFECTS, GET_EFFECTS.
+    const CommandKind at = r.command;
+    if (r.sent.params && (at == CommandKind::GetParams || at == CommandKind::SetEffects ||
+                          at == CommandKind::GetEffects))
+        applied.params = r.received.params ? r.received.params : r.sent.params;
+    if (r.sent.effects && at == CommandKind::GetEffects)
+        applied.effects = r.received.effects ? r.received.effects : r.sent.effects;
+    return applied;
+}
+
+bool effectsUnknownAfterFailure(const CommandResult &r)
+{
+    return r.sent.effects && r.command == CommandKind::SetEffects &&
+           (r.status == CommandResult::Status::Timeout ||
+            r.status == CommandResult::Status::NotConnected);
+}
+
 quint64 LinkStats::totalDecoderDrops() const
 {
     return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));

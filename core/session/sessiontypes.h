@@ -143,7 +143,9 @@ struct CommandResult
     };
     Status status = Status::Ok;
     Reason reason = Reason::None;
-    CommandKind command = CommandKind::GetParams; //!< the command (a rejection: the frame refused)
+    //! The command; a failure on the wire names the step it stopped at (a rejection: the frame
+    //! refused; a timeout: the frame unanswered; a loss: the frame in flight)
+    CommandKind command = CommandKind::GetParams;
     v2::AckStatus ackStatus = v2::AckStatus::Ok;
     int field = -1; //!< ParamBlock (effect block, VIBRATE) index the device named, or -1
     //! A read-back followed each change the command made (SET_PARAMS and ZERO: GET_PARAMS;
@@ -184,6 +186,15 @@ struct SessionNotice
     //! what differs
     QStringList problems;
 };
+
+//! What a push that failed part-way had already changed: the parts the device acknowledged
+//! before the step that failed (`result.command`) — each as read back where the read-back came,
+//! else as sent. Empty for a push that changed nothing (its first step failed, or it was refused
+//! before sending), for any other command, and for a success.
+DeviceTuning appliedBeforeFailure(const CommandResult &result);
+//! A push whose SET_EFFECTS went out and was never answered (no ACK, or the link went): whether
+//! the device applied the effects is unknown.
+bool effectsUnknownAfterFailure(const CommandResult &result);
 
 //! A result for `command` with `status` and `reason`; the other fields at their defaults.
 CommandResult commandResult(CommandKind command, CommandResult::Status status,

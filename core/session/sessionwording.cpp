@@ -154,7 +154,39 @@ QString SessionWording::invalid(const CommandResult &r)
     return tr("The parameters are not valid: %1; nothing was sent.").arg(joined(r.problems));
 }
 
+QString SessionWording::appliedBeforeFailure(const CommandResult &r)
+{
+    const DeviceTuning applied = hatpic::appliedBeforeFailure(r);
+    if (!applied.params && !applied.effects)
+        return {};
+    const bool lost = r.status == CommandResult::Status::NotConnected;
+    QStringList parts;
+    if (applied.params) {
+        parts << (r.received.params ? tr("the parameters (SET_PARAMS, read back)")
+                                    : tr("the parameters (SET_PARAMS, not read back)"));
+    }
+    if (applied.effects) {
+        parts << (r.received.effects ? tr("the effects (SET_EFFECTS, read back)")
+                                     : tr("the effects (SET_EFFECTS, not read back)"));
+    }
+    QString text = lost
+                       ? tr("It had accepted %1: those were in force when the link went.")
+                             .arg(parts.join(tr(" and ")))
+                       : tr("It had accepted %1: those are in force.").arg(parts.join(tr(" and ")));
+    // A SET_EFFECTS sent but never answered may or may not have taken effect.
+    if (effectsUnknownAfterFailure(r))
+        text += u' ' + tr("Whether the effects changed is unknown until they are read back.");
+    return text;
+}
+
 QString SessionWording::commandFailure(const CommandResult &r)
+{
+    const QString failure = commandFailureAlone(r);
+    const QString applied = appliedBeforeFailure(r);
+    return applied.isEmpty() ? failure : failure + u' ' + applied;
+}
+
+QString SessionWording::commandFailureAlone(const CommandResult &r)
 {
     using Status = CommandResult::Status;
     using Reason = CommandResult::Reason;
@@ -181,6 +213,17 @@ QString SessionWording::commandFailure(const CommandResult &r)
 }
 
 QString SessionWording::commandFailureBrief(const CommandResult &r)
+{
+    QString brief = commandFailureBriefAlone(r);
+    const DeviceTuning applied = hatpic::appliedBeforeFailure(r);
+    if (applied.params && applied.effects)
+        brief += tr("; parameters and effects applied");
+    else if (applied.params)
+        brief += tr("; parameters applied");
+    return brief;
+}
+
+QString SessionWording::commandFailureBriefAlone(const CommandResult &r)
 {
     using Status = CommandResult::Status;
     const bool effects = isEffectCommand(r.command);
@@ -214,6 +257,12 @@ QString SessionWording::noEffectsReason(bool legacy)
 {
     return legacy ? tr("it runs the published firmware, legacy protocol")
                   : tr("its firmware does not announce the effects capability");
+}
+
+QString SessionWording::deviceLinesHeldBack(quint64 lines, int perInterval, int intervalMs)
+{
+    return tr("(%1 more lines from the device not shown: at most %2 every %3 s are)")
+        .arg(QString::number(lines), number(perInterval), QString::number(intervalMs / 1000.0));
 }
 
 } // namespace hatpic

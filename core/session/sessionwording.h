@@ -24,7 +24,8 @@ public:
     static QString notice(const SessionNotice &notice);
 
     //! Why a command failed, one sentence, e.g. "The device rejected K_max (field 3):
-    //! OUT_OF_RANGE; its parameters are unchanged."; empty for Ok.
+    //! OUT_OF_RANGE; its parameters are unchanged."; empty for Ok. A push that failed part-way
+    //! adds what it had changed (appliedBeforeFailure()).
     static QString commandFailure(const CommandResult &result);
     //! The same outcome as a short clause for the editor's sync line, e.g. "device rejected:
     //! OUT_OF_RANGE (K_max)", "timeout: the device did not answer"; empty for Ok.
@@ -32,8 +33,19 @@ public:
     //! Why a device cannot render effects, as a clause: "it runs the published firmware, legacy
     //! protocol" or "its firmware does not announce the effects capability".
     static QString noEffectsReason(bool legacy);
+    //! The summary of a device's lines not shown: "(72812 more lines from the device not shown:
+    //! at most 20 a second are)".
+    static QString deviceLinesHeldBack(quint64 lines, int perInterval, int intervalMs);
+
+    //! What a push that failed part-way left in force (appliedBeforeFailure()), as sentences to
+    //! follow commandFailure()'s: "It had accepted the parameters (SET_PARAMS, read back):
+    //! those are in force." — and, when the step that failed may or may not have taken effect,
+    //! that its part is unknown. Empty when the push changed nothing.
+    static QString appliedBeforeFailure(const CommandResult &result);
 
 private:
+    static QString commandFailureAlone(const CommandResult &result);
+    static QString commandFailureBriefAlone(const CommandResult &result);
     static QString rejection(const CommandResult &result);
     static QString unsupported(const CommandResult &result);
     static QString invalid(const CommandResult &result);

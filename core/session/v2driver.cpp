@@ -97,7 +97,7 @@ void V2Driver::handleFrame(const v2::Frame &frame)
             else if constexpr (std::is_same_v<T, v2::Pong>)
                 m_links.ping.onPong(message.token);
             else if constexpr (std::is_same_v<T, v2::Log>)
-                m_links.deviceText(printableDeviceText(v2::toQString(message.text)));
+                m_links.deviceText(v2::toQString(message.text)); // the session escapes
             else if constexpr (std::is_same_v<T, v2::HelloReply>)
                 qCInfo(lcV2) << "late HELLO_REPLY ignored";
         },

@@ -114,7 +114,7 @@ bool RecordingWriter::Private::writeOut()
                     events.append(e);
             }
             fail(u"Writing " % csvPath % u" failed: " % reason %
-                 u". The recording stopped; the rows written before are kept.");
+                 u"; the rows written before are kept.");
             return false;
         }
         done += n;

@@ -5,10 +5,12 @@
 #include "model/params.h"
 
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QList>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
+#include <QTest>
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +44,34 @@ inline Run runCtl(const QStringList &arguments, int timeoutMs = kProcessTimeoutM
         process.kill();
         process.waitForFinished(5000);
         run.err = "timed out; stderr so far: " + process.readAllStandardError();
+        return run;
+    }
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    return run;
+}
+
+//! runCtl() while this thread's event loop runs: devices the test scripts on pseudo-terminals
+//! (ScriptedDevice) keep answering.
+inline Run runCtlServing(const QStringList &arguments, int timeoutMs = kProcessTimeoutMs)
+{
+    QProcess process;
+    process.setProgram(QStringLiteral(HATPICCTL_PATH));
+    process.setArguments(arguments);
+    process.start();
+    Run run;
+    if (!process.waitForStarted(10000))
+        return run;
+    process.closeWriteChannel();
+    QElapsedTimer clock;
+    clock.start();
+    while (process.state() != QProcess::NotRunning && clock.elapsed() < timeoutMs)
+        QTest::qWait(10);
+    if (process.state() != QProcess::NotRunning) {
+        process.kill();
+        process.waitForFinished(5000);
+        run.err = "timed out: " + process.readAllStandardError();
         return run;
     }
     run.out = process.readAllStandardOutput();

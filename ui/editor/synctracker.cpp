@@ -88,6 +88,9 @@ bool SyncTracker::pushFinished(const CommandResult &result)
         m_failure = SyncState::Failed;
         break;
     }
+    // A push that failed part-way changed the device all the same: what it accepted (its
+    // read-back where it came) is the device's now.
+    m_device = m_device.updatedBy(appliedBeforeFailure(result));
     m_failureText = SessionWording::commandFailureBrief(result);
     return true;
 }

@@ -7,6 +7,7 @@
 #include <QSocketNotifier>
 
 #include <fcntl.h>
+#include <functional>
 #include <memory>
 #include <pty.h>
 #include <unistd.h>
@@ -20,6 +21,9 @@ class ScriptedDevice
 public:
     v2::HelloReply hello;
     DeviceParams params;
+    //! Asked first for every frame from the host: true when it answered (or chose silence),
+    //! false to leave the frame to the answers above.
+    std::function<bool(const v2::Frame &)> answer;
 
     ScriptedDevice()
     {
@@ -33,6 +37,8 @@ public:
             return;
         ::close(slave);
         ::fcntl(m_master, F_SETFL, ::fcntl(m_master, F_GETFL) | O_NONBLOCK);
+        // Not inherited by the programs a test starts: hangUp() must really close the device.
+        ::fcntl(m_master, F_SETFD, FD_CLOEXEC);
         m_path = QString::fromLocal8Bit(name);
         m_notifier = std::make_unique<QSocketNotifier>(m_master, QSocketNotifier::Read);
         QObject::connect(m_notifier.get(), &QSocketNotifier::activated, [this] { onReadable(); });
@@ -48,6 +54,8 @@ public:
     //! Bytes the device's receiver holds before the host sends anything (line noise).
     void preload(const QByteArray &junk) { m_decoder.feed(junk, m_frames); }
     void send(const v2::Message &message) { write(v2::encodeFrame(m_seq++, message)); }
+    //! Bytes as they are (another protocol, line noise).
+    void sendRaw(const QByteArray &bytes) { write(bytes); }
     void sendTelemetry(float theta, quint32 tUs)
     {
         v2::Telemetry t;
@@ -56,6 +64,17 @@ public:
         write(v2::encodeFrame(m_telemetrySeq++, t));
     }
     int hellosAnswered() const { return m_hellos; }
+    //! Closes the device's side: the host's port reads the end of the file (a vanished device).
+    void hangUp() // also from inside answer(): the notifier goes later
+    {
+        if (m_notifier) {
+            m_notifier->setEnabled(false);
+            m_notifier.release()->deleteLater();
+        }
+        if (m_master >= 0)
+            ::close(m_master);
+        m_master = -1;
+    }
 
 private:
     void write(const QByteArray &bytes)
@@ -70,6 +89,8 @@ private:
     }
     void onReadable()
     {
+        if (m_master < 0)
+            return;
         char buf[4096];
         const ssize_t n = ::read(m_master, buf, sizeof buf);
         if (n <= 0)
@@ -77,6 +98,8 @@ private:
         m_frames.clear();
         m_decoder.feed(QByteArrayView(buf, n), m_frames);
         for (const v2::Frame &f : std::as_const(m_frames)) {
+            if (answer && answer(f))
+                continue;
             if (std::holds_alternative<v2::Hello>(f.message)) {
                 ++m_hellos;
                 send(hello);

@@ -436,7 +436,11 @@ void TestCommandQueue::failAllFinishesEverything()
         QCOMPARE(result.status, CommandResult::Status::NotConnected);
         QCOMPARE(result.reason, CommandResult::Reason::ConnectionLost);
     }
-    QCOMPARE(h.finished[0].second.command, CommandKind::SetParams); // not its read-back
+    // The step in flight (issue 27): a push cut in its read-back had its SET_PARAMS accepted,
+    // and its result says so.
+    QCOMPARE(h.finished[0].second.command, CommandKind::GetParams);
+    QVERIFY(appliedBeforeFailure(h.finished[0].second).params.has_value());
+    QVERIFY(!appliedBeforeFailure(h.finished[1].second).params.has_value());
     QVERIFY(!h.queue.busy());
     // Nothing is resent afterwards.
     const qsizetype writes = h.link.writes.size();

@@ -57,6 +57,17 @@ void connectWithEffects(ParameterEditor &editor)
     editor.setDeviceTuning({asFloat(editor.params()), onWire(editor.effects())});
 }
 
+//! The device's OUT_OF_RANGE for SET_EFFECTS, naming wall_stiffness (field 5).
+CommandResult wallStiffnessRejected()
+{
+    CommandResult rejected;
+    rejected.status = CommandResult::Status::Rejected;
+    rejected.command = CommandKind::SetEffects;
+    rejected.ackStatus = v2::AckStatus::OutOfRange;
+    rejected.field = 5;
+    return rejected;
+}
+
 } // namespace
 
 class TestEffectsEditor : public QObject
@@ -69,6 +80,7 @@ private Q_SLOTS:
     void strengthAboveTauLimitBlocksPush();
     void pushCarriesEffectsOnlyToADeviceThatRendersThem();
     void rejectionNamesTheEffectField();
+    void refusedEffectsAfterAcceptedParametersSayWhatIsInForce();
     void warnings_data();
     void warnings();
     void anglesFollowTheDegreesSwitch();
@@ -222,17 +234,35 @@ void TestEffectsEditor::pushCarriesEffectsOnlyToADeviceThatRendersThem()
     QVERIFY(!editor.field(u"wall_stiffness"_s)->differsFromDevice());
 }
 
+// Issue 27: SET_PARAMS accepted and read back, then SET_EFFECTS refused. The sync line says the
+// parameters were applied, and the editor takes them as the device's: K_max no longer differs
+// from the device, the refused effect still does.
+void TestEffectsEditor::refusedEffectsAfterAcceptedParametersSayWhatIsInForce()
+{
+    ParameterEditor editor;
+    connectWithEffects(editor);
+    spin(editor, u"K_max"_s)->setValue(0.6);
+    spin(editor, u"wall_stiffness"_s)->setValue(4.0);
+    QVERIFY(editor.field(u"K_max"_s)->differsFromDevice());
+    editor.pushAction()->trigger();
+    CommandResult rejected = wallStiffnessRejected();
+    rejected.sent = {asFloat(editor.params()), onWire(editor.effects())};
+    rejected.received.params = asFloat(editor.params()); // the read-back of SET_PARAMS
+    editor.pushFinished(rejected);
+    QCOMPARE(editor.syncState(), SyncState::Rejected);
+    QCOMPARE(editor.syncText(),
+             u"device rejected the effects: OUT_OF_RANGE (wall_stiffness); parameters applied"_s);
+    QVERIFY(!editor.field(u"K_max"_s)->differsFromDevice());
+    QVERIFY(editor.field(u"wall_stiffness"_s)->differsFromDevice());
+}
+
 void TestEffectsEditor::rejectionNamesTheEffectField()
 {
     ParameterEditor editor;
     connectWithEffects(editor);
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
     editor.pushAction()->trigger();
-    CommandResult rejected;
-    rejected.status = CommandResult::Status::Rejected;
-    rejected.command = CommandKind::SetEffects;
-    rejected.ackStatus = v2::AckStatus::OutOfRange;
-    rejected.field = 5;
+    CommandResult rejected = wallStiffnessRejected();
     editor.pushFinished(rejected);
     QCOMPARE(editor.syncState(), SyncState::Rejected);
     QCOMPARE(editor.syncText(), u"device rejected the effects: OUT_OF_RANGE (wall_stiffness)"_s);
