@@ -48,6 +48,7 @@ QString Bridge::start(const BridgeSettings &settings)
     if (!endpoints)
         return QString::fromStdString(error);
     {
+        const std::lock_guard publishing(m_publishMutex);
         const std::lock_guard lock(m_mutex);
         m_settings = settings;
         m_feedback = WrenchFeedback(settings.feedback);
@@ -80,6 +81,7 @@ void Bridge::stop()
     m_client.removeSampleListener(this); // no sampleDecoded() runs after this
     std::unique_ptr<RosEndpoints> closing;
     {
+        const std::lock_guard publishing(m_publishMutex); // no write under way after this
         const std::lock_guard lock(m_mutex);
         if (!m_endpoints)
             return;
@@ -150,6 +152,7 @@ BridgeStats Bridge::stats() const
         s.writeErrors += m_endpoints->writeErrors();
     }
     s.wrenches = m_feedback.counters();
+    s.echoes = m_echoes;
     s.lastWrench = m_feedback.lastValue();
     s.tauExt = m_tauExt;
     s.publishedTauExt = m_publishedTauExt;
@@ -160,19 +163,24 @@ BridgeStats Bridge::stats() const
 
 void Bridge::sampleDecoded(const Sample &sample)
 {
-    const std::lock_guard lock(m_mutex);
-    if (!m_endpoints)
-        return;
-    m_passivity.add(sample.t_s, sample.tau_ext, sample.omega);
-    if (sample.arrival_ns > 0)
-        m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
-    applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now())); // counts a wrench gone stale
-    if (!m_rate.due(sample.t_s))
-        return;
-    const ReferenceMessages m =
-        referenceMessages(sample, wallSecondsOf(sample), m_settings, m_settings.axisFor(m_mode));
+    const std::lock_guard publishing(m_publishMutex); // m_endpoints stays while it is held
+    ReferenceMessages m;
+    {
+        const std::lock_guard lock(m_mutex);
+        if (!m_endpoints)
+            return;
+        m_passivity.add(sample.t_s, sample.tau_ext, sample.omega);
+        if (sample.arrival_ns > 0)
+            m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
+        applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now())); // counts a wrench gone stale
+        if (!m_rate.due(sample.t_s))
+            return;
+        m = referenceMessages(sample, wallSecondsOf(sample), m_settings,
+                              m_settings.axisFor(m_mode));
+        m_publishedTauExt = m.feedbackTorque;
+    }
+    // Without m_mutex: a wrench handler called inside publish() takes it.
     m_endpoints->publish(m);
-    m_publishedTauExt = m.feedbackTorque;
 }
 
 void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
@@ -182,6 +190,10 @@ void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
     const std::lock_guard lock(m_mutex);
     if (!m_endpoints || m_released)
         return;
+    if (wrench.echo) {
+        ++m_echoes; // the bridge's own feedback, come back: never the robot's wrench
+        return;
+    }
     m_timing.arrived(arrived, wall, wrench.stamp);
     const Component c = m_settings.feedback.component;
     const double tau = m_feedback.receive(wrench.values[(c.angular ? 3 : 0) + c.index], arrived);

@@ -30,8 +30,10 @@ struct BridgeStats
     std::array<std::uint64_t, kOutTopicCount> published{}; //!< messages out, per OutTopic (total)
     std::uint64_t writeErrors = 0;                         //!< writes the middleware refused
     WrenchFeedback::Counters wrenches;                     //!< wrenches in, rejected, stale
-    double lastWrench = 0;                                 //!< last component received (NaN: none)
-    double tauExt = 0;                                     //!< τ_ext asked of the device [N·m]
+    //! Wrenches ignored as the bridge's own feedback come back (RosEndpoints::Wrench::echo).
+    std::uint64_t echoes = 0;
+    double lastWrench = 0;      //!< last component received (NaN: none)
+    double tauExt = 0;          //!< τ_ext asked of the device [N·m]
     double publishedTauExt = 0; //!< torque.z of the last /hatpic/feedback message [N·m]
     WrenchTiming::Stats timing; //!< the wrenches' age, delays and (estimated) losses
     //! The energy τ_ext has put into the knob since start(), and the contact warning.
@@ -83,9 +85,14 @@ private:
     DeviceClient &m_client;
     QTimer m_checkTimer;
 
+    // Publishing holds m_publishMutex, never m_mutex: a middleware may hand a message to a
+    // subscription of the same process inside publish() (Cyclone DDS does, on the publishing
+    // thread), and a wrench handler takes m_mutex. The order is m_publishMutex, then m_mutex;
+    // m_endpoints changes only with both held, so stop() knows no write is under way once it
+    // has taken the endpoints.
+    std::mutex m_publishMutex;
     // Shared by the owner's, the session's and the middleware's threads: everything below is
-    // read and written with m_mutex held. Publishing holds it too, so stop() knows no write is
-    // under way once it has taken the endpoints.
+    // read and written with m_mutex held.
     mutable std::mutex m_mutex;
     BridgeSettings m_settings;
     ReferenceMode m_mode = ReferenceMode::Translation;
@@ -97,6 +104,7 @@ private:
     double m_tauExt = 0;
     double m_publishedTauExt = 0;
     bool m_released = false; //!< releaseFeedback(): wrenches ignored, τ_ext held at 0
+    std::uint64_t m_echoes = 0;
     std::array<std::uint64_t, kOutTopicCount> m_publishedBefore{}; //!< by endpoints now closed
     std::uint64_t m_writeErrorsBefore = 0;
 };

@@ -164,8 +164,13 @@ std::string rangeProblem(const SettingRange &range, double value, bool whole);
 std::string topicNameProblem(const std::string &topic);
 
 //! Every broken rule, one sentence each ("publish rate: must be above 0 and at most 1000 Hz,
-//! got 0"). Empty means valid.
+//! got 0"), including: no two of the topics share a name (an input that is an output is a topic
+//! loop; any two others differ in type). Empty means valid. The one check of the CLI, the
+//! config file, a profile and the tuner's Bridge panel.
 std::vector<std::string> validate(const BridgeSettings &settings);
+//! Whether the bridge subscribes to that topic (the wrench, stamped or not) rather than
+//! publishing it.
+bool isInputTopic(std::string Topics::*topic);
 //! A topic name rmw would accept: '/'-separated tokens of [A-Za-z0-9_], not starting with a
 //! digit, no "//", no trailing '/'.
 bool isValidTopicName(const std::string &name);

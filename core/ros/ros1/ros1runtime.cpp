@@ -349,13 +349,20 @@ void Runtime::createSubscriber(const std::shared_ptr<SubscriptionSlot> &slot)
     try {
         subscriber = visitType(slot->type, [&](auto tag) {
             using M = typename decltype(tag)::Type;
-            const boost::function<void(const boost::shared_ptr<const M> &)> callback =
-                [target](const boost::shared_ptr<const M> &m) {
+            // The node never hears its own publications: roscpp names the publisher of each
+            // message by its caller id (the connection header's, or the node's own for a
+            // message published in this process), and this node's are dropped.
+            const std::string self = nodeName();
+            const boost::function<void(const ::ros::MessageEvent<M const> &)> callback =
+                [target, self](const ::ros::MessageEvent<M const> &event) {
+                    if (event.getPublisherName() == self)
+                        return;
                     if (const auto s = target.lock())
-                        s->deliver(Message(fromRos(*m)));
+                        s->deliver(Message(fromRos(*event.getConstMessage())));
                 };
             ::ros::SubscribeOptions options;
-            options.template init<M>(slot->topic, std::uint32_t(slot->queueSize), callback);
+            options.template initByFullCallbackType<const ::ros::MessageEvent<M const> &>(
+                slot->topic, std::uint32_t(slot->queueSize), callback);
             options.transport_hints = ::ros::TransportHints().tcpNoDelay();
             options.callback_queue = &m_queue;
             return m_handle->subscribe(options);

@@ -14,6 +14,7 @@
 
 using namespace hatpic;
 using namespace hatpic::bridge;
+using namespace Qt::StringLiterals;
 
 class TestBridgeMapping : public QObject
 {
@@ -189,6 +190,40 @@ private Q_SLOTS:
     }
 
     // The ROS version and the domain travel together as the network's, apart from the feel.
+    // Each topic its own name (one rule, in validate(): the CLI, the config file, a profile
+    // and the Bridge panel): an input that is an output is a loop; two others clash in type.
+    void topicsHaveNamesOfTheirOwn()
+    {
+        BridgeSettings s;
+        s.topics.wrench = "/hatpic/feedback";
+        auto errors = validate(s);
+        QCOMPARE(errors.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(errors.front()),
+                 u"wrench topic: '/hatpic/feedback' is also the feedback topic; an input that is "
+                 u"one of the bridge's own outputs would feed its messages back to it (a topic "
+                 u"loop)"_s);
+        s = BridgeSettings{};
+        s.topics.feedback = "/wrench_estimation";
+        QCOMPARE(validate(s).size(), std::size_t(1));
+        s = BridgeSettings{};
+        s.topics.wrenchUnstamped = "/hatpic/twist";
+        QCOMPARE(validate(s).size(), std::size_t(1));
+        s = BridgeSettings{};
+        s.topics.pose = "/hatpic/twist";
+        errors = validate(s);
+        QCOMPARE(errors.size(), std::size_t(1));
+        QVERIFY2(errors.front().find("two of the bridge's topics of different types") !=
+                     std::string::npos,
+                 errors.front().c_str());
+        s = BridgeSettings{};
+        s.topics.wrenchUnstamped = "/wrench_estimation";
+        QCOMPARE(validate(s).size(), std::size_t(1));
+        s = BridgeSettings{};
+        s.topics.twist.clear();
+        s.topics.pose.clear(); // empty names are no topics
+        QVERIFY(validate(s).empty());
+    }
+
     void networkSettings()
     {
         BridgeSettings feel;
