@@ -47,10 +47,6 @@ BridgeProgram::BridgeProgram(const AppOptions &options, QObject *parent)
     connect(&m_retryTimer, &QTimer::timeout, this,
             [this] { m_client.connectDevice(m_options.connect); });
     connect(&m_client, &DeviceClient::stateChanged, this, &BridgeProgram::onStateChanged);
-    connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
-        if (!batch.isEmpty() && m_client.state() == SessionState::Connected)
-            m_lastDeviceTauExt = batch.last().tau_ext;
-    });
     connect(&m_client, &DeviceClient::deviceLog, this,
             [](const QString &line) { printLine(stderr, u"hatpic-bridge: device: " + line); });
 }
@@ -68,8 +64,10 @@ QString BridgeProgram::start()
 
 void BridgeProgram::onStateChanged(SessionState state, const StateDetail &event)
 {
-    if (state != SessionState::Connected)
-        m_lastDeviceTauExt.reset(); // what the device renders now is not known
+    // What the device renders is known only while connected. (From the bridge's own figure,
+    // the newest sample's: the 20 ms batches on this thread lag behind it, and the last line
+    // at exit showed a τ_ext the device had already left.)
+    m_deviceKnown = state == SessionState::Connected;
     if (m_closing)
         return;
     const QString detail = SessionWording::stateDetail(event);
@@ -111,7 +109,8 @@ void BridgeProgram::printStats()
                   QString::number(s.wrenches.stale) + u", limited " +
                   QString::number(s.wrenches.limited) + u" | tau_ext " + num(s.tauExt) +
                   u" N·m, device " +
-                  (m_lastDeviceTauExt ? num(*m_lastDeviceTauExt) + u" N·m" : QStringLiteral("–")) +
+                  (m_deviceKnown && std::isfinite(s.deviceTauExt) ? num(s.deviceTauExt) + u" N·m"
+                                                                  : QStringLiteral("–")) +
                   u" | wrench age " + ms(s.timing.age) + u" ms, delay " +
                   spread(s.timing.stampDelay) + u", echo " + spread(s.timing.echoDelay) +
                   u" (median/p95), lost ~" + QString::number(s.timing.lost) + u" | energy " +

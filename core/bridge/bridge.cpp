@@ -58,6 +58,8 @@ QString Bridge::start(const BridgeSettings &settings)
         m_rate = RateLimiter(settings.publishRateHz);
         m_released = false;
         m_tauExt = 0;
+        m_deviceTauExt = std::numeric_limits<double>::quiet_NaN();
+        m_echoes = 0;
         m_endpoints = std::move(endpoints);
     }
     m_client.setFeedback(0);
@@ -156,6 +158,7 @@ BridgeStats Bridge::stats() const
     s.lastWrench = m_feedback.lastValue();
     s.tauExt = m_tauExt;
     s.publishedTauExt = m_publishedTauExt;
+    s.deviceTauExt = m_deviceTauExt;
     s.timing = m_timing.stats(now());
     s.passivity = m_passivity.state();
     return s;
@@ -170,6 +173,7 @@ void Bridge::sampleDecoded(const Sample &sample)
         if (!m_endpoints)
             return;
         m_passivity.add(sample.t_s, sample.tau_ext, sample.omega);
+        m_deviceTauExt = sample.tau_ext;
         if (sample.arrival_ns > 0)
             m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
         applyTorque(m_released ? 0.0 : m_feedback.torqueAt(now())); // counts a wrench gone stale

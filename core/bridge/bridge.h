@@ -20,6 +20,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <limits>
 #include <memory>
 #include <mutex>
 
@@ -35,6 +36,9 @@ struct BridgeStats
     double lastWrench = 0;      //!< last component received (NaN: none)
     double tauExt = 0;          //!< τ_ext asked of the device [N·m]
     double publishedTauExt = 0; //!< torque.z of the last /hatpic/feedback message [N·m]
+    //! τ_ext of the newest sample the bridge saw, the device's own figure (NaN before any): up
+    //! to date to the sample, unlike the batches the owner's thread gets every 20 ms [N·m].
+    double deviceTauExt = std::numeric_limits<double>::quiet_NaN();
     WrenchTiming::Stats timing; //!< the wrenches' age, delays and (estimated) losses
     //! The energy τ_ext has put into the knob since start(), and the contact warning.
     analysis::PassivityObserver::State passivity;
@@ -103,6 +107,7 @@ private:
     RateLimiter m_rate{100};
     double m_tauExt = 0;
     double m_publishedTauExt = 0;
+    double m_deviceTauExt = std::numeric_limits<double>::quiet_NaN();
     bool m_released = false; //!< releaseFeedback(): wrenches ignored, τ_ext held at 0
     std::uint64_t m_echoes = 0;
     std::array<std::uint64_t, kOutTopicCount> m_publishedBefore{}; //!< by endpoints now closed

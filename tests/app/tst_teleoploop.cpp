@@ -63,6 +63,7 @@ private Q_SLOTS:
 
     void badOptionsNameOptionRuleAndValue_data();
     void badOptionsNameOptionRuleAndValue();
+    void domainVariableAsTheBridgeReadsIt();
     void statusLinesAndSignals_data();
     void statusLinesAndSignals();
 
@@ -186,6 +187,28 @@ void TestTeleopLoop::badOptionsNameOptionRuleAndValue()
                  err.constData());
     }
     QVERIFY(robot.readAllStandardOutput().isEmpty());
+}
+
+// ROS_DOMAIN_ID read as hatpic-bridge reads it: the same sentence and exit code for 300, and
+// --domain wins over a bad one.
+void TestTeleopLoop::domainVariableAsTheBridgeReadsIt()
+{
+    const auto run = [](const QStringList &arguments, const QString &domain) {
+        QProcess robot;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, domain);
+        robot.setProcessEnvironment(env);
+        robot.start(QStringLiteral(HATPIC_ROBOT_SIM_PATH), arguments);
+        robot.waitForFinished(10000);
+        return std::pair{robot.exitCode(), robot.readAllStandardError()};
+    };
+    auto [code, err] = run({}, u"300"_s);
+    QCOMPARE(code, 4);
+    QCOMPARE(err, QByteArray("hatpic-robot-sim: ROS_DOMAIN_ID must be a whole number from 0 to "
+                             "232, got '300'.\n"));
+    std::tie(code, err) = run({u"--domain"_s, u"5"_s, u"--mass"_s, u"0"_s}, u"300"_s);
+    QCOMPARE(code, 4);
+    QVERIFY2(err.contains("--mass: must be > 0, got 0."), err.constData());
 }
 
 void TestTeleopLoop::statusLinesAndSignals_data()

@@ -148,7 +148,7 @@ BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent
         return;
     }
 #ifdef HATPIC_HAVE_BRIDGE
-    if (const auto id = ros::domainFromEnvironment(nullptr); id && *id <= bridge::kMaxDomainId)
+    if (const auto id = ros::domainFromEnvironment(bridge::kMaxDomainId, nullptr))
         m_settings.domainId = *id; // a bad ROS_DOMAIN_ID: 0, and the bridge says why at start
     m_bridge = new bridge::Bridge(m_client, this);
 #endif
