@@ -87,6 +87,15 @@ void BridgeProgram::onConnected()
     if (std::isfinite(limit) && limit > 0 && limit <= 10)
         host.tau_limit = limit;
     m_client.setHostParams(host);
+    // The device's tau_limit is known now (its HELLO): a limit above it is refused here, said
+    // once, and the feedback stays 0 while the references go on (ros.md § Wrench → τ_ext).
+    if (const std::string problem = limitProblem(m_bridge.settings().feedback, limit);
+        !problem.empty()) {
+        printLine(stderr, u"hatpic-bridge: " + QString::fromStdString(problem) +
+                              u"; the device renders no more. The feedback stays 0: restart "
+                              u"with a --limit within it.");
+        m_bridge.releaseFeedback();
+    }
     if (m_options.profile && m_client.deviceInfo().canSetParams())
         m_client.pushTuning({m_options.profile->device, std::nullopt});
 }

@@ -40,6 +40,9 @@ QString Bridge::start(const BridgeSettings &settings)
     stop();
     if (const auto errors = validate(settings); !errors.empty())
         return QString::fromStdString(errors.front()) + u'.';
+    if (const std::string problem = limitProblem(settings.feedback, deviceTauLimit());
+        !problem.empty())
+        return QString::fromStdString(problem) + u'.';
     // Opened without the lock: a wrench that arrives meanwhile waits for it in onWrench(), and
     // endpoints that fail are deleted here, which waits for that handler.
     std::string error;
@@ -102,14 +105,25 @@ bool Bridge::isRunning() const
     return m_endpoints != nullptr;
 }
 
-void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
+double Bridge::deviceTauLimit() const
 {
+    if (m_client.state() != SessionState::Connected)
+        return std::numeric_limits<double>::quiet_NaN(); // not known
+    const double limit = m_client.deviceInfo().tauLimit;
+    return limit > 0 ? limit : std::numeric_limits<double>::quiet_NaN();
+}
+
+QString Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
+{
+    if (const std::string problem = limitProblem(feedback, deviceTauLimit()); !problem.empty())
+        return QString::fromStdString(problem) + u'.';
     const std::lock_guard lock(m_mutex);
     m_settings.feedback = feedback;
     m_feedback.setSettings(feedback);
     m_timing.setPauseAfter(feedback.staleAfter);
     if (m_endpoints && !m_released)
         applyTorque(m_feedback.torqueAt(now()));
+    return {};
 }
 
 bool Bridge::setPublishRate(double rateHz)

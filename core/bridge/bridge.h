@@ -55,7 +55,8 @@ public:
     explicit Bridge(DeviceClient &client, QObject *parent = nullptr);
     ~Bridge() override; //!< stop()
 
-    //! Opens the ROS endpoints and starts publishing. Empty on success, else one sentence.
+    //! Opens the ROS endpoints and starts publishing. Empty on success, else one sentence —
+    //! also for a limit above the connected device's tau_limit (limitProblem()).
     QString start(const BridgeSettings &settings);
     //! From now on every wrench is ignored and the device is asked for τ_ext = 0; publishing
     //! goes on, so the robot sees the 0 on the feedback topic. stop() or start() end it.
@@ -64,8 +65,9 @@ public:
     void stop();
     bool isRunning() const;
 
-    //! Gain, limit, component and staleness take effect at once, while running.
-    void setFeedbackSettings(const FeedbackSettings &feedback);
+    //! Gain, limit, component and staleness take effect at once, while running. A limit above
+    //! the connected device's tau_limit is refused (the sentence; nothing changes).
+    QString setFeedbackSettings(const FeedbackSettings &feedback);
     //! Messages per topic per second from the next sample on, while running. A rate
     //! validate() refuses is ignored (false).
     bool setPublishRate(double rateHz);
@@ -81,6 +83,8 @@ private:
     void sampleDecoded(const Sample &sample) override; //!< the session thread
     void onWrench(const RosEndpoints::Wrench &wrench); //!< a middleware thread
     void checkStale();                                 //!< any thread
+    //! The connected device's tau_limit; NaN while not known (not connected) [N·m].
+    double deviceTauLimit() const;
     //! With m_mutex held: τ_ext becomes `tau`; the device is told when it changed.
     void applyTorque(double tau);
     //! The monotonic clock wrenches are dated on [s].

@@ -1,5 +1,8 @@
 #include "bridgesettings.h"
 
+#include "model/paramtable.h"
+
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
@@ -203,6 +206,18 @@ Component BridgeSettings::axisFor(ReferenceMode mode) const
     if (referenceAxis)
         return *referenceAxis;
     return mode == ReferenceMode::Rotation ? Component{true, 2} : Component{false, 0};
+}
+
+std::string limitProblem(const FeedbackSettings &feedback, double tauLimit)
+{
+    if (!std::isfinite(tauLimit) || !(tauLimit > 0) ||
+        atMostAsDeviceFloat(feedback.limit, tauLimit))
+        return {};
+    // The device's figure is a float32: its shortest float form ("0.44", not 0.4399999…).
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, float(tauLimit)).ptr;
+    return "limit: must be at most the device's tau_limit (" + std::string(text, end) +
+           " N·m), got " + formatNumber(feedback.limit);
 }
 
 bool isInputTopic(std::string Topics::*topic)

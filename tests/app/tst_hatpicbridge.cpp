@@ -378,6 +378,42 @@ private Q_SLOTS:
         QCOMPARE(err.trimmed().count('\n'), 0);
     }
 
+    // --limit above the device's tau_limit: known only once the device said HELLO, so refused
+    // then — said once on stderr — and the feedback stays 0 while the references go on.
+    void limitAboveTheDevicesIsRefusedOnConnection()
+    {
+        SimulatorHost host(SimulatedDevice::Config{});
+        QCOMPARE(host.start(), QString());
+        RosTestPeer peer(kDomain);
+        QVERIFY(peer.isValid());
+        QProcess bridge;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, QString::number(kDomain));
+        bridge.setProcessEnvironment(env);
+        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH),
+                     {u"--port"_s, host.slavePath(), u"--limit"_s, u"10"_s, u"--gain"_s, u"10"_s});
+        QVERIFY(bridge.waitForStarted());
+        QByteArray err;
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            (err += bridge.readAllStandardError(),
+             err.contains("hatpic-bridge: limit: must be at most the device's tau_limit (0.44 "
+                          "N·m), got 10; the device renders no more. The feedback stays 0")),
+            err.constData(), 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(peer.wrenchMatched(), 10000);
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { peer.publishWrench(1.0); });
+        robot.start(20);
+        QTest::qWait(1500);
+        peer.take();
+        QVERIFY(peer.feedbacks.size() > 10); // still publishing
+        for (const auto &f : peer.feedbacks)
+            QCOMPARE(f.b[2], 0.0);
+        robot.stop();
+        ::kill(pid_t(bridge.processId()), SIGINT);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
+        QCOMPARE(bridge.exitCode(), 0);
+    }
+
     void roundTripAndSigint()
     {
         SimulatedDevice::Config config;

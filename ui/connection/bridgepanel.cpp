@@ -367,8 +367,15 @@ void BridgePanel::edited(bool reopen)
         if (reopen) {
             setBridgeEnabled(true);
         } else {
-            if (feedbackChanged)
-                m_bridge->setFeedbackSettings(s.feedback);
+            if (feedbackChanged) {
+                // A limit above the connected device's tau_limit is the bridge's refusal.
+                if (const QString problem = m_bridge->setFeedbackSettings(s.feedback);
+                    !problem.isEmpty()) {
+                    m_settings.feedback = m_bridge->settings().feedback;
+                    setStatus(tr("Not applied: %1").arg(problem), true);
+                    return;
+                }
+            }
             if (rateChanged)
                 m_bridge->setPublishRate(s.publishRateHz);
             setStatus(runningText(), false);

@@ -27,6 +27,7 @@
 using namespace hatpic;
 using namespace hatpic::bridge;
 using hatpic::test::RosTestPeer;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -399,6 +400,25 @@ private Q_SLOTS:
         relayIn.reset();
         relayOut.reset();
         relayNode.reset();
+        settings.feedback = FeedbackSettings{};
+        QCOMPARE(m_bridge.start(settings), QString());
+    }
+
+    // The device renders at most its tau_limit (0.44 N·m, from its HELLO): a limit above it is
+    // refused, naming it, at start and while running.
+    void aLimitAboveTheDevicesIsRefused()
+    {
+        BridgeSettings settings = m_bridge.settings();
+        settings.feedback.limit = 10;
+        QCOMPARE(m_bridge.start(settings),
+                 u"limit: must be at most the device's tau_limit (0.44 N·m), got 10."_s);
+        settings.feedback.limit = 0.44;
+        QCOMPARE(m_bridge.start(settings), QString());
+        FeedbackSettings f = settings.feedback;
+        f.limit = 0.45;
+        QCOMPARE(m_bridge.setFeedbackSettings(f),
+                 u"limit: must be at most the device's tau_limit (0.44 N·m), got 0.45."_s);
+        QCOMPARE(m_bridge.settings().feedback.limit, 0.44);
         settings.feedback = FeedbackSettings{};
         QCOMPARE(m_bridge.start(settings), QString());
     }

@@ -224,6 +224,19 @@ private Q_SLOTS:
         QVERIFY(validate(s).empty());
     }
 
+    // One check of the limit against a tau_limit (a profile's host, the device's HELLO).
+    void limitWithinTheDevicesTauLimit()
+    {
+        FeedbackSettings f;
+        f.limit = 10;
+        QCOMPARE(QString::fromStdString(limitProblem(f, 0.44)),
+                 u"limit: must be at most the device's tau_limit (0.44 N·m), got 10"_s);
+        f.limit = 0.44;
+        QVERIFY(limitProblem(f, 0.44).empty());
+        f.limit = 10;
+        QVERIFY(limitProblem(f, std::nan("")).empty()); // not known yet
+    }
+
     void networkSettings()
     {
         BridgeSettings feel;
