@@ -12,6 +12,8 @@
 #include <ros/this_node.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 
 namespace hatpic::ros::ros1 {
@@ -249,10 +251,17 @@ void Runtime::checkMaster()
     }
     if (!::ros::ok()) {
         m_state = State::Dead;
-        ROS_ERROR("The ROS 1 node %s was shut down (by its master at %s: another node may have "
-                  "taken its name); restart the program to use ROS 1 again.",
-                  nodeName().c_str(), uri.c_str());
-        return;
+        // roscpp turned its logging off inside ros::shutdown(): ROS_ERROR would say nothing.
+        // So stderr directly, and the process ends, non-zero: a node its master shut down
+        // cannot start again (roscpp), and running on with frozen counters helps no one. The
+        // master has already dropped the node; nothing is left to unregister.
+        std::fprintf(stderr,
+                     "%s: The ROS 1 node %s was shut down by its master at %s (another node took "
+                     "its name); exiting.\n",
+                     program_invocation_short_name, nodeName().c_str(), uri.c_str());
+        std::fflush(stdout);
+        std::fflush(stderr);
+        std::_Exit(kExitShutDownByMaster);
     }
     const MasterLookup lookup =
         masterReachable(kProbeTimeout) ? lookupSelf() : MasterLookup::Unreachable;
