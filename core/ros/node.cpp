@@ -9,6 +9,7 @@
 #include "ros/ros1/ros1node.h"
 #endif
 
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <limits>
@@ -37,6 +38,20 @@ std::optional<int> domainFromEnvironment(int maxId, std::string *error)
         return std::nullopt;
     }
     return int(id);
+}
+
+namespace {
+std::atomic<bool> g_exitWhenShutDown{false};
+} // namespace
+
+void setExitWhenShutDownByMaster(bool exit)
+{
+    g_exitWhenShutDown = exit;
+}
+
+bool exitsWhenShutDownByMaster()
+{
+    return g_exitWhenShutDown;
 }
 
 bool Node::isAvailable(RosVersion version)

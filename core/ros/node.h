@@ -23,6 +23,13 @@ const char *rosVersionName(RosVersion version); //!< "ROS 1", "ROS 2"
 //! '300'.") when it is not a whole number from 0 to `maxId`.
 std::optional<int> domainFromEnvironment(int maxId, std::string *error);
 
+//! ROS 1: when its master shuts the process's node down (another node took its name), the
+//! process says so on stderr and exits 1 — for programs whose node is their purpose
+//! (hatpic-bridge, hatpic-robot-sim). Without it (the tuner) the sentence goes to stderr and
+//! the node stays dead until the program restarts.
+void setExitWhenShutDownByMaster(bool exit);
+bool exitsWhenShutDownByMaster();
+
 //! A topic's quality of service. ROS 2 maps it onto DDS QoS as rmw_cyclonedds does; ROS 1 has
 //! none (TCPROS is reliable and volatile) and takes `depth` as the queue size.
 struct Qos

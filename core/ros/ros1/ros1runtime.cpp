@@ -252,16 +252,20 @@ void Runtime::checkMaster()
     if (!::ros::ok()) {
         m_state = State::Dead;
         // roscpp turned its logging off inside ros::shutdown(): ROS_ERROR would say nothing.
-        // So stderr directly, and the process ends, non-zero: a node its master shut down
-        // cannot start again (roscpp), and running on with frozen counters helps no one. The
-        // master has already dropped the node; nothing is left to unregister.
+        // So stderr directly, and a program whose node is its purpose ends, non-zero: a node
+        // its master shut down cannot start again (roscpp), and running on with frozen
+        // counters helps no one. The master has already dropped the node.
+        const bool exit = exitsWhenShutDownByMaster();
         std::fprintf(stderr,
                      "%s: The ROS 1 node %s was shut down by its master at %s (another node took "
-                     "its name); exiting.\n",
-                     program_invocation_short_name, nodeName().c_str(), uri.c_str());
+                     "its name); %s.\n",
+                     program_invocation_short_name, nodeName().c_str(), uri.c_str(),
+                     exit ? "exiting" : "restart the program to use ROS 1 again");
         std::fflush(stdout);
         std::fflush(stderr);
-        std::_Exit(kExitShutDownByMaster);
+        if (exit)
+            std::_Exit(kExitShutDownByMaster);
+        return;
     }
     const MasterLookup lookup =
         masterReachable(kProbeTimeout) ? lookupSelf() : MasterLookup::Unreachable;
