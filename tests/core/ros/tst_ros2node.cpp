@@ -391,7 +391,8 @@ private Q_SLOTS:
                                     "check CYCLONEDDS_URI and ROS_STATIC_PEERS."));
         qputenv("ROS_DOMAIN_ID", "seven");
         QVERIFY(!openNode(-1, &error));
-        QCOMPARE(error, std::string("ROS_DOMAIN_ID must be a whole number, got 'seven'."));
+        QCOMPARE(error, std::string("ROS_DOMAIN_ID must be a whole number from 0 to 2147483647, "
+                                    "got 'seven'."));
         qputenv("ROS_DOMAIN_ID", "76");
         auto fromEnvironment = openNode(-1, &error);
         qunsetenv("ROS_DOMAIN_ID");
