@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <variant>
 #include <vector>
 
@@ -267,13 +268,12 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
 
     AppOptions options;
     options.connect.autoReconnect = true;
-    std::string why;
-    const std::optional<int> domain = ros::domainFromEnvironment(&why);
-    if (!domain) {
-        *error = QString::fromStdString(why);
-        return std::nullopt;
-    }
-    options.settings.domainId = *domain;
+    // ROS_DOMAIN_ID, unless --domain (or the config's "domain") says otherwise: a bad variable
+    // is refused only when it is the one that counts.
+    std::string domainProblem;
+    constexpr int kDomainUnread = std::numeric_limits<int>::min();
+    options.settings.domainId =
+        ros::domainFromEnvironment(kMaxDomainId, &domainProblem).value_or(kDomainUnread);
     // The config file, then the command line. Run twice when a profile is named (by either):
     // its bridge settings go under both.
     const auto applyOptions = [&]() -> bool {
@@ -309,6 +309,10 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
         options.settings = withNetworkOf(read.profile->bridge, options.settings);
         if (!applyOptions())
             return std::nullopt;
+    }
+    if (options.settings.domainId == kDomainUnread) {
+        *error = QString::fromStdString(domainProblem);
+        return std::nullopt;
     }
     options.connect.port = parser.value(portOption);
     if (options.connect.port.isEmpty()) {

@@ -48,10 +48,6 @@ BridgeProgram::BridgeProgram(const AppOptions &options, QObject *parent)
     connect(&m_retryTimer, &QTimer::timeout, this,
             [this] { m_client.connectDevice(m_options.connect); });
     connect(&m_client, &DeviceClient::stateChanged, this, &BridgeProgram::onStateChanged);
-    connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
-        if (!batch.isEmpty() && m_client.state() == SessionState::Connected)
-            m_lastDeviceTauExt = batch.last().tau_ext;
-    });
     connect(&m_client, &DeviceClient::deviceLog, this,
             [](const QString &line) { printLine(stderr, u"hatpic-bridge: device: " + line); });
 }
@@ -73,8 +69,10 @@ QString BridgeProgram::start()
 
 void BridgeProgram::onStateChanged(SessionState state, const StateDetail &event)
 {
-    if (state != SessionState::Connected)
-        m_lastDeviceTauExt.reset(); // what the device renders now is not known
+    // What the device renders is known only while connected. (From the bridge's own figure,
+    // the newest sample's: the 20 ms batches on this thread lag behind it, and the last line
+    // at exit showed a τ_ext the device had already left.)
+    m_deviceKnown = state == SessionState::Connected;
     if (m_closing)
         return;
     const QString detail = SessionWording::stateDetail(event);
@@ -99,6 +97,15 @@ void BridgeProgram::onConnected()
     if (std::isfinite(limit) && limit > 0 && limit <= 10)
         host.tau_limit = limit;
     m_client.setHostParams(host);
+    // The device's tau_limit is known now (its HELLO): a limit above it is refused here, said
+    // once, and the feedback stays 0 while the references go on (ros.md § Wrench → τ_ext).
+    if (const std::string problem = limitProblem(m_bridge.settings().feedback, limit);
+        !problem.empty()) {
+        printLine(stderr, u"hatpic-bridge: " + QString::fromStdString(problem) +
+                              u"; the device renders no more. The feedback stays 0: restart "
+                              u"with a --limit within it.");
+        m_bridge.releaseFeedback();
+    }
     if (m_options.profile && m_client.deviceInfo().canSetParams())
         m_client.pushTuning({m_options.profile->device, std::nullopt});
 }
@@ -121,7 +128,8 @@ void BridgeProgram::printStats()
                   QString::number(s.wrenches.stale) + u", limited " +
                   QString::number(s.wrenches.limited) + u" | tau_ext " + num(s.tauExt) +
                   u" N·m, device " +
-                  (m_lastDeviceTauExt ? num(*m_lastDeviceTauExt) + u" N·m" : QStringLiteral("–")) +
+                  (m_deviceKnown && std::isfinite(s.deviceTauExt) ? num(s.deviceTauExt) + u" N·m"
+                                                                  : QStringLiteral("–")) +
                   u" | wrench age " + ms(s.timing.age) + u" ms, delay " +
                   spread(s.timing.stampDelay) + u", echo " + spread(s.timing.echoDelay) +
                   u" (median/p95), lost ~" + QString::number(s.timing.lost) + u" | energy " +

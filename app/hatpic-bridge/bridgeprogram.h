@@ -42,7 +42,8 @@ private:
     QTimer m_statsTimer;
     QTimer m_retryTimer;
     //! τ_ext of the newest sample while connected; none once the link is gone [N·m]
-    std::optional<double> m_lastDeviceTauExt;
+    //! Connected: the bridge's figure of the device's τ_ext is the device's now (stats()).
+    bool m_deviceKnown = false;
     bool m_closing = false;
 };
 

@@ -9,6 +9,8 @@
 #include "common/quitonsignal.h"
 #include "session/sessiontypes.h"
 
+#include "ros/node.h"
+
 #include <QCoreApplication>
 
 #include <cstdio>
@@ -45,6 +47,7 @@ int main(int argc, char *argv[])
         printError(QStringLiteral("Cannot install the signal handlers."));
         return ExitFailure;
     }
+    ros::setExitWhenShutDownByMaster(true); // ros.md § ROS 1
     bridge::BridgeProgram program(*options);
     if (const QString failure = program.start(); !failure.isEmpty()) {
         printError(failure);

@@ -5,6 +5,7 @@
 
 #include "common/exitcodes.h"
 #include "common/quitonsignal.h"
+#include "ros/node.h"
 
 #include <QCoreApplication>
 #include <QTimer>
@@ -46,6 +47,7 @@ int main(int argc, char *argv[])
         printError(QStringLiteral("Cannot install the signal handlers."));
         return ExitFailure;
     }
+    ros::setExitWhenShutDownByMaster(true); // ros.md § ROS 1
     std::string why;
     auto robot = robot::RobotSimulator::start(*settings, &why);
     if (!robot) {

@@ -56,6 +56,16 @@ std::optional<RobotSimSettings> parseRobotSimOptions(const QStringList &argument
             return std::nullopt;
         }
     }
+    if (settings.node.domainId < 0) {
+        // ROS_DOMAIN_ID, read as hatpic-bridge reads it (--domain wins over it).
+        std::string why;
+        const std::optional<int> domain = ros::domainFromEnvironment(bridge::kMaxDomainId, &why);
+        if (!domain) {
+            *error = QString::fromStdString(why);
+            return std::nullopt;
+        }
+        settings.node.domainId = *domain;
+    }
     if (const auto violations = validate(settings); !violations.empty()) {
         *error = u"--" + QString::fromStdString(violations.front()) + u'.';
         return std::nullopt;

@@ -41,6 +41,9 @@ QString Bridge::start(const BridgeSettings &settings)
     stop();
     if (const auto errors = validate(settings); !errors.empty())
         return QString::fromStdString(errors.front()) + u'.';
+    if (const std::string problem = limitProblem(settings.feedback, deviceTauLimit());
+        !problem.empty())
+        return QString::fromStdString(problem) + u'.';
     // Opened without the lock: a wrench that arrives meanwhile waits for it in onWrench(), and
     // endpoints that fail are deleted here, which waits for that handler.
     std::string error;
@@ -50,6 +53,7 @@ QString Bridge::start(const BridgeSettings &settings)
     if (!endpoints)
         return QString::fromStdString(error);
     {
+        const std::lock_guard publishing(m_publishMutex);
         const std::lock_guard lock(m_mutex);
         m_settings = settings;
         m_feedback = WrenchFeedback(settings.feedback);
@@ -65,6 +69,8 @@ QString Bridge::start(const BridgeSettings &settings)
         m_lastWrench.fill(NAN);
         m_otherComponentStreak = 0;
         m_tauExt = 0;
+        m_deviceTauExt = std::numeric_limits<double>::quiet_NaN();
+        m_echoes = 0;
         m_endpoints = std::move(endpoints);
     }
     m_client.setFeedback(0);
@@ -88,6 +94,7 @@ void Bridge::stop()
     m_client.removeSampleListener(this); // no sampleDecoded() runs after this
     std::unique_ptr<RosEndpoints> closing;
     {
+        const std::lock_guard publishing(m_publishMutex); // no write under way after this
         const std::lock_guard lock(m_mutex);
         if (!m_endpoints)
             return;
@@ -106,14 +113,25 @@ bool Bridge::isRunning() const
     return m_endpoints != nullptr;
 }
 
-void Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
+double Bridge::deviceTauLimit() const
 {
+    if (m_client.state() != SessionState::Connected)
+        return std::numeric_limits<double>::quiet_NaN(); // not known
+    const double limit = m_client.deviceInfo().tauLimit;
+    return limit > 0 ? limit : std::numeric_limits<double>::quiet_NaN();
+}
+
+QString Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
+{
+    if (const std::string problem = limitProblem(feedback, deviceTauLimit()); !problem.empty())
+        return QString::fromStdString(problem) + u'.';
     const std::lock_guard lock(m_mutex);
     m_settings.feedback = feedback;
     m_feedback.setSettings(feedback);
     m_timing.setPauseAfter(feedback.staleAfter);
     if (m_endpoints)
         applyTorque(torqueAt(now()));
+    return {};
 }
 
 void Bridge::setEngaged(bool engaged)
@@ -166,11 +184,13 @@ BridgeStats Bridge::stats() const
         s.writeErrors += m_endpoints->writeErrors();
     }
     s.wrenches = m_feedback.counters();
+    s.echoes = m_echoes;
     s.lastWrench = m_feedback.lastValue();
     s.lastWrenchValues = m_lastWrench;
     s.otherComponentStreak = m_otherComponentStreak;
     s.tauExt = m_tauExt;
     s.publishedTauExt = m_publishedTauExt;
+    s.deviceTauExt = m_deviceTauExt;
     s.timing = m_timing.stats(now());
     s.passivity = m_passivity.state();
     s.engaged = m_gate.engaged(now());
@@ -180,26 +200,31 @@ BridgeStats Bridge::stats() const
 
 void Bridge::sampleDecoded(const Sample &sample)
 {
-    const std::lock_guard lock(m_mutex);
-    if (!m_endpoints)
-        return;
-    m_passivity.add(sample.t_s, sample.tau_ext, sample.omega);
-    if (sample.arrival_ns > 0)
-        m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
-    const double t = now();
-    applyTorque(torqueAt(t)); // counts a wrench gone stale
-    // Released: no motion asked of the robot, the pose held; engaged again: re-anchored.
-    const bool engaged = m_gate.engaged(t);
-    Sample gated = sample;
-    gated.p_ref = m_gate.reference(sample.p_ref, engaged);
-    if (!engaged)
-        gated.v_ref = 0;
-    if (!m_rate.due(sample.t_s))
-        return;
-    const ReferenceMessages m =
-        referenceMessages(gated, wallSecondsOf(sample), m_settings, m_settings.axisFor(m_mode));
+    const std::lock_guard publishing(m_publishMutex); // m_endpoints stays while it is held
+    ReferenceMessages m;
+    {
+        const std::lock_guard lock(m_mutex);
+        if (!m_endpoints)
+            return;
+        m_passivity.add(sample.t_s, sample.tau_ext, sample.omega);
+        m_deviceTauExt = sample.tau_ext;
+        if (sample.arrival_ns > 0)
+            m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
+        const double t = now();
+        applyTorque(torqueAt(t)); // counts a wrench gone stale
+        // Released: no motion asked of the robot, the pose held; engaged again: re-anchored.
+        const bool engaged = m_gate.engaged(t);
+        Sample gated = sample;
+        gated.p_ref = m_gate.reference(sample.p_ref, engaged);
+        if (!engaged)
+            gated.v_ref = 0;
+        if (!m_rate.due(sample.t_s))
+            return;
+        m = referenceMessages(gated, wallSecondsOf(sample), m_settings, m_settings.axisFor(m_mode));
+        m_publishedTauExt = m.feedbackTorque;
+    }
+    // Without m_mutex: a wrench handler called inside publish() takes it.
     m_endpoints->publish(m);
-    m_publishedTauExt = m.feedbackTorque;
 }
 
 void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
@@ -209,6 +234,10 @@ void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
     const std::lock_guard lock(m_mutex);
     if (!m_endpoints || m_released)
         return;
+    if (wrench.echo) {
+        ++m_echoes; // the bridge's own feedback, come back: never the robot's wrench
+        return;
+    }
     m_timing.arrived(arrived, wall, wrench.stamp);
     const Component c = m_settings.feedback.component;
     const int chosen = (c.angular ? 3 : 0) + c.index;

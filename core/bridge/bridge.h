@@ -23,6 +23,7 @@
 #include <QTimer>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
 
@@ -39,8 +40,13 @@ struct BridgeStats
     //! Wrenches in a row, up to the last, whose chosen component was 0 while another was not:
     //! a robot that sends its force on another axis (the Bridge panel warns).
     std::uint64_t otherComponentStreak = 0;
+    //! Wrenches ignored as the bridge's own feedback come back (RosEndpoints::Wrench::echo).
+    std::uint64_t echoes = 0;
     double tauExt = 0;          //!< τ_ext asked of the device [N·m]
     double publishedTauExt = 0; //!< torque.z of the last /hatpic/feedback message [N·m]
+    //! τ_ext of the newest sample the bridge saw, the device's own figure (NaN before any): up
+    //! to date to the sample, unlike the batches the owner's thread gets every 20 ms [N·m].
+    double deviceTauExt = std::numeric_limits<double>::quiet_NaN();
     WrenchTiming::Stats timing; //!< the wrenches' age, delays and (estimated) losses
     //! The energy τ_ext has put into the knob since start(), and the contact warning.
     analysis::PassivityObserver::State passivity;
@@ -59,7 +65,8 @@ public:
     explicit Bridge(DeviceClient &client, QObject *parent = nullptr);
     ~Bridge() override; //!< stop()
 
-    //! Opens the ROS endpoints and starts publishing. Empty on success, else one sentence.
+    //! Opens the ROS endpoints and starts publishing. Empty on success, else one sentence —
+    //! also for a limit above the connected device's tau_limit (limitProblem()).
     QString start(const BridgeSettings &settings);
     //! From now on every wrench is ignored and the device is asked for τ_ext = 0; publishing
     //! goes on, so the robot sees the 0 on the feedback topic. stop() or start() end it.
@@ -68,8 +75,9 @@ public:
     void stop();
     bool isRunning() const;
 
-    //! Gain, limit, component and staleness take effect at once, while running.
-    void setFeedbackSettings(const FeedbackSettings &feedback);
+    //! Gain, limit, component and staleness take effect at once, while running. A limit above
+    //! the connected device's tau_limit is refused (the sentence; nothing changes).
+    QString setFeedbackSettings(const FeedbackSettings &feedback);
     //! Messages per topic per second from the next sample on, while running. A rate
     //! validate() refuses is ignored (false).
     bool setPublishRate(double rateHz);
@@ -93,6 +101,9 @@ private:
     //! With m_mutex held: the τ_ext the wrench asks for at `t`, or 0 when released.
     double torqueAt(double t);
     void checkStale(); //!< any thread
+    void checkStale(); //!< any thread
+    //! The connected device's tau_limit; NaN while not known (not connected) [N·m].
+    double deviceTauLimit() const;
     //! With m_mutex held: τ_ext becomes `tau`; the device is told when it changed.
     void applyTorque(double tau);
     //! The monotonic clock wrenches are dated on [s].
@@ -101,9 +112,14 @@ private:
     DeviceClient &m_client;
     QTimer m_checkTimer;
 
+    // Publishing holds m_publishMutex, never m_mutex: a middleware may hand a message to a
+    // subscription of the same process inside publish() (Cyclone DDS does, on the publishing
+    // thread), and a wrench handler takes m_mutex. The order is m_publishMutex, then m_mutex;
+    // m_endpoints changes only with both held, so stop() knows no write is under way once it
+    // has taken the endpoints.
+    std::mutex m_publishMutex;
     // Shared by the owner's, the session's and the middleware's threads: everything below is
-    // read and written with m_mutex held. Publishing holds it too, so stop() knows no write is
-    // under way once it has taken the endpoints.
+    // read and written with m_mutex held.
     mutable std::mutex m_mutex;
     BridgeSettings m_settings;
     ReferenceMode m_mode = ReferenceMode::Translation;
@@ -114,10 +130,12 @@ private:
     RateLimiter m_rate{100};
     double m_tauExt = 0;
     double m_publishedTauExt = 0;
+    double m_deviceTauExt = std::numeric_limits<double>::quiet_NaN();
     bool m_released = false; //!< releaseFeedback(): wrenches ignored, τ_ext held at 0
     std::array<double, 6> m_lastWrench{NAN, NAN, NAN, NAN, NAN, NAN};
     std::uint64_t m_otherComponentStreak = 0;
     EnableGate m_gate;
+    std::uint64_t m_echoes = 0;
     std::array<std::uint64_t, kOutTopicCount> m_publishedBefore{}; //!< by endpoints now closed
     std::uint64_t m_writeErrorsBefore = 0;
 };

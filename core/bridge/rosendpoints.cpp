@@ -121,9 +121,11 @@ std::string RosEndpoints::create()
 
     // Every wrench, stamped or not, goes to the one handler.
     const auto handler = [this](const ros::Message &message) {
-        if (const auto *stamped = std::get_if<ros::WrenchStamped>(&message))
-            m_onWrench(wrenchOf(*stamped));
-        else if (const auto *wrench = std::get_if<ros::Wrench>(&message))
+        if (const auto *stamped = std::get_if<ros::WrenchStamped>(&message)) {
+            Wrench w = wrenchOf(*stamped);
+            w.echo = isEcho(stamped->header);
+            m_onWrench(w);
+        } else if (const auto *wrench = std::get_if<ros::Wrench>(&message))
             m_onWrench(wrenchOf(*wrench));
     };
     const auto enableHandler = [this](const ros::Message &message) {
@@ -167,12 +169,36 @@ void RosEndpoints::publish(const ReferenceMessages &m)
         const auto &o = m.poseOrientation;
         return ros::PoseStamped{header, {{p[0], p[1], p[2]}, {o[0], o[1], o[2], o[3]}}};
     });
+    if (m_publishers[int(OutTopic::Feedback)] && !m_settings.topics.wrench.empty())
+        rememberFeedback(m.stamp); // before it can come back
     send(OutTopic::Feedback, [&] {
         return ros::WrenchStamped{header, {{0, 0, 0}, {0, 0, m.feedbackTorque}}};
     });
     send(OutTopic::JointJog, [&] {
         return ros::JointJog{header, {m_settings.jointName}, {}, {m.jointJogVelocity}, 0};
     });
+}
+
+void RosEndpoints::rememberFeedback(const ros::Time &stamp)
+{
+    const std::lock_guard lock(m_echoMutex);
+    const double now = ros::seconds(stamp);
+    while (!m_feedbackStamps.empty() &&
+           (ros::seconds(m_feedbackStamps.front()) < now - kEchoMemoryS ||
+            m_feedbackStamps.size() > std::size_t(kEchoMemoryS * kMaxPublishRateHz))) {
+        m_feedbackStampSet.erase({m_feedbackStamps.front().sec, m_feedbackStamps.front().nanosec});
+        m_feedbackStamps.pop_front();
+    }
+    if (m_feedbackStampSet.insert({stamp.sec, stamp.nanosec}).second)
+        m_feedbackStamps.push_back(stamp);
+}
+
+bool RosEndpoints::isEcho(const ros::Header &header)
+{
+    if (header.frameId != m_settings.frameId)
+        return false;
+    const std::lock_guard lock(m_echoMutex);
+    return m_feedbackStampSet.contains({header.stamp.sec, header.stamp.nanosec});
 }
 
 std::uint64_t RosEndpoints::written(OutTopic topic) const

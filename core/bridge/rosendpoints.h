@@ -11,9 +11,12 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -35,7 +38,14 @@ public:
         //! The header's stamp: the sender's wall clock [s since the Unix epoch]; NaN for the
         //! unstamped topic, and for a stamp of 0 (a sender that does not fill it).
         double stamp = std::numeric_limits<double>::quiet_NaN();
+        //! The bridge's own feedback message come back (a relay from the feedback topic onto
+        //! the wrench topic): its header — frame_id and stamp — is one the bridge published on
+        //! the feedback topic in the last kEchoMemoryS. Such a wrench is never the robot's.
+        bool echo = false;
     };
+    //! How long the headers of the feedback published are remembered [s]: the longest a
+    //! wrench stays fresh (kMaxStaleAfter).
+    static constexpr double kEchoMemoryS = kMaxStaleAfter;
     //! Called on a middleware thread, once per wrench received (stamped or not).
     using WrenchHandler = std::function<void(const Wrench &)>;
     //! Called on a middleware thread, once per std_msgs/Bool on the enable topic.
@@ -73,9 +83,17 @@ private:
     RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench, EnableHandler onEnable);
     std::string create();
 
+    //! Notes a feedback message's stamp (publish()); whether `header` is one of them (the
+    //! middleware's threads).
+    void rememberFeedback(const ros::Time &stamp);
+    bool isEcho(const ros::Header &header);
+
     BridgeSettings m_settings;
     WrenchHandler m_onWrench;
     EnableHandler m_onEnable;
+    std::mutex m_echoMutex;                 //!< guards the two below; nothing is called with it
+    std::deque<ros::Time> m_feedbackStamps; //!< published, oldest first
+    std::set<std::pair<std::int32_t, std::uint32_t>> m_feedbackStampSet;
     std::unique_ptr<ros::Node> m_node;
     std::array<std::unique_ptr<ros::Publisher>, kOutTopicCount> m_publishers;
     std::vector<std::unique_ptr<ros::Subscription>> m_subscriptions;

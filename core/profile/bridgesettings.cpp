@@ -1,5 +1,8 @@
 #include "bridgesettings.h"
 
+#include "model/paramtable.h"
+
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
@@ -29,6 +32,35 @@ void checkText(std::vector<std::string> &errors, const SettingSpec &spec, const 
         errors.push_back(std::string(spec.label) + ": must be " +
                          (spec.range.low > 0 ? formatNumber(spec.range.low) + " to " : "at most ") +
                          formatNumber(spec.range.high) + " characters");
+}
+
+// Each topic its own name: an input that is one of the bridge's outputs would feed its own
+// messages back as the robot's wrench (a loop); two outputs, or the two inputs, on one name
+// would put two types on one topic (every pair of the bridge's topics differs in type).
+void checkTopicsApart(std::vector<std::string> &errors, const BridgeSettings &s)
+{
+    const SettingSpec *seen[kSettings.size()] = {};
+    std::size_t count = 0;
+    for (const SettingSpec &spec : kSettings) {
+        const auto *m = std::get_if<std::string Topics::*>(&spec.place);
+        if (!m || (s.topics.*(*m)).empty())
+            continue;
+        const std::string &name = s.topics.*(*m);
+        for (std::size_t i = 0; i < count; ++i) {
+            const SettingSpec &other = *seen[i];
+            if (s.topics.*std::get<std::string Topics::*>(other.place) != name)
+                continue;
+            const bool loop =
+                isInputTopic(*m) != isInputTopic(std::get<std::string Topics::*>(other.place));
+            errors.push_back(std::string(spec.label) + ": '" + echoedText(name) + "' is also the " +
+                             std::string(other.label) +
+                             (loop ? "; an input that is one of the bridge's own outputs would "
+                                     "feed its messages back to it (a topic loop)"
+                                   : "; two of the bridge's topics of different types cannot "
+                                     "share a name"));
+        }
+        seen[count++] = &spec;
+    }
 }
 
 constexpr SettingSpec setting(std::string_view key, std::string_view label, SettingPlace place,
@@ -188,6 +220,24 @@ Component BridgeSettings::axisFor(ReferenceMode mode) const
     return mode == ReferenceMode::Rotation ? Component{true, 2} : Component{false, 0};
 }
 
+std::string limitProblem(const FeedbackSettings &feedback, double tauLimit)
+{
+    if (!std::isfinite(tauLimit) || !(tauLimit > 0) ||
+        atMostAsDeviceFloat(feedback.limit, tauLimit))
+        return {};
+    // The device's figure is a float32: its shortest float form ("0.44", not 0.4399999…).
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, float(tauLimit)).ptr;
+    return "limit: must be at most the device's tau_limit (" + std::string(text, end) +
+           " N·m), got " + formatNumber(feedback.limit);
+}
+
+bool isInputTopic(std::string Topics::*topic)
+{
+    return topic == &Topics::wrench || topic == &Topics::wrenchUnstamped ||
+           topic == &Topics::enable;
+}
+
 bool isValidTopicName(const std::string &name)
 {
     if (name.empty() || name.size() > 200)
@@ -280,6 +330,7 @@ std::vector<std::string> validate(const BridgeSettings &s)
     }
     if (const std::string problem = namespaceProblem(s.nodeNamespace); !problem.empty())
         errors.push_back("namespace: " + problem);
+    checkTopicsApart(errors, s);
     return errors;
 }
 

@@ -177,8 +177,20 @@ std::string rangeProblem(const SettingRange &range, double value, bool whole);
 std::string topicNameProblem(const std::string &topic);
 
 //! Every broken rule, one sentence each ("publish rate: must be above 0 and at most 1000 Hz,
-//! got 0"). Empty means valid.
+//! got 0"), including: no two of the topics share a name (an input that is an output is a topic
+//! loop; any two others differ in type). Empty means valid. The one check of the CLI, the
+//! config file, a profile and the tuner's Bridge panel.
 std::vector<std::string> validate(const BridgeSettings &settings);
+//! Empty when the feedback's limit is within the device's tau_limit (as the device's float32,
+//! atMostAsDeviceFloat()), else "limit: must be at most the device's tau_limit (0.44 N·m), got
+//! 10": the device renders no more, so the feedback topic and the energy would report a torque
+//! never felt. A tau_limit that is not known (NaN) or not above 0 (its own rule refuses it)
+//! checks nothing. The one check of a profile (its host tau_limit), and of the bridge once it knows
+//! the device's (Bridge::start(), a device that connects).
+std::string limitProblem(const FeedbackSettings &feedback, double tauLimit);
+//! Whether the bridge subscribes to that topic (the wrench, stamped or not) rather than
+//! publishing it.
+bool isInputTopic(std::string Topics::*topic);
 //! A topic name rmw would accept: '/'-separated tokens of [A-Za-z0-9_], not starting with a
 //! digit, no "//", no trailing '/'.
 bool isValidTopicName(const std::string &name);

@@ -162,6 +162,9 @@ void readHost(const QJsonObject &root, HostParams &host, bridge::BridgeSettings 
         if (!nonNumbers.contains(QString::fromStdString(v.field)))
             errors.append(u"host." + message);
     }
+    if (const std::string problem = bridge::limitProblem(bridge.feedback, host.tau_limit);
+        !problem.empty())
+        errors.append(u"host."_s + bridgeKey + u": " + QString::fromStdString(problem));
 }
 
 // The host object; its bridge object only when a setting differs from its default, so the
@@ -264,6 +267,10 @@ QString writeProfile(const Profile &profile, const QString &path)
     for (const Violation &v : validate(profile.effects, profile.host.tau_limit))
         problems.append(u"device.effects." + QString::fromStdString(v.message()));
     for (const std::string &problem : bridge::validate(profile.bridge))
+        problems.append(u"host.bridge: " + QString::fromStdString(problem));
+    if (const std::string problem =
+            bridge::limitProblem(profile.bridge.feedback, profile.host.tau_limit);
+        !problem.empty())
         problems.append(u"host.bridge: " + QString::fromStdString(problem));
     if (!problems.isEmpty())
         return u"refusing to write an invalid profile to \"" + path + u"\": " +

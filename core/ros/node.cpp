@@ -9,6 +9,7 @@
 #include "ros/ros1/ros1node.h"
 #endif
 
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <limits>
@@ -20,7 +21,7 @@ const char *rosVersionName(RosVersion version)
     return version == RosVersion::Ros1 ? "ROS 1" : "ROS 2";
 }
 
-std::optional<int> domainFromEnvironment(std::string *error)
+std::optional<int> domainFromEnvironment(int maxId, std::string *error)
 {
     const char *text = std::getenv("ROS_DOMAIN_ID");
     if (!text || !*text)
@@ -30,11 +31,10 @@ std::optional<int> domainFromEnvironment(std::string *error)
     const long id = std::strtol(text, &end, 10);
     while (*end == ' ' || *end == '\t' || *end == '\n')
         ++end;
-    if (end == text || *end != '\0' || errno != 0 || id < 0 ||
-        id > std::numeric_limits<int>::max()) {
+    if (end == text || *end != '\0' || errno != 0 || id < 0 || id > maxId) {
         if (error)
-            *error = std::string("ROS_DOMAIN_ID must be a whole number, got '") +
-                     std::string(text).substr(0, 40) + "'.";
+            *error = "ROS_DOMAIN_ID must be a whole number from 0 to " + std::to_string(maxId) +
+                     ", got '" + std::string(text).substr(0, 40) + "'.";
         return std::nullopt;
     }
     return int(id);
@@ -46,6 +46,20 @@ std::string effectiveNamespace(RosVersion version, const std::string &given)
         return given;
     const char *text = std::getenv("ROS_NAMESPACE");
     return text ? std::string(text) : std::string();
+}
+
+namespace {
+std::atomic<bool> g_exitWhenShutDown{false};
+} // namespace
+
+void setExitWhenShutDownByMaster(bool exit)
+{
+    g_exitWhenShutDown = exit;
+}
+
+bool exitsWhenShutDownByMaster()
+{
+    return g_exitWhenShutDown;
 }
 
 bool Node::isAvailable(RosVersion version)

@@ -18,9 +18,17 @@ enum class RosVersion { Ros1, Ros2 };
 const char *rosVersionName(RosVersion version); //!< "ROS 1", "ROS 2"
 
 //! ROS 2's domain as the environment names it: ROS_DOMAIN_ID, or 0 when unset or empty. The
-//! one reading of that variable (the bridge, its panel, the nodes). nullopt with `*error`
-//! one sentence when it is not a whole number from 0 to INT_MAX.
-std::optional<int> domainFromEnvironment(std::string *error);
+//! one reading of that variable (hatpic-bridge, hatpic-robot-sim, the Bridge panel, the nodes).
+//! nullopt with `*error` one sentence ("ROS_DOMAIN_ID must be a whole number from 0 to 232, got
+//! '300'.") when it is not a whole number from 0 to `maxId`.
+std::optional<int> domainFromEnvironment(int maxId, std::string *error);
+
+//! ROS 1: when its master shuts the process's node down (another node took its name), the
+//! process says so on stderr and exits 1 — for programs whose node is their purpose
+//! (hatpic-bridge, hatpic-robot-sim). Without it (the tuner) the sentence goes to stderr and
+//! the node stays dead until the program restarts.
+void setExitWhenShutDownByMaster(bool exit);
+bool exitsWhenShutDownByMaster();
 
 //! A topic's quality of service. ROS 2 maps it onto DDS QoS as rmw_cyclonedds does; ROS 1 has
 //! none (TCPROS is reliable and volatile) and takes `depth` as the queue size.

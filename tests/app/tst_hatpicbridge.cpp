@@ -83,6 +83,29 @@ private Q_SLOTS:
                               << QByteArray() << QByteArray("--axis needs linear.x");
         QTest::newRow("domain") << QStringList{u"--port"_s, u"sim"_s} << QByteArray("seven")
                                 << QByteArray("ROS_DOMAIN_ID must be a whole number");
+        // The same sentence and exit code as hatpic-robot-sim's (tst_teleoploop).
+        QTest::newRow("domain 300")
+            << QStringList{u"--port"_s, u"sim"_s} << QByteArray("300")
+            << QByteArray("hatpic-bridge: ROS_DOMAIN_ID must be a whole number from 0 to 232, got "
+                          "'300'.");
+        // --domain wins over a bad ROS_DOMAIN_ID: the next problem is the one said.
+        QTest::newRow("--domain over a bad ROS_DOMAIN_ID")
+            << QStringList{u"--port"_s, u"sim"_s, u"--domain"_s, u"5"_s, u"--limit"_s, u"-1"_s}
+            << QByteArray("seven") << QByteArray("limit: must be from 0 to 10 N·m, got -1.");
+        // A topic loop, refused by validate()'s one rule.
+        QTest::newRow("wrench topic is the feedback")
+            << QStringList{u"--port"_s, u"sim"_s, u"--wrench-topic"_s, u"/hatpic/feedback"_s}
+            << QByteArray()
+            << QByteArray("wrench topic: '/hatpic/feedback' is also the feedback topic; an input "
+                          "that is one of the bridge's own outputs would feed its messages back "
+                          "to it (a topic loop).");
+        QTest::newRow("feedback topic is the wrench")
+            << QStringList{u"--port"_s, u"sim"_s, u"--feedback-topic"_s, u"/wrench_estimation"_s}
+            << QByteArray() << QByteArray("(a topic loop).");
+        QTest::newRow("two types on one name")
+            << QStringList{u"--port"_s, u"sim"_s, u"--pose-topic"_s, u"/hatpic/twist"_s}
+            << QByteArray()
+            << QByteArray("two of the bridge's topics of different types cannot share a name.");
         QTest::newRow("config") << QStringList{u"--port"_s, u"sim"_s, u"--config"_s,
                                                u"/nonexistent/bridge.json"_s}
                                 << QByteArray()
@@ -355,6 +378,42 @@ private Q_SLOTS:
         QCOMPARE(err.trimmed().count('\n'), 0);
     }
 
+    // --limit above the device's tau_limit: known only once the device said HELLO, so refused
+    // then — said once on stderr — and the feedback stays 0 while the references go on.
+    void limitAboveTheDevicesIsRefusedOnConnection()
+    {
+        SimulatorHost host(SimulatedDevice::Config{});
+        QCOMPARE(host.start(), QString());
+        RosTestPeer peer(kDomain);
+        QVERIFY(peer.isValid());
+        QProcess bridge;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, QString::number(kDomain));
+        bridge.setProcessEnvironment(env);
+        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH),
+                     {u"--port"_s, host.slavePath(), u"--limit"_s, u"10"_s, u"--gain"_s, u"10"_s});
+        QVERIFY(bridge.waitForStarted());
+        QByteArray err;
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            (err += bridge.readAllStandardError(),
+             err.contains("hatpic-bridge: limit: must be at most the device's tau_limit (0.44 "
+                          "N·m), got 10; the device renders no more. The feedback stays 0")),
+            err.constData(), 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(peer.wrenchMatched(), 10000);
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { peer.publishWrench(1.0); });
+        robot.start(20);
+        QTest::qWait(1500);
+        peer.take();
+        QVERIFY(peer.feedbacks.size() > 10); // still publishing
+        for (const auto &f : peer.feedbacks)
+            QCOMPARE(f.b[2], 0.0);
+        robot.stop();
+        ::kill(pid_t(bridge.processId()), SIGINT);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.state() == QProcess::NotRunning, 5000);
+        QCOMPARE(bridge.exitCode(), 0);
+    }
+
     void roundTripAndSigint()
     {
         SimulatedDevice::Config config;
@@ -368,8 +427,9 @@ private Q_SLOTS:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(u"ROS_DOMAIN_ID"_s, QString::number(kDomain));
         bridge.setProcessEnvironment(env);
-        bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH),
-                     {u"--port"_s, host.slavePath(), u"--origin"_s, u"0,0,0.5"_s});
+        bridge.start(
+            QStringLiteral(HATPIC_BRIDGE_PATH),
+            {u"--port"_s, host.slavePath(), u"--origin"_s, u"0,0,0.5"_s, u"--rate"_s, u"1000"_s});
         QVERIFY(bridge.waitForStarted());
 
         // References of the held knob under ROS 2's names.
@@ -418,6 +478,13 @@ private Q_SLOTS:
         peer.take();
         QVERIFY(!peer.feedbacks.empty());
         QCOMPARE(peer.feedbacks.back().b[2], 0.0);
+        // The last status line shows the device's 0 too. (It showed the device's 0.077 in 1
+        // run of 3 at the default rate, nearly always at --rate 1000: the 0 went out at once
+        // while the line read the 20 ms batches.)
+        out += bridge.readAllStandardOutput();
+        const QList<QByteArray> lines = out.trimmed().split('\n');
+        QVERIFY2(lines.last().contains("| tau_ext 0 N·m, device 0 N·m |"),
+                 lines.last().constData());
     }
 };
 

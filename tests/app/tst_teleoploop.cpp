@@ -63,6 +63,8 @@ private Q_SLOTS:
 
     void badOptionsNameOptionRuleAndValue_data();
     void badOptionsNameOptionRuleAndValue();
+    void domainVariableAsTheBridgeReadsIt();
+    void shutDownByTheMasterSaysSoAndExits();
     void statusLinesAndSignals_data();
     void statusLinesAndSignals();
 
@@ -206,6 +208,64 @@ void TestTeleopLoop::badOptionsNameOptionRuleAndValue()
                  err.constData());
     }
     QVERIFY(robot.readAllStandardOutput().isEmpty());
+}
+
+// ROS_DOMAIN_ID read as hatpic-bridge reads it: the same sentence and exit code for 300, and
+// --domain wins over a bad one.
+void TestTeleopLoop::domainVariableAsTheBridgeReadsIt()
+{
+    const auto run = [](const QStringList &arguments, const QString &domain) {
+        QProcess robot;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(u"ROS_DOMAIN_ID"_s, domain);
+        robot.setProcessEnvironment(env);
+        robot.start(QStringLiteral(HATPIC_ROBOT_SIM_PATH), arguments);
+        robot.waitForFinished(10000);
+        return std::pair{robot.exitCode(), robot.readAllStandardError()};
+    };
+    auto [code, err] = run({}, u"300"_s);
+    QCOMPARE(code, 4);
+    QCOMPARE(err, QByteArray("hatpic-robot-sim: ROS_DOMAIN_ID must be a whole number from 0 to "
+                             "232, got '300'.\n"));
+    std::tie(code, err) = run({u"--domain"_s, u"5"_s, u"--mass"_s, u"0"_s}, u"300"_s);
+    QCOMPARE(code, 4);
+    QVERIFY2(err.contains("--mass: must be > 0, got 0."), err.constData());
+}
+
+// A second node of the same name makes the master shut the first down: roscpp's logging is off
+// by then, so the sentence goes to stderr directly, and the first exits non-zero.
+void TestTeleopLoop::shutDownByTheMasterSaysSoAndExits()
+{
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    if (!m_core) {
+        m_core = std::make_unique<test::RosCore>();
+        QCOMPARE(m_core->start(), QString());
+        m_core->exportEnvironment();
+    }
+    QProcess first, second;
+    for (QProcess *p : {&first, &second})
+        p->setProcessEnvironment(environment(ros::RosVersion::Ros1));
+    first.start(QStringLiteral(HATPIC_ROBOT_SIM_PATH), {u"--ros"_s, u"1"_s});
+    QVERIFY(first.waitForStarted());
+    QByteArray err;
+    QTRY_VERIFY_WITH_TIMEOUT((err += first.readAllStandardError(), err.contains("on ROS 1")),
+                             15000);
+    QTest::qWait(1500); // registered with the master
+    second.start(QStringLiteral(HATPIC_ROBOT_SIM_PATH), {u"--ros"_s, u"1"_s});
+    QVERIFY(second.waitForStarted());
+    QTRY_VERIFY_WITH_TIMEOUT(first.state() == QProcess::NotRunning, 15000);
+    err += first.readAllStandardError();
+    QCOMPARE(first.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(first.exitCode(), 1);
+    QVERIFY2(err.contains("hatpic-robot-si") && err.contains("/hatpic_robot_sim was shut down by "
+                                                             "its master"),
+             err.constData());
+    ::kill(pid_t(second.processId()), SIGTERM);
+    QVERIFY(second.waitForFinished(10000));
+    QCOMPARE(second.exitCode(), 0);
+#else
+    QSKIP("ROS 1 is not built in");
+#endif
 }
 
 void TestTeleopLoop::statusLinesAndSignals_data()

@@ -169,7 +169,7 @@ BridgePanel::BridgePanel(DeviceClient &client, QWidget *parent) : QWidget(parent
         return;
     }
 #ifdef HATPIC_HAVE_BRIDGE
-    if (const auto id = ros::domainFromEnvironment(nullptr); id && *id <= bridge::kMaxDomainId)
+    if (const auto id = ros::domainFromEnvironment(bridge::kMaxDomainId, nullptr))
         m_settings.domainId = *id; // a bad ROS_DOMAIN_ID: 0, and the bridge says why at start
     m_bridge = new bridge::Bridge(m_client, this);
 #endif
@@ -418,8 +418,15 @@ void BridgePanel::edited(bool reopen)
         if (reopen) {
             setBridgeEnabled(true);
         } else {
-            if (feedbackChanged)
-                m_bridge->setFeedbackSettings(s.feedback);
+            if (feedbackChanged) {
+                // A limit above the connected device's tau_limit is the bridge's refusal.
+                if (const QString problem = m_bridge->setFeedbackSettings(s.feedback);
+                    !problem.isEmpty()) {
+                    m_settings.feedback = m_bridge->settings().feedback;
+                    setStatus(tr("Not applied: %1").arg(problem), true);
+                    return;
+                }
+            }
             if (rateChanged)
                 m_bridge->setPublishRate(s.publishRateHz);
             setStatus(runningText(), false);

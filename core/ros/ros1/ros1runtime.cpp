@@ -17,6 +17,8 @@
 #include <ros/this_node.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 
 namespace hatpic::ros::ros1 {
@@ -261,9 +263,20 @@ void Runtime::checkMaster()
     }
     if (!::ros::ok()) {
         m_state = State::Dead;
-        ROS_ERROR("The ROS 1 node %s was shut down (by its master at %s: another node may have "
-                  "taken its name); restart the program to use ROS 1 again.",
-                  nodeName().c_str(), uri.c_str());
+        // roscpp turned its logging off inside ros::shutdown(): ROS_ERROR would say nothing.
+        // So stderr directly, and a program whose node is its purpose ends, non-zero: a node
+        // its master shut down cannot start again (roscpp), and running on with frozen
+        // counters helps no one. The master has already dropped the node.
+        const bool exit = exitsWhenShutDownByMaster();
+        std::fprintf(stderr,
+                     "%s: The ROS 1 node %s was shut down by its master at %s (another node took "
+                     "its name); %s.\n",
+                     program_invocation_short_name, nodeName().c_str(), uri.c_str(),
+                     exit ? "exiting" : "restart the program to use ROS 1 again");
+        std::fflush(stdout);
+        std::fflush(stderr);
+        if (exit)
+            std::_Exit(kExitShutDownByMaster);
         return;
     }
     const MasterLookup lookup =
@@ -372,13 +385,20 @@ void Runtime::createSubscriber(const std::shared_ptr<SubscriptionSlot> &slot)
     try {
         subscriber = visitType(slot->type, [&](auto tag) {
             using M = typename decltype(tag)::Type;
-            const boost::function<void(const boost::shared_ptr<const M> &)> callback =
-                [target](const boost::shared_ptr<const M> &m) {
+            // The node never hears its own publications: roscpp names the publisher of each
+            // message by its caller id (the connection header's, or the node's own for a
+            // message published in this process), and this node's are dropped.
+            const std::string self = nodeName();
+            const boost::function<void(const ::ros::MessageEvent<M const> &)> callback =
+                [target, self](const ::ros::MessageEvent<M const> &event) {
+                    if (event.getPublisherName() == self)
+                        return;
                     if (const auto s = target.lock())
-                        s->deliver(Message(fromRos(*m)));
+                        s->deliver(Message(fromRos(*event.getConstMessage())));
                 };
             ::ros::SubscribeOptions options;
-            options.template init<M>(slot->topic, std::uint32_t(slot->queueSize), callback);
+            options.template initByFullCallbackType<const ::ros::MessageEvent<M const> &>(
+                slot->topic, std::uint32_t(slot->queueSize), callback);
             options.transport_hints = ::ros::TransportHints().tcpNoDelay();
             options.callback_queue = &m_queue;
             return m_handle->subscribe(options);

@@ -67,6 +67,9 @@ public:
         Dead,      //!< roscpp shut down (the master told it to); nothing more is possible
     };
 
+    //! The process's exit code when its master shut the node down (app/common/exitcodes.h's
+    //! ExitFailure): the sentence goes to stderr first.
+    static constexpr int kExitShutDownByMaster = 1;
     //! The master is probed (and its registrations checked) this often.
     static constexpr std::chrono::milliseconds kCheckInterval{1000};
     //! A master call made while the master is gone gives up after this long (roscpp's retry

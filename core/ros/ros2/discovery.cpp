@@ -63,7 +63,7 @@ std::optional<Discovery> discoveryFrom(const DiscoveryEnvironment &environment, 
         return std::nullopt;
     };
     Discovery discovery;
-    if (environment.localhostOnly.starts_with('1')) {
+    if (environment.localhostOnly == "1") { // rcl: exactly "1"
         discovery.range = DiscoveryRange::Localhost;
         return discovery;
     }

@@ -100,6 +100,9 @@ public:
         if (m_topic == 0)
             return false;
         dds_qos_t *q = endpointQos(qos, typeHashOf(m_type));
+        // A node never hears its own publications (rmw's ignore_local_publications): the
+        // node's writers on this topic do not match this reader (Cyclone's ignorelocal).
+        dds_qset_ignorelocal(q, DDS_IGNORELOCAL_PARTICIPANT);
         dds_listener_t *listener = dds_create_listener(this);
         dds_lset_data_available(listener, &Ros2Subscription::onData);
         const dds_entity_t reader = dds_create_reader(participant, m_topic, q, listener);

@@ -163,7 +163,7 @@ std::optional<int> domainOf(const NodeOptions &options, std::string *error)
 {
     if (options.domainId >= 0)
         return options.domainId;
-    return domainFromEnvironment(error);
+    return domainFromEnvironment(std::numeric_limits<int>::max(), error);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "rostestpeer.h"
 
 #include "bridge/bridge.h"
+#include "ros/node.h"
 #include "session/deviceclient.h"
 
 #include <QDateTime>
@@ -15,8 +16,10 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -24,6 +27,7 @@
 using namespace hatpic;
 using namespace hatpic::bridge;
 using hatpic::test::RosTestPeer;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -350,6 +354,84 @@ private Q_SLOTS:
         QCOMPARE(m_deviceTauExt, 0.0);
         QCOMPARE(m_bridge.stats().tauExt, 0.0);
         QVERIFY(m_bridge.isRunning());
+    }
+
+    // A relay of the feedback topic onto the wrench topic, in this process: Cyclone DDS hands
+    // the relay the feedback inside the bridge's publish(), and the relay's wrench to the
+    // bridge's handler on the same thread. The bridge must neither hang (it published holding
+    // the lock its handler takes) nor keep its own τ_ext alive through the relay: the echo is
+    // ignored, so once the robot's seed stops τ_ext goes to 0 with the staleness watchdog.
+    void aRelayOfTheFeedbackNeitherHangsNorLatches()
+    {
+        BridgeSettings settings = m_bridge.settings();
+        settings.feedback.component = Component{true, 2}; // torque.z: what the feedback carries
+        settings.feedback.gain = 1;
+        QCOMPARE(m_bridge.start(settings), QString());
+        std::string error;
+        auto relayNode = ros::Node::open({ros::RosVersion::Ros2, "relay", kDomain}, &error);
+        QVERIFY2(relayNode, error.c_str());
+        auto relayOut = relayNode->advertise("/wrench_estimation", ros::MessageType::WrenchStamped,
+                                             ros::Qos::defaults(), &error);
+        QVERIFY2(relayOut, error.c_str());
+        std::atomic<int> relayed{0};
+        auto relayIn = relayNode->subscribe(
+            "/hatpic/feedback", ros::MessageType::WrenchStamped, ros::Qos::matchAny(),
+            [&](const ros::Message &m) {
+                relayOut->publish(m);
+                ++relayed;
+            },
+            &error);
+        QVERIFY2(relayIn, error.c_str());
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer->wrenchMatched(), 5000);
+        // The robot's seed: 0.5 s of torque.z 0.1 N·m.
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] { m_peer->publishWrench(0, 0.1); });
+        robot.start(20);
+        QTest::qWait(500);
+        robot.stop();
+        // stats() takes the bridge's lock: a bridge that hangs never answers.
+        const auto answers = [this](BridgeStats *out) {
+            auto f = std::async(std::launch::async, [this] { return m_bridge.stats(); });
+            if (f.wait_for(std::chrono::seconds(3)) != std::future_status::ready)
+                qFatal("the bridge hangs: its own feedback came back inside its publish()");
+            *out = f.get();
+        };
+        BridgeStats stats;
+        answers(&stats);
+        QVERIFY(relayed > 0);
+        QElapsedTimer silent;
+        silent.start();
+        QTRY_VERIFY_WITH_TIMEOUT((answers(&stats), stats.tauExt == 0.0), 3000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 1000);
+        // It stays there, while the relay keeps relaying the 0s.
+        QTest::qWait(1000);
+        answers(&stats);
+        QCOMPARE(stats.tauExt, 0.0);
+        QVERIFY2(stats.echoes > 0, qPrintable(QString::number(stats.echoes)));
+        relayIn.reset();
+        relayOut.reset();
+        relayNode.reset();
+        settings.feedback = FeedbackSettings{};
+        QCOMPARE(m_bridge.start(settings), QString());
+    }
+
+    // The device renders at most its tau_limit (0.44 N·m, from its HELLO): a limit above it is
+    // refused, naming it, at start and while running.
+    void aLimitAboveTheDevicesIsRefused()
+    {
+        BridgeSettings settings = m_bridge.settings();
+        settings.feedback.limit = 10;
+        QCOMPARE(m_bridge.start(settings),
+                 u"limit: must be at most the device's tau_limit (0.44 N·m), got 10."_s);
+        settings.feedback.limit = 0.44;
+        QCOMPARE(m_bridge.start(settings), QString());
+        FeedbackSettings f = settings.feedback;
+        f.limit = 0.45;
+        QCOMPARE(m_bridge.setFeedbackSettings(f),
+                 u"limit: must be at most the device's tau_limit (0.44 N·m), got 0.45."_s);
+        QCOMPARE(m_bridge.settings().feedback.limit, 0.44);
+        settings.feedback = FeedbackSettings{};
+        QCOMPARE(m_bridge.start(settings), QString());
     }
 
     void stopLeavesTauExtZero()

@@ -16,6 +16,7 @@
 
 using namespace hatpic;
 using namespace hatpic::bridge;
+using namespace Qt::StringLiterals;
 
 class TestBridgeMapping : public QObject
 {
@@ -191,6 +192,53 @@ private Q_SLOTS:
     }
 
     // The ROS version and the domain travel together as the network's, apart from the feel.
+    // Each topic its own name (one rule, in validate(): the CLI, the config file, a profile
+    // and the Bridge panel): an input that is an output is a loop; two others clash in type.
+    void topicsHaveNamesOfTheirOwn()
+    {
+        BridgeSettings s;
+        s.topics.wrench = "/hatpic/feedback";
+        auto errors = validate(s);
+        QCOMPARE(errors.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(errors.front()),
+                 u"wrench topic: '/hatpic/feedback' is also the feedback topic; an input that is "
+                 u"one of the bridge's own outputs would feed its messages back to it (a topic "
+                 u"loop)"_s);
+        s = BridgeSettings{};
+        s.topics.feedback = "/wrench_estimation";
+        QCOMPARE(validate(s).size(), std::size_t(1));
+        s = BridgeSettings{};
+        s.topics.wrenchUnstamped = "/hatpic/twist";
+        QCOMPARE(validate(s).size(), std::size_t(1));
+        s = BridgeSettings{};
+        s.topics.pose = "/hatpic/twist";
+        errors = validate(s);
+        QCOMPARE(errors.size(), std::size_t(1));
+        QVERIFY2(errors.front().find("two of the bridge's topics of different types") !=
+                     std::string::npos,
+                 errors.front().c_str());
+        s = BridgeSettings{};
+        s.topics.wrenchUnstamped = "/wrench_estimation";
+        QCOMPARE(validate(s).size(), std::size_t(1));
+        s = BridgeSettings{};
+        s.topics.twist.clear();
+        s.topics.pose.clear(); // empty names are no topics
+        QVERIFY(validate(s).empty());
+    }
+
+    // One check of the limit against a tau_limit (a profile's host, the device's HELLO).
+    void limitWithinTheDevicesTauLimit()
+    {
+        FeedbackSettings f;
+        f.limit = 10;
+        QCOMPARE(QString::fromStdString(limitProblem(f, 0.44)),
+                 u"limit: must be at most the device's tau_limit (0.44 N·m), got 10"_s);
+        f.limit = 0.44;
+        QVERIFY(limitProblem(f, 0.44).empty());
+        f.limit = 10;
+        QVERIFY(limitProblem(f, std::nan("")).empty()); // not known yet
+    }
+
     void networkSettings()
     {
         BridgeSettings feel;

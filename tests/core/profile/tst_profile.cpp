@@ -200,6 +200,8 @@ Profile randomValidProfile(RandomDoubles &r)
     p.host.tau_limit = r.in(std::numeric_limits<double>::denorm_min(), 10.0);
     p.host.mode = r.coin() ? hatpic::ReferenceMode::Translation : hatpic::ReferenceMode::Rotation;
     p.host.ref_deadzone = r.coin();
+    // The bridge's limit within that tau_limit (bridge::limitProblem()).
+    p.bridge.feedback.limit = std::min(p.bridge.feedback.limit, p.host.tau_limit);
     return p;
 }
 
@@ -451,6 +453,10 @@ void TestProfile::rejects_data()
     QTest::newRow("host.tau_limit negative")
         << withHost(u"tau_limit"_s, -0.44)
         << QStringList{u"host.tau_limit: must be > 0, got -0.44"_s};
+    QTest::newRow("bridge limit above tau_limit")
+        << withHost(u"bridge"_s, QJsonObject{{u"limit"_s, 1}})
+        << QStringList{u"host.bridge: limit: must be at most the device's tau_limit (0.44 N·m), "
+                       u"got 1"_s};
     QTest::newRow("host.tau_limit above 10")
         << withHost(u"tau_limit"_s, 11) << QStringList{u"host.tau_limit: must be ≤ 10, got 11"_s};
 }

@@ -307,6 +307,40 @@ private Q_SLOTS:
         m_peer.send(u"stop "_s + topic);
     }
 
+    // A node never hears its own publications (the caller id roscpp gives each message): a
+    // bridge whose input is also its output cannot feed itself, while rospy's are heard.
+    void aNodeNeverHearsItself()
+    {
+        QVERIFY(startPeer());
+        Inbox inbox;
+        std::string error;
+        const std::string topic = "/wrench_estimation";
+        auto subscription = m_node->subscribe(topic, MessageType::WrenchStamped, Qos::matchAny(),
+                                              inbox.handler(), &error);
+        QVERIFY2(subscription, error.c_str());
+        auto own = m_node->advertise(topic, MessageType::WrenchStamped, Qos::defaults(), &error);
+        QVERIFY2(own, error.c_str());
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.connections(u"/wrench_estimation"_s) >= 1, 10000);
+        const WrenchStamped mine{header(1, 0), {{1, 0, 0}, {0, 0, 0}}};
+        QTest::qWait(1000); // our own subscription connects to our publisher meanwhile
+        for (int i = 0; i < 50; ++i) {
+            own->publish(mine);
+            QTest::qWait(10);
+        }
+        QTest::qWait(500);
+        QCOMPARE(inbox.size(), std::size_t(0));
+        m_peer.send(u"set /wrench_estimation {\"wrench\": {\"force\": {\"x\": 2}}}"_s);
+        {
+            std::unique_lock lock(inbox.mutex);
+            QVERIFY(inbox.arrived.wait_for(lock, std::chrono::seconds(10),
+                                           [&] { return !inbox.messages.empty(); }));
+        }
+        const auto *got = std::get_if<WrenchStamped>(&inbox.messages.front());
+        QVERIFY(got);
+        QCOMPARE(got->wrench.force.x, 2.0);
+        m_peer.send(u"stop /wrench_estimation"_s);
+    }
+
     // Our subscriptions ask rospy's publishers for TCP_NODELAY; the connections of our
     // publishers have it although rospy's subscribers do not ask (ros1peer.py without
     // --nodelay).

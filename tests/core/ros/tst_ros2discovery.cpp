@@ -62,6 +62,10 @@ private Q_SLOTS:
         row("localhost only 0 leaves the range", "0", "LOCALHOST", "", "",
             kOpen + kNoMulticast + kAutoIndex + "<Peers><Peer address=\"localhost\"/></Peers>" +
                 kClose);
+        // rcl turns localhost-only on for exactly "1": "10", "1 " and "yes" leave it off.
+        row("localhost only 10 is not 1", "10", "", "", "", kOpen + kAutoIndex + kClose);
+        row("localhost only '1 ' is not 1", "1 ", "", "", "", kOpen + kAutoIndex + kClose);
+        row("localhost only yes is not 1", "yes", "", "", "", kOpen + kAutoIndex + kClose);
         row("CYCLONEDDS_URI after, so it wins", "", "", "", "file:///etc/cyclone.xml",
             kOpen + kAutoIndex + kClose + "file:///etc/cyclone.xml");
         row("system default with CYCLONEDDS_URI", "", "SYSTEM_DEFAULT", "", "<CycloneDDS/>",

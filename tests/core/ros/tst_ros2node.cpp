@@ -273,6 +273,34 @@ private Q_SLOTS:
         QCOMPARE(enclaves, 2); // the two nodes, not the plain observer
     }
 
+    // A node never hears its own publications (rmw's ignore_local_publications; Cyclone's
+    // ignorelocal), though another node of the same process is heard: a bridge whose input is
+    // also its output cannot feed itself.
+    void aNodeNeverHearsItself()
+    {
+        const std::string topic = "/self/loop";
+        std::string error;
+        Received received;
+        auto subscription = m_a->subscribe(topic, MessageType::WrenchStamped, Qos::matchAny(),
+                                           received.handler(), &error);
+        QVERIFY2(subscription, error.c_str());
+        auto own = m_a->advertise(topic, MessageType::WrenchStamped, Qos::defaults(), &error);
+        QVERIFY2(own, error.c_str());
+        auto other = m_b->advertise(topic, MessageType::WrenchStamped, Qos::defaults(), &error);
+        QVERIFY2(other, error.c_str());
+        const WrenchStamped mine{{{1, 0}, "mine"}, {{1, 0, 0}, {0, 0, 0}}};
+        const WrenchStamped theirs{{{2, 0}, "theirs"}, {{2, 0, 0}, {0, 0, 0}}};
+        QTRY_VERIFY_WITH_TIMEOUT((other->publish(theirs), received.size() > 0), 5000);
+        const std::size_t before = received.size();
+        for (int i = 0; i < 50; ++i) {
+            QVERIFY(own->publish(mine));
+            QTest::qWait(2);
+        }
+        QTest::qWait(300);
+        QCOMPARE(received.size(), before);
+        QVERIFY(received.last() == Message(theirs));
+    }
+
     void publishOfAnotherTypeIsRefused()
     {
         auto publisher =
@@ -367,7 +395,8 @@ private Q_SLOTS:
                                     "check CYCLONEDDS_URI and ROS_STATIC_PEERS."));
         qputenv("ROS_DOMAIN_ID", "seven");
         QVERIFY(!openNode(-1, &error));
-        QCOMPARE(error, std::string("ROS_DOMAIN_ID must be a whole number, got 'seven'."));
+        QCOMPARE(error, std::string("ROS_DOMAIN_ID must be a whole number from 0 to 2147483647, "
+                                    "got 'seven'."));
         qputenv("ROS_DOMAIN_ID", "76");
         auto fromEnvironment = openNode(-1, &error);
         qunsetenv("ROS_DOMAIN_ID");
