@@ -188,8 +188,8 @@ std::vector<std::string> validate(const BridgeSettings &settings);
 //! checks nothing. The one check of a profile (its host tau_limit), and of the bridge once it knows
 //! the device's (Bridge::start(), a device that connects).
 std::string limitProblem(const FeedbackSettings &feedback, double tauLimit);
-//! Whether the bridge subscribes to that topic (the wrench, stamped or not) rather than
-//! publishing it.
+//! Whether the bridge subscribes to that topic (the wrench, stamped or not, and the enable
+//! switch) rather than publishing it.
 bool isInputTopic(std::string Topics::*topic);
 //! A topic name rmw would accept: '/'-separated tokens of [A-Za-z0-9_], not starting with a
 //! digit, no "//", no trailing '/'.
