@@ -98,9 +98,9 @@ private:
     void sampleDecoded(const Sample &sample) override; //!< the session thread
     void onWrench(const RosEndpoints::Wrench &wrench); //!< a middleware thread
     void onEnable(bool value);                         //!< a middleware thread
-    //! With m_mutex held: the τ_ext the wrench asks for at `t`, or 0 when released.
+    //! With m_mutex held: the τ_ext the wrench asks for at `t`, or 0 when released (by the
+    //! enable switch, or by a limit above the device's).
     double torqueAt(double t);
-    void checkStale(); //!< any thread
     void checkStale(); //!< any thread
     //! The connected device's tau_limit; NaN while not known (not connected) [N·m].
     double deviceTauLimit() const;
