@@ -27,6 +27,11 @@ Profile merged(const Profile &file, const fw::StoredSettings &settings, double t
     }
     if (!validate(out.effects, out.host.tau_limit).empty())
         out.effects = settings.effects;
+    const PassivityParams pcOnWire = roundedForWire(file.passivity);
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i) {
+        if (pcOnWire.field(i) != settings.passivity.field(i))
+            out.passivity.setField(i, settings.passivity.field(i));
+    }
     return out;
 }
 
@@ -49,6 +54,7 @@ bool ProfileParamStore::load(fw::StoredSettings &out)
     }
     out.params = read.profile->device;
     out.effects = read.profile->effects;
+    out.passivity = read.profile->passivity;
     return true;
 }
 
@@ -80,6 +86,7 @@ bool ProfileParamStore::save(const fw::StoredSettings &settings)
         profile.notes = QStringLiteral("Parameters saved by %1 (SAVE_PARAMS).").arg(m_owner);
         profile.device = settings.params;
         profile.effects = settings.effects;
+        profile.passivity = settings.passivity;
         profile.host.tau_limit = m_tauLimit;
     }
     const QString error = writeProfile(profile, m_path);
