@@ -6,47 +6,20 @@
 #include "profile/profile.h"
 #include "protocol/v2codec.h"
 #include "sim/simulateddevice.h"
+#include "simdevicehost.h"
 
 #include <QTemporaryDir>
 #include <QTest>
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
+using simdevicehost::Host;
 
 namespace {
 
-class Host
-{
-public:
-    explicit Host(const SimulatedDevice::Config &config) : device(config) {}
-    void send(quint8 seq, const v2::Message &message)
-    {
-        device.receive(v2::encodeFrame(seq, message));
-    }
-    template<typename T> std::optional<T> reply()
-    {
-        for (int i = 0; i < 20; ++i) {
-            QList<v2::Frame> frames;
-            decoder.feed(device.takeOutput(), frames);
-            for (const v2::Frame &f : frames) {
-                if (const auto *m = std::get_if<T>(&f.message))
-                    return *m;
-            }
-            device.advance(1e-3);
-        }
-        return std::nullopt;
-    }
-    SimulatedDevice device;
-    v2::FrameDecoder decoder{v2::Direction::FromDevice};
-};
-
 SimulatedDevice::Config idealConfig()
 {
-    SimulatedDevice::Config c;
-    c.ideal = true;
-    c.throttle = false;
-    c.hand = HandInput::parse(u"const:0.05"_s).value_or(HandInput{});
-    return c;
+    return simdevicehost::idealConfig(u"const:0.05"_s);
 }
 
 PassivityParams pc(double betaMax, double reserveMax)
