@@ -328,28 +328,41 @@ void TestTeleopLoop::unstableContactIsWarned()
 
 void TestTeleopLoop::passivityControllerHoldsDelayedContact_data()
 {
+    QTest::addColumn<int>("rosVersion");
     QTest::addColumn<double>("delay");
     QTest::addColumn<bool>("controllerOn");
     QTest::addColumn<double>("seconds");
     // On: settled within the run (docs/teleop.md's table: well under 10 s after contact).
     // Off: still swinging at its end.
-    QTest::newRow("150 ms, controller on") << 0.15 << true << 16.0;
-    QTest::newRow("150 ms, controller off") << 0.15 << false << 10.0;
-    QTest::newRow("300 ms, controller on") << 0.3 << true << 20.0;
-    QTest::newRow("300 ms, controller off") << 0.3 << false << 10.0;
+    QTest::newRow("150 ms, controller on") << 2 << 0.15 << true << 16.0;
+    QTest::newRow("150 ms, controller off") << 2 << 0.15 << false << 10.0;
+    QTest::newRow("300 ms, controller on") << 2 << 0.3 << true << 20.0;
+    QTest::newRow("300 ms, controller off") << 2 << 0.3 << false << 10.0;
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    QTest::newRow("ROS 1, 200 ms, controller on") << 1 << 0.2 << true << 18.0;
+#endif
 }
 
 void TestTeleopLoop::passivityControllerHoldsDelayedContact()
 {
+    QFETCH(int, rosVersion);
     QFETCH(double, delay);
     QFETCH(bool, controllerOn);
     QFETCH(double, seconds);
+    const ros::RosVersion version = rosVersion == 1 ? ros::RosVersion::Ros1 : ros::RosVersion::Ros2;
+#ifdef HATPIC_HAVE_ROS1_TESTS
+    if (version == ros::RosVersion::Ros1 && !m_core) {
+        m_core = std::make_unique<test::RosCore>();
+        QCOMPARE(m_core->start(), QString());
+        m_core->exportEnvironment();
+    }
+#endif
     const auto rest =
         robot::loopEquilibrium(DeviceParams{}, HostParams{}, kHand, kGain,
                                bridge::FeedbackSettings{}.limit, robot::RobotParams{});
     QVERIFY(rest.has_value());
     Loop loop;
-    const QString why = startLoop(loop, ros::RosVersion::Ros2, u"const:%1"_s.arg(kHand),
+    const QString why = startLoop(loop, version, u"const:%1"_s.arg(kHand),
                                   {u"--delay"_s, QString::number(delay)}, !controllerOn);
     QVERIFY2(why.isEmpty(), qPrintable(why));
     pause(seconds);
