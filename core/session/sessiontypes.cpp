@@ -75,6 +75,21 @@ QString describeEffectChange(const EffectParams &from, const EffectParams &to)
     return parts.join(QStringLiteral("; "));
 }
 
+QString describePassivityChange(const PassivityParams &from, const PassivityParams &to)
+{
+    QStringList parts;
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i) {
+        const double a = static_cast<float>(from.field(i));
+        const double b = static_cast<float>(to.field(i));
+        if (a != b) {
+            const std::string_view name = passivityFieldName(i);
+            parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
+                         compactNumberText(a) % u" → " % compactNumberText(b);
+        }
+    }
+    return parts.join(QStringLiteral("; "));
+}
+
 } // namespace
 
 QString describeTuningChange(const DeviceTuning &from, const DeviceTuning &to)
@@ -90,6 +105,12 @@ QString describeTuningChange(const DeviceTuning &from, const DeviceTuning &to)
                 describeEffectChange(from.effects.value_or(EffectParams{}), *to.effects);
             !e.isEmpty())
             parts << e;
+    }
+    if (to.passivity) {
+        if (const QString c =
+                describePassivityChange(from.passivity.value_or(PassivityParams{}), *to.passivity);
+            !c.isEmpty())
+            parts << c;
     }
     return parts.join(QStringLiteral("; "));
 }
@@ -130,6 +151,7 @@ void registerSessionMetaTypes()
     qRegisterMetaType<hatpic::DeviceTuning>();
     qRegisterMetaType<hatpic::HostParams>();
     qRegisterMetaType<hatpic::EffectParams>();
+    qRegisterMetaType<hatpic::PassivityParams>();
     qRegisterMetaType<hatpic::Vibration>();
 }
 
