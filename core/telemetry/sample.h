@@ -29,14 +29,14 @@ struct Sample
     //! τ_det + τ_wall + τ_vib rendered (effects.md) [N·m]; NaN when the device does not send it
     //! (legacy, or a v2 device without the effects capability): unknown, not zero.
     double tau_fx = 0;
-    //! τ_pc = −β·ω, the passivity controller's torque, and its reserve R (passivity.md)
-    //! [N·m, J]; NaN when the device does not send them (no passivity capability).
-    double tau_pc = 0;
-    double pc_reserve = 0;
     quint16 flags = 0; //!< device flags (low byte) | host flags (kFlag*)
     //! When the frame that carried it was decoded, on sampleClockNs(); 0 when not known
     //! (replay, offline simulation). Not recorded: it measures the host, not the knob [ns].
     qint64 arrival_ns = 0;
+    //! τ_pc = −β·ω, the passivity controller's torque, and its reserve R (passivity.md)
+    //! [N·m, J]; NaN when the device does not send them (no passivity capability).
+    double tau_pc = 0;
+    double pc_reserve = 0;
 };
 
 using SampleBatch = QList<Sample>;
