@@ -11,6 +11,7 @@
 #include "sim/simulatorhost.h"
 
 #include <QCoreApplication>
+#include <QFile>
 
 #include <cstdio>
 
@@ -67,6 +68,11 @@ int main(int argc, char *argv[])
                     "legacy).",
                     "N");
     const auto noThrottle = program.add("no-throttle", "Do not limit output to the baud rate.");
+    const auto cycleLog =
+        program.add("cycle-log",
+                    "Write every control cycle to FILE as CSV (t_s, theta, omega, tau, tau_ext, "
+                    "tau_pc, pc_reserve, tau_total): about 90 bytes a cycle.",
+                    "FILE");
     program.add(SharedOption::Hand);
     program.add(SharedOption::Seed, "Seed of the load-reading noise and of the faults.");
     program.add(SharedOption::State);
@@ -85,6 +91,26 @@ int main(int argc, char *argv[])
         return PtyProgram::kExitBadOptions;
 
     SimulatorHost host(config);
+    QFile log;
+    if (program.isSet(cycleLog)) {
+        log.setFileName(program.value(cycleLog));
+        if (!log.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+            program.printError(QStringLiteral("--cycle-log: cannot write %1: %2")
+                                   .arg(log.fileName(), log.errorString()));
+            return PtyProgram::kExitBadOptions;
+        }
+        log.write("t_s,theta,omega,tau,tau_ext,tau_pc,pc_reserve,tau_total\n");
+        host.device().setCycleObserver([&log](const SimulatedDevice::Cycle &c) {
+            QByteArray line;
+            for (const double v :
+                 {c.t, c.theta, c.omega, c.tau, c.tau_ext, c.tau_pc, c.pc_reserve, c.tau_total}) {
+                if (!line.isEmpty())
+                    line += ',';
+                line += QByteArray::number(v, 'g', 9);
+            }
+            log.write(line + '\n');
+        });
+    }
     for (const QString &warning : {host.device().stateWarning(), host.device().saveWarning()}) {
         if (!warning.isEmpty())
             program.printError(warning);
@@ -120,6 +146,8 @@ int main(int argc, char *argv[])
 
     const int code = app.exec();
     host.stop();
+    host.device().setCycleObserver({});
+    log.close();
     printFaults();
     return PtyProgram::exitCode(code);
 }

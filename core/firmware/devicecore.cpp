@@ -143,7 +143,7 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
         m_streamHz = 0;
         v2::HelloReply hello;
         hello.protocolVersion = v2::kProtocolVersion;
-        hello.capabilities = v2::kCapabilityEffects;
+        hello.capabilities = v2::kCapabilityEffects | v2::kCapabilityPassivity;
         hello.maxStreamHz = m_maxStreamHz;
         hello.deviceId = m_config.deviceId;
         hello.tauLimit = float(m_config.control.tauLimit);
@@ -203,6 +203,21 @@ template<typename T> std::size_t DeviceCore<T>::answer(const v2::Frame &frame)
     }
     if (std::holds_alternative<v2::GetEffects>(m))
         return reply(v2::Effects{m_effects});
+    if (const auto *set = std::get_if<v2::SetPassivity>(&m)) {
+        const PassivityParams block = roundedForWire(set->passivity);
+        const int field = firstViolatingField(block);
+        if (field >= 0)
+            return ack(v2::AckStatus::OutOfRange, std::uint8_t(field));
+        ControlInput input;
+        input.kind = ControlInput::Kind::Passivity;
+        input.passivity = block;
+        if (!m_toControl.push(input))
+            return 0;
+        m_passivity = block;
+        return ack(v2::AckStatus::Ok);
+    }
+    if (std::holds_alternative<v2::GetPassivity>(m))
+        return reply(v2::Passivity{m_passivity});
     if (const auto *vib = std::get_if<v2::Vibrate>(&m)) {
         const Vibration cue{vib->amplitude, vib->frequency, vib->duration};
         // a = 0 stops a cue whatever f and d say.
@@ -254,6 +269,8 @@ template<typename T> void DeviceCore<T>::sendTelemetry()
         tm.tau_ext = float(c.tau_ext);
         tm.flags = c.flags;
         tm.tau_fx = float(c.tau_fx);
+        tm.tau_pc = float(c.tau_pc);
+        tm.pc_reserve = float(c.pc_reserve);
         const std::size_t n = v2::encodeFrame(item.seq, tm, m_scratch);
         if (!m_host.write({m_scratch.data(), n}, HostPort::Traffic::Stream))
             m_telemetryDropped.fetch_add(1);

@@ -35,6 +35,12 @@ Profile merged(const Profile &file, const fw::StoredSettings &settings, double t
         out.effects = effects;
     if (!validate(out.effects, out.host.tau_limit).empty())
         out.host.tau_limit = shortestFloatDecimal(tauLimit);
+    const PassivityParams passivity = tidyPassivityParams(settings.passivity);
+    const PassivityParams pcOnWire = roundedForWire(file.passivity);
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i) {
+        if (pcOnWire.field(i) != settings.passivity.field(i))
+            out.passivity.setField(i, passivity.field(i));
+    }
     return out;
 }
 
@@ -57,6 +63,7 @@ bool ProfileParamStore::load(fw::StoredSettings &out)
     }
     out.params = read.profile->device;
     out.effects = read.profile->effects;
+    out.passivity = read.profile->passivity;
     return true;
 }
 
@@ -88,6 +95,7 @@ bool ProfileParamStore::save(const fw::StoredSettings &settings)
         profile.notes = QStringLiteral("Parameters saved by %1 (SAVE_PARAMS).").arg(m_owner);
         profile.device = tidyDeviceParams(settings.params);
         profile.effects = tidyEffectParams(settings.effects);
+        profile.passivity = tidyPassivityParams(settings.passivity);
         profile.host.tau_limit = shortestFloatDecimal(m_tauLimit);
     }
     const QString error = writeProfile(profile, m_path);

@@ -64,6 +64,14 @@ PassivityParams roundedForWire(const PassivityParams &params)
     return out;
 }
 
+PassivityParams tidyPassivityParams(const PassivityParams &params)
+{
+    PassivityParams tidy = params;
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i)
+        tidy.setField(i, shortestFloatDecimal(params.field(i)));
+    return tidy;
+}
+
 bool sameOnWire(const PassivityParams &a, const PassivityParams &b)
 {
     for (int i = 0; i < PassivityParams::kFieldCount; ++i) {

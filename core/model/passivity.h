@@ -44,6 +44,8 @@ int firstViolatingField(const PassivityParams &params);
 PassivityParams roundedForWire(const PassivityParams &params);
 //! True when both blocks are the same float32 fields.
 bool sameOnWire(const PassivityParams &a, const PassivityParams &b);
+//! tidyDeviceParams() (params.h) for the passivity block.
+PassivityParams tidyPassivityParams(const PassivityParams &params);
 
 //! The law of one control cycle (passivity.md, "Per control cycle"): the energy tank R and
 //! the damping β it asks of the admittance filter. Allocation-free, no exceptions.

@@ -225,6 +225,13 @@ QByteArray effectParamsJson(const EffectParams &effects, int indent)
     return writer.text();
 }
 
+QByteArray passivityParamsJson(const PassivityParams &passivity, int indent)
+{
+    JsonObjectWriter writer(indent);
+    addNumbers(writer, kPassivityFields, passivity);
+    return writer.text();
+}
+
 JsonObjectWriter hostParamsWriter(const HostParams &params, int indent)
 {
     // profile.md's order, the number fields between the others.
@@ -252,14 +259,34 @@ readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams 
     return present;
 }
 
+namespace {
+
+//! An optional block's object: a missing key keeps its value, unknown keys are warnings.
+template<typename Params, std::size_t N>
+std::array<bool, N> readBlock(const std::array<FieldSpec<Params>, N> &table,
+                              const QJsonObject &object, const QString &prefix, Params &params,
+                              QStringList &errors, QStringList &warnings)
+{
+    QStringList known;
+    const auto present = readNumbers(table, object, prefix, false, params, errors, known);
+    warnUnknownKeys(object, known, prefix, warnings);
+    return present;
+}
+
+} // namespace
+
 std::array<bool, EffectParams::kFieldCount>
 readEffectParams(const QJsonObject &object, const QString &prefix, EffectParams &effects,
                  QStringList &errors, QStringList &warnings)
 {
-    QStringList known;
-    const auto present = readNumbers(kEffectFields, object, prefix, false, effects, errors, known);
-    warnUnknownKeys(object, known, prefix, warnings);
-    return present;
+    return readBlock(kEffectFields, object, prefix, effects, errors, warnings);
+}
+
+std::array<bool, PassivityParams::kFieldCount>
+readPassivityParams(const QJsonObject &object, const QString &prefix, PassivityParams &passivity,
+                    QStringList &errors, QStringList &warnings)
+{
+    return readBlock(kPassivityFields, object, prefix, passivity, errors, warnings);
 }
 
 QStringList readHostParams(const QJsonObject &object, const QString &prefix, HostParams &params,

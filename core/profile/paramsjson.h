@@ -5,6 +5,7 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 
 #include <QByteArray>
 #include <QByteArrayList>
@@ -48,6 +49,8 @@ QByteArray deviceParamsJson(const DeviceParams &params, int indent);
 JsonObjectWriter deviceParamsWriter(const DeviceParams &params, int indent);
 //! The `effects` object (effects.md § 2): every field of the effect block, in wire order.
 QByteArray effectParamsJson(const EffectParams &effects, int indent);
+//! The `passivity` object (passivity.md): both fields of the controller's block, in wire order.
+QByteArray passivityParamsJson(const PassivityParams &passivity, int indent);
 //! The `host` object of profile.md: mode, v_max, ref_deadzone, tau_limit.
 QByteArray hostParamsJson(const HostParams &params, int indent);
 //! The same object still open, for a profile to add its `bridge` object after those keys.
@@ -67,6 +70,10 @@ readDeviceParams(const QJsonObject &object, const QString &prefix, DeviceParams 
 std::array<bool, EffectParams::kFieldCount>
 readEffectParams(const QJsonObject &object, const QString &prefix, EffectParams &effects,
                  QStringList &errors, QStringList &warnings);
+//! Reads a `passivity` object as readEffectParams() reads an `effects` object.
+std::array<bool, PassivityParams::kFieldCount>
+readPassivityParams(const QJsonObject &object, const QString &prefix, PassivityParams &passivity,
+                    QStringList &errors, QStringList &warnings);
 //! Reads a `host` object into `params` as readDeviceParams() does, except that a missing key is
 //! no error (it keeps its value). `otherKeys` are keys the caller reads itself (a profile's
 //! `bridge`), so no warning names them. Returns the names of the number fields that held

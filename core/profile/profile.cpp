@@ -46,6 +46,7 @@ constexpr std::array<PresetEntry, 5> kPresets = {{
 }};
 
 const QString kEffectsKey = QStringLiteral("effects");
+const QString kPassivityKey = QStringLiteral("passivity");
 
 // Checks format and version. Returns false when the document is not a profile this build can
 // read, in which case nothing else is examined.
@@ -107,7 +108,7 @@ void readDevice(const QJsonObject &root, DeviceParams &device, QStringList &erro
     for (int i = 0; i < DeviceParams::kFieldCount; ++i)
         device.setField(i, std::nan(""));
     const auto present = readDeviceParams(deviceValue.toObject(), QStringLiteral("device."), device,
-                                          errors, &warnings, {kEffectsKey});
+                                          errors, &warnings, {kEffectsKey, kPassivityKey});
 
     // Range and cross-field rules.
     for (const Violation &v : validate(device)) {
@@ -132,6 +133,26 @@ void readEffects(const QJsonObject &root, double tauLimit, EffectParams &effects
     }
     const auto present = readEffectParams(value.toObject(), prefix, effects, errors, warnings);
     for (const Violation &v : validate(effects, tauLimit)) {
+        if (v.index >= 0 && present[static_cast<std::size_t>(v.index)])
+            errors.append(prefix + QString::fromStdString(v.message()));
+    }
+}
+
+// device.passivity: optional, as device.effects; each missing key keeps its default.
+void readPassivity(const QJsonObject &root, PassivityParams &passivity, QStringList &errors,
+                   QStringList &warnings)
+{
+    const QJsonValue value = root.value(u"device").toObject().value(kPassivityKey);
+    if (value.isUndefined())
+        return;
+    const QString prefix = u"device."_s + kPassivityKey + u'.';
+    if (!value.isObject()) {
+        errors.append(u"device."_s + kPassivityKey + u": must be an object, got " +
+                      jsonValueText(value));
+        return;
+    }
+    const auto present = readPassivityParams(value.toObject(), prefix, passivity, errors, warnings);
+    for (const Violation &v : validate(passivity)) {
         if (v.index >= 0 && present[static_cast<std::size_t>(v.index)])
             errors.append(prefix + QString::fromStdString(v.message()));
     }
@@ -188,6 +209,9 @@ QByteArray deviceJson(const Profile &profile)
     const double tauLimit = profile.host.tau_limit;
     if (roundedForWire(profile.effects, tauLimit) != roundedForWire(EffectParams{}, tauLimit))
         writer.add("effects", effectParamsJson(profile.effects, 4));
+    // The same for the passivity block: written once it differs from the defaults.
+    if (!sameOnWire(profile.passivity, PassivityParams{}))
+        writer.add("passivity", passivityParamsJson(profile.passivity, 4));
     return writer.text();
 }
 
@@ -224,6 +248,7 @@ ProfileReadResult parseProfile(const QByteArray &json)
     readDevice(root, profile.device, result.errors, result.warnings);
     readHost(root, profile.host, profile.bridge, result.errors, result.warnings);
     readEffects(root, profile.host.tau_limit, profile.effects, result.errors, result.warnings);
+    readPassivity(root, profile.passivity, result.errors, result.warnings);
 
     if (result.errors.isEmpty())
         result.profile = profile;
@@ -266,6 +291,8 @@ QString writeProfile(const Profile &profile, const QString &path)
         problems.append(u"host." + QString::fromStdString(v.message()));
     for (const Violation &v : validate(profile.effects, profile.host.tau_limit))
         problems.append(u"device.effects." + QString::fromStdString(v.message()));
+    for (const Violation &v : validate(profile.passivity))
+        problems.append(u"device.passivity." + QString::fromStdString(v.message()));
     for (const std::string &problem : bridge::validate(profile.bridge))
         problems.append(u"host.bridge: " + QString::fromStdString(problem));
     if (const std::string problem =

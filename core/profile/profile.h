@@ -5,6 +5,7 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 
 #include <QByteArray>
 #include <QString>
@@ -26,6 +27,9 @@ struct Profile
     //! device.effects of the file; the defaults (which render nothing) when it has none. Last,
     //! so that aggregate initialisers written before it still mean what they meant.
     EffectParams effects{};
+    //! device.passivity of the file (passivity.md); the defaults (the controller on) when it
+    //! has none. After effects for the same reason.
+    PassivityParams passivity{};
 
     friend bool operator==(const Profile &, const Profile &) = default;
 };

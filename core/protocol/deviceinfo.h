@@ -37,6 +37,11 @@ struct DeviceInfo
     {
         return protocol == WireProtocol::V2 && (capabilities & v2::kCapabilityEffects) != 0;
     }
+    //! SET_PASSIVITY, GET_PASSIVITY and τ_pc, R in TELEMETRY (passivity.md).
+    bool hasPassivity() const
+    {
+        return protocol == WireProtocol::V2 && (capabilities & v2::kCapabilityPassivity) != 0;
+    }
 };
 
 //! Text a device sent, safe to print: printableText() (model/printabletext.h), the one rule for all

@@ -18,11 +18,14 @@ class Writer
 {
 public:
     explicit Writer(std::uint8_t *at) : m_at(at) {}
+    bool m_optionalsOpen = true; //!< no optional field absent so far
 
     template<typename F> void operator()(const F &field)
     {
         if constexpr (kIsOptionalField<F>) {
-            if (field)
+            // Sent only when every optional before it was: a receiver reads them in order.
+            m_optionalsOpen = m_optionalsOpen && field.has_value();
+            if (m_optionalsOpen)
                 (*this)(*field);
         } else if constexpr (kIsRestField<F>) {
             text(field.text.view(), 0);
@@ -139,11 +142,13 @@ struct PayloadSize
 {
     std::size_t bytes = 0;
     bool encodable = true;
+    bool optionalsOpen = true;
 
     template<typename F> void operator()(const F &field)
     {
         if constexpr (kIsOptionalField<F>) {
-            if (field)
+            optionalsOpen = optionalsOpen && field.has_value(); // as Writer
+            if (optionalsOpen)
                 bytes += fixedFieldBytes<typename F::value_type>();
         } else if constexpr (kIsRestField<F>) {
             encodable = encodable && !field.text.empty();

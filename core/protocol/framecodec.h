@@ -64,7 +64,8 @@ struct PayloadBounds
 {
     std::size_t min = 0;
     std::size_t max = 0;
-    bool valid = true; //!< false when a field follows an optional or Rest field
+    bool valid = true; //!< false when a field follows an optional or Rest field (an optional
+                       //!< may follow an optional)
 };
 
 //! The lengths T's fields() allow: fixed fields add to both bounds; an optional field lets the
@@ -74,13 +75,15 @@ template<typename T> constexpr PayloadBounds payloadBounds()
     PayloadBounds bounds;
     if constexpr (!std::is_empty_v<T>) {
         bool open = false;
+        bool openByOptional = false;
         T m{};
         auto visit = [&](const auto &field) {
             using F = std::remove_cvref_t<decltype(field)>;
-            bounds.valid = bounds.valid && !open;
+            bounds.valid = bounds.valid && (!open || (openByOptional && kIsOptionalField<F>));
             if constexpr (kIsOptionalField<F>) {
                 bounds.max = kMaxPayload;
                 open = true;
+                openByOptional = true;
             } else if constexpr (kIsRestField<F>) {
                 const std::size_t capacity = std::remove_cvref_t<decltype(field.text)>::capacity();
                 bounds.max = std::min(bounds.min + capacity, kMaxPayload);
@@ -98,13 +101,16 @@ template<typename T> constexpr PayloadBounds payloadBounds()
 
 constexpr std::size_t kTelemetryBytes = payloadBounds<Telemetry>().min; //!< without τ_fx
 constexpr std::size_t kTelemetryFxBytes = kTelemetryBytes + 4; //!< with τ_fx (effects.md § 3)
+//! With τ_fx, τ_pc and R (the passivity capability, passivity.md) [bytes].
+constexpr std::size_t kTelemetryPcBytes = kTelemetryFxBytes + 8;
 //! A TELEMETRY frame's length on the wire (COBS adds at most one byte here, plus the
-//! delimiter): 31 bytes, 35 with τ_fx [bytes].
-constexpr std::size_t telemetryWireBytes(bool withEffects)
+//! delimiter): 31 bytes, 35 with τ_fx, 43 with τ_pc and R too [bytes].
+constexpr std::size_t telemetryWireBytes(bool withEffects, bool withPassivity = false)
 {
-    return cobsMaxEncodedSize(kPacketOverhead +
-                              (withEffects ? kTelemetryFxBytes : kTelemetryBytes)) +
-           1;
+    const std::size_t payload = withPassivity ? kTelemetryPcBytes
+                                : withEffects ? kTelemetryFxBytes
+                                              : kTelemetryBytes;
+    return cobsMaxEncodedSize(kPacketOverhead + payload) + 1;
 }
 //! Largest frame on the wire: COBS of the largest packet plus the delimiter [bytes].
 constexpr std::size_t kMaxWireFrameBytes = cobsMaxEncodedSize(kPacketOverhead + kMaxPayload) + 1;
@@ -116,6 +122,8 @@ static_assert(payloadBounds<Vibrate>().min == 12 && payloadBounds<Vibrate>().max
 static_assert(kTelemetryBytes == 25 && payloadBounds<Telemetry>().max == kMaxPayload);
 static_assert(payloadBounds<Log>().min == 1 && payloadBounds<Log>().max == kMaxPayload);
 static_assert(telemetryWireBytes(false) == 31 && telemetryWireBytes(true) == 35);
+static_assert(telemetryWireBytes(true, true) == 43);
+static_assert(payloadBounds<SetPassivity>().min == 8 && payloadBounds<SetPassivity>().max == 8);
 
 //! A buffer that holds any one frame.
 using FrameBuffer = std::array<std::uint8_t, kMaxWireFrameBytes>;
@@ -136,7 +144,7 @@ std::size_t encodeFrame(std::uint8_t seq, const Message &message, std::span<std:
 //! Which side's messages a decoder accepts.
 enum class Direction {
     FromDevice, //!< host side: accepts 0x81…0xE0
-    FromHost,   //!< device side: accepts 0x01…0x0B
+    FromHost,   //!< device side: accepts 0x01…0x0D
 };
 
 enum class DropReason {

@@ -6,6 +6,7 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 #include "model/stiffness.h"
 
 #include <algorithm>
@@ -32,12 +33,15 @@ enum class MessageType : std::uint8_t {
     SetEffects = 0x09, //!< effects.md § 3
     GetEffects = 0x0A,
     Vibrate = 0x0B,
+    SetPassivity = 0x0C, //!< passivity.md (docs/protocol.md)
+    GetPassivity = 0x0D,
     // device → host
     HelloReply = 0x81,
     Params = 0x82,
     Ack = 0x83,
     Pong = 0x87,
     Effects = 0x8A,
+    Passivity = 0x8D,
     Telemetry = 0x90,
     Log = 0xE0,
 };
@@ -85,6 +89,9 @@ constexpr std::uint8_t zoneFlag(StiffnessZone zone)
 
 // HELLO_REPLY capability bits (its formerly reserved byte, effects.md § 3).
 constexpr std::uint8_t kCapabilityEffects = 0x01; //!< SET_EFFECTS, GET_EFFECTS, VIBRATE, τ_fx
+//! SET_PASSIVITY, GET_PASSIVITY, τ_pc and R in TELEMETRY (passivity.md). A device with it has
+//! the effects capability too (τ_pc follows τ_fx in TELEMETRY).
+constexpr std::uint8_t kCapabilityPassivity = 0x02;
 
 //! UTF-8 text of at most N bytes, stored inline. Assigning longer text cuts it at a character
 //! boundary, so a name never ends in half a character.
@@ -130,7 +137,8 @@ private:
 //   DeviceParams, EffectParams                         their fields in wire order, each an f32
 //   FixedText<N>                                       N bytes, NUL-padded; read up to a NUL
 //   Reserved                                           one byte: 0 when sent, ignored when read
-//   std::optional<T> (last)                            T when present; a receiver accepts a
+//   std::optional<T> (last; several may follow each other, each sent only after all before it)
+//                                                      T when present; a receiver accepts a
 //                                                      longer payload (up to kMaxPayload) and
 //                                                      reads T when its bytes are there
 //   Rest{text} (last)                                  the rest of the payload: 1…N bytes
@@ -211,6 +219,20 @@ struct SetEffects
     static constexpr void fields(auto &m, auto &v) { v(m.effects); }
     friend bool operator==(const SetEffects &, const SetEffects &) = default;
 };
+struct SetPassivity
+{
+    static constexpr MessageType kType = MessageType::SetPassivity;
+    static constexpr std::string_view kName = "SET_PASSIVITY";
+    PassivityParams passivity; //!< travels as 2 × f32
+    static constexpr void fields(auto &m, auto &v) { v(m.passivity); }
+    friend bool operator==(const SetPassivity &, const SetPassivity &) = default;
+};
+struct GetPassivity
+{
+    static constexpr MessageType kType = MessageType::GetPassivity;
+    static constexpr std::string_view kName = "GET_PASSIVITY";
+    friend bool operator==(const GetPassivity &, const GetPassivity &) = default;
+};
 struct GetEffects
 {
     static constexpr MessageType kType = MessageType::GetEffects;
@@ -271,6 +293,14 @@ struct Effects
     static constexpr void fields(auto &m, auto &v) { v(m.effects); }
     friend bool operator==(const Effects &, const Effects &) = default;
 };
+struct Passivity
+{
+    static constexpr MessageType kType = MessageType::Passivity;
+    static constexpr std::string_view kName = "PASSIVITY";
+    PassivityParams passivity; //!< travels as 2 × f32
+    static constexpr void fields(auto &m, auto &v) { v(m.passivity); }
+    friend bool operator==(const Passivity &, const Passivity &) = default;
+};
 struct Ack
 {
     static constexpr MessageType kType = MessageType::Ack;
@@ -309,6 +339,11 @@ struct Telemetry
     //! τ_det + τ_wall + τ_vib rendered this cycle [N·m]; only devices with the effects
     //! capability send it (a 29-byte TELEMETRY).
     std::optional<float> tau_fx;
+    //! τ_pc = −β·ω, the passivity controller's torque this cycle [N·m], and its reserve R
+    //! after the cycle [J]; only devices with the passivity capability send them, after
+    //! τ_fx (a 37-byte TELEMETRY).
+    std::optional<float> tau_pc;
+    std::optional<float> pc_reserve;
     static constexpr void fields(auto &m, auto &v)
     {
         v(m.t_us);
@@ -319,6 +354,8 @@ struct Telemetry
         v(m.tau_ext);
         v(m.flags);
         v(m.tau_fx);
+        v(m.tau_pc);
+        v(m.pc_reserve);
     }
     friend bool operator==(const Telemetry &, const Telemetry &) = default;
 };
@@ -343,9 +380,10 @@ struct Refused
 
 //! Every message, the one list of them: the decoder looks a wire type up among these (each
 //! `kType`), the encoder writes any of them. Refused, last, is what a receiver made of a frame.
-using Message = std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback, SaveParams, Ping,
-                             Zero, SetEffects, GetEffects, Vibrate, HelloReply, Params, Effects,
-                             Ack, Pong, Telemetry, Log, Refused>;
+using Message =
+    std::variant<Hello, GetParams, SetParams, SetStream, SetFeedback, SaveParams, Ping, Zero,
+                 SetEffects, GetEffects, Vibrate, SetPassivity, GetPassivity, HelloReply, Params,
+                 Effects, Passivity, Ack, Pong, Telemetry, Log, Refused>;
 
 //! The wire type of a message (Refused gives its original type).
 std::uint8_t messageType(const Message &message);

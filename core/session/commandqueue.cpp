@@ -38,6 +38,11 @@ QByteArray encode(const Command &cmd)
                                v2::SetEffects{cmd.tuning.effects.value_or(EffectParams{})});
     case CommandKind::GetEffects:
         return v2::encodeFrame(cmd.seq, v2::GetEffects{});
+    case CommandKind::SetPassivity:
+        return v2::encodeFrame(cmd.seq,
+                               v2::SetPassivity{cmd.tuning.passivity.value_or(PassivityParams{})});
+    case CommandKind::GetPassivity:
+        return v2::encodeFrame(cmd.seq, v2::GetPassivity{});
     case CommandKind::Vibrate:
         return v2::encodeFrame(cmd.seq, v2::Vibrate{static_cast<float>(cmd.vibration.amplitude),
                                                     static_cast<float>(cmd.vibration.frequency),
@@ -53,20 +58,28 @@ std::vector<CommandKind> stepsOf(const Command &cmd)
 {
     const bool params = cmd.tuning.params.has_value();
     const bool effects = cmd.tuning.effects.has_value();
+    const bool passivity = cmd.tuning.passivity.has_value();
     switch (cmd.kind) {
     case CommandKind::SetParams:
-    case CommandKind::SetEffects: {
+    case CommandKind::SetEffects:
+    case CommandKind::SetPassivity: {
         std::vector<CommandKind> steps;
         if (params)
             steps.insert(steps.end(), {CommandKind::SetParams, CommandKind::GetParams});
         if (effects)
             steps.insert(steps.end(), {CommandKind::SetEffects, CommandKind::GetEffects});
+        if (passivity)
+            steps.insert(steps.end(), {CommandKind::SetPassivity, CommandKind::GetPassivity});
         return steps;
     }
-    case CommandKind::GetParams: // the parameters, and the effects when it names them
+    case CommandKind::GetParams: { // the parameters, and the other blocks it names
+        std::vector<CommandKind> steps{CommandKind::GetParams};
         if (effects)
-            return {CommandKind::GetParams, CommandKind::GetEffects};
-        return {CommandKind::GetParams};
+            steps.push_back(CommandKind::GetEffects);
+        if (passivity)
+            steps.push_back(CommandKind::GetPassivity);
+        return steps;
+    }
     case CommandKind::Zero:
         return {CommandKind::Zero, CommandKind::GetParams};
     default:
@@ -78,7 +91,7 @@ std::vector<CommandKind> stepsOf(const Command &cmd)
 bool changes(CommandKind step)
 {
     return step == CommandKind::SetParams || step == CommandKind::SetEffects ||
-           step == CommandKind::Zero;
+           step == CommandKind::SetPassivity || step == CommandKind::Zero;
 }
 
 //! Fields of the block a step carries: an ACK's `field` beyond them names nothing.
@@ -89,6 +102,8 @@ int fieldCount(CommandKind kind)
         return DeviceParams::kFieldCount;
     case CommandKind::SetEffects:
         return EffectParams::kFieldCount;
+    case CommandKind::SetPassivity:
+        return PassivityParams::kFieldCount;
     case CommandKind::Vibrate:
         return 3; // a, f, d
     default:
@@ -201,8 +216,9 @@ void CommandQueue::onAck(const v2::Ack &ack)
     case CommandKind::Hello:
     case CommandKind::GetParams:
     case CommandKind::GetEffects:
-        // HELLO, GET_PARAMS and GET_EFFECTS are answered by their reply, not an ACK; an ACK
-        // here is a refusal (UNKNOWN_TYPE, BAD_LENGTH, …).
+    case CommandKind::GetPassivity:
+        // HELLO, GET_PARAMS, GET_EFFECTS and GET_PASSIVITY are answered by their reply, not an ACK;
+        // an ACK here is a refusal (UNKNOWN_TYPE, BAD_LENGTH, …).
         if (ack.status == v2::AckStatus::Ok)
             return;
         break;
@@ -240,6 +256,10 @@ void CommandQueue::onTuning(const DeviceTuning &told)
         cmd.received.effects = told.effects;
         if (afterChange)
             cmd.readBackMatches &= sameOnWire(*cmd.tuning.effects, *told.effects);
+    } else if (step == CommandKind::GetPassivity && told.passivity) {
+        cmd.received.passivity = told.passivity;
+        if (afterChange)
+            cmd.readBackMatches &= sameOnWire(*cmd.tuning.passivity, *told.passivity);
     } else {
         return;
     }

@@ -2,7 +2,8 @@
 // timeout (same bytes, same seq, so the device answers a retry without applying it twice), and
 // the answers matched to the command in flight. A command is the wire steps it takes, in order:
 // a push of a tuning is SET_PARAMS, GET_PARAMS (the read-back), then SET_EFFECTS, GET_EFFECTS
-// for its effect part; a read is GET_PARAMS (and GET_EFFECTS); ZERO is ZERO, GET_PARAMS. It
+// for its effect part, then SET_PASSIVITY, GET_PASSIVITY for its passivity part; a read is
+// GET_PARAMS (and GET_EFFECTS, GET_PASSIVITY); ZERO is ZERO, GET_PARAMS. It
 // finishes once, with what it sent and what it read.
 //
 // Writes through a function it is given; knows nothing of links, drivers or the session.

@@ -42,9 +42,10 @@ public:
 
     //! Commands; each returns a request id that commandFinished() reports back.
     //! Each part of `tuning` sent and read back (SET_PARAMS, GET_PARAMS, SET_EFFECTS,
-    //! GET_EFFECTS); its result carries what was sent and what the device holds.
+    //! GET_EFFECTS, SET_PASSIVITY, GET_PASSIVITY); its result carries what was sent and what the
+    //! device holds.
     quint64 pushTuning(const DeviceTuning &tuning);
-    quint64 readTuning();                        //!< GET_PARAMS (and GET_EFFECTS: effects)
+    quint64 readTuning();                        //!< GET_PARAMS (+ GET_EFFECTS, GET_PASSIVITY)
     quint64 zero();                              //!< ZERO, then GET_PARAMS
     quint64 saveParams();                        //!< SAVE_PARAMS
     quint64 setStreamRate(quint16 hz);           //!< SET_STREAM

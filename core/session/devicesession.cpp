@@ -340,8 +340,16 @@ void DeviceSession::onStatsTick()
 
 void DeviceSession::pushTuning(quint64 id, const DeviceTuning &tuning)
 {
-    Command cmd = command(id, tuning.params ? CommandKind::SetParams : CommandKind::SetEffects);
-    cmd.tuning = tuning;
+    // A device without the passivity capability is sent no passivity block: that part is
+    // dropped (the result's `sent` lacks it); a push of nothing else is refused (submit()).
+    DeviceTuning carried = tuning;
+    if (carried.passivity && m_driver && !m_info.hasPassivity() &&
+        (carried.params || carried.effects))
+        carried.passivity.reset();
+    Command cmd = command(id, carried.params    ? CommandKind::SetParams
+                              : carried.effects ? CommandKind::SetEffects
+                                                : CommandKind::SetPassivity);
+    cmd.tuning = carried;
     if (m_validate) {
         std::vector<Violation> violations;
         if (tuning.params)
@@ -351,6 +359,10 @@ void DeviceSession::pushTuning(quint64 id, const DeviceTuning &tuning)
             const auto more = validate(*tuning.effects, m_info.tauLimit);
             violations.insert(violations.end(), more.begin(), more.end());
         }
+        if (cmd.tuning.passivity) {
+            const auto more = validate(*cmd.tuning.passivity);
+            violations.insert(violations.end(), more.begin(), more.end());
+        }
         if (refuseInvalid(cmd, violations))
             return;
     }
@@ -358,6 +370,8 @@ void DeviceSession::pushTuning(quint64 id, const DeviceTuning &tuning)
         cmd.tuning.params = roundedForWire(*tuning.params);
     if (tuning.effects)
         cmd.tuning.effects = roundedForWire(*tuning.effects, m_info.tauLimit);
+    if (cmd.tuning.passivity)
+        cmd.tuning.passivity = roundedForWire(*cmd.tuning.passivity);
     submit(cmd);
 }
 
@@ -366,6 +380,8 @@ void DeviceSession::readTuning(quint64 id)
     Command cmd = command(id, CommandKind::GetParams);
     if (m_info.hasEffects())
         cmd.tuning.effects = EffectParams{};
+    if (m_info.hasPassivity())
+        cmd.tuning.passivity = PassivityParams{};
     submit(cmd);
 }
 
@@ -400,9 +416,12 @@ void DeviceSession::vibrate(quint64 id, const Vibration &vibration)
 
 Reason DeviceSession::refusal(const Command &cmd) const
 {
-    const Reason why = m_driver->refusal(cmd.kind);
-    return why != Reason::None || !cmd.tuning.effects ? why
-                                                      : m_driver->refusal(CommandKind::SetEffects);
+    Reason why = m_driver->refusal(cmd.kind);
+    if (why == Reason::None && cmd.tuning.effects)
+        why = m_driver->refusal(CommandKind::SetEffects);
+    if (why == Reason::None && cmd.tuning.passivity)
+        why = m_driver->refusal(CommandKind::SetPassivity);
+    return why;
 }
 
 bool DeviceSession::refuseInvalid(const Command &cmd, const std::vector<Violation> &violations)

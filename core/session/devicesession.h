@@ -45,9 +45,11 @@ public:
     void shutdown();
 
     //! Each part of `tuning` validated (the effects against the device's tau_limit), sent and
-    //! read back: SET_PARAMS, GET_PARAMS, then SET_EFFECTS, GET_EFFECTS. One result.
+    //! read back: SET_PARAMS, GET_PARAMS, then SET_EFFECTS, GET_EFFECTS, then SET_PASSIVITY,
+    //! GET_PASSIVITY. One result. A device without the passivity capability is sent no
+    //! passivity block: dropped beside other parts, refused alone (NoPassivityCapability).
     void pushTuning(quint64 id, const DeviceTuning &tuning);
-    //! GET_PARAMS, and GET_EFFECTS when the device renders effects. One result.
+    //! GET_PARAMS, and GET_EFFECTS / GET_PASSIVITY when the device has them. One result.
     void readTuning(quint64 id);
     void zero(quint64 id);
     void saveParams(quint64 id);

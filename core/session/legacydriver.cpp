@@ -59,6 +59,8 @@ CommandResult::Reason LegacyDriver::refusal(CommandKind kind) const
     // Host settings still apply; only the device side is fixed.
     if (isEffectCommand(kind))
         return CommandResult::Reason::NoEffects;
+    if (isPassivityCommand(kind))
+        return CommandResult::Reason::NoPassivityCapability;
     return kind == CommandKind::SetStream ? CommandResult::Reason::FixedRate
                                           : CommandResult::Reason::NoParameters;
 }

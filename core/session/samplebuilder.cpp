@@ -65,6 +65,9 @@ Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostU
     s.tau_fx =
         telemetry.tau_fx ? double(*telemetry.tau_fx) : std::numeric_limits<double>::quiet_NaN();
     const double fx = telemetry.tau_fx ? s.tau_fx : 0.0;
+    constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+    s.tau_pc = telemetry.tau_pc ? double(*telemetry.tau_pc) : unknown;
+    s.pc_reserve = telemetry.pc_reserve ? double(*telemetry.pc_reserve) : unknown;
     s.tau_total = std::clamp(s.tau_rec + fx + s.tau_ext, -m_tauLimit, m_tauLimit);
     s.flags = telemetry.flags;
     addReference(s);
@@ -85,6 +88,8 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     s.tau_rec = recenteringTorque(m_stiffness, s.theta);
     s.tau_ext = tauExt;
     s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // the published firmware has no effects
+    s.tau_pc = std::numeric_limits<double>::quiet_NaN(); // …and no passivity controller
+    s.pc_reserve = std::numeric_limits<double>::quiet_NaN();
     const double total = s.tau_rec + s.tau_ext;
     s.tau_total = std::clamp(total, -m_tauLimit, m_tauLimit);
     quint16 flags = kFlagModelEstimated | v2::zoneFlag(stiffnessZone(m_stiffness, s.theta));

@@ -41,7 +41,8 @@ void SamplePipeline::connectionStarted(const DeviceInfo &device)
     // carries every change against the parameters before it.
     m_gap->reconnected = true;
     m_gap->pending = {device.canSetParams() ? std::optional(DeviceParams{}) : std::nullopt,
-                      device.hasEffects() ? std::optional(EffectParams{}) : std::nullopt};
+                      device.hasEffects() ? std::optional(EffectParams{}) : std::nullopt,
+                      device.hasPassivity() ? std::optional(PassivityParams{}) : std::nullopt};
     m_gap->resumeBy.reset();
     m_gap->changes.clear();
     resumeIfReady();
@@ -68,7 +69,7 @@ void SamplePipeline::connectionEnded(const StateDetail &lost, bool reconnecting)
         return;
     }
     Gap gap;
-    gap.held = {m_builder.deviceParams(), m_device.effects};
+    gap.held = {m_builder.deviceParams(), m_device.effects, m_device.passivity};
     m_gap = gap;
     m_recording.suspend(m_recent.empty() ? 0.0 : m_recent.back().t_s, lost);
     Q_EMIT notice({SessionNotice::Kind::RecordingWaitsForDevice, {}});
@@ -166,19 +167,23 @@ void SamplePipeline::tuningApplied(CommandKind kind, const DeviceTuning &applied
     }
     if (m_armed && m_armed->trigger.plan().start == RecordingPlan::Start::NextPush)
         fire(m_recent.empty() ? std::nullopt : std::optional(m_recent.back().t_s));
-    m_recording.tuningApplied({m_builder.deviceParams(), m_device.effects}, applied);
+    m_recording.tuningApplied({m_builder.deviceParams(), m_device.effects, m_device.passivity},
+                              applied);
     if (applied.params)
         m_builder.setDeviceParams(*applied.params);
     if (applied.effects)
         m_device.effects = applied.effects;
+    if (applied.passivity)
+        m_device.passivity = applied.passivity;
 }
 
 void SamplePipeline::tuningReceived(const DeviceTuning &told)
 {
-    const DeviceTuning held{m_builder.deviceParams(), m_device.effects};
+    const DeviceTuning held{m_builder.deviceParams(), m_device.effects, m_device.passivity};
     // What this connection already knew and the device now tells differently.
     const DeviceTuning known{told.params && m_device.params ? told.params : std::nullopt,
-                             told.effects && m_device.effects ? told.effects : std::nullopt};
+                             told.effects && m_device.effects ? told.effects : std::nullopt,
+                             told.passivity && m_device.passivity ? told.passivity : std::nullopt};
     if (!sameOnWire(held.updatedBy(known), held)) {
         flush();
         m_recording.tuningReadBack(held, known);
@@ -187,12 +192,15 @@ void SamplePipeline::tuningReceived(const DeviceTuning &told)
     const DeviceTuning now =
         m_gap && m_gap->reconnected
             ? DeviceTuning{m_gap->pending.params ? told.params : std::nullopt,
-                           m_gap->pending.effects ? told.effects : std::nullopt}
+                           m_gap->pending.effects ? told.effects : std::nullopt,
+                           m_gap->pending.passivity ? told.passivity : std::nullopt}
             : DeviceTuning{};
     if (now != DeviceTuning{}) {
         DeviceTuning compared = now; // effects compared only when known at the loss
         if (!m_gap->held.effects)
             compared.effects.reset();
+        if (!m_gap->held.passivity)
+            compared.passivity.reset();
         flush();
         if (const QString change = describeTuningChange(m_gap->held, compared); !change.isEmpty())
             m_gap->changes << change;
@@ -200,6 +208,8 @@ void SamplePipeline::tuningReceived(const DeviceTuning &told)
             m_gap->pending.params.reset();
         if (now.effects)
             m_gap->pending.effects.reset();
+        if (now.passivity)
+            m_gap->pending.passivity.reset();
     }
     if (told.params)
         m_builder.setDeviceParams(*told.params);

@@ -86,14 +86,16 @@ QString describeParamChange(const DeviceParams &from, const DeviceParams &to)
     return parts.join(QStringLiteral("; "));
 }
 
-QString describeEffectChange(const EffectParams &from, const EffectParams &to)
+//! "name a → b" for each field of a block that differs as float32 (effects, passivity).
+template<typename Block>
+QString describeBlockChange(const Block &from, const Block &to, std::string_view (*fieldName)(int))
 {
     QStringList parts;
-    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
+    for (int i = 0; i < Block::kFieldCount; ++i) {
         const double a = static_cast<float>(from.field(i));
         const double b = static_cast<float>(to.field(i));
         if (a != b) {
-            const std::string_view name = effectFieldName(i);
+            const std::string_view name = fieldName(i);
             parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
                          compactNumberText(a) % u" → " % compactNumberText(b);
         }
@@ -112,10 +114,16 @@ QString describeTuningChange(const DeviceTuning &from, const DeviceTuning &to)
             parts << p;
     }
     if (to.effects) {
-        if (const QString e =
-                describeEffectChange(from.effects.value_or(EffectParams{}), *to.effects);
+        if (const QString e = describeBlockChange(from.effects.value_or(EffectParams{}),
+                                                  *to.effects, &effectFieldName);
             !e.isEmpty())
             parts << e;
+    }
+    if (to.passivity) {
+        if (const QString c = describeBlockChange(from.passivity.value_or(PassivityParams{}),
+                                                  *to.passivity, &passivityFieldName);
+            !c.isEmpty())
+            parts << c;
     }
     return parts.join(QStringLiteral("; "));
 }
@@ -156,6 +164,7 @@ void registerSessionMetaTypes()
     qRegisterMetaType<hatpic::DeviceTuning>();
     qRegisterMetaType<hatpic::HostParams>();
     qRegisterMetaType<hatpic::EffectParams>();
+    qRegisterMetaType<hatpic::PassivityParams>();
     qRegisterMetaType<hatpic::Vibration>();
 }
 

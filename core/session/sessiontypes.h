@@ -49,6 +49,11 @@ constexpr bool isEffectCommand(CommandKind kind)
     return kind == CommandKind::SetEffects || kind == CommandKind::GetEffects ||
            kind == CommandKind::Vibrate;
 }
+//! True for the commands only a device with the passivity capability takes (passivity.md).
+constexpr bool isPassivityCommand(CommandKind kind)
+{
+    return kind == CommandKind::SetPassivity || kind == CommandKind::GetPassivity;
+}
 //! The wire name: "SET_PARAMS", … (messages.h's kName).
 inline QString commandName(CommandKind kind)
 {
@@ -129,17 +134,18 @@ struct CommandResult
     //! The finer cause, where the status has several.
     enum class Reason {
         None,
-        ReadBackUnanswered,  //!< Ok: acknowledged, but the read-back went unanswered
-        NoDevice,            //!< NotConnected: no device was connected
-        Disconnected,        //!< NotConnected: the session was disconnected before the answer
-        ConnectionLost,      //!< NotConnected: the link was lost before the answer
-        DetectionFailed,     //!< NotConnected: detection gave up (only the session's HELLO)
-        NoParameters,        //!< Unsupported: the legacy firmware cannot send or take parameters
-        FixedRate,           //!< Unsupported: the legacy firmware streams at its own rate
-        NoEffects,           //!< Unsupported: the legacy firmware cannot render effects
-        NoEffectsCapability, //!< Unsupported: a v2 device without the effects capability bit
-        InvalidParams,       //!< Invalid: host-side validation refused; see problems
-        QueueFull,           //!< Invalid: `limit` commands were already waiting
+        ReadBackUnanswered,    //!< Ok: acknowledged, but the read-back went unanswered
+        NoDevice,              //!< NotConnected: no device was connected
+        Disconnected,          //!< NotConnected: the session was disconnected before the answer
+        ConnectionLost,        //!< NotConnected: the link was lost before the answer
+        DetectionFailed,       //!< NotConnected: detection gave up (only the session's HELLO)
+        NoParameters,          //!< Unsupported: the legacy firmware cannot send or take parameters
+        FixedRate,             //!< Unsupported: the legacy firmware streams at its own rate
+        NoEffects,             //!< Unsupported: the legacy firmware cannot render effects
+        NoEffectsCapability,   //!< Unsupported: a v2 device without the effects capability bit
+        NoPassivityCapability, //!< Unsupported: a device without the passivity capability bit
+        InvalidParams,         //!< Invalid: host-side validation refused; see problems
+        QueueFull,             //!< Invalid: `limit` commands were already waiting
     };
     Status status = Status::Ok;
     Reason reason = Reason::None;
@@ -149,7 +155,7 @@ struct CommandResult
     v2::AckStatus ackStatus = v2::AckStatus::Ok;
     int field = -1; //!< ParamBlock (effect block, VIBRATE) index the device named, or -1
     //! A read-back followed each change the command made (SET_PARAMS and ZERO: GET_PARAMS;
-    //! SET_EFFECTS: GET_EFFECTS)
+    //! SET_EFFECTS: GET_EFFECTS; SET_PASSIVITY: GET_PASSIVITY)
     bool readBack = false;
     bool readBackMatches = false; //!< …and it equals what was sent (ZERO's: always)
     DeviceTuning sent;            //!< a push: what was sent (float32-rounded), the parts it carried
@@ -233,4 +239,5 @@ Q_DECLARE_METATYPE(hatpic::DeviceParams)
 Q_DECLARE_METATYPE(hatpic::DeviceTuning)
 Q_DECLARE_METATYPE(hatpic::HostParams)
 Q_DECLARE_METATYPE(hatpic::EffectParams)
+Q_DECLARE_METATYPE(hatpic::PassivityParams)
 Q_DECLARE_METATYPE(hatpic::Vibration)

@@ -109,6 +109,10 @@ QString SessionWording::rejection(const CommandResult &r)
         return tr("The device rejected %1 (field %2): %3; its effects are unchanged.")
             .arg(QString::fromLatin1(effectFieldName(r.field)), number(r.field), status);
     }
+    if (r.command == CommandKind::SetPassivity) {
+        return tr("The device rejected %1 (field %2): %3; its passivity controller is unchanged.")
+            .arg(QString::fromLatin1(passivityFieldName(r.field)), number(r.field), status);
+    }
     if (r.command == CommandKind::Vibrate)
         return tr("The device rejected VIBRATE (field %1): %2.").arg(number(r.field), status);
     return tr("The device rejected %1 (field %2): %3; its parameters are unchanged.")
@@ -128,6 +132,10 @@ QString SessionWording::unsupported(const CommandResult &r)
     case Reason::NoEffectsCapability:
         return tr("%1 is not available: this device's firmware does not announce the effects "
                   "capability, so it cannot render effects.")
+            .arg(name);
+    case Reason::NoPassivityCapability:
+        return tr("%1 is not available: this device's firmware does not announce the passivity "
+                  "capability, so it has no passivity controller.")
             .arg(name);
     case Reason::FixedRate:
         return tr("%1 is not available: the device runs the published firmware (legacy "

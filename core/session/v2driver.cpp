@@ -43,10 +43,13 @@ V2Driver::~V2Driver() = default;
 
 void V2Driver::start()
 {
-    Command read; // the device's tuning: its parameters, and its effects when it has them
+    // The device's tuning: its parameters, and its effects and passivity block when it has them
+    Command read;
     read.kind = CommandKind::GetParams;
     if (m_info.hasEffects())
         read.tuning.effects = EffectParams{};
+    if (m_info.hasPassivity())
+        read.tuning.passivity = PassivityParams{};
     m_queue.enqueue(read);
     Command stream;
     stream.kind = CommandKind::SetStream;
@@ -91,9 +94,11 @@ void V2Driver::handleFrame(const v2::Frame &frame)
             else if constexpr (std::is_same_v<T, v2::Ack>)
                 m_queue.onAck(message);
             else if constexpr (std::is_same_v<T, v2::Params>)
-                handleTuning({message.params, std::nullopt});
+                handleTuning({message.params, std::nullopt, std::nullopt});
             else if constexpr (std::is_same_v<T, v2::Effects>)
-                handleTuning({std::nullopt, message.effects});
+                handleTuning({std::nullopt, message.effects, std::nullopt});
+            else if constexpr (std::is_same_v<T, v2::Passivity>)
+                handleTuning({std::nullopt, std::nullopt, message.passivity});
             else if constexpr (std::is_same_v<T, v2::Pong>)
                 m_links.ping.onPong(message.token);
             else if constexpr (std::is_same_v<T, v2::Log>)
@@ -111,13 +116,20 @@ void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &received)
     v2::Telemetry telemetry = received;
     if (!m_info.hasEffects())
         telemetry.tau_fx.reset();
+    // τ_pc and R likewise only from a device with the passivity capability (passivity.md).
+    if (!m_info.hasPassivity()) {
+        telemetry.tau_pc.reset();
+        telemetry.pc_reserve.reset();
+    }
     if (!m_links.statistics.countTelemetry(seq, telemetry.t_us))
         return;
     // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:
     // such a frame is counted and skipped, never integrated.
     if (!std::isfinite(telemetry.theta) || !std::isfinite(telemetry.omega) ||
         !std::isfinite(telemetry.tau) || !std::isfinite(telemetry.tau_rec) ||
-        !std::isfinite(telemetry.tau_ext) || !std::isfinite(telemetry.tau_fx.value_or(0.0f))) {
+        !std::isfinite(telemetry.tau_ext) || !std::isfinite(telemetry.tau_fx.value_or(0.0f)) ||
+        !std::isfinite(telemetry.tau_pc.value_or(0.0f)) ||
+        !std::isfinite(telemetry.pc_reserve.value_or(0.0f))) {
         m_links.statistics.countNonFinite();
         return;
     }
@@ -139,10 +151,14 @@ void V2Driver::onAcknowledged(const Command &command)
 {
     switch (command.stepKind()) {
     case CommandKind::SetParams:
-        m_pendingChange = PendingChange{CommandKind::SetParams, {command.tuning.params, {}}};
+        m_pendingChange = PendingChange{CommandKind::SetParams, {command.tuning.params, {}, {}}};
         return;
     case CommandKind::SetEffects:
-        m_pendingChange = PendingChange{CommandKind::SetEffects, {{}, command.tuning.effects}};
+        m_pendingChange = PendingChange{CommandKind::SetEffects, {{}, command.tuning.effects, {}}};
+        return;
+    case CommandKind::SetPassivity:
+        m_pendingChange =
+            PendingChange{CommandKind::SetPassivity, {{}, {}, command.tuning.passivity}};
         return;
     case CommandKind::Zero:
         m_pendingChange = PendingChange{CommandKind::Zero, {}};

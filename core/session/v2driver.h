@@ -43,9 +43,11 @@ public:
     bool sendPing(quint32 token) override;
     CommandResult::Reason refusal(CommandKind kind) const override
     {
-        return isEffectCommand(kind) && !m_info.hasEffects()
-                   ? CommandResult::Reason::NoEffectsCapability
-                   : CommandResult::Reason::None;
+        if (isEffectCommand(kind) && !m_info.hasEffects())
+            return CommandResult::Reason::NoEffectsCapability;
+        if (isPassivityCommand(kind) && !m_info.hasPassivity())
+            return CommandResult::Reason::NoPassivityCapability;
+        return CommandResult::Reason::None;
     }
     void hostParamsChanged(const HostParams &) override {}
     void close() override;
@@ -56,13 +58,13 @@ private:
     //! An acknowledged change, applied with the next sample (or the read-back).
     struct PendingChange
     {
-        CommandKind kind = CommandKind::SetParams; //!< SetParams, Zero or SetEffects
+        CommandKind kind = CommandKind::SetParams; //!< SetParams, Zero, SetEffects or SetPassivity
         DeviceTuning applied;                      //!< the part it sent
     };
 
     void handleFrame(const v2::Frame &frame);
     void handleTelemetry(quint8 seq, const v2::Telemetry &telemetry);
-    //! A PARAMS or EFFECTS: `told` has the part it carried.
+    //! A PARAMS, EFFECTS or PASSIVITY: `told` has the part it carried.
     void handleTuning(const DeviceTuning &told);
     void onAcknowledged(const Command &command);
     void applyPendingChange();

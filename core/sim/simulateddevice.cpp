@@ -108,6 +108,7 @@ public:
     }
 
     Config config;
+    std::function<void(const Cycle &)> cycleObserver;
     double rate = kDefaultControlRate; //!< control rate [Hz]
     double period = 1e-3;              //!< control period h [s]
     int subSteps = 10;                 //!< plant sub-steps per control cycle
@@ -252,8 +253,9 @@ int SimulatedDevice::Private::legacyTicks() const
 
 quint16 SimulatedDevice::Private::linkLimitedRate() const
 {
-    // The device core has the effects capability: its TELEMETRY carries τ_fx (35 bytes).
-    const double frames = double(uart.baud()) / 10.0 / double(v2::telemetryWireBytes(true));
+    // The device core has the effects and passivity capabilities: its TELEMETRY carries τ_fx,
+    // τ_pc and R (43 bytes).
+    const double frames = double(uart.baud()) / 10.0 / double(v2::telemetryWireBytes(true, true));
     return quint16(std::clamp(std::floor(frames), 0.0, 65535.0));
 }
 
@@ -354,6 +356,8 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
     runPlant(t);
     uart.transfer(period);
     last = c;
+    if (cycleObserver)
+        cycleObserver(c);
     return c;
 }
 
@@ -388,6 +392,11 @@ SimulatedDevice::Cycle SimulatedDevice::step()
 QByteArray SimulatedDevice::takeOutput()
 {
     return d->uart.take();
+}
+
+void SimulatedDevice::setCycleObserver(std::function<void(const Cycle &)> observer)
+{
+    d->cycleObserver = std::move(observer);
 }
 
 void SimulatedDevice::setHand(const HandInput &hand)

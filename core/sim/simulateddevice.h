@@ -20,6 +20,7 @@
 #include <QString>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <random>
 
@@ -99,6 +100,10 @@ public:
     Cycle step();
     //! Device → host bytes the emulated link has carried so far (bounded queue).
     QByteArray takeOutput();
+
+    //! Called with every control cycle once it has run, on the thread that runs the device
+    //! (hatpic-sim's --cycle-log). Empty: none.
+    void setCycleObserver(std::function<void(const Cycle &)> observer);
 
     void setHand(const HandInput &hand); //!< switch the operator input while running
     HandInput hand() const;

@@ -33,6 +33,10 @@ struct Sample
     //! When the frame that carried it was decoded, on sampleClockNs(); 0 when not known
     //! (replay, offline simulation). Not recorded: it measures the host, not the knob [ns].
     qint64 arrival_ns = 0;
+    //! τ_pc = −β·ω, the passivity controller's torque, and its reserve R (passivity.md)
+    //! [N·m, J]; NaN when the device does not send them (no passivity capability).
+    double tau_pc = 0;
+    double pc_reserve = 0;
 };
 
 using SampleBatch = QList<Sample>;

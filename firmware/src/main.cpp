@@ -61,7 +61,8 @@ static_assert(kControlRateHz >= fw::DeviceCore<float>::kMinControlRate);
 //! TELEMETRY frames per second the USB link carries: 35 bytes a frame (with τ_fx: the device
 //! has the effects capability), 10 bits a byte.
 constexpr std::uint16_t kLinkLimitHz = static_cast<std::uint16_t>(
-    esp32::UsbHostPort::kBaud / (10 * v2::telemetryWireBytes(/*withEffects=*/true)));
+    esp32::UsbHostPort::kBaud /
+    (10 * v2::telemetryWireBytes(/*withEffects=*/true, /*withPassivity=*/true)));
 
 fw::StsActuator<float>::Config actuatorConfig()
 {

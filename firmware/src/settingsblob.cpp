@@ -10,6 +10,8 @@ namespace {
 
 constexpr std::size_t kCrcOffset = kSettingsBlobBytes - 2;
 constexpr std::size_t kVersion1PayloadBytes = 4 * DeviceParams::kFieldCount;
+constexpr std::size_t kVersion2PayloadBytes =
+    4 * (DeviceParams::kFieldCount + EffectParams::kFieldCount);
 
 void putF32(std::uint8_t *at, double value)
 {
@@ -49,6 +51,8 @@ SettingsBlob encodeSettingsBlob(const fw::StoredSettings &settings)
         putF32(at, settings.params.field(i));
     for (int i = 0; i < EffectParams::kFieldCount; ++i, at += 4)
         putF32(at, settings.effects.field(i));
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i, at += 4)
+        putF32(at, settings.passivity.field(i));
     putU16(&blob[kCrcOffset], v2::crc16(std::span<const std::uint8_t>(blob).first(kCrcOffset)));
     return blob;
 }
@@ -60,6 +64,7 @@ bool decodeSettingsBlob(std::span<const std::uint8_t> bytes, fw::StoredSettings 
     const std::uint16_t version = getU16(&bytes[0]);
     const std::size_t payload = getU16(&bytes[2]);
     const bool known = (version == kSettingsBlobVersion && payload == kSettingsPayloadBytes) ||
+                       (version == 2 && payload == kVersion2PayloadBytes) ||
                        (version == 1 && payload == kVersion1PayloadBytes);
     if (!known || bytes.size() != 2 + 2 + payload + 2)
         return false;
@@ -73,6 +78,10 @@ bool decodeSettingsBlob(std::span<const std::uint8_t> bytes, fw::StoredSettings 
     if (version >= 2) {
         for (int i = 0; i < EffectParams::kFieldCount; ++i, at += 4)
             settings.effects.setField(i, getF32(at));
+    }
+    if (version >= 3) {
+        for (int i = 0; i < PassivityParams::kFieldCount; ++i, at += 4)
+            settings.passivity.setField(i, getF32(at));
     }
     out = settings;
     return true;

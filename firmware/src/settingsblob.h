@@ -15,11 +15,13 @@ namespace hatpic::esp32 {
 
 //! Layout version; a blob of another version is ignored (power-up then uses the defaults).
 //! Version 2 added the effect block (effects.md § 3); a version-1 blob (parameters only) is
-//! still read, with the effects at their defaults.
-inline constexpr std::uint16_t kSettingsBlobVersion = 2;
-//! 7 × f32 in ParamBlock order (protocol.md § 3), then 7 × f32 of the effect block [bytes].
+//! still read, with the effects at their defaults. Version 3 added the passivity block
+//! (passivity.md); older blobs are read with it at its defaults (the controller on).
+inline constexpr std::uint16_t kSettingsBlobVersion = 3;
+//! 7 × f32 in ParamBlock order (protocol.md § 3), 7 × f32 of the effect block, then 2 × f32
+//! of the passivity block [bytes].
 inline constexpr std::size_t kSettingsPayloadBytes =
-    4 * (DeviceParams::kFieldCount + EffectParams::kFieldCount);
+    4 * (DeviceParams::kFieldCount + EffectParams::kFieldCount + PassivityParams::kFieldCount);
 //! u16 version | u16 payload length | payload | u16 CRC-16/CCITT-FALSE of everything before it,
 //! all little-endian [bytes].
 inline constexpr std::size_t kSettingsBlobBytes = 2 + 2 + kSettingsPayloadBytes + 2;

@@ -238,6 +238,7 @@ struct LoopSetup
     double gain = 0.02;          //!< hatpic-bridge --gain on --component force.x [N·m/N]
     QStringList robotArguments;  //!< more for hatpic-robot-sim, e.g. {"--delay", "0.02"}
     QStringList bridgeArguments; //!< more for hatpic-bridge, e.g. {"--profile", FILE}
+    QStringList simArguments;    //!< more for hatpic-sim, e.g. {"--state", FILE}
     std::string nodeName = "hatpic_teleop_watcher";
     QString nameSpace; //!< --namespace of the bridge and the robot ("knob2"); empty: none
 };
@@ -266,7 +267,9 @@ inline QString startLoop(Loop &loop, const LoopSetup &setup)
         return u"the watching node: "_s + why;
 
     loop.sim = std::make_unique<Program>(setup.simPath);
-    if (!loop.sim->start({u"--hand"_s, setup.hand, u"--link"_s, setup.link}, setup.env))
+    if (!loop.sim->start(QStringList{u"--hand"_s, setup.hand, u"--link"_s, setup.link} +
+                             setup.simArguments,
+                         setup.env))
         return u"hatpic-sim did not start"_s;
     const double deadline = monotonic() + 10;
     while (!QFileInfo::exists(setup.link) && monotonic() < deadline)

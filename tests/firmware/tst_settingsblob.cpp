@@ -1,5 +1,6 @@
 // The ESP32's NVS record of SAVE_PARAMS (firmware/src/settingsblob.*): round trip of both
-// blocks, version 1 still read, and every damaged or foreign blob refused.
+// blocks (and the passivity block), versions 1 and 2 still read, and every damaged or foreign blob
+// refused.
 #include "settingsblob.h"
 
 #include "protocol/crc16.h"
@@ -27,6 +28,8 @@ fw::StoredSettings sample()
     s.params.N = double(0.1f);
     s.params.Q_dz = double(0.02f);
     s.effects.detent_spacing = double(0.2f);
+    s.passivity.pc_damping_max = 0.25;
+    s.passivity.pc_reserve_max = double(0.015f);
     return s;
 }
 
@@ -61,6 +64,24 @@ private Q_SLOTS:
         QVERIFY(decodeSettingsBlob(v1, out));
         QCOMPARE(out.params, in.params);
         QCOMPARE(out.effects, EffectParams{});
+    }
+
+    void versionTwoHasDefaultPassivity()
+    {
+        // A blob written before the passivity controller: version 2, no passivity block.
+        const fw::StoredSettings in = sample();
+        const SettingsBlob v3blob = encodeSettingsBlob(in);
+        std::vector<std::uint8_t> old(v3blob.begin(), v3blob.begin() + 4 + 56);
+        old[0] = 2;
+        old[2] = 56;
+        const std::uint16_t crc = v2::crc16(old);
+        old.push_back(std::uint8_t(crc));
+        old.push_back(std::uint8_t(crc >> 8));
+        fw::StoredSettings out;
+        QVERIFY(decodeSettingsBlob(old, out));
+        QCOMPARE(out.params, in.params);
+        QCOMPARE(out.effects, in.effects);
+        QCOMPARE(out.passivity, PassivityParams{});
     }
 
     void damagedBlobsAreRefused()

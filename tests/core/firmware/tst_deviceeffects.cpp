@@ -6,6 +6,7 @@
 #include "model/stiffness.h"
 #include "protocol/v2codec.h"
 #include "sim/simulateddevice.h"
+#include "simdevicehost.h"
 
 #include <QTest>
 
@@ -13,46 +14,10 @@
 #include <numbers>
 
 using namespace hatpic;
+using simdevicehost::Host;
+using simdevicehost::idealConfig;
 
 namespace {
-
-class Host
-{
-public:
-    explicit Host(const SimulatedDevice::Config &config) : device(config) {}
-    void send(quint8 seq, const v2::Message &message)
-    {
-        device.receive(v2::encodeFrame(seq, message));
-    }
-    QList<v2::Frame> take()
-    {
-        QList<v2::Frame> frames;
-        decoder.feed(device.takeOutput(), frames);
-        return frames;
-    }
-    template<typename T> std::optional<T> reply()
-    {
-        for (int i = 0; i < 20; ++i) {
-            for (const v2::Frame &f : take()) {
-                if (const auto *m = std::get_if<T>(&f.message))
-                    return *m;
-            }
-            device.advance(1e-3);
-        }
-        return std::nullopt;
-    }
-    SimulatedDevice device;
-    v2::FrameDecoder decoder{v2::Direction::FromDevice};
-};
-
-SimulatedDevice::Config idealConfig(const QString &hand = QStringLiteral("idle"))
-{
-    SimulatedDevice::Config c;
-    c.ideal = true;
-    c.throttle = false;
-    c.hand = HandInput::parse(hand).value_or(HandInput{});
-    return c;
-}
 
 EffectParams wallsAt(double half, double k)
 {

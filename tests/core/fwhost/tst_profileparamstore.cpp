@@ -38,7 +38,8 @@ Profile userProfile()
 //! The blocks as the device holds them after loading `p` (f32, ±π moved inside).
 fw::StoredSettings asDevice(const Profile &p)
 {
-    return {roundedToFloat(p.device), roundedForWire(p.effects, kTauLimit), PassivityParams{}};
+    return {roundedToFloat(p.device), roundedForWire(p.effects, kTauLimit),
+            roundedForWire(p.passivity)};
 }
 
 QByteArray contents(const QString &path)

@@ -178,6 +178,15 @@ private Q_SLOTS:
         QTest::newRow("TELEMETRY extremes") << 17 << Message(t) << 25;
         t.tau_fx = -0.0625f;
         QTest::newRow("TELEMETRY with tau_fx") << 22 << Message(t) << 29;
+        t.tau_pc = -0.003f;
+        t.pc_reserve = 0.015f;
+        QTest::newRow("TELEMETRY with tau_pc and R") << 28 << Message(t) << 37;
+        PassivityParams pc;
+        pc.pc_damping_max = 0.25;
+        pc.pc_reserve_max = double(0.02f);
+        QTest::newRow("SET_PASSIVITY") << 29 << Message(SetPassivity{pc}) << 8;
+        QTest::newRow("GET_PASSIVITY") << 30 << Message(GetPassivity{}) << 0;
+        QTest::newRow("PASSIVITY") << 31 << Message(Passivity{pc}) << 8;
         EffectParams fx;
         fx.detent_strength = 0.05;
         fx.detent_spacing = 0.2;
@@ -404,6 +413,9 @@ private Q_SLOTS:
         QTest::newRow("SAVE_PARAMS") << Message(SaveParams{}) << 0x06;
         QTest::newRow("PING") << Message(Ping{}) << 0x07;
         QTest::newRow("ZERO") << Message(Zero{}) << 0x08;
+        QTest::newRow("SET_PASSIVITY") << Message(SetPassivity{}) << 0x0C;
+        QTest::newRow("GET_PASSIVITY") << Message(GetPassivity{}) << 0x0D;
+        QTest::newRow("PASSIVITY") << Message(Passivity{}) << 0x8D;
         QTest::newRow("HELLO_REPLY") << Message(HelloReply{}) << 0x81;
         QTest::newRow("PARAMS") << Message(Params{}) << 0x82;
         QTest::newRow("ACK") << Message(Ack{}) << 0x83;

@@ -3,6 +3,8 @@
 
 #include <QTest>
 
+#include <bit>
+
 using namespace hatpic;
 using namespace hatpic::v2;
 using namespace Qt::StringLiterals;
@@ -252,7 +254,8 @@ private Q_SLOTS:
 
     void longerTelemetryIsRead()
     {
-        // 25 bytes: no τ_fx; 29: τ_fx; 33: τ_fx and 4 bytes a newer device added, ignored.
+        // 25 bytes: no τ_fx; 29: τ_fx; 41: τ_fx, τ_pc and R (the passivity capability) and 4
+        // bytes a newer device added, ignored.
         FrameDecoder decoder(Direction::FromDevice);
         Telemetry t;
         t.t_us = 1000;
@@ -265,13 +268,16 @@ private Q_SLOTS:
         {
             QByteArray p;
             QVERIFY(cobsDecode(QByteArrayView(withFx).chopped(1), p));
-            payload = p.mid(2, p.size() - 4) + QByteArray(4, '\x7f');
+            payload = p.mid(2, p.size() - 4) + QByteArray(12, '\x7f');
         }
         QList<Frame> frames;
         decoder.feed(QByteArray(base + withFx + encodePacket(0x90, 3, payload)), frames);
         QCOMPARE(frames.size(), 3);
         QVERIFY(!std::get<Telemetry>(frames[0].message).tau_fx);
         QCOMPARE(std::get<Telemetry>(frames[1].message), t);
+        const float f7f = std::bit_cast<float>(0x7f7f7f7fu);
+        t.tau_pc = f7f;
+        t.pc_reserve = f7f;
         QCOMPARE(std::get<Telemetry>(frames[2].message), t);
         QCOMPARE(decoder.stats().totalDropped(), quint64(0));
     }

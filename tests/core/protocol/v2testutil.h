@@ -143,11 +143,23 @@ inline QString randomText(QRandomGenerator &rng, int minBytes, int maxBytes)
     return text;
 }
 
+inline PassivityParams randomPassivity(QRandomGenerator &rng)
+{
+    PassivityParams p;
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i)
+        p.setField(i, double(randomFloat(rng)));
+    return p;
+}
+
 //! A random message travelling in `direction`.
 inline Message randomMessage(QRandomGenerator &rng, Direction direction)
 {
     if (direction == Direction::FromHost) {
-        switch (rng.bounded(11)) {
+        switch (rng.bounded(13)) {
+        case 11:
+            return SetPassivity{randomPassivity(rng)};
+        case 12:
+            return GetPassivity{};
         case 8: {
             EffectParams fx;
             for (int i = 0; i < EffectParams::kFieldCount; ++i)
@@ -176,7 +188,9 @@ inline Message randomMessage(QRandomGenerator &rng, Direction direction)
             return Zero{};
         }
     }
-    switch (rng.bounded(7)) {
+    switch (rng.bounded(8)) {
+    case 6:
+        return Passivity{randomPassivity(rng)};
     case 0: {
         HelloReply m;
         m.protocolVersion = quint8(rng.bounded(256));
@@ -207,8 +221,14 @@ inline Message randomMessage(QRandomGenerator &rng, Direction direction)
         m.tau_rec = randomFloat(rng);
         m.tau_ext = randomFloat(rng);
         m.flags = quint8(rng.bounded(16));
-        if (rng.bounded(2))
+        // The optional tail in order: τ_fx, then τ_pc and R (each only after all before it).
+        if (rng.bounded(2)) {
             m.tau_fx = randomFloat(rng);
+            if (rng.bounded(2)) {
+                m.tau_pc = randomFloat(rng);
+                m.pc_reserve = randomFloat(rng);
+            }
+        }
         return m;
     }
     case 5: {

@@ -280,12 +280,12 @@ void TestSimulatedDevice::setStreamClamps_data()
     QTest::addColumn<double>("rate");
     QTest::addColumn<int>("request");
     QTest::addColumn<int>("expected");
-    // 35 wire bytes per frame (TELEMETRY with τ_fx), 10 bits per byte.
-    QTest::newRow("115200 cannot carry 1 kHz") << 115200 << true << 1000.0 << 1000 << 329;
+    // 43 wire bytes per frame (TELEMETRY with τ_fx, τ_pc and R), 10 bits per byte.
+    QTest::newRow("115200 cannot carry 1 kHz") << 115200 << true << 1000.0 << 1000 << 267;
     QTest::newRow("115200 carries 200 Hz") << 115200 << true << 1000.0 << 200 << 200;
     QTest::newRow("921600 carries 1 kHz") << 921600 << true << 1000.0 << 1000 << 1000;
     QTest::newRow("921600 above max_stream_hz") << 921600 << true << 1000.0 << 5000 << 1000;
-    QTest::newRow("921600 at 5 kHz control") << 921600 << true << 5000.0 << 5000 << 2633;
+    QTest::newRow("921600 at 5 kHz control") << 921600 << true << 5000.0 << 5000 << 2143;
     QTest::newRow("no throttle: only max_stream_hz") << 115200 << false << 1000.0 << 1000 << 1000;
     QTest::newRow("zero stops") << 921600 << true << 1000.0 << 0 << 0;
     QTest::newRow("odd rate 333 Hz") << 921600 << true << 1000.0 << 333 << 333;
@@ -694,7 +694,8 @@ void TestSimulatedDevice::throttling()
     c.controlRateHz = 5000; // so that the stream alone can fill even the fastest link
     Host host(c);
     QCOMPARE(host.device.baud(), baud);
-    QCOMPARE(int(host.device.linkLimitedRate()), baud / 10 / 35); // TELEMETRY with τ_fx: 35 bytes
+    QCOMPARE(int(host.device.linkLimitedRate()),
+             baud / 10 / 43); // TELEMETRY with τ_fx, τ_pc, R: 43 bytes
     host.send(1, v2::SetStream{65535});
     // A burst of commands on top of the stream: far more reply bytes than the link carries.
     for (int i = 0; i < 3000; ++i)
@@ -718,7 +719,7 @@ void TestSimulatedDevice::fullQueueDropsTelemetryAsSeqGap()
     c.baud = 115200;
     c.ideal = true;
     Host host(c);
-    host.send(1, v2::SetStream{1000}); // clamped to 329/s: fits the link alone
+    host.send(1, v2::SetStream{1000}); // clamped to 267/s: fits the link alone
     for (int i = 0; i < 2000; ++i)     // ~10 KB of PONGs fill the 8 KiB TX queue
         host.send(quint8(i + 2), v2::Ping{quint32(i)});
     QList<quint8> seqs;
