@@ -48,8 +48,11 @@ QLabel *warningLabel(QWidget *parent, const QString &name)
     return label;
 }
 
-//! The warnings' own scroll area: as tall as its wrapped text wants at its width, shrinking to
-//! about two lines (then scrolling) when the editor is short, so the figures above are never cut
+//! Lines of warning text kept in sight at least: two warnings at the editor's usual width.
+constexpr int kWarningLines = 8;
+
+//! The warnings' own scroll area: as tall as its wrapped text wants at its width; more than
+//! kWarningLines (three warnings, a narrow editor) scroll, so the figures above are never cut
 //! (issue 27).
 class WarningsScroll : public QScrollArea
 {
@@ -73,7 +76,7 @@ public:
     QSize minimumSizeHint() const override
     {
         return {QScrollArea::minimumSizeHint().width(),
-                std::min(sizeHint().height(), 3 * fontMetrics().height())};
+                std::min(sizeHint().height(), kWarningLines * fontMetrics().height())};
     }
 
 protected:
@@ -149,6 +152,9 @@ DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
     m_warnings = new WarningsScroll(this);
     m_warnings->setObjectName(u"derivedWarnings"_s);
     m_warnings->setWidget(warnings);
+    // On the box's own background, as the warnings were before they could scroll.
+    warnings->setAutoFillBackground(false);
+    m_warnings->viewport()->setAutoFillBackground(false);
     m_warnings->hide();
 
     auto *layout = new QVBoxLayout(this);
