@@ -271,9 +271,12 @@ bool PlotFrame::fitTickCounts()
 
 int PlotFrame::fullLegendsHeight() const
 {
+    // A full legend sets its row's height: each row keeps room for three y ticks as well, or
+    // a tall legend would squeeze the other plots to a sliver.
     int height = 0;
     for (int i = 0; i < kPlotCount; ++i)
-        height += legendHeight(m_entries[i].size(), m_fullFont, kFullLook);
+        height +=
+            std::max(legendHeight(m_entries[i].size(), m_fullFont, kFullLook), 3 * kTickSpacing);
     // The time axis's labels sit under the last plot, beside no legend.
     return height + m_rects.back()->margins().bottom();
 }

@@ -93,7 +93,8 @@ private:
     bool fillLegends();
     //! Greys the entries of what is hidden.
     void colourLegends();
-    //! The height [px] the full legends take, stacked, with the time axis under them.
+    //! The height [px] the full legends take, stacked, each row at least three y ticks high,
+    //! with the time axis under them.
     int fullLegendsHeight() const;
 
     std::array<QCPAxisRect *, kPlotCount> m_rects{};
