@@ -7,6 +7,8 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QProgressBar>
+#include <QResizeEvent>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -46,11 +48,55 @@ QLabel *warningLabel(QWidget *parent, const QString &name)
     return label;
 }
 
+//! Lines of warning text kept in sight at least: two warnings at the editor's usual width.
+constexpr int kWarningLines = 8;
+
+//! The warnings' own scroll area: as tall as its wrapped text wants at its width; more than
+//! kWarningLines (three warnings, a narrow editor) scroll, so the figures above are never cut
+//! (issue 27).
+class WarningsScroll : public QScrollArea
+{
+public:
+    explicit WarningsScroll(QWidget *parent) : QScrollArea(parent)
+    {
+        setWidgetResizable(true);
+        setFrameShape(QFrame::NoFrame);
+        setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+    }
+
+    QSize sizeHint() const override
+    {
+        if (!widget())
+            return QScrollArea::sizeHint();
+        const int width = std::max(viewport()->width(), 100);
+        return {QScrollArea::sizeHint().width(), widget()->heightForWidth(width)};
+    }
+
+    QSize minimumSizeHint() const override
+    {
+        return {QScrollArea::minimumSizeHint().width(),
+                std::min(sizeHint().height(), kWarningLines * fontMetrics().height())};
+    }
+
+protected:
+    void resizeEvent(QResizeEvent *event) override
+    {
+        QScrollArea::resizeEvent(event);
+        if (event->size().width() != event->oldSize().width())
+            updateGeometry(); // the wrapped text's height follows the width
+    }
+};
+
 } // namespace
 
 DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
 {
-    auto *form = new QGridLayout;
+    // The figures at their full height always; the warnings below take what is left.
+    auto *figures = new QWidget(this);
+    figures->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    auto *form = new QGridLayout(figures);
+    form->setContentsMargins(0, 0, 0, 0);
 
     m_omega = valueLabel(this, u"figure_omega_n"_s,
                          tr("Natural frequency √(K_max / D_adm) of the admittance filter with the "
@@ -94,16 +140,27 @@ DerivedFiguresView::DerivedFiguresView(QWidget *parent) : QWidget(parent)
     form->setColumnStretch(3, 1);
     form->setVerticalSpacing(2);
 
-    m_saturation = warningLabel(this, u"warning_saturation"_s);
-    m_ringing = warningLabel(this, u"warning_ringing"_s);
-    m_chatter = warningLabel(this, u"warning_chatter"_s);
+    auto *warnings = new QWidget;
+    m_saturation = warningLabel(warnings, u"warning_saturation"_s);
+    m_ringing = warningLabel(warnings, u"warning_ringing"_s);
+    m_chatter = warningLabel(warnings, u"warning_chatter"_s);
+    auto *warningLayout = new QVBoxLayout(warnings);
+    warningLayout->setContentsMargins(0, 0, 0, 0);
+    warningLayout->addWidget(m_saturation);
+    warningLayout->addWidget(m_ringing);
+    warningLayout->addWidget(m_chatter);
+    m_warnings = new WarningsScroll(this);
+    m_warnings->setObjectName(u"derivedWarnings"_s);
+    m_warnings->setWidget(warnings);
+    // On the box's own background, as the warnings were before they could scroll.
+    warnings->setAutoFillBackground(false);
+    m_warnings->viewport()->setAutoFillBackground(false);
+    m_warnings->hide();
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addLayout(form);
-    layout->addWidget(m_saturation);
-    layout->addWidget(m_ringing);
-    layout->addWidget(m_chatter);
+    layout->addWidget(figures);
+    layout->addWidget(m_warnings);
     applyPalette();
     refresh();
 }
@@ -161,12 +218,19 @@ bool DerivedFiguresView::isShowingChatter() const
 void DerivedFiguresView::setChatter(std::optional<double> frequency, double jump)
 {
     m_chatter->setVisible(frequency.has_value());
-    if (!frequency)
-        return;
-    m_chatter->setText(tr("⚠ Chatters: the knob crosses the dead-zone edge back and forth "
-                          "about %1 times a second. The torque jumps by K_max·Q_dz = %2 N·m "
-                          "there, more than the hand holds. Lower K_max or Q_dz.")
-                           .arg(num(*frequency, 2), num(jump)));
+    if (frequency) {
+        m_chatter->setText(tr("⚠ Chatters: the knob crosses the dead-zone edge back and forth "
+                              "about %1 times a second. The torque jumps by K_max·Q_dz = %2 N·m "
+                              "there, more than the hand holds. Lower K_max or Q_dz.")
+                               .arg(num(*frequency, 2), num(jump)));
+    }
+    showWarnings();
+}
+
+void DerivedFiguresView::showWarnings()
+{
+    m_warnings->setVisible(isShowingSaturation() || isShowingRinging() || isShowingChatter());
+    m_warnings->updateGeometry();
 }
 
 QString DerivedFiguresView::warningText() const
@@ -194,6 +258,7 @@ void DerivedFiguresView::refresh()
         m_peakPercent->clear();
         m_saturation->hide();
         m_ringing->hide();
+        showWarnings();
         return;
     }
 
@@ -236,6 +301,7 @@ void DerivedFiguresView::refresh()
                               "lower D_adm (inertia) or K_max.")
                                .arg(num(f.zeta), num(DerivedFigures::kRingingZeta)));
     }
+    showWarnings();
 }
 
 } // namespace hatpic

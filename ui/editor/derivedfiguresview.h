@@ -10,6 +10,7 @@
 
 class QLabel;
 class QProgressBar;
+class QScrollArea;
 
 namespace hatpic {
 
@@ -37,6 +38,7 @@ protected:
 
 private:
     void refresh();
+    void showWarnings(); //!< the warnings' area only while one shows, sized to them
     void applyPalette(); //!< the warnings' look from the current palette
 
     DerivedFigures m_figures;
@@ -51,6 +53,7 @@ private:
     QLabel *m_saturation = nullptr;
     QLabel *m_ringing = nullptr;
     QLabel *m_chatter = nullptr;
+    QScrollArea *m_warnings = nullptr; //!< the three warnings, scrolling when the editor is short
 };
 
 } // namespace hatpic

@@ -41,6 +41,28 @@ void fit(QCPAxis *axis, double lo, double hi, double minSpan)
 }
 
 constexpr int kLegendWidth = 200; //!< [px] at least, fixed so that changing values do not reflow
+constexpr double kCompactFontScale = 0.85; //!< a compact legend's font against the full one
+
+//! A legend's margins, row spacing and its entries' margins, full or compact. Each entry keeps
+//! room below its text: the legend clips an entry to its rect, which would cut the "_".
+struct LegendLook
+{
+    QMargins margins;
+    int rowSpacing;
+    QMargins entry;
+};
+constexpr LegendLook kFullLook{{6, 8, 4, 4}, 2, {2, 1, 2, 3}};
+constexpr LegendLook kCompactLook{{6, 2, 4, 2}, 0, {2, 0, 2, 2}};
+
+//! The height [px] a legend of `entries` entries in `font` takes with `look`.
+int legendHeight(qsizetype entries, const QFont &font, const LegendLook &look)
+{
+    if (entries == 0)
+        return 0;
+    const int line = QFontMetrics(font).height() + look.entry.top() + look.entry.bottom();
+    return look.margins.top() + look.margins.bottom() + static_cast<int>(entries) * line +
+           static_cast<int>(entries - 1) * look.rowSpacing;
+}
 
 } // namespace
 
@@ -80,8 +102,6 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
         legend->setBrush(Qt::NoBrush);
         legend->setMinimumSize(kLegendWidth, 0);
         legend->setMaximumSize(kLegendWidth, QWIDGETSIZE_MAX);
-        legend->setMargins(QMargins(6, 8, 4, 4));
-        legend->setRowSpacing(2);
         legend->setIconSize(18, 10);
         m_legends[i] = legend;
 
@@ -133,16 +153,13 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
         key->setPen(Qt::NoPen);
         key->setBrush(QColor(color.red(), color.green(), color.blue(), 140));
         key->removeFromLegend();
-        key->addToLegend(legend(PlotKind::Angle));
+        m_entries[static_cast<int>(PlotKind::Angle)].append(key);
         return key;
     };
     m_deadZoneKey = makeKey(tr("dead zone ±Q_dz"), palette::kDeadZone);
     m_notchKey = makeKey(tr("notch band ±N"), palette::kNotch);
-    // Room below the text: the legend clips each item to its rect, which would cut the "_".
-    for (QCPLegend *legend : m_legends) {
-        for (int k = 0; k < legend->itemCount(); ++k)
-            legend->item(k)->setMargins(QMargins(2, 1, 2, 3));
-    }
+    m_fullFont = m_legends[0]->font();
+    fillLegends();
 
     // Ranges that make sense before any data arrive (autoscale takes over with the data).
     rect(PlotKind::Angle)->axis(QCPAxis::atLeft)->setRange(-0.5, 0.5);
@@ -163,7 +180,7 @@ void PlotFrame::addGraph(Channel channel, PlotKind plot, bool rightAxis)
     g->setPen(QPen(palette::channel(channel), 1.0));
     g->setAdaptiveSampling(false); // the Decimator already reduced the data to the pixels
     g->removeFromLegend();
-    g->addToLegend(legend(plot));
+    m_entries[static_cast<int>(plot)].append(g);
     m_graphs[channelIndex(channel)] = g;
 }
 
@@ -237,13 +254,91 @@ void PlotFrame::autoscale(const std::array<DecimationResult, kChannelCount> &ran
         kMinSpan[2] * units.scale(Channel::PRef));
 }
 
-void PlotFrame::fitTickCounts()
+bool PlotFrame::fitTickCounts()
 {
+    bool changed = false;
     for (QCPAxisRect *r : m_rects) {
         const int ticks = std::clamp(r->height() / kTickSpacing, 2, 5);
         for (QCPAxis *y : {r->axis(QCPAxis::atLeft), r->axis(QCPAxis::atRight)}) {
-            if (y->ticker()->tickCount() != ticks)
+            if (y->ticker()->tickCount() != ticks) {
                 y->ticker()->setTickCount(ticks);
+                changed = true;
+            }
+        }
+    }
+    return changed;
+}
+
+int PlotFrame::fullLegendsHeight() const
+{
+    // A full legend sets its row's height: each row keeps room for three y ticks as well, or
+    // a tall legend would squeeze the other plots to a sliver.
+    int height = 0;
+    for (int i = 0; i < kPlotCount; ++i)
+        height +=
+            std::max(legendHeight(m_entries[i].size(), m_fullFont, kFullLook), 3 * kTickSpacing);
+    // The time axis's labels sit under the last plot, beside no legend.
+    return height + m_rects.back()->margins().bottom();
+}
+
+bool PlotFrame::fitLegends(int plotHeight)
+{
+    m_compact = plotHeight < fullLegendsHeight();
+    return fillLegends();
+}
+
+bool PlotFrame::isShown(const QCPAbstractPlottable *p) const
+{
+    return isBandKey(p) ? m_bandsVisible : p->visible();
+}
+
+bool PlotFrame::fillLegends()
+{
+    quint64 members = m_compact ? 1 : 0;
+    int bit = 1;
+    for (const auto &entries : m_entries) {
+        for (const QCPAbstractPlottable *p : entries) {
+            if (!m_compact || isShown(p))
+                members |= quint64{1} << bit;
+            ++bit;
+        }
+    }
+    if (members == m_filled)
+        return false;
+    m_filled = members;
+
+    const LegendLook &look = m_compact ? kCompactLook : kFullLook;
+    QFont font = m_fullFont;
+    if (m_compact)
+        font.setPointSizeF(font.pointSizeF() * kCompactFontScale);
+    bit = 1;
+    for (int i = 0; i < kPlotCount; ++i) {
+        QCPLegend *legend = m_legends[i];
+        legend->clearItems();
+        legend->setFont(font);
+        legend->setMargins(look.margins);
+        legend->setRowSpacing(look.rowSpacing);
+        for (QCPAbstractPlottable *p : m_entries[i]) {
+            if (members & (quint64{1} << bit++))
+                p->addToLegend(legend);
+        }
+        for (int k = 0; k < legend->itemCount(); ++k)
+            legend->item(k)->setMargins(look.entry);
+    }
+    colourLegends();
+    return true;
+}
+
+void PlotFrame::colourLegends()
+{
+    for (QCPLegend *legend : m_legends) {
+        for (int k = 0; k < legend->itemCount(); ++k) {
+            auto *item = qobject_cast<QCPPlottableLegendItem *>(legend->item(k));
+            if (!item)
+                continue;
+            item->setTextColor(isShown(item->plottable())
+                                   ? legend->parentPlot()->palette().color(QPalette::Text)
+                                   : plottheme::kHiddenLegendText);
         }
     }
 }
@@ -281,17 +376,9 @@ void PlotFrame::updateLegends(const SampleBuffer *source, qsizetype index,
             name += u"  " % units.format(channel, source->value(channel, index));
         g->setName(name);
     }
-    for (QCPLegend *legend : m_legends) {
-        for (int k = 0; k < legend->itemCount(); ++k) {
-            auto *item = qobject_cast<QCPPlottableLegendItem *>(legend->item(k));
-            if (!item)
-                continue;
-            const QCPAbstractPlottable *p = item->plottable();
-            const bool on = isBandKey(p) ? bandsVisible : p->visible();
-            item->setTextColor(on ? legend->parentPlot()->palette().color(QPalette::Text)
-                                  : plottheme::kHiddenLegendText);
-        }
-    }
+    m_bandsVisible = bandsVisible;
+    if (!fillLegends()) // a series shown or hidden comes in or out of a compact legend
+        colourLegends();
 }
 
 } // namespace hatpic

@@ -11,6 +11,8 @@
 #include "plots/decimator.h"
 
 #include <QCoreApplication>
+#include <QFont>
+#include <QList>
 
 #include <array>
 #include <optional>
@@ -56,8 +58,16 @@ public:
     //! many ticks as their plot's height holds at this spacing, so labels never print over
     //! each other in a short plot (issue 27).
     static constexpr int kTickSpacing = 26;
-    //! Fits the y axes' tick counts to the plots' heights (done after every layout).
-    void fitTickCounts();
+    //! Fits the y axes' tick counts to the plots' heights (done after every layout); true
+    //! when a count changed (the next layout uses it).
+    bool fitTickCounts();
+
+    //! Fits the legends to the plots' height `plotHeight` [px] (done after every layout): when
+    //! the full legends do not fit beside their plots they go compact (a smaller font, tighter
+    //! rows, the entries of hidden series left out) rather than clipping their entries
+    //! (issue 27: a bottom panel squeezed "τ_rec" to "τ rec"). True when they changed.
+    bool fitLegends(int plotHeight);
+    bool hasCompactLegends() const { return m_compact; }
 
     //! Axis labels with the units of `units` ("θ [°]", "v_ref [m/s]", …).
     void setAxisLabels(const DisplayUnits &units);
@@ -76,6 +86,16 @@ public:
 
 private:
     void addGraph(Channel channel, PlotKind plot, bool rightAxis);
+    //! Whether `p`, an entry of a legend, shows now (a band key while the bands do).
+    bool isShown(const QCPAbstractPlottable *p) const;
+    //! Puts in each legend, in their order, the entries that belong there in the current mode;
+    //! true when that changed them.
+    bool fillLegends();
+    //! Greys the entries of what is hidden.
+    void colourLegends();
+    //! The height [px] the full legends take, stacked, each row at least three y ticks high,
+    //! with the time axis under them.
+    int fullLegendsHeight() const;
 
     std::array<QCPAxisRect *, kPlotCount> m_rects{};
     std::array<QCPLegend *, kPlotCount> m_legends{};
@@ -83,6 +103,12 @@ private:
     std::array<QCPGraph *, kChannelCount> m_graphs{};
     QCPGraph *m_deadZoneKey = nullptr; //!< legend entries of the bands (no data)
     QCPGraph *m_notchKey = nullptr;
+    //! Each legend's entries in their order, shown or not (compact legends leave some out).
+    std::array<QList<QCPAbstractPlottable *>, kPlotCount> m_entries;
+    QFont m_fullFont; //!< the legends' font when not compact
+    bool m_compact = false;
+    bool m_bandsVisible = true;
+    quint64 m_filled = ~quint64{0}; //!< the entries in the legends now, one bit each
 };
 
 } // namespace hatpic

@@ -55,9 +55,16 @@ void PlotPanel::buildPlots()
             connect(y, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), this,
                     [this] { m_replotNeeded = true; });
     }
-    // After every layout: as many y ticks as each plot's height holds (issue 27: a bottom
-    // panel squeezed the plots until tick labels printed over each other).
-    connect(m_plot, &QCustomPlot::afterLayout, this, [this] { m_frame->fitTickCounts(); });
+    // After every layout: as many y ticks as each plot's height holds, and legends that fit
+    // beside their plots (issue 27: a bottom panel squeezed the plots until tick labels printed
+    // over each other and legend entries clipped). Ticks and legends are laid out before this
+    // signal, so a change is drawn by one more replot.
+    connect(m_plot, &QCustomPlot::afterLayout, this, [this] {
+        const bool ticks = m_frame->fitTickCounts();
+        const bool legends = m_frame->fitLegends(m_plot->height());
+        if (ticks || legends)
+            m_plot->replot(QCustomPlot::rpQueuedReplot);
+    });
     m_overlays = std::make_unique<PlotOverlays>(m_plot, m_frame->rects());
     m_ghost = std::make_unique<PlotGhost>(*m_frame);
     m_measure = new MeasureCursors(this);

@@ -92,6 +92,8 @@ private Q_SLOTS:
     void livePushRateLimited();
     void derivedFiguresWarn_data();
     void derivedFiguresWarn();
+    void warningsNeverCutTheFigures_data();
+    void warningsNeverCutTheFigures();
     void degreesChangeOnlyTheDisplay();
     void hostFieldsEdit();
     void tauLimitFromDevice();
@@ -783,6 +785,58 @@ void TestParameterEditor::derivedFiguresWarn()
     QCOMPARE(editor.derivedFiguresView()->isShowingRinging(), rings);
     if (rings)
         QVERIFY(editor.derivedFiguresView()->warningText().contains(u"ζ"_s));
+}
+
+void TestParameterEditor::warningsNeverCutTheFigures_data()
+{
+    QTest::addColumn<QSize>("size");
+    // The editor dock's narrowest width at 1280×720 with a bottom panel open, and roomier.
+    QTest::newRow("420×460") << QSize(420, 460);
+    QTest::newRow("420×320") << QSize(420, 320);
+    QTest::newRow("600×700") << QSize(600, 700);
+}
+
+void TestParameterEditor::warningsNeverCutTheFigures()
+{
+    // Issue 27: with all three warnings up, the figures above them were squeezed and cut.
+    QFETCH(QSize, size);
+    ParameterEditor editor;
+    editor.resize(size);
+    spin(editor, u"K_max"_s)->setValue(5.0); // saturates and rings
+    editor.derivedFiguresView()->setChatter(12.0, 0.5);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QCoreApplication::processEvents();
+    QVERIFY(editor.derivedFiguresView()->isShowingSaturation());
+    QVERIFY(editor.derivedFiguresView()->isShowingRinging());
+    QVERIFY(editor.derivedFiguresView()->isShowingChatter());
+    for (const QString &name : {u"figure_omega_n"_s, u"figure_zeta"_s, u"figure_time_constant"_s,
+                                u"figure_peak_tau"_s, u"figure_peak_percent"_s}) {
+        const QLabel *figure = label(editor, name);
+        QVERIFY2(figure, qPrintable(name));
+        QVERIFY2(figure->isVisible(), qPrintable(name));
+        QVERIFY2(figure->height() >= figure->sizeHint().height(),
+                 qPrintable(u"%1: %2 px of %3"_s.arg(name)
+                                .arg(figure->height())
+                                .arg(figure->sizeHint().height())));
+        // Inside the editor, not pushed out below it.
+        const QRect inEditor(figure->mapTo(&editor, QPoint(0, 0)), figure->size());
+        QVERIFY2(editor.rect().contains(inEditor), qPrintable(name));
+    }
+    // The warnings in sight (two lines at least), the rest reachable by scrolling.
+    const auto *warnings = editor.findChild<QScrollArea *>(u"derivedWarnings"_s);
+    QVERIFY(warnings && warnings->isVisible());
+    QVERIFY2(warnings->viewport()->height() >= 2 * warnings->fontMetrics().height(),
+             qPrintable(QString::number(warnings->viewport()->height())));
+    // Each warning laid out whole inside that area: never a cut line.
+    for (const QString &name :
+         {u"warning_saturation"_s, u"warning_ringing"_s, u"warning_chatter"_s}) {
+        const QLabel *warning = label(editor, name);
+        QVERIFY2(warning->height() >= warning->heightForWidth(warning->width()),
+                 qPrintable(u"%1: %2 px of %3"_s.arg(name)
+                                .arg(warning->height())
+                                .arg(warning->heightForWidth(warning->width()))));
+    }
 }
 
 void TestParameterEditor::degreesChangeOnlyTheDisplay()

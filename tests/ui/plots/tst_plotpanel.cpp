@@ -16,6 +16,8 @@
 
 using namespace hatpic;
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 void fill(SampleBuffer &buffer, double from, double to, double rateHz = 1000)
@@ -64,6 +66,7 @@ private Q_SLOTS:
     void oneColourPerQuantity();
     void tauExtSeenOnTauRec();
     void shortPlotsStayReadable();
+    void legendsFitShortPlots();
     void eventLabelAtTheRightEdgeStaysReadable();
     void autoscaleFitsAndFixedStays();
     void exportsImage_data();
@@ -397,6 +400,72 @@ void TestPlotPanel::eventsAreMarked()
     QCOMPARE(m_panel->events().size(), 3);
     m_panel->setEvents({});
     QCOMPARE(m_panel->customPlot()->itemCount(), before);
+}
+
+void TestPlotPanel::legendsFitShortPlots()
+{
+    // Issue 27: at the plots' minimum height the legends were squeezed until their entries
+    // clipped ("τ_rec" read "τ rec"). Every entry whole and inside its plot's row, at the
+    // minimum and when one more series is shown there; all entries back at a roomy height.
+    fill(*m_buffer, 0, 3);
+    QCustomPlot *plot = m_panel->customPlot();
+    auto layOut = [&] {
+        for (int i = 0; i < 3; ++i) {
+            m_panel->repaintNow();
+            QCoreApplication::processEvents(); // the queued replot of a changed layout
+        }
+    };
+    auto checkFits = [&](const QString &when) {
+        for (PlotPanel::Plot kind :
+             {PlotPanel::Plot::Angle, PlotPanel::Plot::Torque, PlotPanel::Plot::Reference}) {
+            QCPLegend *legend = m_panel->legend(kind);
+            const QRect row = m_panel->axisRect(kind)->outerRect();
+            const QString where = u"%1, plot %2"_s.arg(when).arg(int(kind));
+            QVERIFY2(legend->itemCount() > 0, qPrintable(where));
+            for (int k = 0; k < legend->itemCount(); ++k) {
+                QCPAbstractLegendItem *item = legend->item(k);
+                const QRect r = item->outerRect();
+                const int needs = item->minimumOuterSizeHint().height();
+                QVERIFY2(r.height() >= needs, qPrintable(u"%1, entry %2: %3 px of %4"_s.arg(where)
+                                                             .arg(k)
+                                                             .arg(r.height())
+                                                             .arg(needs)));
+                QVERIFY2(r.top() >= row.top() && r.bottom() <= row.bottom(),
+                         qPrintable(u"%1, entry %2: rows %3–%4 outside %5–%6"_s.arg(where)
+                                        .arg(k)
+                                        .arg(r.top())
+                                        .arg(r.bottom())
+                                        .arg(row.top())
+                                        .arg(row.bottom())));
+            }
+        }
+    };
+    auto listed = [&](PlotPanel::Plot kind, Channel channel) {
+        return m_panel->legend(kind)->hasItemWithPlottable(m_panel->graph(channel));
+    };
+
+    m_panel->resize(1000, 200); // the minimum holds
+    layOut();
+    QCOMPARE(plot->height(), PlotPanel::kMinPlotsHeight);
+    checkFits(u"minimum"_s);
+    // What is shown stays listed; what is hidden makes room.
+    for (Channel channel : {Channel::TauRec, Channel::TauExt, Channel::TauTotal, Channel::Tau})
+        QVERIFY(listed(PlotPanel::Plot::Torque, channel));
+    QVERIFY(listed(PlotPanel::Plot::Angle, Channel::Theta));
+    QVERIFY(!listed(PlotPanel::Plot::Torque, Channel::TauDet));
+
+    m_panel->setChannelVisible(Channel::TauDet, true);
+    m_panel->setChannelVisible(Channel::Omega, true);
+    layOut();
+    QVERIFY(listed(PlotPanel::Plot::Torque, Channel::TauDet));
+    QVERIFY(listed(PlotPanel::Plot::Angle, Channel::Omega));
+    checkFits(u"minimum, τ_det and ω shown"_s);
+
+    m_panel->setChannelVisible(Channel::TauDet, false);
+    m_panel->resize(1000, 700);
+    layOut();
+    checkFits(u"roomy"_s);
+    QVERIFY(listed(PlotPanel::Plot::Torque, Channel::TauDet)); // greyed, clickable again
 }
 
 void TestPlotPanel::eventLabelAtTheRightEdgeStaysReadable()
