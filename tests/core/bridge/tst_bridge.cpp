@@ -591,6 +591,11 @@ private:
         ConnectOptions options;
         options.port = QString::fromUtf16(kSimPortName);
         options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, angle};
+        // These tests measure the bridge and its observer against a plain knob: the device's
+        // passivity controller (tst_passivity, tst_teleoploop) off. On, the deficit the ±limit
+        // pushes of wrenchBecomesTauExt leave in its tank damps robotSideMeasured's push, which
+        // then creeps on past the observer's approach window.
+        options.sim.passivity = PassivityParams::off();
         connect(&client, &DeviceClient::samplesReady, this, [&tauExt, theta](const SampleBatch &b) {
             if (b.isEmpty())
                 return;
