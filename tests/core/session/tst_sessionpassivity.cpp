@@ -1,6 +1,7 @@
 // The passivity block (passivity.md) through the session, end to end over real
 // pseudo-terminals: hatpic-sim (a device core with the passivity capability) and a scripted v2
 // device without it, which is told apart and sent nothing.
+#include "commandwait.h"
 #include "scripteddevice.h"
 #include "session/deviceclient.h"
 #include "session/devicesession.h"
@@ -22,18 +23,7 @@ constexpr int kTimeoutMs = 5000;
 //! The result of the command `id` once it finished.
 CommandResult waitFor(QSignalSpy &finished, quint64 id)
 {
-    auto find = [&]() -> const QList<QVariant> * {
-        for (const QList<QVariant> &args : std::as_const(finished)) {
-            if (args.first().toULongLong() == id)
-                return &args;
-        }
-        return nullptr;
-    };
-    if (!QTest::qWaitFor([&] { return find() != nullptr; }, kTimeoutMs))
-        return commandResult(CommandKind::Hello, CommandResult::Status::Timeout);
-    const QList<QVariant> *args = find();
-    return args ? args->last().value<CommandResult>()
-                : commandResult(CommandKind::Hello, CommandResult::Status::Timeout);
+    return test::waitForCommand(finished, id, kTimeoutMs);
 }
 
 } // namespace
