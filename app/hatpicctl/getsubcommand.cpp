@@ -32,7 +32,9 @@ public:
                    "as the shortest decimal that gives back that float. A device with the\n"
                    "effects capability is also asked for its effect block (GET_EFFECTS): seven\n"
                    "more lines, and the profile's device.effects when they are not the\n"
-                   "defaults.\n\n") +
+                   "defaults. A device with the passivity capability is asked for its passivity\n"
+                   "controller (GET_PASSIVITY): two more lines (pc_damping_max, pc_reserve_max),\n"
+                   "and the profile's device.passivity when they are not the defaults.\n\n") +
                portHelp();
     }
 
@@ -51,22 +53,26 @@ protected:
         if (const int code = DeviceRunner::reportResult(result); code)
             return code;
         // A device reporting NaN or values that break model.md is not printed as a profile
-        // (nor as a table that looks fine): it is refused with what is wrong.
-        const DeviceParams params = result.received.params.value_or(DeviceParams{});
-        if (const QString problem = deviceParamsProblem(params); !problem.isEmpty()) {
-            printError(u"The device reported parameters that are not valid: " + problem + u'.');
-            return ExitNoDevice;
-        }
-        const std::optional<EffectParams> effects = result.received.effects;
+        // (nor as a table that looks fine): it is refused with what is wrong, block by block.
+        const DeviceTuning &tuning = result.received;
         const DeviceInfo info = runner.client().deviceInfo();
-        if (effects) {
-            if (const QString problem = deviceEffectsProblem(*effects, info.tauLimit);
-                !problem.isEmpty()) {
-                printError(u"The device reported effects that are not valid: " + problem + u'.');
-                return ExitNoDevice;
-            }
+        const auto refuse = [](const QString &what, const QString &problem) {
+            printError(u"The device reported " + what + u" that are not valid: " + problem + u'.');
+            return ExitNoDevice;
+        };
+        if (const QString p = problemText(validate(tuning.params.value_or(DeviceParams{})));
+            !p.isEmpty())
+            return refuse(QStringLiteral("parameters"), p);
+        if (tuning.effects) {
+            if (const QString p = problemText(validate(*tuning.effects, info.tauLimit));
+                !p.isEmpty())
+                return refuse(QStringLiteral("effects"), p);
         }
-        writeOut(parameterOutput(params, effects, info, parser.isSet(QStringLiteral("json"))));
+        if (tuning.passivity) {
+            if (const QString p = problemText(validate(*tuning.passivity)); !p.isEmpty())
+                return refuse(QStringLiteral("passivity settings"), p);
+        }
+        writeOut(tuningOutput(tuning, info, parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;
     }
 };

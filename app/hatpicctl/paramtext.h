@@ -1,43 +1,29 @@
-// How device parameters are shown: a text table and a profile document.
+// How a device's tuning is shown: a text table and a profile document.
 #pragma once
 
-#include "model/effects.h"
-#include "model/params.h"
+#include "model/devicetuning.h"
 #include "session/sessiontypes.h"
 
 #include <QByteArray>
 #include <QString>
 
-#include <optional>
+#include <vector>
 
 namespace hatpic::cli {
 
-QString fieldUnit(int index);    //!< "kg·m²"
-QString fieldMeaning(int index); //!< "virtual inertia of the admittance filter"
-
-//! One line per field: name, value, unit, meaning — columns separated by spaces.
+//! One line per parameter (model.md): name, value, unit, meaning — columns separated by spaces.
 QString parameterTable(const DeviceParams &params);
 
-//! A complete profile (profile.md) holding `params`, with default host settings except
-//! tau_limit, which is the device's.
-QByteArray parameterProfile(const DeviceParams &params, const DeviceInfo &info);
+//! What get, set and zero print of `tuning`: with `json` a complete profile (profile.md) that
+//! `set --profile` accepts — default host settings except tau_limit, the device's — else the
+//! table above followed by one line per field of each block the tuning has (the effect block,
+//! effects.md; the passivity block, passivity.md). A part the tuning lacks (a device without the
+//! capability) adds no lines and leaves the profile's block at its defaults, so it is not
+//! written.
+QByteArray tuningOutput(const DeviceTuning &tuning, const DeviceInfo &info, bool json);
 
-//! parameterProfile() when `json`, else parameterTable() — what get, set and zero print.
-QByteArray parameterOutput(const DeviceParams &params, const DeviceInfo &info, bool json);
-//! The same with the device's effect block: the table gains one line per effect field, the
-//! profile its device.effects (written when the block differs from the defaults). Without
-//! `effects` (a device without the capability), exactly the output above.
-QByteArray parameterOutput(const DeviceParams &params, const std::optional<EffectParams> &effects,
-                           const DeviceInfo &info, bool json);
-
-//! One line per effect field: name, value, unit, meaning.
-QString effectTable(const EffectParams &effects);
-//! Why an effect block a device reported is not usable (effects.md § 2 against `tauLimit`);
-//! empty when it is valid.
-QString deviceEffectsProblem(const EffectParams &effects, double tauLimit);
-
-//! Why parameters a device reported are not usable (model.md § 1, as 32-bit floats), every
-//! violation joined with "; "; empty when they are valid.
-QString deviceParamsProblem(const DeviceParams &params);
+//! The violations joined with "; " (each naming field, rule and value); empty when there are
+//! none. Why a block a device reported is not usable.
+QString problemText(const std::vector<Violation> &violations);
 
 } // namespace hatpic::cli

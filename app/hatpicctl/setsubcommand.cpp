@@ -9,8 +9,8 @@
 #include "session/sessionwording.h"
 #include "subcommands.h"
 
-#include "model/effects.h"
-#include "model/params.h"
+#include "model/devicetuning.h"
+#include "model/paramtable.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -23,34 +23,44 @@ namespace hatpic::cli {
 
 namespace {
 
+//! The blocks of a tuning that --set names fields of.
+enum class Part { Params, Effects, Passivity };
+
 struct Assignment
 {
-    int index = -1;      //!< ParamBlock index, or effect block index when `effect`
-    bool effect = false; //!< a field of the effect block (effects.md § 2)
+    Part part = Part::Params;
+    int index = -1; //!< the field's index in its block's table
     double value = 0;
 };
 
-QString fieldNames()
+template<typename Block, std::size_t N>
+QString namesOf(const std::array<FieldSpec<Block>, N> &fields)
 {
     QStringList names;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        const auto name = deviceFieldName(i);
-        names << QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
-    }
+    for (const FieldSpec<Block> &spec : fields)
+        names << QString::fromUtf8(spec.name.data(), static_cast<qsizetype>(spec.name.size()));
     return names.join(QStringLiteral(", "));
 }
 
-QString effectNames()
+template<typename Block, std::size_t N>
+int indexIn(const std::array<FieldSpec<Block>, N> &fields, const QString &name)
 {
-    QStringList names;
-    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
-        const auto name = effectFieldName(i);
-        names << QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    const std::string wanted = name.toStdString();
+    for (std::size_t i = 0; i < N; ++i) {
+        if (fields[i].name == wanted)
+            return int(i);
     }
-    return names.join(QStringLiteral(", "));
+    return -1;
 }
 
-// "K_max=0.5" → {3, 0.5}; prints one sentence and gives nullopt when it is not that.
+QString allNames()
+{
+    return u"the parameters are " + namesOf(kDeviceFields) + u", the effects " +
+           namesOf(kEffectFields) + u", and the passivity controller's " +
+           namesOf(kPassivityFields);
+}
+
+// "K_max=0.5" → {Params, 3, 0.5}; prints one sentence and gives nullopt when it is not that.
 std::optional<Assignment> parseAssignment(const QString &text)
 {
     const qsizetype equals = text.indexOf(u'=');
@@ -60,24 +70,43 @@ std::optional<Assignment> parseAssignment(const QString &text)
     }
     const QString name = text.left(equals).trimmed();
     const QString valueText = text.mid(equals + 1).trimmed();
-    int index = deviceFieldIndex(name.toStdString());
-    const bool effect = index < 0 && effectFieldIndex(name.toStdString()) >= 0;
-    if (effect)
-        index = effectFieldIndex(name.toStdString());
-    if (index < 0) {
-        printError(u"Unknown parameter '" + name + u"' in --set; the parameters are " +
-                   fieldNames() + u", and the effects " + effectNames() + u'.');
+    Assignment assignment;
+    if (const int i = indexIn(kDeviceFields, name); i >= 0)
+        assignment = {Part::Params, i, 0};
+    else if (const int e = indexIn(kEffectFields, name); e >= 0)
+        assignment = {Part::Effects, e, 0};
+    else if (const int p = indexIn(kPassivityFields, name); p >= 0)
+        assignment = {Part::Passivity, p, 0};
+    else {
+        printError(u"Unknown parameter '" + name + u"' in --set; " + allNames() + u'.');
         return std::nullopt;
     }
     bool ok = false;
-    const double value = valueText.toDouble(&ok);
+    assignment.value = valueText.toDouble(&ok);
     if (!ok) {
         printError(u"The value of " + name + u" in --set must be a number, got '" + valueText +
                    u"'.");
         return std::nullopt;
     }
-    return Assignment{index, effect, value};
+    return assignment;
 }
+
+//! How a block is named in set's sentences.
+struct BlockWords
+{
+    const char16_t *plural;   //!< "parameters"
+    const char16_t *singular; //!< "parameter"
+    const char16_t *accepted; //!< "The device accepted the parameters."
+    const char16_t *differ;   //!< what the read-back warning calls them
+};
+
+constexpr BlockWords kParamsWords{u"parameters", u"parameter",
+                                  u"The device accepted the parameters.", u"parameters"};
+constexpr BlockWords kEffectsWords{u"effects", u"effect", u"The device accepted the effects.",
+                                   u"effects"};
+constexpr BlockWords kPassivityWords{u"passivity settings", u"passivity setting",
+                                     u"The device accepted the passivity settings.",
+                                     u"passivity settings"};
 
 class SetSubcommand final : public DeviceSubcommand
 {
@@ -100,13 +129,15 @@ public:
                    "with --profile, the profile's device parameters are the starting point and\n"
                    "any --set applies on top. The whole set is validated before anything is\n"
                    "sent: a violation exits with 4 and the device is left untouched.\n"
-                   "Effect fields (effects.md) go the same way with SET_EFFECTS: with --set\n"
-                   "alone only the named ones change over the device's block (GET_EFFECTS);\n"
-                   "a profile's effects (its defaults when it has none) are sent whole. A\n"
-                   "device without the effects capability refuses them (exit 2) and a\n"
-                   "profile's non-default effects are then not sent.\n"
+                   "Effect fields (effects.md) go the same way with SET_EFFECTS, and the\n"
+                   "passivity controller's (passivity.md) with SET_PASSIVITY: with --set alone\n"
+                   "only the named ones change over the device's block; a profile's blocks\n"
+                   "(their defaults when it has none) are sent whole. A device without the\n"
+                   "capability refuses named fields (exit 2); a profile's non-default effects\n"
+                   "are then not sent either, and its passivity block is left out with a note.\n"
                    "Names: ") +
-               fieldNames() + u"\nEffects: " + effectNames() + u"\n\n" + portHelp();
+               namesOf(kDeviceFields) + u"\nEffects: " + namesOf(kEffectFields) + u"\nPassivity: " +
+               namesOf(kPassivityFields) + u"\n\n" + portHelp();
     }
 
 protected:
@@ -146,10 +177,17 @@ protected:
         // Without --set, the profile alone is already known to be valid; with --set on top
         // of a profile, check now, before any port is opened.
         if (m_profile) {
-            if (const int code = checkValid(withAssignments(m_profile->device)); code)
+            const double tauLimit = m_profile->host.tau_limit;
+            if (const int code =
+                    checkValid(validate(withAssignments(m_profile->device)), kParamsWords);
+                code)
                 return code;
-            if (const int code = checkValidEffects(withEffectAssignments(m_profile->effects),
-                                                   m_profile->host.tau_limit);
+            if (const int code = checkValid(validate(withAssignments(m_profile->effects), tauLimit),
+                                            kEffectsWords);
+                code)
+                return code;
+            if (const int code =
+                    checkValid(validate(withAssignments(m_profile->passivity)), kPassivityWords);
                 code)
                 return code;
         }
@@ -159,23 +197,33 @@ protected:
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         const DeviceInfo info = runner.client().deviceInfo();
-        const bool pushesParams = m_profile || assigns(false);
+        const double tauLimit = info.tauLimit;
         // A profile's effects go whole, but one without any asks nothing of a device that has
-        // no effects; named effect fields always need the capability.
+        // no effects; named fields of a block always need its capability.
         const bool wantsEffects =
-            assigns(true) || (m_profile && roundedForWire(m_profile->effects, info.tauLimit) !=
-                                               roundedForWire(EffectParams{}, info.tauLimit));
-        const bool pushesEffects = info.hasEffects() && (m_profile || assigns(true));
-        if (wantsEffects && !info.hasEffects()) {
+            assigns(Part::Effects) || (m_profile && roundedForWire(m_profile->effects, tauLimit) !=
+                                                        roundedForWire(EffectParams{}, tauLimit));
+        const bool refusedPart = (wantsEffects && !info.hasEffects()) ||
+                                 (assigns(Part::Passivity) && !info.hasPassivity());
+        if (refusedPart) {
             // The session refuses it with the reason (legacy, or no capability); nothing sent.
             CommandResult refused;
-            const DeviceTuning none{std::nullopt, EffectParams{}};
+            DeviceTuning none{std::nullopt, std::nullopt};
+            if (wantsEffects && !info.hasEffects())
+                none.effects = EffectParams{};
+            else
+                none.passivity = PassivityParams{};
             if (const int code = runner.runCommand(
                     [&none](DeviceClient &client) { return client.pushTuning(none); }, &refused);
                 code)
                 return code;
             return DeviceRunner::reportResult(refused);
         }
+        if (m_profile && !info.hasPassivity() &&
+            !sameOnWire(m_profile->passivity, PassivityParams{}))
+            printNote(QStringLiteral("note: this device has no passivity controller (its "
+                                     "firmware does not announce the capability), so the "
+                                     "profile's device.passivity is not sent."));
 
         DeviceTuning held; // what --set starts from without a profile: the device's own
         if (!m_profile) {
@@ -188,52 +236,34 @@ protected:
         }
 
         DeviceTuning tuning;
-        if (m_profile) {
-            tuning.params = withAssignments(m_profile->device);
-        } else {
-            // The device's floats as their shortest decimals: the same floats go back, and any
-            // violation names readable values (0.4, not 0.4000000059604645).
-            const DeviceParams from = tidyDeviceParams(held.params.value_or(DeviceParams{}));
-            tuning.params = withAssignments(from);
-            if (!validate(*tuning.params).empty()) {
-                // Not the user's fault when the values --set starts from are the problem.
-                if (const QString problem = deviceParamsProblem(from); !problem.isEmpty()) {
-                    printError(u"The device's current parameters are not valid (" + problem +
-                               u"), so --set cannot start from them; nothing was sent. Give "
-                               u"every parameter with --profile.");
-                    return ExitNoDevice;
-                }
-            }
-            if (const int code = checkValid(*tuning.params); code)
+        if (m_profile || assigns(Part::Params)) {
+            if (const int code = compose(
+                    m_profile ? &m_profile->device : nullptr, held.params, &tidyDeviceParams,
+                    [](const DeviceParams &p) { return validate(p); }, kParamsWords, tuning.params);
+                code)
                 return code;
         }
-        if (!pushesParams)
-            tuning.params.reset();
-
-        if (pushesEffects) {
-            if (m_profile) {
-                tuning.effects = withEffectAssignments(m_profile->effects);
-            } else {
-                const EffectParams from = tidyEffectParams(held.effects.value_or(EffectParams{}));
-                tuning.effects = withEffectAssignments(from);
-                if (!validate(*tuning.effects, info.tauLimit).empty()) {
-                    if (const QString problem = deviceEffectsProblem(from, info.tauLimit);
-                        !problem.isEmpty()) {
-                        printError(u"The device's current effects are not valid (" + problem +
-                                   u"), so --set cannot start from them; nothing was sent. Give "
-                                   u"every effect with --profile.");
-                        return ExitNoDevice;
-                    }
-                }
-            }
+        if (info.hasEffects() && (m_profile || assigns(Part::Effects))) {
             // Against the device's own torque limit, before anything is sent.
-            if (const int code = checkValidEffects(*tuning.effects, info.tauLimit); code)
+            if (const int code = compose(
+                    m_profile ? &m_profile->effects : nullptr, held.effects, &tidyEffectParams,
+                    [tauLimit](const EffectParams &e) { return validate(e, tauLimit); },
+                    kEffectsWords, tuning.effects);
+                code)
+                return code;
+        }
+        if (info.hasPassivity() && (m_profile || assigns(Part::Passivity))) {
+            if (const int code = compose(
+                    m_profile ? &m_profile->passivity : nullptr, held.passivity,
+                    &tidyPassivityParams, [](const PassivityParams &p) { return validate(p); },
+                    kPassivityWords, tuning.passivity);
+                code)
                 return code;
         }
 
         // Shown as `get` shows it: the read-back of the push, else what was read before.
         DeviceTuning shown = runner.client().deviceTuning();
-        if (tuning.params || tuning.effects) {
+        if (tuning.params || tuning.effects || tuning.passivity) {
             CommandResult result;
             const int code = runner.runCommand(
                 [&tuning](DeviceClient &client) { return client.pushTuning(tuning); }, &result);
@@ -250,87 +280,114 @@ protected:
                 return refused;
             }
             const DeviceTuning &back = result.received;
-            if (tuning.params) {
-                if (!back.params || !sameOnWire(*back.params, *tuning.params))
-                    printNote(QStringLiteral("warning: the parameters read back differ from "
-                                             "those sent (beyond 32-bit rounding)."));
-                printNote(QStringLiteral("The device accepted the parameters."));
-            }
-            if (tuning.effects) {
-                if (!back.effects || !sameOnWire(*back.effects, *result.sent.effects))
-                    printNote(QStringLiteral("warning: the effects read back differ from those "
-                                             "sent (beyond 32-bit rounding)."));
-                printNote(QStringLiteral("The device accepted the effects."));
-            }
+            noteAccepted(result.sent.params, back.params, kParamsWords);
+            noteAccepted(result.sent.effects, back.effects, kEffectsWords);
+            noteAccepted(result.sent.passivity, back.passivity, kPassivityWords);
             shown = shown.updatedBy(back);
         }
-        writeOut(parameterOutput(shown.params.value_or(DeviceParams{}),
-                                 info.hasEffects() ? shown.effects : std::nullopt, info,
-                                 parser.isSet(QStringLiteral("json"))));
+        writeOut(
+            tuningOutput(shownBlocks(shown, info), info, parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;
     }
 
 private:
+    //! The blocks `get` would show of `tuning` on this device.
+    static DeviceTuning shownBlocks(DeviceTuning tuning, const DeviceInfo &info)
+    {
+        if (!tuning.params)
+            tuning.params = DeviceParams{};
+        if (!info.hasEffects())
+            tuning.effects.reset();
+        if (!info.hasPassivity())
+            tuning.passivity.reset();
+        return tuning;
+    }
+
     //! A push that failed part-way: what is in force goes to stdout as `get` shows it (the
-    //! read-back where it came), so a script sees the device's state; the effects are left
-    //! out when the failed step leaves them unknown. Nothing when the push changed nothing.
+    //! read-back where it came), so a script sees the device's state; the blocks after the
+    //! failed step are left out when it leaves them unknown. Nothing when the push changed
+    //! nothing.
     static void writeInForce(const DeviceTuning &before, const CommandResult &result,
                              const DeviceInfo &info, const QCommandLineParser &parser)
     {
         const DeviceTuning applied = appliedBeforeFailure(result);
-        if (!applied.params && !applied.effects)
+        if (!applied.params && !applied.effects && !applied.passivity)
             return;
-        const DeviceTuning inForce = before.updatedBy(applied);
-        const bool effectsUnknown = effectsUnknownAfterFailure(result);
-        writeOut(
-            parameterOutput(inForce.params.value_or(DeviceParams{}),
-                            info.hasEffects() && !effectsUnknown ? inForce.effects : std::nullopt,
-                            info, parser.isSet(QStringLiteral("json"))));
+        DeviceTuning inForce = shownBlocks(before.updatedBy(applied), info);
+        if (const auto step = unansweredBlockStep(result); step == CommandKind::SetEffects)
+            inForce.effects.reset();
+        else if (step == CommandKind::SetPassivity)
+            inForce.passivity.reset();
+        writeOut(tuningOutput(inForce, info, parser.isSet(QStringLiteral("json"))));
     }
 
-    bool assigns(bool effect) const
+    //! "The device accepted the …", after a warning when the read-back is not what was sent.
+    template<typename Block>
+    static void noteAccepted(const std::optional<Block> &sent, const std::optional<Block> &back,
+                             const BlockWords &words)
+    {
+        if (!sent)
+            return;
+        if (!back || !sameOnWire(*back, *sent))
+            printNote(u"warning: the " + QString::fromUtf16(words.differ) +
+                      u" read back differ from those sent (beyond 32-bit rounding).");
+        printNote(QString::fromUtf16(words.accepted));
+    }
+
+    //! The block a push sends: the profile's (already checked in prepare()) or the device's
+    //! `held` one as its shortest decimals — so the same floats go back and a violation names
+    //! readable values — with the --set assignments on top, validated before anything is sent.
+    template<typename Block, typename Validate>
+    int compose(const Block *fromProfile, const std::optional<Block> &held,
+                Block (*tidy)(const Block &), Validate validateBlock, const BlockWords &words,
+                std::optional<Block> &out) const
+    {
+        const Block from = fromProfile ? *fromProfile : tidy(held.value_or(Block{}));
+        const Block block = withAssignments(from);
+        if (!fromProfile && !validateBlock(block).empty()) {
+            // Not the user's fault when the values --set starts from are the problem.
+            if (const QString problem = problemText(validateBlock(from)); !problem.isEmpty()) {
+                printError(u"The device's current " + QString::fromUtf16(words.plural) +
+                           u" are not valid (" + problem +
+                           u"), so --set cannot start from them; nothing was sent. Give every " +
+                           QString::fromUtf16(words.singular) + u" with --profile.");
+                return ExitNoDevice;
+            }
+        }
+        if (const int code = checkValid(validateBlock(block), words); code)
+            return code;
+        out = block;
+        return ExitSuccess;
+    }
+
+    bool assigns(Part part) const
     {
         return std::any_of(m_assignments.cbegin(), m_assignments.cend(),
-                           [effect](const Assignment &a) { return a.effect == effect; });
+                           [part](const Assignment &a) { return a.part == part; });
     }
 
-    DeviceParams withAssignments(DeviceParams params) const
+    static constexpr Part partOf(const DeviceParams *) { return Part::Params; }
+    static constexpr Part partOf(const EffectParams *) { return Part::Effects; }
+    static constexpr Part partOf(const PassivityParams *) { return Part::Passivity; }
+
+    //! `block` with the --set assignments to its fields.
+    template<typename Block> Block withAssignments(Block block) const
     {
         for (const Assignment &assignment : m_assignments) {
-            if (!assignment.effect)
-                params.setField(assignment.index, assignment.value);
+            if (assignment.part == partOf(&block))
+                block.setField(assignment.index, assignment.value);
         }
-        return params;
+        return block;
     }
 
-    EffectParams withEffectAssignments(EffectParams effects) const
+    // Host-side validation (model.md § 1, effects.md § 2, passivity.md); prints the violations
+    // and gives 4 when refused.
+    static int checkValid(const std::vector<Violation> &violations, const BlockWords &words)
     {
-        for (const Assignment &assignment : m_assignments) {
-            if (assignment.effect)
-                effects.setField(assignment.index, assignment.value);
-        }
-        return effects;
-    }
-
-    // Host-side validation (model.md § 1); prints the violations and gives 4 when refused.
-    static int checkValid(const DeviceParams &params)
-    {
-        const auto violations = validate(params);
         if (violations.empty())
             return ExitSuccess;
-        printError(QStringLiteral("The parameters are not valid; nothing was sent:"));
-        for (const Violation &violation : violations)
-            printNote(u"  " + QString::fromStdString(violation.message()));
-        return ExitBadUsage;
-    }
-
-    // The same for the effect block (effects.md § 2) against the torque limit `tauLimit`.
-    static int checkValidEffects(const EffectParams &effects, double tauLimit)
-    {
-        const auto violations = validate(effects, tauLimit);
-        if (violations.empty())
-            return ExitSuccess;
-        printError(QStringLiteral("The effects are not valid; nothing was sent:"));
+        printError(u"The " + QString::fromUtf16(words.plural) +
+                   u" are not valid; nothing was sent:");
         for (const Violation &violation : violations)
             printNote(u"  " + QString::fromStdString(violation.message()));
         return ExitBadUsage;

@@ -148,9 +148,8 @@ public:
             spec.base.device = profile->device;
             spec.base.host = profile->host;
             spec.base.effects = profile->effects;
+            spec.base.passivity = profile->passivity; // its defaults when the file has none
         }
-        // The passivity controller as the device runs it by default (passivity.md); a
-        // profile does not hold it yet.
         const auto list = [&](const QString &option, const QString &fallback,
                               std::vector<double> &into) {
             const QString text = parser.isSet(option) ? parser.value(option) : fallback;

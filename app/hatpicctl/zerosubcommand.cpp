@@ -47,8 +47,8 @@ protected:
             return code;
         const DeviceParams params = result.received.params.value_or(DeviceParams{});
         printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");
-        writeOut(parameterOutput(params, runner.client().deviceInfo(),
-                                 parser.isSet(QStringLiteral("json"))));
+        writeOut(tuningOutput(DeviceTuning{params, std::nullopt}, runner.client().deviceInfo(),
+                              parser.isSet(QStringLiteral("json"))));
         return ExitSuccess;
     }
 };

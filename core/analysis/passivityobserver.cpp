@@ -42,7 +42,7 @@ void PassivityObserver::reset()
     *this = PassivityObserver(m_settings);
 }
 
-void PassivityObserver::add(double t, double tauExt, double omega)
+void PassivityObserver::add(double t, double tauExt, double omega, double tauPc, double reserve)
 {
     if (!std::isfinite(t) || !std::isfinite(tauExt) || !std::isfinite(omega)) {
         ++m_state.invalid;
@@ -51,10 +51,14 @@ void PassivityObserver::add(double t, double tauExt, double omega)
     }
     ++m_state.samples;
     const double power = tauExt * omega; // [W]: > 0 while τ_ext pushes the way the knob moves
+    // The controller's power: −τ_pc·ω = β·ω² ≥ 0, what it takes out of the knob [W].
+    const bool reported = std::isfinite(tauPc);
+    const double controllerPower = reported ? -tauPc * omega : 0.0;
     if (m_havePrevious) {
         const double dt = t - m_previousT;
         if (dt > 0 && dt <= m_settings.maxGap) {
             m_state.energy += 0.5 * (m_previousPower + power) * dt;
+            m_state.dissipated += 0.5 * (m_previousControllerPower + controllerPower) * dt;
         } else {
             ++m_state.gaps;
             if (dt < 0) { // another clock (a reconnected device): nothing of the old one holds
@@ -67,6 +71,23 @@ void PassivityObserver::add(double t, double tauExt, double omega)
     m_havePrevious = true;
     m_previousT = t;
     m_previousPower = power;
+    m_previousControllerPower = controllerPower;
+
+    if (reported) {
+        m_state.controllerReported = true;
+        m_state.controllerTorque = tauPc;
+        if (tauPc != 0)
+            m_lastDampingT = t;
+        // β = −τ_pc/ω where ω says anything; the peak over the last hold, so a reading does
+        // not flicker with each cycle's ω.
+        const double beta = std::abs(omega) > 1e-9 ? std::max(0.0, -tauPc / omega) : 0.0;
+        if (beta >= m_state.dampingCoefficient || t - m_dampingPeakT > m_settings.hold) {
+            m_state.dampingCoefficient = beta;
+            m_dampingPeakT = t;
+        }
+    }
+    m_state.reserve = std::isfinite(reserve) ? reserve : std::numeric_limits<double>::quiet_NaN();
+    m_state.damping = t - m_lastDampingT <= m_settings.hold;
 
     // A contact begins when |τ_ext| first exceeds contactTorque, and ends once it has stayed
     // below for a whole window (a knob bouncing off a wall stays in one contact). Its first

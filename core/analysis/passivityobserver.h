@@ -58,14 +58,30 @@ public:
         std::uint64_t gaps = 0;    //!< steps not integrated: longer than maxGap, or backwards
         std::uint64_t invalid = 0; //!< samples with a non-finite time, τ_ext or ω: skipped
         double time = std::numeric_limits<double>::quiet_NaN(); //!< of the last sample [s]
+
+        // The device's passivity controller (passivity.md), from the τ_pc and R its telemetry
+        // carries: the observer above stays an independent check of what it achieves.
+        bool controllerReported = false; //!< a finite τ_pc came since reset()
+        //! τ_pc ≠ 0 within the last `hold` seconds: the controller is damping.
+        bool damping = false;
+        //! The largest β = −τ_pc/ω within the last `hold` seconds (0 when idle) [N·m·s/rad].
+        double dampingCoefficient = 0;
+        double controllerTorque = 0; //!< τ_pc of the last sample [N·m]
+        //! ∫ −τ_pc·ω dt = ∫ β·ω² dt since reset(): the energy the controller took out [J].
+        double dissipated = 0;
+        //! R of the last sample; NaN when the device does not report it [J].
+        double reserve = std::numeric_limits<double>::quiet_NaN();
     };
 
     //! Settings that validate() refuses are not taken: the defaults are used instead.
     explicit PassivityObserver(const PassivitySettings &settings = {});
 
-    //! One sample: time `t` [s], τ_ext as the device rendered it [N·m], the knob's ω [rad/s].
-    //! The energy is integrated by the trapezoidal rule from the previous sample.
-    void add(double t, double tauExt, double omega);
+    //! One sample: time `t` [s], τ_ext as the device rendered it [N·m], the knob's ω [rad/s],
+    //! and the passivity controller's τ_pc [N·m] and reserve R [J] (NaN: not reported). The
+    //! energies are integrated by the trapezoidal rule from the previous sample.
+    void add(double t, double tauExt, double omega,
+             double tauPc = std::numeric_limits<double>::quiet_NaN(),
+             double reserve = std::numeric_limits<double>::quiet_NaN());
     //! E back to 0, no contact, counters 0.
     void reset();
 
@@ -84,6 +100,9 @@ private:
     bool m_havePrevious = false;
     double m_previousT = 0;
     double m_previousPower = 0;
+    double m_previousControllerPower = 0; //!< −τ_pc·ω of the previous sample (0: not reported)
+    double m_lastDampingT = -std::numeric_limits<double>::infinity();
+    double m_dampingPeakT = -std::numeric_limits<double>::infinity(); //!< of dampingCoefficient
     //! E every window/kPointsPerWindow at most, over a little more than the last window.
     std::deque<Point> m_history;
     double m_contactStartEnergy = 0; //!< max(E at the contact's start, E at its approach's end)

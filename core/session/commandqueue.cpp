@@ -117,7 +117,8 @@ CommandResult resultFor(const Command &cmd, CommandKind kind, Status status,
 {
     CommandResult r = commandResult(kind, status, reason);
     // Only a push sends a tuning; a read's `tuning` merely names the parts it reads.
-    if (cmd.kind == CommandKind::SetParams || cmd.kind == CommandKind::SetEffects)
+    if (cmd.kind == CommandKind::SetParams || cmd.kind == CommandKind::SetEffects ||
+        cmd.kind == CommandKind::SetPassivity)
         r.sent = cmd.tuning;
     r.received = cmd.received;
     r.vibration = cmd.vibration;

@@ -258,6 +258,7 @@ void SamplePipeline::fire(std::optional<double> anchor)
     meta.device = armed.device;
     meta.params = m_builder.deviceParams();
     meta.effects = m_device.effects;
+    meta.passivity = m_device.passivity;
     meta.host = m_builder.hostParams();
     meta.source = armed.source;
     m_gap.reset();

@@ -6,6 +6,8 @@
 #include <QStringBuilder>
 #include <QStringList>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -47,21 +49,35 @@ DeviceTuning appliedBeforeFailure(const CommandResult &r)
     if (r.status != Status::Rejected && r.status != Status::Timeout &&
         r.status != Status::NotConnected)
         return applied;
-    // A push's steps run in order: SET_PARAMS, GET_PARAMS, SET_EFFECTS, GET_EFFECTS.
-    const CommandKind at = r.command;
-    if (r.sent.params && (at == CommandKind::GetParams || at == CommandKind::SetEffects ||
-                          at == CommandKind::GetEffects))
-        applied.params = r.received.params ? r.received.params : r.sent.params;
-    if (r.sent.effects && at == CommandKind::GetEffects)
-        applied.effects = r.received.effects ? r.received.effects : r.sent.effects;
+    // A push's steps run in this order (commandqueue.cpp's stepsOf); a part was acknowledged
+    // when the step that failed comes after its SET.
+    constexpr std::array kOrder{CommandKind::SetParams,    CommandKind::GetParams,
+                                CommandKind::SetEffects,   CommandKind::GetEffects,
+                                CommandKind::SetPassivity, CommandKind::GetPassivity};
+    const auto position = [&kOrder](CommandKind kind) {
+        return std::find(kOrder.begin(), kOrder.end(), kind) - kOrder.begin();
+    };
+    const auto at = position(r.command);
+    if (at == std::ssize(kOrder))
+        return applied; // not a push
+    const auto take = [&](const auto &sent, const auto &received, CommandKind set, auto &out) {
+        if (sent && at > position(set))
+            out = received ? received : sent;
+    };
+    take(r.sent.params, r.received.params, CommandKind::SetParams, applied.params);
+    take(r.sent.effects, r.received.effects, CommandKind::SetEffects, applied.effects);
+    take(r.sent.passivity, r.received.passivity, CommandKind::SetPassivity, applied.passivity);
     return applied;
 }
 
-bool effectsUnknownAfterFailure(const CommandResult &r)
+std::optional<CommandKind> unansweredBlockStep(const CommandResult &r)
 {
-    return r.sent.effects && r.command == CommandKind::SetEffects &&
-           (r.status == CommandResult::Status::Timeout ||
-            r.status == CommandResult::Status::NotConnected);
+    const bool unanswered = r.status == CommandResult::Status::Timeout ||
+                            r.status == CommandResult::Status::NotConnected;
+    if (unanswered && ((r.command == CommandKind::SetEffects && r.sent.effects) ||
+                       (r.command == CommandKind::SetPassivity && r.sent.passivity)))
+        return r.command;
+    return std::nullopt;
 }
 
 quint64 LinkStats::totalDecoderDrops() const

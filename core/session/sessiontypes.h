@@ -198,9 +198,9 @@ struct SessionNotice
 //! else as sent. Empty for a push that changed nothing (its first step failed, or it was refused
 //! before sending), for any other command, and for a success.
 DeviceTuning appliedBeforeFailure(const CommandResult &result);
-//! A push whose SET_EFFECTS went out and was never answered (no ACK, or the link went): whether
-//! the device applied the effects is unknown.
-bool effectsUnknownAfterFailure(const CommandResult &result);
+//! A push whose SET_EFFECTS or SET_PASSIVITY went out and was never answered (no ACK, or the
+//! link went): whether the device applied that block is unknown. Gives that step, else nullopt.
+std::optional<CommandKind> unansweredBlockStep(const CommandResult &result);
 
 //! A result for `command` with `status` and `reason`; the other fields at their defaults.
 CommandResult commandResult(CommandKind command, CommandResult::Status status,

@@ -159,13 +159,16 @@ QString SessionWording::invalid(const CommandResult &r)
         return tr("The vibration cue is not valid: %1; nothing was sent.").arg(joined(r.problems));
     if (r.command == CommandKind::SetEffects)
         return tr("The effects are not valid: %1; nothing was sent.").arg(joined(r.problems));
+    if (r.command == CommandKind::SetPassivity)
+        return tr("The passivity settings are not valid: %1; nothing was sent.")
+            .arg(joined(r.problems));
     return tr("The parameters are not valid: %1; nothing was sent.").arg(joined(r.problems));
 }
 
 QString SessionWording::appliedBeforeFailure(const CommandResult &r)
 {
     const DeviceTuning applied = hatpic::appliedBeforeFailure(r);
-    if (!applied.params && !applied.effects)
+    if (!applied.params && !applied.effects && !applied.passivity)
         return {};
     const bool lost = r.status == CommandResult::Status::NotConnected;
     QStringList parts;
@@ -177,13 +180,21 @@ QString SessionWording::appliedBeforeFailure(const CommandResult &r)
         parts << (r.received.effects ? tr("the effects (SET_EFFECTS, read back)")
                                      : tr("the effects (SET_EFFECTS, not read back)"));
     }
+    if (applied.passivity) {
+        parts << (r.received.passivity
+                      ? tr("the passivity settings (SET_PASSIVITY, read back)")
+                      : tr("the passivity settings (SET_PASSIVITY, not read back)"));
+    }
     QString text = lost
                        ? tr("It had accepted %1: those were in force when the link went.")
                              .arg(parts.join(tr(" and ")))
                        : tr("It had accepted %1: those are in force.").arg(parts.join(tr(" and ")));
-    // A SET_EFFECTS sent but never answered may or may not have taken effect.
-    if (effectsUnknownAfterFailure(r))
+    // A SET_EFFECTS or SET_PASSIVITY sent but never answered may or may not have taken effect.
+    if (const auto step = unansweredBlockStep(r); step == CommandKind::SetEffects)
         text += u' ' + tr("Whether the effects changed is unknown until they are read back.");
+    else if (step == CommandKind::SetPassivity)
+        text += u' ' + tr("Whether the passivity settings changed is unknown until they are "
+                          "read back.");
     return text;
 }
 
@@ -224,10 +235,15 @@ QString SessionWording::commandFailureBrief(const CommandResult &r)
 {
     QString brief = commandFailureBriefAlone(r);
     const DeviceTuning applied = hatpic::appliedBeforeFailure(r);
-    if (applied.params && applied.effects)
-        brief += tr("; parameters and effects applied");
-    else if (applied.params)
-        brief += tr("; parameters applied");
+    QStringList parts;
+    if (applied.params)
+        parts << tr("parameters");
+    if (applied.effects)
+        parts << tr("effects");
+    if (applied.passivity)
+        parts << tr("passivity settings");
+    if (!parts.isEmpty())
+        brief += tr("; %1 applied").arg(parts.join(tr(" and ")));
     return brief;
 }
 
@@ -235,15 +251,19 @@ QString SessionWording::commandFailureBriefAlone(const CommandResult &r)
 {
     using Status = CommandResult::Status;
     const bool effects = isEffectCommand(r.command);
+    const bool passivity = isPassivityCommand(r.command);
     switch (r.status) {
     case Status::Ok:
         return {};
     case Status::Rejected: {
         QString reason = v2::ackStatusName(r.ackStatus);
-        const QString name =
-            QString::fromLatin1(effects ? effectFieldName(r.field) : deviceFieldName(r.field));
+        const QString name = QString::fromLatin1(effects     ? effectFieldName(r.field)
+                                                 : passivity ? passivityFieldName(r.field)
+                                                             : deviceFieldName(r.field));
         if (!name.isEmpty() && !reason.contains(name))
             reason += u" (" + name + u')';
+        if (passivity)
+            return tr("device rejected the passivity settings: %1").arg(reason);
         return effects ? tr("device rejected the effects: %1").arg(reason)
                        : tr("device rejected: %1").arg(reason);
     }
@@ -252,6 +272,8 @@ QString SessionWording::commandFailureBriefAlone(const CommandResult &r)
     case Status::NotConnected:
         return tr("push failed: not connected to the device");
     case Status::Unsupported:
+        if (passivity)
+            return tr("push failed: this device has no passivity controller");
         return effects ? tr("push failed: this device cannot render effects")
                        : tr("push failed: the device's protocol cannot carry parameters");
     case Status::Invalid:
@@ -265,6 +287,12 @@ QString SessionWording::noEffectsReason(bool legacy)
 {
     return legacy ? tr("it runs the published firmware, legacy protocol")
                   : tr("its firmware does not announce the effects capability");
+}
+
+QString SessionWording::noPassivityReason(bool legacy)
+{
+    return legacy ? tr("it runs the published firmware, legacy protocol")
+                  : tr("its firmware does not announce the passivity capability");
 }
 
 QString SessionWording::deviceLinesHeldBack(quint64 lines, int perInterval, int intervalMs)

@@ -33,6 +33,8 @@ public:
     //! Why a device cannot render effects, as a clause: "it runs the published firmware, legacy
     //! protocol" or "its firmware does not announce the effects capability".
     static QString noEffectsReason(bool legacy);
+    //! Why a device has no passivity controller, as a clause of the same kind.
+    static QString noPassivityReason(bool legacy);
     //! The summary of a device's lines not shown: "(72812 more lines from the device not shown:
     //! at most 20 a second are)".
     static QString deviceLinesHeldBack(quint64 lines, int perInterval, int intervalMs);

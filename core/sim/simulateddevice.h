@@ -67,8 +67,8 @@ public:
         quint8 flags = 0;      //!< v2::kFlag* bits
 
         //! The sample of this cycle as TELEMETRY would carry it: t_s = t, t_us the wrapping
-        //! 32-bit microseconds of t, the torques and flags; no reference model (v_ref,
-        //! p_ref 0), no arrival time.
+        //! 32-bit microseconds of t, the torques, the passivity reserve and flags; no reference
+        //! model (v_ref, p_ref 0), no arrival time.
         Sample toSample() const
         {
             Sample sample;
@@ -82,6 +82,8 @@ public:
             sample.tau_ext = tau_ext;
             sample.tau_fx = tau_fx;
             sample.tau_total = tau_total;
+            sample.tau_pc = tau_pc;
+            sample.pc_reserve = pc_reserve;
             sample.flags = flags;
             return sample;
         }

@@ -5,6 +5,7 @@
 
 #include "model/effects.h"
 #include "model/params.h"
+#include "model/passivity.h"
 #include "protocol/deviceinfo.h"
 #include "telemetry/sample.h"
 
@@ -28,6 +29,8 @@ struct RecordingMetadata
     DeviceParams params; //!< parameters at start
     //! The effect block at start (effects.md); none for a device without the effects capability
     std::optional<EffectParams> effects;
+    //! The passivity block at start (passivity.md); none for a device without the controller
+    std::optional<PassivityParams> passivity;
     HostParams host;
     QString source; //!< "hatpic-tuner", "hatpicctl stream", …
 };

@@ -108,8 +108,6 @@ bool parseDouble(const QByteArray &text, double &value)
 constexpr std::size_t kColT = sampleColumnIndex("t_s");
 constexpr std::size_t kColTheta = sampleColumnIndex("theta");
 constexpr std::size_t kColFlags = sampleColumnIndex("flags");
-//! Recordings made before effects.md have no tau_fx: its values read as empty, unremarked.
-constexpr std::size_t kColTauFx = sampleColumnIndex("tau_fx");
 constexpr std::size_t kColEvent = kSampleColumns.size();
 constexpr std::size_t kColCount = kColEvent + 1;
 
@@ -192,6 +190,12 @@ void applyMetadata(const QByteArray &text, const QString &fileName, Recording &r
         m.effects.emplace();
         readEffectParams(effects.toObject(), QStringLiteral("parameters.effects."), *m.effects,
                          problems, ignored);
+    }
+    if (const QJsonValue passivity = params.value(u"passivity"); passivity.isObject()) {
+        QStringList ignored;
+        m.passivity.emplace();
+        readPassivityParams(passivity.toObject(), QStringLiteral("parameters.passivity."),
+                            *m.passivity, problems, ignored);
     }
     // Bounded: the first few are named, the rest counted in one line.
     constexpr qsizetype kNamedProblems = 3;
@@ -372,7 +376,7 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
                             columns.join(u',') % u')');
             }
             for (std::size_t k = 0; k < kColEvent; ++k) {
-                if (index[k] < 0 && k != kColTauFx) {
+                if (index[k] < 0 && !kSampleColumns[k].addedLater) {
                     warn(u"line 1: column \"" % columns[static_cast<qsizetype>(k)] %
                          u"\" missing; its values read as empty.");
                 }

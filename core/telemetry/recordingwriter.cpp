@@ -157,6 +157,8 @@ QByteArray RecordingWriter::Private::metadataText(bool closing) const
         .add("host", hostParamsJson(metadata.host, 4));
     if (metadata.effects)
         parametersWriter.add("effects", effectParamsJson(*metadata.effects, 4));
+    if (metadata.passivity)
+        parametersWriter.add("passivity", passivityParamsJson(*metadata.passivity, 4));
     const QByteArray parameters = parametersWriter.text();
     JsonObjectWriter root(0);
     root.add("format", jsonString(QString::fromLatin1(kFormatTag)))

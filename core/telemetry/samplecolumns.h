@@ -20,14 +20,18 @@ struct SampleColumn
     std::string_view unit;    //!< SI unit, e.g. "N·m"; empty for the flags
     std::string_view meaning; //!< what it is, in a few words
     double Sample::*value;    //!< the quantity; nullptr for the flags (Sample::flags, a bit set)
+    //! Added after the first recordings: a file without it reads its values as empty, unremarked
+    //! (other missing columns are named in a warning).
+    bool addedLater = false;
 
     constexpr bool isFlags() const { return value == nullptr; }
 };
 
 //! The sample columns in the order every CSV writes them.
-//! tau_fx (effects.md) came after the flags, so older files and programs that read columns by
-//! position keep theirs: it is last in `simulate` and `stream`, and before `event` in recordings.
-inline constexpr std::array<SampleColumn, 11> kSampleColumns = {{
+//! tau_fx (effects.md), then tau_pc and pc_reserve (passivity.md) came after the flags, so older
+//! files and programs that read columns by position keep theirs: they are last in `simulate` and
+//! `stream`, and before `event` in recordings.
+inline constexpr std::array<SampleColumn, 13> kSampleColumns = {{
     {"t_s", "s", "session time: follows the device clock, monotonic", &Sample::t_s},
     {"theta", "rad", "knob angle, absolute", &Sample::theta},
     {"omega", "rad/s", "knob rate", &Sample::omega},
@@ -41,11 +45,17 @@ inline constexpr std::array<SampleColumn, 11> kSampleColumns = {{
     {"flags", "", "device flags (low byte) | host flags (kFlag*), a decimal integer", nullptr},
     {"tau_fx", "N·m",
      "effect torque tau_det + tau_wall + tau_vib; empty when the device does not send it",
-     &Sample::tau_fx},
+     &Sample::tau_fx, true},
+    {"tau_pc", "N·m",
+     "passivity controller torque -beta*omega; empty when the device does not send it",
+     &Sample::tau_pc, true},
+    {"pc_reserve", "J",
+     "passivity controller's energy reserve R; empty when the device does not send it",
+     &Sample::pc_reserve, true},
 }};
 
 //! The quantities a plot shows (theta … p_ref) are the columns from this one on, in order;
-//! the plots show tau_fx, after the flags, too.
+//! the plots show tau_fx and tau_pc, after the flags, too.
 inline constexpr std::size_t kFirstQuantityColumn = 1;
 inline constexpr std::size_t kQuantityColumnCount = 8;
 
@@ -59,10 +69,10 @@ constexpr std::size_t sampleColumnIndex(std::string_view name)
 }
 
 static_assert(sampleColumnIndex("t_s") == 0 &&
-              sampleColumnIndex("tau_fx") + 1 == kSampleColumns.size());
+              sampleColumnIndex("pc_reserve") + 1 == kSampleColumns.size());
 static_assert(kFirstQuantityColumn + kQuantityColumnCount == sampleColumnIndex("flags"));
 
-//! The header of the sample CSV, "t_s,theta,…,flags,tau_fx", without line end.
+//! The header of the sample CSV, "t_s,theta,…,flags,tau_fx,tau_pc,pc_reserve", without line end.
 QByteArray sampleCsvHeader();
 
 //! Appends the fields of one row, in column order and without line end, to `row`: numbers as

@@ -337,7 +337,7 @@ void TestHatpicCtl::curveBadRange()
 // ---- simulate ----
 
 static const QByteArray kSampleHeader =
-    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx";
+    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,tau_pc,pc_reserve";
 
 void TestHatpicCtl::simulateInputs_data()
 {
@@ -941,9 +941,11 @@ void TestHatpicCtl::ptyLegacySimulator()
     const QList<QByteArray> lines = out.out.trimmed().split('\n');
     QVERIFY2(lines.size() >= 2, qPrintable(describe(out)));
     const QList<QByteArray> fields = lines[1].split(',');
-    QCOMPARE(fields.size(), 11);
+    QCOMPARE(fields.size(), 13);
     QVERIFY2(fields[2].isEmpty() && fields[3].isEmpty(), lines[1].constData());
     QVERIFY2(fields[10].isEmpty(), lines[1].constData()); // no effects: τ_fx unknown
+    // …nor a passivity controller: τ_pc and R unknown.
+    QVERIFY2(fields[11].isEmpty() && fields[12].isEmpty(), lines[1].constData());
     QVERIFY(!fields[1].isEmpty());
 
     sim.terminate();

@@ -73,7 +73,7 @@ private Q_SLOTS:
     void vibrate();
     void vibrateRefusals_data();
     void vibrateRefusals();
-    void legacyDeviceHasNoEffects();
+    void legacyDeviceHasNoEffects(); // nor a passivity controller
     void torqueLimitIsTheDevicesFloat();
 
 private:
@@ -129,7 +129,9 @@ void TestHatpicCtlEffects::simulateIdealWithEffectsMatchesModel()
     QVERIFY2(run.code == 0, qPrintable(describe(run)));
     QString problem;
     const auto table =
-        parseCsv(run.out, "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx",
+        parseCsv(run.out,
+                 "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,tau_pc,"
+                 "pc_reserve",
                  &problem);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
     QCOMPARE(table.size(), 1001);
@@ -172,9 +174,10 @@ void TestHatpicCtlEffects::setAndGetEffects()
 {
     const Run get = runCtl({u"get"_s, u"--port"_s, u"sim"_s});
     QVERIFY2(get.code == 0, qPrintable(describe(get)));
-    // Seven parameter lines, then seven effect lines (the simulator has the capability).
+    // Seven parameter lines, then seven effect lines (the simulator has the capability), then
+    // the passivity controller's two (tst_hatpicctlpassivity).
     const QList<QByteArray> lines = get.out.trimmed().split('\n');
-    QCOMPARE(lines.size(), 14);
+    QCOMPARE(lines.size(), 16);
     QVERIFY2(lines[7].startsWith("detent_strength 0 "), lines[7].constData());
     QVERIFY2(lines[13].startsWith("wall_damping "), lines[13].constData());
 
@@ -220,7 +223,7 @@ void TestHatpicCtlEffects::unknownNameListsEffects()
 {
     const Run run = runCtl({u"set"_s, u"--port"_s, u"sim"_s, u"--set"_s, u"detents=1"_s});
     QCOMPARE(run.code, 4);
-    QVERIFY2(run.err.contains("and the effects detent_strength, detent_spacing"),
+    QVERIFY2(run.err.contains(", the effects detent_strength, detent_spacing"),
              run.err.constData());
 }
 
@@ -290,6 +293,11 @@ void TestHatpicCtlEffects::legacyDeviceHasNoEffects()
         runCtl(QStringList{u"set"_s} + legacy + QStringList{u"--set"_s, u"detent_strength=0.05"_s});
     QVERIFY2(set.code == 2, qPrintable(describe(set)));
     QVERIFY2(set.err.contains("SET_EFFECTS is not available"), set.err.constData());
+    // Nor a passivity controller: named fields are refused before anything is sent.
+    const Run pc =
+        runCtl(QStringList{u"set"_s} + legacy + QStringList{u"--set"_s, u"pc_damping_max=0"_s});
+    QVERIFY2(pc.code == 2, qPrintable(describe(pc)));
+    QVERIFY2(pc.err.contains("SET_PASSIVITY is not available"), pc.err.constData());
     sim.terminate();
     QVERIFY(sim.waitForFinished(10000));
 #endif

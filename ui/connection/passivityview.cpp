@@ -23,12 +23,26 @@ QString millijoules(double joules)
     return QString::number(joules * 1e3, 'f', 2) + u" mJ"_s;
 }
 
+QString reserveText(double joules)
+{
+    return std::isfinite(joules) ? millijoules(joules) : PassivityView::tr("not reported");
+}
+
 } // namespace
 
 PassivityView::PassivityView(QWidget *parent) : QGroupBox(tr("Passivity at the knob"), parent)
 {
     setObjectName(u"bridge_section_passivity"_s);
     auto *layout = new QVBoxLayout(this);
+    m_controller = new QLabel(this);
+    m_controller->setObjectName(u"bridge_passivity_controller"_s);
+    m_controller->setWordWrap(true);
+    m_controller->setToolTip(
+        tr("The device's passivity controller (passivity.md): it damps the knob by β·ω only "
+           "while the feedback has put in more energy than the reserve allows, so a stable "
+           "contact passes untouched. \"Took out\" is ∫ β·ω² dt since the bridge started. Set it "
+           "in the editor's Passivity controller section (pc_damping_max 0 turns it off)."));
+    layout->addWidget(m_controller);
     m_energy = new QLabel(this);
     m_energy->setObjectName(u"bridge_energy"_s);
     m_energy->setWordWrap(true);
@@ -88,6 +102,23 @@ void PassivityView::clear()
 void PassivityView::setState(const analysis::PassivityObserver::State &s,
                              const analysis::PassivitySettings &settings)
 {
+    if (s.samples == 0)
+        m_controller->setText(QString());
+    else if (!s.controllerReported)
+        m_controller->setText(tr("Controller: none reported — this device's telemetry carries "
+                                 "no τ_pc (no passivity capability); only the observer below "
+                                 "watches."));
+    else if (s.damping)
+        m_controller->setText(
+            tr("Controller: damping — β up to %1 N·m·s/rad (τ_pc %2 N·m). Took out %3; "
+               "reserve %4.")
+                .arg(QString::number(s.dampingCoefficient, 'f', 3),
+                     QString::number(s.controllerTorque, 'f', 4), millijoules(s.dissipated),
+                     reserveText(s.reserve)));
+    else
+        m_controller->setText(tr("Controller: idle — nothing to damp. Took out %1; reserve %2.")
+                                  .arg(millijoules(s.dissipated), reserveText(s.reserve)));
+    m_controller->setVisible(s.samples > 0);
     if (s.samples == 0) {
         m_energy->setText(tr("No sample yet"));
     } else {
@@ -111,7 +142,8 @@ void PassivityView::setState(const analysis::PassivityObserver::State &s,
     m_warning->setText(
         tr("The loop is generating energy in contact (%1 within %2 s): it can chatter or push "
            "the hand. To make contact stable: lower the gain, raise M_adm (the admittance's "
-           "damping), or cut the delay (Stamp → applied; the robot's rate and network).")
+           "damping) or pc_damping_max (the device's passivity controller), or cut the delay "
+           "(Stamp → applied; the robot's rate and network).")
             .arg(millijoules(std::max(s.generated, settings.threshold)))
             .arg(settings.window));
     m_warning->setVisible(s.warning);
@@ -149,7 +181,9 @@ bool PassivityView::isWarning() const
 
 QString PassivityView::text() const
 {
-    return m_energy->text() + (isWarning() ? u" | "_s + m_warning->text() : QString());
+    const QString controller = m_controller->text();
+    return (controller.isEmpty() ? QString() : controller + u" | "_s) + m_energy->text() +
+           (isWarning() ? u" | "_s + m_warning->text() : QString());
 }
 
 } // namespace hatpic

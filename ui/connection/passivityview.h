@@ -1,7 +1,9 @@
 // The Bridge panel's "Passivity at the knob" section (teleop.md § The passivity observer): the
 // energy the feedback path has put into the knob, E = ∫ τ_ext·ω dt, as a number and a plot of
 // the last kSpan seconds, and a warning — saying what to do — while the loop generates energy
-// in contact. It only shows what the bridge's observer (core/analysis) computed.
+// in contact; above it, the device's passivity controller (passivity.md): idle or damping, how
+// hard, what it took out and its reserve. It only shows what the bridge's observer
+// (core/analysis) computed.
 #pragma once
 
 #include "bridge/bridge.h"
@@ -38,6 +40,7 @@ protected:
 private:
     void applyPalette();
 
+    QLabel *m_controller = nullptr;
     QLabel *m_energy = nullptr;
     QLabel *m_warning = nullptr;
     QCustomPlot *m_plot = nullptr;

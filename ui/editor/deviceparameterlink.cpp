@@ -85,6 +85,11 @@ void DeviceParameterLink::refreshEffectsAvailability()
             ? SessionWording::noEffectsReason(info.protocol == WireProtocol::Legacy)
             : QString(),
         rate);
+    const bool controller = connected && info.hasPassivity();
+    m_editor->setPassivityAvailable(
+        controller, connected && !controller
+                        ? SessionWording::noPassivityReason(info.protocol == WireProtocol::Legacy)
+                        : QString());
 }
 
 void DeviceParameterLink::onCommandFinished(quint64 id, const CommandResult &result)

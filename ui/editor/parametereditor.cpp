@@ -86,13 +86,14 @@ void ParameterEditor::buildUi()
     connect(m_form, &ParameterForm::modeEdited, this, [this](ReferenceMode mode) {
         HostParams h = m_host;
         h.mode = mode;
-        recordEdit({m_params, h, m_effects}, tr("Change mode"), u"mode"_s);
+        recordEdit({m_params, h, m_effects, m_passivity}, tr("Change mode"), u"mode"_s);
         ++m_gesture;
     });
     connect(m_form, &ParameterForm::refDeadzoneEdited, this, [this](bool on) {
         HostParams h = m_host;
         h.ref_deadzone = on;
-        recordEdit({m_params, h, m_effects}, tr("Change dead-zone hold"), u"ref_deadzone"_s);
+        recordEdit({m_params, h, m_effects, m_passivity}, tr("Change dead-zone hold"),
+                   u"ref_deadzone"_s);
         ++m_gesture;
     });
     connect(m_form->effectsSection(), &EffectsSection::vibrateRequested, this,
@@ -152,6 +153,8 @@ void ParameterEditor::revert()
     // travel as the float just inside π and need no revert.
     if (const auto &fx = device.effects; fx && !sameOnWire(effectsOnWire(), *fx))
         t.effects = tidyEffectParams(*fx);
+    if (const auto &pc = device.passivity; pc && !sameOnWire(m_passivity, *pc))
+        t.passivity = tidyPassivityParams(*pc);
     setTuning(t, tr("Revert to device values"));
 }
 
@@ -162,7 +165,8 @@ EffectParams ParameterEditor::effectsOnWire() const
 
 DeviceTuning ParameterEditor::editedOnWire() const
 {
-    return {m_params, m_sync.effectsTracked() ? std::optional(effectsOnWire()) : std::nullopt};
+    return {m_params, m_sync.effectsTracked() ? std::optional(effectsOnWire()) : std::nullopt,
+            m_sync.passivityTracked() ? std::optional(roundedForWire(m_passivity)) : std::nullopt};
 }
 
 void ParameterEditor::onFieldEdited(const QString &key, double value)
@@ -173,6 +177,8 @@ void ParameterEditor::onFieldEdited(const QString &key, double value)
         t.device.setField(index, value);
     else if (const int fx = effectFieldIndex(name); fx >= 0)
         t.effects.setField(fx, value);
+    else if (const int pc = passivityFieldIndex(name); pc >= 0)
+        t.passivity.setField(pc, value);
     else if (key == u"v_max")
         t.host.v_max = value;
     else if (key == u"tau_limit")
@@ -197,12 +203,12 @@ void ParameterEditor::setTuning(const Tuning &tuning, const QString &undoText)
 void ParameterEditor::setParams(const DeviceParams &device, const HostParams &host,
                                 const QString &undoText)
 {
-    setTuning({device, host, m_effects}, undoText);
+    setTuning({device, host, m_effects, m_passivity}, undoText);
 }
 
 void ParameterEditor::applyParams(const DeviceParams &device, const HostParams &host)
 {
-    applyTuning({device, host, m_effects});
+    applyTuning({device, host, m_effects, m_passivity});
 }
 
 void ParameterEditor::applyTuning(const Tuning &tuning)
@@ -211,10 +217,12 @@ void ParameterEditor::applyTuning(const Tuning &tuning)
     const HostParams &host = tuning.host;
     const bool deviceChanged = device != m_params;
     const bool hostChanged = host != m_host;
-    const bool effectsChanged = tuning.effects != m_effects;
+    // The device's blocks change together: each is pushed, undone and compared alike.
+    const bool effectsChanged = tuning.effects != m_effects || tuning.passivity != m_passivity;
     m_params = device;
     m_host = host;
     m_effects = tuning.effects;
+    m_passivity = tuning.passivity;
 
     m_form->showTuning(tuning);
 
@@ -249,6 +257,15 @@ void ParameterEditor::setEffectsAvailable(bool available, const QString &reason,
     m_form->effectsSection()->setAvailable(available, reason);
     refreshDiff();
     refreshDerived();
+    refreshSync();
+    refreshActions();
+}
+
+void ParameterEditor::setPassivityAvailable(bool available, const QString &reason)
+{
+    m_sync.setPassivityTracked(available);
+    m_form->setPassivityAvailable(available, reason);
+    refreshDiff();
     refreshSync();
     refreshActions();
 }
@@ -291,12 +308,17 @@ void ParameterEditor::startPush()
     const std::optional<EffectParams> &fx = m_sync.device().effects;
     if (m_sync.effectsTracked() && (!fx || !sameOnWire(onWire, *fx)))
         effects = m_effects;
+    // The passivity block likewise, while the device has the controller.
+    std::optional<PassivityParams> passivity;
+    const std::optional<PassivityParams> &pc = m_sync.device().passivity;
+    if (m_sync.passivityTracked() && (!pc || !sameOnWire(m_passivity, *pc)))
+        passivity = m_passivity;
     m_sync.pushStarted(editedOnWire());
     m_live->pushStarted();
     revalidate();
     refreshSync();
     refreshActions();
-    Q_EMIT pushRequested({m_params, effects});
+    Q_EMIT pushRequested({m_params, effects, passivity});
 }
 
 void ParameterEditor::setLivePush(bool enabled)
@@ -331,6 +353,8 @@ void ParameterEditor::revalidate()
         violations.push_back(std::move(v));
     for (Violation &v : validate(m_effects, m_host.tau_limit))
         violations.push_back(std::move(v));
+    for (Violation &v : validate(m_passivity))
+        violations.push_back(std::move(v));
     for (const Violation &v : violations) {
         const QString text = QString::fromStdString(v.message());
         perField[QString::fromStdString(v.field)] << text;
@@ -353,7 +377,7 @@ void ParameterEditor::revalidate()
 
 void ParameterEditor::refreshDiff()
 {
-    m_form->showDevice(m_sync.device(), m_effects, effectsOnWire());
+    m_form->showDevice(m_sync.device(), tuning(), effectsOnWire());
 }
 
 void ParameterEditor::refreshDerived()
@@ -381,8 +405,10 @@ void ParameterEditor::refreshActions()
 {
     const auto &device = m_sync.device().params;
     const auto &fx = m_sync.device().effects;
+    const auto &pc = m_sync.device().passivity;
     const bool differs =
-        device && (!sameOnWire(m_params, *device) || (fx && !sameOnWire(effectsOnWire(), *fx)));
+        device && (!sameOnWire(m_params, *device) || (fx && !sameOnWire(effectsOnWire(), *fx)) ||
+                   (pc && !sameOnWire(m_passivity, *pc)));
     m_actions->update(m_valid, m_problems, m_sync.canPush(), m_sync.isPushing(), differs);
     m_syncBar->setProblems(m_problems);
 }

@@ -43,13 +43,14 @@ public:
     DeviceParams params() const { return m_params; }
     HostParams hostParams() const { return m_host; }
     EffectParams effects() const { return m_effects; }
-    Tuning tuning() const { return {m_params, m_host, m_effects}; }
+    PassivityParams passivity() const { return m_passivity; }
+    Tuning tuning() const { return {m_params, m_host, m_effects, m_passivity}; }
 
     //! Replaces the whole tuning as one undo step named `undoText`.
     void setTuning(const Tuning &tuning, const QString &undoText);
     //! Shows a tuning without touching the undo stack (used by undo commands and A/B).
     void applyTuning(const Tuning &tuning);
-    //! setTuning / applyTuning with the effects as they are.
+    //! setTuning / applyTuning with the effects and the passivity controller as they are.
     void setParams(const DeviceParams &device, const HostParams &host, const QString &undoText);
     void applyParams(const DeviceParams &device, const HostParams &host);
 
@@ -61,6 +62,9 @@ public:
     //! sync with the parameters); `reason` says why not. `controlRate` [Hz] is the device's
     //! control rate, for the passivity figures and the vibration test's Nyquist rule.
     void setEffectsAvailable(bool available, const QString &reason, double controlRate);
+    //! Whether the connected device has the passivity controller (its block is then pushed and
+    //! kept in sync with the parameters); `reason` says why not.
+    void setPassivityAvailable(bool available, const QString &reason);
 
     //! False while disconnected or for a legacy device; `reason` replaces "not connected".
     void setCanPush(bool deviceAcceptsParams, const QString &reason = {});
@@ -125,8 +129,8 @@ private:
     void recordEdit(const Tuning &tuning, const QString &text, const QString &field);
     //! The effects as SET_EFFECTS carries them (what the device's read-back must equal).
     EffectParams effectsOnWire() const;
-    //! The edited parameters, and the effects as they travel while the device renders them:
-    //! what the sync compares.
+    //! The edited parameters, and the effects and passivity block as they travel while the
+    //! device has them: what the sync compares.
     DeviceTuning editedOnWire() const;
     void revert();
     void startPush();
@@ -143,6 +147,7 @@ private:
     DeviceParams m_params;
     HostParams m_host;
     EffectParams m_effects;
+    PassivityParams m_passivity;
     SyncTracker m_sync;
     double m_controlRate; //!< [Hz]
     bool m_valid = true;

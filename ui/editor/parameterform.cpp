@@ -23,6 +23,7 @@ ParameterForm::ParameterForm(QWidget *parent) : QWidget(parent)
     column->setSpacing(10);
     column->addWidget(buildDeviceGroups());
     column->addWidget(buildEffectsGroup());
+    column->addWidget(buildPassivityGroup());
     column->addWidget(buildHostGroup());
     column->addStretch(1);
 
@@ -117,6 +118,48 @@ QWidget *ParameterForm::buildEffectsGroup()
     return group;
 }
 
+QWidget *ParameterForm::buildPassivityGroup()
+{
+    auto *group = new QGroupBox(tr("Passivity controller — device: stable contact under delay"));
+    group->setObjectName(u"group_passivity"_s);
+    auto *grid = new QGridLayout(group);
+    grid->setHorizontalSpacing(8);
+    grid->setVerticalSpacing(2);
+    grid->setColumnStretch(4, 1);
+    m_passivityUnavailable = new QLabel(group);
+    m_passivityUnavailable->setObjectName(u"label_passivity_unavailable"_s);
+    m_passivityUnavailable->setWordWrap(true);
+    grid->addWidget(m_passivityUnavailable, 0, 0, 1, 5);
+    auto *about = new QLabel(
+        tr("Watches the energy the robot's feedback puts into the knob and damps only what a "
+           "delayed loop adds: a stable contact passes untouched. pc_damping_max 0 turns it "
+           "off; more holds longer delays and makes a swinging contact heavier. The Bridge "
+           "panel shows when it damps, the Stability map what it buys."),
+        group);
+    about->setObjectName(u"label_passivity_about"_s);
+    about->setWordWrap(true);
+    grid->addWidget(about, 1, 0, 1, 5);
+    const QList<ParameterField::Spec> specs = passivityFieldSpecs();
+    for (int i = 0; i < specs.size(); ++i) {
+        auto *field = new ParameterField(specs[i], group, this);
+        field->addToGrid(grid, 2 + 2 * i);
+        addField(field);
+    }
+    setPassivityAvailable(false, QString());
+    return group;
+}
+
+void ParameterForm::setPassivityAvailable(bool available, const QString &reason)
+{
+    m_passivityUnavailable->setText(
+        reason.isEmpty() ? tr("Not connected: edited here and saved in the profile, and pushed "
+                              "with the parameters to a device that has the controller.")
+                         : tr("This device has no passivity controller: %1. The values stay in "
+                              "the profile and are not sent.")
+                               .arg(reason));
+    m_passivityUnavailable->setVisible(!available);
+}
+
 void ParameterForm::addField(ParameterField *field)
 {
     const QString key = field->spec().key;
@@ -140,6 +183,11 @@ void ParameterForm::showTuning(const Tuning &tuning)
         if (f->value() != tuning.effects.field(i))
             f->setValue(tuning.effects.field(i));
     }
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i) {
+        ParameterField *f = m_fields.value(QString::fromLatin1(passivityFieldName(i)));
+        if (f->value() != tuning.passivity.field(i))
+            f->setValue(tuning.passivity.field(i));
+    }
     if (m_fields.value(u"v_max"_s)->value() != host.v_max)
         m_fields.value(u"v_max"_s)->setValue(host.v_max);
     if (m_fields.value(u"tau_limit"_s)->value() != host.tau_limit)
@@ -152,9 +200,10 @@ void ParameterForm::showTuning(const Tuning &tuning)
     m_refDeadzone->setChecked(host.ref_deadzone);
 }
 
-void ParameterForm::showDevice(const DeviceTuning &device, const EffectParams &effects,
+void ParameterForm::showDevice(const DeviceTuning &device, const Tuning &edited,
                                const EffectParams &effectsOnWire)
 {
+    const EffectParams &effects = edited.effects;
     for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
         ParameterField *f = m_fields.value(QString::fromLatin1(deviceFieldName(i)));
         f->setDeviceValue(device.params ? std::optional<double>(device.params->field(i))
@@ -171,6 +220,16 @@ void ParameterForm::showDevice(const DeviceTuning &device, const EffectParams &e
             f->setDeviceValue(effects.field(i));
         else
             f->setDeviceValue(fx->field(i));
+    }
+    const auto &pc = device.passivity;
+    for (int i = 0; i < PassivityParams::kFieldCount; ++i) {
+        ParameterField *f = m_fields.value(QString::fromLatin1(passivityFieldName(i)));
+        if (!pc)
+            f->setDeviceValue(std::nullopt);
+        else if (float(pc->field(i)) == float(edited.passivity.field(i)))
+            f->setDeviceValue(edited.passivity.field(i));
+        else
+            f->setDeviceValue(pc->field(i));
     }
 }
 

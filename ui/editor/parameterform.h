@@ -1,5 +1,6 @@
 // The editor's fields in their groups: the device's parameters (admittance filter,
-// re-centering stiffness), its effects, and the host's reference model (mode, v_max,
+// re-centering stiffness), its effects, its passivity controller, and the host's reference
+// model (mode, v_max,
 // tau_limit, dead-zone hold), with one column width for names and units so the spin boxes line
 // up. It shows a tuning, the device's values beside it and each field's problems, and reports
 // what the user changes; the editor decides what an edit does.
@@ -14,6 +15,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 
 namespace hatpic {
 
@@ -33,9 +35,13 @@ public:
     //! Shows `tuning` in the fields, the mode and the dead-zone hold; no edit is reported.
     void showTuning(const Tuning &tuning);
     //! The device's values beside the fields (none without them). An effect field shows its
-    //! own value when what it sends (`effectsOnWire`) is the device's.
-    void showDevice(const DeviceTuning &device, const EffectParams &effects,
+    //! own value when what it sends (`effectsOnWire`) is the device's; a passivity field when
+    //! its float32 is the device's.
+    void showDevice(const DeviceTuning &device, const Tuning &edited,
                     const EffectParams &effectsOnWire);
+    //! Whether the connected device has the passivity controller; `reason` says why not, shown
+    //! above the fields (which stay editable: they are the profile's).
+    void setPassivityAvailable(bool available, const QString &reason);
     //! Each field's problems, one a line; a field not in `perField` has none.
     void setProblems(const QHash<QString, QStringList> &perField);
     //! Display only: θ0, N and Q_dz in degrees.
@@ -51,12 +57,14 @@ private:
     QWidget *buildDeviceGroups();
     QWidget *buildHostGroup();
     QWidget *buildEffectsGroup();
+    QWidget *buildPassivityGroup();
     void addField(ParameterField *field);
 
     QHash<QString, ParameterField *> m_fields;
     QComboBox *m_mode = nullptr;
     QCheckBox *m_refDeadzone = nullptr;
     EffectsSection *m_effectsSection = nullptr;
+    QLabel *m_passivityUnavailable = nullptr;
 };
 
 } // namespace hatpic

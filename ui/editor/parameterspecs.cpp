@@ -165,6 +165,11 @@ QList<ParameterField::Spec> effectFieldSpecs()
     return specsOf(kEffectFields);
 }
 
+QList<ParameterField::Spec> passivityFieldSpecs()
+{
+    return specsOf(kPassivityFields);
+}
+
 QList<ParameterField::Spec> vibrationFieldSpecs()
 {
     QList<ParameterField::Spec> specs = specsOf(kVibrationFields);

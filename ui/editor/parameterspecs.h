@@ -16,6 +16,8 @@ ParameterField::Spec tauLimitSpec();
 //! The seven effect fields in wire order (effects.md § 2). detent_strength's spin box goes up
 //! to tau_limit's own maximum; validation holds it to the set's tau_limit.
 QList<ParameterField::Spec> effectFieldSpecs();
+//! The passivity controller's two fields in wire order (passivity.md).
+QList<ParameterField::Spec> passivityFieldSpecs();
 //! The vibration cue's amplitude, frequency and duration (VIBRATE; not part of a profile).
 QList<ParameterField::Spec> vibrationFieldSpecs();
 

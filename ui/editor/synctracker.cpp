@@ -43,6 +43,19 @@ void SyncTracker::setEffectsTracked(bool tracked)
         m_device.effects.reset();
 }
 
+void SyncTracker::setPassivityTracked(bool tracked)
+{
+    m_passivityTracked = tracked;
+    if (!tracked)
+        m_device.passivity.reset();
+}
+
+DeviceTuning SyncTracker::counted(const DeviceTuning &tuning) const
+{
+    return {tuning.params, m_effectsTracked ? tuning.effects : std::nullopt,
+            m_passivityTracked ? tuning.passivity : std::nullopt};
+}
+
 void SyncTracker::edited()
 {
     m_failure.reset();
@@ -75,9 +88,10 @@ bool SyncTracker::pushFinished(const CommandResult &result)
     switch (result.status) {
     case CommandResult::Status::Rejected: {
         m_failure = SyncState::Rejected;
-        const std::string_view field = isEffectCommand(result.command)
-                                           ? effectFieldName(result.field)
-                                           : deviceFieldName(result.field);
+        const std::string_view field =
+            isEffectCommand(result.command)      ? effectFieldName(result.field)
+            : isPassivityCommand(result.command) ? passivityFieldName(result.field)
+                                                 : deviceFieldName(result.field);
         m_rejectedField = QString::fromLatin1(field.data(), qsizetype(field.size()));
         break;
     }
@@ -103,11 +117,12 @@ SyncState SyncTracker::state(const DeviceTuning &edited) const
         return SyncState::Pushing;
     if (m_failure)
         return *m_failure;
-    if (!m_device.params || (m_effectsTracked && !m_device.effects))
+    if (!m_device.params || (m_effectsTracked && !m_device.effects) ||
+        (m_passivityTracked && !m_device.passivity))
         return SyncState::NotRead;
-    // The parts that count: the effects only while the device renders them.
-    const DeviceTuning device{m_device.params, m_effectsTracked ? m_device.effects : std::nullopt};
-    const DeviceTuning wanted{edited.params, m_effectsTracked ? edited.effects : std::nullopt};
+    // The parts that count: each block only while the device has it.
+    const DeviceTuning device = counted(m_device);
+    const DeviceTuning wanted = counted(edited);
     if (sameOnWire(wanted, device))
         return SyncState::InSync;
     if (m_pushed && sameOnWire(wanted, *m_pushed))

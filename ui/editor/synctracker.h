@@ -1,7 +1,8 @@
 // Bookkeeping behind the editor's sync state: the device's tuning as read, the push in flight
 // and how the last one ended; the state is a function of these and the edited tuning. No
 // widgets; the editor asks it for the state after every change. The device's effect block takes
-// part only while the device renders effects (setEffectsTracked).
+// part only while the device renders effects (setEffectsTracked), its passivity block only while
+// it has the controller (setPassivityTracked).
 #pragma once
 
 #include "model/devicetuning.h"
@@ -39,6 +40,9 @@ public:
     //! Whether the device renders effects: only then its effect block counts for the state.
     void setEffectsTracked(bool tracked);
     bool effectsTracked() const { return m_effectsTracked; }
+    //! Whether the device has the passivity controller: only then its block counts.
+    void setPassivityTracked(bool tracked);
+    bool passivityTracked() const { return m_passivityTracked; }
 
     //! The edited values changed: the last failure was about other values.
     void edited();
@@ -52,8 +56,8 @@ public:
     //! "wall_stiffness"), or empty.
     QString rejectedField() const { return m_rejectedField; }
 
-    //! `edited` as it travels (roundedForWire), its effects while tracked: what the device's
-    //! read-back must equal.
+    //! `edited` as it travels (roundedForWire), its effects and passivity block while tracked:
+    //! what the device's read-back must equal.
     SyncState state(const DeviceTuning &edited) const;
     QString text(const DeviceTuning &edited) const;
 
@@ -62,6 +66,9 @@ private:
     QString m_cannotPushReason;
     DeviceTuning m_device;
     bool m_effectsTracked = false;
+    bool m_passivityTracked = false;
+    //! `tuning` without the parts that do not count (untracked blocks).
+    DeviceTuning counted(const DeviceTuning &tuning) const;
     std::optional<DeviceTuning> m_pushing; //!< the edited tuning of the push in flight
     std::optional<DeviceTuning> m_pushed;  //!< …of the last push the device took
     //! The last push's failure (or its unanswered read-back), until an edit or a read-back

@@ -25,6 +25,8 @@ QString channelLabel(Channel channel)
         return QStringLiteral("p_ref");
     case Channel::TauFx:
         return QStringLiteral("τ_fx");
+    case Channel::TauPc:
+        return QStringLiteral("τ_pc");
     case Channel::TauDet:
         return QStringLiteral("τ_det");
     case Channel::TauWall:

@@ -27,6 +27,7 @@ QString DisplayUnits::unit(Channel channel) const
     case Channel::TauExt:
     case Channel::TauTotal:
     case Channel::TauFx:
+    case Channel::TauPc:
     case Channel::TauDet:
     case Channel::TauWall:
     case Channel::TauVib:

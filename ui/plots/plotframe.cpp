@@ -123,6 +123,7 @@ PlotFrame::PlotFrame(QCustomPlot *plot)
     addGraph(Channel::TauExt, PlotKind::Torque, false);
     addGraph(Channel::TauTotal, PlotKind::Torque, false);
     addGraph(Channel::TauFx, PlotKind::Torque, false);
+    addGraph(Channel::TauPc, PlotKind::Torque, false);
     addGraph(Channel::TauDet, PlotKind::Torque, false);
     addGraph(Channel::TauWall, PlotKind::Torque, false);
     addGraph(Channel::TauVib, PlotKind::Torque, false);
@@ -244,7 +245,7 @@ void PlotFrame::autoscale(const std::array<DecimationResult, kChannelCount> &ran
     collect({Channel::Omega});
     fit(rect(PlotKind::Angle)->axis(QCPAxis::atRight), lo, hi, 0.1 * angleScale);
     collect({Channel::Tau, Channel::TauRec, Channel::TauExt, Channel::TauTotal, Channel::TauFx,
-             Channel::TauDet, Channel::TauWall, Channel::TauVib});
+             Channel::TauPc, Channel::TauDet, Channel::TauWall, Channel::TauVib});
     fit(rect(PlotKind::Torque)->axis(QCPAxis::atLeft), lo, hi, kMinSpan[1]);
     collect({Channel::VRef});
     fit(rect(PlotKind::Reference)->axis(QCPAxis::atLeft), lo, hi,

@@ -15,6 +15,8 @@ SampleBuffer::SampleBuffer(qsizetype capacity) : m_capacity(std::max<qsizetype>(
     for (auto &column : m_values)
         column.resize(n);
     m_flags.resize(n);
+    for (auto &column : m_unplotted)
+        column.resize(n);
 }
 
 void SampleBuffer::append(const Sample &sample)
@@ -57,6 +59,8 @@ void SampleBuffer::append(const Sample &sample)
     m_values[channelIndex(Channel::TauWall)][u] = parts.wall;
     m_values[channelIndex(Channel::TauVib)][u] = parts.vib;
     m_flags[u] = sample.flags;
+    for (std::size_t k = 0; k < kUnplottedColumns.size(); ++k)
+        m_unplotted[k][u] = sample.*kSampleColumns[kUnplottedColumns[k]].value;
     ++m_appended;
     ++m_generation;
 }
@@ -93,6 +97,9 @@ Sample SampleBuffer::sample(qsizetype index) const
             s.*channelColumn(channel).value = value(channel, index);
     }
     s.flags = flags(index);
+    for (std::size_t k = 0; k < kUnplottedColumns.size(); ++k)
+        s.*kSampleColumns[kUnplottedColumns[k]].value =
+            m_unplotted[k][static_cast<std::size_t>(slot(index))];
     return s;
 }
 

@@ -90,6 +90,7 @@ private:
     std::vector<double> m_time;
     std::array<std::vector<double>, kChannelCount> m_values;
     std::vector<quint16> m_flags;
+    std::array<std::vector<double>, kUnplottedColumns.size()> m_unplotted; //!< kUnplottedColumns
     std::optional<EffectParams> m_effects;
     double m_effectsTheta0 = 0; //!< [rad]
     double m_shift = 0;         //!< added to incoming t_s after a clock restart [s]

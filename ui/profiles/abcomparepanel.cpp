@@ -118,6 +118,7 @@ QList<AbComparePanel::Row> AbComparePanel::rows(const Profile &a, const Profile 
     QList<Row> rows;
     addNumbers(rows, kDeviceFields, a.device, b.device, degrees);
     addNumbers(rows, kEffectFields, a.effects, b.effects, degrees);
+    addNumbers(rows, kPassivityFields, a.passivity, b.passivity, degrees);
     addNumbers(rows, kHostFields, a.host, b.host, degrees);
     Row mode{tr("mode"), modeText(a.host.mode), modeText(b.host.mode), {}, false};
     mode.differs = a.host.mode != b.host.mode;

@@ -114,6 +114,7 @@ Profile ProfileController::currentProfile(int slot) const
         p.device = m_editor->params();
         p.host = m_editor->hostParams();
         p.effects = m_editor->effects();
+        p.passivity = m_editor->passivity();
         p.bridge = m_bridge;
     }
     return p;
@@ -198,7 +199,8 @@ void ProfileController::load(const Profile &profile, const QString &path, const 
     Slot &slot = m_slots[m_active];
     slot.saved = profile;
     slot.path = path;
-    m_editor->setTuning({profile.device, profile.host, profile.effects}, undoText);
+    m_editor->setTuning({profile.device, profile.host, profile.effects, profile.passivity},
+                        undoText);
     m_bridge = profile.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
     m_notes = profile.notes;
@@ -412,7 +414,8 @@ void ProfileController::activateSlot(int slot, bool pushOnSwitch)
     from.working = currentProfile(m_active);
     m_active = slot;
     const Slot &to = m_slots[slot];
-    m_editor->applyTuning({to.working.device, to.working.host, to.working.effects});
+    m_editor->applyTuning(
+        {to.working.device, to.working.host, to.working.effects, to.working.passivity});
     m_bridge = to.working.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
     m_notes = to.working.notes;

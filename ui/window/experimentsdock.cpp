@@ -22,6 +22,7 @@ QDockWidget *addExperimentsDock(QMainWindow *window, DeviceClient *client, PlotP
     map->setObjectName(QStringLiteral("stabilityMap"));
     const auto follow = [map, editor] {
         map->setTuning(editor->params(), editor->hostParams(), editor->effects());
+        map->setPassivity(editor->passivity());
     };
     follow();
     QObject::connect(editor, &ParameterEditor::paramsEdited, map, follow);

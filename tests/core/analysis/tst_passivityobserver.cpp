@@ -256,6 +256,46 @@ private Q_SLOTS:
                      qPrintable(QString::number(theta)));
     }
 
+    void controllerIsFollowedFromItsTelemetry()
+    {
+        // A knob at ω = 2 rad/s, the device's controller damping by β = 0.3 for 0.5 s
+        // (τ_pc = −β·ω = −0.6 N·m), then idle: it took out β·ω²·0.5 s = 0.6 J.
+        PassivityObserver observer;
+        const double omega = 2.0;
+        const double beta = 0.3;
+        double t = 0;
+        for (; t < 0.5; t += kStep)
+            observer.add(t, 0.01, omega, -beta * omega, 0.0);
+        const auto &s = observer.state();
+        QVERIFY(s.controllerReported);
+        QVERIFY(s.damping);
+        QVERIFY2(std::abs(s.dampingCoefficient - beta) < 1e-12,
+                 qPrintable(QString::number(s.dampingCoefficient)));
+        QCOMPARE(s.controllerTorque, -beta * omega);
+        QCOMPARE(s.reserve, 0.0);
+        const double tookOut = s.dissipated;
+        QVERIFY2(std::abs(tookOut - beta * omega * omega * 0.499) < 2e-3,
+                 qPrintable(QString::number(tookOut)));
+        // Idle: τ_pc 0, the reserve filling again. "Damping" holds for `hold`, then goes;
+        // what it took out stays.
+        const double stopped = t;
+        for (; t < stopped + observer.settings().hold + 0.05; t += kStep)
+            observer.add(t, 0.01, omega, 0.0, 0.02);
+        QVERIFY(!s.damping);
+        QCOMPARE(s.dampingCoefficient, 0.0);
+        QCOMPARE(s.reserve, 0.02);
+        QVERIFY(std::abs(s.dissipated - tookOut) < 1e-3); // one trapezoid's half step more
+        // A device without the capability sends NaN: nothing is claimed of its controller.
+        PassivityObserver none;
+        for (double u = 0; u < 0.1; u += kStep)
+            none.add(u, 0.01, omega);
+        QVERIFY(!none.state().controllerReported);
+        QVERIFY(!none.state().damping);
+        QCOMPARE(none.state().dissipated, 0.0);
+        QVERIFY(std::isnan(none.state().reserve));
+        QVERIFY(none.state().samples > 0); // the observer itself still runs
+    }
+
     void settingsAreChecked_data()
     {
         QTest::addColumn<PassivitySettings>("settings");

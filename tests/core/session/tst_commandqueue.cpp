@@ -56,7 +56,9 @@ struct Harness
     {
         Command c;
         c.id = id;
-        c.kind = tuning.params ? CommandKind::SetParams : CommandKind::SetEffects;
+        c.kind = tuning.params    ? CommandKind::SetParams
+                 : tuning.effects ? CommandKind::SetEffects
+                                  : CommandKind::SetPassivity; // as DeviceSession::pushTuning
         c.tuning = tuning;
         queue.enqueue(c);
         return c;
@@ -95,6 +97,7 @@ private Q_SLOTS:
     void oneInFlightTheRestWait();
     void setEffectsIsReadBack();
     void aTuningIsOnePushWithOneResult();
+    void aPassivityPushSaysWhatItSentAndWhatWasApplied();
     void aRefusedPartEndsThePush();
     void effectsReadBackThatDiffersIsReported();
     void vibrateFinishesOnItsAck();
@@ -311,6 +314,39 @@ void TestCommandQueue::aTuningIsOnePushWithOneResult()
     QCOMPARE(r.command, CommandKind::SetParams);
     QVERIFY(sameOnWire(r.received, c.tuning));
     QCOMPARE(h.link.writes.size(), 4);
+}
+
+void TestCommandQueue::aPassivityPushSaysWhatItSentAndWhatWasApplied()
+{
+    Harness h;
+    // The passivity block alone: SET_PASSIVITY, GET_PASSIVITY; the result says what it sent
+    // (the tuner's "Pushed: pc_damping_max 0.5 → 0" is made from it).
+    const Command alone = h.push(15, {std::nullopt, std::nullopt, PassivityParams::off()});
+    QVERIFY(std::holds_alternative<v2::SetPassivity>(h.link.last().message));
+    h.ack(h.lastSeq());
+    QVERIFY(std::holds_alternative<v2::GetPassivity>(h.link.last().message));
+    h.queue.onTuning({std::nullopt, std::nullopt, alone.tuning.passivity});
+    QCOMPARE(h.finished.size(), 1);
+    const CommandResult r = h.finished[0].second;
+    QVERIFY(r.ok() && r.readBackMatches);
+    QVERIFY(r.sent.passivity && *r.sent.passivity == PassivityParams::off());
+    QVERIFY(r.received.passivity.has_value());
+
+    // All three blocks, SET_PASSIVITY unanswered: the parameters and effects are in force, the
+    // passivity block unknown.
+    const Command all = h.push(16, {DeviceParams{}, EffectParams{}, PassivityParams::off()});
+    h.ack(h.lastSeq());
+    h.queue.onTuning({all.tuning.params, std::nullopt});
+    h.ack(h.lastSeq());
+    h.queue.onTuning({std::nullopt, all.tuning.effects});
+    QVERIFY(std::holds_alternative<v2::SetPassivity>(h.link.last().message));
+    QTRY_COMPARE_WITH_TIMEOUT(h.finished.size(), 2, 10 * CommandQueue::kCommandTimeoutMs);
+    const CommandResult timedOut = h.finished[1].second;
+    QCOMPARE(timedOut.status, CommandResult::Status::Timeout);
+    QCOMPARE(timedOut.command, CommandKind::SetPassivity);
+    const DeviceTuning applied = appliedBeforeFailure(timedOut);
+    QVERIFY(applied.params && applied.effects && !applied.passivity);
+    QCOMPARE(unansweredBlockStep(timedOut), std::optional(CommandKind::SetPassivity));
 }
 
 void TestCommandQueue::aRefusedPartEndsThePush()

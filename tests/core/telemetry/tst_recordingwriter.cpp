@@ -76,10 +76,11 @@ bool writeFile(const QString &path, const QByteArray &bytes)
 }
 
 //! The header the writer writes.
-const QByteArray kWrittenHeader =
-    "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event\n";
-//! The header of a recording made before tau_fx existed: the hand-written files below use it,
-//! so they also check that such recordings still read (without a word about tau_fx).
+const QByteArray kWrittenHeader = "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,"
+                                  "tau_fx,tau_pc,pc_reserve,event\n";
+//! The header of a recording made before tau_fx, tau_pc and pc_reserve existed: the hand-written
+//! files below use it, so they also check that such recordings still read (without a word about
+//! those).
 const QByteArray kHeader =
     "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,event\n";
 
@@ -112,13 +113,15 @@ private Q_SLOTS:
     void neverCrashesOnMutatedFiles();
     void parseFromBytesReadsLikeTheFile();
     void metadataParametersReadAsAProfilesAre();
+    void passivityColumnsAndMetadataRoundTrip();
 };
 
 void TestRecordingWriter::columns()
 {
     QCOMPARE(recordingColumns().join(u','),
              QStringLiteral(
-                 "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event"));
+                 "t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,tau_pc,"
+                 "pc_reserve,event"));
 }
 
 void TestRecordingWriter::metadataPathBesideCsv_data()
@@ -161,8 +164,10 @@ void TestRecordingWriter::headerAndRows()
     QVERIFY(!rec.isOpen());
     const QByteArray text = readAll(csv);
     QCOMPARE(text, QByteArray(kWrittenHeader +
-                              "0.001,0.05,0.5,-0.01,-0.02,0,-0.02,0.025,0.3333333333333333,258,0,\n"
-                              "1234.567891,0.05,,,-0.02,0,-0.02,-1e-07,0.3333333333333333,0,,\n"));
+                              "0.001,0.05,0.5,-0.01,-0.02,0,-0.02,0.025,0.3333333333333333,258,0,"
+                              "0,0,\n"
+                              "1234.567891,0.05,,,-0.02,0,-0.02,-1e-07,0.3333333333333333,0,,0,"
+                              "0,\n"));
     QCOMPARE(rec.status().samples, quint64(2));
     QCOMPARE(rec.status().bytes, qint64(text.size()));
     QCOMPARE(rec.status().seconds, 1234.567891 - 0.001);
@@ -182,10 +187,10 @@ void TestRecordingWriter::eventsAreQuoted()
     rec.close();
     const QList<QByteArray> lines = readAll(csv).split('\n');
     QCOMPARE(lines.size(), 5); // header, 3 rows, empty after the last '\n'
-    QVERIFY(lines[1].endsWith(",258,0,"));
-    QCOMPARE(lines[2].mid(lines[2].indexOf(",258,0,") + 7),
+    QVERIFY(lines[1].endsWith(",258,0,0,0,"));
+    QCOMPARE(lines[2].mid(lines[2].indexOf(",258,0,0,0,") + 11),
              QStringLiteral("\"K_max 0.4 → 0.6; note \"\"soft\"\", then more\"").toUtf8());
-    QVERIFY(lines[3].endsWith(",258,0,"));
+    QVERIFY(lines[3].endsWith(",258,0,0,0,"));
 }
 
 void TestRecordingWriter::jsonContent()
@@ -713,6 +718,58 @@ void TestRecordingWriter::metadataParametersReadAsAProfilesAre()
                           u"default is used."_s,
                           u"./m.json: parameters.host.ref_deadzone: must be true or false, got "
                           u"\"yes\"; the default is used."_s}));
+}
+
+void TestRecordingWriter::passivityColumnsAndMetadataRoundTrip()
+{
+    // τ_pc and R as the device sent them (floats), the controller's block in the metadata; a
+    // device without the capability (NaN) writes empty fields that read back as NaN.
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("pc.csv"));
+    RecordingMetadata meta = metadata();
+    meta.passivity = PassivityParams{.pc_damping_max = 0.25, .pc_reserve_max = 0.0078125};
+    RecordingWriter rec;
+    QVERIFY2(rec.open(csv, meta), qPrintable(rec.error()));
+    Sample damped = sample(0.001);
+    damped.tau_pc = double(-0.0125f);
+    damped.pc_reserve = 0;
+    Sample unknown = sample(0.002);
+    unknown.tau_pc = kNaN;
+    unknown.pc_reserve = kNaN;
+    QVERIFY(rec.append({damped, unknown}));
+    rec.close();
+    const QList<QByteArray> lines = readAll(csv).split('\n');
+    QVERIFY2(lines[1].endsWith(",258,0,-0.0125,0,"), lines[1].constData());
+    QVERIFY2(lines[2].endsWith(",258,0,,,"), lines[2].constData());
+    const QJsonObject passivity = readJson(dir.filePath(QStringLiteral("pc.json")))
+                                      .value(u"parameters")
+                                      .toObject()
+                                      .value(u"passivity")
+                                      .toObject();
+    QCOMPARE(passivity.value(u"pc_damping_max").toDouble(), 0.25);
+
+    const RecordingReadResult r = readRecording(csv);
+    QVERIFY2(r.recording, qPrintable(r.error));
+    QVERIFY2(r.warnings.isEmpty(), qPrintable(r.warnings.join(u'\n')));
+    const QList<Sample> &rows = r.recording->samples;
+    QCOMPARE(rows.size(), 2);
+    QCOMPARE(float(rows[0].tau_pc), -0.0125f); // the float's shortest decimal, read back
+    QCOMPARE(rows[0].pc_reserve, 0.0);
+    QVERIFY(std::isnan(rows[1].tau_pc) && std::isnan(rows[1].pc_reserve));
+    QVERIFY(r.recording->metadata.passivity);
+    QVERIFY(*r.recording->metadata.passivity == meta.passivity);
+    // Older metadata has no block: none is claimed.
+    const RecordingReadResult old =
+        parseRecording(kHeader + "0,1,,,,,,,,0,\n", R"({"format": "hatpic-recording",
+            "version": 1, "parameters": {}})",
+                       QStringLiteral("old.csv"));
+    QVERIFY2(old.recording, qPrintable(old.error));
+    QVERIFY(!old.recording->metadata.passivity);
+    QVERIFY(std::isnan(old.recording->samples.first().tau_pc));
+    const QString said = old.warnings.join(u'\n'); // of the missing parameters, not of these
+    QVERIFY2(!said.contains(u"passivity"_s) && !said.contains(u"tau_pc"_s) &&
+                 !said.contains(u"pc_reserve"_s),
+             qPrintable(said));
 }
 
 QTEST_GUILESS_MAIN(TestRecordingWriter)

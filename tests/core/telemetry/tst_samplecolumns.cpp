@@ -83,7 +83,8 @@ void TestSampleColumns::headerIsTheTable()
     QCOMPARE(QString::fromLatin1(sampleCsvHeader()), names.join(u','));
     // The documented header (docs/cli.md, docs/recording.md), in the order of today's files.
     QCOMPARE(sampleCsvHeader(),
-             QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx"));
+             QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,"
+                        "tau_pc,pc_reserve"));
 }
 
 void TestSampleColumns::recordingColumnsAreTheTableAndEvent()
@@ -152,14 +153,19 @@ void TestSampleColumns::rowNumbersUseTheOneFormat()
     s.p_ref = 1.0 / 3.0;
     s.flags = 0x0201;
     s.tau_fx = double(0.0625f);
+    s.tau_pc = double(-0.0125f);
+    s.pc_reserve = double(0.02f);
     QByteArray row;
     appendSampleCsvRow(row, s);
     QCOMPARE(row,
-             QByteArray("1234.567891,0.05,,0,-0.02,0,-0.02,-1e-07,0.3333333333333333,513,0.0625"));
+             QByteArray("1234.567891,0.05,,0,-0.02,0,-0.02,-1e-07,0.3333333333333333,513,0.0625,"
+                        "-0.0125,0.02"));
     s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // a device without effects
+    s.tau_pc = std::numeric_limits<double>::quiet_NaN(); // …nor the passivity controller
+    s.pc_reserve = std::numeric_limits<double>::quiet_NaN();
     row.clear();
     appendSampleCsvRow(row, s);
-    QVERIFY(row.endsWith(",513,"));
+    QVERIFY(row.endsWith(",513,,,"));
 }
 
 void TestSampleColumns::recordingHeaderAndRowsAreTheTables()

@@ -105,6 +105,46 @@ private Q_SLOTS:
         QCOMPARE(view.text().contains(u"lower the gain"_s), warning);
     }
 
+    void controllerSaysIdleOrDamping_data()
+    {
+        QTest::addColumn<bool>("reported");
+        QTest::addColumn<bool>("damping");
+        QTest::addColumn<QString>("line");
+        QTest::newRow("no capability")
+            << false << false
+            << u"Controller: none reported — this device's telemetry carries no τ_pc (no "
+               "passivity capability); only the observer below watches."_s;
+        QTest::newRow("idle") << true << false
+                              << u"Controller: idle — nothing to damp. Took out 1.25 mJ; "
+                                 "reserve 20.00 mJ."_s;
+        QTest::newRow("damping")
+            << true << true
+            << u"Controller: damping — β up to 0.420 N·m·s/rad (τ_pc -0.0210 N·m). Took out "
+               "1.25 mJ; reserve 0.00 mJ."_s;
+    }
+    void controllerSaysIdleOrDamping()
+    {
+        QFETCH(bool, reported);
+        QFETCH(bool, damping);
+        QFETCH(QString, line);
+        PassivityView view;
+        view.show();
+        analysis::PassivityObserver::State s;
+        view.setState(s); // no sample yet: nothing said of the controller
+        QVERIFY(!view.findChild<QLabel *>(u"bridge_passivity_controller"_s)->isVisible());
+        s.samples = 10;
+        s.time = 3;
+        s.controllerReported = reported;
+        s.damping = damping;
+        s.dampingCoefficient = damping ? 0.42 : 0;
+        s.controllerTorque = damping ? -0.021 : 0;
+        s.dissipated = reported ? 1.25e-3 : 0;
+        s.reserve = damping ? 0.0 : 0.02;
+        view.setState(s);
+        QCOMPARE(label(view, u"bridge_passivity_controller"_s), line);
+        QVERIFY(view.text().startsWith(line));
+    }
+
     void energyPlotKeepsItsSpan()
     {
         PassivityView view;

@@ -62,6 +62,7 @@ private Q_SLOTS:
     void pushReachesTheDeviceAndComesBackInSync();
     void commandsAreWorded();
     void effectsArePushedWithTheParameters();
+    void passivityControllerIsPushedAndKeptInSync();
     void pushListsOnlyWhatWasEdited();
     void vibrationTestIsAcknowledged();
     void legacyDeviceCannotTakeParameters();
@@ -246,6 +247,63 @@ void TestDeviceParameterLink::vibrationTestIsAcknowledged()
     QVERIFY(rig.disconnect());
 }
 
+void TestDeviceParameterLink::passivityControllerIsPushedAndKeptInSync()
+{
+    Rig rig;
+    rig.client.connectDevice(simOptions(WireProtocol::V2));
+    // In sync means the passivity block too: the connection reads it (GET_PASSIVITY).
+    QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
+    QVERIFY(rig.client.deviceInfo().hasPassivity());
+    QVERIFY(rig.editor.deviceTuning().passivity.has_value());
+    const auto *why = rig.editor.findChild<QLabel *>(QStringLiteral("label_passivity_unavailable"));
+    QVERIFY(why && !why->isVisibleTo(&rig.editor));
+    ParameterField *beta = rig.editor.field(QStringLiteral("pc_damping_max"));
+    QVERIFY(beta);
+    QCOMPARE(beta->value(), PassivityParams{}.pc_damping_max);
+    QVERIFY(!beta->differsFromDevice());
+
+    QSignalSpy finished(&rig.link, &DeviceParameterLink::commandFinished);
+    QSignalSpy pushes(&rig.editor, &ParameterEditor::pushRequested);
+    // Typed into the field as a user does: one undoable edit, marked against the device.
+    beta->spinBox()->setFocus();
+    beta->spinBox()->selectAll();
+    QTest::keyClicks(beta->spinBox(), QStringLiteral("0"));
+    QTest::keyClick(beta->spinBox(), Qt::Key_Return);
+    QCOMPARE(rig.editor.passivity().pc_damping_max, 0.0);
+    QCOMPARE(rig.editor.syncState(), SyncState::Edited);
+    QVERIFY(beta->differsFromDevice());
+    rig.editor.pushAction()->trigger();
+    QCOMPARE(pushes.size(), 1);
+    const DeviceTuning pushed = pushes.constFirst().at(0).value<DeviceTuning>();
+    QVERIFY(pushed.passivity && pushed.passivity->pc_damping_max == 0.0);
+    QVERIFY(!pushed.effects); // the effects were in sync: not sent
+    QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kConnectMs);
+    QCOMPARE(finished.size(), 1);
+    // The device's read-back holds it: the controller is off on the device.
+    QVERIFY(rig.client.deviceTuning().passivity);
+    QCOMPARE(rig.client.deviceTuning().passivity->pc_damping_max, 0.0);
+    QVERIFY2(rig.link.lastMessage().contains(QStringLiteral("pc_damping_max 0.5 → 0")),
+             qPrintable(rig.link.lastMessage()));
+    QVERIFY(!beta->differsFromDevice());
+
+    // Unchanged, it is not sent again; undo brings the edit back as "edited".
+    rig.editor.pushAction()->trigger();
+    QCOMPARE(pushes.size(), 2);
+    QVERIFY(!pushes.at(1).at(0).value<DeviceTuning>().passivity.has_value());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, kConnectMs);
+    rig.editor.undoAction()->trigger();
+    QCOMPARE(rig.editor.passivity().pc_damping_max, PassivityParams{}.pc_damping_max);
+    QCOMPARE(rig.editor.syncState(), SyncState::Edited);
+    // An invalid value is the editor's problem, named, and nothing is pushed.
+    Tuning t = rig.editor.tuning();
+    t.passivity.pc_reserve_max = -1;
+    rig.editor.setTuning(t, QStringLiteral("bad reserve"));
+    QVERIFY(!rig.editor.pushAction()->isEnabled());
+    QVERIFY2(rig.editor.problems().join(u'\n').contains(QStringLiteral("pc_reserve_max")),
+             qPrintable(rig.editor.problems().join(u'\n')));
+    QVERIFY(rig.disconnect());
+}
+
 void TestDeviceParameterLink::legacyDeviceCannotTakeParameters()
 {
     Rig rig;
@@ -269,6 +327,13 @@ void TestDeviceParameterLink::legacyDeviceCannotTakeParameters()
     QVERIFY2(why->text().contains(QStringLiteral("published firmware")), qPrintable(why->text()));
     QVERIFY(!fx->vibrateButton()->isEnabled());
     QVERIFY(rig.editor.field(QStringLiteral("detent_strength"))->spinBox()->isEnabled());
+    // Nor a passivity controller: said above its fields, which stay editable.
+    const auto *noController =
+        rig.editor.findChild<QLabel *>(QStringLiteral("label_passivity_unavailable"));
+    QVERIFY(noController && noController->isVisibleTo(&rig.editor));
+    QVERIFY2(noController->text().contains(QStringLiteral("no passivity controller")),
+             qPrintable(noController->text()));
+    QVERIFY(rig.editor.field(QStringLiteral("pc_damping_max"))->spinBox()->isEnabled());
     QVERIFY(rig.disconnect());
 }
 

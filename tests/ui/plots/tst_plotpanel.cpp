@@ -574,10 +574,11 @@ void TestPlotPanel::exportsVisibleCsv()
     const QList<QByteArray> lines = file.readAll().split('\n');
     QCOMPARE(
         lines.first(),
-        QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,event"));
+        QByteArray("t_s,theta,omega,tau,tau_rec,tau_ext,tau_total,v_ref,p_ref,flags,tau_fx,tau_pc,"
+                   "pc_reserve,event"));
     QCOMPARE(lines.size(), rows + 2); // header, rows, empty after the last newline
     const QList<QByteArray> firstRow = lines.at(1).split(',');
-    QCOMPARE(firstRow.size(), 12);
+    QCOMPARE(firstRow.size(), 14);
     QVERIFY(firstRow.at(0).toDouble() >= m_panel->viewStart());
 }
 

@@ -39,8 +39,11 @@ void TestSampleCsvWriter::rowsAreTheColumnTablesRows()
     s.flags = 0x0201;
     for (int i = 0; i < 3; ++i) {
         s.t_s = i * 0.001;
-        // τ_fx from a device that sends it, then unknown (a device that does not).
-        s.tau_fx = i < 2 ? 0.0125 : std::numeric_limits<double>::quiet_NaN();
+        // τ_fx, τ_pc and R from a device that sends them, then unknown (one that does not).
+        const double unknown = std::numeric_limits<double>::quiet_NaN();
+        s.tau_fx = i < 2 ? 0.0125 : unknown;
+        s.tau_pc = i < 2 ? -0.0625 : unknown;
+        s.pc_reserve = i < 2 ? 0.015625 : unknown; // no channel shows it: the buffer keeps it
         buffer.append(s);
     }
     QTemporaryDir dir;
@@ -55,15 +58,17 @@ void TestSampleCsvWriter::rowsAreTheColumnTablesRows()
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QByteArray text = file.readAll();
     QCOMPARE(text, expected);
-    // The buffer keeps tau_fx: its value where the device sent one, empty where it did not.
-    QVERIFY(text.contains("\n0.001,0.05,,0,0,0,0,0,0.3333333333333333,513,0.0125,\n"));
-    QVERIFY(text.contains("\n0.002,0.05,,0,0,0,0,0,0.3333333333333333,513,,\n"));
+    // The buffer keeps tau_fx, tau_pc and pc_reserve: their values where the device sent them,
+    // empty where it did not.
+    QVERIFY(
+        text.contains("\n0.001,0.05,,0,0,0,0,0,0.3333333333333333,513,0.0125,-0.0625,0.015625,\n"));
+    QVERIFY(text.contains("\n0.002,0.05,,0,0,0,0,0,0.3333333333333333,513,,,,\n"));
 }
 
 void TestSampleCsvWriter::channelsAreTheTablesQuantities()
 {
-    // The plots' channels are the table's quantity columns, in order, then tau_fx (after the
-    // flags), with their values.
+    // The plots' channels are the table's quantity columns, in order, then tau_fx and tau_pc
+    // (after the flags), with their values.
     Sample s;
     double v = 0.5;
     for (const SampleColumn &column : kSampleColumns) {
@@ -76,8 +81,9 @@ void TestSampleCsvWriter::channelsAreTheTablesQuantities()
             QVERIFY(std::isnan(channelValue(s, channel)));
             continue;
         }
-        const std::size_t column = channel == Channel::TauFx
-                                       ? sampleColumnIndex("tau_fx")
+        const std::size_t column = channel == Channel::TauFx ? sampleColumnIndex("tau_fx")
+                                   : channel == Channel::TauPc
+                                       ? sampleColumnIndex("tau_pc")
                                        : kFirstQuantityColumn + std::size_t(channelIndex(channel));
         QVERIFY(channelColumn(channel).name == kSampleColumns[column].name);
         QCOMPARE(channelValue(s, channel), 0.5 + double(column));

@@ -204,7 +204,7 @@ void TestAbStudy::differencesTableInDisplayUnits()
     QVERIFY(table->item(0, 0)->font().bold());
     QCOMPARE(tableRow(table, QStringLiteral("K_min")), QStringList());
     find<QCheckBox>("ab_all_parameters")->setChecked(true); // every parameter
-    QCOMPARE(table->rowCount(), 18);                        // 7 device, 7 effect and 4 host fields
+    QCOMPARE(table->rowCount(), 20); // 7 device, 7 effect, 2 passivity and 4 host fields
     QCOMPARE(tableRow(table, QStringLiteral("K_min"))[3], QString()); // equal: no Δ
     QVERIFY(!table->item(2, 0)->font().bold());
     QCOMPARE(tableRow(table, QStringLiteral("θ0")),
