@@ -298,8 +298,9 @@ inline constexpr std::array<EffectFieldSpec, EffectParams::kFieldCount> kEffectF
 using PassivityFieldSpec = FieldSpec<PassivityParams>;
 
 //! The passivity controller's fields in wire order (passivity.md, "Parameters"). Tuning
-//! ranges: β_max 0.1 fails at 0.5 s one-way delay, 0.5 holds it; a tank of 0.02 J lets a
-//! rate-controlled robot's stable contact (about 15 mJ back through the knob) pass undamped.
+//! ranges: β_max 0.1 fails at 0.5 s one-way delay, 0.5 holds it but not with 20 % loss, 0.7
+//! (the default) holds both; a tank of 0.02 J lets a rate-controlled robot's stable contact
+//! (about 15 mJ back through the knob) pass undamped.
 inline constexpr std::array<PassivityFieldSpec, PassivityParams::kFieldCount> kPassivityFields = {{
     {"pc_damping_max",
      "β_max",

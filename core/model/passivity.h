@@ -14,10 +14,11 @@
 namespace hatpic {
 
 //! The controller's tuning, in wire order (passivity.md, "Parameters"). The defaults turn it
-//! on; they were chosen by measuring the real teleoperation loop (docs/teleop.md).
+//! on; they were chosen with the stability map and confirmed on the real teleoperation loop
+//! (docs/teleop.md § The passivity controller, "Choosing the defaults").
 struct PassivityParams
 {
-    double pc_damping_max = 0.5;  //!< β_max [N·m·s/rad]; 0 turns the controller off
+    double pc_damping_max = 0.7;  //!< β_max [N·m·s/rad]; 0 turns the controller off
     double pc_reserve_max = 0.02; //!< R_max, the tank's size [J]
 
     static constexpr int kFieldCount = 2;

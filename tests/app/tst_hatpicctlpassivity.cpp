@@ -31,7 +31,7 @@ void TestHatpicCtlPassivity::getShowsTheBlock()
     // Seven parameter lines, seven effect lines, then the passivity controller's two.
     const QList<QByteArray> lines = get.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 16);
-    QVERIFY2(lines[14].startsWith("pc_damping_max  0.5 "), lines[14].constData());
+    QVERIFY2(lines[14].startsWith("pc_damping_max  0.7 "), lines[14].constData());
     QVERIFY2(lines[15].startsWith("pc_reserve_max  0.02 "), lines[15].constData());
     QVERIFY(lines[14].contains("N·m·s/rad"));
     // --json: the defaults are not written, so the block reads back as the defaults.
@@ -56,7 +56,7 @@ void TestHatpicCtlPassivity::setOneField()
     const ProfileReadResult read = parseProfile(json.out);
     QVERIFY2(read.ok(), qPrintable(read.errors.join(u'\n')));
     QCOMPARE(read.profile->passivity.pc_reserve_max, 0.05); // the float as its shortest decimal
-    QCOMPARE(read.profile->passivity.pc_damping_max, 0.5); // only the named field changed
+    QCOMPARE(read.profile->passivity.pc_damping_max, 0.7); // only the named field changed
 }
 
 void TestHatpicCtlPassivity::aProfilesBlockGoesWhole()

@@ -320,7 +320,7 @@ void TestCommandQueue::aPassivityPushSaysWhatItSentAndWhatWasApplied()
 {
     Harness h;
     // The passivity block alone: SET_PASSIVITY, GET_PASSIVITY; the result says what it sent
-    // (the tuner's "Pushed: pc_damping_max 0.5 → 0" is made from it).
+    // (the tuner's "Pushed: pc_damping_max 0.7 → 0" is made from it).
     const Command alone = h.push(15, {std::nullopt, std::nullopt, PassivityParams::off()});
     QVERIFY(std::holds_alternative<v2::SetPassivity>(h.link.last().message));
     h.ack(h.lastSeq());

@@ -282,7 +282,7 @@ void TestDeviceParameterLink::passivityControllerIsPushedAndKeptInSync()
     // The device's read-back holds it: the controller is off on the device.
     QVERIFY(rig.client.deviceTuning().passivity);
     QCOMPARE(rig.client.deviceTuning().passivity->pc_damping_max, 0.0);
-    QVERIFY2(rig.link.lastMessage().contains(QStringLiteral("pc_damping_max 0.5 → 0")),
+    QVERIFY2(rig.link.lastMessage().contains(QStringLiteral("pc_damping_max 0.7 → 0")),
              qPrintable(rig.link.lastMessage()));
     QVERIFY(!beta->differsFromDevice());
 

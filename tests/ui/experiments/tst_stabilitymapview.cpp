@@ -55,7 +55,7 @@ void TestStabilityMapView::computesTheEditedTuningsMap()
     QCOMPARE(view.cells()[3].pc, PassivityParams{}.pc_damping_max);
     QVERIFY(view.cells()[3].result.settled); // and holds the contact with it
     QVERIFY2(view.status().contains(u"3 of 4 cells settle"), qPrintable(view.status()));
-    QVERIFY(view.svg().contains("pc_damping_max = 0.5"));
+    QVERIFY(view.svg().contains("pc_damping_max = 0.7"));
     QVERIFY(view.svg().contains("the settings in use"));
     QVERIFY(view.svg().contains("not settled"));
 
