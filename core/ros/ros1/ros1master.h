@@ -1,7 +1,7 @@
 // What the ROS 1 runtime asks of the master and of roscpp beyond its usual API: a probe with a
 // short timeout, whether the master still knows this node, registering everything again with
 // a master that restarted, and TCP_NODELAY for the connections of our publishers. Called on
-// the runtime's thread only.
+// the runtime's thread only (or at exit, once it has ended).
 #pragma once
 
 #include <chrono>

@@ -219,9 +219,19 @@ void Runtime::stopForExit()
         m_thread.join();
     if (m_spinner)
         m_spinner->stop();
-    // roscpp's exit handler unregisters every topic: without a master, give up at once.
-    if (m_state != State::Connected)
+    if (!m_handle || !::ros::ok())
+        return; // never registered, or shut down by its master (which dropped it)
+    if (m_state != State::Connected || !masterReachable(kProbeTimeout)) {
+        // No master to unregister from (a call to one that is gone could wait for TCP's
+        // timeout): roscpp's exit handler ends the node, and its master calls give up at once.
         ::ros::master::setRetryTimeout(::ros::WallDuration(0.001));
+        return;
+    }
+    // roscpp's own exit handler (Debian's 1.15: atexitCallback in init.cpp) shuts down without
+    // its topic and service managers, so it unregisters nothing: the node, /rosout and the
+    // logger services stayed on the master. ros::shutdown() here, while those managers still
+    // exist (they were made before this handler was registered), unregisters everything.
+    ::ros::shutdown();
 }
 
 void Runtime::run()
@@ -322,8 +332,9 @@ void Runtime::start()
         m_state = State::Dead;
         return;
     }
-    // roscpp registered its exit handler in ros::start(): this one, registered after it, runs
-    // before it and stops this thread and the spinner first.
+    // roscpp's exit handler (registered by ros::init) and its managers (made by now) come
+    // before this one, which therefore runs first: it stops this thread and the spinner, then
+    // shuts roscpp down while its managers still exist, so that it unregisters (stopForExit).
     std::atexit(&Runtime::atExit);
     m_handle = std::make_unique<::ros::NodeHandle>();
     if (!setNoDelayOnListener())

@@ -2,7 +2,8 @@
 // start again after ros::shutdown), so every ros1::openNode() shares this runtime: the first
 // names the node, later ones must ask for the same name. It outlives the last Node (the node
 // stays registered with its master, without topics, until the process ends) and is torn
-// down at exit, before roscpp's own exit handler.
+// down at exit, before roscpp's own exit handler: roscpp shut down in order, so that the node,
+// its topics and its logger services are unregistered from the master, as rospy's are.
 //
 // One thread of its own talks to the master, never the caller's: it waits for a master that
 // is not there yet (a short TCP probe every second), starts roscpp once the master answers,

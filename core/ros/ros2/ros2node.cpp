@@ -64,6 +64,13 @@ std::string realtimeThreadsConfig(int priority)
     return "<CycloneDDS><Domain><Threads>" + threads + "</Threads></Domain></CycloneDDS>";
 }
 
+// The bound on one sample (kMaxSampleBytes), for every domain of ours.
+std::string sampleSizeConfig()
+{
+    return "<CycloneDDS><Domain><Internal><MaxSampleSize>" + std::to_string(kMaxSampleBytes) +
+           "B</MaxSampleSize></Internal></Domain></CycloneDDS>";
+}
+
 // A participant of domain `id` (configured with `config` if the domain is new to the
 // process), with rmw's participant USER_DATA; 0 and `*error` set when refused.
 dds_entity_t openParticipant(int id, const std::string &config, std::string *error)
@@ -179,7 +186,9 @@ std::unique_ptr<Node> openNode(const NodeOptions &options, std::string *error)
         return nullptr;
     // Cyclone's receive and delivery threads (where a wrench's handler runs) real-time where
     // the system allows it; CYCLONEDDS_URI, after this fragment, may say otherwise.
-    std::string config = cycloneConfig(*discovery, environment.cycloneUri, long(getpid()));
+    // One sample's bound first: the discovery fragment and CYCLONEDDS_URI come after it.
+    std::string config = sampleSizeConfig() + "," +
+                         cycloneConfig(*discovery, environment.cycloneUri, long(getpid()));
     if (realtime::probeRealtime().empty())
         config = realtimeThreadsConfig(realtime::kPriority) + "," + config;
     const dds_entity_t participant = openParticipant(*domain, config, error);

@@ -111,7 +111,8 @@ struct RosTestPeer::Entities
 {
     dds_entity_t domain = 0, participant = 0, joint = 0, twist = 0, bestEffortTwist = 0,
                  unstampedTwist = 0, pose = 0, feedback = 0, wrench = 0, unstamped = 0,
-                 publications = 0, subscriptions = 0, enable = 0, jog = 0;
+                 publications = 0, subscriptions = 0, enable = 0, jog = 0, twistOut = 0;
+    std::string twistTopic; //!< "rt/…/hatpic/twist", for twistOut
 
     dds_entity_t topic(const dds_topic_descriptor_t *desc, const char *name) const
     {
@@ -136,7 +137,8 @@ RosTestPeer::RosTestPeer(int domain, const std::string &domainConfig, const std:
         return dds_create_reader(e.participant, e.topic(desc, name.c_str()), qos, nullptr);
     };
     e.joint = reader(&sensor_msgs_msg_dds__JointState__desc, under("/hatpic/joint_states"));
-    e.twist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, under("/hatpic/twist"));
+    e.twistTopic = under("/hatpic/twist");
+    e.twist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, e.twistTopic);
     e.unstampedTwist = reader(&geometry_msgs_msg_dds__Twist__desc, kTwistUnstampedTopic);
     e.pose = reader(&geometry_msgs_msg_dds__PoseStamped__desc, under("/hatpic/pose"));
     e.feedback = reader(&geometry_msgs_msg_dds__WrenchStamped__desc, under("/hatpic/feedback"));
@@ -201,16 +203,34 @@ bool RosTestPeer::twistMatched() const
            status.current_count > 0;
 }
 
-void RosTestPeer::publishWrench(double forceZ, double torqueZ, double stampSeconds)
+void RosTestPeer::publishWrench(double forceZ, double torqueZ, double stampSeconds,
+                                const std::string &frame)
 {
     geometry_msgs_msg_dds__WrenchStamped_ w{};
     const double whole = std::floor(stampSeconds);
     w.header.stamp.sec = std::int32_t(whole);
     w.header.stamp.nanosec = std::uint32_t(std::min(999999999.0, (stampSeconds - whole) * 1e9));
-    w.header.frame_id = const_cast<char *>("robot");
+    w.header.frame_id = const_cast<char *>(frame.c_str());
     w.wrench.force.z = forceZ;
     w.wrench.torque.z = torqueZ;
     dds_write(m_e->wrench, &w);
+}
+
+void RosTestPeer::publishTwist(double linearX, const std::string &frame)
+{
+    Entities &e = *m_e;
+    if (e.twistOut <= 0) {
+        dds_qos_t *qos = rmwQos(true, false, 1);
+        e.twistOut = dds_create_writer(
+            e.participant,
+            e.topic(&geometry_msgs_msg_dds__TwistStamped__desc, e.twistTopic.c_str()), qos,
+            nullptr);
+        dds_delete_qos(qos);
+    }
+    geometry_msgs_msg_dds__TwistStamped_ t{};
+    t.header.frame_id = const_cast<char *>(frame.c_str());
+    t.twist.linear.x = linearX;
+    dds_write(e.twistOut, &t);
 }
 
 void RosTestPeer::publishUnstampedWrench(double forceZ)

@@ -102,8 +102,13 @@ public:
     //! A writer of the bridge's matched our reliable twist reader.
     bool twistMatched() const;
     //! A WrenchStamped; its stamp is `stampSeconds` [s since the Unix epoch], 0 by default (as
-    //! a sender that does not fill it).
-    void publishWrench(double forceZ, double torqueZ = 0, double stampSeconds = 0);
+    //! a sender that does not fill it); its frame_id `frame`.
+    void publishWrench(double forceZ, double torqueZ = 0, double stampSeconds = 0,
+                       const std::string &frame = "robot");
+    //! A TwistStamped on /hatpic/twist (under the namespace) as the bridge sends it (reliable,
+    //! keep last 1), for a robot's subscription; its frame_id `frame`. The writer is made on
+    //! the first call, so until then the peer's own twist readers hear only the bridge.
+    void publishTwist(double linearX, const std::string &frame = "hatpic");
     void publishUnstampedWrench(double forceZ);
     void publishEnable(bool enabled);
 

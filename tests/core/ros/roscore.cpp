@@ -157,6 +157,34 @@ bool RosCore::answers() const
     return reply.contains("<int>1</int>");
 }
 
+QStringList RosCore::registrations(const QString &node, QString *error) const
+{
+    // Python's XML-RPC client, as rosnode uses it.
+    static const QString script = uR"(
+import sys, xmlrpc.client
+code, text, state = xmlrpc.client.ServerProxy(sys.argv[1]).getSystemState('/hatpic_test')
+if code != 1:
+    sys.exit(text)
+for kind, entries in zip(('publishes', 'subscribes', 'provides'), state):
+    for name, nodes in entries:
+        if sys.argv[2] in nodes:
+            print(kind, name)
+)"_s;
+    QProcess python;
+    python.start(u"python3"_s, {u"-c"_s, script, uri(), node});
+    QStringList lines;
+    if (!python.waitForFinished(10000) || python.exitStatus() != QProcess::NormalExit ||
+        python.exitCode() != 0) {
+        if (error)
+            *error = u"getSystemState failed: "_s +
+                     QString::fromLocal8Bit(python.readAllStandardError()).trimmed();
+        return lines;
+    }
+    lines = QString::fromUtf8(python.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
+    lines.sort();
+    return lines;
+}
+
 Ros1Peer::~Ros1Peer()
 {
     stop();

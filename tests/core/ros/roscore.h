@@ -40,6 +40,11 @@ public:
     bool isRunning() const { return m_pid > 0; }
     //! Whether a master answers getPid at the URI now.
     bool answers() const;
+    //! What the master holds for `node` ("/hatpic_bridge"), from its getSystemState (what
+    //! `rosnode list` and `rosnode info` read): "publishes /rosout", "subscribes /wrench",
+    //! "provides /hatpic_bridge/get_loggers", sorted; empty when it knows nothing of the node.
+    //! `*error` says why the master could not be asked (then the list is empty too).
+    QStringList registrations(const QString &node, QString *error = nullptr) const;
 
 private:
     int m_port = 0;
