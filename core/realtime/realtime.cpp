@@ -47,10 +47,16 @@ std::string lockMemory()
 {
     if (turnedOff())
         return "memory locking turned off (HATPIC_REALTIME=0)";
-    if (mlockall(MCL_CURRENT | MCL_FUTURE) != 0)
-        return refused("locking memory", errno,
-                       "allow it with CAP_IPC_LOCK or a memlock limit (ulimit -l); running "
-                       "unlocked");
+    const std::string remedy =
+        "allow it with CAP_IPC_LOCK or a memlock limit (ulimit -l); running unlocked";
+    if (mlockall(MCL_CURRENT) != 0)
+        return refused("locking memory", errno, remedy);
+    // The future on fault only; this call leaves the pages locked above as they are.
+    if (mlockall(MCL_FUTURE | MCL_ONFAULT) != 0) {
+        const int error = errno;
+        munlockall();
+        return refused("locking memory", error, remedy);
+    }
     return {};
 }
 

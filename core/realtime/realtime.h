@@ -21,8 +21,11 @@ constexpr int kDevicePriority = kPriority + 1;
 //! and the thread is left as it was. HATPIC_REALTIME=0 in the environment turns it off.
 std::string makeThreadRealtime(int priority = kPriority);
 
-//! Locks the process's memory, present and future (mlockall), so that no page fault on the
-//! robot path waits for the disk. Empty on success, else one sentence; the process goes on
+//! Locks the process's memory (mlockall), so that no page fault on the robot path waits for the
+//! disk: what is mapped now at once, what is mapped later as each page is first touched
+//! (MCL_ONFAULT). So an allocation nobody fills — a hostile ROS 1 peer announcing a 900 MB
+//! frame that roscpp reserves (docs/performance.md) — costs address space, not locked RAM, and
+//! thread stacks cost what they use. Empty on success, else one sentence; the process goes on
 //! unlocked. HATPIC_REALTIME=0 turns it off too.
 std::string lockMemory();
 

@@ -56,7 +56,7 @@ void TestHatpicCtlPassivity::setOneField()
     const ProfileReadResult read = parseProfile(json.out);
     QVERIFY2(read.ok(), qPrintable(read.errors.join(u'\n')));
     QCOMPARE(read.profile->passivity.pc_reserve_max, 0.05); // the float as its shortest decimal
-    QCOMPARE(read.profile->passivity.pc_damping_max, 0.7); // only the named field changed
+    QCOMPARE(read.profile->passivity.pc_damping_max, 0.7);  // only the named field changed
 }
 
 void TestHatpicCtlPassivity::aProfilesBlockGoesWhole()

@@ -37,8 +37,8 @@ inline QColor channel(Channel c)
         return {184, 134, 11}; // goldenrod: also the effects' marks (detent rest positions, walls)
     case Channel::TauPc:
         return {92, 107, 192}; // indigo: the passivity controller, apart from the torques' hues
-    case Channel::TauDet:     // τ_fx's parts: τ_fx's colour, each in its own line style
-    case Channel::TauWall:    // (plots/plotframe.cpp)
+    case Channel::TauDet:      // τ_fx's parts: τ_fx's colour, each in its own line style
+    case Channel::TauWall:     // (plots/plotframe.cpp)
     case Channel::TauVib:
         return channel(Channel::TauFx);
     }

@@ -12,11 +12,13 @@
 #include <linux/capability.h>
 #include <pthread.h>
 #include <sched.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <thread>
 
 using namespace hatpic;
@@ -36,6 +38,19 @@ bool dropCapability(int capability)
 }
 
 //! Runs `f` on a thread of its own under `resource`'s soft limit `limit`, then restores it.
+//! A "VmRSS:"-style figure of /proc/self/status [kB]; -1 when absent.
+long statusKb(const char *key)
+{
+    QFile file(QStringLiteral("/proc/self/status"));
+    if (!file.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray &line : file.readAll().split('\n')) {
+        if (line.startsWith(key))
+            return line.mid(qsizetype(std::strlen(key))).trimmed().split(' ').first().toLong();
+    }
+    return -1;
+}
+
 template<typename F> void underLimit(int resource, rlim_t limit, F f)
 {
     rlimit before{};
@@ -117,6 +132,30 @@ private Q_SLOTS:
                      problem.ends_with("allow it with CAP_IPC_LOCK or a memlock limit (ulimit "
                                        "-l); running unlocked"),
                  problem.c_str());
+    }
+
+    void anUntouchedAllocationCostsNoLockedRam()
+    {
+#if defined(__SANITIZE_ADDRESS__)
+        QSKIP("AddressSanitizer intercepts mlockall() and makes it succeed without locking");
+#endif
+        // A block reserved and never filled (roscpp's buffer for a frame a hostile peer only
+        // announced) stays out of RAM; what is touched is resident (and locked) as usual.
+        if (const std::string problem = realtime::lockMemory(); !problem.empty())
+            QSKIP(problem.c_str()); // not allowed to lock here: nothing to check
+        constexpr std::size_t kBlock = std::size_t(256) << 20;
+        constexpr std::size_t kTouched = std::size_t(16) << 20;
+        const long before = statusKb("VmRSS:");
+        auto *block = static_cast<volatile char *>(std::malloc(kBlock));
+        QVERIFY(block);
+        const long reserved = statusKb("VmRSS:");
+        for (std::size_t i = 0; i < kTouched; i += 4096)
+            block[i] = 1;
+        const long touched = statusKb("VmRSS:");
+        std::free(const_cast<char *>(block));
+        munlockall();
+        QVERIFY2(reserved - before < 8 * 1024, qPrintable(QString::number(reserved - before)));
+        QVERIFY2(touched - reserved >= 15 * 1024, qPrintable(QString::number(touched - reserved)));
     }
 
     void turnedOffByTheEnvironment()
