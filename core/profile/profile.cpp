@@ -117,42 +117,22 @@ void readDevice(const QJsonObject &root, DeviceParams &device, QStringList &erro
     }
 }
 
-// device.effects: optional; each missing key keeps its default. Checked against the profile's
-// tau_limit (host), the actuator limit the detents may not exceed.
-void readEffects(const QJsonObject &root, double tauLimit, EffectParams &effects,
-                 QStringList &errors, QStringList &warnings)
+// An optional block of `device` (effects, passivity): absent, it keeps its defaults, and so does
+// each key it lacks; a field present that breaks a rule of `check` is an error naming it.
+template<typename Block, typename Read, typename Check>
+void readDeviceBlock(const QJsonObject &root, const QString &key, Block &block, Read read,
+                     Check check, QStringList &errors, QStringList &warnings)
 {
-    const QJsonValue value = root.value(u"device").toObject().value(kEffectsKey);
+    const QJsonValue value = root.value(u"device").toObject().value(key);
     if (value.isUndefined())
         return;
-    const QString prefix = u"device."_s + kEffectsKey + u'.';
+    const QString prefix = u"device."_s + key + u'.';
     if (!value.isObject()) {
-        errors.append(u"device."_s + kEffectsKey + u": must be an object, got " +
-                      jsonValueText(value));
+        errors.append(u"device."_s + key + u": must be an object, got " + jsonValueText(value));
         return;
     }
-    const auto present = readEffectParams(value.toObject(), prefix, effects, errors, warnings);
-    for (const Violation &v : validate(effects, tauLimit)) {
-        if (v.index >= 0 && present[static_cast<std::size_t>(v.index)])
-            errors.append(prefix + QString::fromStdString(v.message()));
-    }
-}
-
-// device.passivity: optional, as device.effects; each missing key keeps its default.
-void readPassivity(const QJsonObject &root, PassivityParams &passivity, QStringList &errors,
-                   QStringList &warnings)
-{
-    const QJsonValue value = root.value(u"device").toObject().value(kPassivityKey);
-    if (value.isUndefined())
-        return;
-    const QString prefix = u"device."_s + kPassivityKey + u'.';
-    if (!value.isObject()) {
-        errors.append(u"device."_s + kPassivityKey + u": must be an object, got " +
-                      jsonValueText(value));
-        return;
-    }
-    const auto present = readPassivityParams(value.toObject(), prefix, passivity, errors, warnings);
-    for (const Violation &v : validate(passivity)) {
+    const auto present = read(value.toObject(), prefix, block, errors, warnings);
+    for (const Violation &v : check(block)) {
         if (v.index >= 0 && present[static_cast<std::size_t>(v.index)])
             errors.append(prefix + QString::fromStdString(v.message()));
     }
@@ -247,8 +227,19 @@ ProfileReadResult parseProfile(const QByteArray &json)
     readOptionalString(root, u"notes", profile.notes, result.errors);
     readDevice(root, profile.device, result.errors, result.warnings);
     readHost(root, profile.host, profile.bridge, result.errors, result.warnings);
-    readEffects(root, profile.host.tau_limit, profile.effects, result.errors, result.warnings);
-    readPassivity(root, profile.passivity, result.errors, result.warnings);
+    // The effects against the profile's tau_limit (host), the limit the detents may not exceed.
+    const double tauLimit = profile.host.tau_limit;
+    readDeviceBlock(
+        root, kEffectsKey, profile.effects,
+        [](const QJsonObject &o, const QString &prefix, EffectParams &e, QStringList &errs,
+           QStringList &warns) { return readEffectParams(o, prefix, e, errs, warns); },
+        [tauLimit](const EffectParams &e) { return validate(e, tauLimit); }, result.errors,
+        result.warnings);
+    readDeviceBlock(
+        root, kPassivityKey, profile.passivity,
+        [](const QJsonObject &o, const QString &prefix, PassivityParams &p, QStringList &errs,
+           QStringList &warns) { return readPassivityParams(o, prefix, p, errs, warns); },
+        [](const PassivityParams &p) { return validate(p); }, result.errors, result.warnings);
 
     if (result.errors.isEmpty())
         result.profile = profile;
