@@ -42,17 +42,6 @@ QString namesOf(const std::array<FieldSpec<Block>, N> &fields)
     return names.join(QStringLiteral(", "));
 }
 
-template<typename Block, std::size_t N>
-int indexIn(const std::array<FieldSpec<Block>, N> &fields, const QString &name)
-{
-    const std::string wanted = name.toStdString();
-    for (std::size_t i = 0; i < N; ++i) {
-        if (fields[i].name == wanted)
-            return int(i);
-    }
-    return -1;
-}
-
 QString allNames()
 {
     return u"the parameters are " + namesOf(kDeviceFields) + u", the effects " +
@@ -70,12 +59,13 @@ std::optional<Assignment> parseAssignment(const QString &text)
     }
     const QString name = text.left(equals).trimmed();
     const QString valueText = text.mid(equals + 1).trimmed();
+    const std::string key = name.toStdString();
     Assignment assignment;
-    if (const int i = indexIn(kDeviceFields, name); i >= 0)
+    if (const int i = deviceFieldIndex(key); i >= 0)
         assignment = {Part::Params, i, 0};
-    else if (const int e = indexIn(kEffectFields, name); e >= 0)
+    else if (const int e = effectFieldIndex(key); e >= 0)
         assignment = {Part::Effects, e, 0};
-    else if (const int p = indexIn(kPassivityFields, name); p >= 0)
+    else if (const int p = passivityFieldIndex(key); p >= 0)
         assignment = {Part::Passivity, p, 0};
     else {
         printError(u"Unknown parameter '" + name + u"' in --set; " + allNames() + u'.');
