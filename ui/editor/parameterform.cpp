@@ -203,33 +203,29 @@ void ParameterForm::showTuning(const Tuning &tuning)
 void ParameterForm::showDevice(const DeviceTuning &device, const Tuning &edited,
                                const EffectParams &effectsOnWire)
 {
-    const EffectParams &effects = edited.effects;
     for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
         ParameterField *f = m_fields.value(QString::fromLatin1(deviceFieldName(i)));
         f->setDeviceValue(device.params ? std::optional<double>(device.params->field(i))
                                         : std::nullopt);
     }
-    // An effect field differs when what it sends differs from the read-back; the marker then
-    // shows the device's value.
-    const auto &fx = device.effects;
-    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
-        ParameterField *f = m_fields.value(QString::fromLatin1(effectFieldName(i)));
-        if (!fx)
+    showBlockDevice(device.effects, edited.effects, effectsOnWire, &effectFieldName);
+    showBlockDevice(device.passivity, edited.passivity, edited.passivity, &passivityFieldName);
+}
+
+template<typename Block>
+void ParameterForm::showBlockDevice(const std::optional<Block> &device, const Block &edited,
+                                    const Block &onWire, std::string_view (*name)(int))
+{
+    // A field differs when what it sends differs from the read-back (as float32); the marker
+    // then shows the device's value, else the field's own.
+    for (int i = 0; i < Block::kFieldCount; ++i) {
+        ParameterField *f = m_fields.value(QString::fromLatin1(name(i)));
+        if (!device)
             f->setDeviceValue(std::nullopt);
-        else if (float(fx->field(i)) == float(effectsOnWire.field(i)))
-            f->setDeviceValue(effects.field(i));
+        else if (float(device->field(i)) == float(onWire.field(i)))
+            f->setDeviceValue(edited.field(i));
         else
-            f->setDeviceValue(fx->field(i));
-    }
-    const auto &pc = device.passivity;
-    for (int i = 0; i < PassivityParams::kFieldCount; ++i) {
-        ParameterField *f = m_fields.value(QString::fromLatin1(passivityFieldName(i)));
-        if (!pc)
-            f->setDeviceValue(std::nullopt);
-        else if (float(pc->field(i)) == float(edited.passivity.field(i)))
-            f->setDeviceValue(edited.passivity.field(i));
-        else
-            f->setDeviceValue(pc->field(i));
+            f->setDeviceValue(device->field(i));
     }
 }
 

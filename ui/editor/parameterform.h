@@ -13,6 +13,9 @@
 #include <QStringList>
 #include <QWidget>
 
+#include <optional>
+#include <string_view>
+
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -59,6 +62,11 @@ private:
     QWidget *buildEffectsGroup();
     QWidget *buildPassivityGroup();
     void addField(ParameterField *field);
+    //! The device's values of one block beside its fields (effects, passivity): a field whose
+    //! `onWire` value is the device's shows its own (`edited`).
+    template<typename Block>
+    void showBlockDevice(const std::optional<Block> &device, const Block &edited,
+                         const Block &onWire, std::string_view (*name)(int));
 
     QHash<QString, ParameterField *> m_fields;
     QComboBox *m_mode = nullptr;
