@@ -22,7 +22,16 @@
 namespace hatpic::test {
 
 //! Cyclone DDS on loopback only, for every participant of this process and its children.
+//! Call it before any other thread starts: setenv beside another thread's getenv is undefined
+//! behaviour (a DeviceClient's session thread reads HATPIC_REALTIME as it starts).
 HATPIC_ROSPEER_API void confineDdsToLoopback();
+
+//! confineDdsToLoopback() as a test's first member, declared before the members that start
+//! threads (a DeviceClient, a Bridge), so that it runs first.
+struct LoopbackDds
+{
+    LoopbackDds() { confineDdsToLoopback(); }
+};
 
 struct TimeGot
 {

@@ -48,7 +48,6 @@ class TestBridge : public QObject
 private Q_SLOTS:
     void initTestCase()
     {
-        hatpic::test::confineDdsToLoopback();
         registerSessionMetaTypes();
         QVERIFY(connectKnob(m_client, kHeldAngle, m_deviceTauExt, &m_deviceTheta));
 
@@ -632,6 +631,7 @@ private:
                std::abs(m_peer->feedbacks.back().b[2] - tau) < kTauExtTolerance;
     }
 
+    hatpic::test::LoopbackDds m_loopback; // first: before the session thread starts
     DeviceClient m_client;
     Bridge m_bridge{m_client};
     std::unique_ptr<RosTestPeer> m_peer;

@@ -41,7 +41,6 @@ private Q_SLOTS:
     void initTestCase()
     {
         registerSessionMetaTypes();
-        m_core.exportEnvironment();
         QCOMPARE(m_core.start(), QString());
         ConnectOptions options;
         options.port = QString::fromUtf16(kSimPortName);
@@ -231,7 +230,8 @@ private:
                std::abs(field(feedbacks.last(), u"wrench.torque.z"_s) - tau) < kTauExtTolerance;
     }
 
-    RosCore m_core;
+    // First: it sets this process's ROS 1 environment before any member starts a thread.
+    RosCore m_core{RosCore::ThisProcess::Exported};
     Ros1Peer m_peer;
     DeviceClient m_client;
     Bridge m_bridge{m_client};

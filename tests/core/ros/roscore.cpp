@@ -51,7 +51,11 @@ bool groupAlive(qint64 pid)
 
 } // namespace
 
-RosCore::RosCore() : m_port(freePort()) {}
+RosCore::RosCore(ThisProcess thisProcess) : m_port(freePort())
+{
+    if (thisProcess == ThisProcess::Exported)
+        exportEnvironment();
+}
 
 RosCore::~RosCore()
 {

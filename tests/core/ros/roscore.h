@@ -18,7 +18,13 @@ namespace hatpic::test {
 class RosCore
 {
 public:
-    RosCore(); //!< picks a free port; nothing runs yet
+    //! What the constructor does to this process's environment.
+    enum class ThisProcess { Untouched, Exported };
+    //! Picks a free port; nothing runs yet. `Exported` calls exportEnvironment() at once, so a
+    //! test that declares its RosCore before every member that starts a thread sets the
+    //! variables while it has one thread (setenv beside another thread's getenv is undefined
+    //! behaviour: a DeviceClient's session thread reads HATPIC_REALTIME as it starts).
+    explicit RosCore(ThisProcess thisProcess = ThisProcess::Untouched);
     ~RosCore();
     RosCore(const RosCore &) = delete;
     RosCore &operator=(const RosCore &) = delete;
@@ -30,7 +36,8 @@ public:
     //! 127.0.0.1, ROS_HOME and ROS_LOG_DIR; without ROS_HOSTNAME and ROS_NAMESPACE.
     QProcessEnvironment
     environment(QProcessEnvironment base = QProcessEnvironment::systemEnvironment()) const;
-    //! The same environment for this process (before its first ROS 1 node).
+    //! The same environment for this process (before its first ROS 1 node, and before any
+    //! other thread starts).
     void exportEnvironment() const;
 
     //! Starts roscore and waits until the master answers; empty, or why it did not.

@@ -128,7 +128,6 @@ private Q_SLOTS:
     void initTestCase()
     {
         QVERIFY(Node::isAvailable(RosVersion::Ros1));
-        m_core.exportEnvironment(); // ROS 1 reads it once, at the process's first node
         ROSCONSOLE_AUTOINIT;
         ::ros::console::register_appender(&m_log);
     }
@@ -475,7 +474,8 @@ private:
         return problem.isEmpty();
     }
 
-    RosCore m_core;
+    // First: it sets this process's ROS 1 environment before any member starts a thread.
+    RosCore m_core{RosCore::ThisProcess::Exported};
     LogCapture m_log;
     Ros1Peer m_peer;
     std::unique_ptr<Node> m_node;

@@ -45,7 +45,6 @@ private Q_SLOTS:
     void initTestCase()
     {
         QVERIFY(BridgePanel::isBuilt());
-        hatpic::test::confineDdsToLoopback();
         registerSessionMetaTypes();
         ConnectOptions options;
         options.port = QString::fromUtf16(kSimPortName);
@@ -341,6 +340,7 @@ private:
         return std::any_of(p.begin(), p.end(), [&](const auto &e) { return e.topic == topic; });
     }
 
+    hatpic::test::LoopbackDds m_loopback; // first: before the session thread starts
     DeviceClient m_client;
     std::unique_ptr<RosTestPeer> m_peer;
     std::unique_ptr<BridgePanel> m_panel;

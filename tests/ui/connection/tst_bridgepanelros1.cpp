@@ -38,7 +38,6 @@ private Q_SLOTS:
     {
         QVERIFY(BridgePanel::isBuilt());
         registerSessionMetaTypes();
-        m_core.exportEnvironment();
         QCOMPARE(m_core.start(), QString());
         ConnectOptions options;
         options.port = QString::fromUtf16(kSimPortName);
@@ -127,7 +126,8 @@ private:
     }
     QString label(const QString &name) const { return find<QLabel>(name)->text(); }
 
-    RosCore m_core;
+    // First: it sets this process's ROS 1 environment before any member starts a thread.
+    RosCore m_core{RosCore::ThisProcess::Exported};
     Ros1Peer m_peer;
     DeviceClient m_client;
     std::unique_ptr<BridgePanel> m_panel;
