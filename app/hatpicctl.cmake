@@ -23,8 +23,13 @@ add_executable(hatpicctl
   hatpicctl/experimentsubcommand.cpp
   hatpicctl/experimenttext.cpp hatpicctl/experimenttext.h
   hatpicctl/vibratesubcommand.cpp
-  hatpicctl/teleopmapsubcommand.cpp)
+  hatpicctl/teleopmapsubcommand.cpp
+  hatpicctl/rasterimage.cpp hatpicctl/rasterimage.h)
 target_link_libraries(hatpicctl PRIVATE hatpic::core hatpic_appcommon hatpic::build_settings)
 target_compile_definitions(hatpicctl PRIVATE HATPIC_VERSION="${PROJECT_VERSION}")
+if(HATPIC_BUILD_UI) # teleop-map --png: the chart's SVG drawn on Qt's offscreen platform
+  target_link_libraries(hatpicctl PRIVATE Qt6::Gui Qt6::Svg)
+  target_compile_definitions(hatpicctl PRIVATE HATPIC_HATPICCTL_PNG)
+endif()
 set_target_properties(hatpicctl PROPERTIES AUTOMOC ON)
 install(TARGETS hatpicctl RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

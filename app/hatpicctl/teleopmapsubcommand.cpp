@@ -4,6 +4,7 @@
 #include "common/exitcodes.h"
 #include "console.h"
 #include "profileinput.h"
+#include "rasterimage.h"
 #include "subcommand.h"
 #include "subcommands.h"
 
@@ -81,7 +82,7 @@ public:
         return u"teleop-map [--profile FILE] [--delays LIST] [--gains LIST] "
                u"[--pc LIST | --vary FIELD=LIST] [--hand SPEC] [--duration S] [--seed N] [--jitter "
                u"S] "
-               u"[--loss P] [--threads N] [--csv FILE] [--svg FILE] [--force]"_s;
+               u"[--loss P] [--threads N] [--csv FILE] [--svg FILE] [--png FILE] [--force]"_s;
     }
     QString description() const override
     {
@@ -107,7 +108,8 @@ public:
                u"setting or passivity parameter by its profile name, e.g. M_adm=0.01,0.05).\n"
                u"\n"
                u"--csv FILE writes the table, --svg FILE the chart (settled cells coloured by\n"
-               u"settle time, the others grey and crossed); an existing file needs --force.\n"
+               u"settle time, the others grey and crossed), --png FILE the same chart at twice\n"
+               u"its size; an existing file needs --force.\n"
                u"The cells run on --threads threads (default: one per core)."_s;
     }
     void addOptions(QCommandLineParser &parser) override
@@ -133,8 +135,9 @@ public:
         add(u"threads"_s, u"Threads running cells, 1 to 64 (default: one per core)."_s, u"N"_s);
         add(u"csv"_s, u"Write the table as CSV."_s, u"FILE"_s);
         add(u"svg"_s, u"Write the chart as SVG."_s, u"FILE"_s);
-        parser.addOption(
-            QCommandLineOption(QStringList{u"force"_s}, u"Overwrite --csv and --svg files."_s));
+        add(u"png"_s, u"Write the chart as PNG."_s, u"FILE"_s);
+        parser.addOption(QCommandLineOption(QStringList{u"force"_s},
+                                            u"Overwrite --csv, --svg and --png files."_s));
     }
 
     int run(const QCommandLineParser &parser) override
@@ -240,7 +243,13 @@ public:
             return ExitBadUsage;
         }
         const bool force = parser.isSet(u"force"_s);
-        for (const QString &option : {u"csv"_s, u"svg"_s}) {
+        if (parser.isSet(u"png"_s) && !canWritePng()) {
+            QString why;
+            svgToPng({}, 1, &why);
+            printError(asSentence(u"--png: "_s + why));
+            return ExitBadUsage;
+        }
+        for (const QString &option : {u"csv"_s, u"svg"_s, u"png"_s}) {
             if (!parser.isSet(option))
                 continue;
             if (const QString p = outputProblem(option, parser.value(option), force);
@@ -265,10 +274,19 @@ public:
         if (parser.isSet(u"csv"_s) &&
             !writeFile(parser.value(u"csv"_s), teleop::mapCsv(cells, spec.field.name)))
             return ExitFailure;
-        if (parser.isSet(u"svg"_s) &&
-            !writeFile(parser.value(u"svg"_s),
-                       teleop::mapSvg(cells, spec.field.name, spec.base.duration)))
+        const QByteArray svg = teleop::mapSvg(cells, spec.field.name, spec.base.duration);
+        if (parser.isSet(u"svg"_s) && !writeFile(parser.value(u"svg"_s), svg))
             return ExitFailure;
+        if (parser.isSet(u"png"_s)) {
+            QString why;
+            const QByteArray png = svgToPng(svg, 2.0, &why);
+            if (png.isEmpty()) {
+                printError(u"Cannot draw "_s + parser.value(u"png"_s) + u": "_s + why + u'.');
+                return ExitFailure;
+            }
+            if (!writeFile(parser.value(u"png"_s), png))
+                return ExitFailure;
+        }
         return flushOut() ? ExitSuccess : ExitFailure;
     }
 

@@ -28,11 +28,13 @@ struct Run
     QByteArray err;
 };
 
-inline Run runCtl(const QStringList &arguments, int timeoutMs = kProcessTimeoutMs)
+inline Run runCtl(const QStringList &arguments, int timeoutMs = kProcessTimeoutMs,
+                  const QProcessEnvironment &environment = QProcessEnvironment::systemEnvironment())
 {
     QProcess process;
     process.setProgram(QStringLiteral(HATPICCTL_PATH));
     process.setArguments(arguments);
+    process.setProcessEnvironment(environment);
     process.start();
     Run run;
     if (!process.waitForStarted(10000)) {

@@ -1,6 +1,7 @@
 // hatpicctl teleop-map as a real process: the table on stdout, the CSV's columns and rows, the
-// SVG, ranges, a tuning field varied; bad options and output targets refused before anything
-// runs (exit 4, naming option, rule and value), an existing file kept without --force.
+// SVG and the PNG (drawn without a display), ranges, a tuning field varied; bad options and
+// output targets refused before anything runs (exit 4, naming option, rule and value), an
+// existing file kept without --force.
 #include "ctlprocess.h"
 
 #include <QDir>
@@ -15,6 +16,7 @@ class TestHatpicctlTeleopMap : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void tableCsvAndSvg();
+    void pngWithoutADisplay();
     void variesAField();
     void controllerOffAndOn();
     void badOptions_data();
@@ -51,6 +53,39 @@ void TestHatpicctlTeleopMap::tableCsvAndSvg()
     QCOMPARE(image.count("<title>delay "), 2);
     // No temporary file left beside them.
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 2);
+}
+
+//! The PNG is the SVG drawn at twice its size, on a machine without a display (a lab server
+//! over ssh): its signature, and its IHDR's width and height against the SVG's.
+void TestHatpicctlTeleopMap::pngWithoutADisplay()
+{
+    QTemporaryDir dir;
+    const QString png = dir.filePath(u"map.png"_s), svg = dir.filePath(u"map.svg"_s);
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const QString &name : {u"DISPLAY"_s, u"WAYLAND_DISPLAY"_s, u"QT_QPA_PLATFORM"_s})
+        environment.remove(name);
+    const Run run = runCtl({u"teleop-map"_s, u"--delays"_s, u"0,0.15"_s, u"--pc"_s, u"0,0.7"_s,
+                            u"--duration"_s, u"6"_s, u"--svg"_s, svg, u"--png"_s, png},
+                           kProcessTimeoutMs, environment);
+    QVERIFY2(run.code == 0, run.err.constData());
+    QFile chart(svg), image(png);
+    QVERIFY(chart.open(QIODevice::ReadOnly) && image.open(QIODevice::ReadOnly));
+    const QByteArray svgText = chart.readAll(), bytes = image.readAll();
+    const auto attribute = [&](const char *name) {
+        const QByteArray key = QByteArray(name) + "=\"";
+        const qsizetype at = svgText.indexOf(key) + key.size();
+        return qRound(svgText.mid(at, svgText.indexOf('"', at) - at).toDouble());
+    };
+    const auto bigEndian = [&](int at) {
+        return int(quint8(bytes[at])) << 24 | int(quint8(bytes[at + 1])) << 16 |
+               int(quint8(bytes[at + 2])) << 8 | int(quint8(bytes[at + 3]));
+    };
+    QVERIFY(bytes.startsWith("\x89PNG\r\n\x1a\n"));
+    QCOMPARE(bytes.mid(12, 4), QByteArray("IHDR"));
+    QVERIFY(attribute("width") > 300);
+    QCOMPARE(bigEndian(16), 2 * attribute("width"));
+    QCOMPARE(bigEndian(20), 2 * attribute("height"));
+    QVERIFY(bytes.size() > 5000); // text and cells drawn, not an empty frame
 }
 
 void TestHatpicctlTeleopMap::variesAField()
@@ -108,6 +143,8 @@ void TestHatpicctlTeleopMap::badOptions_data()
     QTest::newRow("hand") << QStringList{u"--hand"_s, u"push"_s} << QByteArray("--hand");
     QTest::newRow("folder") << QStringList{u"--csv"_s, u"/nonexistent/m.csv"_s}
                             << QByteArray("the folder /nonexistent does not exist");
+    QTest::newRow("png folder") << QStringList{u"--png"_s, u"/nonexistent/m.png"_s}
+                                << QByteArray("--png /nonexistent/m.png: the folder /nonexistent");
 }
 
 void TestHatpicctlTeleopMap::badOptions()

@@ -1,0 +1,27 @@
+// PNG for hatpicctl's charts: the SVG a chart is drawn as, rendered by Qt SVG on Qt's
+// offscreen platform (no display needed). Only a run that asks for a PNG starts Qt's GUI
+// layer; every other run of hatpicctl stays a QtCore program.
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+
+#include <memory>
+
+class QCoreApplication;
+
+namespace hatpic::cli {
+
+//! Whether this hatpicctl was built with Qt's GUI and SVG libraries (HATPIC_BUILD_UI).
+bool canWritePng();
+
+//! The application object for these arguments: a QGuiApplication on the offscreen platform
+//! when they ask for a PNG (`--png`) and canWritePng(), else a QCoreApplication. Call it
+//! before any other thread starts (it may set QT_QPA_PLATFORM).
+std::unique_ptr<QCoreApplication> makeApplication(int &argc, char **argv);
+
+//! `svg` as PNG, `scale` times its own size; empty, with `*error` saying why, when it cannot be
+//! (an invalid SVG, no GUI application, a build without canWritePng()).
+QByteArray svgToPng(const QByteArray &svg, double scale, QString *error);
+
+} // namespace hatpic::cli
