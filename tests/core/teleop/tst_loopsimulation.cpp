@@ -1,12 +1,16 @@
 // The in-process teleoperation loop: robot.md's loop comes to rest where robot.md puts it at 0
 // and 40 ms one-way delay and keeps swinging at 150 ms (as the three real programs do:
 // docs/teleop.md § Measured); a seed gives the same run; bad settings are refused naming the
-// field, the rule and the value.
+// field, the rule and the value; with the passivity controller off it runs bit for bit as the
+// code from before the controller did (a trace recorded there, data/loop-before-passivity.txt).
 #include "teleop/loopsimulation.h"
 
+#include <QCryptographicHash>
+#include <QFile>
 #include <QTest>
 
 #include <cmath>
+#include <cstdio>
 
 Q_DECLARE_METATYPE(hatpic::teleop::LoopConfig)
 
@@ -36,6 +40,7 @@ private Q_SLOTS:
     void restsAtRobotMdsEquilibrium_data();
     void restsAtRobotMdsEquilibrium();
     void swingsForGoodAt150ms();
+    void controllerOffIsTheCodeBeforeIt();
     void controllerHoldsContact_data();
     void controllerHoldsContact();
     void controllerCostsNothingWithoutDelay();
@@ -74,6 +79,71 @@ void TestLoopSimulation::restsAtRobotMdsEquilibrium()
     QVERIFY2(r.settleS > 0 && r.settleS < 5, qPrintable(QString::number(r.settleS)));
     QVERIFY(r.contactAt > 0 && r.contactAt < 2);
     QCOMPARE(r.dissipatedJ, 0.0); // no controller, nothing taken out
+}
+
+namespace {
+
+//! A loop's trace as data/loop-before-passivity.txt holds it: the step count, the SHA-256 of
+//! every step's t, θ, ω, τ_ext and x (8-byte doubles) and every 250th step in hex floats.
+struct Trace
+{
+    int steps = 0;
+    QByteArray sha256;
+    QList<QByteArray> rows;
+};
+
+Trace traceOf(const LoopConfig &config)
+{
+    LoopSimulation loop(config);
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    Trace trace;
+    while (!loop.atEnd()) {
+        const LoopSimulation::Step s = loop.step();
+        for (double v : {s.t, s.theta, s.omega, s.tauExt, s.x})
+            hash.addData(QByteArrayView(reinterpret_cast<const char *>(&v), sizeof v));
+        if (trace.steps % 250 == 0) {
+            char line[256];
+            std::snprintf(line, sizeof line, "%a %a %a %a %a", s.t, s.theta, s.omega, s.tauExt,
+                          s.x);
+            trace.rows.append(line);
+        }
+        ++trace.steps;
+    }
+    trace.sha256 = hash.result().toHex();
+    return trace;
+}
+
+} // namespace
+
+//! pc_damping_max 0 takes the device's step from before the controller, bit for bit: the trace
+//! recorded on that code (commit d567bd0) at 150 ms, where the loop swings and a controller
+//! that acted would show, is the trace today's code runs with the controller off.
+void TestLoopSimulation::controllerOffIsTheCodeBeforeIt()
+{
+    QFile file(QStringLiteral(HATPIC_TEST_DATA "/loop-before-passivity.txt"));
+    QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(file.fileName()));
+    Trace recorded;
+    for (const QByteArray &line : file.readAll().split('\n')) {
+        if (line.startsWith("steps "))
+            recorded.steps = line.mid(6).toInt();
+        else if (line.startsWith("sha256 "))
+            recorded.sha256 = line.mid(7);
+        else if (!line.isEmpty() && !line.startsWith('#'))
+            recorded.rows.append(line);
+    }
+    QCOMPARE(recorded.steps, 8001);
+    QCOMPARE(recorded.rows.size(), 33);
+
+    LoopConfig config = robotMdLoop(0.15, 8);
+    const Trace off = traceOf(config);
+    QCOMPARE(off.steps, recorded.steps);
+    for (qsizetype i = 0; i < recorded.rows.size(); ++i)
+        QCOMPARE(off.rows.at(i), recorded.rows.at(i)); // names the first sampled step that differs
+    QCOMPARE(off.sha256, recorded.sha256);
+
+    config.passivity = PassivityParams{}; // on: the same loop then runs otherwise
+    const Trace on = traceOf(config);
+    QVERIFY(on.sha256 != recorded.sha256);
 }
 
 void TestLoopSimulation::swingsForGoodAt150ms()
