@@ -13,6 +13,7 @@
 #include "model/effects.h"
 #include "model/params.h"
 #include "model/passivity.h"
+#include "model/servo.h"
 #include "model/stiffness.h"
 
 #include <cstdint>
@@ -46,7 +47,7 @@ public:
 
     struct Config
     {
-        double rateHz = 1000;                           //!< control rate; period h = 1/rate [Hz]
+        double rateHz = servo::kControlRateHz;          //!< control rate; period h = 1/rate [Hz]
         double tauLimit = 0.44;                         //!< |τ_total| limit [N·m]
         std::uint32_t watchdogUs = kFeedbackWatchdogUs; //!< feedback watchdog [µs]; 0 = none
     };

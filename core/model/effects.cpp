@@ -2,6 +2,7 @@
 
 #include "fieldcheck.h"
 #include "paramtable.h"
+#include "servo.h"
 
 #include <limits>
 
@@ -137,6 +138,21 @@ EffectFigures deriveEffectFigures(const EffectParams &effects, const DeviceParam
     f.wallPassivityMargin = physicalDamping - effects.wall_stiffness * period / 2.0;
     f.detentsStifferThanNotch = effects.detent_range > 0 && f.detentPeakStiffness > device.K_max;
     f.detentPassivityMargin = physicalDamping - f.detentPeakStiffness * period / 2.0;
+    f.servoLimit = servoStiffnessLimit(device, servo::kPositionLoopHz);
+
+    const bool detents = effects.detent_strength > 0 && effects.detent_range > 0;
+    const bool walls = effects.wall_stiffness > 0 && (effects.wall_min > -std::numbers::pi ||
+                                                      effects.wall_max < std::numbers::pi);
+    const auto add = [&f](bool broken, EffectWarning w) {
+        if (broken)
+            f.warnings.push_back(w);
+    };
+    add(walls && f.wallPassivityMargin < 0, EffectWarning::WallNotPassive);
+    add(detents && f.detentPassivityMargin < 0, EffectWarning::DetentsNotPassive);
+    add(walls && effects.wall_stiffness > f.servoLimit, EffectWarning::WallAboveServo);
+    add(detents && f.detentPeakStiffness > f.servoLimit, EffectWarning::DetentsAboveServo);
+    add(f.detentsStifferThanNotch && effects.detent_strength > 0,
+        EffectWarning::DetentsStifferThanNotch);
     return f;
 }
 

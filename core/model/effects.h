@@ -125,6 +125,16 @@ inline double wallTorque(const EffectParams &p, double e, double omega)
     return wallTorque(EffectShape<double>::from(p), e, omega);
 }
 
+//! What may go wrong with an effect block on this knob (effects.md § 4); the figures say by how
+//! much, a tuning UI says it in words.
+enum class EffectWarning {
+    WallNotPassive,          //!< K_w·h/2 > b: the wall may chatter
+    DetentsNotPassive,       //!< (A·2π/s)·h/2 > b: the detents may chatter
+    WallAboveServo,          //!< K_w above the servo's limit: the wall is likely to bounce
+    DetentsAboveServo,       //!< A·2π/s above the servo's limit: the detents are likely to buzz
+    DetentsStifferThanNotch, //!< A·2π/s > K_max: near θ0 the detents set the feel
+};
+
 //! Figures a tuning UI shows for an effect block (effects.md § 4).
 struct EffectFigures
 {
@@ -134,6 +144,10 @@ struct EffectFigures
     bool detentsStifferThanNotch = false; //!< A·2π/s > K_max
     //! b − (A·2π/s)·h/2: the passivity check with the detents' peak stiffness [N·m·s/rad]
     double detentPassivityMargin = 0;
+    double servoLimit = 0; //!< servoStiffnessLimit() at servo::kPositionLoopHz [N·m/rad]
+    //! The rules the block breaks, in this order; only for effects that are on (detents with
+    //! a strength and a range, walls with a stiffness and a bound inside ±π).
+    std::vector<EffectWarning> warnings;
 };
 
 //! @param physicalDamping b, the device's own viscous damping [N·m·s/rad]

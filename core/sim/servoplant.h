@@ -4,20 +4,22 @@
 // numbers are a published identification of the STS3032 at 6 V (see docs/simulator.md).
 #pragma once
 
+#include "model/servo.h"
+
 namespace hatpic {
 
 class ServoPlant
 {
 public:
-    static constexpr double kTorqueConstant = 0.60;    //!< output-shaft torque constant [N·m/A]
-    static constexpr double kResistance = 3.34;        //!< armature resistance [Ω]
-    static constexpr double kSupplyVoltage = 6.0;      //!< [V]
-    static constexpr double kInertia = 5.4e-5;         //!< armature + knob inertia [kg·m²]
-    static constexpr double kViscousFriction = 0.0049; //!< [N·m·s/rad]
-    static constexpr double kNoLoadSpeed = 10.0;       //!< [rad/s]
-    static constexpr double kBandwidthHz = 25.0;       //!< position-loop natural frequency [Hz]
-    static constexpr double kDampingRatio = 0.7;       //!< position-loop damping ratio [-]
-    static constexpr double kMinSubStepRate = 10000;   //!< servo loop sub-steps per second [Hz]
+    static constexpr double kTorqueConstant = 0.60; //!< output-shaft torque constant [N·m/A]
+    static constexpr double kResistance = 3.34;     //!< armature resistance [Ω]
+    static constexpr double kSupplyVoltage = 6.0;   //!< [V]
+    static constexpr double kInertia = 5.4e-5;      //!< armature + knob inertia [kg·m²]
+    static constexpr double kViscousFriction = servo::kViscousFriction; //!< [N·m·s/rad]
+    static constexpr double kNoLoadSpeed = 10.0;                        //!< [rad/s]
+    static constexpr double kBandwidthHz = servo::kPositionLoopHz;      //!< position loop [Hz]
+    static constexpr double kDampingRatio = 0.7;     //!< position-loop damping ratio [-]
+    static constexpr double kMinSubStepRate = 10000; //!< servo loop sub-steps per second [Hz]
 
     //! @param torqueLimit the servo's torque limit [N·m]; @param theta start angle [rad]
     explicit ServoPlant(double torqueLimit, double theta = 0.0);

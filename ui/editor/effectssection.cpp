@@ -3,8 +3,8 @@
 #include "editor/parameterfield.h"
 #include "editor/parameterspecs.h"
 #include "model/paramtable.h"
+#include "model/servo.h"
 #include "plots/palette.h"
-#include "sim/servoplant.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -176,12 +176,10 @@ void EffectsSection::setFigures(const EffectParams &effects, const DeviceParams 
         m_warnings->hide();
         return;
     }
-    const double b = ServoPlant::kViscousFriction;
+    const double b = servo::kViscousFriction;
     const double h = 1.0 / controlRate;
     const EffectFigures f = deriveEffectFigures(effects, device, b, h);
     const bool detents = effects.detent_strength > 0 && effects.detent_range > 0;
-    const bool walls = effects.wall_stiffness > 0 && (effects.wall_min > -std::numbers::pi ||
-                                                      effects.wall_max < std::numbers::pi);
     QStringList figures;
     figures << tr("detent peak stiffness A·2π/s = %1 N·m/rad")
                    .arg(detents ? num(f.detentPeakStiffness) : tr("— (off)"));
@@ -190,36 +188,45 @@ void EffectsSection::setFigures(const EffectParams &effects, const DeviceParams 
     m_figures->setText(figures.join(u"; "));
 
     QStringList warnings;
-    if (walls && f.wallPassivityMargin < 0)
-        warnings << tr("K_w·h/2 = %1 N·m·s/rad exceeds the knob's damping b = %2: the wall "
-                       "may chatter (not passive).")
-                        .arg(num(effects.wall_stiffness * h / 2), num(b));
-    if (detents && f.detentPassivityMargin < 0)
-        warnings << tr("The detents' peak stiffness %1 N·m/rad times h/2 exceeds the knob's "
-                       "damping b = %2: the detents may chatter (not passive).")
-                        .arg(num(f.detentPeakStiffness), num(b));
-    const double servoLimit = servoStiffnessLimit(device, ServoPlant::kBandwidthHz);
-    if (walls && effects.wall_stiffness > servoLimit)
-        warnings << tr("K_w = %1 N·m/rad is above what the STS3032's position loop follows "
-                       "with this inertia, D_adm·(2π·%2 Hz)² = %3 N·m/rad: the wall is likely "
-                       "to bounce. Try it on the simulator first, or raise D_adm.")
-                        .arg(num(effects.wall_stiffness), num(ServoPlant::kBandwidthHz),
-                             num(servoLimit));
-    if (detents && f.detentPeakStiffness > servoLimit)
-        warnings << tr("The detents' peak stiffness A·2π/s = %1 N·m/rad is above what the "
-                       "STS3032's position loop follows with this inertia (%2 N·m/rad): the "
-                       "detents are likely to buzz.")
-                        .arg(num(f.detentPeakStiffness), num(servoLimit));
-    if (f.detentsStifferThanNotch && effects.detent_strength > 0)
-        warnings << tr("The detents (%1 N·m/rad at a rest position) are stiffer than the "
-                       "notch K_max = %2 N·m/rad: near θ0 they, not the notch, set the feel.")
-                        .arg(num(f.detentPeakStiffness), num(device.K_max));
+    for (const EffectWarning w : f.warnings)
+        warnings << sayWarning(w, effects, device, f, b, h);
     m_warningList = warnings;
     QStringList lines;
     for (const QString &w : std::as_const(warnings))
         lines << colored(palette::kProblemText, u"⚠ "_s + w);
     m_warnings->setText(lines.join(u"<br>"));
     m_warnings->setVisible(!warnings.isEmpty());
+}
+
+QString EffectsSection::sayWarning(EffectWarning warning, const EffectParams &effects,
+                                   const DeviceParams &device, const EffectFigures &f, double b,
+                                   double h)
+{
+    switch (warning) {
+    case EffectWarning::WallNotPassive:
+        return tr("K_w·h/2 = %1 N·m·s/rad exceeds the knob's damping b = %2: the wall "
+                  "may chatter (not passive).")
+            .arg(num(effects.wall_stiffness * h / 2), num(b));
+    case EffectWarning::DetentsNotPassive:
+        return tr("The detents' peak stiffness %1 N·m/rad times h/2 exceeds the knob's "
+                  "damping b = %2: the detents may chatter (not passive).")
+            .arg(num(f.detentPeakStiffness), num(b));
+    case EffectWarning::WallAboveServo:
+        return tr("K_w = %1 N·m/rad is above what the STS3032's position loop follows "
+                  "with this inertia, D_adm·(2π·%2 Hz)² = %3 N·m/rad: the wall is likely "
+                  "to bounce. Try it on the simulator first, or raise D_adm.")
+            .arg(num(effects.wall_stiffness), num(servo::kPositionLoopHz), num(f.servoLimit));
+    case EffectWarning::DetentsAboveServo:
+        return tr("The detents' peak stiffness A·2π/s = %1 N·m/rad is above what the "
+                  "STS3032's position loop follows with this inertia (%2 N·m/rad): the "
+                  "detents are likely to buzz.")
+            .arg(num(f.detentPeakStiffness), num(f.servoLimit));
+    case EffectWarning::DetentsStifferThanNotch:
+        return tr("The detents (%1 N·m/rad at a rest position) are stiffer than the "
+                  "notch K_max = %2 N·m/rad: near θ0 they, not the notch, set the feel.")
+            .arg(num(f.detentPeakStiffness), num(device.K_max));
+    }
+    return {};
 }
 
 QString EffectsSection::warningText() const

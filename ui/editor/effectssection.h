@@ -60,6 +60,10 @@ Q_SIGNALS:
     void vibrateRequested(const hatpic::Vibration &vibration); //!< Vibrate, or Stop (a = 0)
 
 private:
+    //! One warning in words, with the knob's damping `b` [N·m·s/rad] and period `h` [s].
+    static QString sayWarning(EffectWarning warning, const EffectParams &effects,
+                              const DeviceParams &device, const EffectFigures &f, double b,
+                              double h);
     QWidget *buildVibrationGroup();
     void revalidateVibration();
     void refreshButtons();

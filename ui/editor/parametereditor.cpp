@@ -9,8 +9,8 @@
 #include "editor/parameterform.h"
 #include "editor/scientificspinbox.h"
 #include "editor/syncbar.h"
-#include "firmware/controller.h"
 #include "model/derived.h"
+#include "model/servo.h"
 
 #include <QAction>
 #include <QGroupBox>
@@ -24,18 +24,8 @@ namespace hatpic {
 
 using namespace Qt::StringLiterals;
 
-namespace {
-
-//! The device core's control rate, for a device that has not told its own [Hz].
-double defaultControlRate()
-{
-    return fw::Controller<double>::Config{}.rateHz;
-}
-
-} // namespace
-
 ParameterEditor::ParameterEditor(QWidget *parent)
-    : QWidget(parent), m_controlRate(defaultControlRate())
+    : QWidget(parent), m_controlRate(servo::kControlRateHz)
 {
     m_undo = new QUndoStack(this);
     m_live =
@@ -253,7 +243,7 @@ void ParameterEditor::setDeviceTuning(const DeviceTuning &device)
 void ParameterEditor::setEffectsAvailable(bool available, const QString &reason, double controlRate)
 {
     m_sync.setEffectsTracked(available);
-    m_controlRate = controlRate > 0 ? controlRate : defaultControlRate();
+    m_controlRate = controlRate > 0 ? controlRate : servo::kControlRateHz;
     m_form->effectsSection()->setAvailable(available, reason);
     refreshDiff();
     refreshDerived();

@@ -2,6 +2,7 @@
 // boundary the spec names, the block's and VIBRATE's validation, the derived figures.
 #include "model/effects.h"
 #include "model/paramtable.h"
+#include "model/servo.h"
 
 #include <QTest>
 
@@ -254,6 +255,43 @@ private Q_SLOTS:
         d.D_adm = 4e-4;
         QVERIFY(std::abs(servoStiffnessLimit(d, 25) - 4 * 2.4674011002723395) < 1e-12);
         QCOMPARE(servoStiffnessLimit(d, 0), 0.0);
+    }
+
+    //! The rules a tuning UI warns about, each alone and only for effects that are on.
+    void warnings()
+    {
+        using W = EffectWarning;
+        using List = std::vector<W>;
+        DeviceParams d; // D_adm 1e-4: the servo follows up to 2.47 N·m/rad
+        const auto warned = [&](const EffectParams &p) {
+            return deriveEffectFigures(p, d, 0.0049, 1e-3).warnings;
+        };
+        QVERIFY(warned(EffectParams{}).empty()); // the defaults render nothing
+        // A soft wall inside ±π: passive (K_w·h/2 = 0.001 < b) and within the servo's reach.
+        QVERIFY(warned(walls(-1, 1, 2, 0)).empty());
+        // 3 N·m/rad: still passive (0.0015 < 0.0049) but above 2.47.
+        QCOMPARE(warned(walls(-1, 1, 3, 0)), List{W::WallAboveServo});
+        // 10 N·m/rad: 0.005 > 0.0049 as well.
+        QCOMPARE(warned(walls(-1, 1, 10, 0)), (List{W::WallNotPassive, W::WallAboveServo}));
+        // The same stiffness with both bounds at ±π is no wall.
+        QVERIFY(warned(walls(-kPi, kPi, 10, 0)).empty());
+        // Detents of 0.01 N·m every 0.2 rad: 0.314 N·m/rad, below K_max 0.4 and everything.
+        QVERIFY(warned(detents(0.01, 0.2, 0.8)).empty());
+        // 0.05 N·m: 1.57 N·m/rad, stiffer than the notch only.
+        QCOMPARE(warned(detents(0.05, 0.2, 0.8)), List{W::DetentsStifferThanNotch});
+        // 0.1 N·m: 3.14 N·m/rad, above the servo too.
+        QCOMPARE(warned(detents(0.1, 0.2, 0.8)),
+                 (List{W::DetentsAboveServo, W::DetentsStifferThanNotch}));
+        // 2 N·m: 62.8 N·m/rad, not passive either.
+        QCOMPARE(warned(detents(2, 0.2, 0.8)),
+                 (List{W::DetentsNotPassive, W::DetentsAboveServo, W::DetentsStifferThanNotch}));
+        // Without a range the detents are off: no warning, whatever their strength.
+        QVERIFY(warned(detents(2, 0.2, 0)).empty());
+        // A heavier knob moves the servo's limit: D_adm 4e-4 follows 9.87 N·m/rad.
+        d.D_adm = 4e-4;
+        QVERIFY(warned(walls(-1, 1, 3, 0)).empty());
+        QCOMPARE(deriveEffectFigures(EffectParams{}, d, 0.0049, 1e-3).servoLimit,
+                 servoStiffnessLimit(d, servo::kPositionLoopHz));
     }
 
     void tableNames()
