@@ -2,8 +2,8 @@
 // codes (issue 27): a push that failed part-way, experiments that cannot measure, foreign text
 // on the terminal, two clients on one terminal, relative port paths, and the smaller ones.
 // Devices are scripted on the master side of real pseudo-terminals, or hatpic-sim.
-#include "../core/session/scripteddevice.h"
 #include "ctlprocess.h"
+#include "scripteddevice.h"
 
 #include "profile/paramsjson.h"
 

@@ -1,7 +1,7 @@
 // hatpicctl as a real process against hostile conditions (issue 10, "Hostile input"): files it
 // did not create, paths that are not files, signals, a file-size limit, line noise before
 // HELLO, a silent legacy port.
-#include "../core/session/scripteddevice.h"
+#include "scripteddevice.h"
 #include "telemetry/recordingreader.h"
 
 #include <QDir>
