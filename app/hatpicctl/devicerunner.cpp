@@ -8,6 +8,7 @@
 #include "telemetry/numbertext.h"
 
 #include <QEventLoop>
+#include <QScopeGuard>
 #include <QTimer>
 
 #include <cmath>
@@ -17,6 +18,9 @@ namespace hatpic::cli {
 
 namespace {
 
+//! runFor()'s stop condition may read what no signal announces (a SIGINT flag, a clock):
+//! it is also checked this often. A command's outcome and the client's signals wake a wait at
+//! once.
 constexpr int kPollMs = 50;
 constexpr int kResultAfterLossMs = 500; //!< wait for a command's result once the link is lost
 
@@ -82,8 +86,9 @@ DeviceRunner::Wait DeviceRunner::wait(const std::function<bool()> &done, double 
     QObject::connect(&m_client, &DeviceClient::stateChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::deviceInfoChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::deviceTuningChanged, &loop, check);
-    QObject::connect(&m_client, &DeviceClient::commandFinished, &loop, check);
     QObject::connect(&m_client, &DeviceClient::recordingChanged, &loop, check);
+    m_wake = check; // a command's outcome, given to runCommand() alone
+    const auto unwake = qScopeGuard([this] { m_wake = nullptr; });
     QObject::connect(&m_client, &DeviceClient::statsUpdated, &loop, check);
 
     QTimer poll;
@@ -158,23 +163,22 @@ int DeviceRunner::connect()
     return ExitNoDevice;
 }
 
-int DeviceRunner::runCommand(const std::function<quint64(DeviceClient &)> &issue,
+int DeviceRunner::runCommand(const std::function<void(DeviceClient &, CommandDone)> &issue,
                              CommandResult *result)
 {
-    quint64 id = 0;
+    // The outcome comes to this call alone; `waiter` ends with it, so a late one (after a
+    // timeout) goes nowhere.
+    QObject waiter;
     std::optional<CommandResult> finished;
-    const QMetaObject::Connection connection =
-        QObject::connect(&m_client, &DeviceClient::commandFinished, &m_context,
-                         [&](quint64 finishedId, const CommandResult &r) {
-                             if (id != 0 && finishedId == id)
-                                 finished = r;
-                         });
-    id = issue(m_client);
+    issue(m_client, {&waiter, [&](const CommandResult &r) {
+                         finished = r;
+                         if (m_wake)
+                             m_wake();
+                     }});
     const Wait outcome = wait([&] { return finished.has_value(); }, m_options.timeoutS);
 
     switch (outcome) {
     case Wait::Done:
-        QObject::disconnect(connection);
         if (result)
             *result = *finished;
         return ExitSuccess;
@@ -184,18 +188,14 @@ int DeviceRunner::runCommand(const std::function<quint64(DeviceClient &)> &issue
         if (!finished) {
             QEventLoop loop;
             QTimer::singleShot(kResultAfterLossMs, &loop, &QEventLoop::quit);
-            QObject::connect(&m_client, &DeviceClient::commandFinished, &loop, [&] {
-                if (finished)
-                    loop.quit();
-            });
+            m_wake = [&] { loop.quit(); };
             loop.exec();
+            m_wake = nullptr;
         }
-        QObject::disconnect(connection);
         if (result && finished)
             *result = *finished;
         return reportLoss();
     case Wait::TimedOut:
-        QObject::disconnect(connection);
         break;
     }
     printError(u"The device did not answer within " + secondsText(m_options.timeoutS) + u'.');

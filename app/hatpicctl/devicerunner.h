@@ -29,10 +29,11 @@ public:
 
     //! Opens the port and waits until the session reports Connected.
     int connect();
-    //! Issues one command (`issue` returns its request id) and waits for commandFinished.
-    //! The result is stored in `*result` when given, whatever its status — also when the link
-    //! was lost (the loss is reported and ExitNoDevice returned), if the result came.
-    int runCommand(const std::function<quint64(DeviceClient &)> &issue,
+    //! Issues one command (`issue` gives the client's command the CommandDone it is handed)
+    //! and waits for its outcome. The result is stored in `*result` when given, whatever its
+    //! status — also when the link was lost (the loss is reported and ExitNoDevice returned),
+    //! if the result came.
+    int runCommand(const std::function<void(DeviceClient &, CommandDone)> &issue,
                    CommandResult *result = nullptr);
     //! Lets the link run for `seconds` (≤ 0: no limit) or until `stop()` returns true; `stop`
     //! is checked whenever the client reports something and at least every 50 ms. A lost link
@@ -57,6 +58,8 @@ private:
     bool m_closing = false; //!< we asked to disconnect; a Disconnected state is expected
     bool m_lost = false;    //!< the link went away (or never came up)
     QString m_lostDetail;   //!< the session's reason
+    //! While a wait runs: re-checks its condition at once (a command's outcome has come).
+    std::function<void()> m_wake;
 };
 
 } // namespace hatpic::cli

@@ -204,7 +204,10 @@ protected:
             else
                 none.passivity = PassivityParams{};
             if (const int code = runner.runCommand(
-                    [&none](DeviceClient &client) { return client.pushTuning(none); }, &refused);
+                    [&none](DeviceClient &client, CommandDone then) {
+                        client.pushTuning(none, std::move(then));
+                    },
+                    &refused);
                 code)
                 return code;
             return DeviceRunner::reportResult(refused);
@@ -256,7 +259,10 @@ protected:
         if (tuning.params || tuning.effects || tuning.passivity) {
             CommandResult result;
             const int code = runner.runCommand(
-                [&tuning](DeviceClient &client) { return client.pushTuning(tuning); }, &result);
+                [&tuning](DeviceClient &client, CommandDone then) {
+                    client.pushTuning(tuning, std::move(then));
+                },
+                &result);
             if (code) {
                 // The link went after part of the push: say what it had changed.
                 if (const QString applied = SessionWording::appliedBeforeFailure(result);

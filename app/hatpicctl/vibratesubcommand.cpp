@@ -99,7 +99,10 @@ protected:
         CommandResult result;
         const Vibration cue = m_cue;
         if (const int code = runner.runCommand(
-                [&cue](DeviceClient &client) { return client.vibrate(cue); }, &result);
+                [&cue](DeviceClient &client, CommandDone then) {
+                    client.vibrate(cue, std::move(then));
+                },
+                &result);
             code)
             return code;
         if (const int code = DeviceRunner::reportResult(result); code)

@@ -45,7 +45,7 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
                 ++m_droppedBatches;
         },
         Qt::DirectConnection);
-    connect(m_session, &DeviceSession::commandFinished, this, &DeviceClient::commandFinished);
+    connect(m_session, &DeviceSession::commandFinished, this, &DeviceClient::finishCommand);
     connect(m_session, &DeviceSession::notice, this, &DeviceClient::notice);
     connect(
         m_session, &DeviceSession::statsUpdated, this,
@@ -128,11 +128,19 @@ void DeviceClient::onSession(Args &&...args)
         Type);
 }
 
-template<auto Method, typename... Args> quint64 DeviceClient::command(Args &&...args)
+template<auto Method, typename... Args> void DeviceClient::command(CommandDone then, Args &&...args)
 {
-    const quint64 id = nextId();
+    const quint64 id = ++m_lastId;
+    if (then.done)
+        m_waiting.emplace(id, std::move(then));
     onSession<Method>(id, std::forward<Args>(args)...);
-    return id;
+}
+
+void DeviceClient::finishCommand(quint64 id, const CommandResult &result)
+{
+    const auto node = m_waiting.extract(id);
+    if (!node.empty() && node.mapped().context)
+        node.mapped().done(result);
 }
 
 void DeviceClient::connectDevice(const ConnectOptions &options)
@@ -147,34 +155,34 @@ void DeviceClient::disconnectDevice()
     onSession<&DeviceSession::disconnectDevice>();
 }
 
-quint64 DeviceClient::pushTuning(const DeviceTuning &tuning)
+void DeviceClient::pushTuning(const DeviceTuning &tuning, CommandDone then)
 {
-    return command<&DeviceSession::pushTuning>(tuning);
+    command<&DeviceSession::pushTuning>(std::move(then), tuning);
 }
 
-quint64 DeviceClient::readTuning()
+void DeviceClient::readTuning(CommandDone then)
 {
-    return command<&DeviceSession::readTuning>();
+    command<&DeviceSession::readTuning>(std::move(then));
 }
 
-quint64 DeviceClient::zero()
+void DeviceClient::zero(CommandDone then)
 {
-    return command<&DeviceSession::zero>();
+    command<&DeviceSession::zero>(std::move(then));
 }
 
-quint64 DeviceClient::saveParams()
+void DeviceClient::saveParams(CommandDone then)
 {
-    return command<&DeviceSession::saveParams>();
+    command<&DeviceSession::saveParams>(std::move(then));
 }
 
-quint64 DeviceClient::setStreamRate(quint16 hz)
+void DeviceClient::setStreamRate(quint16 hz, CommandDone then)
 {
-    return command<&DeviceSession::setStreamRate>(hz);
+    command<&DeviceSession::setStreamRate>(std::move(then), hz);
 }
 
-quint64 DeviceClient::vibrate(const Vibration &vibration)
+void DeviceClient::vibrate(const Vibration &vibration, CommandDone then)
 {
-    return command<&DeviceSession::vibrate>(vibration);
+    command<&DeviceSession::vibrate>(std::move(then), vibration);
 }
 
 void DeviceClient::addSampleListener(SampleListener *listener)

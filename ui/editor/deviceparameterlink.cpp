@@ -11,9 +11,8 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
     : QObject(parent), m_client(client), m_editor(editor)
 {
     connect(m_editor, &ParameterEditor::pushRequested, this, &DeviceParameterLink::onPushRequested);
-    connect(m_editor, &ParameterEditor::vibrateRequested, this, [this](const Vibration &v) {
-        m_commands.insert(m_client->vibrate(v), CommandKind::Vibrate);
-    });
+    connect(m_editor, &ParameterEditor::vibrateRequested, this,
+            [this](const Vibration &v) { m_client->vibrate(v, then(CommandKind::Vibrate)); });
     connect(m_editor, &ParameterEditor::readRequested, this, &DeviceParameterLink::readFromDevice);
     connect(m_editor, &ParameterEditor::hostParamsChanged, m_client, &DeviceClient::setHostParams);
     connect(m_client, &DeviceClient::stateChanged, this,
@@ -21,8 +20,6 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
     connect(m_client, &DeviceClient::deviceInfoChanged, this, &DeviceParameterLink::onDeviceInfo);
     connect(m_client, &DeviceClient::deviceTuningChanged, m_editor,
             &ParameterEditor::setDeviceTuning);
-    connect(m_client, &DeviceClient::commandFinished, this,
-            &DeviceParameterLink::onCommandFinished);
     onStateChanged(m_client->state());
 }
 
@@ -35,24 +32,32 @@ void DeviceParameterLink::prepare(ConnectOptions &options)
     m_client->setHostParams(m_editor->hostParams());
 }
 
+CommandDone DeviceParameterLink::then(CommandKind kind)
+{
+    return {this, [this, kind](const CommandResult &result) { finishCommand(kind, result); }};
+}
+
 void DeviceParameterLink::onPushRequested(const DeviceTuning &tuning)
 {
-    m_push = Push{m_client->pushTuning(tuning), m_client->deviceTuning()};
+    m_client->pushTuning(
+        tuning, {this, [this, before = m_client->deviceTuning()](const CommandResult &result) {
+                     finishPush(before, result);
+                 }});
 }
 
 void DeviceParameterLink::readFromDevice()
 {
-    m_commands.insert(m_client->readTuning(), CommandKind::GetParams);
+    m_client->readTuning(then(CommandKind::GetParams));
 }
 
 void DeviceParameterLink::zero()
 {
-    m_commands.insert(m_client->zero(), CommandKind::Zero);
+    m_client->zero(then(CommandKind::Zero));
 }
 
 void DeviceParameterLink::saveInDevice()
 {
-    m_commands.insert(m_client->saveParams(), CommandKind::SaveParams);
+    m_client->saveParams(then(CommandKind::SaveParams));
 }
 
 void DeviceParameterLink::onStateChanged(SessionState state)
@@ -92,27 +97,14 @@ void DeviceParameterLink::refreshEffectsAvailability()
                         : QString());
 }
 
-void DeviceParameterLink::onCommandFinished(quint64 id, const CommandResult &result)
+void DeviceParameterLink::finishPush(const DeviceTuning &before, const CommandResult &result)
 {
-    if (m_push && m_push->id == id) {
-        finishPush(result);
-    } else if (const auto it = m_commands.constFind(id); it != m_commands.cend()) {
-        const CommandKind kind = it.value();
-        m_commands.erase(it);
-        finishCommand(kind, result);
-    }
-}
-
-void DeviceParameterLink::finishPush(const CommandResult &result)
-{
-    const Push push = *m_push;
-    m_push.reset();
     m_editor->pushFinished(result);
     if (result.ok()) {
         // What changed is what the device held against what travelled (float32, bounds kept
         // by the session's one rounding: `sent`), never the editor's doubles: the walls' ±π
         // travel as the float just inside π, which the device already held.
-        const QString change = describeTuningChange(push.before, result.sent);
+        const QString change = describeTuningChange(before, result.sent);
         m_lastMessage = change.isEmpty() ? tr("Pushed (no change).") : tr("Pushed: %1").arg(change);
         if (!change.isEmpty())
             Q_EMIT deviceChanged(change);

@@ -9,14 +9,12 @@
 #include "model/params.h"
 #include "session/sessiontypes.h"
 
-#include <QHash>
 #include <QObject>
-
-#include <optional>
 
 namespace hatpic {
 
 class DeviceClient;
+struct CommandDone;
 class ParameterEditor;
 
 class DeviceParameterLink : public QObject
@@ -49,20 +47,14 @@ private:
     void onDeviceInfo(const DeviceInfo &info);
     void refreshEffectsAvailability();
     void onPushRequested(const DeviceTuning &tuning);
-    void onCommandFinished(quint64 id, const CommandResult &result);
-    void finishPush(const CommandResult &result);
+    //! `before`: the device's tuning when the push was sent.
+    void finishPush(const DeviceTuning &before, const CommandResult &result);
     void finishCommand(CommandKind kind, const CommandResult &result);
+    //! Where the outcome of a `kind` command (not a push) goes: finishCommand().
+    CommandDone then(CommandKind kind);
 
     DeviceClient *m_client;
     ParameterEditor *m_editor;
-    //! The push in flight (the editor sends one at a time).
-    struct Push
-    {
-        quint64 id = 0;
-        DeviceTuning before; //!< the device's tuning when the push was sent
-    };
-    std::optional<Push> m_push;
-    QHash<quint64, CommandKind> m_commands; //!< other commands in flight
     QString m_lastMessage;
 };
 

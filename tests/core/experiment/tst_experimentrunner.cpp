@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
@@ -55,9 +56,11 @@ struct Bench
     //! Sends `params` and waits for the device's acknowledgement.
     bool push(const DeviceParams &params)
     {
-        QSignalSpy done(&client, &DeviceClient::commandFinished);
-        client.pushTuning({params, std::nullopt});
-        return done.wait(kConnectMs) && done.first().at(1).value<CommandResult>().ok();
+        QObject caller;
+        std::optional<CommandResult> done;
+        client.pushTuning({params, std::nullopt},
+                          {&caller, [&done](const CommandResult &r) { done = r; }});
+        return QTest::qWaitFor([&] { return done.has_value(); }, kConnectMs) && done->ok();
     }
 
     SimulatorHost host;
@@ -175,9 +178,11 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
     DeviceParams params = client.deviceTuning().params.value();
     params.D_adm = 2e-3; // the slow knob of stepRecoversTheModel: 14.1 rad/s, ζ 0.707
     params.M_adm = 4e-2;
-    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
-    client.pushTuning({params, std::nullopt});
-    QVERIFY(pushed.wait(kConnectMs));
+    QObject caller;
+    bool pushed = false;
+    client.pushTuning({params, std::nullopt},
+                      {&caller, [&pushed](const CommandResult &) { pushed = true; }});
+    QTRY_VERIFY_WITH_TIMEOUT(pushed, kConnectMs);
     QTRY_VERIFY_WITH_TIMEOUT(
         std::abs(client.deviceTuning().params.value().D_adm - params.D_adm) < 1e-9, kConnectMs);
 

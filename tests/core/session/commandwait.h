@@ -1,29 +1,26 @@
-// Waiting for a command's result in the session tests: the one helper they share.
+// Waiting for a command's outcome in the session tests: the one helper they share.
 #pragma once
 
-#include "session/sessiontypes.h"
+#include "session/deviceclient.h"
 
-#include <QSignalSpy>
+#include <QObject>
 #include <QTest>
+
+#include <optional>
 
 namespace hatpic::test {
 
-//! The result of the command `id` once DeviceClient::commandFinished (spied by `finished`)
-//! reported it; a Timeout result when it did not within `timeoutMs`.
-inline CommandResult waitForCommand(QSignalSpy &finished, quint64 id, int timeoutMs)
+//! Calls `issue` with a CommandDone of this call's own, which `issue` hands to one of
+//! DeviceClient's commands, and returns that command's outcome once it came; a Timeout result
+//! when it did not within `timeoutMs` (a later one then goes nowhere).
+template<typename Issue> CommandResult waitForCommand(Issue issue, int timeoutMs)
 {
-    auto find = [&]() -> const QList<QVariant> * {
-        for (const QList<QVariant> &args : std::as_const(finished)) {
-            if (args.first().toULongLong() == id)
-                return &args;
-        }
-        return nullptr;
-    };
-    if (!QTest::qWaitFor([&] { return find() != nullptr; }, timeoutMs))
+    QObject waiter;
+    std::optional<CommandResult> outcome;
+    issue(CommandDone{&waiter, [&outcome](const CommandResult &r) { outcome = r; }});
+    if (!QTest::qWaitFor([&] { return outcome.has_value(); }, timeoutMs))
         return commandResult(CommandKind::Hello, CommandResult::Status::Timeout);
-    const QList<QVariant> *args = find();
-    return args ? args->last().value<CommandResult>()
-                : commandResult(CommandKind::Hello, CommandResult::Status::Timeout);
+    return *outcome;
 }
 
 } // namespace hatpic::test

@@ -92,7 +92,7 @@ class TestDeviceClient : public QObject
 private Q_SLOTS:
     void connectsOnItsOwnThread();
     void cacheIsUpdatedBeforeSignals();
-    void commandIdsComeBack();
+    void outcomesComeToTheirCaller();
     void frozenMainThreadDoesNotStarveTheLink();
     void frozenMainThreadKeepsTheQueueBounded();
     void destructorClosesRecordingAndJoins();
@@ -147,28 +147,43 @@ void TestDeviceClient::cacheIsUpdatedBeforeSignals()
     QVERIFY(checks >= 5);
 }
 
-void TestDeviceClient::commandIdsComeBack()
+//! Each command's outcome goes to its own caller, once, and to nobody whose context is gone.
+void TestDeviceClient::outcomesComeToTheirCaller()
 {
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     client.connectDevice(simOptions());
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params.has_value(), kConnectTimeoutMs);
     DeviceParams p;
     p.M_adm = 0.02;
-    const quint64 a = client.pushTuning({p, std::nullopt});
-    const quint64 b = client.readTuning();
     DeviceParams bad;
     bad.N = -1;
-    const quint64 c = client.pushTuning({bad, std::nullopt});
-    QVERIFY(a != b && b != c);
-    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, kConnectTimeoutMs);
-    QHash<quint64, CommandResult> results;
-    for (const auto &args : std::as_const(finished))
-        results.insert(args[0].toULongLong(), args[1].value<CommandResult>());
-    QVERIFY(results.value(a).ok() && results.value(a).readBackMatches);
-    QVERIFY(results.value(b).ok());
-    QCOMPARE(results.value(c).status, CommandResult::Status::Invalid);
+    QObject caller;
+    QList<CommandResult> pushed, read, refused;
+    const auto into = [&caller](QList<CommandResult> &list) {
+        return CommandDone{&caller, [&list](const CommandResult &r) { list.append(r); }};
+    };
+    client.pushTuning({p, std::nullopt}, into(pushed));
+    client.readTuning(into(read));
+    client.pushTuning({bad, std::nullopt}, into(refused));
+    int late = 0;
+    {
+        QObject gone; // its command still runs, but nobody hears its outcome
+        client.readTuning({&gone, [&late](const CommandResult &) { ++late; }});
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(!pushed.isEmpty() && !read.isEmpty() && !refused.isEmpty(),
+                             kConnectTimeoutMs);
+    QVERIFY(pushed.first().ok() && pushed.first().readBackMatches);
+    QVERIFY(read.first().ok());
+    QCOMPARE(refused.first().status, CommandResult::Status::Invalid);
     QCOMPARE(client.deviceTuning().params.value().M_adm, double(0.02f));
+    // A command without a caller runs too; afterwards each list still holds its one outcome.
+    client.readTuning();
+    QObject last;
+    bool lastDone = false;
+    client.readTuning({&last, [&lastDone](const CommandResult &) { lastDone = true; }});
+    QTRY_VERIFY_WITH_TIMEOUT(lastDone, kConnectTimeoutMs);
+    QCOMPARE(pushed.size() + read.size() + refused.size(), 3);
+    QCOMPARE(late, 0);
 }
 
 void TestDeviceClient::frozenMainThreadDoesNotStarveTheLink()

@@ -47,10 +47,10 @@ bool connectTo(DeviceClient &client, SimProcess &sim,
     return true;
 }
 
-//! The result of the command `id` once it finished.
-CommandResult waitFor(QSignalSpy &finished, quint64 id)
+//! The outcome of the command `issue` gives its CommandDone to.
+template<typename Issue> CommandResult waitFor(Issue issue)
 {
-    return test::waitForCommand(finished, id, kTimeoutMs);
+    return test::waitForCommand(issue, kTimeoutMs);
 }
 
 } // namespace
@@ -80,7 +80,6 @@ void TestSessionEffects::effectsOverPty()
 {
     SimProcess sim({});
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QList<Sample> samples;
     connect(&client, &DeviceClient::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
@@ -95,7 +94,9 @@ void TestSessionEffects::effectsOverPty()
 
     const EffectParams fx = detentsAndWalls();
     QSignalSpy effectsChanged(&client, &DeviceClient::deviceTuningChanged);
-    const CommandResult pushed = waitFor(finished, client.pushTuning({std::nullopt, fx}));
+    const CommandResult pushed = waitFor([&](CommandDone then) {
+        client.pushTuning({std::nullopt, fx}, std::move(then));
+    });
     QVERIFY(pushed.ok());
     QCOMPARE(pushed.command, CommandKind::SetEffects);
     QVERIFY(pushed.readBack && pushed.readBackMatches);
@@ -103,7 +104,8 @@ void TestSessionEffects::effectsOverPty()
     QVERIFY(effectsChanged.count() >= 1);
     QVERIFY(sameOnWire(client.deviceTuning().effects.value(), fx));
 
-    const CommandResult read = waitFor(finished, client.readTuning());
+    const CommandResult read =
+        waitFor([&](CommandDone then) { client.readTuning(std::move(then)); });
     QVERIFY(read.ok());
     QCOMPARE(read.command, CommandKind::GetParams); // the tuning: parameters and effects
     QVERIFY(read.received.params.has_value());
@@ -111,7 +113,9 @@ void TestSessionEffects::effectsOverPty()
 
     // A strong, slow cue shows in τ_fx: the knob rests in a detent, where τ_det ≈ 0.
     samples.clear();
-    const CommandResult vibrated = waitFor(finished, client.vibrate({0.2, 20, 0.3}));
+    const CommandResult vibrated = waitFor([&](CommandDone then) {
+        client.vibrate({0.2, 20, 0.3}, std::move(then));
+    });
     QVERIFY(vibrated.ok());
     QCOMPARE(vibrated.command, CommandKind::Vibrate);
     QCOMPARE(vibrated.vibration, (Vibration{0.2, 20, 0.3}));
@@ -128,14 +132,15 @@ void TestSessionEffects::invalidEffectsAreRefusedBeforeSending()
 {
     SimProcess sim({});
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QVERIFY(connectTo(client, sim));
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects.has_value(), kTimeoutMs);
 
     EffectParams bad;
     bad.detent_strength = 1.0; // above tau_limit 0.44
     bad.wall_min = 0.1;        // must be ≤ 0
-    const CommandResult r = waitFor(finished, client.pushTuning({std::nullopt, bad}));
+    const CommandResult r = waitFor([&](CommandDone then) {
+        client.pushTuning({std::nullopt, bad}, std::move(then));
+    });
     QCOMPARE(r.status, CommandResult::Status::Invalid);
     QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
     QCOMPARE(r.problems.size(), 2);
@@ -143,7 +148,9 @@ void TestSessionEffects::invalidEffectsAreRefusedBeforeSending()
     QVERIFY(sameOnWire(client.deviceTuning().effects.value(),
                        roundedForWire(EffectParams{}, 0.44))); // nothing reached the device
 
-    const CommandResult v = waitFor(finished, client.vibrate({0.1, 0.5, 1}));
+    const CommandResult v = waitFor([&](CommandDone then) {
+        client.vibrate({0.1, 0.5, 1}, std::move(then));
+    });
     QCOMPARE(v.status, CommandResult::Status::Invalid);
     QVERIFY2(v.problems.join(u';').contains(u"frequency"), qPrintable(v.problems.join(u';')));
 }
@@ -154,10 +161,11 @@ void TestSessionEffects::deviceRejectsVibrationAboveNyquist()
     // which only the device can check.
     SimProcess sim({});
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QVERIFY(connectTo(client, sim));
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects.has_value(), kTimeoutMs);
-    const CommandResult r = waitFor(finished, client.vibrate({0.1, 500, 1}));
+    const CommandResult r = waitFor([&](CommandDone then) {
+        client.vibrate({0.1, 500, 1}, std::move(then));
+    });
     QCOMPARE(r.status, CommandResult::Status::Rejected);
     QCOMPARE(r.ackStatus, v2::AckStatus::OutOfRange);
     QCOMPARE(r.field, 1);
@@ -167,16 +175,19 @@ void TestSessionEffects::legacyDeviceHasNoEffects()
 {
     SimProcess sim({QStringLiteral("--protocol"), QStringLiteral("legacy")});
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QList<Sample> samples;
     connect(&client, &DeviceClient::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
     QVERIFY(connectTo(client, sim, ProtocolChoice::Legacy));
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), SessionState::Connected, kTimeoutMs);
     QVERIFY(!client.deviceInfo().hasEffects());
-    for (const quint64 id :
-         {client.pushTuning({std::nullopt, detentsAndWalls()}), client.vibrate({0.1, 20, 1})}) {
-        const CommandResult r = waitFor(finished, id);
+    for (const CommandResult &r :
+         {waitFor([&](CommandDone then) {
+              client.pushTuning({std::nullopt, detentsAndWalls()}, std::move(then));
+          }),
+          waitFor([&](CommandDone then) {
+              client.vibrate({0.1, 20, 1}, std::move(then));
+          })}) {
         QCOMPARE(r.status, CommandResult::Status::Unsupported);
         QCOMPARE(r.reason, CommandResult::Reason::NoEffects);
     }

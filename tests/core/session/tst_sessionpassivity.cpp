@@ -20,10 +20,10 @@ namespace {
 
 constexpr int kTimeoutMs = 5000;
 
-//! The result of the command `id` once it finished.
-CommandResult waitFor(QSignalSpy &finished, quint64 id)
+//! The outcome of the command `issue` gives its CommandDone to.
+template<typename Issue> CommandResult waitFor(Issue issue)
 {
-    return test::waitForCommand(finished, id, kTimeoutMs);
+    return test::waitForCommand(issue, kTimeoutMs);
 }
 
 } // namespace
@@ -50,7 +50,6 @@ void TestSessionPassivity::passivityOverPty()
 {
     SimProcess sim({});
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     QList<Sample> samples;
     connect(&client, &DeviceClient::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
@@ -69,8 +68,9 @@ void TestSessionPassivity::passivityOverPty()
     QCOMPARE(samples.last().pc_reserve, double(float(PassivityParams{}.pc_reserve_max)));
 
     const PassivityParams pc{.pc_damping_max = 0.25, .pc_reserve_max = 0.01};
-    const CommandResult pushed =
-        waitFor(finished, client.pushTuning({std::nullopt, std::nullopt, pc}));
+    const CommandResult pushed = waitFor([&](CommandDone then) {
+        client.pushTuning({std::nullopt, std::nullopt, pc}, std::move(then));
+    });
     QVERIFY(pushed.ok());
     QCOMPARE(pushed.command, CommandKind::SetPassivity);
     QVERIFY(pushed.readBack && pushed.readBackMatches);
@@ -81,13 +81,15 @@ void TestSessionPassivity::passivityOverPty()
 
     // A push of every part: each sent and read back.
     const PassivityParams off = PassivityParams::off();
-    const CommandResult all =
-        waitFor(finished, client.pushTuning({client.deviceTuning().params, EffectParams{}, off}));
+    const CommandResult all = waitFor([&](CommandDone then) {
+        client.pushTuning({client.deviceTuning().params, EffectParams{}, off}, std::move(then));
+    });
     QVERIFY(all.ok());
     QVERIFY(all.readBack && all.readBackMatches);
     QVERIFY(sameOnWire(all.received.passivity.value(), off));
 
-    const CommandResult read = waitFor(finished, client.readTuning());
+    const CommandResult read =
+        waitFor([&](CommandDone then) { client.readTuning(std::move(then)); });
     QVERIFY(read.ok());
     QVERIFY(read.received.params && read.received.effects);
     QVERIFY(sameOnWire(read.received.passivity.value(), off));
@@ -97,14 +99,15 @@ void TestSessionPassivity::invalidPassivityIsRefusedBeforeSending()
 {
     SimProcess sim({});
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     ConnectOptions o;
     o.port = sim.path();
     QVERIFY(!o.port.isEmpty());
     client.connectDevice(o);
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().passivity.has_value(), kTimeoutMs);
-    const CommandResult r = waitFor(
-        finished, client.pushTuning({std::nullopt, std::nullopt, PassivityParams{2.0, 0.02}}));
+    const CommandResult r = waitFor([&](CommandDone then) {
+        client.pushTuning({std::nullopt, std::nullopt, PassivityParams{2.0, 0.02}},
+                          std::move(then));
+    });
     QCOMPARE(r.status, CommandResult::Status::Invalid);
     QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
     QCOMPARE(r.problems.size(), 1);

@@ -89,7 +89,6 @@ void TestSessionPty::paramsOverPty()
     const QString path = sim.path();
     QVERIFY2(!path.isEmpty(), qPrintable(sim.errors()));
     DeviceClient client;
-    QSignalSpy finished(&client, &DeviceClient::commandFinished);
     ConnectOptions o;
     o.port = path;
     client.connectDevice(o);
@@ -97,10 +96,12 @@ void TestSessionPty::paramsOverPty()
     DeviceParams p;
     p.K_max = 1.5;
     p.D_adm = 2e-4;
-    const quint64 id = client.pushTuning({p, std::nullopt});
-    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kConnectTimeoutMs);
-    QCOMPARE(finished.first().first().toULongLong(), id);
-    const auto r = finished.first().last().value<CommandResult>();
+    QObject caller;
+    QList<CommandResult> outcomes;
+    client.pushTuning({p, std::nullopt},
+                      {&caller, [&outcomes](const CommandResult &r) { outcomes.append(r); }});
+    QTRY_COMPARE_WITH_TIMEOUT(outcomes.size(), 1, kConnectTimeoutMs);
+    const CommandResult r = outcomes.first();
     QVERIFY(r.ok() && r.readBackMatches);
     QCOMPARE(client.deviceTuning().params.value().K_max, 1.5);
     QCOMPARE(client.deviceTuning().params.value().D_adm, double(2e-4f));

@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
@@ -84,11 +85,13 @@ void TestExperimentsPanel::stepFromTheRunButton()
     DeviceParams slow = *client.deviceTuning().params;
     slow.D_adm = 2e-3;
     slow.M_adm = 4e-2;
-    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
-    client.pushTuning({slow, std::nullopt});
-    QVERIFY(pushed.wait(kConnectMs));
+    QObject caller;
+    std::optional<CommandResult> pushed;
+    client.pushTuning({slow, std::nullopt},
+                      {&caller, [&pushed](const CommandResult &r) { pushed = r; }});
+    QTRY_VERIFY_WITH_TIMEOUT(pushed.has_value(), kConnectMs);
     // The push's result comes after its read-back: the device's parameters are the new ones.
-    QVERIFY(pushed.constLast().at(1).value<CommandResult>().readBackMatches);
+    QVERIFY(pushed->readBackMatches);
     QVERIFY(std::abs(client.deviceTuning().params->D_adm - 2e-3) < 1e-9);
     panel.fillDefaults();
     // The defaults for the device's parameters (K_max 0.4, band [0.02, 0.1]).
@@ -185,9 +188,11 @@ namespace {
 //! Pushes `params` and waits for the device's read-back.
 bool pushParams(DeviceClient &client, const DeviceParams &params)
 {
-    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
-    client.pushTuning({params, std::nullopt});
-    return pushed.wait(kConnectMs) &&
+    QObject caller;
+    bool pushed = false;
+    client.pushTuning({params, std::nullopt},
+                      {&caller, [&pushed](const CommandResult &) { pushed = true; }});
+    return QTest::qWaitFor([&] { return pushed; }, kConnectMs) &&
            QTest::qWaitFor([&] { return client.deviceTuning().params == roundedToFloat(params); },
                            kConnectMs);
 }
@@ -262,9 +267,10 @@ void TestExperimentsPanel::cautionOnADetent()
     fx.detent_strength = 0.04;
     fx.detent_spacing = 0.2;
     fx.detent_range = 0.9;
-    QSignalSpy pushed(&client, &DeviceClient::commandFinished);
-    client.pushTuning({p, fx});
-    QVERIFY(pushed.wait(kConnectMs));
+    QObject caller;
+    bool pushed = false;
+    client.pushTuning({p, fx}, {&caller, [&pushed](const CommandResult &) { pushed = true; }});
+    QTRY_VERIFY_WITH_TIMEOUT(pushed, kConnectMs);
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects &&
                                  client.deviceTuning().effects->detent_strength > 0,
                              kConnectMs);
