@@ -87,9 +87,9 @@ DeviceRunner::Wait DeviceRunner::wait(const std::function<bool()> &done, double 
     QObject::connect(&m_client, &DeviceClient::deviceInfoChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::deviceTuningChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::recordingChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::statsUpdated, &loop, check);
     m_wake = check; // a command's outcome, given to runCommand() alone
     const auto unwake = qScopeGuard([this] { m_wake = nullptr; });
-    QObject::connect(&m_client, &DeviceClient::statsUpdated, &loop, check);
 
     QTimer poll;
     QObject::connect(&poll, &QTimer::timeout, &loop, check);

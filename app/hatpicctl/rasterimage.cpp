@@ -16,12 +16,13 @@ namespace hatpic::cli {
 
 using namespace Qt::StringLiterals;
 
-bool canWritePng()
+QString pngUnavailable()
 {
 #ifdef HATPIC_HATPICCTL_PNG
-    return true;
+    return {};
 #else
-    return false;
+    return u"this hatpicctl was built without Qt's GUI and SVG libraries (HATPIC_BUILD_UI=OFF); "
+           u"write --svg and convert it"_s;
 #endif
 }
 
@@ -75,8 +76,7 @@ QByteArray svgToPng(const QByteArray &svg, double scale, QString *error)
 #else
     Q_UNUSED(svg);
     Q_UNUSED(scale);
-    *error = u"this hatpicctl was built without Qt's GUI and SVG libraries (HATPIC_BUILD_UI=OFF); "
-             u"write --svg and convert it"_s;
+    *error = pngUnavailable();
     return {};
 #endif
 }

@@ -12,16 +12,17 @@ class QCoreApplication;
 
 namespace hatpic::cli {
 
-//! Whether this hatpicctl was built with Qt's GUI and SVG libraries (HATPIC_BUILD_UI).
-bool canWritePng();
+//! Empty when this hatpicctl draws PNG (built with Qt's GUI and SVG libraries,
+//! HATPIC_BUILD_UI), else the sentence saying why not and what to do instead.
+QString pngUnavailable();
 
 //! The application object for these arguments: a QGuiApplication on the offscreen platform
-//! when they ask for a PNG (`--png`) and canWritePng(), else a QCoreApplication. Call it
-//! before any other thread starts (it may set QT_QPA_PLATFORM).
+//! when they ask for a PNG (`--png`) and pngUnavailable() is empty, else a QCoreApplication. Call
+//! it before any other thread starts (it may set QT_QPA_PLATFORM).
 std::unique_ptr<QCoreApplication> makeApplication(int &argc, char **argv);
 
 //! `svg` as PNG, `scale` times its own size; empty, with `*error` saying why, when it cannot be
-//! (an invalid SVG, no GUI application, a build without canWritePng()).
+//! (an invalid SVG, no GUI application, pngUnavailable()).
 QByteArray svgToPng(const QByteArray &svg, double scale, QString *error);
 
 } // namespace hatpic::cli

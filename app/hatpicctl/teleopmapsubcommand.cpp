@@ -243,9 +243,7 @@ public:
             return ExitBadUsage;
         }
         const bool force = parser.isSet(u"force"_s);
-        if (parser.isSet(u"png"_s) && !canWritePng()) {
-            QString why;
-            svgToPng({}, 1, &why);
+        if (const QString why = pngUnavailable(); parser.isSet(u"png"_s) && !why.isEmpty()) {
             printError(asSentence(u"--png: "_s + why));
             return ExitBadUsage;
         }

@@ -3,6 +3,7 @@
 #include "fieldcheck.h"
 #include "paramtable.h"
 #include "servo.h"
+#include "staticcurve.h"
 
 #include <limits>
 
@@ -140,7 +141,7 @@ EffectFigures deriveEffectFigures(const EffectParams &effects, const DeviceParam
     f.detentPassivityMargin = physicalDamping - f.detentPeakStiffness * period / 2.0;
     f.servoLimit = servoStiffnessLimit(device, servo::kPositionLoopHz);
 
-    const bool detents = effects.detent_strength > 0 && effects.detent_range > 0;
+    const bool detents = detentsActive(effects);
     const bool walls = effects.wall_stiffness > 0 && (effects.wall_min > -std::numbers::pi ||
                                                       effects.wall_max < std::numbers::pi);
     const auto add = [&f](bool broken, EffectWarning w) {

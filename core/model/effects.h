@@ -145,8 +145,8 @@ struct EffectFigures
     //! b − (A·2π/s)·h/2: the passivity check with the detents' peak stiffness [N·m·s/rad]
     double detentPassivityMargin = 0;
     double servoLimit = 0; //!< servoStiffnessLimit() at servo::kPositionLoopHz [N·m/rad]
-    //! The rules the block breaks, in this order; only for effects that are on (detents with
-    //! a strength and a range, walls with a stiffness and a bound inside ±π).
+    //! The rules the block breaks, in this order; only for effects that are on (detents:
+    //! detentsActive(); walls with a stiffness and a bound inside ±π).
     std::vector<EffectWarning> warnings;
 };
 

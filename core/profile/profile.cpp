@@ -230,15 +230,11 @@ ProfileReadResult parseProfile(const QByteArray &json)
     // The effects against the profile's tau_limit (host), the limit the detents may not exceed.
     const double tauLimit = profile.host.tau_limit;
     readDeviceBlock(
-        root, kEffectsKey, profile.effects,
-        [](const QJsonObject &o, const QString &prefix, EffectParams &e, QStringList &errs,
-           QStringList &warns) { return readEffectParams(o, prefix, e, errs, warns); },
+        root, kEffectsKey, profile.effects, readEffectParams,
         [tauLimit](const EffectParams &e) { return validate(e, tauLimit); }, result.errors,
         result.warnings);
     readDeviceBlock(
-        root, kPassivityKey, profile.passivity,
-        [](const QJsonObject &o, const QString &prefix, PassivityParams &p, QStringList &errs,
-           QStringList &warns) { return readPassivityParams(o, prefix, p, errs, warns); },
+        root, kPassivityKey, profile.passivity, readPassivityParams,
         [](const PassivityParams &p) { return validate(p); }, result.errors, result.warnings);
 
     if (result.errors.isEmpty())

@@ -4,6 +4,7 @@
 #include "editor/parameterspecs.h"
 #include "model/paramtable.h"
 #include "model/servo.h"
+#include "model/staticcurve.h"
 #include "plots/palette.h"
 
 #include <QGridLayout>
@@ -179,7 +180,7 @@ void EffectsSection::setFigures(const EffectParams &effects, const DeviceParams 
     const double b = servo::kViscousFriction;
     const double h = 1.0 / controlRate;
     const EffectFigures f = deriveEffectFigures(effects, device, b, h);
-    const bool detents = effects.detent_strength > 0 && effects.detent_range > 0;
+    const bool detents = detentsActive(effects);
     QStringList figures;
     figures << tr("detent peak stiffness A·2π/s = %1 N·m/rad")
                    .arg(detents ? num(f.detentPeakStiffness) : tr("— (off)"));
