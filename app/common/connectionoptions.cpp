@@ -1,6 +1,7 @@
 #include "common/connectionoptions.h"
 
 #include "model/params.h"
+#include "sim/simulatedjoystick.h"
 
 #include <QCommandLineParser>
 
@@ -130,6 +131,15 @@ std::optional<quint64> parseSeed(const QString &text, QString *error)
     return seed;
 }
 
+void linkSimulator(ConnectOptions &options, const SimulatedDevice::Config &config)
+{
+    if (options.port != QStringView(kSimPortName))
+        return;
+    auto joystick = std::make_shared<SimulatedJoystick>(config);
+    joystick->answerIn(options.protocol);
+    options.link = std::move(joystick);
+}
+
 bool readConnectionOptions(const QCommandLineParser &parser, ConnectOptions &options,
                            QString *error)
 {
@@ -148,17 +158,18 @@ bool readConnectionOptions(const QCommandLineParser &parser, ConnectOptions &opt
             return false;
         options.protocol = *protocol;
     }
+    SimulatedDevice::Config sim;
     if (isSet(ConnectionOption::Faults)) {
         const auto faults = parseFaults(value(ConnectionOption::Faults), error);
         if (!faults)
             return false;
-        options.sim.faults = *faults;
+        sim.faults = *faults;
     }
     if (isSet(ConnectionOption::Seed)) {
         const auto seed = parseSeed(value(ConnectionOption::Seed), error);
         if (!seed)
             return false;
-        options.sim.seed = *seed;
+        sim.seed = *seed;
     }
     if ((isSet(ConnectionOption::Faults) || isSet(ConnectionOption::Seed)) &&
         options.port != QStringView(kSimPortName)) {
@@ -166,6 +177,7 @@ bool readConnectionOptions(const QCommandLineParser &parser, ConnectOptions &opt
                                 "them with --port sim (hatpic-sim has its own).");
         return false;
     }
+    linkSimulator(options, sim);
     return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include "link/faultinjector.h"
 #include "session/sessiontypes.h"
+#include "sim/simulateddevice.h"
 
 #include <QCommandLineOption>
 #include <QString>
@@ -42,9 +43,15 @@ std::optional<ProtocolChoice> parseProtocol(const QString &text, QString *error,
 std::optional<FaultSpec> parseFaults(const QString &text, QString *error);
 std::optional<quint64> parseSeed(const QString &text, QString *error);
 
-//! Reads the options that `parser` has set into `options` (port, baud, protocol, the simulated
-//! link's faults and seed), and refuses --faults or --seed without --port sim. False with
-//! `*error` set to one sentence. A missing --port is the caller's to judge.
+//! For the port "sim", makes the program's link: an in-process SimulatedJoystick
+//! (sim/simulatedjoystick.h) of `config`, speaking the protocol options.protocol chose, as
+//! options.link. Any other port is left to the session, which opens it as a serial port.
+void linkSimulator(ConnectOptions &options, const SimulatedDevice::Config &config = {});
+
+//! Reads the options that `parser` has set into `options` (port, baud, protocol) and makes the
+//! link of --port sim (linkSimulator() with --faults and --seed). Refuses --faults or --seed
+//! without --port sim. False with `*error` set to one sentence. A missing --port is the
+//! caller's to judge.
 bool readConnectionOptions(const QCommandLineParser &parser, ConnectOptions &options,
                            QString *error);
 

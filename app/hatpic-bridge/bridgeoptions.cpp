@@ -319,6 +319,7 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
         *error = QStringLiteral("--port is needed: a device path, a pseudo-terminal, or sim.");
         return std::nullopt;
     }
+    linkSimulator(options.connect);
     if (const auto problems = validate(options.settings); !problems.empty()) {
         *error = QString::fromStdString(problems.front()) + u'.';
         return std::nullopt;

@@ -24,9 +24,10 @@ namespace {
 constexpr int kPollMs = 50;
 constexpr int kResultAfterLossMs = 500; //!< wait for a command's result once the link is lost
 
-QString portText(const QString &port)
+QString portText(const ConnectOptions &options)
 {
-    return port == QStringView(kSimPortName) ? QStringLiteral("the simulated joystick") : port;
+    return options.link && options.link->simulated() ? QStringLiteral("the simulated joystick")
+                                                     : options.port;
 }
 
 QString secondsText(double seconds)
@@ -111,7 +112,7 @@ DeviceRunner::Wait DeviceRunner::wait(const std::function<bool()> &done, double 
 
 int DeviceRunner::reportLoss() const
 {
-    const QString port = portText(m_options.connect.port);
+    const QString port = portText(m_options.connect);
     if (!m_lostDetail.trimmed().isEmpty())
         printError(asSentence(m_lostDetail));
     else
@@ -131,7 +132,7 @@ int DeviceRunner::connect()
     case Wait::Lost:
         return reportLoss();
     case Wait::TimedOut:
-        printError(u"No HATPIC answered on " + portText(m_options.connect.port) + u" within " +
+        printError(u"No HATPIC answered on " + portText(m_options.connect) + u" within " +
                    secondsText(m_options.timeoutS) + u'.');
         return ExitNoDevice;
     }
@@ -150,16 +151,16 @@ int DeviceRunner::connect()
         // Silent from the start (the session gives up after 2 s without a byte): say what
         // was missing, as the timeout below does, not that a connection was lost.
         if (!heard) {
-            printError(u"No legacy HATPIC frame arrived on " + portText(m_options.connect.port) +
-                       u": " + asSentence(m_lostDetail));
+            printError(u"No legacy HATPIC frame arrived on " + portText(m_options.connect) + u": " +
+                       asSentence(m_lostDetail));
             return ExitNoDevice;
         }
         return reportLoss();
     case Wait::TimedOut:
         break;
     }
-    printError(u"No legacy HATPIC frame arrived on " + portText(m_options.connect.port) +
-               u" within " + secondsText(m_options.timeoutS) + u'.');
+    printError(u"No legacy HATPIC frame arrived on " + portText(m_options.connect) + u" within " +
+               secondsText(m_options.timeoutS) + u'.');
     return ExitNoDevice;
 }
 

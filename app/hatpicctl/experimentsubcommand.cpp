@@ -10,6 +10,7 @@
 #include "experiment/experimentcsv.h"
 #include "experiment/experimentrunner.h"
 #include "profile/jsonfile.h"
+#include "sim/simulatedjoystick.h"
 #include "telemetry/numbertext.h"
 
 #include <QCommandLineOption>
@@ -237,7 +238,10 @@ protected:
         if (m_cycles)
             plan.cycles = *m_cycles;
 
-        ExperimentRunner experiment(client);
+        // On --port sim the runner holds the simulated hand idle (the link is ours).
+        const auto simulator =
+            std::dynamic_pointer_cast<SimulatedJoystick>(runner.options().connect.link);
+        ExperimentRunner experiment(client, simulator.get());
         std::optional<ExperimentResult> result;
         QObject::connect(&experiment, &ExperimentRunner::finished,
                          [&](const ExperimentResult &r) { result = r; });

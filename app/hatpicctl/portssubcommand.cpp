@@ -4,7 +4,7 @@
 #include "subcommand.h"
 #include "subcommands.h"
 
-#include "session/sessiontypes.h"
+#include "sim/simulatedjoystick.h"
 
 #include <QCommandLineParser>
 #include <QSerialPortInfo>

@@ -8,8 +8,9 @@
 
 namespace hatpic {
 
-ExperimentRunner::ExperimentRunner(DeviceClient &client, QObject *parent)
-    : QObject(parent), m_client(&client)
+ExperimentRunner::ExperimentRunner(DeviceClient &client, SimulatedJoystick *simulator,
+                                   QObject *parent)
+    : QObject(parent), m_client(&client), m_simulator(simulator)
 {
     qRegisterMetaType<ExperimentResult>();
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -39,9 +40,10 @@ ExperimentRunner::~ExperimentRunner()
     }
 }
 
-RunHand ExperimentRunner::handFor(const DeviceClient &client)
+RunHand ExperimentRunner::handFor() const
 {
-    return client.deviceInfo().simulated ? RunHand::SimulatedIdle : RunHand::User;
+    return m_client && m_simulator && m_client->deviceInfo().simulated ? RunHand::SimulatedIdle
+                                                                       : RunHand::User;
 }
 
 QString ExperimentRunner::refusal(const DeviceClient &client)
@@ -80,12 +82,12 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
     m_deviceLog.clear();
     m_deviceClock = ClockMap();
     m_lastProgress = -1;
-    m_hand = handFor(*m_client);
-    m_handBefore = m_client->simulatedHand();
+    m_hand = handFor();
+    m_handBefore = m_hand == RunHand::SimulatedIdle ? m_simulator->hand() : HandInput{};
     m_client->setFeedback(m_plan.tauExt(0));
     if (m_hand == RunHand::SimulatedIdle && m_handBefore.kind != HandInput::Kind::Idle) {
         // The hand lets go; the knob comes to rest at the plan's first level, then the plan.
-        m_client->setSimulatedHand(HandInput{});
+        m_simulator->setHand(HandInput{});
         m_phase = Phase::Releasing;
         m_releaseTimer.start();
         return {};
@@ -105,8 +107,8 @@ void ExperimentRunner::beginPlan()
 
 void ExperimentRunner::restoreHand()
 {
-    if (m_client && m_hand == RunHand::SimulatedIdle && m_client->simulatedHand() != m_handBefore)
-        m_client->setSimulatedHand(m_handBefore);
+    if (m_simulator && m_hand == RunHand::SimulatedIdle && m_simulator->hand() != m_handBefore)
+        m_simulator->setHand(m_handBefore);
 }
 
 void ExperimentRunner::cancel()

@@ -5,16 +5,18 @@
 // A device fault fails the run (docs/experiments.md § Faults): a sample whose telemetry says
 // the torque is off (v2::kFlagTorqueOff) ends it at once, quoting what the device said in LOG
 // frames during the run.
-// On the in-process simulator the simulated hand is the only other torque on the knob: it goes
-// idle for the run (the knob given kReleaseMs to come to rest first when it was pushing) and
-// is given back, as it was, whenever the run ends. A device on a port has a person's hand (or
-// hatpic-sim's --hand), which no program can lift: the result says which it was (RunHand).
+// On the in-process simulator (given to the runner by the program that made it) the simulated
+// hand is the only other torque on the knob: it goes idle for the run (the knob given kReleaseMs to
+// come to rest first when it was pushing) and is given back, as it was, whenever the run ends. A
+// device on a port has a person's hand (or hatpic-sim's --hand), which no program can lift: the
+// result says which it was (RunHand).
 //
 // Lives on the client's thread; every method returns at once.
 #pragma once
 
 #include "experiment/experimentresult.h"
 #include "session/deviceclient.h"
+#include "sim/simulatedjoystick.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -37,13 +39,16 @@ public:
     //! Time for the knob to come to rest once the simulated hand let go, before the plan [ms].
     static constexpr int kReleaseMs = 1000;
 
-    explicit ExperimentRunner(DeviceClient &client, QObject *parent = nullptr);
+    //! `simulator`: the simulated joystick the client is connected through, if it is; its hand
+    //! is idle for a run.
+    explicit ExperimentRunner(DeviceClient &client, SimulatedJoystick *simulator = nullptr,
+                              QObject *parent = nullptr);
     ~ExperimentRunner() override; //!< a running experiment is cancelled: τ_ext = 0
 
     //! Why no experiment can start on the client's device now; empty when one can.
     static QString refusal(const DeviceClient &client);
-    //! What will hold the knob besides τ_ext during a run on `client`'s device.
-    static RunHand handFor(const DeviceClient &client);
+    //! What will hold the knob besides τ_ext during a run on the client's device now.
+    RunHand handFor() const;
 
     //! Starts `plan`; returns why not (refusal(), the plan's check(), already running), or
     //! empty when it started.
@@ -71,6 +76,7 @@ private:
     double elapsed() const; //!< plan time [s]
 
     QPointer<DeviceClient> m_client; //!< null once the client is gone
+    QPointer<SimulatedJoystick> m_simulator;
     QTimer m_timer;
     QTimer m_drainTimer;
     QTimer m_releaseTimer;

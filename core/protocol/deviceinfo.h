@@ -7,10 +7,22 @@
 #include <QString>
 #include <QtGlobal>
 
+#include <optional>
+
 namespace hatpic {
 
 enum class WireProtocol { V2, Legacy };
 QString wireProtocolName(WireProtocol protocol); //!< "v2" / "legacy"
+
+//! The protocol a connection asks for: found by detection (Auto), or chosen.
+enum class ProtocolChoice { Auto, V2, Legacy };
+//! The protocol chosen; none for Auto.
+constexpr std::optional<WireProtocol> chosenProtocol(ProtocolChoice choice)
+{
+    if (choice == ProtocolChoice::Auto)
+        return std::nullopt;
+    return choice == ProtocolChoice::Legacy ? WireProtocol::Legacy : WireProtocol::V2;
+}
 
 //! The link's baud rate when none is asked for: protocol.md § 1 (v2) and the published
 //! firmware's Serial.begin (legacy). The one definition every program and the simulator read.

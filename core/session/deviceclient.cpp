@@ -146,7 +146,7 @@ void DeviceClient::finishCommand(quint64 id, const CommandResult &result)
 void DeviceClient::connectDevice(const ConnectOptions &options)
 {
     m_tuning = {};
-    m_hand = options.sim.hand;
+    m_options = options;
     onSession<&DeviceSession::connectDevice>(options);
 }
 
@@ -216,12 +216,6 @@ void DeviceClient::setHostParams(const HostParams &host)
 void DeviceClient::resetReference()
 {
     onSession<&DeviceSession::resetReference>();
-}
-
-void DeviceClient::setSimulatedHand(const HandInput &hand)
-{
-    m_hand = hand;
-    onSession<&DeviceSession::setSimulatedHand>(hand);
 }
 
 void DeviceClient::startRecording(const QString &csvPath, const QString &source)

@@ -68,12 +68,8 @@ public:
     //! feedbackRateHz. Callable from any thread (the robot path calls it from the
     //! middleware's).
     void setFeedback(double tauExt);
-    void setHostParams(const HostParams &host);   //!< reference model settings
-    void resetReference();                        //!< p_ref := 0
-    void setSimulatedHand(const HandInput &hand); //!< only for the simulated device
-    //! The simulated hand last asked for: at connectDevice() (its options' sim.hand), then by
-    //! setSimulatedHand(). Meaningful only while the device is the in-process simulator.
-    HandInput simulatedHand() const { return m_hand; }
+    void setHostParams(const HostParams &host); //!< reference model settings
+    void resetReference();                      //!< p_ref := 0
 
     //! `listener` gets every sample on the session thread the moment it is decoded, before
     //! any batch (samplelisteners.h): the robot path. Callable from any thread.
@@ -97,6 +93,8 @@ public:
     //! The device's tuning as read on this connection: each part once the device has told it
     //! (effects: a device with the capability).
     DeviceTuning deviceTuning() const { return m_tuning; }
+    //! The options of the current or last connectDevice(): its link, e.g. the simulated joystick.
+    const ConnectOptions &options() const { return m_options; }
     LinkStats stats() const { return m_stats; }
     RecordingStatus recordingStatus() const { return m_recording; }
     //! Sample batches never delivered because kMaxPendingBatches were already waiting (the
@@ -138,9 +136,9 @@ private:
     SessionState m_state = SessionState::Disconnected;
     DeviceInfo m_info;
     DeviceTuning m_tuning;
+    ConnectOptions m_options;
     LinkStats m_stats;
     RecordingStatus m_recording;
-    HandInput m_hand;
     // Shared with the session thread: only these atomics are touched from both threads.
     std::atomic<int> m_pendingBatches{0};
     std::atomic<int> m_pendingStats{0};

@@ -3,7 +3,6 @@
 #include "link/seriallink.h"
 #include "session/legacydriver.h"
 #include "session/v2driver.h"
-#include "sim/simlink.h"
 
 #include <QLoggingCategory>
 
@@ -15,18 +14,6 @@ Q_LOGGING_CATEGORY(lcSession, "hatpic.device.session", QtWarningMsg)
 namespace hatpic {
 
 namespace {
-
-//! The built-in simulator speaks the protocol asked for ("--protocol legacy" on "sim": the
-//! published firmware); Auto leaves it as configured (v2 unless the caller chose otherwise).
-SimulatedDevice::Config simulatorConfig(const ConnectOptions &options)
-{
-    SimulatedDevice::Config sim = options.sim;
-    if (options.protocol == ProtocolChoice::Legacy)
-        sim.protocol = WireProtocol::Legacy;
-    else if (options.protocol == ProtocolChoice::V2)
-        sim.protocol = WireProtocol::V2;
-    return sim;
-}
 
 using Status = CommandResult::Status;
 using Reason = CommandResult::Reason;
@@ -131,10 +118,9 @@ StateDetail DeviceSession::detail(StateDetail::Kind kind) const
 void DeviceSession::openLink()
 {
     closeLink();
-    if (m_options.port == QStringView(kSimPortName))
-        m_link = new SimLink(simulatorConfig(m_options), this);
-    else
-        m_link = new SerialLink(m_options.port, requestedBaud(m_options), this);
+    const qint32 baud = requestedBaud(m_options);
+    m_link = m_options.link ? m_options.link->makeLink(baud, this)
+                            : new SerialLink(m_options.port, baud, this);
     connect(m_link, &ByteLink::bytesReceived, this, &DeviceSession::onBytes);
     connect(m_link, &ByteLink::failed, this, &DeviceSession::linkLost);
 
@@ -486,18 +472,6 @@ void DeviceSession::setHostParams(const HostParams &host)
 void DeviceSession::resetReference()
 {
     m_samples.resetReference();
-}
-
-void DeviceSession::setSimulatedHand(const HandInput &hand)
-{
-    m_options.sim.hand = hand;
-    if (SimLink *sim = simLink())
-        sim->setHand(hand);
-}
-
-SimLink *DeviceSession::simLink() const
-{
-    return qobject_cast<SimLink *>(m_link);
 }
 
 // ---------------------------------------------------------------- recording

@@ -25,7 +25,6 @@
 namespace hatpic {
 
 class ByteLink;
-class SimLink;
 
 class DeviceSession : public QObject
 {
@@ -61,13 +60,14 @@ public:
     void setFeedback(double tauExt);
     void setHostParams(const HostParams &host);
     void resetReference();
-    void setSimulatedHand(const HandInput &hand);
 
     void startRecording(const QString &csvPath, const QString &source,
                         const RecordingPlan &plan = {});
     void stopRecording();
 
     SessionState state() const { return m_state; }
+    //! The options of the current or last connection (connectDevice()).
+    const ConnectOptions &options() const { return m_options; }
     DeviceInfo deviceInfo() const { return m_info; }
     LinkStats stats() const;
     //! Each sample as it is decoded, on this thread (samplelisteners.h); callable from any
@@ -78,8 +78,6 @@ public:
     const SamplePipeline &samples() const { return m_samples; }
 
     // ---- test seams (session thread only) ----
-    //! The in-process simulator's link while connected to "sim", else null.
-    SimLink *simLink() const;
     //! Stops (or resumes) the feedback stream, e.g. to see the device's watchdog act.
     void setFeedbackPaused(bool paused) { m_feedback.setPaused(paused); }
     //! Off: pushTuning() and vibrate() send without host-side validation, to

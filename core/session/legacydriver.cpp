@@ -17,7 +17,7 @@ LegacyDriver::LegacyDriver(DriverLinks links, const ConnectOptions &options, qin
     m_info.deviceId = 0;
     m_info.tauLimit = options.legacy.tauLimit;
     m_info.firmware = QStringLiteral("published firmware (legacy)");
-    m_info.simulated = options.port == QStringView(kSimPortName);
+    m_info.simulated = options.link && options.link->simulated();
 }
 
 void LegacyDriver::start()

@@ -31,6 +31,7 @@ StateDetail stateDetail(StateDetail::Kind kind, const ConnectOptions &options, c
     StateDetail d;
     d.kind = kind;
     d.port = options.port;
+    d.simulated = options.link && options.link->simulated();
     d.baud = link ? link->baud() : requestedBaud(options);
     return d;
 }

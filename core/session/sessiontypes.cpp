@@ -167,7 +167,6 @@ void registerSessionMetaTypes()
 {
     qRegisterMetaType<hatpic::Sample>();
     qRegisterMetaType<hatpic::SampleBatch>();
-    qRegisterMetaType<hatpic::HandInput>();
     qRegisterMetaType<hatpic::ConnectOptions>();
     qRegisterMetaType<hatpic::SessionState>();
     qRegisterMetaType<hatpic::StateDetail>();

@@ -1,6 +1,7 @@
 // Value types that cross the session thread boundary.
 #pragma once
 
+#include "link/linksource.h"
 #include "model/devicetuning.h"
 #include "model/effects.h"
 #include "model/params.h"
@@ -8,8 +9,6 @@
 #include "protocol/legacy.h"
 #include "protocol/messages.h"
 #include "protocol/v2codec.h"
-#include "sim/handinput.h"
-#include "sim/simulateddevice.h"
 #include "telemetry/recording.h"
 
 #include <QMetaType>
@@ -20,23 +19,22 @@
 
 namespace hatpic {
 
-//! The port name that selects the in-process simulated joystick.
-inline constexpr char16_t kSimPortName[] = u"sim";
-
-enum class ProtocolChoice { Auto, V2, Legacy };
-
 struct ConnectOptions
 {
-    QString port;    //!< device path ("/dev/ttyUSB0", a pty) or "sim"
+    //! The device's name as the user gave it: its path ("/dev/ttyUSB0", a pty) or, with a `link`,
+    //! that link's ("sim"). The session words it and records it; it reads no meaning into it.
+    QString port;
     qint32 baud = 0; //!< 0 = default (921600 for v2/auto, 115200 for legacy)
     ProtocolChoice protocol = ProtocolChoice::Auto;
     quint16 streamRateHz = 1000; //!< requested telemetry rate (v2); the device may clamp it
     //! Feedback frames per second at most: a new τ_ext goes out at once within this cap, and
     //! the last one again every FeedbackStream::kKeepAliveMs; ≤ 0 = none [Hz]
     double feedbackRateHz = 1000;
-    bool autoReconnect = true;   //!< reopen the same port after it vanished
-    legacy::Conversion legacy;   //!< tick and load-unit conversion for legacy devices
-    SimulatedDevice::Config sim; //!< used when port == "sim"
+    bool autoReconnect = true; //!< reopen the same port after it vanished
+    legacy::Conversion legacy; //!< tick and load-unit conversion for legacy devices
+    //! What the session connects through, made by the program (the in-process simulator, …);
+    //! none: the serial port `port`.
+    LinkSourcePtr link;
 };
 
 //! A command of the v2 protocol the session sends, by its wire type: HELLO (only while
@@ -85,7 +83,8 @@ struct StateDetail
         Silent,          //!< lost: no byte for `silenceMs`
     };
     Kind kind = Kind::None;
-    QString port;               //!< as given; kSimPortName for the simulated joystick
+    QString port;               //!< as given (ConnectOptions::port)
+    bool simulated = false;     //!< the device is a simulator (LinkSource::simulated)
     qint32 baud = 0;            //!< the link's rate at the time [bit/s]
     QString error;              //!< the system's, the link's or the check's own text
     QString firmware;           //!< ConnectedV2: as the device reports it (printable)
@@ -99,7 +98,6 @@ struct StateDetail
     int intervalMs = 0;         //!< NoHelloReply: between them [ms]
     int silenceMs = 0;          //!< Silent [ms]
 
-    bool simulated() const { return port == QStringView(kSimPortName); }
     friend bool operator==(const StateDetail &, const StateDetail &) = default;
 };
 

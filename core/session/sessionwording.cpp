@@ -18,7 +18,7 @@ QString joined(const QStringList &problems)
 
 QString SessionWording::port(const StateDetail &detail)
 {
-    if (detail.simulated())
+    if (detail.simulated)
         return tr("the simulated joystick");
     return tr("%1 at %2 baud").arg(detail.port, number(detail.baud));
 }

@@ -26,7 +26,7 @@ V2Driver::V2Driver(DriverLinks links, CommandQueue &queue, const v2::HelloReply 
     m_info.deviceId = reply.deviceId;
     m_info.tauLimit = reply.tauLimit;
     m_info.firmware = printableDeviceText(v2::toQString(reply.firmware));
-    m_info.simulated = options.port == QStringView(kSimPortName);
+    m_info.simulated = options.link && options.link->simulated();
     m_info.capabilities = reply.capabilities;
     if (reply.protocolVersion != v2::kProtocolVersion) {
         qCWarning(lcV2) << "device reports protocol version" << reply.protocolVersion

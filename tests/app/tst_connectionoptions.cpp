@@ -1,6 +1,7 @@
 // The connection options every program shares (app/common/connectionoptions.h): their bounds,
 // their sentences, and the rule that --faults and --seed need --port sim.
 #include "common/connectionoptions.h"
+#include "simulatoroptions.h"
 
 #include <QCommandLineParser>
 #include <QTest>
@@ -161,8 +162,16 @@ void TestConnectionOptions::readsAParser()
         QCOMPARE(options.baud, 115200);
         QCOMPARE(options.protocol, ProtocolChoice::Legacy);
     }
-    if (error.isEmpty() && arguments.contains(u"--seed"_s))
-        QCOMPARE(options.sim.seed, quint64(7));
+    if (!error.isEmpty())
+        return;
+    // "sim" is the program's own simulated joystick, made here; any other port is the session's
+    // serial port.
+    QCOMPARE(options.link != nullptr, options.port == u"sim"_s);
+    if (options.link) {
+        QVERIFY(options.link->simulated());
+        if (arguments.contains(u"--seed"_s))
+            QCOMPARE(test::joystickOf(options)->config().seed, quint64(7));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestConnectionOptions)

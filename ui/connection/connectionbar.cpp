@@ -1,4 +1,5 @@
 #include "connection/connectionbar.h"
+#include "sim/simulatedjoystick.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

@@ -51,9 +51,10 @@ QString cell(double value, int decimals)
 
 } // namespace
 
-ExperimentsPanel::ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidget *parent)
+ExperimentsPanel::ExperimentsPanel(DeviceClient *client, SimulatedJoystick *simulator,
+                                   PlotPanel *plots, QWidget *parent)
     : QWidget(parent), m_client(client), m_mainPlots(plots),
-      m_runner(new ExperimentRunner(*client, this))
+      m_runner(new ExperimentRunner(*client, simulator, this))
 {
     buildForm();
     connect(m_runner, &ExperimentRunner::progress, this,
@@ -80,7 +81,7 @@ ExperimentsPanel::ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidg
 
 void ExperimentsPanel::showReadyHint()
 {
-    const QString hand = ExperimentRunner::handFor(*m_client) == RunHand::SimulatedIdle
+    const QString hand = m_runner->handFor() == RunHand::SimulatedIdle
                              ? tr("The simulated hand is idle while an experiment runs.")
                              : tr("Let go of the knob while an experiment runs.");
     m_status->setText(

@@ -29,6 +29,7 @@ class DeviceClient;
 class ExperimentPlots;
 class ExperimentRunner;
 class PlotPanel;
+class SimulatedJoystick;
 
 class ExperimentsPanel : public QWidget
 {
@@ -37,8 +38,10 @@ public:
     //! Narrowest the plots get beside the figures; narrower, the figures are one of their tabs.
     static constexpr int kMinPlotWidth = 320;
 
-    //! `plots` (may be null) gives the visible window for the spectrum button.
-    ExperimentsPanel(DeviceClient *client, PlotPanel *plots, QWidget *parent = nullptr);
+    //! `simulator`: the simulated joystick the client connects through, if any (its hand is idle
+    //! for a run); `plots` (may be null) gives the visible window for the spectrum button.
+    ExperimentsPanel(DeviceClient *client, SimulatedJoystick *simulator, PlotPanel *plots,
+                     QWidget *parent = nullptr);
     ~ExperimentsPanel() override;
 
     //! The plan the form describes.

@@ -4,6 +4,7 @@
 #include "experiments/experimentspanel.h"
 #include "experiments/stabilitymapview.h"
 #include "simulator/simulatorpanel.h"
+#include "window/windowdocks.h"
 
 #include <QDockWidget>
 #include <QMainWindow>
@@ -11,10 +12,11 @@
 
 namespace hatpic {
 
-QDockWidget *addExperimentsDock(QMainWindow *window, DeviceClient *client, PlotPanel *plots,
-                                SimulatorPanel *hand, ParameterEditor *editor, QDockWidget *tabWith)
+QDockWidget *addExperimentsDock(QMainWindow *window, const WindowDockParts &parts,
+                                QDockWidget *tabWith)
 {
-    auto *panel = new ExperimentsPanel(client, plots, window);
+    auto *panel = new ExperimentsPanel(parts.client, parts.simulator, parts.plots, window);
+    ParameterEditor *editor = parts.editor;
     panel->setObjectName(QStringLiteral("experimentsPanel"));
     // The stability map of the teleoperation loop for the tuning being edited, beside the
     // measurements (docs/experiments.md § Stability map).
@@ -43,7 +45,7 @@ QDockWidget *addExperimentsDock(QMainWindow *window, DeviceClient *client, PlotP
     dock->hide();
     // The simulated hand is idle for the run (ExperimentRunner): its panel says so and takes
     // no input until the run ends and the hand is back.
-    QObject::connect(panel, &ExperimentsPanel::runningChanged, hand,
+    QObject::connect(panel, &ExperimentsPanel::runningChanged, parts.simPanel,
                      &SimulatorPanel::setHeldByExperiment);
     return dock;
 }

@@ -8,15 +8,12 @@ class QMainWindow;
 
 namespace hatpic {
 
-class DeviceClient;
-class ParameterEditor;
-class PlotPanel;
-class SimulatorPanel;
+struct WindowDockParts;
 
-//! Adds the dock "experimentsDock" (its tabs: the panel "experimentsPanel" and the stability
-//! map "stabilityMap" of `editor`'s tuning), hidden and tabbed behind `tabWith`.
-QDockWidget *addExperimentsDock(QMainWindow *window, DeviceClient *client, PlotPanel *plots,
-                                SimulatorPanel *hand, ParameterEditor *editor,
+//! Adds the dock "experimentsDock" (its tabs: the panel "experimentsPanel" on the parts' client
+//! and simulator, and the stability map "stabilityMap" of their editor's tuning), hidden and
+//! tabbed behind `tabWith`.
+QDockWidget *addExperimentsDock(QMainWindow *window, const WindowDockParts &parts,
                                 QDockWidget *tabWith);
 
 } // namespace hatpic

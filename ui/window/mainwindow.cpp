@@ -17,6 +17,7 @@
 #include "recording/recordingplandialog.h"
 #include "recording/replaybar.h"
 #include "session/sessionwording.h"
+#include "sim/simulatedjoystick.h"
 #include "simulator/simulatorpanel.h"
 #include "stiffness/stiffnessview.h"
 #include "window/focusreveal.h"
@@ -77,6 +78,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
                                     .editor = m_editor,
                                     .stiffness = m_stiffness,
                                     .simPanel = m_simPanel,
+                                    .simulator = m_simulator.get(),
                                     .view = m_menus->viewMenu()});
     connectParts();
     setWindowTitle(m_profiles->windowTitle());
@@ -123,6 +125,7 @@ void MainWindow::createParts()
     m_stiffness = named(new StiffnessView(this), "stiffnessView");
     m_profiles = named(new ProfileController(m_editor, this, this), "profileController");
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
+    m_simulator = std::make_shared<SimulatedJoystick>();
     for (QWidget *readout :
          {static_cast<QWidget *>(m_simPanel->statusLabel()), static_cast<QWidget *>(m_stats)})
         m_statusLine->readouts()->layout()->addWidget(readout);
@@ -217,7 +220,8 @@ void MainWindow::connectParts()
             &QAction::setChecked);
     connect(m_profiles, &ProfileController::titleChanged, this, &QWidget::setWindowTitle);
     connect(m_profiles, &ProfileController::statusMessage, this, &MainWindow::showStatus);
-    connect(m_simPanel, &SimulatorPanel::handChanged, m_client, &DeviceClient::setSimulatedHand);
+    connect(m_simPanel, &SimulatorPanel::handChanged, m_simulator.get(),
+            &SimulatedJoystick::setHand);
 
     // The robot loop's state at a glance, whichever panel is in front (issue 27).
     if (auto *bridge = qobject_cast<BridgePanel *>(m_docks.bridge->widget())) {
@@ -247,7 +251,7 @@ void MainWindow::showStatus(const QString &message)
 void MainWindow::setSimulatedHand(const HandInput &hand)
 {
     m_simPanel->chooseHand(hand);
-    m_client->setSimulatedHand(hand);
+    m_simulator->setHand(hand);
 }
 
 bool MainWindow::startBridge(int rosVersion)
@@ -261,8 +265,14 @@ bool MainWindow::startBridge(int rosVersion)
 void MainWindow::connectTo(const ConnectOptions &options)
 {
     ConnectOptions opts = options;
-    if (opts.port == kSimPort)
-        opts.sim.hand = m_simPanel->handToStartWith(opts.sim.hand);
+    if (opts.port == kSimPort) {
+        // The window's simulator, configured as a command line's (its faults and seed) asked.
+        if (const auto given = std::dynamic_pointer_cast<SimulatedJoystick>(opts.link))
+            m_simulator->setConfig(given->config());
+        m_simulator->answerIn(opts.protocol);
+        m_simulator->setHand(m_simPanel->handToStartWith(m_simulator->hand()));
+        opts.link = m_simulator;
+    }
     m_paramLink->prepare(opts);
     m_port = opts.port;
     m_connection->setOptions(opts.port, opts.baud, opts.protocol);

@@ -8,9 +8,12 @@
 #pragma once
 
 #include "session/deviceclient.h"
+#include "sim/handinput.h"
 #include "window/windowdocks.h"
 
 #include <QMainWindow>
+
+#include <memory>
 
 class QAction;
 
@@ -29,6 +32,7 @@ class ProfileController;
 class RecordingControls;
 class ReplayBar;
 class ThemeController;
+class SimulatedJoystick;
 class SimulatorPanel;
 class StatusLine;
 class StiffnessView;
@@ -114,6 +118,9 @@ private:
     StiffnessView *m_stiffness = nullptr;
     ProfileController *m_profiles = nullptr;
     SimulatorPanel *m_simPanel = nullptr;
+    //! The simulated joystick the window connects through for the port "sim"; its hand is the
+    //! simulator panel's.
+    std::shared_ptr<SimulatedJoystick> m_simulator;
 
     WindowActions *m_actions = nullptr;
     WindowMenus *m_menus = nullptr;

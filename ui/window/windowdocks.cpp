@@ -95,8 +95,7 @@ WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts)
     docks.bridge = addBridgeDock(window, parts.client, parts.profiles, parts.editor, docks.log);
     docks.bridge->hide();
     // Tuning experiments (docs/experiments.md): View → Experiments, beside the device log.
-    QDockWidget *experiments = addExperimentsDock(window, parts.client, parts.plots, parts.simPanel,
-                                                  parts.editor, docks.log);
+    QDockWidget *experiments = addExperimentsDock(window, parts, docks.log);
     docks.editor = parts.editor;
     resizeDocksToDefault(window, docks);
 

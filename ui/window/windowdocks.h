@@ -19,6 +19,7 @@ class ParameterEditor;
 class PlotActions;
 class PlotPanel;
 class ProfileController;
+class SimulatedJoystick;
 class SimulatorPanel;
 class StiffnessView;
 
@@ -32,6 +33,7 @@ struct WindowDockParts
     ParameterEditor *editor = nullptr;
     StiffnessView *stiffness = nullptr;
     SimulatorPanel *simPanel = nullptr;
+    SimulatedJoystick *simulator = nullptr; //!< the one the window connects through for "sim"
     QMenu *view = nullptr;
 };
 

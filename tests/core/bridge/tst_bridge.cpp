@@ -8,6 +8,7 @@
 #include "bridge/bridge.h"
 #include "ros/node.h"
 #include "session/deviceclient.h"
+#include "simulatoroptions.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>
@@ -587,14 +588,13 @@ private:
     //! connected.
     bool connectKnob(DeviceClient &client, double angle, double &tauExt, double *theta = nullptr)
     {
-        ConnectOptions options;
-        options.port = QString::fromUtf16(kSimPortName);
-        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, angle};
+        SimulatedDevice::Config config;
+        config.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, angle};
         // These tests measure the bridge and its observer against a plain knob: the device's
         // passivity controller (tst_passivity, tst_teleoploop) off. On, the deficit the ±limit
         // pushes of wrenchBecomesTauExt leave in its tank damps robotSideMeasured's push, which
         // then creeps on past the observer's approach window.
-        options.sim.passivity = PassivityParams::off();
+        config.passivity = PassivityParams::off();
         connect(&client, &DeviceClient::samplesReady, this, [&tauExt, theta](const SampleBatch &b) {
             if (b.isEmpty())
                 return;
@@ -602,7 +602,7 @@ private:
             if (theta)
                 *theta = b.last().theta;
         });
-        client.connectDevice(options);
+        client.connectDevice(test::simulatorOptions(config));
         QElapsedTimer waited;
         waited.start();
         while (client.state() != SessionState::Connected && waited.elapsed() < 10000)

@@ -6,6 +6,7 @@
 
 #include "bridge/bridge.h"
 #include "session/deviceclient.h"
+#include "simulatoroptions.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>
@@ -42,14 +43,13 @@ private Q_SLOTS:
     {
         registerSessionMetaTypes();
         QCOMPARE(m_core.start(), QString());
-        ConnectOptions options;
-        options.port = QString::fromUtf16(kSimPortName);
-        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, kHeldAngle};
+        SimulatedDevice::Config config;
+        config.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, kHeldAngle};
         connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
             if (!batch.isEmpty())
                 m_deviceTauExt = batch.last().tau_ext;
         });
-        m_client.connectDevice(options);
+        m_client.connectDevice(test::simulatorOptions(config));
         QTRY_COMPARE_WITH_TIMEOUT(m_client.state(), SessionState::Connected, 10000);
         m_client.setHostParams(HostParams{});
 

@@ -5,6 +5,7 @@
 #include "experiment/experimentrunner.h"
 #include "session/deviceclient.h"
 #include "sim/simulatorhost.h"
+#include "simulatoroptions.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -165,11 +166,10 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
     QFETCH(QString, hand);
     const HandInput input = *HandInput::parse(hand);
     DeviceClient client;
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
-    o.protocol = ProtocolChoice::V2;
-    o.sim = deviceConfig();
-    o.sim.hand = input;
+    SimulatedDevice::Config config = deviceConfig();
+    config.hand = input;
+    const ConnectOptions o = test::simulatorOptions(config, ProtocolChoice::V2);
+    SimulatedJoystick &joystick = *test::joystickOf(o);
     QList<Sample> samples;
     QObject::connect(&client, &DeviceClient::samplesReady,
                      [&samples](const SampleBatch &b) { samples.append(b); });
@@ -186,8 +186,9 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
     QTRY_VERIFY_WITH_TIMEOUT(
         std::abs(client.deviceTuning().params.value().D_adm - params.D_adm) < 1e-9, kConnectMs);
 
-    ExperimentRunner runner(client);
-    QCOMPARE(ExperimentRunner::handFor(client), RunHand::SimulatedIdle);
+    QCOMPARE(ExperimentRunner(client).handFor(), RunHand::User); // the hand is not the runner's
+    ExperimentRunner runner(client, &joystick);
+    QCOMPARE(runner.handFor(), RunHand::SimulatedIdle);
     const ExperimentResult r = run(runner, ExperimentPlan::defaults(ExperimentKind::Step, params));
     QVERIFY2(r.completed() && r.problem.isEmpty(), qPrintable(r.problem));
     QCOMPARE(r.hand, RunHand::SimulatedIdle);
@@ -204,7 +205,7 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
         QVERIFY2(std::abs(s.tau) < 0.04, qPrintable(QString::number(s.tau)));
 
     // The hand is given back as it was.
-    QCOMPARE(client.simulatedHand(), input);
+    QCOMPARE(joystick.hand(), input);
     if (input.kind != HandInput::Kind::Idle) {
         samples.clear();
         QTRY_VERIFY_WITH_TIMEOUT(!samples.isEmpty() && std::abs(samples.last().tau) > 0.04, kRunMs);
@@ -212,10 +213,10 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
         // Cancelled while the knob comes to rest: given back too.
         QSignalSpy finished(&runner, &ExperimentRunner::finished);
         QVERIFY(runner.start(ExperimentPlan::defaults(ExperimentKind::Step, params)).isEmpty());
-        QCOMPARE(client.simulatedHand(), HandInput{});
+        QCOMPARE(joystick.hand(), HandInput{});
         runner.cancel();
         QCOMPARE(finished.size(), 1);
-        QCOMPARE(client.simulatedHand(), input);
+        QCOMPARE(joystick.hand(), input);
     }
 }
 

@@ -1,6 +1,7 @@
 // DeviceClient: the session on its own thread, queued calls, cached values, shutdown.
 #include "session/deviceclient.h"
 #include "sim/simulatorhost.h"
+#include "simulatoroptions.h"
 #include "telemetry/recordingreader.h"
 #include "telemetry/recordingwriter.h"
 
@@ -23,10 +24,7 @@ constexpr int kConnectTimeoutMs = 5000;
 
 ConnectOptions simOptions(ProtocolChoice choice = ProtocolChoice::V2)
 {
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
-    o.protocol = choice;
-    return o;
+    return test::simulatorOptions({}, choice);
 }
 
 //! Keeps the calling thread busy without processing events, as a frozen GUI would.

@@ -8,6 +8,7 @@
 #include "sim/simlink.h"
 #include "sim/simulateddevice.h"
 #include "sim/simulatorhost.h"
+#include "simulatoroptions.h"
 #include "telemetry/recordingreader.h"
 
 #include <QHash>
@@ -30,13 +31,13 @@ namespace {
 constexpr int kConnectTimeoutMs = 5000;
 constexpr int kCommandWaitMs = 3000;
 
-ConnectOptions simOptions(WireProtocol protocol, ProtocolChoice choice = ProtocolChoice::Auto)
+ConnectOptions simOptions(WireProtocol protocol, ProtocolChoice choice = ProtocolChoice::Auto,
+                          const HandInput &hand = {})
 {
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
-    o.protocol = choice;
-    o.sim.protocol = protocol;
-    return o;
+    SimulatedDevice::Config config;
+    config.protocol = protocol;
+    config.hand = hand;
+    return test::simulatorOptions(config, choice);
 }
 
 //! A failed result's codes, for a test's failure message.
@@ -257,8 +258,8 @@ void TestDeviceSession::detectsProtocol()
 void TestDeviceSession::v2SamplesAreComplete()
 {
     Harness h;
-    ConnectOptions o = simOptions(WireProtocol::V2);
-    o.sim.hand = *HandInput::parse(QStringLiteral("sine:0.05:2"));
+    const ConnectOptions o = simOptions(WireProtocol::V2, ProtocolChoice::Auto,
+                                        *HandInput::parse(QStringLiteral("sine:0.05:2")));
     h.session.connectDevice(o);
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() >= 500, kConnectTimeoutMs);
     double lastT = -1;
@@ -292,8 +293,8 @@ void TestDeviceSession::v2SamplesAreComplete()
 void TestDeviceSession::legacySamplesAreModelEstimated()
 {
     Harness h;
-    ConnectOptions o = simOptions(WireProtocol::Legacy);
-    o.sim.hand = *HandInput::parse(QStringLiteral("const:0.05"));
+    const ConnectOptions o = simOptions(WireProtocol::Legacy, ProtocolChoice::Auto,
+                                        *HandInput::parse(QStringLiteral("const:0.05")));
     h.session.connectDevice(o);
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() >= 4, kConnectTimeoutMs);
     QCOMPARE(h.session.deviceInfo().protocol, WireProtocol::Legacy);
@@ -328,20 +329,20 @@ void TestDeviceSession::pushParamsReadsBack()
     QCOMPARE(h.params.last().K_max, double(0.6f));
     QCOMPARE(h.params.last().K_min, double(0.2f));
     QCOMPARE(h.params.last().N, double(0.12f));
-    QCOMPARE(h.session.simLink()->device()->params().K_max, double(0.6f));
+    QCOMPARE(test::simLinkOf(h.session)->device()->params().K_max, double(0.6f));
 
     // ZERO makes the current angle θ0; the read-back shows it.
     h.session.zero(8);
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(8), kCommandWaitMs);
     QVERIFY2(h.results.value(8).ok(), qPrintable(statusText(h.results.value(8))));
-    QCOMPARE(h.params.last().theta0, h.session.simLink()->device()->params().theta0);
+    QCOMPARE(h.params.last().theta0, test::simLinkOf(h.session)->device()->params().theta0);
 
     h.session.saveParams(9);
     h.session.setStreamRate(10, 500);
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(10), kCommandWaitMs);
     QVERIFY(h.results.value(9).ok());
     QVERIFY(h.results.value(10).ok());
-    QTRY_COMPARE_WITH_TIMEOUT(h.session.simLink()->device()->streamRate(), quint16(500),
+    QTRY_COMPARE_WITH_TIMEOUT(test::simLinkOf(h.session)->device()->streamRate(), quint16(500),
                               kCommandWaitMs);
 }
 
@@ -360,7 +361,7 @@ void TestDeviceSession::invalidParamsAreRefusedOnTheHost()
     QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
     const QString problems = r.problems.join(u"; "_s);
     QVERIFY2(problems.contains(u"K_min") && problems.contains(u"Q_dz"), qPrintable(problems));
-    QCOMPARE(h.session.simLink()->device()->params(), asFloat(DeviceParams()));
+    QCOMPARE(test::simLinkOf(h.session)->device()->params(), asFloat(DeviceParams()));
 }
 
 void TestDeviceSession::rejectionLeavesDeviceParamsUnchanged()
@@ -410,23 +411,23 @@ void TestDeviceSession::lostCommandIsRetried()
     QTRY_VERIFY_WITH_TIMEOUT(!h.params.isEmpty(), kConnectTimeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(!h.samples.isEmpty(), kConnectTimeoutMs); // connect sequence done
     const quint64 retriesBefore = h.session.stats().retries;
-    h.session.simLink()->dropHostFrames(dropped, quint8(v2::MessageType::SetParams));
+    test::simLinkOf(h.session)->dropHostFrames(dropped, quint8(v2::MessageType::SetParams));
     DeviceParams p;
     p.K_max = 0.7;
     h.session.pushTuning(1, {p, std::nullopt});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(1), kCommandWaitMs);
     const CommandResult r = h.results.value(1);
-    QCOMPARE(h.session.simLink()->droppedHostFrames(), dropped);
+    QCOMPARE(test::simLinkOf(h.session)->droppedHostFrames(), dropped);
     QCOMPARE(h.session.stats().retries - retriesBefore, quint64(std::min(dropped, 3)));
     if (succeeds) {
         QVERIFY2(r.ok(), qPrintable(statusText(r)));
-        QCOMPARE(h.session.simLink()->device()->params().K_max, double(0.7f));
+        QCOMPARE(test::simLinkOf(h.session)->device()->params().K_max, double(0.7f));
     } else {
         QCOMPARE(r.status, CommandResult::Status::Timeout);
         QCOMPARE(r.command, CommandKind::SetParams);
         QCOMPARE(r.attempts, CommandQueue::kCommandRetries + 1);
         QCOMPARE(r.intervalMs, CommandQueue::kCommandTimeoutMs);
-        QCOMPARE(h.session.simLink()->device()->params().K_max,
+        QCOMPARE(test::simLinkOf(h.session)->device()->params().K_max,
                  double(float(DeviceParams().K_max)));
     }
 }
@@ -554,7 +555,7 @@ void TestDeviceSession::garbageIsCountedAndStreamContinues()
     QByteArray garbage = QByteArray::fromHex("0511223344") + '\0';
     garbage += QByteArray(300, '\x55') + '\0';
     garbage += randomGarbage(500, 7) + '\0';
-    h.session.simLink()->injectToHost(garbage);
+    test::simLinkOf(h.session)->injectToHost(garbage);
     const LinkStats after = h.session.stats();
     QVERIFY(after.totalDecoderDrops() >= 3);
     QVERIFY(after.decoderDrops[int(v2::DropReason::Overflow)] >= 1);
@@ -570,11 +571,11 @@ void TestDeviceSession::seqGapsAreCounted()
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > 100, kConnectTimeoutMs);
     QCOMPARE(h.session.stats().seqDrops, quint64(0));
     // Swallow the device's output for a while: those telemetry frames never arrive.
-    SimulatedDevice *device = h.session.simLink()->device();
+    SimulatedDevice *device = test::simLinkOf(h.session)->device();
     const double silencedAt = device->time();
-    h.session.simLink()->setSilenced(true);
+    test::simLinkOf(h.session)->setSilenced(true);
     QTRY_VERIFY(device->time() > silencedAt + 0.05);
-    h.session.simLink()->setSilenced(false);
+    test::simLinkOf(h.session)->setSilenced(false);
     const double t = h.lastT();
     QTRY_VERIFY_WITH_TIMEOUT(h.samplesAfter(t) > 10, kCommandWaitMs);
     const LinkStats s = h.session.stats();
@@ -606,8 +607,9 @@ void TestDeviceSession::recordingEventsOnParamAndHostChanges()
     QVERIFY(dir.isValid());
     const QString csv = dir.filePath(QStringLiteral("run.csv"));
     Harness h;
-    ConnectOptions o = simOptions(WireProtocol::V2, ProtocolChoice::V2);
-    o.sim.hand = *HandInput::parse(QStringLiteral("const:0.03")); // holds θ in the notch band
+    // The hand holds θ in the notch band.
+    const ConnectOptions o = simOptions(WireProtocol::V2, ProtocolChoice::V2,
+                                        *HandInput::parse(QStringLiteral("const:0.03")));
     h.session.connectDevice(o);
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > 500, kConnectTimeoutMs);
     h.session.startRecording(csv, QStringLiteral("tst_devicesession"));
@@ -703,7 +705,7 @@ void TestDeviceSession::severedLinkReconnects()
     h.session.startRecording(csv, QStringLiteral("test"));
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > 300, kCommandWaitMs);
 
-    h.session.simLink()->sever(QStringLiteral("unplugged by the test"));
+    test::simLinkOf(h.session)->sever(QStringLiteral("unplugged by the test"));
     QCOMPARE(h.session.state(), SessionState::Lost);
     const double tLost = h.lastT(); // the loss flushed the samples still waiting in the batch
     QCOMPARE(h.detailOf(SessionState::Lost).kind, StateDetail::Kind::LinkFailed);
@@ -739,7 +741,7 @@ void TestDeviceSession::silentLinkIsLostAndReconnects()
     Harness h;
     h.session.connectDevice(simOptions(WireProtocol::V2, ProtocolChoice::V2));
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > 50, kConnectTimeoutMs);
-    h.session.simLink()->setSilenced(true); // the port stays, the device says nothing
+    test::simLinkOf(h.session)->setSilenced(true); // the port stays, the device says nothing
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Lost,
                               DeviceSession::kSilenceTimeoutMs + 2000);
     QCOMPARE(h.detailOf(SessionState::Lost).kind, StateDetail::Kind::Silent);

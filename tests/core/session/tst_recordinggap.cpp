@@ -6,6 +6,7 @@
 #include "session/devicesession.h"
 #include "sim/simlink.h"
 #include "sim/simulatorhost.h"
+#include "simulatoroptions.h"
 #include "telemetry/numbertext.h"
 #include "telemetry/recordingreader.h"
 
@@ -265,9 +266,7 @@ void TestRecordingGap::unreadParametersResumeAfterAWait()
     QVERIFY(dir.isValid());
     const QString csv = dir.filePath(u"run.csv"_s);
     Harness h;
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
-    o.protocol = ProtocolChoice::V2;
+    const ConnectOptions o = test::simulatorOptions({}, ProtocolChoice::V2);
     h.session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
     h.session.startRecording(csv, u"tst_recordinggap"_s);
@@ -276,11 +275,11 @@ void TestRecordingGap::unreadParametersResumeAfterAWait()
     // The device that comes back never answers GET_PARAMS (every resend is lost).
     QObject::connect(
         &h.session, &DeviceSession::stateChanged, &h.session, [&h](SessionState state) {
-            if (state == SessionState::Connected && h.session.simLink())
-                h.session.simLink()->dropHostFrames(1 + CommandQueue::kCommandRetries,
-                                                    quint8(v2::MessageType::GetParams));
+            if (state == SessionState::Connected && test::simLinkOf(h.session))
+                test::simLinkOf(h.session)->dropHostFrames(1 + CommandQueue::kCommandRetries,
+                                                           quint8(v2::MessageType::GetParams));
         });
-    h.session.simLink()->sever(u"unplugged by the test"_s);
+    test::simLinkOf(h.session)->sever(u"unplugged by the test"_s);
     QVERIFY(h.recording.last().waiting);
     const double tLost = h.lastT();
     QTRY_VERIFY_WITH_TIMEOUT(h.noticed(SessionNotice::Kind::RecordingResumed),
@@ -313,14 +312,13 @@ void TestRecordingGap::noReconnectClosesTheRecording()
     QVERIFY(dir.isValid());
     const QString csv = dir.filePath(u"run.csv"_s);
     Harness h;
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
+    ConnectOptions o = test::simulatorOptions();
     o.autoReconnect = false; // hatpicctl: a loss ends the program, and the recording with it
     h.session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
     h.session.startRecording(csv, u"tst_recordinggap"_s);
     QTRY_VERIFY_WITH_TIMEOUT(h.recording.last().samples > 50, kConnectTimeoutMs);
-    h.session.simLink()->sever(u"unplugged by the test"_s);
+    test::simLinkOf(h.session)->sever(u"unplugged by the test"_s);
     QVERIFY(!h.recording.last().active);
     QVERIFY(!h.recording.last().waiting);
     QVERIFY(h.noticed(SessionNotice::Kind::RecordingClosedByLoss));

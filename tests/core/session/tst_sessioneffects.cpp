@@ -6,6 +6,7 @@
 #include "session/deviceclient.h"
 #include "session/devicesession.h"
 #include "simprocess.h"
+#include "simulatoroptions.h"
 #include "telemetry/recordingreader.h"
 
 #include <QSignalSpy>
@@ -245,9 +246,7 @@ void TestSessionEffects::pushedEffectsAreRecordedEvents()
             [&](quint64, const CommandResult &r) { results.append(r); });
     connect(&session.samples(), &SamplePipeline::deviceTuningChanged, this,
             [&](const DeviceTuning &t) { haveEffects = t.effects.has_value(); });
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
-    session.connectDevice(o);
+    session.connectDevice(test::simulatorOptions());
     QTRY_VERIFY_WITH_TIMEOUT(haveEffects, kTimeoutMs);
     session.startRecording(csv, QStringLiteral("test"));
     QTest::qWait(50);

@@ -7,6 +7,7 @@
 #include "protocol/v2codec.h"
 #include "session/devicesession.h"
 #include "sim/simlink.h"
+#include "simulatoroptions.h"
 #include "telemetry/recordingreader.h"
 
 #include <QProcess>
@@ -36,12 +37,10 @@ FaultSpec faultSpec(const QString &text)
 
 ConnectOptions simWithFaults(const QString &faults, quint64 seed)
 {
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
-    o.protocol = ProtocolChoice::V2;
-    o.sim.faults = faultSpec(faults);
-    o.sim.seed = seed;
-    return o;
+    SimulatedDevice::Config config;
+    config.faults = faultSpec(faults);
+    config.seed = seed;
+    return test::simulatorOptions(config, ProtocolChoice::V2);
 }
 
 // What the receiver has seen of the faults, less what the session counted: constant while
@@ -114,9 +113,9 @@ private Q_SLOTS:
         session.connectDevice(
             simWithFaults(u"drop=0.02,corrupt=0.01,dup=0.01,delay=0.01:5ms,hdrop=0.05"_s, 9));
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 100, kConnectMs);
-        const FaultInjector *faults = session.simLink()->faults();
+        const FaultInjector *faults = test::simLinkOf(session)->faults();
         QVERIFY(faults);
-        const SimulatedDevice *device = session.simLink()->device();
+        const SimulatedDevice *device = test::simLinkOf(session)->device();
         const Unaccounted before =
             unaccounted(faults->toHostSeen(), session.stats(), device->telemetryDropped());
         const FaultCounts seenBefore = faults->toHostSeen();
@@ -155,7 +154,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(!samples.isEmpty(), kConnectMs);
         session.startRecording(csv, u"tst_sessionfaults"_s);
         QVERIFY(!recording.isEmpty() && recording.last().active);
-        const FaultInjector *faults = session.simLink()->faults();
+        const FaultInjector *faults = test::simLinkOf(session)->faults();
         QCOMPARE(faults->toHostCounts().cut, quint64(0)); // recording before the cut
         QTRY_VERIFY_WITH_TIMEOUT(faults->toHostCounts().cut > 0, kConnectMs);
         QTRY_VERIFY_WITH_TIMEOUT(faults->toHostSeen().cut > 1000, kConnectMs); // cut is over
@@ -202,9 +201,9 @@ private Q_SLOTS:
         QSignalSpy samples(&session.samples(), &SamplePipeline::samplesReady);
         session.connectDevice(simWithFaults(cut, 1));
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 0, kConnectMs);
-        const FaultInjector *faults = session.simLink()->faults();
+        const FaultInjector *faults = test::simLinkOf(session)->faults();
         QTRY_VERIFY_WITH_TIMEOUT(faults->toHostCounts().cut > 0, kConnectMs);
-        const SimulatedDevice *device = session.simLink()->device();
+        const SimulatedDevice *device = test::simLinkOf(session)->device();
         const DeviceParams before = device->params();
         const quint64 appliedBefore = device->paramsApplied();
         DeviceParams wanted = before;
@@ -240,8 +239,8 @@ private Q_SLOTS:
         QSignalSpy samples(&session.samples(), &SamplePipeline::samplesReady);
         session.connectDevice(simWithFaults(u"hdrop=0.3,drop=0.3"_s, 5));
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 0, kConnectMs);
-        const SimulatedDevice *device = session.simLink()->device();
-        const FaultInjector *faults = session.simLink()->faults();
+        const SimulatedDevice *device = test::simLinkOf(session)->device();
+        const FaultInjector *faults = test::simLinkOf(session)->faults();
         const quint64 appliedBefore = device->paramsApplied();
         const quint64 hostDropsBefore = faults->toDeviceCounts().dropped;
         const quint64 retriesBefore = session.stats().retries;

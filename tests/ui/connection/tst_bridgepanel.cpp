@@ -8,6 +8,7 @@
 #include "connection/bridgepanel.h"
 #include "plots/qcp.h"
 #include "session/deviceclient.h"
+#include "simulatoroptions.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -46,14 +47,13 @@ private Q_SLOTS:
     {
         QVERIFY(BridgePanel::isBuilt());
         registerSessionMetaTypes();
-        ConnectOptions options;
-        options.port = QString::fromUtf16(kSimPortName);
-        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
+        SimulatedDevice::Config config;
+        config.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
         connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
             if (!batch.isEmpty())
                 m_deviceTauExt = batch.last().tau_ext;
         });
-        m_client.connectDevice(options);
+        m_client.connectDevice(test::simulatorOptions(config));
         QTRY_COMPARE_WITH_TIMEOUT(m_client.state(), SessionState::Connected, 10000);
         m_client.setHostParams(HostParams{});
         m_peer = std::make_unique<RosTestPeer>(kDomain);

@@ -6,6 +6,7 @@
 
 #include "connection/bridgepanel.h"
 #include "session/deviceclient.h"
+#include "simulatoroptions.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -39,14 +40,13 @@ private Q_SLOTS:
         QVERIFY(BridgePanel::isBuilt());
         registerSessionMetaTypes();
         QCOMPARE(m_core.start(), QString());
-        ConnectOptions options;
-        options.port = QString::fromUtf16(kSimPortName);
-        options.sim.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
+        SimulatedDevice::Config config;
+        config.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, 0.5};
         connect(&m_client, &DeviceClient::samplesReady, this, [this](const SampleBatch &batch) {
             if (!batch.isEmpty())
                 m_deviceTauExt = batch.last().tau_ext;
         });
-        m_client.connectDevice(options);
+        m_client.connectDevice(test::simulatorOptions(config));
         QTRY_COMPARE_WITH_TIMEOUT(m_client.state(), SessionState::Connected, 10000);
         m_client.setHostParams(HostParams{});
         m_panel = std::make_unique<BridgePanel>(m_client);

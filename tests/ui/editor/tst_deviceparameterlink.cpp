@@ -8,6 +8,7 @@
 #include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
 #include "session/deviceclient.h"
+#include "simulatoroptions.h"
 
 #include <QAction>
 #include <QLabel>
@@ -23,11 +24,10 @@ constexpr int kConnectMs = 15000; //!< generous: the machine is shared
 
 ConnectOptions simOptions(WireProtocol protocol)
 {
-    ConnectOptions options;
-    options.port = QStringLiteral("sim");
-    options.protocol = protocol == WireProtocol::V2 ? ProtocolChoice::V2 : ProtocolChoice::Auto;
-    options.sim.protocol = protocol;
-    return options;
+    SimulatedDevice::Config config;
+    config.protocol = protocol;
+    return test::simulatorOptions(config, protocol == WireProtocol::V2 ? ProtocolChoice::V2
+                                                                       : ProtocolChoice::Auto);
 }
 
 //! A client, an editor and the link between them, as the window wires them.

@@ -9,6 +9,7 @@
 #include "plots/qcp.h"
 #include "plots/samplebuffer.h"
 #include "session/deviceclient.h"
+#include "simulatoroptions.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -36,11 +37,7 @@ constexpr int kRunMs = 15000;
 
 bool connectSim(DeviceClient &client, ProtocolChoice protocol = ProtocolChoice::V2)
 {
-    ConnectOptions o;
-    o.port = QString::fromUtf16(kSimPortName);
-    o.protocol = protocol;
-    o.sim.protocol = protocol == ProtocolChoice::Legacy ? WireProtocol::Legacy : WireProtocol::V2;
-    client.connectDevice(o);
+    client.connectDevice(test::simulatorOptions({}, protocol));
     return QTest::qWaitFor([&] { return client.state() == SessionState::Connected; }, kConnectMs);
 }
 
@@ -76,7 +73,7 @@ void TestExperimentsPanel::stepFromTheRunButton()
 {
     DeviceClient client;
     QVERIFY(connectSim(client));
-    ExperimentsPanel panel(&client, nullptr);
+    ExperimentsPanel panel(&client, test::joystickOf(client.options()), nullptr);
     panel.resize(1000, 600);
     panel.show();
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
@@ -163,7 +160,7 @@ void TestExperimentsPanel::refusesALegacyDevice()
 {
     DeviceClient client;
     QVERIFY(connectSim(client, ProtocolChoice::Legacy));
-    ExperimentsPanel panel(&client, nullptr);
+    ExperimentsPanel panel(&client, test::joystickOf(client.options()), nullptr);
     QVERIFY(!panel.run());
     QVERIFY2(panel.status().contains(u"legacy"_s), qPrintable(panel.status()));
     QVERIFY(!panel.running());
@@ -174,7 +171,7 @@ void TestExperimentsPanel::cancelStopsTheRun()
     DeviceClient client;
     QVERIFY(connectSim(client));
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
-    ExperimentsPanel panel(&client, nullptr);
+    ExperimentsPanel panel(&client, test::joystickOf(client.options()), nullptr);
     panel.findChild<QDoubleSpinBox *>(u"duration"_s)->setValue(20);
     QVERIFY(panel.run());
     QTest::mouseClick(panel.findChild<QPushButton *>(u"cancelExperiment"_s), Qt::LeftButton);
@@ -206,7 +203,7 @@ void TestExperimentsPanel::levelsFollowTheTuningAfterARun()
     DeviceClient client;
     QVERIFY(connectSim(client));
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
-    ExperimentsPanel panel(&client, nullptr);
+    ExperimentsPanel panel(&client, test::joystickOf(client.options()), nullptr);
     panel.show();
     auto *kind = panel.findChild<QComboBox *>(u"experimentKind"_s);
     auto *from = panel.findChild<QDoubleSpinBox *>(u"stepFrom"_s);
@@ -252,7 +249,7 @@ void TestExperimentsPanel::cautionOnADetent()
     DeviceClient client;
     QVERIFY(connectSim(client));
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
-    ExperimentsPanel panel(&client, nullptr);
+    ExperimentsPanel panel(&client, test::joystickOf(client.options()), nullptr);
     panel.resize(1000, 600);
     panel.show();
     QVERIFY(!panel.status().contains(u"Caution"_s));
@@ -291,7 +288,8 @@ void TestExperimentsPanel::runKeepsTheKeyboard()
     QVERIFY(connectSim(client));
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params, kConnectMs);
     QWidget window;
-    auto *panel = new ExperimentsPanel(&client, nullptr, &window);
+    auto *panel =
+        new ExperimentsPanel(&client, test::joystickOf(client.options()), nullptr, &window);
     auto *after = new QComboBox(&window); // what comes next in the window's focus chain
     auto *layout = new QVBoxLayout(&window);
     layout->addWidget(panel);
@@ -329,7 +327,7 @@ void TestExperimentsPanel::spectrumOfTheVisibleWindow()
     plots.setSource(&buffer);
     plots.setWindowLength(1.0);
     plots.setViewEnd(0.999);
-    ExperimentsPanel panel(&client, &plots);
+    ExperimentsPanel panel(&client, test::joystickOf(client.options()), &plots);
     panel.showVisibleSpectrum();
     QCustomPlot *spectrum = panel.plots()->plot(ExperimentPlots::SpectrumTab);
     QCOMPARE(panel.plots()->currentWidget(), spectrum);
@@ -397,7 +395,7 @@ void TestExperimentsPanel::bodePlotReadableWhenShort()
 void TestExperimentsPanel::figuresBesideThePlotsOrATab()
 {
     DeviceClient client;
-    ExperimentsPanel panel(&client, nullptr);
+    ExperimentsPanel panel(&client, test::joystickOf(client.options()), nullptr);
     panel.resize(1100, 350);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));

@@ -15,6 +15,7 @@
 #include "recording/recordingcontrols.h"
 #include "recording/replaybar.h"
 #include "simulator/simulatorpanel.h"
+#include "simulatoroptions.h"
 #include "stiffness/stiffnessview.h"
 #include "telemetry/recordingreader.h"
 #include "telemetry/recordingwriter.h"
@@ -484,9 +485,10 @@ void TestMainWindow::legacyDeviceCannotPush()
     host.tau_limit = 0.3;
     editor->setParams(editor->params(), host, QStringLiteral("tau_limit"));
     QCOMPARE(editor->hostParams().tau_limit, 0.3);
-    ConnectOptions options = simOptions(ProtocolChoice::Auto);
-    options.sim.protocol = WireProtocol::Legacy;
-    m_window->connectTo(options);
+    // The command line's simulator (hatpic-tuner --port sim) is the published firmware's.
+    SimulatedDevice::Config legacy;
+    legacy.protocol = WireProtocol::Legacy;
+    m_window->connectTo(test::simulatorOptions(legacy, ProtocolChoice::Auto));
     QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
     QCOMPARE(client()->deviceInfo().protocol, WireProtocol::Legacy);
     QVERIFY(linkStatus()->identityText().contains(QStringLiteral("legacy")));

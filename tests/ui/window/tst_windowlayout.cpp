@@ -14,6 +14,7 @@
 #include "recording/recordingcontrols.h"
 #include "session/deviceclient.h"
 #include "simulator/simulatorpanel.h"
+#include "simulatoroptions.h"
 #include "stiffness/stiffnessview.h"
 #include "window/mainwindow.h"
 #include "window/statusline.h"
@@ -121,7 +122,7 @@ void TestWindowLayout::showAt(QSize size)
     m_window->resize(size);
     settle();
     ConnectOptions options;
-    options.port = QString::fromUtf16(kSimPortName);
+    options.port = QString::fromUtf16(kSimPortName); // as the connection bar asks for it
     m_window->connectTo(options);
     auto *client = find<DeviceClient>("deviceClient");
     QTRY_COMPARE_WITH_TIMEOUT(client->state(), SessionState::Connected, kConnectMs);
@@ -243,8 +244,11 @@ void TestWindowLayout::experimentHoldsTheSimulatedHand()
     showAt(QSize(1280, 720));
     auto *client = find<DeviceClient>("deviceClient");
     auto *hand = find<SimulatorPanel>("simulatorPanel");
+    // The window's simulated joystick, which it connected through.
+    const SimulatedJoystick *joystick = test::joystickOf(client->options());
+    QVERIFY(joystick);
     const HandInput before = hand->hand();
-    QCOMPARE(client->simulatedHand(), before); // the gentle sine
+    QCOMPARE(joystick->hand(), before); // the gentle sine
     find<QDockWidget>("experimentsDock")->toggleViewAction()->trigger();
     settle();
     auto *panel = find<ExperimentsPanel>("experimentsPanel");
@@ -255,7 +259,7 @@ void TestWindowLayout::experimentHoldsTheSimulatedHand()
     QTest::mouseClick(find<QPushButton>("runExperiment"), Qt::LeftButton);
     QVERIFY(panel->running());
     QVERIFY(hand->isHeldByExperiment());
-    QCOMPARE(client->simulatedHand(), HandInput{});
+    QCOMPARE(joystick->hand(), HandInput{});
     QCOMPARE(find<QLabel>("handStatus")->text(), u"Hand: idle for the experiment"_s);
     QVERIFY(!find<QWidget>("combo_hand_kind")->isEnabled());
     QVERIFY(!find<QWidget>("button_hand_release")->isEnabled());
@@ -264,7 +268,7 @@ void TestWindowLayout::experimentHoldsTheSimulatedHand()
     QVERIFY2(panel->result() && panel->result()->completed(), qPrintable(panel->status()));
     QVERIFY(!hand->isHeldByExperiment());
     QCOMPARE(hand->hand(), before);
-    QCOMPARE(client->simulatedHand(), before);
+    QCOMPARE(joystick->hand(), before);
     QCOMPARE(find<QLabel>("handStatus")->text(), SimulatorPanel::describe(before));
     QVERIFY(find<QWidget>("combo_hand_kind")->isEnabled());
     // The figures say what held the knob.
