@@ -1,5 +1,6 @@
 #include "samplebuilder.h"
 
+#include "model/cyclequantities.h"
 #include "protocol/messages.h"
 
 #include <algorithm>
@@ -56,20 +57,15 @@ Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostU
     advanceClock(telemetry.t_us, hostUs);
     Sample s;
     s.t_s = sessionTime();
-    s.t_us = telemetry.t_us;
-    s.theta = telemetry.theta;
-    s.omega = telemetry.omega;
-    s.tau = telemetry.tau;
-    s.tau_rec = telemetry.tau_rec;
-    s.tau_ext = telemetry.tau_ext;
-    s.tau_fx =
-        telemetry.tau_fx ? double(*telemetry.tau_fx) : std::numeric_limits<double>::quiet_NaN();
+    forEachCycleQuantity<Sample, v2::Telemetry>([&](const CycleQuantity &, auto to, auto from) {
+        const auto &value = telemetry.*from;
+        if constexpr (requires { value.has_value(); }) // not sent: unknown
+            s.*to = value ? double(*value) : std::numeric_limits<double>::quiet_NaN();
+        else
+            s.*to = value;
+    });
     const double fx = telemetry.tau_fx ? s.tau_fx : 0.0;
-    constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
-    s.tau_pc = telemetry.tau_pc ? double(*telemetry.tau_pc) : unknown;
-    s.pc_reserve = telemetry.pc_reserve ? double(*telemetry.pc_reserve) : unknown;
     s.tau_total = std::clamp(s.tau_rec + fx + s.tau_ext, -m_tauLimit, m_tauLimit);
-    s.flags = telemetry.flags;
     addReference(s);
     return s;
 }
