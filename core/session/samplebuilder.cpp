@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace hatpic {
 
@@ -83,9 +84,14 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     s.tau = std::numeric_limits<double>::quiet_NaN();
     s.tau_rec = recenteringTorque(m_stiffness, s.theta);
     s.tau_ext = tauExt;
-    s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // the published firmware has no effects
-    s.tau_pc = std::numeric_limits<double>::quiet_NaN(); // …and no passivity controller
-    s.pc_reserve = std::numeric_limits<double>::quiet_NaN();
+    // The published firmware has no capability (effects, passivity controller): what one brings
+    // is unknown.
+    forEachCycleQuantity<Sample>([&s](const CycleQuantity &q, auto member) {
+        if constexpr (std::is_same_v<decltype(member), double Sample::*>) {
+            if (q.optional)
+                s.*member = std::numeric_limits<double>::quiet_NaN();
+        }
+    });
     const double total = s.tau_rec + s.tau_ext;
     s.tau_total = std::clamp(total, -m_tauLimit, m_tauLimit);
     quint16 flags = kFlagModelEstimated | v2::zoneFlag(stiffnessZone(m_stiffness, s.theta));
