@@ -20,7 +20,8 @@
 
 namespace hatpic::fw {
 
-//! One control cycle as the device rendered it: what TELEMETRY reports.
+//! One control cycle as the device rendered it: the quantities TELEMETRY reports (a member for
+//! each of model/cyclequantities.h) and τ_total.
 template<typename T> struct CycleRecord
 {
     std::uint32_t t_us = 0; //!< the cycle's time on the device clock [µs, wraps]

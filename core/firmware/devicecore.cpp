@@ -1,8 +1,11 @@
 #include "devicecore.h"
 
+#include "model/cyclequantities.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 namespace hatpic::fw {
 
@@ -259,18 +262,14 @@ template<typename T> void DeviceCore<T>::sendTelemetry()
 {
     Telemetry item;
     while (m_toLink.pop(item)) {
-        const CycleRecord<T> &c = item.record;
-        v2::Telemetry tm;
-        tm.t_us = c.t_us;
-        tm.theta = float(c.theta);
-        tm.omega = float(c.omega);
-        tm.tau = float(c.tau);
-        tm.tau_rec = float(c.tau_rec);
-        tm.tau_ext = float(c.tau_ext);
-        tm.flags = c.flags;
-        tm.tau_fx = float(c.tau_fx);
-        tm.tau_pc = float(c.tau_pc);
-        tm.pc_reserve = float(c.pc_reserve);
+        v2::Telemetry tm; // with both capabilities: every quantity (37 bytes)
+        forEachCycleQuantity<v2::Telemetry, CycleRecord<T>>(
+            [&tm, &c = item.record](const CycleQuantity &, auto to, auto from) {
+                if constexpr (std::is_same_v<std::remove_cvref_t<decltype(c.*from)>, T>)
+                    tm.*to = float(c.*from); // the wire's f32
+                else
+                    tm.*to = c.*from;
+            });
         const std::size_t n = v2::encodeFrame(item.seq, tm, m_scratch);
         if (!m_host.write({m_scratch.data(), n}, HostPort::Traffic::Stream))
             m_telemetryDropped.fetch_add(1);

@@ -4,6 +4,7 @@
 // Plain C++20: no Qt, no OS calls, no allocation (text fields are fixed arrays).
 #pragma once
 
+#include "model/cyclequantities.h"
 #include "model/effects.h"
 #include "model/params.h"
 #include "model/passivity.h"
@@ -344,18 +345,10 @@ struct Telemetry
     //! τ_fx (a 37-byte TELEMETRY).
     std::optional<float> tau_pc;
     std::optional<float> pc_reserve;
+    //! The cycle's quantities in their order (model/cyclequantities.h).
     static constexpr void fields(auto &m, auto &v)
     {
-        v(m.t_us);
-        v(m.theta);
-        v(m.omega);
-        v(m.tau);
-        v(m.tau_rec);
-        v(m.tau_ext);
-        v(m.flags);
-        v(m.tau_fx);
-        v(m.tau_pc);
-        v(m.pc_reserve);
+        forEachCycleQuantity<Telemetry>([&](const CycleQuantity &, auto member) { v(m.*member); });
     }
     friend bool operator==(const Telemetry &, const Telemetry &) = default;
 };

@@ -1,10 +1,12 @@
 #include "samplebuilder.h"
 
+#include "model/cyclequantities.h"
 #include "protocol/messages.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace hatpic {
 
@@ -56,20 +58,15 @@ Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostU
     advanceClock(telemetry.t_us, hostUs);
     Sample s;
     s.t_s = sessionTime();
-    s.t_us = telemetry.t_us;
-    s.theta = telemetry.theta;
-    s.omega = telemetry.omega;
-    s.tau = telemetry.tau;
-    s.tau_rec = telemetry.tau_rec;
-    s.tau_ext = telemetry.tau_ext;
-    s.tau_fx =
-        telemetry.tau_fx ? double(*telemetry.tau_fx) : std::numeric_limits<double>::quiet_NaN();
+    forEachCycleQuantity<Sample, v2::Telemetry>([&](const CycleQuantity &, auto to, auto from) {
+        const auto &value = telemetry.*from;
+        if constexpr (requires { value.has_value(); }) // not sent: unknown
+            s.*to = value ? double(*value) : std::numeric_limits<double>::quiet_NaN();
+        else
+            s.*to = value;
+    });
     const double fx = telemetry.tau_fx ? s.tau_fx : 0.0;
-    constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
-    s.tau_pc = telemetry.tau_pc ? double(*telemetry.tau_pc) : unknown;
-    s.pc_reserve = telemetry.pc_reserve ? double(*telemetry.pc_reserve) : unknown;
     s.tau_total = std::clamp(s.tau_rec + fx + s.tau_ext, -m_tauLimit, m_tauLimit);
-    s.flags = telemetry.flags;
     addReference(s);
     return s;
 }
@@ -87,9 +84,14 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     s.tau = std::numeric_limits<double>::quiet_NaN();
     s.tau_rec = recenteringTorque(m_stiffness, s.theta);
     s.tau_ext = tauExt;
-    s.tau_fx = std::numeric_limits<double>::quiet_NaN(); // the published firmware has no effects
-    s.tau_pc = std::numeric_limits<double>::quiet_NaN(); // …and no passivity controller
-    s.pc_reserve = std::numeric_limits<double>::quiet_NaN();
+    // The published firmware has no capability (effects, passivity controller): what one brings
+    // is unknown.
+    forEachCycleQuantity<Sample>([&s](const CycleQuantity &q, auto member) {
+        if constexpr (std::is_same_v<decltype(member), double Sample::*>) {
+            if (q.optional)
+                s.*member = std::numeric_limits<double>::quiet_NaN();
+        }
+    });
     const double total = s.tau_rec + s.tau_ext;
     s.tau_total = std::clamp(total, -m_tauLimit, m_tauLimit);
     quint16 flags = kFlagModelEstimated | v2::zoneFlag(stiffnessZone(m_stiffness, s.theta));

@@ -4,6 +4,7 @@
 #include "firmware/stsactuator.h"
 #include "firmware/stsbus.h"
 #include "fwhost/profileparamstore.h"
+#include "model/cyclequantities.h"
 #include "sim/emulatedservoport.h"
 #include "sim/emulatedsts3032.h"
 #include "sim/emulateduart.h"
@@ -329,18 +330,7 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
     const auto now = std::uint32_t(quint64(tUs) & 0xFFFFFFFFu);
     const fw::CycleRecord<double> &r =
         core ? core->controlCycle(now) : legacyController->cycle(now);
-    Cycle c;
-    c.t = t;
-    c.theta = r.theta;
-    c.omega = r.omega;
-    c.tau = r.tau;
-    c.tau_rec = r.tau_rec;
-    c.tau_ext = r.tau_ext;
-    c.tau_fx = r.tau_fx;
-    c.tau_pc = r.tau_pc;
-    c.pc_reserve = r.pc_reserve;
-    c.tau_total = r.tau_total;
-    c.flags = r.flags;
+    const Cycle c{r, t};
 
     if (core) {
         core->serviceHost(); // the link context sends this cycle's telemetry
@@ -362,6 +352,16 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
 }
 
 // ---- public API ----
+
+Sample SimulatedDevice::Cycle::toSample() const
+{
+    Sample sample;
+    sample.t_s = t;
+    sample.tau_total = tau_total;
+    forEachCycleQuantity<Sample, Cycle>(
+        [&](const CycleQuantity &, auto to, auto from) { sample.*to = this->*from; });
+    return sample;
+}
 
 SimulatedDevice::SimulatedDevice(const Config &config) : d(std::make_unique<Private>(config)) {}
 

@@ -6,6 +6,7 @@
 // in-process "sim" port drives it directly; `hatpicctl simulate` uses step() offline.
 #pragma once
 
+#include "firmware/controller.h"
 #include "link/faultinjector.h"
 #include "model/admittance.h"
 #include "model/params.h"
@@ -51,42 +52,14 @@ public:
         FaultSpec faults;
     };
 
-    //! One control cycle as the device saw it (what TELEMETRY reports).
-    struct Cycle
+    //! One control cycle as the device saw it: its record, on simulated time.
+    struct Cycle : fw::CycleRecord<double>
     {
-        double t = 0;          //!< simulated time at the cycle [s]
-        double theta = 0;      //!< measured knob angle used this cycle [rad]
-        double omega = 0;      //!< knob rate [rad/s]
-        double tau = 0;        //!< measured interaction torque [N·m]
-        double tau_rec = 0;    //!< [N·m]
-        double tau_ext = 0;    //!< [N·m]
-        double tau_fx = 0;     //!< τ_det + τ_wall + τ_vib (effects.md; legacy: 0) [N·m]
-        double tau_total = 0;  //!< clamped to tau_limit [N·m]
-        double tau_pc = 0;     //!< the passivity controller's −β·ω (passivity.md) [N·m]
-        double pc_reserve = 0; //!< its energy reserve R [J]
-        quint8 flags = 0;      //!< v2::kFlag* bits
+        double t = 0; //!< simulated time at the cycle [s]
 
-        //! The sample of this cycle as TELEMETRY would carry it: t_s = t, t_us the wrapping
-        //! 32-bit microseconds of t, the torques, the passivity reserve and flags; no reference
-        //! model (v_ref, p_ref 0), no arrival time.
-        Sample toSample() const
-        {
-            Sample sample;
-            sample.t_s = t;
-            // Device timestamps are 32-bit microseconds that wrap (protocol.md); so do these.
-            sample.t_us = static_cast<quint32>(static_cast<quint64>(std::llround(t * 1e6)));
-            sample.theta = theta;
-            sample.omega = omega;
-            sample.tau = tau;
-            sample.tau_rec = tau_rec;
-            sample.tau_ext = tau_ext;
-            sample.tau_fx = tau_fx;
-            sample.tau_total = tau_total;
-            sample.tau_pc = tau_pc;
-            sample.pc_reserve = pc_reserve;
-            sample.flags = flags;
-            return sample;
-        }
+        //! The sample of this cycle as TELEMETRY would carry it, with t_s = t and the device's
+        //! τ_total; no reference model (v_ref, p_ref 0), no arrival time.
+        Sample toSample() const;
     };
 
     explicit SimulatedDevice(const Config &config);

@@ -3,6 +3,7 @@
 // docs/recording.md describes the columns for people.
 #pragma once
 
+#include "model/cyclequantities.h"
 #include "telemetry/sample.h"
 
 #include <QByteArray>
@@ -10,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <string_view>
+#include <type_traits>
 
 namespace hatpic {
 
@@ -27,32 +29,32 @@ struct SampleColumn
     constexpr bool isFlags() const { return value == nullptr; }
 };
 
-//! The sample columns in the order every CSV writes them.
+//! The sample columns in the order every CSV writes them: t_s, the cycle's quantities
+//! (model/cyclequantities.h) with the host's tau_total, v_ref and p_ref before the flags.
 //! tau_fx (effects.md), then tau_pc and pc_reserve (passivity.md) came after the flags, so older
 //! files and programs that read columns by position keep theirs: they are last in `simulate` and
 //! `stream`, and before `event` in recordings.
-inline constexpr std::array<SampleColumn, 13> kSampleColumns = {{
-    {"t_s", "s", "session time: follows the device clock, monotonic", &Sample::t_s},
-    {"theta", "rad", "knob angle, absolute", &Sample::theta},
-    {"omega", "rad/s", "knob rate", &Sample::omega},
-    {"tau", "N·m", "interaction torque of eq. (1); the operator's torque is -tau", &Sample::tau},
-    {"tau_rec", "N·m", "re-centering torque", &Sample::tau_rec},
-    {"tau_ext", "N·m", "external feedback torque", &Sample::tau_ext},
-    {"tau_total", "N·m", "tau_rec + tau_fx + tau_ext as rendered, clamped to tau_limit",
-     &Sample::tau_total},
-    {"v_ref", "m/s or rad/s", "reference velocity", &Sample::v_ref},
-    {"p_ref", "m or rad", "reference position", &Sample::p_ref},
-    {"flags", "", "device flags (low byte) | host flags (kFlag*), a decimal integer", nullptr},
-    {"tau_fx", "N·m",
-     "effect torque tau_det + tau_wall + tau_vib; empty when the device does not send it",
-     &Sample::tau_fx, true},
-    {"tau_pc", "N·m",
-     "passivity controller torque -beta*omega; empty when the device does not send it",
-     &Sample::tau_pc, true},
-    {"pc_reserve", "J",
-     "passivity controller's energy reserve R; empty when the device does not send it",
-     &Sample::pc_reserve, true},
-}};
+inline constexpr auto kSampleColumns = [] {
+    // t_s stands for t_us; tau_total, v_ref, p_ref are added.
+    std::array<SampleColumn, kCycleQuantityCount + 3> columns{};
+    std::size_t n = 0;
+    columns[n++] = {"t_s", "s", "session time: follows the device clock, monotonic", &Sample::t_s};
+    forEachCycleQuantity<Sample>([&](const CycleQuantity &q, auto member) {
+        if constexpr (std::is_same_v<decltype(member), double Sample::*>) {
+            columns[n++] = {q.name, q.unit, q.meaning, member, q.optional};
+        } else if (q.name == "flags") {
+            columns[n++] = {"tau_total", "N·m",
+                            "tau_rec + tau_fx + tau_ext as rendered, clamped to tau_limit",
+                            &Sample::tau_total};
+            columns[n++] = {"v_ref", "m/s or rad/s", "reference velocity", &Sample::v_ref};
+            columns[n++] = {"p_ref", "m or rad", "reference position", &Sample::p_ref};
+            columns[n++] = {"flags", "",
+                            "device flags (low byte) | host flags (kFlag*), a decimal integer",
+                            nullptr};
+        }
+    });
+    return columns;
+}();
 
 //! The quantities a plot shows (theta … p_ref) are the columns from this one on, in order;
 //! the plots show tau_fx and tau_pc, after the flags, too.
@@ -68,8 +70,7 @@ constexpr std::size_t sampleColumnIndex(std::string_view name)
     return i;
 }
 
-static_assert(sampleColumnIndex("t_s") == 0 &&
-              sampleColumnIndex("pc_reserve") + 1 == kSampleColumns.size());
+static_assert(sampleColumnIndex("t_s") == 0 && !kSampleColumns.back().name.empty());
 static_assert(kFirstQuantityColumn + kQuantityColumnCount == sampleColumnIndex("flags"));
 
 //! The header of the sample CSV, "t_s,theta,…,flags,tau_fx,tau_pc,pc_reserve", without line end.

@@ -40,6 +40,8 @@ private Q_SLOTS:
     void referenceIntegratesOverDeviceTime();
     void resetReference();
     void tauTotalIsClamped();
+    void quantitiesAsSent_data();
+    void quantitiesAsSent();
     void legacyIsEstimatedFromTheModel_data();
     void legacyIsEstimatedFromTheModel();
 };
@@ -182,6 +184,49 @@ void TestSampleBuilder::tauTotalIsClamped()
     QCOMPARE(b.fromTelemetry(big, 1000).tau_total, 0.02);
 }
 
+void TestSampleBuilder::quantitiesAsSent_data()
+{
+    QTest::addColumn<bool>("effects");
+    QTest::addColumn<bool>("passivity");
+    QTest::newRow("no capability: 25 bytes") << false << false;
+    QTest::newRow("effects: 29 bytes") << true << false;
+    QTest::newRow("passivity: 37 bytes") << true << true;
+}
+
+void TestSampleBuilder::quantitiesAsSent()
+{
+    QFETCH(bool, effects);
+    QFETCH(bool, passivity);
+    v2::Telemetry t = telemetry(4000, 0.25f, v2::kFlagNotch | v2::kFlagFeedbackStale);
+    if (effects)
+        t.tau_fx = 0.03f;
+    if (passivity) {
+        t.tau_pc = -0.004f;
+        t.pc_reserve = 0.0125f;
+    }
+    SampleBuilder b;
+    const Sample s = b.fromTelemetry(t, 0);
+    QCOMPARE(s.t_us, 4000u);
+    QCOMPARE(s.theta, double(0.25f));
+    QCOMPARE(s.omega, double(0.5f));
+    QCOMPARE(s.tau, double(-0.01f));
+    QCOMPARE(s.tau_rec, double(-0.02f));
+    QCOMPARE(s.tau_ext, double(0.01f));
+    QCOMPARE(int(s.flags & 0xFF), int(v2::kFlagNotch | v2::kFlagFeedbackStale));
+    // Not sent: unknown (NaN), not zero; τ_total counts τ_fx only where it is known.
+    QCOMPARE(std::isnan(s.tau_fx), !effects);
+    QCOMPARE(std::isnan(s.tau_pc), !passivity);
+    QCOMPARE(std::isnan(s.pc_reserve), !passivity);
+    const double fx = effects ? double(0.03f) : 0.0;
+    QCOMPARE(s.tau_total, double(-0.02f) + fx + double(0.01f));
+    if (effects)
+        QCOMPARE(s.tau_fx, double(0.03f));
+    if (passivity) {
+        QCOMPARE(s.tau_pc, double(-0.004f));
+        QCOMPARE(s.pc_reserve, double(0.0125f));
+    }
+}
+
 void TestSampleBuilder::legacyIsEstimatedFromTheModel_data()
 {
     QTest::addColumn<int>("ticks");
@@ -206,6 +251,7 @@ void TestSampleBuilder::legacyIsEstimatedFromTheModel()
     QCOMPARE(s.theta, conv.ticksToRad(ticks));
     QVERIFY(std::isnan(s.omega));
     QVERIFY(std::isnan(s.tau));
+    QVERIFY(std::isnan(s.tau_fx) && std::isnan(s.tau_pc) && std::isnan(s.pc_reserve));
     QCOMPARE(s.tau_rec, recenteringTorque(DeviceParams(), s.theta));
     QCOMPARE(s.tau_ext, tauExt);
     QCOMPARE(s.tau_total, std::clamp(s.tau_rec + tauExt, -0.44, 0.44));

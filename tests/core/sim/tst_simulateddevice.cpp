@@ -143,6 +143,8 @@ private Q_SLOTS:
     void fullQueueDropsTelemetryAsSeqGap();
     void idealMatchesModel_data();
     void idealMatchesModel();
+    void cycleSample_data();
+    void cycleSample();
     void setHandRestartsTimeBase();
     void plantSettlesAtSpringEquilibrium_data();
     void plantSettlesAtSpringEquilibrium();
@@ -792,6 +794,36 @@ void TestSimulatedDevice::idealMatchesModel()
     QVERIFY(std::abs(s.theta - p.theta0) > 0.01); // the input actually moved the knob
     if (feedback != 0)
         QVERIFY(saturated > 0);
+}
+
+void TestSimulatedDevice::cycleSample_data()
+{
+    QTest::addColumn<double>("rate");
+    QTest::newRow("1 kHz") << 1000.0;
+    QTest::newRow("3 kHz: periods not whole µs") << 3000.0;
+    QTest::newRow("70 Hz") << 70.0;
+}
+
+void TestSimulatedDevice::cycleSample()
+{
+    QFETCH(double, rate);
+    SimulatedDevice::Config c = fastConfig();
+    c.controlRateHz = rate;
+    c.hand = handOf(u"sine:0.08:3"_s);
+    SimulatedDevice device(c);
+    for (int k = 0; k < int(rate); ++k) {
+        const SimulatedDevice::Cycle cycle = device.step();
+        const Sample s = cycle.toSample();
+        const auto where = qPrintable(u"step %1"_s.arg(k));
+        QVERIFY2(s.t_s == cycle.t, where);
+        // The device clock: 32-bit microseconds of the cycle's time, wrapping.
+        QVERIFY2(s.t_us == quint32(quint64(std::llround(cycle.t * 1e6))), where);
+        QVERIFY2(s.theta == cycle.theta && s.omega == cycle.omega && s.tau == cycle.tau, where);
+        QVERIFY2(s.tau_rec == cycle.tau_rec && s.tau_ext == cycle.tau_ext, where);
+        QVERIFY2(s.tau_fx == cycle.tau_fx && s.tau_total == cycle.tau_total, where);
+        QVERIFY2(s.tau_pc == cycle.tau_pc && s.pc_reserve == cycle.pc_reserve, where);
+        QVERIFY2(s.flags == cycle.flags && s.v_ref == 0 && s.p_ref == 0, where);
+    }
 }
 
 void TestSimulatedDevice::setHandRestartsTimeBase()
