@@ -1,5 +1,6 @@
 #include "v2driver.h"
 
+#include "model/cyclequantities.h"
 #include "session/commandqueue.h"
 #include "session/linkstatistics.h"
 #include "session/samplepipeline.h"
@@ -8,6 +9,7 @@
 #include <QLoggingCategory>
 
 #include <cmath>
+#include <type_traits>
 
 Q_LOGGING_CATEGORY(lcV2, "hatpic.device.v2", QtWarningMsg)
 
@@ -125,11 +127,15 @@ void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &received)
         return;
     // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:
     // such a frame is counted and skipped, never integrated.
-    if (!std::isfinite(telemetry.theta) || !std::isfinite(telemetry.omega) ||
-        !std::isfinite(telemetry.tau) || !std::isfinite(telemetry.tau_rec) ||
-        !std::isfinite(telemetry.tau_ext) || !std::isfinite(telemetry.tau_fx.value_or(0.0f)) ||
-        !std::isfinite(telemetry.tau_pc.value_or(0.0f)) ||
-        !std::isfinite(telemetry.pc_reserve.value_or(0.0f))) {
+    bool finite = true;
+    forEachCycleQuantity<v2::Telemetry>([&](const CycleQuantity &, auto member) {
+        const auto &value = telemetry.*member;
+        if constexpr (requires { value.value_or(0.0f); }) // a quantity not sent is no harm
+            finite = finite && std::isfinite(value.value_or(0.0f));
+        else if constexpr (std::is_floating_point_v<std::remove_cvref_t<decltype(value)>>)
+            finite = finite && std::isfinite(value);
+    });
+    if (!finite) {
         m_links.statistics.countNonFinite();
         return;
     }
