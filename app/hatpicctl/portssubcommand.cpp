@@ -4,7 +4,7 @@
 #include "subcommand.h"
 #include "subcommands.h"
 
-#include "sim/simulatedjoystick.h"
+#include "sim/simportname.h"
 
 #include <QCommandLineParser>
 #include <QSerialPortInfo>

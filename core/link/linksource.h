@@ -1,6 +1,7 @@
-// What a session connects through. The program makes it — the serial port it was told, or the
-// in-process simulator (sim/simulatedjoystick.h) — and hands it to the session in its
-// ConnectOptions; the session makes a fresh link from it each time it (re)opens.
+// What a session connects through when it is not a serial port: the program makes it (the
+// in-process simulator is sim/simulatedjoystick.h) and hands it to the session in its
+// ConnectOptions; the session makes a fresh link from it each time it (re)opens. Without one
+// the session opens the serial port ConnectOptions::port names.
 #pragma once
 
 #include <QtGlobal>

@@ -18,8 +18,10 @@ ByteLink *SimulatedJoystick::makeLink(qint32 baud, QObject *parent)
 {
     Q_UNUSED(baud);
     auto *link = new SimLink(config(), parent);
-    // The link lives on the session's thread: a hand moved here reaches it queued, in order.
+    // The link lives on the session's thread: a hand moved here reaches it queued, in order; one
+    // moved while the link was being made is taken now.
     connect(this, &SimulatedJoystick::handChanged, link, &SimLink::setHand);
+    link->setHand(hand());
     const QMutexLocker lock(&m_mutex);
     m_link = link;
     return link;

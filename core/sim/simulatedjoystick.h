@@ -6,6 +6,7 @@
 #include "link/linksource.h"
 #include "protocol/deviceinfo.h"
 #include "sim/handinput.h"
+#include "sim/simportname.h"
 #include "sim/simulateddevice.h"
 
 #include <QMutex>
@@ -15,10 +16,6 @@
 namespace hatpic {
 
 class SimLink;
-
-//! The port name with which a user picks the simulated joystick ("--port sim", the connection
-//! bar); the programs read it, the session never does.
-inline constexpr char16_t kSimPortName[] = u"sim";
 
 class SimulatedJoystick : public QObject, public LinkSource
 {

@@ -1,5 +1,5 @@
 #include "connection/connectionbar.h"
-#include "sim/simulatedjoystick.h"
+#include "sim/simportname.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

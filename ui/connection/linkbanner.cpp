@@ -1,7 +1,7 @@
 #include "connection/linkbanner.h"
 
 #include "session/sessionwording.h"
-#include "sim/simulatedjoystick.h"
+#include "sim/simportname.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

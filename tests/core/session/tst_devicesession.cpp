@@ -202,6 +202,7 @@ private Q_SLOTS:
     void detectsOverPty_data();
     void detectsOverPty();
     void openFailureNamesThePort();
+    void theLinkIsTheCallers();
     void stalledPortKeepsWriteBufferBounded();
 };
 
@@ -866,6 +867,41 @@ void TestDeviceSession::openFailureNamesThePort()
     QCOMPARE(error.port, o.port);
     QVERIFY(!error.error.isEmpty());
     QVERIFY(h.sawState(SessionState::Opening));
+}
+
+// The session reads nothing into the port's name: "sim" without a link is a serial port that
+// does not exist, and whether the device is simulated is what its link says.
+void TestDeviceSession::theLinkIsTheCallers()
+{
+    {
+        Harness h;
+        ConnectOptions o;
+        o.port = QString::fromUtf16(kSimPortName);
+        h.session.connectDevice(o);
+        QCOMPARE(h.session.state(), SessionState::Disconnected);
+        const StateDetail error = h.detailOf(SessionState::Disconnected);
+        QCOMPARE(error.kind, StateDetail::Kind::OpenFailed);
+        QVERIFY(!error.simulated);
+    }
+    // A link of the caller's own that says it is hardware: a simulator's bytes, not its name.
+    struct Hardware : LinkSource
+    {
+        ByteLink *makeLink(qint32, QObject *parent) override { return new SimLink({}, parent); }
+        bool simulated() const override { return false; }
+    };
+    for (const bool simulated : {false, true}) {
+        Harness h;
+        ConnectOptions o = test::simulatorOptions();
+        if (!simulated)
+            o.link = std::make_shared<Hardware>();
+        o.port = u"the caller's link"_s;
+        h.session.connectDevice(o);
+        QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
+        QCOMPARE(h.session.deviceInfo().simulated, simulated);
+        QCOMPARE(h.detailOf(SessionState::Connected).simulated, simulated);
+        QCOMPARE(h.detailOf(SessionState::Connected).port, o.port);
+        QTRY_VERIFY_WITH_TIMEOUT(!h.samples.isEmpty(), kConnectTimeoutMs);
+    }
 }
 
 void TestDeviceSession::stalledPortKeepsWriteBufferBounded()

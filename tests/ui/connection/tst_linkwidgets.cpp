@@ -2,7 +2,7 @@
 #include "connection/linkbanner.h"
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
-#include "sim/simulatedjoystick.h"
+#include "sim/simportname.h"
 
 #include <QLabel>
 #include <QTest>
