@@ -8,6 +8,8 @@
 #include <csignal>
 #include <ctime>
 #include <fcntl.h>
+#include <iterator>
+#include <memory>
 #include <unistd.h>
 
 namespace hatpic {
@@ -18,7 +20,8 @@ constexpr int kFatalWaitMs = 2000; //!< longest wait for another thread's emerge
 
 int g_signalPipe[2] = {-1, -1};
 int g_reportPipe[2] = {-1, -1};
-int g_quitSignal = 0; //!< main thread only
+int g_interruptPipe[2] = {-1, -1}; //!< made once, kept: a late signal still has somewhere to go
+int g_quitSignal = 0;              //!< main thread only
 
 std::atomic<void (*)()> g_fatalAction{nullptr};
 std::atomic<int> g_fatalState{0}; //!< 0 none yet, 1 an action runs, 2 it ran
@@ -42,6 +45,11 @@ void onReport(int signal)
     wake(g_reportPipe[1], signal);
 }
 
+void onInterrupt(int signal)
+{
+    wake(g_interruptPipe[1], signal);
+}
+
 void onFatal(int signal)
 {
     int idle = 0;
@@ -60,11 +68,12 @@ void onFatal(int signal)
     ::raise(signal);
 }
 
-// A notifier on the read end of `fds` that drains it and calls `then` with the first byte.
-void watchPipe(const int (&fds)[2], std::function<void(int)> then)
+// A notifier on the read end of `fds`, owned by `owner`, that drains it and calls `then` with
+// the first byte.
+QSocketNotifier *watchPipe(const int (&fds)[2], std::function<void(int)> then,
+                           QObject *owner = QCoreApplication::instance())
 {
-    auto *notifier =
-        new QSocketNotifier(qintptr(fds[0]), QSocketNotifier::Read, QCoreApplication::instance());
+    auto *notifier = new QSocketNotifier(qintptr(fds[0]), QSocketNotifier::Read, owner);
     QObject::connect(notifier, &QSocketNotifier::activated, notifier,
                      [fd = fds[0], then = std::move(then)] {
                          unsigned char bytes[16];
@@ -75,16 +84,20 @@ void watchPipe(const int (&fds)[2], std::function<void(int)> then)
                          }
                          then(first);
                      });
+    return notifier;
 }
 
-void handle(int signal, void (*handler)(int), int flags = SA_RESTART)
+void handle(int signal, void (*handler)(int), int flags = SA_RESTART,
+            struct sigaction *previous = nullptr)
 {
     struct sigaction action = {};
     action.sa_handler = handler;
     sigemptyset(&action.sa_mask);
     action.sa_flags = flags;
-    ::sigaction(signal, &action, nullptr);
+    ::sigaction(signal, &action, previous);
 }
+
+constexpr int kInterrupts[] = {SIGINT, SIGTERM, SIGHUP};
 
 void ignore(int signal)
 {
@@ -140,6 +153,35 @@ bool reportOnSignal(std::function<void()> report)
     watchPipe(g_reportPipe, [report = std::move(report)](int) { report(); });
     handle(SIGUSR1, onReport);
     return true;
+}
+
+struct InterruptsCall::Installed
+{
+    std::unique_ptr<QSocketNotifier> notifier;
+    struct sigaction previous[std::size(kInterrupts)] = {};
+};
+
+InterruptsCall::InterruptsCall(std::function<void()> then)
+{
+    if (g_interruptPipe[0] < 0 && ::pipe2(g_interruptPipe, O_CLOEXEC | O_NONBLOCK) != 0)
+        return;
+    m_installed = std::make_unique<Installed>();
+    m_installed->notifier.reset(watchPipe(
+        g_interruptPipe, [then = std::move(then)](int) { then(); }, nullptr));
+    for (std::size_t i = 0; i < std::size(kInterrupts); ++i)
+        handle(kInterrupts[i], onInterrupt, SA_RESTART, &m_installed->previous[i]);
+}
+
+InterruptsCall::~InterruptsCall()
+{
+    if (!m_installed)
+        return;
+    for (std::size_t i = 0; i < std::size(kInterrupts); ++i)
+        ::sigaction(kInterrupts[i], &m_installed->previous[i], nullptr);
+    // What arrived meanwhile belonged to this run: the next one starts clean.
+    unsigned char bytes[16];
+    while (::read(g_interruptPipe[0], bytes, sizeof bytes) > 0) {
+    }
 }
 
 } // namespace hatpic

@@ -1,10 +1,12 @@
 // Signals for the programs that run until stopped (hatpic-sim, hatpic-fw-host,
 // hatpic-servo-sim): every signal that would end the program ends it in order, through the
 // event loop, or — when it cannot wait for the loop — after an async-signal-safe emergency
-// action (the knob left without force, the --link symlink removed).
+// action (the knob left without force, the --link symlink removed). And an interrupt that a
+// program's run turns into an orderly end of that run (InterruptsCall).
 #pragma once
 
 #include <functional>
+#include <memory>
 
 namespace hatpic {
 
@@ -32,5 +34,22 @@ void onFatalSignal(void (*action)());
 //! Runs `report` on the event loop each time SIGUSR1 arrives (hatpic-sim's fault summary).
 //! Same self-pipe technique; call once, after quitOnSignals().
 bool reportOnSignal(std::function<void()> report);
+
+//! While it lives, SIGINT, SIGTERM and SIGHUP do not end the program: each calls `then` on the
+//! event loop, at once (the handlers only write to a self-pipe, which a QSocketNotifier
+//! watches). The handlers that were in place come back when it goes. One at a time; after the
+//! QCoreApplication exists. hatpicctl's `stream` and `experiment` end their run this way.
+class InterruptsCall
+{
+public:
+    explicit InterruptsCall(std::function<void()> then);
+    ~InterruptsCall();
+    InterruptsCall(const InterruptsCall &) = delete;
+    InterruptsCall &operator=(const InterruptsCall &) = delete;
+
+private:
+    struct Installed;
+    std::unique_ptr<Installed> m_installed; //!< null when the pipe could not be made
+};
 
 } // namespace hatpic

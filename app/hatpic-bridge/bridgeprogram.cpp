@@ -107,7 +107,7 @@ void BridgeProgram::onConnected()
         m_bridge.releaseFeedback();
     }
     if (m_options.profile && m_client.deviceInfo().canSetParams())
-        m_client.pushTuning({m_options.profile->device, std::nullopt});
+        m_client.request(request::Push{{m_options.profile->device, std::nullopt}});
 }
 
 void BridgeProgram::printStats()

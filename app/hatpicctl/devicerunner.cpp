@@ -4,6 +4,7 @@
 #include "console.h"
 #include "session/sessionwording.h"
 
+#include "model/overloaded.h"
 #include "model/params.h"
 #include "telemetry/numbertext.h"
 
@@ -18,10 +19,6 @@ namespace hatpic::cli {
 
 namespace {
 
-//! runFor()'s stop condition may read what no signal announces (a SIGINT flag, a clock):
-//! it is also checked this often. A command's outcome and the client's signals wake a wait at
-//! once.
-constexpr int kPollMs = 50;
 constexpr int kResultAfterLossMs = 500; //!< wait for a command's result once the link is lost
 
 QString portText(const ConnectOptions &options)
@@ -84,17 +81,17 @@ DeviceRunner::Wait DeviceRunner::wait(const std::function<bool()> &done, double 
             loop.quit();
         }
     };
+    // Everything the client reports; a caller's own slots, connected before, have run.
     QObject::connect(&m_client, &DeviceClient::stateChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::deviceInfoChanged, &loop, check);
     QObject::connect(&m_client, &DeviceClient::deviceTuningChanged, &loop, check);
-    QObject::connect(&m_client, &DeviceClient::recordingChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::samplesReady, &loop, check);
     QObject::connect(&m_client, &DeviceClient::statsUpdated, &loop, check);
-    m_wake = check; // a command's outcome, given to runCommand() alone
+    QObject::connect(&m_client, &DeviceClient::recordingChanged, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::deviceLog, &loop, check);
+    QObject::connect(&m_client, &DeviceClient::notice, &loop, check);
+    m_wake = check; // wake(), and a request's outcome, given to runCommand() alone
     const auto unwake = qScopeGuard([this] { m_wake = nullptr; });
-
-    QTimer poll;
-    QObject::connect(&poll, &QTimer::timeout, &loop, check);
-    poll.start(kPollMs);
 
     QTimer deadline;
     deadline.setSingleShot(true);
@@ -108,6 +105,12 @@ DeviceRunner::Wait DeviceRunner::wait(const std::function<bool()> &done, double 
 
     loop.exec();
     return outcome;
+}
+
+void DeviceRunner::wake()
+{
+    if (m_wake)
+        m_wake();
 }
 
 int DeviceRunner::reportLoss() const
@@ -164,28 +167,25 @@ int DeviceRunner::connect()
     return ExitNoDevice;
 }
 
-int DeviceRunner::runCommand(const std::function<void(DeviceClient &, CommandDone)> &issue,
-                             CommandResult *result)
+int DeviceRunner::runCommand(const Request &request, Outcome *outcome)
 {
     // The outcome comes to this call alone; `waiter` ends with it, so a late one (after a
     // timeout) goes nowhere.
     QObject waiter;
-    std::optional<CommandResult> finished;
-    issue(m_client, {&waiter, [&](const CommandResult &r) {
-                         finished = r;
-                         if (m_wake)
-                             m_wake();
-                     }});
-    const Wait outcome = wait([&] { return finished.has_value(); }, m_options.timeoutS);
-
-    switch (outcome) {
+    std::optional<Outcome> finished;
+    m_client.request(request, {&waiter, [&](const Outcome &o) {
+                                   finished = o;
+                                   if (m_wake)
+                                       m_wake();
+                               }});
+    switch (wait([&] { return finished.has_value(); }, m_options.timeoutS)) {
     case Wait::Done:
-        if (result)
-            *result = *finished;
+        if (outcome)
+            *outcome = *finished;
         return ExitSuccess;
     case Wait::Lost:
         // The session fails the command in flight with the loss, just after or before telling
-        // the loss: its result says what a push had changed by then (the caller tells it).
+        // the loss: its outcome says what a push had changed by then (the caller tells it).
         if (!finished) {
             QEventLoop loop;
             QTimer::singleShot(kResultAfterLossMs, &loop, &QEventLoop::quit);
@@ -193,8 +193,8 @@ int DeviceRunner::runCommand(const std::function<void(DeviceClient &, CommandDon
             loop.exec();
             m_wake = nullptr;
         }
-        if (result && finished)
-            *result = *finished;
+        if (outcome && finished)
+            *outcome = *finished;
         return reportLoss();
     case Wait::TimedOut:
         break;
@@ -215,28 +215,23 @@ int DeviceRunner::runFor(double seconds, const std::function<bool()> &stop)
     return ExitNoDevice;
 }
 
-int DeviceRunner::reportResult(const CommandResult &result)
+int DeviceRunner::reportOutcome(const Outcome &outcome)
 {
-    using Status = CommandResult::Status;
-    if (result.status == Status::Ok)
+    if (outcome.ok())
         return ExitSuccess;
-
-    const QString sentence = SessionWording::commandFailure(result).trimmed();
-    printError(asSentence(sentence));
-
-    switch (result.status) {
-    case Status::Ok:
-        return ExitSuccess;
-    case Status::Rejected:
-    case Status::Unsupported:
-        return ExitRejected;
-    case Status::Timeout:
-    case Status::NotConnected:
-        return ExitNoDevice;
-    case Status::Invalid:
-        return ExitBadUsage;
-    }
-    return ExitRejected;
+    printError(asSentence(SessionWording::commandFailure(outcome).trimmed()));
+    // Every ending named: a new one does not compile until it has its code.
+    return std::visit(Overloaded{
+                          [](const outcome::Done &) { return ExitSuccess; },
+                          [](const outcome::Refused &) { return ExitRejected; },
+                          [](const outcome::Unsupported &) { return ExitRejected; },
+                          [](const outcome::TimedOut &) { return ExitNoDevice; },
+                          [](const outcome::Cut &) { return ExitNoDevice; },
+                          [](const outcome::NotConnected &) { return ExitNoDevice; },
+                          [](const outcome::Invalid &) { return ExitBadUsage; },
+                          [](const outcome::QueueFull &) { return ExitBadUsage; },
+                      },
+                      outcome.result);
 }
 
 } // namespace hatpic::cli

@@ -29,22 +29,23 @@ public:
 
     //! Opens the port and waits until the session reports Connected.
     int connect();
-    //! Issues one command (`issue` gives the client's command the CommandDone it is handed)
-    //! and waits for its outcome. The result is stored in `*result` when given, whatever its
-    //! status — also when the link was lost (the loss is reported and ExitNoDevice returned),
-    //! if the result came.
-    int runCommand(const std::function<void(DeviceClient &, CommandDone)> &issue,
-                   CommandResult *result = nullptr);
+    //! Sends `request` and waits for its outcome, which is stored in `*outcome` when given,
+    //! whatever it is — also when the link was lost (the loss is reported and ExitNoDevice
+    //! returned), if the outcome came.
+    int runCommand(const Request &request, Outcome *outcome = nullptr);
     //! Lets the link run for `seconds` (≤ 0: no limit) or until `stop()` returns true; `stop`
-    //! is checked whenever the client reports something and at least every 50 ms. A lost link
-    //! gives ExitNoDevice *without* printing, so the caller can report first; then it calls
-    //! reportLoss().
+    //! is checked whenever the client reports anything and when wake() is called — nothing
+    //! polls it. A lost link gives ExitNoDevice *without* printing, so the caller can report
+    //! first; then it calls reportLoss().
     int runFor(double seconds, const std::function<bool()> &stop);
+    //! What a running wait's condition reads changed without the client saying so (an
+    //! interrupt, an experiment's end): it is checked now. Nothing when no wait runs.
+    void wake();
     //! Prints why the link went away; returns ExitNoDevice.
     int reportLoss() const;
 
-    //! Exit code for a command outcome (0, 2, 3 or 4); prints its sentence unless Ok.
-    static int reportResult(const CommandResult &result);
+    //! Exit code for a request's outcome (0, 2, 3 or 4); prints its sentence unless done.
+    static int reportOutcome(const Outcome &outcome);
 
 private:
     enum class Wait { Done, TimedOut, Lost };
@@ -58,7 +59,7 @@ private:
     bool m_closing = false; //!< we asked to disconnect; a Disconnected state is expected
     bool m_lost = false;    //!< the link went away (or never came up)
     QString m_lostDetail;   //!< the session's reason
-    //! While a wait runs: re-checks its condition at once (a command's outcome has come).
+    //! While a wait runs: re-checks its condition at once (wake(), a request's outcome).
     std::function<void()> m_wake;
 };
 

@@ -1,6 +1,7 @@
 // hatpicctl experiment: a step, a frequency response or a spectrum measured on the device,
 // printed next to the model's figures (docs/experiments.md).
 #include "common/exitcodes.h"
+#include "common/quitonsignal.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
@@ -18,9 +19,7 @@
 #include <QFile>
 #include <QFileInfo>
 
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <optional>
 
 namespace hatpic::cli {
@@ -28,31 +27,6 @@ namespace hatpic::cli {
 using namespace Qt::StringLiterals;
 
 namespace {
-
-std::atomic<bool> g_stop{false}; // SIGINT / SIGTERM / SIGHUP: cancel, τ_ext back to 0
-
-//! While it lives, an interrupt sets g_stop instead of ending the program.
-class CancelOnInterrupt
-{
-public:
-    CancelOnInterrupt()
-    {
-        g_stop.store(false);
-        for (int i = 0; i < 3; ++i)
-            m_previous[i] = std::signal(kSignals[i], [](int) { g_stop.store(true); });
-    }
-    ~CancelOnInterrupt()
-    {
-        for (int i = 0; i < 3; ++i)
-            std::signal(kSignals[i], m_previous[i]);
-    }
-    CancelOnInterrupt(const CancelOnInterrupt &) = delete;
-    CancelOnInterrupt &operator=(const CancelOnInterrupt &) = delete;
-
-private:
-    static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
-    void (*m_previous[3])(int) = {};
-};
 
 //! Options that override the plan's defaults: name → the field it sets.
 struct NumberOption
@@ -223,10 +197,10 @@ protected:
             printError(why);
             return ExitRejected;
         }
-        CommandResult read;
-        if (const int code = runner.runCommand(&DeviceClient::readTuning, &read); code)
+        Outcome read;
+        if (const int code = runner.runCommand(request::Read{}, &read); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(read); code)
+        if (const int code = DeviceRunner::reportOutcome(read); code)
             return code;
 
         ExperimentPlan plan =
@@ -243,8 +217,10 @@ protected:
             std::dynamic_pointer_cast<SimulatedJoystick>(runner.options().connect.link);
         ExperimentRunner experiment(client, simulator.get());
         std::optional<ExperimentResult> result;
-        QObject::connect(&experiment, &ExperimentRunner::finished,
-                         [&](const ExperimentResult &r) { result = r; });
+        QObject::connect(&experiment, &ExperimentRunner::finished, [&](const ExperimentResult &r) {
+            result = r;
+            runner.wake();
+        });
         if (const QString why = experiment.start(plan); !why.isEmpty()) {
             printError(why);
             return ExitBadUsage;
@@ -256,12 +232,9 @@ protected:
                        : u"keep hands off the knob."_s));
         int code = ExitSuccess;
         {
-            const CancelOnInterrupt interrupts;
-            code = runner.runFor(0, [&] {
-                if (g_stop.load())
-                    experiment.cancel(); // reports Cancelled at once
-                return result.has_value();
-            });
+            // SIGINT, SIGTERM, SIGHUP: cancelled (it reports Cancelled at once), τ_ext back to 0.
+            const InterruptsCall interrupts([&] { experiment.cancel(); });
+            code = runner.runFor(0, [&] { return result.has_value(); });
         }
         if (!result) {
             experiment.cancel();

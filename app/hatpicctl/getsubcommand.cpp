@@ -47,10 +47,10 @@ protected:
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
-        CommandResult result;
-        if (const int code = runner.runCommand(&DeviceClient::readTuning, &result); code)
+        Outcome result;
+        if (const int code = runner.runCommand(request::Read{}, &result); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(result); code)
+        if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
         // A device reporting NaN or values that break model.md is not printed as a profile
         // (nor as a table that looks fine): it is refused with what is wrong, block by block.

@@ -29,10 +29,10 @@ protected:
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         Q_UNUSED(parser);
-        CommandResult result;
-        if (const int code = runner.runCommand(&DeviceClient::saveParams, &result); code)
+        Outcome result;
+        if (const int code = runner.runCommand(request::Save{}, &result); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(result); code)
+        if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
         printNote(QStringLiteral("The device saved its parameters."));
         return ExitSuccess;

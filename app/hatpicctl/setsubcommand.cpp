@@ -197,20 +197,15 @@ protected:
                                  (assigns(Part::Passivity) && !info.hasPassivity());
         if (refusedPart) {
             // The session refuses it with the reason (legacy, or no capability); nothing sent.
-            CommandResult refused;
+            Outcome refused;
             DeviceTuning none{std::nullopt, std::nullopt};
             if (wantsEffects && !info.hasEffects())
                 none.effects = EffectParams{};
             else
                 none.passivity = PassivityParams{};
-            if (const int code = runner.runCommand(
-                    [&none](DeviceClient &client, CommandDone then) {
-                        client.pushTuning(none, std::move(then));
-                    },
-                    &refused);
-                code)
+            if (const int code = runner.runCommand(request::Push{none}, &refused); code)
                 return code;
-            return DeviceRunner::reportResult(refused);
+            return DeviceRunner::reportOutcome(refused);
         }
         if (m_profile && !info.hasPassivity() &&
             !sameOnWire(m_profile->passivity, PassivityParams{}))
@@ -220,10 +215,10 @@ protected:
 
         DeviceTuning held; // what --set starts from without a profile: the device's own
         if (!m_profile) {
-            CommandResult read;
-            if (const int code = runner.runCommand(&DeviceClient::readTuning, &read); code)
+            Outcome read;
+            if (const int code = runner.runCommand(request::Read{}, &read); code)
                 return code;
-            if (const int code = DeviceRunner::reportResult(read); code)
+            if (const int code = DeviceRunner::reportOutcome(read); code)
                 return code;
             held = read.received;
         }
@@ -257,12 +252,8 @@ protected:
         // Shown as `get` shows it: the read-back of the push, else what was read before.
         DeviceTuning shown = runner.client().deviceTuning();
         if (tuning.params || tuning.effects || tuning.passivity) {
-            CommandResult result;
-            const int code = runner.runCommand(
-                [&tuning](DeviceClient &client, CommandDone then) {
-                    client.pushTuning(tuning, std::move(then));
-                },
-                &result);
+            Outcome result;
+            const int code = runner.runCommand(request::Push{tuning}, &result);
             if (code) {
                 // The link went after part of the push: say what it had changed.
                 if (const QString applied = SessionWording::appliedBeforeFailure(result);
@@ -271,14 +262,15 @@ protected:
                 writeInForce(shown, result, info, parser);
                 return code;
             }
-            if (const int refused = DeviceRunner::reportResult(result); refused) {
+            if (const int refused = DeviceRunner::reportOutcome(result); refused) {
                 writeInForce(shown, result, info, parser);
                 return refused;
             }
             const DeviceTuning &back = result.received;
-            noteAccepted(result.sent.params, back.params, kParamsWords);
-            noteAccepted(result.sent.effects, back.effects, kEffectsWords);
-            noteAccepted(result.sent.passivity, back.passivity, kPassivityWords);
+            const DeviceTuning &sent = *result.pushed();
+            noteAccepted(sent.params, back.params, kParamsWords);
+            noteAccepted(sent.effects, back.effects, kEffectsWords);
+            noteAccepted(sent.passivity, back.passivity, kPassivityWords);
             shown = shown.updatedBy(back);
         }
         writeOut(
@@ -303,14 +295,14 @@ private:
     //! read-back where it came), so a script sees the device's state; the blocks after the
     //! failed step are left out when it leaves them unknown. Nothing when the push changed
     //! nothing.
-    static void writeInForce(const DeviceTuning &before, const CommandResult &result,
+    static void writeInForce(const DeviceTuning &before, const Outcome &result,
                              const DeviceInfo &info, const QCommandLineParser &parser)
     {
-        const DeviceTuning applied = appliedBeforeFailure(result);
-        if (!applied.params && !applied.effects && !applied.passivity)
+        const outcome::Stopped *stop = result.stopped();
+        if (!stop || (!stop->applied.params && !stop->applied.effects && !stop->applied.passivity))
             return;
-        DeviceTuning inForce = shownBlocks(before.updatedBy(applied), info);
-        if (const auto step = unansweredBlockStep(result); step == CommandKind::SetEffects)
+        DeviceTuning inForce = shownBlocks(before.updatedBy(stop->applied), info);
+        if (const auto step = result.unknownStep(); step == CommandKind::SetEffects)
             inForce.effects.reset();
         else if (step == CommandKind::SetPassivity)
             inForce.passivity.reset();

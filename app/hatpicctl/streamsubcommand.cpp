@@ -1,5 +1,6 @@
 // hatpicctl stream: telemetry to stdout or to a recording, then the link statistics.
 #include "common/exitcodes.h"
+#include "common/quitonsignal.h"
 #include "console.h"
 #include "devicerunner.h"
 #include "devicesubcommand.h"
@@ -16,9 +17,7 @@
 #include <QFile>
 #include <QFileInfo>
 
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <optional>
 
 namespace hatpic::cli {
@@ -26,13 +25,6 @@ namespace hatpic::cli {
 using namespace Qt::StringLiterals;
 
 namespace {
-
-std::atomic<bool> g_interrupted{false}; // set by SIGINT / SIGTERM / SIGHUP
-
-void onInterrupt(int)
-{
-    g_interrupted.store(true);
-}
 
 constexpr int kDefaultRateHz = 1000;
 
@@ -143,10 +135,10 @@ protected:
 
         // The tuning in force, for the recording's metadata (legacy cannot tell).
         if (info.canSetParams()) {
-            CommandResult read;
-            if (const int code = runner.runCommand(&DeviceClient::readTuning, &read); code)
+            Outcome read;
+            if (const int code = runner.runCommand(request::Read{}, &read); code)
                 return code;
-            if (const int code = DeviceRunner::reportResult(read); code)
+            if (const int code = DeviceRunner::reportOutcome(read); code)
                 return code;
         }
 
@@ -207,19 +199,20 @@ protected:
         QObject::connect(&client, &DeviceClient::statsUpdated, &context,
                          [&](const LinkStats &) { ++m_statsUpdates; });
 
-        g_interrupted.store(false);
-        const auto previousInt = std::signal(SIGINT, onInterrupt);
-        const auto previousTerm = std::signal(SIGTERM, onInterrupt);
-        const auto previousHup = std::signal(SIGHUP, onInterrupt);
+        bool interrupted = false; // SIGINT, SIGTERM, SIGHUP: the stream ends in order
+        int code = ExitSuccess;
         QElapsedTimer elapsed;
         elapsed.start();
-        const int code = runner.runFor(
-            m_duration, [&] { return g_interrupted.load() || recordingFailed || stdoutClosed; });
+        {
+            const InterruptsCall interrupts([&] {
+                interrupted = true;
+                runner.wake();
+            });
+            code = runner.runFor(m_duration,
+                                 [&] { return interrupted || recordingFailed || stdoutClosed; });
+        }
         const double seconds = elapsed.nsecsElapsed() * 1e-9;
         QObject::disconnect(&client, &DeviceClient::samplesReady, &context, nullptr);
-        std::signal(SIGINT, previousInt);
-        std::signal(SIGTERM, previousTerm);
-        std::signal(SIGHUP, previousHup);
 
         // The recording covers the requested duration, not the wait for statistics below.
         RecordingStatus recorded = client.recordingStatus();

@@ -96,16 +96,11 @@ protected:
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         Q_UNUSED(parser);
-        CommandResult result;
+        Outcome result;
         const Vibration cue = m_cue;
-        if (const int code = runner.runCommand(
-                [&cue](DeviceClient &client, CommandDone then) {
-                    client.vibrate(cue, std::move(then));
-                },
-                &result);
-            code)
+        if (const int code = runner.runCommand(request::Vibrate{cue}, &result); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(result); code)
+        if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
         printNote(u"The device plays the cue: " + compactNumberText(cue.amplitude) + u" N·m at " +
                   compactNumberText(cue.frequency) + u" Hz for " + compactNumberText(cue.duration) +

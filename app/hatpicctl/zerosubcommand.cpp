@@ -40,10 +40,10 @@ protected:
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
-        CommandResult result;
-        if (const int code = runner.runCommand(&DeviceClient::zero, &result); code)
+        Outcome result;
+        if (const int code = runner.runCommand(request::Zero{}, &result); code)
             return code;
-        if (const int code = DeviceRunner::reportResult(result); code)
+        if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
         const DeviceParams params = result.received.params.value_or(DeviceParams{});
         printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");

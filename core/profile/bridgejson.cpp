@@ -24,7 +24,7 @@ QByteArray text(const std::string &s)
 QByteArray valueJson(const BridgeSettings &s, const bridge::SettingPlace &place)
 {
     return std::visit(
-        bridge::Overloaded{
+        Overloaded{
             [&](std::string bridge::Topics::*m) { return text(s.topics.*m); },
             [&](std::string BridgeSettings::*m) { return text(s.*m); },
             [&](double BridgeSettings::*m) { return jsonNumber(s.*m); },
@@ -59,7 +59,7 @@ QString readValue(const QJsonValue &v, const bridge::SettingPlace &place, Bridge
     const double d = v.toDouble(std::nan(""));
     const auto c = Component::parse(t);
     return std::visit(
-        bridge::Overloaded{
+        Overloaded{
             [&](std::string bridge::Topics::*m) {
                 return take(s.topics.*m, v.isString(), t, "must be a string");
             },

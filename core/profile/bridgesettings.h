@@ -2,6 +2,7 @@
 // Plain values with their defaults; no DDS, no Qt.
 #pragma once
 
+#include "model/overloaded.h"
 #include "model/params.h"
 
 #include <array>
@@ -136,14 +137,6 @@ struct SettingRange
     bool aboveLow;         //!< low itself is outside
     std::string_view unit; //!< after the range in messages: "Hz"
 };
-
-//! One function per kind of place, for std::visit: Overloaded{[](AxisPlace) {…}, …}.
-template<typename... F> struct Overloaded : F...
-{
-    using F::operator()...;
-};
-// Spelled out for compilers without C++20's aggregate deduction (clang 14, the fuzz build's).
-template<typename... F> Overloaded(F...) -> Overloaded<F...>;
 
 //! One setting, described once: the profile's JSON (profile.md), hatpic-bridge's options and
 //! config file (ros.md) and validate() all follow from it. Defaults are BridgeSettings' own.

@@ -83,7 +83,7 @@ std::string applyOption(const RobotSimOption &option, RobotSimSettings &s, const
         return {};
     };
     return std::visit(
-        bridge::Overloaded{
+        Overloaded{
             [&](const TopicPlace &p) -> std::string {
                 s.*p.member = text;
                 return {};

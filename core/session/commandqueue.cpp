@@ -13,12 +13,10 @@ namespace hatpic {
 
 namespace {
 
-using Status = CommandResult::Status;
-using Reason = CommandResult::Reason;
-
 //! The frame of `cmd`'s step in flight.
 QByteArray encode(const Command &cmd)
 {
+    const DeviceTuning *tuning = cmd.pushed();
     switch (cmd.stepKind()) {
     case CommandKind::Hello:
         // Led by a delimiter, as in detection: junk already on the line cannot spoil it.
@@ -26,64 +24,30 @@ QByteArray encode(const Command &cmd)
     case CommandKind::GetParams:
         return v2::encodeFrame(cmd.seq, v2::GetParams{});
     case CommandKind::SetParams:
-        return v2::encodeFrame(cmd.seq, v2::SetParams{cmd.tuning.params.value_or(DeviceParams{})});
+        return v2::encodeFrame(cmd.seq, v2::SetParams{*tuning->params});
     case CommandKind::SetStream:
-        return v2::encodeFrame(cmd.seq, v2::SetStream{cmd.rate});
+        return v2::encodeFrame(cmd.seq,
+                               v2::SetStream{std::get<request::Stream>(*cmd.request).rateHz});
     case CommandKind::Zero:
         return v2::encodeFrame(cmd.seq, v2::Zero{});
     case CommandKind::SaveParams:
         return v2::encodeFrame(cmd.seq, v2::SaveParams{});
     case CommandKind::SetEffects:
-        return v2::encodeFrame(cmd.seq,
-                               v2::SetEffects{cmd.tuning.effects.value_or(EffectParams{})});
+        return v2::encodeFrame(cmd.seq, v2::SetEffects{*tuning->effects});
     case CommandKind::GetEffects:
         return v2::encodeFrame(cmd.seq, v2::GetEffects{});
     case CommandKind::SetPassivity:
-        return v2::encodeFrame(cmd.seq,
-                               v2::SetPassivity{cmd.tuning.passivity.value_or(PassivityParams{})});
+        return v2::encodeFrame(cmd.seq, v2::SetPassivity{*tuning->passivity});
     case CommandKind::GetPassivity:
         return v2::encodeFrame(cmd.seq, v2::GetPassivity{});
-    case CommandKind::Vibrate:
-        return v2::encodeFrame(cmd.seq, v2::Vibrate{static_cast<float>(cmd.vibration.amplitude),
-                                                    static_cast<float>(cmd.vibration.frequency),
-                                                    static_cast<float>(cmd.vibration.duration)});
+    case CommandKind::Vibrate: {
+        const Vibration &v = std::get<request::Vibrate>(*cmd.request).vibration;
+        return v2::encodeFrame(cmd.seq, v2::Vibrate{static_cast<float>(v.amplitude),
+                                                    static_cast<float>(v.frequency),
+                                                    static_cast<float>(v.duration)});
+    }
     default: // not a command
         return {};
-    }
-}
-
-//! The wire steps of `cmd`: a push sends each part it carries and reads it back, a read reads
-//! the parameters and the effects when it names them, ZERO reads the new θ0 back.
-std::vector<CommandKind> stepsOf(const Command &cmd)
-{
-    const bool params = cmd.tuning.params.has_value();
-    const bool effects = cmd.tuning.effects.has_value();
-    const bool passivity = cmd.tuning.passivity.has_value();
-    switch (cmd.kind) {
-    case CommandKind::SetParams:
-    case CommandKind::SetEffects:
-    case CommandKind::SetPassivity: {
-        std::vector<CommandKind> steps;
-        if (params)
-            steps.insert(steps.end(), {CommandKind::SetParams, CommandKind::GetParams});
-        if (effects)
-            steps.insert(steps.end(), {CommandKind::SetEffects, CommandKind::GetEffects});
-        if (passivity)
-            steps.insert(steps.end(), {CommandKind::SetPassivity, CommandKind::GetPassivity});
-        return steps;
-    }
-    case CommandKind::GetParams: { // the parameters, and the other blocks it names
-        std::vector<CommandKind> steps{CommandKind::GetParams};
-        if (effects)
-            steps.push_back(CommandKind::GetEffects);
-        if (passivity)
-            steps.push_back(CommandKind::GetPassivity);
-        return steps;
-    }
-    case CommandKind::Zero:
-        return {CommandKind::Zero, CommandKind::GetParams};
-    default:
-        return {cmd.kind};
     }
 }
 
@@ -111,22 +75,47 @@ int fieldCount(CommandKind kind)
     }
 }
 
-//! A result of `status` for `cmd` (its step `kind`) carrying what it sent and read.
-CommandResult resultFor(const Command &cmd, CommandKind kind, Status status,
-                        Reason reason = Reason::None)
+} // namespace
+
+const DeviceTuning *Command::pushed() const
 {
-    CommandResult r = commandResult(kind, status, reason);
-    // Only a push sends a tuning; a read's `tuning` merely names the parts it reads.
-    if (cmd.kind == CommandKind::SetParams || cmd.kind == CommandKind::SetEffects ||
-        cmd.kind == CommandKind::SetPassivity)
-        r.sent = cmd.tuning;
-    r.received = cmd.received;
-    r.vibration = cmd.vibration;
-    r.rate = cmd.rate;
-    return r;
+    const auto *push = request ? std::get_if<request::Push>(&*request) : nullptr;
+    return push ? &push->tuning : nullptr;
 }
 
-} // namespace
+Outcome CommandQueue::outcomeOf(const Command &cmd, Outcome::Result result)
+{
+    return {cmd.request.value_or(Request{}), std::move(result), cmd.received};
+}
+
+outcome::Stopped CommandQueue::stoppedAt(const Command &cmd)
+{
+    outcome::Stopped stop{cmd.stepKind(), {}};
+    const DeviceTuning *sent = cmd.pushed();
+    if (!sent)
+        return stop;
+    // Each SET before the step in flight was acknowledged: its part is in force, as read back
+    // where that came, else as sent.
+    const auto take = [&](const auto &part, const auto &readBack, auto &out) {
+        out = readBack ? readBack : part;
+    };
+    for (std::size_t i = 0; i < cmd.step; ++i) {
+        switch (cmd.steps[i]) {
+        case CommandKind::SetParams:
+            take(sent->params, cmd.received.params, stop.applied.params);
+            break;
+        case CommandKind::SetEffects:
+            take(sent->effects, cmd.received.effects, stop.applied.effects);
+            break;
+        case CommandKind::SetPassivity:
+            take(sent->passivity, cmd.received.passivity, stop.applied.passivity);
+            break;
+        default:
+            break;
+        }
+    }
+    return stop;
+}
 
 CommandQueue::CommandQueue(QObject *parent) : QObject(parent), m_timer(this)
 {
@@ -146,14 +135,18 @@ void CommandQueue::setWriter(Writer writer)
 void CommandQueue::enqueue(Command command)
 {
     if (static_cast<int>(m_queue.size()) >= kMaxQueuedCommands) {
-        CommandResult r = commandResult(command.kind, Status::Invalid, Reason::QueueFull);
-        r.limit = kMaxQueuedCommands;
-        Q_EMIT finished(command, r);
+        Q_EMIT finished(command, outcomeOf(command, outcome::QueueFull{kMaxQueuedCommands}));
         return;
     }
-    command.steps = stepsOf(command);
     m_queue.push_back(std::move(command));
     pump();
+}
+
+void CommandQueue::enqueueHello()
+{
+    Command hello;
+    hello.steps = {CommandKind::Hello};
+    enqueue(std::move(hello));
 }
 
 void CommandQueue::pump()
@@ -163,7 +156,7 @@ void CommandQueue::pump()
     m_inflight = std::move(m_queue.front());
     m_queue.pop_front();
     if (m_inflight->steps.empty())
-        finishInflight(resultFor(*m_inflight, m_inflight->kind, Status::Ok)); // nothing to do
+        finishInflight(outcome::Done{}); // nothing to do
     else
         sendInflight();
 }
@@ -202,10 +195,7 @@ void CommandQueue::onTimeout()
         nextStep();
         return;
     }
-    CommandResult r = resultFor(cmd, cmd.stepKind(), Status::Timeout);
-    r.attempts = kCommandRetries + 1;
-    r.intervalMs = kCommandTimeoutMs;
-    finishInflight(r);
+    finishInflight(outcome::TimedOut{stoppedAt(cmd), kCommandRetries + 1, kCommandTimeoutMs});
 }
 
 void CommandQueue::onAck(const v2::Ack &ack)
@@ -229,11 +219,9 @@ void CommandQueue::onAck(const v2::Ack &ack)
     m_timer.stop();
 
     if (ack.status != v2::AckStatus::Ok) {
-        CommandResult r = resultFor(*m_inflight, step, Status::Rejected);
-        r.ackStatus = ack.status;
-        if (ack.field != v2::kNoField && ack.field < fieldCount(step))
-            r.field = ack.field;
-        finishInflight(r);
+        const bool named = ack.field != v2::kNoField && ack.field < fieldCount(step);
+        finishInflight(
+            outcome::Refused{stoppedAt(*m_inflight), ack.status, named ? int(ack.field) : -1});
         return;
     }
     if (step != CommandKind::SaveParams)
@@ -246,24 +234,25 @@ void CommandQueue::onTuning(const DeviceTuning &told)
     if (!m_inflight)
         return;
     Command &cmd = *m_inflight;
-    const CommandKind step = cmd.stepKind();
-    const bool afterChange = cmd.step > 0 && changes(cmd.steps[cmd.step - 1]);
-    if (step == CommandKind::GetParams && told.params) {
-        cmd.received.params = told.params;
-        // ZERO changes θ0 by design: its read-back is the new value, not a comparison.
-        if (afterChange && cmd.steps[cmd.step - 1] == CommandKind::SetParams)
-            cmd.readBackMatches &= sameOnWire(*cmd.tuning.params, *told.params);
-    } else if (step == CommandKind::GetEffects && told.effects) {
-        cmd.received.effects = told.effects;
-        if (afterChange)
-            cmd.readBackMatches &= sameOnWire(*cmd.tuning.effects, *told.effects);
-    } else if (step == CommandKind::GetPassivity && told.passivity) {
-        cmd.received.passivity = told.passivity;
-        if (afterChange)
-            cmd.readBackMatches &= sameOnWire(*cmd.tuning.passivity, *told.passivity);
-    } else {
+    if (cmd.wire.isEmpty())
         return;
-    }
+    const CommandKind step = cmd.stepKind();
+    // ZERO changes θ0 by design: its read-back is the new value, not a comparison; a read
+    // compares nothing.
+    const DeviceTuning *sent = cmd.pushed();
+    const auto readBack = [&cmd, sent](const auto &toldPart, auto &received, auto sentPart) {
+        received = toldPart;
+        if (sent && sent->*sentPart)
+            cmd.readBackDiffers |= !sameOnWire(*(sent->*sentPart), *toldPart);
+    };
+    if (step == CommandKind::GetParams && told.params)
+        readBack(told.params, cmd.received.params, &DeviceTuning::params);
+    else if (step == CommandKind::GetEffects && told.effects)
+        readBack(told.effects, cmd.received.effects, &DeviceTuning::effects);
+    else if (step == CommandKind::GetPassivity && told.passivity)
+        readBack(told.passivity, cmd.received.passivity, &DeviceTuning::passivity);
+    else
+        return;
     m_timer.stop();
     nextStep();
 }
@@ -276,12 +265,12 @@ void CommandQueue::nextStep()
         sendInflight();
         return;
     }
-    CommandResult r = resultFor(cmd, cmd.kind, Status::Ok,
-                                cmd.readBackUnanswered ? Reason::ReadBackUnanswered : Reason::None);
-    r.readBack =
-        !cmd.readBackUnanswered && std::any_of(cmd.steps.begin(), cmd.steps.end(), changes);
-    r.readBackMatches = r.readBack && cmd.readBackMatches;
-    finishInflight(r);
+    using outcome::ReadBack;
+    const bool changed = std::any_of(cmd.steps.begin(), cmd.steps.end(), changes);
+    finishInflight(outcome::Done{!changed                 ? ReadBack::None
+                                 : cmd.readBackUnanswered ? ReadBack::Unanswered
+                                 : cmd.readBackDiffers    ? ReadBack::Differs
+                                                          : ReadBack::Matches});
 }
 
 void CommandQueue::onHelloReply()
@@ -293,19 +282,20 @@ void CommandQueue::onHelloReply()
     }
 }
 
-void CommandQueue::finishInflight(const CommandResult &r)
+void CommandQueue::finishInflight(Outcome::Result result)
 {
     m_timer.stop();
     const Command done = std::move(*m_inflight);
     m_inflight.reset();
-    if (!done.id && !r.ok())
-        qCWarning(lcCommands) << commandName(done.kind) << "during connect failed, status"
-                              << static_cast<int>(r.status);
-    Q_EMIT finished(done, r);
+    const Outcome outcome = outcomeOf(done, std::move(result));
+    if (!done.then && !outcome.ok())
+        qCWarning(lcCommands) << commandName(done.stepKind()) << "during connect failed, outcome"
+                              << outcome.result.index();
+    Q_EMIT finished(done, outcome);
     pump();
 }
 
-void CommandQueue::failAll(CommandResult::Reason reason)
+void CommandQueue::failAll(outcome::Cut::Why why)
 {
     m_timer.stop();
     std::deque<Command> failing;
@@ -315,10 +305,12 @@ void CommandQueue::failAll(CommandResult::Reason reason)
     for (Command &c : m_queue)
         failing.push_back(std::move(c));
     m_queue.clear();
-    // Each result names the step it stopped at and carries what was sent and read, so a push
-    // that the loss cut after SET_PARAMS says what it had changed (appliedBeforeFailure()).
-    for (const Command &c : failing)
-        Q_EMIT finished(c, resultFor(c, c.stepKind(), Status::NotConnected, reason));
+    // Each outcome names the step it stopped at and what it had applied, so a push that the loss
+    // cut after SET_PARAMS says what it had changed.
+    for (const Command &c : failing) {
+        if (c.request && !c.steps.empty())
+            Q_EMIT finished(c, outcomeOf(c, outcome::Cut{stoppedAt(c), why}));
+    }
 }
 
 } // namespace hatpic

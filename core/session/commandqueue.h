@@ -1,17 +1,14 @@
 // The v2 command channel: one command in flight, a bounded queue behind it, resends on a
 // timeout (same bytes, same seq, so the device answers a retry without applying it twice), and
-// the answers matched to the command in flight. A command is the wire steps it takes, in order:
-// a push of a tuning is SET_PARAMS, GET_PARAMS (the read-back), then SET_EFFECTS, GET_EFFECTS
-// for its effect part, then SET_PASSIVITY, GET_PASSIVITY for its passivity part; a read is
-// GET_PARAMS (and GET_EFFECTS, GET_PASSIVITY); ZERO is ZERO, GET_PARAMS. It
-// finishes once, with what it sent and what it read.
+// the answers matched to the command in flight. A command is a request and the wire steps it
+// takes (wireSteps()). It finishes once, with its Outcome: what it sent and what it read.
 //
 // Writes through a function it is given; knows nothing of links, drivers or the session.
 #pragma once
 
 #include "model/params.h"
 #include "protocol/messages.h"
-#include "session/sessiontypes.h"
+#include "session/request.h"
 
 #include <QByteArray>
 #include <QObject>
@@ -26,24 +23,28 @@ namespace hatpic {
 
 struct Command
 {
-    quint64 id = 0; //!< 0 = the session's own (connect sequence), not reported
-    CommandKind kind = CommandKind::GetParams; //!< what was asked for (its first step)
-    //! A push: what is sent (float32-rounded). A read: effects present to read them too.
-    DeviceTuning tuning;
-    Vibration vibration; //!< VIBRATE
-    quint16 rate = 0;    //!< SET_STREAM
+    Command() = default;
+    Command(std::optional<Request> request, std::vector<CommandKind> steps, OutcomeHandler then)
+        : request(std::move(request)), steps(std::move(steps)), then(std::move(then))
+    {}
+
+    //! What was asked; none for detection's HELLO, which ends in helloUnanswered() or nothing.
+    std::optional<Request> request;
+    std::vector<CommandKind> steps; //!< the wire steps, in order (wireSteps())
+    OutcomeHandler then; //!< hears the outcome; empty: the session's own (the connect sequence)
 
     // Set by the queue as the command goes.
-    std::vector<CommandKind> steps; //!< the wire steps, in order
-    std::size_t step = 0;           //!< the one in flight
-    DeviceTuning received;          //!< what the GET steps read so far
-    bool readBackMatches = true;    //!< every read-back so far equals what its step sent
+    std::size_t step = 0;         //!< the one in flight
+    DeviceTuning received;        //!< what the GET steps read so far
+    bool readBackDiffers = false; //!< a read-back so far differs from what its step sent
     bool readBackUnanswered = false;
     quint8 seq = 0;
     int retries = 0;
     QByteArray wire;
 
-    CommandKind stepKind() const { return steps.empty() ? kind : steps[step]; }
+    CommandKind stepKind() const { return steps.at(step); }
+    //! The push's tuning (float32-rounded), or null.
+    const DeviceTuning *pushed() const;
 };
 
 class CommandQueue : public QObject
@@ -60,8 +61,10 @@ public:
 
     //! Where frames go; an empty writer means no link (commands wait in the queue).
     void setWriter(Writer writer);
-    //! Queues `command`; a full queue finishes it at once (Invalid, QueueFull).
+    //! Queues `command`; a full queue finishes it at once (QueueFull).
     void enqueue(Command command);
+    //! Queues detection's HELLO.
+    void enqueueHello();
     //! A command waits for its answer (no PING may go out in between).
     bool busy() const { return m_inflight.has_value(); }
 
@@ -77,14 +80,15 @@ public:
     void onTuning(const DeviceTuning &told);
     //! HELLO_REPLY arrived: a HELLO in flight is answered (detection handles the reply).
     void onHelloReply();
-    //! Finishes every command (in flight and queued) as NotConnected for `reason`.
-    void failAll(CommandResult::Reason reason);
+    //! Finishes every command (in flight and queued) as cut short, for `why`.
+    void failAll(outcome::Cut::Why why);
 
 Q_SIGNALS:
-    //! A command ended; `command.id == 0` for the session's own.
-    void finished(const hatpic::Command &command, const hatpic::CommandResult &result);
+    //! A command ended (its `then` is the listener's to call).
+    void finished(const hatpic::Command &command, const hatpic::Outcome &outcome);
     //! The device acknowledged `command`'s step in flight (stepKind(): SET_PARAMS, ZERO,
-    //! SET_EFFECTS before their read-back, SET_STREAM and VIBRATE before finished()).
+    //! SET_EFFECTS, SET_PASSIVITY before their read-back, SET_STREAM and VIBRATE before
+    //! finished()).
     void acknowledged(const hatpic::Command &command);
     //! A command frame was sent again.
     void retried();
@@ -95,7 +99,11 @@ private:
     void pump();
     void sendInflight();
     void onTimeout();
-    void finishInflight(const CommandResult &result);
+    void finishInflight(Outcome::Result result);
+    //! `cmd`'s outcome: `result`, its request and what it read.
+    static Outcome outcomeOf(const Command &cmd, Outcome::Result result);
+    //! A failure at `cmd`'s step in flight: what it had applied before it.
+    static outcome::Stopped stoppedAt(const Command &cmd);
     //! The step in flight is done: the next one goes out, or the command finishes.
     void nextStep();
 

@@ -45,7 +45,6 @@ DeviceClient::DeviceClient(QObject *parent) : QObject(parent), m_thread(new QThr
                 ++m_droppedBatches;
         },
         Qt::DirectConnection);
-    connect(m_session, &DeviceSession::commandFinished, this, &DeviceClient::finishCommand);
     connect(m_session, &DeviceSession::notice, this, &DeviceClient::notice);
     connect(
         m_session, &DeviceSession::statsUpdated, this,
@@ -128,19 +127,22 @@ void DeviceClient::onSession(Args &&...args)
         Type);
 }
 
-template<auto Method, typename... Args> void DeviceClient::command(CommandDone then, Args &&...args)
+void DeviceClient::request(const Request &request, CommandDone then)
 {
-    const quint64 id = ++m_lastId;
-    if (then.done)
-        m_waiting.emplace(id, std::move(then));
-    onSession<Method>(id, std::forward<Args>(args)...);
-}
-
-void DeviceClient::finishCommand(quint64 id, const CommandResult &result)
-{
-    const auto node = m_waiting.extract(id);
-    if (!node.empty() && node.mapped().context)
-        node.mapped().done(result);
+    OutcomeHandler handler;
+    if (then.done) {
+        // Called on the session thread; the outcome crosses back to this one by copy.
+        handler = [this, then = std::move(then)](const Outcome &outcome) {
+            QMetaObject::invokeMethod(
+                this,
+                [then, outcome] {
+                    if (then.context)
+                        then.done(outcome);
+                },
+                Qt::QueuedConnection);
+        };
+    }
+    onSession<&DeviceSession::request>(request, std::move(handler));
 }
 
 void DeviceClient::connectDevice(const ConnectOptions &options)
@@ -153,36 +155,6 @@ void DeviceClient::connectDevice(const ConnectOptions &options)
 void DeviceClient::disconnectDevice()
 {
     onSession<&DeviceSession::disconnectDevice>();
-}
-
-void DeviceClient::pushTuning(const DeviceTuning &tuning, CommandDone then)
-{
-    command<&DeviceSession::pushTuning>(std::move(then), tuning);
-}
-
-void DeviceClient::readTuning(CommandDone then)
-{
-    command<&DeviceSession::readTuning>(std::move(then));
-}
-
-void DeviceClient::zero(CommandDone then)
-{
-    command<&DeviceSession::zero>(std::move(then));
-}
-
-void DeviceClient::saveParams(CommandDone then)
-{
-    command<&DeviceSession::saveParams>(std::move(then));
-}
-
-void DeviceClient::setStreamRate(quint16 hz, CommandDone then)
-{
-    command<&DeviceSession::setStreamRate>(std::move(then), hz);
-}
-
-void DeviceClient::vibrate(const Vibration &vibration, CommandDone then)
-{
-    command<&DeviceSession::vibrate>(std::move(then), vibration);
 }
 
 void DeviceClient::addSampleListener(SampleListener *listener)

@@ -13,7 +13,6 @@
 #include <functional>
 #include <mutex>
 #include <string>
-#include <unordered_map>
 
 class QThread;
 
@@ -22,14 +21,14 @@ namespace hatpic {
 class DeviceSession;
 class SampleListener;
 
-//! Where a command's outcome goes: `done` is called once, on the client's thread, when the
-//! command ends — applied and read back, refused, timed out or not sent (CommandResult says
-//! which) — unless `context` is gone by then. `context` is the object whose state `done`
-//! touches. Empty: nobody waits for the outcome. Nothing is broadcast: the caller alone hears.
+//! Where a request's outcome goes: `done` is called once, on the client's thread, when the
+//! request ends — done, refused, timed out, cut short or not sent (the Outcome says which) —
+//! unless `context` is gone by then. `context` is the object whose state `done` touches.
+//! Empty: nobody waits for the outcome. Nothing is broadcast: the caller alone hears.
 struct CommandDone
 {
     QPointer<QObject> context;
-    std::function<void(const CommandResult &)> done;
+    std::function<void(const Outcome &)> done;
 };
 
 class DeviceClient : public QObject
@@ -53,16 +52,9 @@ public:
     //! thread started. Any thread.
     std::string realtimeProblem() const;
 
-    //! Commands: each ends once, with its outcome given to `then`.
-    //! Each part of `tuning` sent and read back (SET_PARAMS, GET_PARAMS, SET_EFFECTS,
-    //! GET_EFFECTS, SET_PASSIVITY, GET_PASSIVITY); its result carries what was sent and what the
-    //! device holds.
-    void pushTuning(const DeviceTuning &tuning, CommandDone then = {});
-    void readTuning(CommandDone then = {}); //!< GET_PARAMS (+ GET_EFFECTS, GET_PASSIVITY)
-    void zero(CommandDone then = {});       //!< ZERO, then GET_PARAMS
-    void saveParams(CommandDone then = {}); //!< SAVE_PARAMS
-    void setStreamRate(quint16 hz, CommandDone then = {});           //!< SET_STREAM
-    void vibrate(const Vibration &vibration, CommandDone then = {}); //!< VIBRATE (ACKed)
+    //! Sends `request` (request.h; DeviceSession::request() checks it); it ends once, with its
+    //! outcome given to `then`.
+    void request(const Request &request, CommandDone then = {});
 
     //! τ_ext streamed to the device [N·m]: sent at once, within ConnectOptions'
     //! feedbackRateHz. Callable from any thread (the robot path calls it from the
@@ -118,11 +110,6 @@ private:
     //! they outlive the caller's; queued (returns at once) unless `Type` says otherwise.
     template<auto Method, Qt::ConnectionType Type = Qt::AutoConnection, typename... Args>
     void onSession(Args &&...args);
-    //! A command: a request id taken on this thread and `then` kept under it, then
-    //! `(m_session->*Method)(id, args...)` queued as onSession() does.
-    template<auto Method, typename... Args> void command(CommandDone then, Args &&...args);
-    //! The session finished the command `id`: its CommandDone, if any, hears.
-    void finishCommand(quint64 id, const CommandResult &result);
     //! Session thread: posts `deliver` to this object's thread unless `cap` deliveries counted
     //! by `pending` already wait there. False when dropped.
     template<typename Deliver> bool post(std::atomic<int> &pending, int cap, Deliver deliver);
@@ -131,8 +118,6 @@ private:
     mutable std::mutex m_realtimeMutex;
     std::string m_realtimeProblem;      //!< set on the session thread as it starts
     DeviceSession *m_session = nullptr; //!< lives on m_thread
-    quint64 m_lastId = 0;
-    std::unordered_map<quint64, CommandDone> m_waiting; //!< commands whose caller waits
     SessionState m_state = SessionState::Disconnected;
     DeviceInfo m_info;
     DeviceTuning m_tuning;

@@ -13,22 +13,6 @@ Q_LOGGING_CATEGORY(lcSession, "hatpic.device.session", QtWarningMsg)
 
 namespace hatpic {
 
-namespace {
-
-using Status = CommandResult::Status;
-using Reason = CommandResult::Reason;
-
-//! A command of `kind` for request `id`, its other fields at their defaults.
-Command command(quint64 id, CommandKind kind)
-{
-    Command cmd;
-    cmd.id = id;
-    cmd.kind = kind;
-    return cmd;
-}
-
-} // namespace
-
 DeviceSession::DeviceSession(QObject *parent)
     : QObject(parent), m_reconnectTimer(this), m_statsTimer(this), m_queue(this),
       m_detector(m_queue, m_statistics, this),
@@ -57,8 +41,9 @@ DeviceSession::DeviceSession(QObject *parent)
     connect(&m_queue, &CommandQueue::finished, this, &DeviceSession::onCommandFinished);
     connect(&m_queue, &CommandQueue::retried, this, [this] { m_statistics.countRetry(); });
     connect(&m_queue, &CommandQueue::acknowledged, this, [this](const Command &command) {
-        if (command.kind == CommandKind::SetStream)
-            m_options.streamRateHz = command.rate; // a reconnect asks for the same rate
+        if (const auto *stream =
+                command.request ? std::get_if<request::Stream>(&*command.request) : nullptr)
+            m_options.streamRateHz = stream->rateHz; // a reconnect asks for the same rate
     });
 
     connect(&m_samples, &SamplePipeline::notice, this, &DeviceSession::notice);
@@ -95,7 +80,7 @@ void DeviceSession::disconnectDevice()
     m_reconnectTimer.stop();
     m_samples.flush(); // every sample received reaches samplesReady (and the recording)
     m_samples.stopRecording();
-    m_queue.failAll(Reason::Disconnected);
+    m_queue.failAll(outcome::Cut::Why::Disconnected);
     closeLink();
     m_statsTimer.stop();
     if (wasActive) {
@@ -208,7 +193,7 @@ void DeviceSession::failDetection(const StateDetail &message)
 {
     qCWarning(lcSession) << "detection failed:" << static_cast<int>(message.kind) << message.port
                          << message.error;
-    m_queue.failAll(Reason::DetectionFailed);
+    m_queue.failAll(outcome::Cut::Why::DetectionFailed);
     closeLink();
     if (m_everConnected && m_wanted && m_options.autoReconnect) {
         // A port that came back without its device yet: keep trying.
@@ -273,7 +258,7 @@ void DeviceSession::loseLink(const StateDetail &lost)
     if (!m_link)
         return;
     qCWarning(lcSession) << "lost" << lost.port << lost.error;
-    m_queue.failAll(Reason::ConnectionLost);
+    m_queue.failAll(outcome::Cut::Why::ConnectionLost);
     closeLink();
     // A recording waits for the device when the session reconnects, else it closes.
     m_samples.connectionEnded(lost, m_wanted && m_options.autoReconnect);
@@ -324,127 +309,79 @@ void DeviceSession::onStatsTick()
 
 // ---------------------------------------------------------------- commands
 
-void DeviceSession::pushTuning(quint64 id, const DeviceTuning &tuning)
+void DeviceSession::request(Request request, OutcomeHandler then)
 {
-    // A device without the passivity capability is sent no passivity block: that part is
-    // dropped (the result's `sent` lacks it); a push of nothing else is refused (submit()).
-    DeviceTuning carried = tuning;
-    if (carried.passivity && m_driver && !m_info.hasPassivity() &&
-        (carried.params || carried.effects))
-        carried.passivity.reset();
-    Command cmd = command(id, carried.params    ? CommandKind::SetParams
-                              : carried.effects ? CommandKind::SetEffects
-                                                : CommandKind::SetPassivity);
-    cmd.tuning = carried;
-    if (m_validate) {
-        std::vector<Violation> violations;
+    if (auto *push = std::get_if<request::Push>(&request); push && m_driver) {
+        DeviceTuning &tuning = push->tuning;
+        if (tuning.passivity && !m_info.hasPassivity() && (tuning.params || tuning.effects))
+            tuning.passivity.reset();
+    }
+    const std::vector<CommandKind> steps = wireSteps(request, m_info);
+    if (std::optional<Outcome::Result> refused = refusal(request, steps)) {
+        if (then)
+            then(Outcome{std::move(request), std::move(*refused), {}});
+        return;
+    }
+    if (auto *push = std::get_if<request::Push>(&request)) {
+        DeviceTuning &tuning = push->tuning;
+        if (tuning.params)
+            tuning.params = roundedForWire(*tuning.params);
+        if (tuning.effects)
+            tuning.effects = roundedForWire(*tuning.effects, m_info.tauLimit);
+        if (tuning.passivity)
+            tuning.passivity = roundedForWire(*tuning.passivity);
+    }
+    if (steps.empty()) { // a push of nothing
+        if (then)
+            then(Outcome{std::move(request), outcome::Done{}, {}});
+        return;
+    }
+    m_queue.enqueue(Command{std::move(request), steps, std::move(then)});
+}
+
+std::optional<Outcome::Result> DeviceSession::refusal(const Request &request,
+                                                      const std::vector<CommandKind> &steps) const
+{
+    // What the device cannot carry first: no value makes that right.
+    for (const CommandKind step : steps) {
+        if (const auto why = m_driver ? m_driver->refusal(step) : std::nullopt)
+            return outcome::Unsupported{step, *why};
+    }
+    std::vector<Violation> violations;
+    if (const auto *push = std::get_if<request::Push>(&request); push && m_validate) {
+        const DeviceTuning &tuning = push->tuning;
         if (tuning.params)
             violations = validate(*tuning.params);
-        // The effects only once the device (its tau_limit) is known: submit() refuses before.
+        // The effects only once the device (its tau_limit) is known.
         if (tuning.effects && m_driver) {
             const auto more = validate(*tuning.effects, m_info.tauLimit);
             violations.insert(violations.end(), more.begin(), more.end());
         }
-        if (cmd.tuning.passivity) {
-            const auto more = validate(*cmd.tuning.passivity);
+        if (tuning.passivity) {
+            const auto more = validate(*tuning.passivity);
             violations.insert(violations.end(), more.begin(), more.end());
         }
-        if (refuseInvalid(cmd, violations))
-            return;
+    } else if (const auto *cue = std::get_if<request::Vibrate>(&request);
+               cue && m_validate && m_driver) {
+        // The control rate is the device's: an infinite one leaves f < rate/2 to the device.
+        violations =
+            validate(cue->vibration, m_info.tauLimit, std::numeric_limits<double>::infinity());
     }
-    if (tuning.params)
-        cmd.tuning.params = roundedForWire(*tuning.params);
-    if (tuning.effects)
-        cmd.tuning.effects = roundedForWire(*tuning.effects, m_info.tauLimit);
-    if (cmd.tuning.passivity)
-        cmd.tuning.passivity = roundedForWire(*cmd.tuning.passivity);
-    submit(cmd);
-}
-
-void DeviceSession::readTuning(quint64 id)
-{
-    Command cmd = command(id, CommandKind::GetParams);
-    if (m_info.hasEffects())
-        cmd.tuning.effects = EffectParams{};
-    if (m_info.hasPassivity())
-        cmd.tuning.passivity = PassivityParams{};
-    submit(cmd);
-}
-
-void DeviceSession::zero(quint64 id)
-{
-    submit(command(id, CommandKind::Zero));
-}
-
-void DeviceSession::saveParams(quint64 id)
-{
-    submit(command(id, CommandKind::SaveParams));
-}
-
-void DeviceSession::setStreamRate(quint64 id, quint16 hz)
-{
-    Command cmd = command(id, CommandKind::SetStream);
-    cmd.rate = hz;
-    submit(cmd);
-}
-
-void DeviceSession::vibrate(quint64 id, const Vibration &vibration)
-{
-    Command cmd = command(id, CommandKind::Vibrate);
-    cmd.vibration = vibration;
-    // The control rate is the device's: an infinite one leaves f < rate/2 to the device.
-    if (m_driver && m_validate &&
-        refuseInvalid(
-            cmd, validate(vibration, m_info.tauLimit, std::numeric_limits<double>::infinity())))
-        return;
-    submit(cmd);
-}
-
-Reason DeviceSession::refusal(const Command &cmd) const
-{
-    Reason why = m_driver->refusal(cmd.kind);
-    if (why == Reason::None && cmd.tuning.effects)
-        why = m_driver->refusal(CommandKind::SetEffects);
-    if (why == Reason::None && cmd.tuning.passivity)
-        why = m_driver->refusal(CommandKind::SetPassivity);
-    return why;
-}
-
-bool DeviceSession::refuseInvalid(const Command &cmd, const std::vector<Violation> &violations)
-{
-    if (violations.empty() || (m_driver && refusal(cmd) != Reason::None))
-        return false; // nothing wrong, or submit() gives the better reason (unsupported)
-    CommandResult r = commandResult(cmd.kind, Status::Invalid, Reason::InvalidParams);
-    r.sent = cmd.tuning;
-    r.vibration = cmd.vibration;
-    for (const Violation &v : violations)
-        r.problems << QString::fromStdString(v.message());
-    Q_EMIT commandFinished(cmd.id, r);
-    return true;
-}
-
-void DeviceSession::submit(Command command)
-{
-    if (!m_driver) {
-        if (command.id) {
-            Q_EMIT commandFinished(
-                command.id, commandResult(command.kind, Status::NotConnected, Reason::NoDevice));
-        }
-        return;
+    if (!violations.empty()) {
+        outcome::Invalid invalid;
+        for (const Violation &v : violations)
+            invalid.problems << QString::fromStdString(v.message());
+        return invalid;
     }
-    if (const Reason why = refusal(command); why != Reason::None) {
-        if (command.id)
-            Q_EMIT commandFinished(command.id,
-                                   commandResult(command.kind, Status::Unsupported, why));
-        return;
-    }
-    m_queue.enqueue(std::move(command));
+    if (!m_driver)
+        return outcome::NotConnected{};
+    return std::nullopt;
 }
 
-void DeviceSession::onCommandFinished(const Command &command, const CommandResult &result)
+void DeviceSession::onCommandFinished(const Command &command, const Outcome &outcome)
 {
-    if (command.id)
-        Q_EMIT commandFinished(command.id, result);
+    if (command.then)
+        command.then(outcome);
 }
 
 // ---------------------------------------------------------------- host side

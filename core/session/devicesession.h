@@ -43,19 +43,14 @@ public:
     //! Disconnects and closes the recording; the session can be destroyed afterwards.
     void shutdown();
 
-    //! Each part of `tuning` validated (the effects against the device's tau_limit), sent and
-    //! read back: SET_PARAMS, GET_PARAMS, then SET_EFFECTS, GET_EFFECTS, then SET_PASSIVITY,
-    //! GET_PASSIVITY. One result. A device without the passivity capability is sent no
-    //! passivity block: dropped beside other parts, refused alone (NoPassivityCapability).
-    void pushTuning(quint64 id, const DeviceTuning &tuning);
-    //! GET_PARAMS, and GET_EFFECTS / GET_PASSIVITY when the device has them. One result.
-    void readTuning(quint64 id);
-    void zero(quint64 id);
-    void saveParams(quint64 id);
-    void setStreamRate(quint64 id, quint16 hz);
-    //! VIBRATE; validated against the device's tau_limit (the device alone knows its control
-    //! rate, so f < rate/2 is its check: OUT_OF_RANGE, field 1).
-    void vibrate(quint64 id, const Vibration &vibration);
+    //! Sends `request`'s wire steps (wireSteps()); `then` hears its outcome, once, on this
+    //! thread. Before anything is sent: a step the device cannot carry is
+    //! Unsupported; a push (each part; the effects against the device's tau_limit) or a
+    //! vibration (against tau_limit: the device alone knows its control rate, so f < rate/2 is
+    //! its check) that breaks a rule is Invalid; then without a device, NotConnected. A push is
+    //! rounded to float32 here, once. A device without the passivity capability is sent no
+    //! passivity block: dropped beside other parts, refused alone.
+    void request(Request request, OutcomeHandler then = {});
 
     void setFeedback(double tauExt);
     void setHostParams(const HostParams &host);
@@ -80,14 +75,13 @@ public:
     // ---- test seams (session thread only) ----
     //! Stops (or resumes) the feedback stream, e.g. to see the device's watchdog act.
     void setFeedbackPaused(bool paused) { m_feedback.setPaused(paused); }
-    //! Off: pushTuning() and vibrate() send without host-side validation, to
-    //! exercise device rejections.
+    //! Off: pushes and vibrations are sent without host-side validation, to exercise device
+    //! rejections.
     void setValidateBeforeSending(bool validate) { m_validate = validate; }
 
 Q_SIGNALS:
     void stateChanged(hatpic::SessionState state, const hatpic::StateDetail &detail);
     void deviceInfoChanged(const hatpic::DeviceInfo &info);
-    void commandFinished(quint64 id, const hatpic::CommandResult &result);
     void statsUpdated(const hatpic::LinkStats &stats);
     //! What the device says for people (v2 LOG, legacy boot text).
     void deviceLog(const QString &line);
@@ -112,12 +106,10 @@ private:
     bool sendPing(quint32 token);     //!< through the driver; false when none went out
 
     // commands
-    void submit(Command command);
-    //! Reason::None when the driver carries every step of `cmd`; else why not.
-    CommandResult::Reason refusal(const Command &cmd) const;
-    //! Emits Invalid (InvalidParams) with `violations` for `cmd`; false when there are none.
-    bool refuseInvalid(const Command &cmd, const std::vector<Violation> &violations);
-    void onCommandFinished(const Command &command, const CommandResult &result);
+    //! Why `request` (its wire steps `steps`) cannot be sent; nullopt when it can go.
+    std::optional<Outcome::Result> refusal(const Request &request,
+                                           const std::vector<CommandKind> &steps) const;
+    void onCommandFinished(const Command &command, const Outcome &outcome);
 
     //! What a new driver holds of this session.
     DriverLinks driverLinks();

@@ -54,15 +54,15 @@ void LegacyDriver::sendFeedback(double tauExt)
     m_links.write(legacy::encodeFrame(legacy::Frame{m_field, 0, 0, 0}));
 }
 
-CommandResult::Reason LegacyDriver::refusal(CommandKind kind) const
+std::optional<outcome::Unsupported::Why> LegacyDriver::refusal(CommandKind step) const
 {
     // Host settings still apply; only the device side is fixed.
-    if (isEffectCommand(kind))
-        return CommandResult::Reason::NoEffects;
-    if (isPassivityCommand(kind))
-        return CommandResult::Reason::NoPassivityCapability;
-    return kind == CommandKind::SetStream ? CommandResult::Reason::FixedRate
-                                          : CommandResult::Reason::NoParameters;
+    using Why = outcome::Unsupported::Why;
+    if (isEffectCommand(step))
+        return Why::NoEffects;
+    if (isPassivityCommand(step))
+        return Why::NoPassivityCapability;
+    return step == CommandKind::SetStream ? Why::FixedRate : Why::NoParameters;
 }
 
 void LegacyDriver::hostParamsChanged(const HostParams &host)

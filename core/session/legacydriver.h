@@ -26,7 +26,7 @@ public:
     void sendFeedback(double tauExt) override;
     double maxFeedbackHz() const override { return kMaxFeedbackHz; }
     bool sendPing(quint32) override { return false; }
-    CommandResult::Reason refusal(CommandKind kind) const override;
+    std::optional<outcome::Unsupported::Why> refusal(CommandKind step) const override;
     void hostParamsChanged(const HostParams &host) override;
     void close() override;
     const legacy::DecoderStats *legacyStats() const override { return &m_decoder.stats(); }

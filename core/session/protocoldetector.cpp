@@ -78,9 +78,7 @@ void ProtocolDetector::start(ByteLink *link, const ConnectOptions &options)
     case ProtocolChoice::V2: {
         Q_EMIT progress(detail(StateDetail::Kind::AskingHello));
         m_phase = Phase::Hello;
-        Command hello;
-        hello.kind = CommandKind::Hello;
-        m_queue.enqueue(hello);
+        m_queue.enqueueHello();
         return;
     }
     case ProtocolChoice::Auto:

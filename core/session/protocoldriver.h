@@ -52,8 +52,8 @@ public:
     virtual double maxFeedbackHz() const = 0;
     //! Sends a PING; false when the protocol has none or a command waits for its answer.
     virtual bool sendPing(quint32 token) = 0;
-    //! Reason::None when the protocol carries `kind`; else why not (Status::Unsupported).
-    virtual CommandResult::Reason refusal(CommandKind kind) const = 0;
+    //! Why the device cannot carry the wire step `step`; nullopt when it can.
+    virtual std::optional<outcome::Unsupported::Why> refusal(CommandKind step) const = 0;
     //! The host parameters changed (legacy: its τ limit is the host's).
     virtual void hostParamsChanged(const HostParams &host) = 0;
     //! Stops handling anything (the link is gone) and hands its decoder's counts to the

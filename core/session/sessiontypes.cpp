@@ -30,56 +30,6 @@ QString sessionStateName(SessionState state)
     return QStringLiteral("unknown");
 }
 
-CommandResult commandResult(CommandKind command, CommandResult::Status status,
-                            CommandResult::Reason reason)
-{
-    CommandResult r;
-    r.command = command;
-    r.status = status;
-    r.reason = reason;
-    return r;
-}
-
-DeviceTuning appliedBeforeFailure(const CommandResult &r)
-{
-    using Status = CommandResult::Status;
-    DeviceTuning applied;
-    // Only a failure on the wire can follow an acknowledged step: a refusal on the host
-    // (Invalid, Unsupported) comes before anything is sent.
-    if (r.status != Status::Rejected && r.status != Status::Timeout &&
-        r.status != Status::NotConnected)
-        return applied;
-    // A push's steps run in this order (commandqueue.cpp's stepsOf); a part was acknowledged
-    // when the step that failed comes after its SET.
-    constexpr std::array kOrder{CommandKind::SetParams,    CommandKind::GetParams,
-                                CommandKind::SetEffects,   CommandKind::GetEffects,
-                                CommandKind::SetPassivity, CommandKind::GetPassivity};
-    const auto position = [&kOrder](CommandKind kind) {
-        return std::find(kOrder.begin(), kOrder.end(), kind) - kOrder.begin();
-    };
-    const auto at = position(r.command);
-    if (at == std::ssize(kOrder))
-        return applied; // not a push
-    const auto take = [&](const auto &sent, const auto &received, CommandKind set, auto &out) {
-        if (sent && at > position(set))
-            out = received ? received : sent;
-    };
-    take(r.sent.params, r.received.params, CommandKind::SetParams, applied.params);
-    take(r.sent.effects, r.received.effects, CommandKind::SetEffects, applied.effects);
-    take(r.sent.passivity, r.received.passivity, CommandKind::SetPassivity, applied.passivity);
-    return applied;
-}
-
-std::optional<CommandKind> unansweredBlockStep(const CommandResult &r)
-{
-    const bool unanswered = r.status == CommandResult::Status::Timeout ||
-                            r.status == CommandResult::Status::NotConnected;
-    if (unanswered && ((r.command == CommandKind::SetEffects && r.sent.effects) ||
-                       (r.command == CommandKind::SetPassivity && r.sent.passivity)))
-        return r.command;
-    return std::nullopt;
-}
-
 quint64 LinkStats::totalDecoderDrops() const
 {
     return std::accumulate(decoderDrops.begin(), decoderDrops.end(), quint64(0));
@@ -172,7 +122,8 @@ void registerSessionMetaTypes()
     qRegisterMetaType<hatpic::StateDetail>();
     qRegisterMetaType<hatpic::SessionNotice>();
     qRegisterMetaType<hatpic::DeviceInfo>();
-    qRegisterMetaType<hatpic::CommandResult>();
+    qRegisterMetaType<hatpic::Request>();
+    qRegisterMetaType<hatpic::Outcome>();
     qRegisterMetaType<hatpic::LinkStats>();
     qRegisterMetaType<hatpic::RecordingStatus>();
     qRegisterMetaType<hatpic::DeviceParams>();

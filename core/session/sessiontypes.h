@@ -9,6 +9,7 @@
 #include "protocol/legacy.h"
 #include "protocol/messages.h"
 #include "protocol/v2codec.h"
+#include "session/request.h"
 #include "telemetry/recording.h"
 
 #include <QMetaType>
@@ -36,27 +37,6 @@ struct ConnectOptions
     //! none: the serial port `port`.
     LinkSourcePtr link;
 };
-
-//! A command of the v2 protocol the session sends, by its wire type: HELLO (only while
-//! detecting), GET_PARAMS, SET_PARAMS, SET_STREAM, ZERO, SAVE_PARAMS, SET_EFFECTS, GET_EFFECTS,
-//! VIBRATE (messages.h).
-using CommandKind = v2::MessageType;
-//! True for the commands only a device with the effects capability takes.
-constexpr bool isEffectCommand(CommandKind kind)
-{
-    return kind == CommandKind::SetEffects || kind == CommandKind::GetEffects ||
-           kind == CommandKind::Vibrate;
-}
-//! True for the commands only a device with the passivity capability takes (passivity.md).
-constexpr bool isPassivityCommand(CommandKind kind)
-{
-    return kind == CommandKind::SetPassivity || kind == CommandKind::GetPassivity;
-}
-//! The wire name: "SET_PARAMS", … (messages.h's kName).
-inline QString commandName(CommandKind kind)
-{
-    return QString::fromLatin1(v2::messageName(kind));
-}
 
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
 QString sessionStateName(SessionState state); //!< "disconnected", "opening", …
@@ -104,7 +84,7 @@ struct StateDetail
 //! "K_max 0.4 → 0.6; detent_strength 0 → 0.05": every field of the parts `to` has that differs
 //! from `from`'s as it travels on the wire (the text of recording events and of the tuner's push
 //! markers); a part `from` lacks compares with its defaults. Empty when nothing differs. Give it
-//! tunings as they travel (a device's, or CommandResult::sent): a value the wire moves inside its
+//! tunings as they travel (a device's, or Outcome::pushed()): a value the wire moves inside its
 //! bound (±π) would otherwise read as a change.
 QString describeTuningChange(const DeviceTuning &from, const DeviceTuning &to);
 //! What tells two devices apart, as names and values ("device_id 1397312817 → 42",
@@ -115,57 +95,6 @@ QStringList describeDeviceChange(const DeviceInfo &from, const DeviceInfo &to);
 
 //! Registers every type above with Qt's meta-type system (queued signals); idempotent.
 void registerSessionMetaTypes();
-
-//! Outcome of one command (a push or a read of the tuning, SET_STREAM, ZERO, SAVE_PARAMS,
-//! VIBRATE): what happened, in codes and numbers. The session composes no sentence; ui/ (with tr())
-//! and hatpicctl word it.
-struct CommandResult
-{
-    enum class Status {
-        Ok,       //!< ACK OK (or PARAMS for GET_PARAMS)
-        Rejected, //!< device answered with a non-OK ACK: see ackStatus / field
-        Timeout,  //!< no answer after the retries: see attempts, intervalMs
-        NotConnected,
-        Unsupported, //!< the protocol cannot carry it (legacy): see reason
-        Invalid,     //!< refused before sending: see reason
-    };
-    //! The finer cause, where the status has several.
-    enum class Reason {
-        None,
-        ReadBackUnanswered,    //!< Ok: acknowledged, but the read-back went unanswered
-        NoDevice,              //!< NotConnected: no device was connected
-        Disconnected,          //!< NotConnected: the session was disconnected before the answer
-        ConnectionLost,        //!< NotConnected: the link was lost before the answer
-        DetectionFailed,       //!< NotConnected: detection gave up (only the session's HELLO)
-        NoParameters,          //!< Unsupported: the legacy firmware cannot send or take parameters
-        FixedRate,             //!< Unsupported: the legacy firmware streams at its own rate
-        NoEffects,             //!< Unsupported: the legacy firmware cannot render effects
-        NoEffectsCapability,   //!< Unsupported: a v2 device without the effects capability bit
-        NoPassivityCapability, //!< Unsupported: a device without the passivity capability bit
-        InvalidParams,         //!< Invalid: host-side validation refused; see problems
-        QueueFull,             //!< Invalid: `limit` commands were already waiting
-    };
-    Status status = Status::Ok;
-    Reason reason = Reason::None;
-    //! The command; a failure on the wire names the step it stopped at (a rejection: the frame
-    //! refused; a timeout: the frame unanswered; a loss: the frame in flight)
-    CommandKind command = CommandKind::GetParams;
-    v2::AckStatus ackStatus = v2::AckStatus::Ok;
-    int field = -1; //!< ParamBlock (effect block, VIBRATE) index the device named, or -1
-    //! A read-back followed each change the command made (SET_PARAMS and ZERO: GET_PARAMS;
-    //! SET_EFFECTS: GET_EFFECTS; SET_PASSIVITY: GET_PASSIVITY)
-    bool readBack = false;
-    bool readBackMatches = false; //!< …and it equals what was sent (ZERO's: always)
-    DeviceTuning sent;            //!< a push: what was sent (float32-rounded), the parts it carried
-    DeviceTuning received;        //!< a read or a read-back: what the device holds, the parts read
-    Vibration vibration;          //!< VIBRATE: what was sent
-    quint16 rate = 0;             //!< SET_STREAM: the rate asked for [Hz]; 0 = stop
-    int attempts = 0;             //!< Timeout: frames sent
-    int intervalMs = 0;           //!< Timeout: between them [ms]
-    int limit = 0;                //!< QueueFull: commands that may wait
-    QStringList problems;         //!< InvalidParams: the violations, as core/model words them
-    bool ok() const { return status == Status::Ok; }
-};
 
 //! Something the session tells a person that is neither a state, a command's result nor the
 //! device's own text. ui/ and hatpicctl word it.
@@ -190,19 +119,6 @@ struct SessionNotice
     //! what differs
     QStringList problems;
 };
-
-//! What a push that failed part-way had already changed: the parts the device acknowledged
-//! before the step that failed (`result.command`) — each as read back where the read-back came,
-//! else as sent. Empty for a push that changed nothing (its first step failed, or it was refused
-//! before sending), for any other command, and for a success.
-DeviceTuning appliedBeforeFailure(const CommandResult &result);
-//! A push whose SET_EFFECTS or SET_PASSIVITY went out and was never answered (no ACK, or the
-//! link went): whether the device applied that block is unknown. Gives that step, else nullopt.
-std::optional<CommandKind> unansweredBlockStep(const CommandResult &result);
-
-//! A result for `command` with `status` and `reason`; the other fields at their defaults.
-CommandResult commandResult(CommandKind command, CommandResult::Status status,
-                            CommandResult::Reason reason = CommandResult::Reason::None);
 
 struct LinkStats
 {
@@ -230,7 +146,6 @@ Q_DECLARE_METATYPE(hatpic::SessionState)
 Q_DECLARE_METATYPE(hatpic::StateDetail)
 Q_DECLARE_METATYPE(hatpic::SessionNotice)
 Q_DECLARE_METATYPE(hatpic::DeviceInfo)
-Q_DECLARE_METATYPE(hatpic::CommandResult)
 Q_DECLARE_METATYPE(hatpic::LinkStats)
 Q_DECLARE_METATYPE(hatpic::RecordingStatus)
 Q_DECLARE_METATYPE(hatpic::DeviceParams)

@@ -1,5 +1,7 @@
 #include "session/sessionwording.h"
 
+#include "model/overloaded.h"
+
 namespace hatpic {
 
 namespace {
@@ -100,97 +102,98 @@ QString SessionWording::notice(const SessionNotice &notice)
     return {};
 }
 
-QString SessionWording::rejection(const CommandResult &r)
+QString SessionWording::rejection(const outcome::Refused &r)
 {
-    const QString status = v2::ackStatusName(r.ackStatus);
+    const QString status = v2::ackStatusName(r.status);
     if (r.field < 0)
-        return tr("The device rejected %1: %2.").arg(commandName(r.command), status);
-    if (r.command == CommandKind::SetEffects) {
+        return tr("The device rejected %1: %2.").arg(commandName(r.step), status);
+    if (r.step == CommandKind::SetEffects) {
         return tr("The device rejected %1 (field %2): %3; its effects are unchanged.")
             .arg(QString::fromLatin1(effectFieldName(r.field)), number(r.field), status);
     }
-    if (r.command == CommandKind::SetPassivity) {
+    if (r.step == CommandKind::SetPassivity) {
         return tr("The device rejected %1 (field %2): %3; its passivity controller is unchanged.")
             .arg(QString::fromLatin1(passivityFieldName(r.field)), number(r.field), status);
     }
-    if (r.command == CommandKind::Vibrate)
+    if (r.step == CommandKind::Vibrate)
         return tr("The device rejected VIBRATE (field %1): %2.").arg(number(r.field), status);
     return tr("The device rejected %1 (field %2): %3; its parameters are unchanged.")
         .arg(QString::fromLatin1(deviceFieldName(r.field)), number(r.field), status);
 }
 
-// Cause, then consequence: the same shape for every command a device cannot carry.
-QString SessionWording::unsupported(const CommandResult &r)
+// Cause, then consequence: the same shape for every step a device cannot carry.
+QString SessionWording::unsupported(const outcome::Unsupported &u)
 {
-    using Reason = CommandResult::Reason;
-    const QString name = commandName(r.command);
-    switch (r.reason) {
-    case Reason::NoEffects:
+    using Why = outcome::Unsupported::Why;
+    const QString name = commandName(u.step);
+    switch (u.why) {
+    case Why::NoEffects:
         return tr("%1 is not available: the device runs the published firmware (legacy "
                   "protocol), which cannot render effects.")
             .arg(name);
-    case Reason::NoEffectsCapability:
+    case Why::NoEffectsCapability:
         return tr("%1 is not available: this device's firmware does not announce the effects "
                   "capability, so it cannot render effects.")
             .arg(name);
-    case Reason::NoPassivityCapability:
+    case Why::NoPassivityCapability:
         return tr("%1 is not available: this device's firmware does not announce the passivity "
                   "capability, so it has no passivity controller.")
             .arg(name);
-    case Reason::FixedRate:
+    case Why::FixedRate:
         return tr("%1 is not available: the device runs the published firmware (legacy "
                   "protocol), which streams at its own fixed rate of about 5 Hz.")
             .arg(name);
-    default:
-        return tr("%1 is not available: the device runs the published firmware (legacy "
-                  "protocol), which cannot send or take parameters.")
-            .arg(name);
+    case Why::NoParameters:
+        break;
     }
+    return tr("%1 is not available: the device runs the published firmware (legacy "
+              "protocol), which cannot send or take parameters.")
+        .arg(name);
 }
 
-// Refused on the host, before anything went on the wire: each sentence says so.
-QString SessionWording::invalid(const CommandResult &r)
+// Refused on the host, before anything went on the wire: each sentence says so. A push is named
+// by its first part.
+QString SessionWording::invalid(const Request &request, const outcome::Invalid &i)
 {
-    if (r.reason == CommandResult::Reason::QueueFull) {
-        return tr("Too many commands are waiting (%1); %2 was not sent.")
-            .arg(number(r.limit), commandName(r.command));
-    }
-    if (r.command == CommandKind::Vibrate)
-        return tr("The vibration cue is not valid: %1; nothing was sent.").arg(joined(r.problems));
-    if (r.command == CommandKind::SetEffects)
-        return tr("The effects are not valid: %1; nothing was sent.").arg(joined(r.problems));
-    if (r.command == CommandKind::SetPassivity)
-        return tr("The passivity settings are not valid: %1; nothing was sent.")
-            .arg(joined(r.problems));
-    return tr("The parameters are not valid: %1; nothing was sent.").arg(joined(r.problems));
+    const QString problems = joined(i.problems);
+    if (std::holds_alternative<request::Vibrate>(request))
+        return tr("The vibration cue is not valid: %1; nothing was sent.").arg(problems);
+    const auto *push = std::get_if<request::Push>(&request);
+    if (push && !push->tuning.params && push->tuning.effects)
+        return tr("The effects are not valid: %1; nothing was sent.").arg(problems);
+    if (push && !push->tuning.params && !push->tuning.effects)
+        return tr("The passivity settings are not valid: %1; nothing was sent.").arg(problems);
+    return tr("The parameters are not valid: %1; nothing was sent.").arg(problems);
 }
 
-QString SessionWording::appliedBeforeFailure(const CommandResult &r)
+QString SessionWording::appliedBeforeFailure(const Outcome &o)
 {
-    const DeviceTuning applied = hatpic::appliedBeforeFailure(r);
-    if (!applied.params && !applied.effects && !applied.passivity)
+    const outcome::Stopped *stop = o.stopped();
+    if (!stop)
         return {};
-    const bool lost = r.status == CommandResult::Status::NotConnected;
+    const DeviceTuning &applied = stop->applied;
     QStringList parts;
     if (applied.params) {
-        parts << (r.received.params ? tr("the parameters (SET_PARAMS, read back)")
+        parts << (o.received.params ? tr("the parameters (SET_PARAMS, read back)")
                                     : tr("the parameters (SET_PARAMS, not read back)"));
     }
     if (applied.effects) {
-        parts << (r.received.effects ? tr("the effects (SET_EFFECTS, read back)")
+        parts << (o.received.effects ? tr("the effects (SET_EFFECTS, read back)")
                                      : tr("the effects (SET_EFFECTS, not read back)"));
     }
     if (applied.passivity) {
-        parts << (r.received.passivity
+        parts << (o.received.passivity
                       ? tr("the passivity settings (SET_PASSIVITY, read back)")
                       : tr("the passivity settings (SET_PASSIVITY, not read back)"));
     }
-    QString text = lost
+    if (parts.isEmpty())
+        return {};
+    QString text = std::holds_alternative<outcome::Cut>(o.result)
                        ? tr("It had accepted %1: those were in force when the link went.")
                              .arg(parts.join(tr(" and ")))
                        : tr("It had accepted %1: those are in force.").arg(parts.join(tr(" and ")));
     // A SET_EFFECTS or SET_PASSIVITY sent but never answered may or may not have taken effect.
-    if (const auto step = unansweredBlockStep(r); step == CommandKind::SetEffects)
+    if (const auto step = o.unknownStep(); step == CommandKind::SetEffects)
         text += u' ' + tr("Whether the effects changed is unknown until they are read back.");
     else if (step == CommandKind::SetPassivity)
         text += u' ' + tr("Whether the passivity settings changed is unknown until they are "
@@ -198,89 +201,90 @@ QString SessionWording::appliedBeforeFailure(const CommandResult &r)
     return text;
 }
 
-QString SessionWording::commandFailure(const CommandResult &r)
+QString SessionWording::commandFailure(const Outcome &o)
 {
-    const QString failure = commandFailureAlone(r);
-    const QString applied = appliedBeforeFailure(r);
+    const QString failure = std::visit(
+        Overloaded{
+            [](const outcome::Done &) { return QString(); },
+            [](const outcome::Refused &r) { return rejection(r); },
+            [](const outcome::TimedOut &t) {
+                return tr("The device did not answer %1 (sent %2 times, %3 ms apart).")
+                    .arg(commandName(t.step), number(t.attempts), number(t.intervalMs));
+            },
+            [](const outcome::Cut &c) {
+                switch (c.why) {
+                case outcome::Cut::Why::Disconnected:
+                    return tr("The session was disconnected before the device answered.");
+                case outcome::Cut::Why::ConnectionLost:
+                    return tr("The connection was lost before the device answered.");
+                case outcome::Cut::Why::DetectionFailed:
+                    break;
+                }
+                return tr("Not connected to a device.");
+            },
+            [](const outcome::NotConnected &) { return tr("Not connected to a device."); },
+            [](const outcome::Unsupported &u) { return unsupported(u); },
+            [&o](const outcome::Invalid &i) { return invalid(o.request, i); },
+            [](const outcome::QueueFull &q) {
+                return tr("Too many commands are waiting (%1); this one was not sent.")
+                    .arg(number(q.limit));
+            },
+        },
+        o.result);
+    const QString applied = appliedBeforeFailure(o);
     return applied.isEmpty() ? failure : failure + u' ' + applied;
 }
 
-QString SessionWording::commandFailureAlone(const CommandResult &r)
+QString SessionWording::commandFailureBrief(const Outcome &o)
 {
-    using Status = CommandResult::Status;
-    using Reason = CommandResult::Reason;
-    switch (r.status) {
-    case Status::Ok:
-        return {};
-    case Status::Rejected:
-        return rejection(r);
-    case Status::Timeout:
-        return tr("The device did not answer %1 (sent %2 times, %3 ms apart).")
-            .arg(commandName(r.command), number(r.attempts), number(r.intervalMs));
-    case Status::NotConnected:
-        if (r.reason == Reason::Disconnected)
-            return tr("The session was disconnected before the device answered.");
-        if (r.reason == Reason::ConnectionLost)
-            return tr("The connection was lost before the device answered.");
-        return tr("Not connected to a device.");
-    case Status::Unsupported:
-        return unsupported(r);
-    case Status::Invalid:
-        return invalid(r);
+    QString brief = std::visit(
+        Overloaded{
+            [](const outcome::Done &) { return QString(); },
+            [](const outcome::Refused &r) {
+                const bool effects = isEffectCommand(r.step);
+                const bool passivity = isPassivityCommand(r.step);
+                QString reason = v2::ackStatusName(r.status);
+                const QString name = QString::fromLatin1(effects     ? effectFieldName(r.field)
+                                                         : passivity ? passivityFieldName(r.field)
+                                                                     : deviceFieldName(r.field));
+                if (!name.isEmpty() && !reason.contains(name))
+                    reason += u" (" + name + u')';
+                if (passivity)
+                    return tr("device rejected the passivity settings: %1").arg(reason);
+                return effects ? tr("device rejected the effects: %1").arg(reason)
+                               : tr("device rejected: %1").arg(reason);
+            },
+            [](const outcome::TimedOut &) { return tr("timeout: the device did not answer"); },
+            [](const outcome::Cut &) { return tr("push failed: not connected to the device"); },
+            [](const outcome::NotConnected &) {
+                return tr("push failed: not connected to the device");
+            },
+            [](const outcome::Unsupported &u) {
+                if (isPassivityCommand(u.step))
+                    return tr("push failed: this device has no passivity controller");
+                return isEffectCommand(u.step)
+                           ? tr("push failed: this device cannot render effects")
+                           : tr("push failed: the device's protocol cannot carry parameters");
+            },
+            [](const outcome::Invalid &i) {
+                return i.problems.isEmpty() ? tr("push failed: the command was not sent")
+                                            : tr("push failed: %1").arg(joined(i.problems));
+            },
+            [](const outcome::QueueFull &) { return tr("push failed: the command was not sent"); },
+        },
+        o.result);
+    if (const outcome::Stopped *stop = o.stopped()) {
+        QStringList parts;
+        if (stop->applied.params)
+            parts << tr("parameters");
+        if (stop->applied.effects)
+            parts << tr("effects");
+        if (stop->applied.passivity)
+            parts << tr("passivity settings");
+        if (!parts.isEmpty())
+            brief += tr("; %1 applied").arg(parts.join(tr(" and ")));
     }
-    return {};
-}
-
-QString SessionWording::commandFailureBrief(const CommandResult &r)
-{
-    QString brief = commandFailureBriefAlone(r);
-    const DeviceTuning applied = hatpic::appliedBeforeFailure(r);
-    QStringList parts;
-    if (applied.params)
-        parts << tr("parameters");
-    if (applied.effects)
-        parts << tr("effects");
-    if (applied.passivity)
-        parts << tr("passivity settings");
-    if (!parts.isEmpty())
-        brief += tr("; %1 applied").arg(parts.join(tr(" and ")));
     return brief;
-}
-
-QString SessionWording::commandFailureBriefAlone(const CommandResult &r)
-{
-    using Status = CommandResult::Status;
-    const bool effects = isEffectCommand(r.command);
-    const bool passivity = isPassivityCommand(r.command);
-    switch (r.status) {
-    case Status::Ok:
-        return {};
-    case Status::Rejected: {
-        QString reason = v2::ackStatusName(r.ackStatus);
-        const QString name = QString::fromLatin1(effects     ? effectFieldName(r.field)
-                                                 : passivity ? passivityFieldName(r.field)
-                                                             : deviceFieldName(r.field));
-        if (!name.isEmpty() && !reason.contains(name))
-            reason += u" (" + name + u')';
-        if (passivity)
-            return tr("device rejected the passivity settings: %1").arg(reason);
-        return effects ? tr("device rejected the effects: %1").arg(reason)
-                       : tr("device rejected: %1").arg(reason);
-    }
-    case Status::Timeout:
-        return tr("timeout: the device did not answer");
-    case Status::NotConnected:
-        return tr("push failed: not connected to the device");
-    case Status::Unsupported:
-        if (passivity)
-            return tr("push failed: this device has no passivity controller");
-        return effects ? tr("push failed: this device cannot render effects")
-                       : tr("push failed: the device's protocol cannot carry parameters");
-    case Status::Invalid:
-        return r.problems.isEmpty() ? tr("push failed: the command was not sent")
-                                    : tr("push failed: %1").arg(joined(r.problems));
-    }
-    return {};
 }
 
 QString SessionWording::noEffectsReason(bool legacy)

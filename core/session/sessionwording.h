@@ -23,13 +23,13 @@ public:
     //! e.g. "Not connected: a recording starts once a device is connected."
     static QString notice(const SessionNotice &notice);
 
-    //! Why a command failed, one sentence, e.g. "The device rejected K_max (field 3):
-    //! OUT_OF_RANGE; its parameters are unchanged."; empty for Ok. A push that failed part-way
-    //! adds what it had changed (appliedBeforeFailure()).
-    static QString commandFailure(const CommandResult &result);
+    //! Why a request failed, one sentence, e.g. "The device rejected K_max (field 3):
+    //! OUT_OF_RANGE; its parameters are unchanged."; empty when it was done. A push that failed
+    //! part-way adds what it had changed (appliedBeforeFailure()).
+    static QString commandFailure(const Outcome &outcome);
     //! The same outcome as a short clause for the editor's sync line, e.g. "device rejected:
-    //! OUT_OF_RANGE (K_max)", "timeout: the device did not answer"; empty for Ok.
-    static QString commandFailureBrief(const CommandResult &result);
+    //! OUT_OF_RANGE (K_max)", "timeout: the device did not answer"; empty when it was done.
+    static QString commandFailureBrief(const Outcome &outcome);
     //! Why a device cannot render effects, as a clause: "it runs the published firmware, legacy
     //! protocol" or "its firmware does not announce the effects capability".
     static QString noEffectsReason(bool legacy);
@@ -39,18 +39,16 @@ public:
     //! at most 20 a second are)".
     static QString deviceLinesHeldBack(quint64 lines, int perInterval, int intervalMs);
 
-    //! What a push that failed part-way left in force (appliedBeforeFailure()), as sentences to
-    //! follow commandFailure()'s: "It had accepted the parameters (SET_PARAMS, read back):
-    //! those are in force." — and, when the step that failed may or may not have taken effect,
-    //! that its part is unknown. Empty when the push changed nothing.
-    static QString appliedBeforeFailure(const CommandResult &result);
+    //! What a push that failed part-way left in force (outcome::Stopped::applied), as
+    //! sentences to follow commandFailure()'s: "It had accepted the parameters (SET_PARAMS, read
+    //! back): those are in force." — and, when the step that failed may or may not have taken
+    //! effect, that its part is unknown. Empty when the push changed nothing.
+    static QString appliedBeforeFailure(const Outcome &outcome);
 
 private:
-    static QString commandFailureAlone(const CommandResult &result);
-    static QString commandFailureBriefAlone(const CommandResult &result);
-    static QString rejection(const CommandResult &result);
-    static QString unsupported(const CommandResult &result);
-    static QString invalid(const CommandResult &result);
+    static QString rejection(const outcome::Refused &refused);
+    static QString unsupported(const outcome::Unsupported &unsupported);
+    static QString invalid(const Request &request, const outcome::Invalid &invalid);
 };
 
 } // namespace hatpic

@@ -46,17 +46,9 @@ V2Driver::~V2Driver() = default;
 void V2Driver::start()
 {
     // The device's tuning: its parameters, and its effects and passivity block when it has them
-    Command read;
-    read.kind = CommandKind::GetParams;
-    if (m_info.hasEffects())
-        read.tuning.effects = EffectParams{};
-    if (m_info.hasPassivity())
-        read.tuning.passivity = PassivityParams{};
-    m_queue.enqueue(read);
-    Command stream;
-    stream.kind = CommandKind::SetStream;
-    stream.rate = m_streamRateHz;
-    m_queue.enqueue(stream);
+    for (const Request &request :
+         {Request(request::Read{}), Request(request::Stream{m_streamRateHz})})
+        m_queue.enqueue(Command{request, wireSteps(request, m_info), {}});
 }
 
 void V2Driver::close()
@@ -155,16 +147,16 @@ void V2Driver::handleTuning(const DeviceTuning &told)
 
 void V2Driver::onAcknowledged(const Command &command)
 {
+    const DeviceTuning *sent = command.pushed();
     switch (command.stepKind()) {
     case CommandKind::SetParams:
-        m_pendingChange = PendingChange{CommandKind::SetParams, {command.tuning.params, {}, {}}};
+        m_pendingChange = PendingChange{CommandKind::SetParams, {sent->params, {}, {}}};
         return;
     case CommandKind::SetEffects:
-        m_pendingChange = PendingChange{CommandKind::SetEffects, {{}, command.tuning.effects, {}}};
+        m_pendingChange = PendingChange{CommandKind::SetEffects, {{}, sent->effects, {}}};
         return;
     case CommandKind::SetPassivity:
-        m_pendingChange =
-            PendingChange{CommandKind::SetPassivity, {{}, {}, command.tuning.passivity}};
+        m_pendingChange = PendingChange{CommandKind::SetPassivity, {{}, {}, sent->passivity}};
         return;
     case CommandKind::Zero:
         m_pendingChange = PendingChange{CommandKind::Zero, {}};

@@ -41,13 +41,13 @@ public:
                                       : std::numeric_limits<double>::infinity();
     }
     bool sendPing(quint32 token) override;
-    CommandResult::Reason refusal(CommandKind kind) const override
+    std::optional<outcome::Unsupported::Why> refusal(CommandKind step) const override
     {
-        if (isEffectCommand(kind) && !m_info.hasEffects())
-            return CommandResult::Reason::NoEffectsCapability;
-        if (isPassivityCommand(kind) && !m_info.hasPassivity())
-            return CommandResult::Reason::NoPassivityCapability;
-        return CommandResult::Reason::None;
+        if (isEffectCommand(step) && !m_info.hasEffects())
+            return outcome::Unsupported::Why::NoEffectsCapability;
+        if (isPassivityCommand(step) && !m_info.hasPassivity())
+            return outcome::Unsupported::Why::NoPassivityCapability;
+        return std::nullopt;
     }
     void hostParamsChanged(const HostParams &) override {}
     void close() override;

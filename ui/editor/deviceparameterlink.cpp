@@ -1,6 +1,7 @@
 #include "editor/deviceparameterlink.h"
 
 #include "editor/parametereditor.h"
+#include "model/overloaded.h"
 #include "session/deviceclient.h"
 #include "session/sessionwording.h"
 
@@ -12,7 +13,7 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
 {
     connect(m_editor, &ParameterEditor::pushRequested, this, &DeviceParameterLink::onPushRequested);
     connect(m_editor, &ParameterEditor::vibrateRequested, this,
-            [this](const Vibration &v) { m_client->vibrate(v, then(CommandKind::Vibrate)); });
+            [this](const Vibration &v) { send(request::Vibrate{v}); });
     connect(m_editor, &ParameterEditor::readRequested, this, &DeviceParameterLink::readFromDevice);
     connect(m_editor, &ParameterEditor::hostParamsChanged, m_client, &DeviceClient::setHostParams);
     connect(m_client, &DeviceClient::stateChanged, this,
@@ -32,32 +33,32 @@ void DeviceParameterLink::prepare(ConnectOptions &options)
     m_client->setHostParams(m_editor->hostParams());
 }
 
-CommandDone DeviceParameterLink::then(CommandKind kind)
+void DeviceParameterLink::send(const Request &request)
 {
-    return {this, [this, kind](const CommandResult &result) { finishCommand(kind, result); }};
+    m_client->request(request, {this, [this](const Outcome &outcome) { finishCommand(outcome); }});
 }
 
 void DeviceParameterLink::onPushRequested(const DeviceTuning &tuning)
 {
-    m_client->pushTuning(
-        tuning, {this, [this, before = m_client->deviceTuning()](const CommandResult &result) {
-                     finishPush(before, result);
-                 }});
+    m_client->request(request::Push{tuning},
+                      {this, [this, before = m_client->deviceTuning()](const Outcome &outcome) {
+                           finishPush(before, outcome);
+                       }});
 }
 
 void DeviceParameterLink::readFromDevice()
 {
-    m_client->readTuning(then(CommandKind::GetParams));
+    send(request::Read{});
 }
 
 void DeviceParameterLink::zero()
 {
-    m_client->zero(then(CommandKind::Zero));
+    send(request::Zero{});
 }
 
 void DeviceParameterLink::saveInDevice()
 {
-    m_client->saveParams(then(CommandKind::SaveParams));
+    send(request::Save{});
 }
 
 void DeviceParameterLink::onStateChanged(SessionState state)
@@ -97,46 +98,40 @@ void DeviceParameterLink::refreshEffectsAvailability()
                         : QString());
 }
 
-void DeviceParameterLink::finishPush(const DeviceTuning &before, const CommandResult &result)
+void DeviceParameterLink::finishPush(const DeviceTuning &before, const Outcome &outcome)
 {
-    m_editor->pushFinished(result);
-    if (result.ok()) {
+    m_editor->pushFinished(outcome);
+    if (outcome.ok()) {
         // What changed is what the device held against what travelled (float32, bounds kept
-        // by the session's one rounding: `sent`), never the editor's doubles: the walls' ±π
-        // travel as the float just inside π, which the device already held.
-        const QString change = describeTuningChange(before, result.sent);
+        // by the session's one rounding), never the editor's doubles: the walls' ±π travel as
+        // the float just inside π, which the device already held.
+        const QString change = describeTuningChange(before, *outcome.pushed());
         m_lastMessage = change.isEmpty() ? tr("Pushed (no change).") : tr("Pushed: %1").arg(change);
         if (!change.isEmpty())
             Q_EMIT deviceChanged(change);
     } else {
-        m_lastMessage = tr("Push failed: %1").arg(SessionWording::commandFailure(result));
+        m_lastMessage = tr("Push failed: %1").arg(SessionWording::commandFailure(outcome));
     }
     Q_EMIT commandFinished(m_lastMessage);
 }
 
-void DeviceParameterLink::finishCommand(CommandKind kind, const CommandResult &result)
+void DeviceParameterLink::finishCommand(const Outcome &outcome)
 {
-    QString what;
-    switch (kind) {
-    case CommandKind::GetParams:
-        what = tr("Read");
-        break;
-    case CommandKind::Vibrate:
-        what = result.vibration.amplitude > 0 ? tr("Vibrate") : tr("Stop vibration");
-        break;
-    case CommandKind::Zero:
-        what = tr("ZERO");
-        break;
-    case CommandKind::SaveParams:
-        what = tr("Save in device");
-        break;
-    default:
-        return; // pushes finish in finishPush(); the link asks for nothing else
-    }
-    m_lastMessage = result.ok()
+    const QString what =
+        std::visit(Overloaded{
+                       [](const request::Read &) { return tr("Read"); },
+                       [](const request::Vibrate &v) {
+                           return v.vibration.amplitude > 0 ? tr("Vibrate") : tr("Stop vibration");
+                       },
+                       [](const request::Zero &) { return tr("ZERO"); },
+                       [](const request::Save &) { return tr("Save in device"); },
+                       [](const auto &) { return QString(); }, // the link sends nothing else
+                   },
+                   outcome.request);
+    m_lastMessage = outcome.ok()
                         ? tr("%1: done.").arg(what)
-                        : tr("%1 failed: %2").arg(what, SessionWording::commandFailure(result));
-    if (result.ok() && kind == CommandKind::Zero)
+                        : tr("%1 failed: %2").arg(what, SessionWording::commandFailure(outcome));
+    if (outcome.ok() && std::holds_alternative<request::Zero>(outcome.request))
         Q_EMIT deviceChanged(tr("ZERO: θ0 := current angle"));
     Q_EMIT commandFinished(m_lastMessage);
 }

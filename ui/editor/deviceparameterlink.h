@@ -14,7 +14,6 @@
 namespace hatpic {
 
 class DeviceClient;
-struct CommandDone;
 class ParameterEditor;
 
 class DeviceParameterLink : public QObject
@@ -48,10 +47,10 @@ private:
     void refreshEffectsAvailability();
     void onPushRequested(const DeviceTuning &tuning);
     //! `before`: the device's tuning when the push was sent.
-    void finishPush(const DeviceTuning &before, const CommandResult &result);
-    void finishCommand(CommandKind kind, const CommandResult &result);
-    //! Where the outcome of a `kind` command (not a push) goes: finishCommand().
-    CommandDone then(CommandKind kind);
+    void finishPush(const DeviceTuning &before, const Outcome &outcome);
+    //! Sends `request` (not a push); its outcome goes to finishCommand().
+    void send(const Request &request);
+    void finishCommand(const Outcome &outcome);
 
     DeviceClient *m_client;
     ParameterEditor *m_editor;

@@ -279,12 +279,12 @@ void ParameterEditor::setTauLimit(double tauLimit)
               tr("Use the device's torque limit (%1 N·m)").arg(QString::number(tauLimit, 'g', 6)));
 }
 
-void ParameterEditor::pushFinished(const CommandResult &result)
+void ParameterEditor::pushFinished(const Outcome &outcome)
 {
-    if (!m_sync.pushFinished(result))
+    if (!m_sync.pushFinished(outcome))
         return;    // a late answer after a disconnect
     revalidate();  // shows or clears the field the device named
-    refreshDiff(); // the result carries the read-back
+    refreshDiff(); // the outcome carries the read-back
     refreshSync();
     refreshActions();
     m_live->retry();

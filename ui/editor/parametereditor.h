@@ -80,7 +80,7 @@ public:
     QUndoStack *undoStack() const { return m_undo; }
 
     //! The answer to the last pushRequested() (DeviceParameterLink hands it over).
-    void pushFinished(const hatpic::CommandResult &result);
+    void pushFinished(const hatpic::Outcome &outcome);
 
     QAction *pushAction() const { return m_actions->push; }     //!< Ctrl+Return
     QAction *readAction() const { return m_actions->read; }     //!< "Read from device"

@@ -70,42 +70,37 @@ void SyncTracker::pushStarted(const DeviceTuning &edited)
     m_rejectedField.clear();
 }
 
-bool SyncTracker::pushFinished(const CommandResult &result)
+bool SyncTracker::pushFinished(const Outcome &outcome)
 {
     if (!m_pushing)
         return false;
     const DeviceTuning pushed = *m_pushing;
     m_pushing.reset();
-    if (result.ok()) {
-        m_device = m_device.updatedBy(result.received);
+    if (const auto *done = std::get_if<outcome::Done>(&outcome.result)) {
+        m_device = m_device.updatedBy(outcome.received);
         m_pushed = pushed;
-        if (!result.readBack) {
+        if (done->readBack == outcome::ReadBack::Unanswered) {
             m_failure = SyncState::AwaitingReadback;
             m_failureText = tr("pushing… (waiting for the read-back)");
         }
         return true;
     }
-    switch (result.status) {
-    case CommandResult::Status::Rejected: {
+    if (const auto *refused = std::get_if<outcome::Refused>(&outcome.result)) {
         m_failure = SyncState::Rejected;
         const std::string_view field =
-            isEffectCommand(result.command)      ? effectFieldName(result.field)
-            : isPassivityCommand(result.command) ? passivityFieldName(result.field)
-                                                 : deviceFieldName(result.field);
+            isEffectCommand(refused->step)      ? effectFieldName(refused->field)
+            : isPassivityCommand(refused->step) ? passivityFieldName(refused->field)
+                                                : deviceFieldName(refused->field);
         m_rejectedField = QString::fromLatin1(field.data(), qsizetype(field.size()));
-        break;
-    }
-    case CommandResult::Status::Timeout:
-        m_failure = SyncState::Timeout;
-        break;
-    default:
-        m_failure = SyncState::Failed;
-        break;
+    } else {
+        m_failure = std::holds_alternative<outcome::TimedOut>(outcome.result) ? SyncState::Timeout
+                                                                              : SyncState::Failed;
     }
     // A push that failed part-way changed the device all the same: what it accepted (its
     // read-back where it came) is the device's now.
-    m_device = m_device.updatedBy(appliedBeforeFailure(result));
-    m_failureText = SessionWording::commandFailureBrief(result);
+    if (const outcome::Stopped *stop = outcome.stopped())
+        m_device = m_device.updatedBy(stop->applied);
+    m_failureText = SessionWording::commandFailureBrief(outcome);
     return true;
 }
 

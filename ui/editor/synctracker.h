@@ -50,7 +50,7 @@ public:
     void pushStarted(const DeviceTuning &edited);
     //! The push's outcome, which carries the device's read-back. Returns false when no push
     //! was in flight (a late answer), which changes nothing.
-    bool pushFinished(const CommandResult &result);
+    bool pushFinished(const Outcome &outcome);
     bool isPushing() const { return m_pushing.has_value(); }
     //! Model name of the field the device named in its last rejection ("K_max",
     //! "wall_stiffness"), or empty.

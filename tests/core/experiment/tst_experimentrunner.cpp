@@ -58,9 +58,9 @@ struct Bench
     bool push(const DeviceParams &params)
     {
         QObject caller;
-        std::optional<CommandResult> done;
-        client.pushTuning({params, std::nullopt},
-                          {&caller, [&done](const CommandResult &r) { done = r; }});
+        std::optional<Outcome> done;
+        client.request(request::Push{{params, std::nullopt}},
+                       {&caller, [&done](const Outcome &o) { done = o; }});
         return QTest::qWaitFor([&] { return done.has_value(); }, kConnectMs) && done->ok();
     }
 
@@ -180,8 +180,8 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
     params.M_adm = 4e-2;
     QObject caller;
     bool pushed = false;
-    client.pushTuning({params, std::nullopt},
-                      {&caller, [&pushed](const CommandResult &) { pushed = true; }});
+    client.request(request::Push{{params, std::nullopt}},
+                   {&caller, [&pushed](const Outcome &) { pushed = true; }});
     QTRY_VERIFY_WITH_TIMEOUT(pushed, kConnectMs);
     QTRY_VERIFY_WITH_TIMEOUT(
         std::abs(client.deviceTuning().params.value().D_adm - params.D_adm) < 1e-9, kConnectMs);

@@ -1,4 +1,4 @@
-// Waiting for a command's outcome in the session tests: the one helper they share.
+// Waiting for a request's outcome in the session tests: the one helper they share.
 #pragma once
 
 #include "session/deviceclient.h"
@@ -10,16 +10,15 @@
 
 namespace hatpic::test {
 
-//! Calls `issue` with a CommandDone of this call's own, which `issue` hands to one of
-//! DeviceClient's commands, and returns that command's outcome once it came; a Timeout result
-//! when it did not within `timeoutMs` (a later one then goes nowhere).
-template<typename Issue> CommandResult waitForCommand(Issue issue, int timeoutMs)
+//! Sends `request` through `client` and returns its outcome once it came; a TimedOut at HELLO
+//! (which no request has) when it did not within `timeoutMs` (a later one then goes nowhere).
+inline Outcome waitForOutcome(DeviceClient &client, const Request &request, int timeoutMs)
 {
     QObject waiter;
-    std::optional<CommandResult> outcome;
-    issue(CommandDone{&waiter, [&outcome](const CommandResult &r) { outcome = r; }});
+    std::optional<Outcome> outcome;
+    client.request(request, CommandDone{&waiter, [&outcome](const Outcome &o) { outcome = o; }});
     if (!QTest::qWaitFor([&] { return outcome.has_value(); }, timeoutMs))
-        return commandResult(CommandKind::Hello, CommandResult::Status::Timeout);
+        return Outcome{request, outcome::TimedOut{{CommandKind::Hello, {}}, 0, timeoutMs}, {}};
     return *outcome;
 }
 

@@ -7,6 +7,7 @@
 #include <QTest>
 
 #include <tuple>
+#include <variant>
 
 using namespace Qt::StringLiterals;
 
@@ -29,50 +30,71 @@ struct ScriptedLink
     v2::Frame last() const { return frames().constLast(); }
 };
 
+//! A v2 device with `capabilities` (v2::kCapability* bits).
+DeviceInfo v2Device(quint8 capabilities)
+{
+    DeviceInfo device;
+    device.protocol = WireProtocol::V2;
+    device.protocolVersion = 2;
+    device.capabilities = capabilities;
+    return device;
+}
+//! A v2 device with neither effects nor passivity: a read is GET_PARAMS alone.
+const DeviceInfo kPlainDevice = v2Device(0);
+//! A v2 device with effects (a read adds GET_EFFECTS; VIBRATE).
+const DeviceInfo kEffectsDevice = v2Device(v2::kCapabilityEffects);
+//! A v2 device with every block.
+const DeviceInfo kFullDevice = v2Device(v2::kCapabilityEffects | v2::kCapabilityPassivity);
+
+//! What the queue finished: the command, its outcome, and the id its `then` answers to.
+struct Finished
+{
+    Command command;
+    Outcome outcome;
+    quint64 id = 0; //!< 0: the command had no `then`
+};
+
 //! A queue writing to a ScriptedLink, with everything it emits collected.
 struct Harness
 {
     CommandQueue queue;
     ScriptedLink link;
-    QList<QPair<Command, CommandResult>> finished;
+    QList<Finished> finished;
     QList<Command> acknowledged;
     int retried = 0;
     int helloUnanswered = 0;
+    quint64 heard = 0; //!< the id of the last `then` called
 
     Harness()
     {
         queue.setWriter([this](const QByteArray &bytes) { link.writes.append(bytes); });
         QObject::connect(&queue, &CommandQueue::finished,
-                         [this](const Command &c, const CommandResult &r) {
-                             finished.append({c, r});
+                         [this](const Command &c, const Outcome &o) {
+                             // The listener calls `then`, as the session does: it names the
+                             // request that finished.
+                             heard = 0;
+                             if (c.then)
+                                 c.then(o);
+                             finished.append({c, o, heard});
                          });
         QObject::connect(&queue, &CommandQueue::acknowledged,
                          [this](const Command &c) { acknowledged.append(c); });
         QObject::connect(&queue, &CommandQueue::retried, [this] { ++retried; });
         QObject::connect(&queue, &CommandQueue::helloUnanswered, [this] { ++helloUnanswered; });
     }
-    //! A push of `tuning` as request `id`; returns the command as queued.
-    Command push(quint64 id, const DeviceTuning &tuning)
+    //! Queues `request` as request `id`, with the steps it takes on `device`; returns the
+    //! command as queued.
+    Command enqueue(quint64 id, const Request &request, const DeviceInfo &device = kPlainDevice)
     {
-        Command c;
-        c.id = id;
-        c.kind = tuning.params    ? CommandKind::SetParams
-                 : tuning.effects ? CommandKind::SetEffects
-                                  : CommandKind::SetPassivity; // as DeviceSession::pushTuning
-        c.tuning = tuning;
+        const Command c(request, wireSteps(request, device),
+                        [this, id](const Outcome &) { heard = id; });
         queue.enqueue(c);
         return c;
     }
-    void enqueue(quint64 id, CommandKind kind, const DeviceParams &params = {})
+    //! A push of `tuning` as request `id`; returns the command as queued.
+    Command push(quint64 id, const DeviceTuning &tuning)
     {
-        Command c;
-        c.id = id;
-        c.kind = kind;
-        if (kind == CommandKind::SetParams)
-            c.tuning.params = params;
-        if (kind == CommandKind::SetEffects)
-            c.tuning.effects = EffectParams{};
-        queue.enqueue(c);
+        return enqueue(id, request::Push{tuning}, kFullDevice);
     }
     void ack(quint8 seq, v2::AckStatus status = v2::AckStatus::Ok, quint8 field = v2::kNoField)
     {
@@ -85,6 +107,13 @@ struct Harness
     quint8 lastSeq() const { return link.last().seq; }
 };
 
+//! The read-back of a finished outcome; nullopt when it did not finish as Done.
+std::optional<outcome::ReadBack> readBackOf(const Outcome &o)
+{
+    const auto *done = std::get_if<outcome::Done>(&o.result);
+    return done ? std::optional(done->readBack) : std::nullopt;
+}
+
 constexpr int kAllRetriesMs =
     CommandQueue::kCommandTimeoutMs * (CommandQueue::kCommandRetries + 1) + 500;
 
@@ -96,7 +125,7 @@ class TestCommandQueue : public QObject
 private Q_SLOTS:
     void oneInFlightTheRestWait();
     void setEffectsIsReadBack();
-    void aTuningIsOnePushWithOneResult();
+    void aTuningIsOnePushWithOneOutcome();
     void aPassivityPushSaysWhatItSentAndWhatWasApplied();
     void aRefusedPartEndsThePush();
     void effectsReadBackThatDiffersIsReported();
@@ -120,16 +149,16 @@ private Q_SLOTS:
 void TestCommandQueue::oneInFlightTheRestWait()
 {
     Harness h;
-    h.enqueue(1, CommandKind::SaveParams);
-    h.enqueue(2, CommandKind::GetParams);
+    h.enqueue(1, request::Save{});
+    h.enqueue(2, request::Read{});
     QCOMPARE(h.link.writes.size(), 1);
     QVERIFY(h.queue.busy());
     QVERIFY(std::holds_alternative<v2::SaveParams>(h.link.last().message));
     h.ack(h.lastSeq());
     QCOMPARE(h.finished.size(), 1);
-    QCOMPARE(h.finished[0].first.id, quint64(1));
-    QVERIFY(h.finished[0].second.ok());
-    QCOMPARE(h.finished[0].second.command, CommandKind::SaveParams);
+    QCOMPARE(h.finished[0].id, quint64(1));
+    QVERIFY(h.finished[0].outcome.ok());
+    QVERIFY(std::holds_alternative<request::Save>(h.finished[0].outcome.request));
     // The next one goes out as soon as the first is answered, with the next seq.
     QCOMPARE(h.link.writes.size(), 2);
     QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
@@ -139,26 +168,27 @@ void TestCommandQueue::oneInFlightTheRestWait()
 void TestCommandQueue::retriesResendTheSameBytesThenTimeOut()
 {
     Harness h;
-    h.enqueue(5, CommandKind::Zero);
+    h.enqueue(5, request::Zero{});
     QTRY_COMPARE_WITH_TIMEOUT(h.finished.size(), 1, kAllRetriesMs);
     QCOMPARE(h.link.writes.size(), CommandQueue::kCommandRetries + 1);
     for (const QByteArray &w : std::as_const(h.link.writes))
         QCOMPARE(w, h.link.writes.first()); // same seq, same bytes: the device dedupes
     QCOMPARE(h.retried, CommandQueue::kCommandRetries);
-    const CommandResult r = h.finished[0].second;
-    QCOMPARE(r.status, CommandResult::Status::Timeout);
-    QCOMPARE(r.command, CommandKind::Zero);
-    QCOMPARE(r.attempts, CommandQueue::kCommandRetries + 1);
-    QCOMPARE(r.intervalMs, CommandQueue::kCommandTimeoutMs);
+    const Outcome r = h.finished[0].outcome;
+    const auto *timedOut = std::get_if<outcome::TimedOut>(&r.result);
+    QVERIFY(timedOut);
+    QCOMPARE(timedOut->step, CommandKind::Zero);
+    QCOMPARE(timedOut->attempts, CommandQueue::kCommandRetries + 1);
+    QCOMPARE(timedOut->intervalMs, CommandQueue::kCommandTimeoutMs);
     QVERIFY(!h.queue.busy());
 }
 
 void TestCommandQueue::lateAnswerToARetryIsIgnored()
 {
     Harness h;
-    h.enqueue(1, CommandKind::SaveParams);
+    h.enqueue(1, request::Save{});
     const quint8 first = h.lastSeq();
-    h.enqueue(2, CommandKind::SaveParams);
+    h.enqueue(2, request::Save{});
     h.ack(first);
     QCOMPARE(h.finished.size(), 1);
     // The device answered a retried copy too: that ACK names the old seq and is not the
@@ -170,7 +200,7 @@ void TestCommandQueue::lateAnswerToARetryIsIgnored()
     QCOMPARE(h.finished.size(), 1);
     h.ack(h.lastSeq());
     QCOMPARE(h.finished.size(), 2);
-    QCOMPARE(h.finished[1].first.id, quint64(2));
+    QCOMPARE(h.finished[1].id, quint64(2));
 }
 
 void TestCommandQueue::setParamsIsReadBack()
@@ -178,22 +208,21 @@ void TestCommandQueue::setParamsIsReadBack()
     Harness h;
     DeviceParams p;
     p.K_max = 0.6;
-    h.enqueue(3, CommandKind::SetParams, p);
+    h.push(3, {p, std::nullopt});
     QVERIFY(std::holds_alternative<v2::SetParams>(h.link.last().message));
     h.ack(h.lastSeq());
     // Acknowledged (the session applies it from the next sample), then read back.
     QCOMPARE(h.acknowledged.size(), 1);
-    QCOMPARE(h.acknowledged[0].kind, CommandKind::SetParams);
+    QCOMPARE(h.acknowledged[0].stepKind(), CommandKind::SetParams);
     QVERIFY(h.finished.isEmpty());
     QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
     h.queue.onTuning({p, std::nullopt});
     QCOMPARE(h.finished.size(), 1);
-    const CommandResult r = h.finished[0].second;
-    QCOMPARE(h.finished[0].first.id, quint64(3));
+    const Outcome r = h.finished[0].outcome;
+    QCOMPARE(h.finished[0].id, quint64(3));
     QVERIFY(r.ok());
-    QCOMPARE(r.command, CommandKind::SetParams);
-    QVERIFY(r.readBack);
-    QVERIFY(r.readBackMatches);
+    QVERIFY(r.pushed() && r.pushed()->params && !r.pushed()->effects);
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
     QCOMPARE(r.received.params.value(), p);
 }
 
@@ -202,57 +231,58 @@ void TestCommandQueue::readBackThatDiffersIsReported()
     Harness h;
     DeviceParams sent;
     sent.K_max = 0.6;
-    h.enqueue(3, CommandKind::SetParams, sent);
+    h.push(3, {sent, std::nullopt});
     h.ack(h.lastSeq());
     DeviceParams held = sent;
     held.K_max = 0.5;
     h.queue.onTuning({held, std::nullopt});
-    const CommandResult r = h.finished.value(0).second;
+    const Outcome r = h.finished.value(0).outcome;
     QVERIFY(r.ok());
-    QVERIFY(r.readBack);
-    QVERIFY(!r.readBackMatches);
-    QCOMPARE(r.sent.params.value(), sent);
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Differs));
+    QVERIFY(r.pushed());
+    QCOMPARE(r.pushed()->params.value(), sent);
     QCOMPARE(r.received.params.value(), held);
 }
 
 void TestCommandQueue::zeroReadBackCarriesTheNewTheta0()
 {
     Harness h;
-    h.enqueue(4, CommandKind::Zero);
+    h.enqueue(4, request::Zero{});
     h.ack(h.lastSeq());
     DeviceParams held;
     held.theta0 = 0.25;
     h.queue.onTuning({held, std::nullopt});
-    const CommandResult r = h.finished.value(0).second;
+    const Outcome r = h.finished.value(0).outcome;
     QVERIFY(r.ok());
-    QCOMPARE(r.command, CommandKind::Zero);
-    QVERIFY(r.readBack && r.readBackMatches);
+    QVERIFY(std::holds_alternative<request::Zero>(r.request));
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
     QCOMPARE(r.received.params.value().theta0, 0.25);
 }
 
 void TestCommandQueue::unansweredReadBackStillSucceeds()
 {
     Harness h;
-    h.enqueue(6, CommandKind::Zero);
+    h.enqueue(6, request::Zero{});
     h.ack(h.lastSeq());
     QTRY_COMPARE_WITH_TIMEOUT(h.finished.size(), 1, kAllRetriesMs);
-    const CommandResult r = h.finished[0].second;
+    const Outcome r = h.finished[0].outcome;
     QVERIFY(r.ok()); // the device did acknowledge ZERO
-    QCOMPARE(r.reason, CommandResult::Reason::ReadBackUnanswered);
-    QCOMPARE(r.command, CommandKind::Zero);
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Unanswered));
+    QVERIFY(std::holds_alternative<request::Zero>(r.request));
 }
 
 void TestCommandQueue::rejectionNamesTheField()
 {
     Harness h;
-    h.enqueue(7, CommandKind::SetParams);
+    h.push(7, {DeviceParams{}, std::nullopt});
     h.ack(h.lastSeq(), v2::AckStatus::OutOfRange, 3);
     QCOMPARE(h.finished.size(), 1);
-    const CommandResult r = h.finished[0].second;
-    QCOMPARE(r.status, CommandResult::Status::Rejected);
-    QCOMPARE(r.ackStatus, v2::AckStatus::OutOfRange);
-    QCOMPARE(r.field, 3);
-    QCOMPARE(r.command, CommandKind::SetParams);
+    const Outcome r = h.finished[0].outcome;
+    const auto *refused = std::get_if<outcome::Refused>(&r.result);
+    QVERIFY(refused);
+    QCOMPARE(refused->status, v2::AckStatus::OutOfRange);
+    QCOMPARE(refused->field, 3);
+    QCOMPARE(refused->step, CommandKind::SetParams);
     QVERIFY(h.acknowledged.isEmpty()); // nothing to apply, nothing read back
     QCOMPARE(h.link.writes.size(), 1);
 }
@@ -268,99 +298,110 @@ void TestCommandQueue::setEffectsIsReadBack()
     QVERIFY(set && set->effects.detent_strength == double(0.05f));
     h.ack(h.lastSeq());
     QCOMPARE(h.acknowledged.size(), 1);
-    QCOMPARE(h.acknowledged[0].kind, CommandKind::SetEffects);
+    QCOMPARE(h.acknowledged[0].stepKind(), CommandKind::SetEffects);
     QVERIFY(h.finished.isEmpty());
-    // Read back under the same request id with GET_EFFECTS; a PARAMS does not answer it.
+    // Read back under the same request with GET_EFFECTS; a PARAMS does not answer it.
     QVERIFY(std::holds_alternative<v2::GetEffects>(h.link.last().message));
     h.queue.onTuning({DeviceParams{}, std::nullopt});
     QVERIFY(h.finished.isEmpty());
     h.queue.onTuning({std::nullopt, set->effects});
     QCOMPARE(h.finished.size(), 1);
-    QCOMPARE(h.finished[0].first.id, quint64(11));
-    const CommandResult r = h.finished[0].second;
+    QCOMPARE(h.finished[0].id, quint64(11));
+    const Outcome r = h.finished[0].outcome;
     QVERIFY(r.ok());
-    QCOMPARE(r.command, CommandKind::SetEffects);
-    QVERIFY(r.readBack && r.readBackMatches);
+    QVERIFY(r.pushed() && !r.pushed()->params && r.pushed()->effects);
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
     QCOMPARE(r.received.effects.value().detent_strength, double(0.05f));
 }
 
 //! Parameters and effects travel as one push: SET_PARAMS, GET_PARAMS, SET_EFFECTS, GET_EFFECTS
-//! under one request id, one result carrying both read-backs.
-void TestCommandQueue::aTuningIsOnePushWithOneResult()
+//! under one request, one outcome carrying both read-backs.
+void TestCommandQueue::aTuningIsOnePushWithOneOutcome()
 {
     Harness h;
     DeviceTuning tuning{DeviceParams{}, EffectParams{}};
     tuning.params->K_max = 0.6;
     tuning.effects->detent_strength = 0.05;
     const Command c = h.push(13, tuning);
+    QVERIFY(c.pushed());
+    const DeviceTuning &sent = *c.pushed();
     QVERIFY(std::holds_alternative<v2::SetParams>(h.link.last().message));
     h.ack(h.lastSeq());
     QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
-    h.queue.onTuning({std::nullopt, *c.tuning.effects}); // not what GET_PARAMS waits for
+    h.queue.onTuning({std::nullopt, *sent.effects}); // not what GET_PARAMS waits for
     QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
-    h.queue.onTuning({c.tuning.params, std::nullopt});
+    h.queue.onTuning({sent.params, std::nullopt});
     QVERIFY(h.finished.isEmpty());
     QVERIFY(std::holds_alternative<v2::SetEffects>(h.link.last().message));
     h.ack(h.lastSeq());
     QVERIFY(std::holds_alternative<v2::GetEffects>(h.link.last().message));
-    h.queue.onTuning({std::nullopt, c.tuning.effects});
+    h.queue.onTuning({std::nullopt, sent.effects});
     QCOMPARE(h.finished.size(), 1);
-    QCOMPARE(h.finished[0].first.id, quint64(13));
+    QCOMPARE(h.finished[0].id, quint64(13));
     QCOMPARE(h.acknowledged.size(), 2);
     QCOMPARE(h.acknowledged[0].stepKind(), CommandKind::SetParams);
     QCOMPARE(h.acknowledged[1].stepKind(), CommandKind::SetEffects);
-    const CommandResult r = h.finished[0].second;
-    QVERIFY(r.ok() && r.readBack && r.readBackMatches);
-    QCOMPARE(r.command, CommandKind::SetParams);
-    QVERIFY(sameOnWire(r.received, c.tuning));
+    const Outcome r = h.finished[0].outcome;
+    QVERIFY(r.ok());
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
+    QVERIFY(r.pushed() && r.pushed()->params && r.pushed()->effects);
+    QVERIFY(sameOnWire(r.received, sent));
     QCOMPARE(h.link.writes.size(), 4);
 }
 
 void TestCommandQueue::aPassivityPushSaysWhatItSentAndWhatWasApplied()
 {
     Harness h;
-    // The passivity block alone: SET_PASSIVITY, GET_PASSIVITY; the result says what it sent
+    // The passivity block alone: SET_PASSIVITY, GET_PASSIVITY; the outcome says what it sent
     // (the tuner's "Pushed: pc_damping_max 0.7 → 0" is made from it).
     const Command alone = h.push(15, {std::nullopt, std::nullopt, PassivityParams::off()});
     QVERIFY(std::holds_alternative<v2::SetPassivity>(h.link.last().message));
     h.ack(h.lastSeq());
     QVERIFY(std::holds_alternative<v2::GetPassivity>(h.link.last().message));
-    h.queue.onTuning({std::nullopt, std::nullopt, alone.tuning.passivity});
+    QVERIFY(alone.pushed());
+    h.queue.onTuning({std::nullopt, std::nullopt, alone.pushed()->passivity});
     QCOMPARE(h.finished.size(), 1);
-    const CommandResult r = h.finished[0].second;
-    QVERIFY(r.ok() && r.readBackMatches);
-    QVERIFY(r.sent.passivity && *r.sent.passivity == PassivityParams::off());
+    const Outcome r = h.finished[0].outcome;
+    QVERIFY(r.ok());
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
+    QVERIFY(r.pushed() && r.pushed()->passivity &&
+            *r.pushed()->passivity == PassivityParams::off());
     QVERIFY(r.received.passivity.has_value());
 
     // All three blocks, SET_PASSIVITY unanswered: the parameters and effects are in force, the
     // passivity block unknown.
     const Command all = h.push(16, {DeviceParams{}, EffectParams{}, PassivityParams::off()});
+    QVERIFY(all.pushed());
     h.ack(h.lastSeq());
-    h.queue.onTuning({all.tuning.params, std::nullopt});
+    h.queue.onTuning({all.pushed()->params, std::nullopt});
     h.ack(h.lastSeq());
-    h.queue.onTuning({std::nullopt, all.tuning.effects});
+    h.queue.onTuning({std::nullopt, all.pushed()->effects});
     QVERIFY(std::holds_alternative<v2::SetPassivity>(h.link.last().message));
     QTRY_COMPARE_WITH_TIMEOUT(h.finished.size(), 2, 10 * CommandQueue::kCommandTimeoutMs);
-    const CommandResult timedOut = h.finished[1].second;
-    QCOMPARE(timedOut.status, CommandResult::Status::Timeout);
-    QCOMPARE(timedOut.command, CommandKind::SetPassivity);
-    const DeviceTuning applied = appliedBeforeFailure(timedOut);
+    const Outcome timedOut = h.finished[1].outcome;
+    const auto *stop = std::get_if<outcome::TimedOut>(&timedOut.result);
+    QVERIFY(stop);
+    QCOMPARE(stop->step, CommandKind::SetPassivity);
+    QVERIFY(timedOut.stopped());
+    const DeviceTuning &applied = timedOut.stopped()->applied;
     QVERIFY(applied.params && applied.effects && !applied.passivity);
-    QCOMPARE(unansweredBlockStep(timedOut), std::optional(CommandKind::SetPassivity));
+    QCOMPARE(timedOut.unknownStep(), std::optional(CommandKind::SetPassivity));
 }
 
 void TestCommandQueue::aRefusedPartEndsThePush()
 {
     Harness h;
     const Command c = h.push(14, {DeviceParams{}, EffectParams{}});
+    QVERIFY(c.pushed());
     h.ack(h.lastSeq());
-    h.queue.onTuning({c.tuning.params, std::nullopt});
+    h.queue.onTuning({c.pushed()->params, std::nullopt});
     h.ack(h.lastSeq(), v2::AckStatus::OutOfRange, 5); // SET_EFFECTS refused: wall_stiffness
     QCOMPARE(h.finished.size(), 1);
-    const CommandResult r = h.finished[0].second;
-    QCOMPARE(r.status, CommandResult::Status::Rejected);
-    QCOMPARE(r.command, CommandKind::SetEffects); // the frame refused
-    QCOMPARE(r.field, 5);
+    const Outcome r = h.finished[0].outcome;
+    const auto *refused = std::get_if<outcome::Refused>(&r.result);
+    QVERIFY(refused);
+    QCOMPARE(refused->step, CommandKind::SetEffects); // the frame refused
+    QCOMPARE(refused->field, 5);
     QVERIFY(r.received.params.has_value()); // the parameters were taken and read back
     QVERIFY(!r.received.effects.has_value());
     QCOMPARE(h.link.writes.size(), 3);
@@ -372,24 +413,23 @@ void TestCommandQueue::effectsReadBackThatDiffersIsReported()
     EffectParams fx;
     fx.wall_max = 0.5;
     const Command c = h.push(12, {std::nullopt, fx});
+    QVERIFY(c.pushed());
     h.ack(h.lastSeq());
-    EffectParams held = *c.tuning.effects;
+    EffectParams held = *c.pushed()->effects;
     held.wall_max = 0.25;
     h.queue.onTuning({std::nullopt, held});
-    const CommandResult r = h.finished.value(0).second;
-    QVERIFY(r.ok() && r.readBack && !r.readBackMatches);
-    QCOMPARE(r.sent.effects.value().wall_max, 0.5);
+    const Outcome r = h.finished.value(0).outcome;
+    QVERIFY(r.ok());
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Differs));
+    QVERIFY(r.pushed());
+    QCOMPARE(r.pushed()->effects.value().wall_max, 0.5);
     QCOMPARE(r.received.effects.value().wall_max, 0.25);
 }
 
 void TestCommandQueue::vibrateFinishesOnItsAck()
 {
     Harness h;
-    Command c;
-    c.id = 13;
-    c.kind = CommandKind::Vibrate;
-    c.vibration = {0.1, 80, 0.5};
-    h.queue.enqueue(c);
+    h.enqueue(13, request::Vibrate{{0.1, 80, 0.5}}, kEffectsDevice);
     const v2::Frame sent = h.link.last();
     const auto *cue = std::get_if<v2::Vibrate>(&sent.message);
     QVERIFY(cue);
@@ -397,25 +437,29 @@ void TestCommandQueue::vibrateFinishesOnItsAck()
     h.ack(h.lastSeq());
     QCOMPARE(h.finished.size(), 1); // no read-back: fire and forget
     QCOMPARE(h.link.writes.size(), 1);
-    const CommandResult r = h.finished[0].second;
+    const Outcome r = h.finished[0].outcome;
     QVERIFY(r.ok());
-    QCOMPARE(r.command, CommandKind::Vibrate);
-    QCOMPARE(r.vibration, (Vibration{0.1, 80, 0.5}));
+    const auto *vibrate = std::get_if<request::Vibrate>(&r.request);
+    QVERIFY(vibrate);
+    QCOMPARE(vibrate->vibration, (Vibration{0.1, 80, 0.5}));
 }
 
 void TestCommandQueue::effectRejectionsNameTheirField()
 {
     // A field the block has is named; one beyond it (VIBRATE has three) names nothing.
-    for (const auto &[kind, field, named] : {std::tuple{CommandKind::SetEffects, quint8(6), 6},
-                                             std::tuple{CommandKind::Vibrate, quint8(1), 1},
-                                             std::tuple{CommandKind::Vibrate, quint8(5), -1}}) {
+    for (const auto &[request, step, field, named] :
+         {std::tuple{Request{request::Push{{std::nullopt, EffectParams{}}}},
+                     CommandKind::SetEffects, quint8(6), 6},
+          std::tuple{Request{request::Vibrate{}}, CommandKind::Vibrate, quint8(1), 1},
+          std::tuple{Request{request::Vibrate{}}, CommandKind::Vibrate, quint8(5), -1}}) {
         Harness h;
-        h.enqueue(14, kind);
+        h.enqueue(14, request, kEffectsDevice);
         h.ack(h.lastSeq(), v2::AckStatus::OutOfRange, field);
-        const CommandResult r = h.finished.value(0).second;
-        QCOMPARE(r.status, CommandResult::Status::Rejected);
-        QCOMPARE(r.command, kind);
-        QCOMPARE(r.field, named);
+        const Outcome r = h.finished.value(0).outcome;
+        const auto *refused = std::get_if<outcome::Refused>(&r.result);
+        QVERIFY(refused);
+        QCOMPARE(refused->step, step);
+        QCOMPARE(refused->field, named);
         QVERIFY(h.acknowledged.isEmpty());
     }
 }
@@ -423,60 +467,70 @@ void TestCommandQueue::effectRejectionsNameTheirField()
 void TestCommandQueue::okAckDoesNotAnswerGetEffects()
 {
     Harness h;
-    h.enqueue(15, CommandKind::GetEffects);
+    h.enqueue(15, request::Read{}, kEffectsDevice); // GET_PARAMS, GET_EFFECTS
+    h.queue.onTuning({DeviceParams{}, std::nullopt});
+    QVERIFY(std::holds_alternative<v2::GetEffects>(h.link.last().message));
     h.ack(h.lastSeq());
     QVERIFY(h.finished.isEmpty()); // only EFFECTS answers it
     h.ack(h.lastSeq(), v2::AckStatus::UnknownType);
-    QCOMPARE(h.finished.value(0).second.status, CommandResult::Status::Rejected);
+    const Outcome r = h.finished.value(0).outcome;
+    const auto *refused = std::get_if<outcome::Refused>(&r.result);
+    QVERIFY(refused);
+    QCOMPARE(refused->step, CommandKind::GetEffects);
 }
 
 void TestCommandQueue::okAckDoesNotAnswerGetParams()
 {
     Harness h;
-    h.enqueue(8, CommandKind::GetParams);
+    h.enqueue(8, request::Read{});
     h.ack(h.lastSeq()); // GET_PARAMS is answered by PARAMS, not by an ACK
     QVERIFY(h.finished.isEmpty());
     h.ack(h.lastSeq(), v2::AckStatus::UnknownType); // …but a refusal ends it
     QCOMPARE(h.finished.size(), 1);
-    QCOMPARE(h.finished[0].second.status, CommandResult::Status::Rejected);
-    QCOMPARE(h.finished[0].second.field, -1);
+    const auto *refused = std::get_if<outcome::Refused>(&h.finished[0].outcome.result);
+    QVERIFY(refused);
+    QCOMPARE(refused->field, -1);
 }
 
 void TestCommandQueue::fullQueueRefusesAtOnce()
 {
     Harness h;
-    h.enqueue(1, CommandKind::SaveParams); // in flight
+    h.enqueue(1, request::Save{}); // in flight
     for (int i = 0; i < CommandQueue::kMaxQueuedCommands; ++i)
-        h.enqueue(quint64(10 + i), CommandKind::SaveParams);
+        h.enqueue(quint64(10 + i), request::Save{});
     QVERIFY(h.finished.isEmpty());
-    h.enqueue(99, CommandKind::GetParams);
+    h.enqueue(99, request::Read{});
     QCOMPARE(h.finished.size(), 1);
-    QCOMPARE(h.finished[0].first.id, quint64(99));
-    const CommandResult r = h.finished[0].second;
-    QCOMPARE(r.status, CommandResult::Status::Invalid);
-    QCOMPARE(r.reason, CommandResult::Reason::QueueFull);
-    QCOMPARE(r.limit, CommandQueue::kMaxQueuedCommands);
-    QCOMPARE(r.command, CommandKind::GetParams);
+    QCOMPARE(h.finished[0].id, quint64(99));
+    const Outcome r = h.finished[0].outcome;
+    const auto *full = std::get_if<outcome::QueueFull>(&r.result);
+    QVERIFY(full);
+    QCOMPARE(full->limit, CommandQueue::kMaxQueuedCommands);
+    QVERIFY(std::holds_alternative<request::Read>(r.request));
     QCOMPARE(h.link.writes.size(), 1);
 }
 
 void TestCommandQueue::failAllFinishesEverything()
 {
     Harness h;
-    h.enqueue(1, CommandKind::SetParams);
+    h.push(1, {DeviceParams{}, std::nullopt});
     h.ack(h.lastSeq()); // now in its read-back stage
-    h.enqueue(2, CommandKind::SaveParams);
-    h.queue.failAll(CommandResult::Reason::ConnectionLost);
+    h.enqueue(2, request::Save{});
+    h.queue.failAll(outcome::Cut::Why::ConnectionLost);
     QCOMPARE(h.finished.size(), 2);
-    for (const auto &[command, result] : std::as_const(h.finished)) {
-        QCOMPARE(result.status, CommandResult::Status::NotConnected);
-        QCOMPARE(result.reason, CommandResult::Reason::ConnectionLost);
+    for (const Finished &f : std::as_const(h.finished)) {
+        const auto *cut = std::get_if<outcome::Cut>(&f.outcome.result);
+        QVERIFY(cut);
+        QCOMPARE(cut->why, outcome::Cut::Why::ConnectionLost);
     }
     // The step in flight (issue 27): a push cut in its read-back had its SET_PARAMS accepted,
-    // and its result says so.
-    QCOMPARE(h.finished[0].second.command, CommandKind::GetParams);
-    QVERIFY(appliedBeforeFailure(h.finished[0].second).params.has_value());
-    QVERIFY(!appliedBeforeFailure(h.finished[1].second).params.has_value());
+    // and its outcome says so.
+    const outcome::Stopped *cutPush = h.finished[0].outcome.stopped();
+    const outcome::Stopped *cutSave = h.finished[1].outcome.stopped();
+    QVERIFY(cutPush && cutSave);
+    QCOMPARE(cutPush->step, CommandKind::GetParams);
+    QVERIFY(cutPush->applied.params.has_value());
+    QVERIFY(!cutSave->applied.params.has_value());
     QVERIFY(!h.queue.busy());
     // Nothing is resent afterwards.
     const qsizetype writes = h.link.writes.size();
@@ -488,7 +542,7 @@ void TestCommandQueue::withoutAWriterNothingIsSent()
 {
     Harness h;
     h.queue.setWriter({});
-    h.enqueue(1, CommandKind::GetParams);
+    h.enqueue(1, request::Read{});
     QVERIFY(h.link.writes.isEmpty());
     QVERIFY(!h.queue.busy());
     h.queue.setWriter([&h](const QByteArray &bytes) { h.link.writes.append(bytes); });
@@ -499,15 +553,15 @@ void TestCommandQueue::withoutAWriterNothingIsSent()
 void TestCommandQueue::unansweredHelloIsReported()
 {
     Harness h;
-    h.enqueue(0, CommandKind::Hello);
+    h.queue.enqueueHello();
     QCOMPARE(h.link.writes.first().front(), '\0'); // led by a delimiter
     QTRY_COMPARE_WITH_TIMEOUT(h.helloUnanswered, 1, kAllRetriesMs);
-    QVERIFY(h.finished.isEmpty()); // detection reports it, not a command result
+    QVERIFY(h.finished.isEmpty()); // detection reports it, not an outcome
     QVERIFY(!h.queue.busy());
 
     // Answered: HELLO_REPLY clears it, and the next command goes out.
-    h.enqueue(0, CommandKind::Hello);
-    h.enqueue(1, CommandKind::GetParams);
+    h.queue.enqueueHello();
+    h.enqueue(1, request::Read{});
     h.queue.onHelloReply();
     QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
 }

@@ -156,29 +156,29 @@ void TestDeviceClient::outcomesComeToTheirCaller()
     DeviceParams bad;
     bad.N = -1;
     QObject caller;
-    QList<CommandResult> pushed, read, refused;
-    const auto into = [&caller](QList<CommandResult> &list) {
-        return CommandDone{&caller, [&list](const CommandResult &r) { list.append(r); }};
+    QList<Outcome> pushed, read, refused;
+    const auto into = [&caller](QList<Outcome> &list) {
+        return CommandDone{&caller, [&list](const Outcome &o) { list.append(o); }};
     };
-    client.pushTuning({p, std::nullopt}, into(pushed));
-    client.readTuning(into(read));
-    client.pushTuning({bad, std::nullopt}, into(refused));
+    client.request(request::Push{{p, std::nullopt}}, into(pushed));
+    client.request(request::Read{}, into(read));
+    client.request(request::Push{{bad, std::nullopt}}, into(refused));
     int late = 0;
     {
         QObject gone; // its command still runs, but nobody hears its outcome
-        client.readTuning({&gone, [&late](const CommandResult &) { ++late; }});
+        client.request(request::Read{}, {&gone, [&late](const Outcome &) { ++late; }});
     }
     QTRY_VERIFY_WITH_TIMEOUT(!pushed.isEmpty() && !read.isEmpty() && !refused.isEmpty(),
                              kConnectTimeoutMs);
-    QVERIFY(pushed.first().ok() && pushed.first().readBackMatches);
+    QCOMPARE(std::get<outcome::Done>(pushed.first().result).readBack, outcome::ReadBack::Matches);
     QVERIFY(read.first().ok());
-    QCOMPARE(refused.first().status, CommandResult::Status::Invalid);
+    QVERIFY(std::holds_alternative<outcome::Invalid>(refused.first().result));
     QCOMPARE(client.deviceTuning().params.value().M_adm, double(0.02f));
     // A command without a caller runs too; afterwards each list still holds its one outcome.
-    client.readTuning();
+    client.request(request::Read{});
     QObject last;
     bool lastDone = false;
-    client.readTuning({&last, [&lastDone](const CommandResult &) { lastDone = true; }});
+    client.request(request::Read{}, {&last, [&lastDone](const Outcome &) { lastDone = true; }});
     QTRY_VERIFY_WITH_TIMEOUT(lastDone, kConnectTimeoutMs);
     QCOMPARE(pushed.size() + read.size() + refused.size(), 3);
     QCOMPARE(late, 0);

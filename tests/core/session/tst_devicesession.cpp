@@ -5,6 +5,7 @@
 #include "model/stiffness.h"
 #include "protocol/v2codec.h"
 #include "session/devicesession.h"
+#include "session/sessionwording.h"
 #include "sim/simlink.h"
 #include "sim/simulateddevice.h"
 #include "sim/simulatorhost.h"
@@ -40,13 +41,10 @@ ConnectOptions simOptions(WireProtocol protocol, ProtocolChoice choice = Protoco
     return test::simulatorOptions(config, choice);
 }
 
-//! A failed result's codes, for a test's failure message.
-QString statusText(const CommandResult &r)
+//! A failed outcome in words, for a test's failure message.
+QString statusText(const Outcome &o)
 {
-    return u"status %1, reason %2, ack %3, field %4"_s.arg(int(r.status))
-        .arg(int(r.reason))
-        .arg(int(r.ackStatus))
-        .arg(r.field);
+    return SessionWording::commandFailure(o);
 }
 
 //! Parameters as a device holds them: each field rounded to float32.
@@ -63,7 +61,7 @@ struct Harness
 {
     DeviceSession session;
     QList<Sample> samples;
-    QHash<quint64, CommandResult> results;
+    QHash<quint64, Outcome> results;
     QList<QPair<SessionState, StateDetail>> states;
     QList<DeviceParams> params;
     QList<RecordingStatus> recording;
@@ -74,8 +72,6 @@ struct Harness
     {
         QObject::connect(&session.samples(), &SamplePipeline::samplesReady,
                          [this](const SampleBatch &b) { samples.append(b); });
-        QObject::connect(&session, &DeviceSession::commandFinished,
-                         [this](quint64 id, const CommandResult &r) { results.insert(id, r); });
         QObject::connect(&session, &DeviceSession::stateChanged,
                          [this](SessionState s, const StateDetail &d) {
                              states.append({s, d});
@@ -89,6 +85,11 @@ struct Harness
                          [this](const RecordingStatus &r) { recording.append(r); });
         QObject::connect(&session, &DeviceSession::statsUpdated,
                          [this](const LinkStats &s) { lastStats = s; });
+    }
+    //! Sends `request`; its outcome lands in `results` under `id`.
+    void send(quint64 id, const Request &request)
+    {
+        session.request(request, [this, id](const Outcome &o) { results.insert(id, o); });
     }
     bool sawState(SessionState s) const
     {
@@ -321,25 +322,24 @@ void TestDeviceSession::pushParamsReadsBack()
     p.K_max = 0.6;
     p.K_min = 0.2;
     p.N = 0.12;
-    h.session.pushTuning(7, {p, std::nullopt});
+    h.send(7, request::Push{{p, std::nullopt}});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(7), kCommandWaitMs);
-    const CommandResult r = h.results.value(7);
+    const Outcome r = h.results.value(7);
     QVERIFY2(r.ok(), qPrintable(statusText(r)));
-    QVERIFY(r.readBack);
-    QVERIFY(r.readBackMatches);
+    QCOMPARE(std::get<outcome::Done>(r.result).readBack, outcome::ReadBack::Matches);
     QCOMPARE(h.params.last().K_max, double(0.6f));
     QCOMPARE(h.params.last().K_min, double(0.2f));
     QCOMPARE(h.params.last().N, double(0.12f));
     QCOMPARE(test::simLinkOf(h.session)->device()->params().K_max, double(0.6f));
 
     // ZERO makes the current angle θ0; the read-back shows it.
-    h.session.zero(8);
+    h.send(8, request::Zero{});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(8), kCommandWaitMs);
     QVERIFY2(h.results.value(8).ok(), qPrintable(statusText(h.results.value(8))));
     QCOMPARE(h.params.last().theta0, test::simLinkOf(h.session)->device()->params().theta0);
 
-    h.session.saveParams(9);
-    h.session.setStreamRate(10, 500);
+    h.send(9, request::Save{});
+    h.send(10, request::Stream{500});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(10), kCommandWaitMs);
     QVERIFY(h.results.value(9).ok());
     QVERIFY(h.results.value(10).ok());
@@ -355,12 +355,12 @@ void TestDeviceSession::invalidParamsAreRefusedOnTheHost()
     DeviceParams p;
     p.K_min = 0.9; // > K_max
     p.Q_dz = 0.5;  // > N
-    h.session.pushTuning(1, {p, std::nullopt});
+    h.send(1, request::Push{{p, std::nullopt}});
     QTRY_VERIFY(h.results.contains(1));
-    const CommandResult r = h.results.value(1);
-    QCOMPARE(r.status, CommandResult::Status::Invalid);
-    QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
-    const QString problems = r.problems.join(u"; "_s);
+    const Outcome r = h.results.value(1);
+    const auto *invalid = std::get_if<outcome::Invalid>(&r.result);
+    QVERIFY2(invalid, qPrintable(statusText(r)));
+    const QString problems = invalid->problems.join(u"; "_s);
     QVERIFY2(problems.contains(u"K_min") && problems.contains(u"Q_dz"), qPrintable(problems));
     QCOMPARE(test::simLinkOf(h.session)->device()->params(), asFloat(DeviceParams()));
 }
@@ -372,7 +372,7 @@ void TestDeviceSession::rejectionLeavesDeviceParamsUnchanged()
     QTRY_VERIFY_WITH_TIMEOUT(!h.params.isEmpty(), kConnectTimeoutMs);
     DeviceParams good;
     good.K_max = 0.5;
-    h.session.pushTuning(1, {good, std::nullopt});
+    h.send(1, request::Push{{good, std::nullopt}});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(1), kCommandWaitMs);
     QVERIFY(h.results.value(1).ok());
 
@@ -380,15 +380,17 @@ void TestDeviceSession::rejectionLeavesDeviceParamsUnchanged()
     DeviceParams bad = good;
     bad.K_min = 0.1;
     bad.K_max = 60; // above 50: the device names field 3
-    h.session.pushTuning(2, {bad, std::nullopt});
+    h.send(2, request::Push{{bad, std::nullopt}});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(2), kCommandWaitMs);
-    const CommandResult r = h.results.value(2);
-    QCOMPARE(r.status, CommandResult::Status::Rejected);
-    QCOMPARE(r.ackStatus, v2::AckStatus::OutOfRange);
-    QCOMPARE(r.field, 3);
-    QCOMPARE(r.command, CommandKind::SetParams);
+    const Outcome r = h.results.value(2);
+    const auto *refused = std::get_if<outcome::Refused>(&r.result);
+    QVERIFY2(refused, qPrintable(statusText(r)));
+    QCOMPARE(refused->status, v2::AckStatus::OutOfRange);
+    QCOMPARE(refused->field, 3);
+    QCOMPARE(refused->step, CommandKind::SetParams);
+    QVERIFY(!refused->applied.params); // its first step: nothing was applied
 
-    h.session.readTuning(3);
+    h.send(3, request::Read{});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(3), kCommandWaitMs);
     QCOMPARE(h.params.last().K_max, double(0.5f));
     QCOMPARE(h.params.last().K_min, double(float(DeviceParams().K_min)));
@@ -415,19 +417,20 @@ void TestDeviceSession::lostCommandIsRetried()
     test::simLinkOf(h.session)->dropHostFrames(dropped, quint8(v2::MessageType::SetParams));
     DeviceParams p;
     p.K_max = 0.7;
-    h.session.pushTuning(1, {p, std::nullopt});
+    h.send(1, request::Push{{p, std::nullopt}});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(1), kCommandWaitMs);
-    const CommandResult r = h.results.value(1);
+    const Outcome r = h.results.value(1);
     QCOMPARE(test::simLinkOf(h.session)->droppedHostFrames(), dropped);
     QCOMPARE(h.session.stats().retries - retriesBefore, quint64(std::min(dropped, 3)));
     if (succeeds) {
         QVERIFY2(r.ok(), qPrintable(statusText(r)));
         QCOMPARE(test::simLinkOf(h.session)->device()->params().K_max, double(0.7f));
     } else {
-        QCOMPARE(r.status, CommandResult::Status::Timeout);
-        QCOMPARE(r.command, CommandKind::SetParams);
-        QCOMPARE(r.attempts, CommandQueue::kCommandRetries + 1);
-        QCOMPARE(r.intervalMs, CommandQueue::kCommandTimeoutMs);
+        const auto *timedOut = std::get_if<outcome::TimedOut>(&r.result);
+        QVERIFY2(timedOut, qPrintable(statusText(r)));
+        QCOMPARE(timedOut->step, CommandKind::SetParams);
+        QCOMPARE(timedOut->attempts, CommandQueue::kCommandRetries + 1);
+        QCOMPARE(timedOut->intervalMs, CommandQueue::kCommandTimeoutMs);
         QCOMPARE(test::simLinkOf(h.session)->device()->params().K_max,
                  double(float(DeviceParams().K_max)));
     }
@@ -450,19 +453,21 @@ void TestDeviceSession::legacyCommandsAreUnsupported()
     h.session.connectDevice(simOptions(WireProtocol::Legacy, ProtocolChoice::Legacy));
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
     if (command == u"push")
-        h.session.pushTuning(1, {DeviceParams(), std::nullopt});
+        h.send(1, request::Push{{DeviceParams(), std::nullopt}});
     else if (command == u"read")
-        h.session.readTuning(1);
+        h.send(1, request::Read{});
     else if (command == u"zero")
-        h.session.zero(1);
+        h.send(1, request::Zero{});
     else if (command == u"save")
-        h.session.saveParams(1);
+        h.send(1, request::Save{});
     else
-        h.session.setStreamRate(1, 100);
+        h.send(1, request::Stream{100});
     QTRY_VERIFY(h.results.contains(1));
-    QCOMPARE(h.results.value(1).status, CommandResult::Status::Unsupported);
-    QCOMPARE(h.results.value(1).reason, command == u"stream" ? CommandResult::Reason::FixedRate
-                                                             : CommandResult::Reason::NoParameters);
+    const Outcome refused = h.results.value(1);
+    const auto *unsupported = std::get_if<outcome::Unsupported>(&refused.result);
+    QVERIFY(unsupported);
+    QCOMPARE(unsupported->why, command == u"stream" ? outcome::Unsupported::Why::FixedRate
+                                                    : outcome::Unsupported::Why::NoParameters);
     // Host parameters still apply.
     HostParams host;
     host.v_max = 3;
@@ -477,10 +482,10 @@ void TestDeviceSession::legacyCommandsAreUnsupported()
 void TestDeviceSession::commandsWhenDisconnected()
 {
     Harness h;
-    h.session.readTuning(1);
-    h.session.pushTuning(2, {DeviceParams(), std::nullopt});
-    QCOMPARE(h.results.value(1).status, CommandResult::Status::NotConnected);
-    QCOMPARE(h.results.value(2).status, CommandResult::Status::NotConnected);
+    h.send(1, request::Read{});
+    h.send(2, request::Push{{DeviceParams(), std::nullopt}});
+    QVERIFY(std::holds_alternative<outcome::NotConnected>(h.results.value(1).result));
+    QVERIFY(std::holds_alternative<outcome::NotConnected>(h.results.value(2).result));
 }
 
 void TestDeviceSession::feedbackReachesTheDevice()
@@ -620,7 +625,7 @@ void TestDeviceSession::recordingEventsOnParamAndHostChanges()
 
     DeviceParams p;
     p.K_max = 0.6;
-    h.session.pushTuning(1, {p, std::nullopt});
+    h.send(1, request::Push{{p, std::nullopt}});
     QTRY_VERIFY_WITH_TIMEOUT(h.results.contains(1), kCommandWaitMs);
     const qsizetype afterPush = h.samples.size();
     QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() > afterPush + 100, kCommandWaitMs);

@@ -5,6 +5,8 @@
 #include "scripteddevice.h"
 #include "session/deviceclient.h"
 #include "session/devicesession.h"
+#include "session/request.h"
+#include "session/sessionwording.h"
 #include "simprocess.h"
 #include "simulatoroptions.h"
 #include "telemetry/recordingreader.h"
@@ -14,6 +16,8 @@
 #include <QTest>
 
 #include <cmath>
+#include <variant>
+#include <vector>
 
 using namespace hatpic;
 using hatpic::test::ScriptedDevice;
@@ -48,10 +52,16 @@ bool connectTo(DeviceClient &client, SimProcess &sim,
     return true;
 }
 
-//! The outcome of the command `issue` gives its CommandDone to.
-template<typename Issue> CommandResult waitFor(Issue issue)
+//! The outcome of `request` sent through `client`.
+Outcome waitFor(DeviceClient &client, const Request &request)
 {
-    return test::waitForCommand(issue, kTimeoutMs);
+    return test::waitForOutcome(client, request, kTimeoutMs);
+}
+
+//! Why `o` failed, for QVERIFY2.
+QString failure(const Outcome &o)
+{
+    return SessionWording::commandFailure(o);
 }
 
 } // namespace
@@ -95,31 +105,36 @@ void TestSessionEffects::effectsOverPty()
 
     const EffectParams fx = detentsAndWalls();
     QSignalSpy effectsChanged(&client, &DeviceClient::deviceTuningChanged);
-    const CommandResult pushed = waitFor([&](CommandDone then) {
-        client.pushTuning({std::nullopt, fx}, std::move(then));
-    });
-    QVERIFY(pushed.ok());
-    QCOMPARE(pushed.command, CommandKind::SetEffects);
-    QVERIFY(pushed.readBack && pushed.readBackMatches);
+    const Outcome pushed = waitFor(client, request::Push{{std::nullopt, fx}});
+    QVERIFY2(pushed.ok(), qPrintable(failure(pushed)));
+    // An effects-only push: SET_EFFECTS, then its read-back, and nothing else.
+    QVERIFY(pushed.pushed());
+    QVERIFY(!pushed.pushed()->params && !pushed.pushed()->passivity);
+    QVERIFY(sameOnWire(pushed.pushed()->effects.value(), fx));
+    QVERIFY((wireSteps(pushed.request, client.deviceInfo()) ==
+             std::vector{CommandKind::SetEffects, CommandKind::GetEffects}));
+    QCOMPARE(std::get<outcome::Done>(pushed.result).readBack, outcome::ReadBack::Matches);
     QVERIFY(sameOnWire(pushed.received.effects.value(), fx));
     QVERIFY(effectsChanged.count() >= 1);
     QVERIFY(sameOnWire(client.deviceTuning().effects.value(), fx));
 
-    const CommandResult read =
-        waitFor([&](CommandDone then) { client.readTuning(std::move(then)); });
-    QVERIFY(read.ok());
-    QCOMPARE(read.command, CommandKind::GetParams); // the tuning: parameters and effects
+    const Outcome read = waitFor(client, request::Read{});
+    QVERIFY2(read.ok(), qPrintable(failure(read)));
+    // The tuning: parameters and effects.
+    QVERIFY(std::holds_alternative<request::Read>(read.request));
+    const std::vector<CommandKind> readSteps = wireSteps(read.request, client.deviceInfo());
+    QVERIFY(readSteps.size() >= 2);
+    QCOMPARE(readSteps.at(0), CommandKind::GetParams);
+    QCOMPARE(readSteps.at(1), CommandKind::GetEffects);
     QVERIFY(read.received.params.has_value());
     QVERIFY(sameOnWire(read.received.effects.value(), fx));
 
     // A strong, slow cue shows in τ_fx: the knob rests in a detent, where τ_det ≈ 0.
     samples.clear();
-    const CommandResult vibrated = waitFor([&](CommandDone then) {
-        client.vibrate({0.2, 20, 0.3}, std::move(then));
-    });
-    QVERIFY(vibrated.ok());
-    QCOMPARE(vibrated.command, CommandKind::Vibrate);
-    QCOMPARE(vibrated.vibration, (Vibration{0.2, 20, 0.3}));
+    const Outcome vibrated = waitFor(client, request::Vibrate{{0.2, 20, 0.3}});
+    QVERIFY2(vibrated.ok(), qPrintable(failure(vibrated)));
+    QVERIFY(std::holds_alternative<request::Vibrate>(vibrated.request));
+    QCOMPARE(std::get<request::Vibrate>(vibrated.request).vibration, (Vibration{0.2, 20, 0.3}));
     QTRY_VERIFY_WITH_TIMEOUT(std::any_of(samples.cbegin(), samples.cend(),
                                          [](const Sample &s) { return std::abs(s.tau_fx) > 0.1; }),
                              kTimeoutMs);
@@ -139,21 +154,20 @@ void TestSessionEffects::invalidEffectsAreRefusedBeforeSending()
     EffectParams bad;
     bad.detent_strength = 1.0; // above tau_limit 0.44
     bad.wall_min = 0.1;        // must be ≤ 0
-    const CommandResult r = waitFor([&](CommandDone then) {
-        client.pushTuning({std::nullopt, bad}, std::move(then));
-    });
-    QCOMPARE(r.status, CommandResult::Status::Invalid);
-    QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
-    QCOMPARE(r.problems.size(), 2);
-    QVERIFY2(r.problems.first().contains(u"detent_strength"), qPrintable(r.problems.join(u';')));
+    const Outcome r = waitFor(client, request::Push{{std::nullopt, bad}});
+    const auto *invalid = std::get_if<outcome::Invalid>(&r.result);
+    QVERIFY2(invalid, qPrintable(failure(r)));
+    QCOMPARE(invalid->problems.size(), 2);
+    QVERIFY2(invalid->problems.first().contains(u"detent_strength"),
+             qPrintable(invalid->problems.join(u';')));
     QVERIFY(sameOnWire(client.deviceTuning().effects.value(),
                        roundedForWire(EffectParams{}, 0.44))); // nothing reached the device
 
-    const CommandResult v = waitFor([&](CommandDone then) {
-        client.vibrate({0.1, 0.5, 1}, std::move(then));
-    });
-    QCOMPARE(v.status, CommandResult::Status::Invalid);
-    QVERIFY2(v.problems.join(u';').contains(u"frequency"), qPrintable(v.problems.join(u';')));
+    const Outcome v = waitFor(client, request::Vibrate{{0.1, 0.5, 1}});
+    const auto *invalidCue = std::get_if<outcome::Invalid>(&v.result);
+    QVERIFY2(invalidCue, qPrintable(failure(v)));
+    QVERIFY2(invalidCue->problems.join(u';').contains(u"frequency"),
+             qPrintable(invalidCue->problems.join(u';')));
 }
 
 void TestSessionEffects::deviceRejectsVibrationAboveNyquist()
@@ -164,12 +178,12 @@ void TestSessionEffects::deviceRejectsVibrationAboveNyquist()
     DeviceClient client;
     QVERIFY(connectTo(client, sim));
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects.has_value(), kTimeoutMs);
-    const CommandResult r = waitFor([&](CommandDone then) {
-        client.vibrate({0.1, 500, 1}, std::move(then));
-    });
-    QCOMPARE(r.status, CommandResult::Status::Rejected);
-    QCOMPARE(r.ackStatus, v2::AckStatus::OutOfRange);
-    QCOMPARE(r.field, 1);
+    const Outcome r = waitFor(client, request::Vibrate{{0.1, 500, 1}});
+    const auto *refused = std::get_if<outcome::Refused>(&r.result);
+    QVERIFY2(refused, qPrintable(failure(r)));
+    QCOMPARE(refused->step, CommandKind::Vibrate);
+    QCOMPARE(refused->status, v2::AckStatus::OutOfRange);
+    QCOMPARE(refused->field, 1);
 }
 
 void TestSessionEffects::legacyDeviceHasNoEffects()
@@ -182,15 +196,11 @@ void TestSessionEffects::legacyDeviceHasNoEffects()
     QVERIFY(connectTo(client, sim, ProtocolChoice::Legacy));
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), SessionState::Connected, kTimeoutMs);
     QVERIFY(!client.deviceInfo().hasEffects());
-    for (const CommandResult &r :
-         {waitFor([&](CommandDone then) {
-              client.pushTuning({std::nullopt, detentsAndWalls()}, std::move(then));
-          }),
-          waitFor([&](CommandDone then) {
-              client.vibrate({0.1, 20, 1}, std::move(then));
-          })}) {
-        QCOMPARE(r.status, CommandResult::Status::Unsupported);
-        QCOMPARE(r.reason, CommandResult::Reason::NoEffects);
+    for (const Outcome &r : {waitFor(client, request::Push{{std::nullopt, detentsAndWalls()}}),
+                             waitFor(client, request::Vibrate{{0.1, 20, 1}})}) {
+        const auto *u = std::get_if<outcome::Unsupported>(&r.result);
+        QVERIFY2(u, qPrintable(failure(r)));
+        QCOMPARE(u->why, outcome::Unsupported::Why::NoEffects);
     }
     QTRY_VERIFY_WITH_TIMEOUT(!samples.isEmpty(), kTimeoutMs);
     QVERIFY(std::isnan(samples.last().tau_fx)); // not carried: unknown, not zero
@@ -202,10 +212,9 @@ void TestSessionEffects::deviceWithoutCapabilityHasNoEffects()
     ScriptedDevice device; // a v2 device whose HELLO_REPLY has no capability bits
     QVERIFY(device.isValid());
     DeviceSession session;
-    QList<CommandResult> results;
+    QList<Outcome> results;
     QList<Sample> samples;
-    connect(&session, &DeviceSession::commandFinished, this,
-            [&](quint64, const CommandResult &r) { results.append(r); });
+    const OutcomeHandler collect = [&](const Outcome &r) { results.append(r); };
     connect(&session.samples(), &SamplePipeline::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
     ConnectOptions o;
@@ -215,13 +224,16 @@ void TestSessionEffects::deviceWithoutCapabilityHasNoEffects()
     session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, kTimeoutMs);
     QVERIFY(!session.deviceInfo().hasEffects());
-    session.pushTuning(1, {std::nullopt, detentsAndWalls()});
-    session.pushTuning(2, {DeviceParams{}, detentsAndWalls()}); // not half of it either
-    session.vibrate(3, {0.1, 20, 1});
+    session.request(request::Push{{std::nullopt, detentsAndWalls()}}, collect);
+    session.request(request::Push{{DeviceParams{}, detentsAndWalls()}},
+                    collect); // not half of it either
+    session.request(request::Vibrate{{0.1, 20, 1}}, collect);
     QCOMPARE(results.size(), 3);
-    for (const CommandResult &r : std::as_const(results)) {
-        QCOMPARE(r.status, CommandResult::Status::Unsupported);
-        QCOMPARE(r.reason, CommandResult::Reason::NoEffectsCapability);
+    for (const Outcome &r : std::as_const(results)) {
+        const auto *u = std::get_if<outcome::Unsupported>(&r.result);
+        QVERIFY2(u, qPrintable(failure(r)));
+        QCOMPARE(u->why, outcome::Unsupported::Why::NoEffectsCapability);
+        QVERIFY(isEffectCommand(u->step));
     }
     // A 29-byte TELEMETRY from it: the four bytes after the flags are not read as τ_fx.
     v2::Telemetry t;
@@ -240,10 +252,8 @@ void TestSessionEffects::pushedEffectsAreRecordedEvents()
     QVERIFY(dir.isValid());
     const QString csv = dir.filePath(QStringLiteral("fx.csv"));
     DeviceSession session;
-    QList<CommandResult> results;
+    QList<Outcome> results;
     bool haveEffects = false;
-    connect(&session, &DeviceSession::commandFinished, this,
-            [&](quint64, const CommandResult &r) { results.append(r); });
     connect(&session.samples(), &SamplePipeline::deviceTuningChanged, this,
             [&](const DeviceTuning &t) { haveEffects = t.effects.has_value(); });
     session.connectDevice(test::simulatorOptions());
@@ -253,9 +263,10 @@ void TestSessionEffects::pushedEffectsAreRecordedEvents()
     EffectParams fx;
     fx.detent_strength = 0.05;
     fx.detent_range = 0.8;
-    session.pushTuning(1, {std::nullopt, fx});
+    session.request(request::Push{{std::nullopt, fx}},
+                    [&](const Outcome &r) { results.append(r); });
     QTRY_COMPARE_WITH_TIMEOUT(results.size(), 1, kTimeoutMs);
-    QVERIFY(results.first().ok());
+    QVERIFY2(results.first().ok(), qPrintable(failure(results.first())));
     QTest::qWait(50);
     session.stopRecording();
     session.disconnectDevice();

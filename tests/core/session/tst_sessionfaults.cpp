@@ -6,6 +6,7 @@
 #include "link/faultinjector.h"
 #include "protocol/v2codec.h"
 #include "session/devicesession.h"
+#include "session/sessionwording.h"
 #include "sim/simlink.h"
 #include "simulatoroptions.h"
 #include "telemetry/recordingreader.h"
@@ -197,7 +198,7 @@ private Q_SLOTS:
         QFETCH(QString, cut);
         QFETCH(bool, completes);
         DeviceSession session;
-        QSignalSpy finished(&session, &DeviceSession::commandFinished);
+        QList<Outcome> finished;
         QSignalSpy samples(&session.samples(), &SamplePipeline::samplesReady);
         session.connectDevice(simWithFaults(cut, 1));
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 0, kConnectMs);
@@ -209,22 +210,24 @@ private Q_SLOTS:
         DeviceParams wanted = before;
         wanted.K_max = 0.7;
         wanted.N = 0.2;
-        session.pushTuning(1, {wanted, std::nullopt});
+        session.request(request::Push{{wanted, std::nullopt}},
+                        [&finished](const Outcome &o) { finished.append(o); });
         // A push ends by itself after its last try (about 1 s); the wait only bounds a hang,
         // with room for a loaded machine.
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, kPushEndsMs);
-        const auto result = finished.first().at(1).value<CommandResult>();
+        const Outcome result = finished.first();
         QCOMPARE(session.state(), SessionState::Connected);
         if (completes) {
-            QVERIFY2(result.ok(), qPrintable(QString::number(int(result.status))));
+            QVERIFY2(result.ok(), qPrintable(SessionWording::commandFailure(result)));
             QCOMPARE(device->params().K_max, double(0.7f));
             QCOMPARE(device->params().N, double(0.2f));
             QCOMPARE(device->paramsApplied(), appliedBefore + 1);
         } else {
-            QCOMPARE(result.status, CommandResult::Status::Timeout);
-            // The reason is structured: which command went unanswered, after how many frames.
-            QCOMPARE(result.command, CommandKind::SetParams);
-            QVERIFY(result.attempts > 1);
+            const auto *timedOut = std::get_if<outcome::TimedOut>(&result.result);
+            QVERIFY2(timedOut, qPrintable(SessionWording::commandFailure(result)));
+            // The reason is structured: which step went unanswered, after how many frames.
+            QCOMPARE(timedOut->step, CommandKind::SetParams);
+            QVERIFY(timedOut->attempts > 1);
             QCOMPARE(device->params(), before); // nothing of it applied
             QCOMPARE(device->paramsApplied(), appliedBefore);
         }
@@ -235,7 +238,7 @@ private Q_SLOTS:
         // A third of the host's frames and of the device's answers lost: retries carry every
         // push through, and a retry the device already applied is answered, not applied.
         DeviceSession session;
-        QSignalSpy finished(&session, &DeviceSession::commandFinished);
+        QList<Outcome> finished;
         QSignalSpy samples(&session.samples(), &SamplePipeline::samplesReady);
         session.connectDevice(simWithFaults(u"hdrop=0.3,drop=0.3"_s, 5));
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 0, kConnectMs);
@@ -250,9 +253,10 @@ private Q_SLOTS:
         for (int i = 1; i <= kPushes; ++i) {
             DeviceParams p = device->params();
             p.K_max = 0.3 + 0.02 * i;
-            session.pushTuning(quint64(i), {p, std::nullopt});
+            session.request(request::Push{{p, std::nullopt}},
+                            [&finished](const Outcome &o) { finished.append(o); });
             QTRY_COMPARE_WITH_TIMEOUT(finished.size(), i, kPushEndsMs);
-            const auto r = finished.last().at(1).value<CommandResult>();
+            const Outcome r = finished.last();
             // A timed-out push's last frame may still be on its way (the emulated UART, the
             // device's next cycle): let it land before counting.
             if (!r.ok())
@@ -264,7 +268,7 @@ private Q_SLOTS:
             if (r.ok()) {
                 QVERIFY(reached);
             } else {
-                QCOMPARE(r.status, CommandResult::Status::Timeout);
+                QVERIFY(std::holds_alternative<outcome::TimedOut>(r.result));
                 QVERIFY(reached || applied == quint64(i) - missed - 1);
                 if (!reached)
                     ++missed;

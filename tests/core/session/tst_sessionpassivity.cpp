@@ -5,12 +5,16 @@
 #include "scripteddevice.h"
 #include "session/deviceclient.h"
 #include "session/devicesession.h"
+#include "session/request.h"
+#include "session/sessionwording.h"
 #include "simprocess.h"
 
 #include <QSignalSpy>
 #include <QTest>
 
 #include <cmath>
+#include <variant>
+#include <vector>
 
 using namespace hatpic;
 using hatpic::test::ScriptedDevice;
@@ -20,10 +24,16 @@ namespace {
 
 constexpr int kTimeoutMs = 5000;
 
-//! The outcome of the command `issue` gives its CommandDone to.
-template<typename Issue> CommandResult waitFor(Issue issue)
+//! The outcome of `request` sent through `client`.
+Outcome waitFor(DeviceClient &client, const Request &request)
 {
-    return test::waitForCommand(issue, kTimeoutMs);
+    return test::waitForOutcome(client, request, kTimeoutMs);
+}
+
+//! Why `o` failed, for QVERIFY2.
+QString failure(const Outcome &o)
+{
+    return SessionWording::commandFailure(o);
 }
 
 } // namespace
@@ -68,12 +78,15 @@ void TestSessionPassivity::passivityOverPty()
     QCOMPARE(samples.last().pc_reserve, double(float(PassivityParams{}.pc_reserve_max)));
 
     const PassivityParams pc{.pc_damping_max = 0.25, .pc_reserve_max = 0.01};
-    const CommandResult pushed = waitFor([&](CommandDone then) {
-        client.pushTuning({std::nullopt, std::nullopt, pc}, std::move(then));
-    });
-    QVERIFY(pushed.ok());
-    QCOMPARE(pushed.command, CommandKind::SetPassivity);
-    QVERIFY(pushed.readBack && pushed.readBackMatches);
+    const Outcome pushed = waitFor(client, request::Push{{std::nullopt, std::nullopt, pc}});
+    QVERIFY2(pushed.ok(), qPrintable(failure(pushed)));
+    // A passivity-only push: SET_PASSIVITY, then its read-back, and nothing else.
+    QVERIFY(pushed.pushed());
+    QVERIFY(!pushed.pushed()->params && !pushed.pushed()->effects);
+    QVERIFY(sameOnWire(pushed.pushed()->passivity.value(), pc));
+    QVERIFY((wireSteps(pushed.request, client.deviceInfo()) ==
+             std::vector{CommandKind::SetPassivity, CommandKind::GetPassivity}));
+    QCOMPARE(std::get<outcome::Done>(pushed.result).readBack, outcome::ReadBack::Matches);
     QVERIFY(sameOnWire(pushed.received.passivity.value(), pc));
     QVERIFY(sameOnWire(client.deviceTuning().passivity.value(), pc));
     // A smaller R_max caps the reserve at once.
@@ -81,16 +94,16 @@ void TestSessionPassivity::passivityOverPty()
 
     // A push of every part: each sent and read back.
     const PassivityParams off = PassivityParams::off();
-    const CommandResult all = waitFor([&](CommandDone then) {
-        client.pushTuning({client.deviceTuning().params, EffectParams{}, off}, std::move(then));
-    });
-    QVERIFY(all.ok());
-    QVERIFY(all.readBack && all.readBackMatches);
+    const Outcome all =
+        waitFor(client, request::Push{{client.deviceTuning().params, EffectParams{}, off}});
+    QVERIFY2(all.ok(), qPrintable(failure(all)));
+    QVERIFY(all.pushed() && all.pushed()->params && all.pushed()->effects &&
+            all.pushed()->passivity);
+    QCOMPARE(std::get<outcome::Done>(all.result).readBack, outcome::ReadBack::Matches);
     QVERIFY(sameOnWire(all.received.passivity.value(), off));
 
-    const CommandResult read =
-        waitFor([&](CommandDone then) { client.readTuning(std::move(then)); });
-    QVERIFY(read.ok());
+    const Outcome read = waitFor(client, request::Read{});
+    QVERIFY2(read.ok(), qPrintable(failure(read)));
     QVERIFY(read.received.params && read.received.effects);
     QVERIFY(sameOnWire(read.received.passivity.value(), off));
 }
@@ -104,15 +117,13 @@ void TestSessionPassivity::invalidPassivityIsRefusedBeforeSending()
     QVERIFY(!o.port.isEmpty());
     client.connectDevice(o);
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().passivity.has_value(), kTimeoutMs);
-    const CommandResult r = waitFor([&](CommandDone then) {
-        client.pushTuning({std::nullopt, std::nullopt, PassivityParams{2.0, 0.02}},
-                          std::move(then));
-    });
-    QCOMPARE(r.status, CommandResult::Status::Invalid);
-    QCOMPARE(r.reason, CommandResult::Reason::InvalidParams);
-    QCOMPARE(r.problems.size(), 1);
-    QVERIFY2(r.problems.first().contains(QLatin1String("pc_damping_max")),
-             qPrintable(r.problems.first()));
+    const Outcome r =
+        waitFor(client, request::Push{{std::nullopt, std::nullopt, PassivityParams{2.0, 0.02}}});
+    const auto *invalid = std::get_if<outcome::Invalid>(&r.result);
+    QVERIFY2(invalid, qPrintable(failure(r)));
+    QCOMPARE(invalid->problems.size(), 1);
+    QVERIFY2(invalid->problems.first().contains(QLatin1String("pc_damping_max")),
+             qPrintable(invalid->problems.first()));
     QVERIFY(sameOnWire(client.deviceTuning().passivity.value(), PassivityParams{}));
 }
 
@@ -121,10 +132,8 @@ void TestSessionPassivity::deviceWithoutCapabilityIsSentNothing()
     ScriptedDevice device; // a v2 device whose HELLO_REPLY has no capability bits
     QVERIFY(device.isValid());
     DeviceSession session;
-    QList<CommandResult> results;
+    QList<Outcome> results;
     QList<Sample> samples;
-    connect(&session, &DeviceSession::commandFinished, this,
-            [&](quint64, const CommandResult &r) { results.append(r); });
     connect(&session.samples(), &SamplePipeline::samplesReady, this,
             [&](const SampleBatch &b) { samples.append(b); });
     ConnectOptions o;
@@ -134,10 +143,13 @@ void TestSessionPassivity::deviceWithoutCapabilityIsSentNothing()
     session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, kTimeoutMs);
     QVERIFY(!session.deviceInfo().hasPassivity());
-    session.pushTuning(1, {std::nullopt, std::nullopt, PassivityParams{}});
+    session.request(request::Push{{std::nullopt, std::nullopt, PassivityParams{}}},
+                    [&](const Outcome &r) { results.append(r); });
     QCOMPARE(results.size(), 1);
-    QCOMPARE(results.first().status, CommandResult::Status::Unsupported);
-    QCOMPARE(results.first().reason, CommandResult::Reason::NoPassivityCapability);
+    const auto *u = std::get_if<outcome::Unsupported>(&results.first().result);
+    QVERIFY2(u, qPrintable(failure(results.first())));
+    QCOMPARE(u->why, outcome::Unsupported::Why::NoPassivityCapability);
+    QCOMPARE(u->step, CommandKind::SetPassivity);
     // A 37-byte TELEMETRY from it: the bytes after the flags are not read as τ_pc and R.
     v2::Telemetry t;
     t.t_us = 1000;

@@ -97,12 +97,12 @@ void TestSessionPty::paramsOverPty()
     p.K_max = 1.5;
     p.D_adm = 2e-4;
     QObject caller;
-    QList<CommandResult> outcomes;
-    client.pushTuning({p, std::nullopt},
-                      {&caller, [&outcomes](const CommandResult &r) { outcomes.append(r); }});
+    QList<Outcome> outcomes;
+    client.request(request::Push{{p, std::nullopt}},
+                   {&caller, [&outcomes](const Outcome &o) { outcomes.append(o); }});
     QTRY_COMPARE_WITH_TIMEOUT(outcomes.size(), 1, kConnectTimeoutMs);
-    const CommandResult r = outcomes.first();
-    QVERIFY(r.ok() && r.readBackMatches);
+    const Outcome r = outcomes.first();
+    QCOMPARE(std::get<outcome::Done>(r.result).readBack, outcome::ReadBack::Matches);
     QCOMPARE(client.deviceTuning().params.value().K_max, 1.5);
     QCOMPARE(client.deviceTuning().params.value().D_adm, double(2e-4f));
 }

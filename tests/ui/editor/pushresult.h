@@ -1,20 +1,18 @@
-// What the editor's tests hand it as a push's result, as DeviceParameterLink would.
+// What the editor's tests hand it as a push's outcome, as DeviceParameterLink would.
 #pragma once
 
-#include "session/sessiontypes.h"
+#include "session/request.h"
 
 namespace hatpic {
 
 //! A push the device took: `sent` as it travelled, and its read-back, `received`.
-inline CommandResult pushed(const DeviceTuning &sent, const DeviceTuning &received)
+inline Outcome pushed(const DeviceTuning &sent, const DeviceTuning &received)
 {
-    CommandResult r;
-    r.command = CommandKind::SetParams;
-    r.sent = sent;
-    r.received = received;
-    r.readBack = true;
-    r.readBackMatches = sameOnWire(sent, received);
-    return r;
+    using outcome::ReadBack;
+    return Outcome{
+        request::Push{sent},
+        outcome::Done{sameOnWire(sent, received) ? ReadBack::Matches : ReadBack::Differs},
+        received};
 }
 
 } // namespace hatpic

@@ -57,15 +57,15 @@ void connectWithEffects(ParameterEditor &editor)
     editor.setDeviceTuning({asFloat(editor.params()), onWire(editor.effects())});
 }
 
-//! The device's OUT_OF_RANGE for SET_EFFECTS, naming wall_stiffness (field 5).
-CommandResult wallStiffnessRejected()
+//! The device's OUT_OF_RANGE for SET_EFFECTS of `sent`, naming wall_stiffness (field 5), after
+//! `applied` (the parts acknowledged before it) and their read-back `received`.
+Outcome wallStiffnessRejected(const DeviceTuning &sent = {}, const DeviceTuning &applied = {},
+                              const DeviceTuning &received = {})
 {
-    CommandResult rejected;
-    rejected.status = CommandResult::Status::Rejected;
-    rejected.command = CommandKind::SetEffects;
-    rejected.ackStatus = v2::AckStatus::OutOfRange;
-    rejected.field = 5;
-    return rejected;
+    return Outcome{
+        request::Push{sent},
+        outcome::Refused{{CommandKind::SetEffects, applied}, v2::AckStatus::OutOfRange, 5},
+        received};
 }
 
 } // namespace
@@ -245,10 +245,10 @@ void TestEffectsEditor::refusedEffectsAfterAcceptedParametersSayWhatIsInForce()
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
     QVERIFY(editor.field(u"K_max"_s)->differsFromDevice());
     editor.pushAction()->trigger();
-    CommandResult rejected = wallStiffnessRejected();
-    rejected.sent = {asFloat(editor.params()), onWire(editor.effects())};
-    rejected.received.params = asFloat(editor.params()); // the read-back of SET_PARAMS
-    editor.pushFinished(rejected);
+    // SET_PARAMS was acknowledged and read back before SET_EFFECTS was refused.
+    const DeviceTuning readBack{asFloat(editor.params()), std::nullopt};
+    editor.pushFinished(wallStiffnessRejected({asFloat(editor.params()), onWire(editor.effects())},
+                                              readBack, readBack));
     QCOMPARE(editor.syncState(), SyncState::Rejected);
     QCOMPARE(editor.syncText(),
              u"device rejected the effects: OUT_OF_RANGE (wall_stiffness); parameters applied"_s);
@@ -262,8 +262,7 @@ void TestEffectsEditor::rejectionNamesTheEffectField()
     connectWithEffects(editor);
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
     editor.pushAction()->trigger();
-    CommandResult rejected = wallStiffnessRejected();
-    editor.pushFinished(rejected);
+    editor.pushFinished(wallStiffnessRejected());
     QCOMPARE(editor.syncState(), SyncState::Rejected);
     QCOMPARE(editor.syncText(), u"device rejected the effects: OUT_OF_RANGE (wall_stiffness)"_s);
     QVERIFY(editor.field(u"wall_stiffness"_s)->problem().contains(u"refused"_s));

@@ -46,14 +46,14 @@ DeviceParams asFloat(const DeviceParams &p)
     return out;
 }
 
-//! A result that carries nothing to check: for a push no longer in flight.
-CommandResult ok()
+//! An outcome that carries nothing to check: for a push no longer in flight.
+Outcome ok()
 {
     return {};
 }
 
 //! A push of `params` the device took and holds (float32) as sent.
-CommandResult echoed(const DeviceParams &params)
+Outcome echoed(const DeviceParams &params)
 {
     return pushed({asFloat(params), std::nullopt}, {asFloat(params), std::nullopt});
 }
@@ -447,11 +447,8 @@ void TestParameterEditor::inSyncAfterAckAndReadback()
 
     QCOMPARE(pushes.at(0).at(0).value<DeviceTuning>().params, std::optional(editor.params()));
     if (readBackUnanswered) {
-        CommandResult acked = pushed({echo, std::nullopt}, {});
-        acked.reason = CommandResult::Reason::ReadBackUnanswered;
-        acked.readBack = false;
-        acked.readBackMatches = false;
-        editor.pushFinished(acked);
+        editor.pushFinished(Outcome{
+            request::Push{{echo, std::nullopt}}, outcome::Done{outcome::ReadBack::Unanswered}, {}});
         QCOMPARE(editor.syncState(), SyncState::AwaitingReadback); // ACK alone is not enough
         QVERIFY(editor.syncText().contains(u"read-back"_s));
         editor.setDeviceTuning({echo, std::nullopt}); // read again
@@ -492,12 +489,10 @@ void TestParameterEditor::rejectionShowsReasonAndKeepsValues()
     const DeviceParams edited = editor.params();
     editor.pushAction()->trigger();
 
-    CommandResult rejected;
-    rejected.status = CommandResult::Status::Rejected;
-    rejected.command = CommandKind::SetParams;
-    rejected.ackStatus = v2::AckStatus::OutOfRange;
-    rejected.field = 3;
-    editor.pushFinished(rejected);
+    editor.pushFinished(
+        Outcome{request::Push{{edited, std::nullopt}},
+                outcome::Refused{{CommandKind::SetParams, {}}, v2::AckStatus::OutOfRange, 3},
+                {}});
 
     QCOMPARE(editor.syncState(), SyncState::Rejected);
     QCOMPARE(editor.syncText(), u"device rejected: OUT_OF_RANGE (K_max)"_s);
@@ -518,9 +513,9 @@ void TestParameterEditor::timeoutShown()
     editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(0.6);
     editor.pushAction()->trigger();
-    CommandResult timeout;
-    timeout.status = CommandResult::Status::Timeout;
-    editor.pushFinished(timeout);
+    editor.pushFinished(Outcome{request::Push{{editor.params(), std::nullopt}},
+                                outcome::TimedOut{{CommandKind::SetParams, {}}, 4, 250},
+                                {}});
     QCOMPARE(editor.syncState(), SyncState::Timeout);
     QVERIFY(editor.syncText().startsWith(u"timeout"_s));
     QCOMPARE(editor.params().K_max, 0.6);

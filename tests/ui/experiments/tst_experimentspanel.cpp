@@ -83,12 +83,12 @@ void TestExperimentsPanel::stepFromTheRunButton()
     slow.D_adm = 2e-3;
     slow.M_adm = 4e-2;
     QObject caller;
-    std::optional<CommandResult> pushed;
-    client.pushTuning({slow, std::nullopt},
-                      {&caller, [&pushed](const CommandResult &r) { pushed = r; }});
+    std::optional<Outcome> pushed;
+    client.request(request::Push{{slow, std::nullopt}},
+                   {&caller, [&pushed](const Outcome &o) { pushed = o; }});
     QTRY_VERIFY_WITH_TIMEOUT(pushed.has_value(), kConnectMs);
     // The push's result comes after its read-back: the device's parameters are the new ones.
-    QVERIFY(pushed->readBackMatches);
+    QCOMPARE(std::get<outcome::Done>(pushed->result).readBack, outcome::ReadBack::Matches);
     QVERIFY(std::abs(client.deviceTuning().params->D_adm - 2e-3) < 1e-9);
     panel.fillDefaults();
     // The defaults for the device's parameters (K_max 0.4, band [0.02, 0.1]).
@@ -187,8 +187,8 @@ bool pushParams(DeviceClient &client, const DeviceParams &params)
 {
     QObject caller;
     bool pushed = false;
-    client.pushTuning({params, std::nullopt},
-                      {&caller, [&pushed](const CommandResult &) { pushed = true; }});
+    client.request(request::Push{{params, std::nullopt}},
+                   {&caller, [&pushed](const Outcome &) { pushed = true; }});
     return QTest::qWaitFor([&] { return pushed; }, kConnectMs) &&
            QTest::qWaitFor([&] { return client.deviceTuning().params == roundedToFloat(params); },
                            kConnectMs);
@@ -266,7 +266,8 @@ void TestExperimentsPanel::cautionOnADetent()
     fx.detent_range = 0.9;
     QObject caller;
     bool pushed = false;
-    client.pushTuning({p, fx}, {&caller, [&pushed](const CommandResult &) { pushed = true; }});
+    client.request(request::Push{{p, fx}},
+                   {&caller, [&pushed](const Outcome &) { pushed = true; }});
     QTRY_VERIFY_WITH_TIMEOUT(pushed, kConnectMs);
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().effects &&
                                  client.deviceTuning().effects->detent_strength > 0,

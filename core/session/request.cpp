@@ -1,0 +1,76 @@
+#include "request.h"
+
+#include "model/overloaded.h"
+
+namespace hatpic {
+
+QString commandName(CommandKind kind)
+{
+    return QString::fromLatin1(v2::messageName(kind));
+}
+
+std::vector<CommandKind> wireSteps(const Request &request, const DeviceInfo &device)
+{
+    return std::visit(
+        Overloaded{
+            [](const request::Push &push) {
+                std::vector<CommandKind> steps;
+                if (push.tuning.params)
+                    steps.insert(steps.end(), {CommandKind::SetParams, CommandKind::GetParams});
+                if (push.tuning.effects)
+                    steps.insert(steps.end(), {CommandKind::SetEffects, CommandKind::GetEffects});
+                if (push.tuning.passivity) {
+                    steps.insert(steps.end(),
+                                 {CommandKind::SetPassivity, CommandKind::GetPassivity});
+                }
+                return steps;
+            },
+            [&device](const request::Read &) {
+                std::vector<CommandKind> steps{CommandKind::GetParams};
+                if (device.hasEffects())
+                    steps.push_back(CommandKind::GetEffects);
+                if (device.hasPassivity())
+                    steps.push_back(CommandKind::GetPassivity);
+                return steps;
+            },
+            [](const request::Zero &) {
+                return std::vector{CommandKind::Zero, CommandKind::GetParams};
+            },
+            [](const request::Save &) { return std::vector{CommandKind::SaveParams}; },
+            [](const request::Stream &) { return std::vector{CommandKind::SetStream}; },
+            [](const request::Vibrate &) { return std::vector{CommandKind::Vibrate}; },
+        },
+        request);
+}
+
+const outcome::Stopped *Outcome::stopped() const
+{
+    return std::visit(
+        [](const auto &r) -> const outcome::Stopped * {
+            if constexpr (std::is_base_of_v<outcome::Stopped, std::decay_t<decltype(r)>>)
+                return &r;
+            else
+                return nullptr;
+        },
+        result);
+}
+
+const DeviceTuning *Outcome::pushed() const
+{
+    const auto *push = std::get_if<request::Push>(&request);
+    return push ? &push->tuning : nullptr;
+}
+
+std::optional<CommandKind> Outcome::unknownStep() const
+{
+    const outcome::Stopped *stop = stopped();
+    const DeviceTuning *sent = pushed();
+    if (!stop || !sent || std::holds_alternative<outcome::Refused>(result))
+        return std::nullopt;
+    if ((stop->step == CommandKind::SetEffects && sent->effects) ||
+        (stop->step == CommandKind::SetPassivity && sent->passivity))
+        return stop->step;
+    return std::nullopt;
+}
+
+} // namespace hatpic
