@@ -8,7 +8,10 @@
 // Plain C++20, constexpr: the device core reads it too.
 #pragma once
 
+#include "capabilities.h"
+
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 namespace hatpic {
@@ -19,9 +22,12 @@ struct CycleQuantity
     std::string_view name;    //!< the member's name in every record; the CSV column's name
     std::string_view unit;    //!< SI unit, e.g. "N·m"; empty for the flags
     std::string_view meaning; //!< what it is, in a few words
-    //! Sent only by a device with a capability (effects.md, passivity.md), after the flags:
-    //! optional in TELEMETRY, NaN in a Sample when not sent, a CSV column added later.
-    bool optional = false;
+    //! The capability (v2::kCapability*) of the devices that send it, after the flags
+    //! (effects.md, passivity.md); 0: every device does. Optional in TELEMETRY, read only from a
+    //! device that announced it, NaN in a Sample when not sent, a CSV column added later.
+    std::uint8_t capability = 0;
+
+    constexpr bool optional() const { return capability != 0; }
 };
 
 //! Calls `visit(quantity, &R::member...)` for each quantity, in TELEMETRY's order: for each
@@ -37,9 +43,12 @@ template<typename... R, typename Visit> constexpr void forEachCycleQuantity(Visi
     visit(Q{"tau_rec", "N·m", "re-centering torque"}, &R::tau_rec...);
     visit(Q{"tau_ext", "N·m", "external feedback torque"}, &R::tau_ext...);
     visit(Q{"flags", "", "the device's flags, v2::kFlag* bits"}, &R::flags...);
-    visit(Q{"tau_fx", "N·m", "effect torque tau_det + tau_wall + tau_vib", true}, &R::tau_fx...);
-    visit(Q{"tau_pc", "N·m", "passivity controller torque -beta*omega", true}, &R::tau_pc...);
-    visit(Q{"pc_reserve", "J", "passivity controller's energy reserve R", true}, &R::pc_reserve...);
+    visit(Q{"tau_fx", "N·m", "effect torque tau_det + tau_wall + tau_vib", v2::kCapabilityEffects},
+          &R::tau_fx...);
+    visit(Q{"tau_pc", "N·m", "passivity controller torque -beta*omega", v2::kCapabilityPassivity},
+          &R::tau_pc...);
+    visit(Q{"pc_reserve", "J", "passivity controller's energy reserve R", v2::kCapabilityPassivity},
+          &R::pc_reserve...);
 }
 
 //! How many quantities forEachCycleQuantity() visits.

@@ -4,6 +4,7 @@
 // Plain C++20: no Qt, no OS calls, no allocation (text fields are fixed arrays).
 #pragma once
 
+#include "model/capabilities.h"
 #include "model/cyclequantities.h"
 #include "model/effects.h"
 #include "model/params.h"
@@ -87,12 +88,6 @@ constexpr std::uint8_t zoneFlag(StiffnessZone zone)
     }
     return 0;
 }
-
-// HELLO_REPLY capability bits (its formerly reserved byte, effects.md § 3).
-constexpr std::uint8_t kCapabilityEffects = 0x01; //!< SET_EFFECTS, GET_EFFECTS, VIBRATE, τ_fx
-//! SET_PASSIVITY, GET_PASSIVITY, τ_pc and R in TELEMETRY (passivity.md). A device with it has
-//! the effects capability too (τ_pc follows τ_fx in TELEMETRY).
-constexpr std::uint8_t kCapabilityPassivity = 0x02;
 
 //! UTF-8 text of at most N bytes, stored inline. Assigning longer text cuts it at a character
 //! boundary, so a name never ends in half a character.

@@ -88,7 +88,7 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     // is unknown.
     forEachCycleQuantity<Sample>([&s](const CycleQuantity &q, auto member) {
         if constexpr (std::is_same_v<decltype(member), double Sample::*>) {
-            if (q.optional)
+            if (q.optional())
                 s.*member = std::numeric_limits<double>::quiet_NaN();
         }
     });

@@ -105,16 +105,16 @@ void V2Driver::handleFrame(const v2::Frame &frame)
 
 void V2Driver::handleTelemetry(quint8 seq, const v2::Telemetry &received)
 {
-    // τ_fx is read only from a device that announced the effects capability: the bytes after
-    // the flags of any other device are not ours to interpret (effects.md § 3).
+    // A quantity a capability brings (τ_fx, τ_pc, R) is read only from a device that announced
+    // it: the bytes after the flags of any other device are not ours to interpret (effects.md
+    // § 3, passivity.md).
     v2::Telemetry telemetry = received;
-    if (!m_info.hasEffects())
-        telemetry.tau_fx.reset();
-    // τ_pc and R likewise only from a device with the passivity capability (passivity.md).
-    if (!m_info.hasPassivity()) {
-        telemetry.tau_pc.reset();
-        telemetry.pc_reserve.reset();
-    }
+    forEachCycleQuantity<v2::Telemetry>([&](const CycleQuantity &q, auto member) {
+        if constexpr (requires { (telemetry.*member).reset(); }) {
+            if ((m_info.capabilities & q.capability) == 0)
+                (telemetry.*member).reset();
+        }
+    });
     if (!m_links.statistics.countTelemetry(seq, telemetry.t_us))
         return;
     // A NaN or ±Inf would enter p_ref's integral and stay there for the rest of the session:

@@ -41,7 +41,7 @@ inline constexpr auto kSampleColumns = [] {
     columns[n++] = {"t_s", "s", "session time: follows the device clock, monotonic", &Sample::t_s};
     forEachCycleQuantity<Sample>([&](const CycleQuantity &q, auto member) {
         if constexpr (std::is_same_v<decltype(member), double Sample::*>) {
-            columns[n++] = {q.name, q.unit, q.meaning, member, q.optional};
+            columns[n++] = {q.name, q.unit, q.meaning, member, q.optional()};
         } else if (q.name == "flags") {
             columns[n++] = {"tau_total", "N·m",
                             "tau_rec + tau_fx + tau_ext as rendered, clamped to tau_limit",
