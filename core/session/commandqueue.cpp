@@ -234,8 +234,6 @@ void CommandQueue::onTuning(const DeviceTuning &told)
     if (!m_inflight)
         return;
     Command &cmd = *m_inflight;
-    if (cmd.wire.isEmpty())
-        return;
     const CommandKind step = cmd.stepKind();
     // ZERO changes θ0 by design: its read-back is the new value, not a comparison; a read
     // compares nothing.
