@@ -6,6 +6,7 @@
 #include "link/faultinjector.h"
 #include "protocol/v2codec.h"
 #include "session/devicesession.h"
+#include "session/samplelisteners.h"
 #include "session/sessionwording.h"
 #include "sim/simlink.h"
 #include "simulatoroptions.h"
@@ -18,6 +19,7 @@
 #include <QTest>
 
 #include <csignal>
+#include <optional>
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
@@ -85,6 +87,33 @@ void verifySamplesAreWholeFrames(const QList<Sample> &samples)
     }
 }
 
+// Tells when every frame the device has made so far has reached the session: its newest
+// cycle's frame is the newest sample. Only then are the losses behind the newest frame all
+// revealed as seq gaps (a gap shows when the next frame arrives, and a tick of the simulated
+// device may end with frames its full output queue dropped) and none is in flight, so the
+// session's counters can be compared with what was injected. Every cycle must be streamed.
+class Settled : public SampleListener
+{
+public:
+    Settled(DeviceSession &session, SimulatedDevice &device) : m_session(session)
+    {
+        device.setCycleObserver(
+            [this](const SimulatedDevice::Cycle &c) { m_madeUs = c.toSample().t_us; });
+        session.sampleListeners().add(this);
+    }
+    ~Settled() { m_session.sampleListeners().remove(this); }
+    Settled(const Settled &) = delete;
+    Settled &operator=(const Settled &) = delete;
+
+    void sampleDecoded(const Sample &sample) override { m_receivedUs = sample.t_us; }
+    bool operator()() const { return m_madeUs && m_receivedUs == m_madeUs; }
+
+private:
+    DeviceSession &m_session;
+    std::optional<quint32> m_madeUs;     // all on the test's thread, which runs the session
+    std::optional<quint32> m_receivedUs; // and the simulated device
+};
+
 // One "name=value" figure from a hatpic-sim summary line that starts with `line`.
 quint64 figure(const QString &summary, const QString &line, const QString &name)
 {
@@ -116,11 +145,16 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() > 100, kConnectMs);
         const FaultInjector *faults = test::simLinkOf(session)->faults();
         QVERIFY(faults);
-        const SimulatedDevice *device = test::simLinkOf(session)->device();
+        SimulatedDevice *device = test::simLinkOf(session)->device();
+        QCOMPARE(double(device->streamRate()),
+                 device->config().controlRateHz); // each cycle streamed
+        const Settled settled(session, *device);
+        QTRY_VERIFY_WITH_TIMEOUT(settled(), kConnectMs);
         const Unaccounted before =
             unaccounted(faults->toHostSeen(), session.stats(), device->telemetryDropped());
         const FaultCounts seenBefore = faults->toHostSeen();
         QTest::qWait(2500);
+        QTRY_VERIFY_WITH_TIMEOUT(settled(), kConnectMs);
         QCOMPARE(unaccounted(faults->toHostSeen(), session.stats(), device->telemetryDropped()),
                  before);
         QCOMPARE(before.otherDrops, 0);
