@@ -10,7 +10,7 @@ namespace hatpic {
 BlindRunner::BlindRunner(ProfileController *profiles, ParameterEditor *editor, QObject *parent)
     : QObject(parent), m_profiles(profiles), m_editor(editor)
 {
-    connect(m_editor, &ParameterEditor::syncStateChanged, this, &BlindRunner::onSync);
+    connect(m_editor->model(), &TuningModel::syncChanged, this, &BlindRunner::onSync);
 }
 
 BlindRunner::~BlindRunner() = default;

@@ -15,12 +15,15 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
     connect(m_editor, &ParameterEditor::vibrateRequested, this,
             [this](const Vibration &v) { send(request::Vibrate{v}); });
     connect(m_editor, &ParameterEditor::readRequested, this, &DeviceParameterLink::readFromDevice);
-    connect(m_editor, &ParameterEditor::hostParamsChanged, m_client, &DeviceClient::setHostParams);
+    connect(m_editor->model(), &TuningModel::editedChanged, this, [this](TuningChange change) {
+        if (change.host)
+            m_client->setHostParams(m_editor->hostParams());
+    });
     connect(m_client, &DeviceClient::stateChanged, this,
             [this](SessionState state) { onStateChanged(state); });
     connect(m_client, &DeviceClient::deviceInfoChanged, this, &DeviceParameterLink::onDeviceInfo);
-    connect(m_client, &DeviceClient::deviceTuningChanged, m_editor,
-            &ParameterEditor::setDeviceTuning);
+    connect(m_client, &DeviceClient::deviceTuningChanged, m_editor->model(),
+            &TuningModel::setDevice);
     onStateChanged(m_client->state());
 }
 

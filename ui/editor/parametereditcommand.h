@@ -2,7 +2,7 @@
 // edits of the same field within one typing or dragging gesture merge into a single undo step.
 #pragma once
 
-#include "editor/tuning.h"
+#include "tuning/tuning.h"
 
 #include <QString>
 #include <QUndoCommand>

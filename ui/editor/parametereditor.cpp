@@ -27,14 +27,15 @@ using namespace Qt::StringLiterals;
 ParameterEditor::ParameterEditor(QWidget *parent)
     : QWidget(parent), m_controlRate(servo::kControlRateHz)
 {
+    m_model = new TuningModel(this);
     m_undo = new QUndoStack(this);
-    m_live =
-        new LivePush([this] { return m_valid && m_sync.canPush() && !m_sync.isPushing(); }, this);
+    const auto mayPush = [this] { return m_valid && m_model->canPush() && !m_model->isPushing(); };
+    m_live = new LivePush(mayPush, this);
     connect(m_live, &LivePush::pushDue, this, &ParameterEditor::startPush);
 
     m_actions = new EditorActions(this, m_undo);
-    connect(m_actions->push, &QAction::triggered, this, [this] {
-        if (m_valid && m_sync.canPush() && !m_sync.isPushing())
+    connect(m_actions->push, &QAction::triggered, this, [this, mayPush] {
+        if (mayPush())
             startPush();
     });
     connect(m_actions->read, &QAction::triggered, this, &ParameterEditor::readRequested);
@@ -42,10 +43,17 @@ ParameterEditor::ParameterEditor(QWidget *parent)
 
     buildUi();
     m_actions->addGoTo(m_form, [this](ParameterField *field) { goTo(field); });
-    applyParams(DeviceParams{}, HostParams{});
-    m_undo->clear();
-    refreshSync();
-    refreshActions();
+    connect(m_model, &TuningModel::editedChanged, this, [this](TuningChange change) {
+        m_form->showTuning(tuning());
+        refresh();
+        if (change.device || change.effects || change.passivity)
+            m_live->edited();
+    });
+    connect(m_model, &TuningModel::deviceChanged, this, &ParameterEditor::refresh);
+    connect(m_model, &TuningModel::syncChanged, m_syncBar, &SyncBar::setState);
+    m_form->showTuning(tuning());
+    m_syncBar->setState(syncState(), syncText());
+    refresh();
 }
 
 ParameterEditor::~ParameterEditor() = default;
@@ -74,16 +82,15 @@ void ParameterEditor::buildUi()
     connect(m_form, &ParameterForm::fieldEdited, this, &ParameterEditor::onFieldEdited);
     connect(m_form, &ParameterForm::editFinished, this, [this] { ++m_gesture; });
     connect(m_form, &ParameterForm::modeEdited, this, [this](ReferenceMode mode) {
-        HostParams h = m_host;
-        h.mode = mode;
-        recordEdit({m_params, h, m_effects, m_passivity}, tr("Change mode"), u"mode"_s);
+        Tuning t = tuning();
+        t.host.mode = mode;
+        recordEdit(t, tr("Change mode"), u"mode"_s);
         ++m_gesture;
     });
     connect(m_form, &ParameterForm::refDeadzoneEdited, this, [this](bool on) {
-        HostParams h = m_host;
-        h.ref_deadzone = on;
-        recordEdit({m_params, h, m_effects, m_passivity}, tr("Change dead-zone hold"),
-                   u"ref_deadzone"_s);
+        Tuning t = tuning();
+        t.host.ref_deadzone = on;
+        recordEdit(t, tr("Change dead-zone hold"), u"ref_deadzone"_s);
         ++m_gesture;
     });
     connect(m_form->effectsSection(), &EffectsSection::vibrateRequested, this,
@@ -134,29 +141,8 @@ void ParameterEditor::goTo(ParameterField *field)
 
 void ParameterEditor::revert()
 {
-    const DeviceTuning &device = m_sync.device();
-    if (!device.params)
-        return;
-    Tuning t = tuning();
-    t.device = tidyDeviceParams(*device.params);
-    // The device's float32 effects, unless they are the edited ones as sent: the defaults ±π
-    // travel as the float just inside π and need no revert.
-    if (const auto &fx = device.effects; fx && !sameOnWire(effectsOnWire(), *fx))
-        t.effects = tidyEffectParams(*fx);
-    if (const auto &pc = device.passivity; pc && !sameOnWire(m_passivity, *pc))
-        t.passivity = tidyPassivityParams(*pc);
-    setTuning(t, tr("Revert to device values"));
-}
-
-EffectParams ParameterEditor::effectsOnWire() const
-{
-    return roundedForWire(m_effects, m_host.tau_limit);
-}
-
-DeviceTuning ParameterEditor::editedOnWire() const
-{
-    return {m_params, m_sync.effectsTracked() ? std::optional(effectsOnWire()) : std::nullopt,
-            m_sync.passivityTracked() ? std::optional(roundedForWire(m_passivity)) : std::nullopt};
+    if (const std::optional<Tuning> reverted = m_model->revertedToDevice())
+        setTuning(*reverted, tr("Revert to device values"));
 }
 
 void ParameterEditor::onFieldEdited(const QString &key, double value)
@@ -193,122 +179,66 @@ void ParameterEditor::setTuning(const Tuning &tuning, const QString &undoText)
 void ParameterEditor::setParams(const DeviceParams &device, const HostParams &host,
                                 const QString &undoText)
 {
-    setTuning({device, host, m_effects, m_passivity}, undoText);
+    setTuning({device, host, effects(), passivity()}, undoText);
 }
 
 void ParameterEditor::applyParams(const DeviceParams &device, const HostParams &host)
 {
-    applyTuning({device, host, m_effects, m_passivity});
+    applyTuning({device, host, effects(), passivity()});
 }
 
 void ParameterEditor::applyTuning(const Tuning &tuning)
 {
-    const DeviceParams &device = tuning.device;
-    const HostParams &host = tuning.host;
-    const bool deviceChanged = device != m_params;
-    const bool hostChanged = host != m_host;
-    // The device's blocks change together: each is pushed, undone and compared alike.
-    const bool effectsChanged = tuning.effects != m_effects || tuning.passivity != m_passivity;
-    m_params = device;
-    m_host = host;
-    m_effects = tuning.effects;
-    m_passivity = tuning.passivity;
-
-    m_form->showTuning(tuning);
-
-    if (deviceChanged || hostChanged || effectsChanged)
-        m_sync.edited();
-    revalidate();
-    refreshDiff();
-    refreshDerived();
-    refreshSync();
-    refreshActions();
-    if (hostChanged)
-        Q_EMIT hostParamsChanged(m_host);
-    if (deviceChanged || hostChanged || effectsChanged)
-        Q_EMIT paramsEdited();
-    if (deviceChanged || effectsChanged)
-        m_live->edited();
-}
-
-void ParameterEditor::setDeviceTuning(const DeviceTuning &device)
-{
-    m_sync.setDevice(device);
-    revalidate();
-    refreshDiff();
-    refreshSync();
-    refreshActions();
+    m_model->setEdited(tuning);
 }
 
 void ParameterEditor::setEffectsAvailable(bool available, const QString &reason, double controlRate)
 {
-    m_sync.setEffectsTracked(available);
     m_controlRate = controlRate > 0 ? controlRate : servo::kControlRateHz;
     m_form->effectsSection()->setAvailable(available, reason);
-    refreshDiff();
-    refreshDerived();
-    refreshSync();
-    refreshActions();
+    m_model->setEffectsTracked(available);
+    refresh();
 }
 
 void ParameterEditor::setPassivityAvailable(bool available, const QString &reason)
 {
-    m_sync.setPassivityTracked(available);
     m_form->setPassivityAvailable(available, reason);
-    refreshDiff();
-    refreshSync();
-    refreshActions();
+    m_model->setPassivityTracked(available);
+    refresh();
 }
 
 void ParameterEditor::setCanPush(bool deviceAcceptsParams, const QString &reason)
 {
-    m_sync.setCanPush(deviceAcceptsParams, reason);
+    m_model->setCanPush(deviceAcceptsParams, reason);
     if (!deviceAcceptsParams)
         m_live->cancel();
-    refreshSync();
-    refreshActions();
+    refresh();
 }
 
 void ParameterEditor::setTauLimit(double tauLimit)
 {
-    if (tauLimit == m_host.tau_limit)
+    if (tauLimit == hostParams().tau_limit)
         return;
-    HostParams h = m_host;
+    HostParams h = hostParams();
     h.tau_limit = tauLimit;
-    setParams(m_params, h,
+    setParams(params(), h,
               tr("Use the device's torque limit (%1 N·m)").arg(QString::number(tauLimit, 'g', 6)));
 }
 
 void ParameterEditor::pushFinished(const Outcome &outcome)
 {
-    if (!m_sync.pushFinished(outcome))
-        return;    // a late answer after a disconnect
-    revalidate();  // shows or clears the field the device named
-    refreshDiff(); // the outcome carries the read-back
-    refreshSync();
-    refreshActions();
+    if (!m_model->pushFinished(outcome))
+        return; // a late answer after a disconnect
+    refresh();  // shows or clears the field the device named
     m_live->retry();
 }
 
 void ParameterEditor::startPush()
 {
-    // The effects go along while the device renders them and its read-back is not them yet.
-    std::optional<EffectParams> effects;
-    const EffectParams onWire = effectsOnWire();
-    const std::optional<EffectParams> &fx = m_sync.device().effects;
-    if (m_sync.effectsTracked() && (!fx || !sameOnWire(onWire, *fx)))
-        effects = m_effects;
-    // The passivity block likewise, while the device has the controller.
-    std::optional<PassivityParams> passivity;
-    const std::optional<PassivityParams> &pc = m_sync.device().passivity;
-    if (m_sync.passivityTracked() && (!pc || !sameOnWire(m_passivity, *pc)))
-        passivity = m_passivity;
-    m_sync.pushStarted(editedOnWire());
+    const DeviceTuning send = m_model->startPush();
     m_live->pushStarted();
-    revalidate();
-    refreshSync();
-    refreshActions();
-    Q_EMIT pushRequested({m_params, effects, passivity});
+    refresh();
+    Q_EMIT pushRequested(send);
 }
 
 void ParameterEditor::setLivePush(bool enabled)
@@ -333,17 +263,31 @@ void ParameterEditor::setAngleInDegrees(bool degrees)
     Q_EMIT angleInDegreesChanged(degrees);
 }
 
+void ParameterEditor::refresh()
+{
+    revalidate();
+    m_form->showDevice(deviceTuning(), tuning(), m_model->effectsOnWire());
+    const Tuning &t = tuning();
+    m_derived->setFigures(deriveFigures(t.device, t.host), m_valid);
+    m_form->effectsSection()->setFigures(t.effects, t.device, t.host.tau_limit, m_controlRate,
+                                         m_valid);
+    m_actions->update(m_valid, m_problems, m_model->canPush(), m_model->isPushing(),
+                      m_model->differsFromDevice());
+    m_syncBar->setProblems(m_problems);
+}
+
 void ParameterEditor::revalidate()
 {
     QHash<QString, QStringList> perField;
     QStringList all;
     QStringList fields;
-    std::vector<Violation> violations = validate(m_params);
-    for (Violation &v : validate(m_host))
+    const Tuning &t = tuning();
+    std::vector<Violation> violations = validate(t.device);
+    for (Violation &v : validate(t.host))
         violations.push_back(std::move(v));
-    for (Violation &v : validate(m_effects, m_host.tau_limit))
+    for (Violation &v : validate(t.effects, t.host.tau_limit))
         violations.push_back(std::move(v));
-    for (Violation &v : validate(m_passivity))
+    for (Violation &v : validate(t.passivity))
         violations.push_back(std::move(v));
     for (const Violation &v : violations) {
         const QString text = QString::fromStdString(v.message());
@@ -351,7 +295,7 @@ void ParameterEditor::revalidate()
         all << text;
         fields << QString::fromStdString(v.field);
     }
-    const QString rejected = m_sync.rejectedField();
+    const QString rejected = m_model->rejectedField();
     if (!rejected.isEmpty() && !perField.contains(rejected))
         perField[rejected] << tr("%1: the device refused this value").arg(rejected);
     m_form->setProblems(perField);
@@ -363,44 +307,6 @@ void ParameterEditor::revalidate()
         m_valid = valid;
         Q_EMIT validityChanged(valid);
     }
-}
-
-void ParameterEditor::refreshDiff()
-{
-    m_form->showDevice(m_sync.device(), tuning(), effectsOnWire());
-}
-
-void ParameterEditor::refreshDerived()
-{
-    m_derived->setFigures(deriveFigures(m_params, m_host), m_valid);
-    m_form->effectsSection()->setFigures(m_effects, m_params, m_host.tau_limit, m_controlRate,
-                                         m_valid);
-}
-
-void ParameterEditor::refreshSync()
-{
-    const DeviceTuning edited = editedOnWire();
-    const SyncState state = m_sync.state(edited);
-    const QString text = m_sync.text(edited);
-    m_syncBar->setState(state, text);
-
-    if (state != m_syncState || text != m_syncText) {
-        m_syncState = state;
-        m_syncText = text;
-        Q_EMIT syncStateChanged(state, text);
-    }
-}
-
-void ParameterEditor::refreshActions()
-{
-    const auto &device = m_sync.device().params;
-    const auto &fx = m_sync.device().effects;
-    const auto &pc = m_sync.device().passivity;
-    const bool differs =
-        device && (!sameOnWire(m_params, *device) || (fx && !sameOnWire(effectsOnWire(), *fx)) ||
-                   (pc && !sameOnWire(m_passivity, *pc)));
-    m_actions->update(m_valid, m_problems, m_sync.canPush(), m_sync.isPushing(), differs);
-    m_syncBar->setProblems(m_problems);
 }
 
 } // namespace hatpic

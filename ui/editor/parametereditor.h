@@ -9,9 +9,8 @@
 
 #include "editor/editoractions.h"
 #include "editor/livepush.h"
-#include "editor/synctracker.h"
-#include "editor/tuning.h"
 #include "session/sessiontypes.h"
+#include "tuning/tuningmodel.h"
 
 #include <QWidget>
 
@@ -40,11 +39,14 @@ public:
     explicit ParameterEditor(QWidget *parent = nullptr);
     ~ParameterEditor() override;
 
-    DeviceParams params() const { return m_params; }
-    HostParams hostParams() const { return m_host; }
-    EffectParams effects() const { return m_effects; }
-    PassivityParams passivity() const { return m_passivity; }
-    Tuning tuning() const { return {m_params, m_host, m_effects, m_passivity}; }
+    //! The tuning edited here, the device's and the sync state: what the window's views
+    //! observe (the editor's undo stack is its only writer of edited()).
+    TuningModel *model() const { return m_model; }
+    const Tuning &tuning() const { return m_model->edited(); }
+    DeviceParams params() const { return tuning().device; }
+    HostParams hostParams() const { return tuning().host; }
+    EffectParams effects() const { return tuning().effects; }
+    PassivityParams passivity() const { return tuning().passivity; }
 
     //! Replaces the whole tuning as one undo step named `undoText`.
     void setTuning(const Tuning &tuning, const QString &undoText);
@@ -56,8 +58,8 @@ public:
 
     //! The device's tuning as read: drives the diff markers and the sync state. Without
     //! parameters (disconnected): no diff markers, no sync state.
-    void setDeviceTuning(const DeviceTuning &device);
-    const DeviceTuning &deviceTuning() const { return m_sync.device(); }
+    void setDeviceTuning(const DeviceTuning &device) { m_model->setDevice(device); }
+    const DeviceTuning &deviceTuning() const { return m_model->device(); }
     //! Whether the connected device renders effects (the effects are then pushed and kept in
     //! sync with the parameters); `reason` says why not. `controlRate` [Hz] is the device's
     //! control rate, for the passivity figures and the vibration test's Nyquist rule.
@@ -68,7 +70,7 @@ public:
 
     //! False while disconnected or for a legacy device; `reason` replaces "not connected".
     void setCanPush(bool deviceAcceptsParams, const QString &reason = {});
-    bool canPush() const { return m_sync.canPush(); }
+    bool canPush() const { return m_model->canPush(); }
     //! The connected device's actuator limit: sets tau_limit as an undoable edit when it differs.
     void setTauLimit(double tauLimit);
 
@@ -88,8 +90,8 @@ public:
     QAction *undoAction() const { return m_actions->undo; }     //!< no shortcut of its own
     QAction *redoAction() const { return m_actions->redo; }     //!< no shortcut of its own
 
-    SyncState syncState() const { return m_syncState; }
-    QString syncText() const { return m_syncText; }
+    SyncState syncState() const { return m_model->syncState(); }
+    QString syncText() const { return m_model->syncText(); }
 
     //! Push on every edit while valid, at most one in flight and one per interval; the last
     //! value is always sent.
@@ -110,8 +112,6 @@ public:
     QList<QAction *> keyboardActions() const;
 
 Q_SIGNALS:
-    void paramsEdited(); //!< the edited set changed (edit, undo/redo, setParams)
-    void hostParamsChanged(const hatpic::HostParams &host);
     //! Push or a live-push tick: the parameters, and the effects when the device renders
     //! effects and its read-back differs from them (absent: not sent).
     void pushRequested(const hatpic::DeviceTuning &tuning);
@@ -119,7 +119,6 @@ Q_SIGNALS:
     void vibrateRequested(const hatpic::Vibration &vibration);
     void readRequested();
     void validityChanged(bool valid);
-    void syncStateChanged(hatpic::SyncState state, const QString &text);
     void angleInDegreesChanged(bool degrees);
 
 private:
@@ -127,34 +126,21 @@ private:
     void onFieldEdited(const QString &key, double value);
     //! Puts the change on the undo stack (merged within one gesture) and applies it.
     void recordEdit(const Tuning &tuning, const QString &text, const QString &field);
-    //! The effects as SET_EFFECTS carries them (what the device's read-back must equal).
-    EffectParams effectsOnWire() const;
-    //! The edited parameters, and the effects and passivity block as they travel while the
-    //! device has them: what the sync compares.
-    DeviceTuning editedOnWire() const;
     void revert();
     void startPush();
+    //! The model changed: everything shown follows it.
+    void refresh();
     void revalidate();
-    void refreshDiff();
-    void refreshDerived();
-    void refreshSync();
-    void refreshActions();
     //! Brings the field of the first broken rule into sight, with the cursor in it.
     void showFirstProblem();
     //! Scrolls `field` into view and puts the cursor in it, its text selected.
     void goTo(ParameterField *field);
 
-    DeviceParams m_params;
-    HostParams m_host;
-    EffectParams m_effects;
-    PassivityParams m_passivity;
-    SyncTracker m_sync;
+    TuningModel *m_model = nullptr;
     double m_controlRate; //!< [Hz]
     bool m_valid = true;
     QStringList m_problems;
     QStringList m_problemFields; //!< the field of each of m_problems
-    SyncState m_syncState = SyncState::NotConnected;
-    QString m_syncText;
 
     LivePush *m_live = nullptr;
     bool m_degrees = false;

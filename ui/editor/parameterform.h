@@ -6,8 +6,8 @@
 // what the user changes; the editor decides what an edit does.
 #pragma once
 
-#include "editor/tuning.h"
 #include "model/devicetuning.h"
+#include "tuning/tuning.h"
 
 #include <QHash>
 #include <QStringList>

@@ -2,7 +2,7 @@
 // dot and a sentence), undo/redo, Read, Revert and Push, and the live-push and degrees switches.
 #pragma once
 
-#include "editor/synctracker.h"
+#include "tuning/tuningmodel.h"
 
 #include <QWidget>
 

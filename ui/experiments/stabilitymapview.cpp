@@ -1,5 +1,7 @@
 #include "experiments/stabilitymapview.h"
 
+#include "tuning/tuningmodel.h"
+
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -34,7 +36,8 @@ QDoubleSpinBox *spin(QWidget *parent, const char *name, double low, double high,
 
 } // namespace
 
-StabilityMapView::StabilityMapView(QWidget *parent) : QWidget(parent)
+StabilityMapView::StabilityMapView(const TuningModel &tuning, QWidget *parent)
+    : QWidget(parent), m_tuning(tuning)
 {
     m_delays = new QLineEdit(QStringLiteral("0:0.3/7"), this);
     m_delays->setObjectName(QStringLiteral("mapDelays"));
@@ -91,6 +94,10 @@ StabilityMapView::StabilityMapView(QWidget *parent) : QWidget(parent)
     connect(m_cancel, &QPushButton::clicked, this, &StabilityMapView::cancel);
     for (QDoubleSpinBox *box : {m_delayInUse, m_gainInUse})
         connect(box, &QDoubleSpinBox::valueChanged, this, &StabilityMapView::redraw);
+    connect(&m_tuning, &TuningModel::editedChanged, this, [this] {
+        if (!m_cells.empty() && !computing())
+            m_status->setText(tr("The tuning changed since this map: compute it again."));
+    });
     updateButtons();
 }
 
@@ -106,37 +113,17 @@ void StabilityMapView::joinWorker()
         m_worker.join();
 }
 
-void StabilityMapView::setTuning(const DeviceParams &device, const HostParams &host,
-                                 const EffectParams &effects)
-{
-    if (device == m_device && host == m_host && effects == m_effects)
-        return;
-    m_device = device;
-    m_host = host;
-    m_effects = effects;
-    if (!m_cells.empty() && !computing())
-        m_status->setText(tr("The tuning changed since this map: compute it again."));
-}
-
-void StabilityMapView::setPassivity(const PassivityParams &passivity)
-{
-    if (passivity == m_passivity)
-        return;
-    m_passivity = passivity;
-    if (!m_cells.empty() && !computing())
-        m_status->setText(tr("The tuning changed since this map: compute it again."));
-}
-
 teleop::MapSpec StabilityMapView::spec(QString *error) const
 {
     teleop::MapSpec s;
-    s.base.device = m_device;
-    s.base.host = m_host;
-    s.base.effects = m_effects;
-    s.base.passivity = m_passivity;
+    const Tuning &t = m_tuning.edited();
+    s.base.device = t.device;
+    s.base.host = t.host;
+    s.base.effects = t.effects;
+    s.base.passivity = t.passivity;
     // What the controller buys: off beside as edited.
-    if (m_passivity.pc_damping_max > 0)
-        s.field = {QStringLiteral("pc_damping_max"), {0.0, m_passivity.pc_damping_max}};
+    if (t.passivity.pc_damping_max > 0)
+        s.field = {QStringLiteral("pc_damping_max"), {0.0, t.passivity.pc_damping_max}};
     s.base.duration = m_duration->value();
     s.threads = std::clamp(QThread::idealThreadCount(), 1, teleop::kMaxMapThreads);
     QString why;
@@ -238,10 +225,11 @@ void StabilityMapView::redraw()
 {
     if (m_cells.empty())
         return;
-    m_svg = teleop::mapSvg(
-        m_cells, m_shown.field.name, m_shown.base.duration,
-        teleop::MapMark{m_delayInUse->value(), m_gainInUse->value(),
-                        m_shown.field.name.isEmpty() ? NAN : m_passivity.pc_damping_max});
+    m_svg = teleop::mapSvg(m_cells, m_shown.field.name, m_shown.base.duration,
+                           teleop::MapMark{m_delayInUse->value(), m_gainInUse->value(),
+                                           m_shown.field.name.isEmpty()
+                                               ? NAN
+                                               : m_tuning.edited().passivity.pc_damping_max});
     m_chart->load(m_svg);
 }
 

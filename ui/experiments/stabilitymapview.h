@@ -5,9 +5,6 @@
 // The cells run on threads of their own; the GUI thread only starts, cancels and shows.
 #pragma once
 
-#include "model/effects.h"
-#include "model/params.h"
-#include "model/passivity.h"
 #include "teleop/stabilitymap.h"
 
 #include <QWidget>
@@ -26,18 +23,18 @@ class QSvgWidget;
 
 namespace hatpic {
 
+class TuningModel;
+
 class StabilityMapView : public QWidget
 {
     Q_OBJECT
 public:
-    explicit StabilityMapView(QWidget *parent = nullptr);
+    //! Maps `tuning`'s edited tuning: the next map runs it; an edit marks a map on screen
+    //! stale. With pc_damping_max > 0 the map shows the passivity controller off and on side
+    //! by side, else one map with it off.
+    explicit StabilityMapView(const TuningModel &tuning, QWidget *parent = nullptr);
     ~StabilityMapView() override; //!< cancels a map being computed and waits for its threads
 
-    //! The tuning being edited: the next map runs it; a map on screen is marked stale.
-    void setTuning(const DeviceParams &device, const HostParams &host, const EffectParams &effects);
-    //! The passivity controller being edited: with pc_damping_max > 0 the map shows it off
-    //! and on side by side, else one map with it off.
-    void setPassivity(const PassivityParams &passivity);
     //! The map the form describes for the tuning, or the reason it cannot run.
     teleop::MapSpec spec(QString *error = nullptr) const;
     //! Starts computing; false with the reason in the status line.
@@ -61,10 +58,7 @@ private:
     void updateButtons();
     void joinWorker();
 
-    DeviceParams m_device;
-    HostParams m_host;
-    EffectParams m_effects;
-    PassivityParams m_passivity;
+    const TuningModel &m_tuning;
 
     QLineEdit *m_delays{}, *m_gains{};
     QDoubleSpinBox *m_duration{}, *m_delayInUse{}, *m_gainInUse{};

@@ -94,7 +94,7 @@ ProfileController::ProfileController(ParameterEditor *editor, QWidget *dialogPar
     rebuildRecentMenu();
     rebuildPresetsMenu();
 
-    connect(m_editor, &ParameterEditor::paramsEdited, this, &ProfileController::updateTitle);
+    connect(m_editor->model(), &TuningModel::editedChanged, this, &ProfileController::updateTitle);
     updateTitle();
 }
 

@@ -10,6 +10,7 @@
 #include "plots/plotpanel.h"
 #include "plots/plottheme.h"
 #include "plots/qcp.h"
+#include "tuning/tuningmodel.h"
 
 #include <QTimer>
 #include <QVBoxLayout>
@@ -44,7 +45,8 @@ QCPItemStraightLine *straightLine(QCustomPlot *plot, QCPAxisRect *rect, const QP
 
 } // namespace
 
-StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
+StiffnessView::StiffnessView(const TuningModel &tuning, QWidget *parent)
+    : QWidget(parent), m_tuning(tuning)
 {
     m_plot = new QCustomPlot(this);
     m_plot->setObjectName(u"stiffness_plot"_s);
@@ -169,6 +171,10 @@ StiffnessView::StiffnessView(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_plot);
     plottheme::follow(m_plot);
     updateComparisonStyle();
+    connect(&m_tuning, &TuningModel::editedChanged, this, [this](TuningChange change) {
+        if (change.device || change.effects) // the curves ignore host and passivity edits
+            rebuild();
+    });
     rebuild();
 }
 
@@ -213,7 +219,8 @@ void StiffnessView::setReplaying(bool replaying)
 
 bool StiffnessView::effectsShown() const
 {
-    return shapesStaticTorque(m_editedEffects) || (m_other && shapesStaticTorque(m_otherEffects)) ||
+    return shapesStaticTorque(m_tuning.edited().effects) ||
+           (m_other && shapesStaticTorque(m_otherEffects)) ||
            (m_device && m_deviceEffects && shapesStaticTorque(*m_deviceEffects));
 }
 
@@ -304,26 +311,10 @@ QVector<double> StiffnessView::sampleAngles(const DeviceParams &p, double center
     return staticCurveAngles(p, center, halfWidth, effects, kUniformSamples);
 }
 
-void StiffnessView::setEditedParams(const DeviceParams &params)
-{
-    if (params == m_edited)
-        return; // the window calls this on every edit, some of which are effects or host fields
-    m_edited = params;
-    rebuild();
-}
-
 void StiffnessView::setDeviceTuning(const DeviceTuning &device)
 {
     m_device = device.params;
     m_deviceEffects = device.effects;
-    rebuild();
-}
-
-void StiffnessView::setEditedEffects(const EffectParams &effects)
-{
-    if (effects == m_editedEffects)
-        return; // as setEditedParams: a parameter edit leaves the effects as they are
-    m_editedEffects = effects;
     rebuild();
 }
 
@@ -380,14 +371,15 @@ void StiffnessView::fillCurves(const DeviceParams &params, const EffectParams &e
 
 void StiffnessView::rebuild()
 {
-    const double center = m_edited.theta0;
+    const Tuning &edited = m_tuning.edited();
+    const double center = edited.device.theta0;
     const EffectParams deviceEffects = m_deviceEffects.value_or(EffectParams{});
-    double half = halfRange(m_edited, m_editedEffects);
+    double half = halfRange(edited.device, edited.effects);
     if (m_other)
         half = std::max(half, halfRange(*m_other, m_otherEffects));
     if (m_device) // the device's effects in sight too (its curve alone keeps the edited range)
         half = std::max(half, std::min(effectsHalfRange(deviceEffects), kPi));
-    fillCurves(m_edited, m_editedEffects, m_torque, m_stiffness, center, half);
+    fillCurves(edited.device, edited.effects, m_torque, m_stiffness, center, half);
     if (m_other) {
         fillCurves(*m_other, m_otherEffects, m_otherTorque, m_otherStiffness, center, half);
     } else {
@@ -441,7 +433,7 @@ void StiffnessView::rebuild()
     m_limitHigh->setVisible(m_tauLimit > 0);
     m_limitLow->setVisible(m_tauLimit > 0);
 
-    m_editedMarks->update(m_edited, m_editedEffects, center - half, center + half, scale());
+    m_editedMarks->update(edited.device, edited.effects, center - half, center + half, scale());
     m_deviceMarks->update(m_device.value_or(DeviceParams{}),
                           m_device ? m_deviceEffects : std::nullopt, center - half, center + half,
                           scale());
@@ -453,8 +445,9 @@ void StiffnessView::rebuild()
 
 void StiffnessView::updateShading()
 {
-    const double c = m_edited.theta0;
-    const double bands[] = {m_edited.N, m_edited.Q_dz}; // notch band below the dead zone
+    const DeviceParams &edited = m_tuning.edited().device;
+    const double c = edited.theta0;
+    const double bands[] = {edited.N, edited.Q_dz}; // notch band below the dead zone
     for (int i = 0; i < 4; ++i) {
         const double w = bands[i % 2];
         m_shades[i]->topLeft->setCoords((c - w) * scale(), 0);

@@ -26,6 +26,7 @@ namespace hatpic {
 class EffectMarks;
 class FadingTrail;
 class PlotPanel;
+class TuningModel;
 
 class StiffnessView : public QWidget
 {
@@ -36,15 +37,13 @@ public:
 
     static constexpr double kTrailSeconds = 3; //!< length of the operating point's trail [s]
 
-    explicit StiffnessView(QWidget *parent = nullptr);
+    //! Draws `tuning`'s edited parameters and effects, and follows its edits.
+    explicit StiffnessView(const TuningModel &tuning, QWidget *parent = nullptr);
     ~StiffnessView() override;
 
-    void setEditedParams(const DeviceParams &params);
     //! The device's tuning, drawn dashed: its parameters (absent: hidden) with its effect block
     //! (absent: a device without the effects capability, drawn without effects).
     void setDeviceTuning(const DeviceTuning &device);
-    //! The edited effect block: its detents and walls join the edited static torque curve.
-    void setEditedEffects(const EffectParams &effects);
     //! Live operating point: knob angle [rad] and the measured static torque τ_rec + τ_fx
     //! (τ_rec alone where the device does not send τ_fx) [N·m].
     void setOperatingPoint(double theta, double tauRec);
@@ -114,10 +113,9 @@ private:
     void requestReplot(bool pointOnly = false);
     double scale() const;
 
-    DeviceParams m_edited;
+    const TuningModel &m_tuning;
     std::optional<DeviceParams> m_device; //!< the device's tuning, as setDeviceTuning() gave it
     std::optional<DeviceParams> m_other;  //!< the other A/B slot, when compared
-    EffectParams m_editedEffects;
     std::optional<EffectParams> m_deviceEffects;
     EffectParams m_otherEffects;
     bool m_replaying = false;

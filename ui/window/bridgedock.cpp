@@ -29,8 +29,8 @@ QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileCon
     QObject::connect(profiles, &ProfileController::bridgeSettingsLoaded, panel,
                      &BridgePanel::setSettings);
     panel->setReferenceMode(editor->hostParams().mode);
-    QObject::connect(editor, &ParameterEditor::hostParamsChanged, panel,
-                     [panel](const HostParams &host) { panel->setReferenceMode(host.mode); });
+    QObject::connect(editor->model(), &TuningModel::editedChanged, panel,
+                     [panel, editor] { panel->setReferenceMode(editor->hostParams().mode); });
     return dock;
 }
 

@@ -16,19 +16,11 @@ QDockWidget *addExperimentsDock(QMainWindow *window, const WindowDockParts &part
                                 QDockWidget *tabWith)
 {
     auto *panel = new ExperimentsPanel(parts.client, parts.simulator, parts.plots, window);
-    ParameterEditor *editor = parts.editor;
     panel->setObjectName(QStringLiteral("experimentsPanel"));
     // The stability map of the teleoperation loop for the tuning being edited, beside the
     // measurements (docs/experiments.md § Stability map).
-    auto *map = new StabilityMapView(window);
+    auto *map = new StabilityMapView(*parts.editor->model(), window);
     map->setObjectName(QStringLiteral("stabilityMap"));
-    const auto follow = [map, editor] {
-        map->setTuning(editor->params(), editor->hostParams(), editor->effects());
-        map->setPassivity(editor->passivity());
-    };
-    follow();
-    QObject::connect(editor, &ParameterEditor::paramsEdited, map, follow);
-    QObject::connect(editor, &ParameterEditor::hostParamsChanged, map, follow);
     auto *tabs = new QTabWidget(window);
     tabs->setObjectName(QStringLiteral("experimentsTabs"));
     // Tabs on the side: the panel's height is what fits at 720 px (tst_windowlayout).

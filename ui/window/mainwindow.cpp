@@ -122,15 +122,13 @@ void MainWindow::createParts()
 
     m_editor = named(new ParameterEditor(this), "parameterEditor");
     m_paramLink = named(new DeviceParameterLink(m_client, m_editor, this), "parameterLink");
-    m_stiffness = named(new StiffnessView(this), "stiffnessView");
+    m_stiffness = named(new StiffnessView(*m_editor->model(), this), "stiffnessView");
     m_profiles = named(new ProfileController(m_editor, this, this), "profileController");
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
     m_simulator = std::make_shared<SimulatedJoystick>();
     for (QWidget *readout :
          {static_cast<QWidget *>(m_simPanel->statusLabel()), static_cast<QWidget *>(m_stats)})
         m_statusLine->readouts()->layout()->addWidget(readout);
-    m_stiffness->setEditedParams(m_editor->params());
-    m_stiffness->setEditedEffects(m_editor->effects());
     m_feed->setLiveHostParams(m_editor->hostParams());
     m_plotActions = new PlotActions(m_plots, this);
 }
@@ -188,7 +186,10 @@ void MainWindow::connectParts()
     connect(m_client, &DeviceClient::samplesReady, new ChatterWatch(m_editor),
             &ChatterWatch::addSamples); // warns in the derived figures
     connect(m_client, &DeviceClient::deviceTuningChanged, m_feed, &PlotFeed::setLiveDeviceTuning);
-    connect(m_editor, &ParameterEditor::hostParamsChanged, m_feed, &PlotFeed::setLiveHostParams);
+    connect(m_editor->model(), &TuningModel::editedChanged, m_feed, [this](TuningChange change) {
+        if (change.host)
+            m_feed->setLiveHostParams(m_editor->hostParams());
+    });
     connect(m_paramLink, &DeviceParameterLink::deviceChanged, m_feed, &PlotFeed::addLiveEvent);
     connect(m_feed, &PlotFeed::replayingChanged, m_stiffness, &StiffnessView::setReplaying);
     connect(m_feed, &PlotFeed::deviceTuningShown, m_stiffness, &StiffnessView::setDeviceTuning);
@@ -212,10 +213,6 @@ void MainWindow::connectParts()
     });
 
     connect(m_paramLink, &DeviceParameterLink::commandFinished, this, &MainWindow::showStatus);
-    connect(m_editor, &ParameterEditor::paramsEdited, this, [this] {
-        m_stiffness->setEditedEffects(m_editor->effects());
-        m_stiffness->setEditedParams(m_editor->params());
-    });
     connect(m_editor, &ParameterEditor::angleInDegreesChanged, m_actions->degrees,
             &QAction::setChecked);
     connect(m_profiles, &ProfileController::titleChanged, this, &QWidget::setWindowTitle);

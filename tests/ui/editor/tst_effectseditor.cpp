@@ -129,7 +129,7 @@ void TestEffectsEditor::fieldsShowUnitsAndDefaults()
 void TestEffectsEditor::editIsOneUndoStep()
 {
     ParameterEditor editor;
-    QSignalSpy edited(&editor, &ParameterEditor::paramsEdited);
+    QSignalSpy edited(editor.model(), &TuningModel::editedChanged);
     spin(editor, u"detent_strength"_s)->setValue(0.05);
     spin(editor, u"detent_range"_s)->setValue(0.8);
     QCOMPARE(editor.undoStack()->count(), 2);

@@ -530,7 +530,7 @@ void TestParameterEditor::timeoutShown()
 void TestParameterEditor::undoRedoRestoresValues()
 {
     ParameterEditor editor;
-    QSignalSpy edited(&editor, &ParameterEditor::paramsEdited);
+    QSignalSpy edited(editor.model(), &TuningModel::editedChanged);
     spin(editor, u"K_max"_s)->setValue(0.5);
     spin(editor, u"K_min"_s)->setValue(0.2);
     QCOMPARE(editor.undoStack()->count(), 2);
@@ -608,11 +608,12 @@ void TestParameterEditor::setParamsIsOneUndoStep()
     d.Q_dz = 0.04;
     HostParams h;
     h.mode = ReferenceMode::Rotation;
-    QSignalSpy host(&editor, &ParameterEditor::hostParamsChanged);
+    QSignalSpy host(editor.model(), &TuningModel::editedChanged);
     editor.setParams(d, h, u"Load preset"_s);
     QCOMPARE(editor.params(), d);
     QCOMPARE(editor.hostParams(), h);
-    QCOMPARE(host.count(), 1);
+    QCOMPARE(host.count(), 1); // one signal for the whole set
+    QVERIFY(host.at(0).at(0).value<TuningChange>().host);
     QCOMPARE(editor.undoStack()->count(), 1);
     QCOMPARE(editor.undoStack()->undoText(), u"Load preset"_s);
     editor.undoStack()->undo();
@@ -856,11 +857,13 @@ void TestParameterEditor::degreesChangeOnlyTheDisplay()
 void TestParameterEditor::hostFieldsEdit()
 {
     ParameterEditor editor;
-    QSignalSpy host(&editor, &ParameterEditor::hostParamsChanged);
+    QSignalSpy host(editor.model(), &TuningModel::editedChanged);
     auto *mode = editor.findChild<QComboBox *>(u"combo_mode"_s);
     mode->setCurrentIndex(mode->findData(int(ReferenceMode::Rotation)));
     QCOMPARE(host.count(), 1);
-    QCOMPARE(host.at(0).at(0).value<HostParams>().mode, ReferenceMode::Rotation);
+    QVERIFY(host.at(0).at(0).value<TuningChange>().host);
+    QVERIFY(!host.at(0).at(0).value<TuningChange>().device);
+    QCOMPARE(editor.hostParams().mode, ReferenceMode::Rotation);
     QCOMPARE(label(editor, u"unit_v_max"_s)->text(), u"rad/s"_s);
     spin(editor, u"v_max"_s)->setValue(2.5);
     QCOMPARE(editor.hostParams().v_max, 2.5);

@@ -3,6 +3,7 @@
 // for the edited tuning, marks the settings in use, says when the tuning changed, and names a
 // bad list.
 #include "experiments/stabilitymapview.h"
+#include "tuning/tuningmodel.h"
 
 #include <QDoubleSpinBox>
 #include <QLineEdit>
@@ -32,7 +33,8 @@ template<typename T> T *child(QWidget &w, const char *name)
 
 void TestStabilityMapView::computesTheEditedTuningsMap()
 {
-    StabilityMapView view;
+    TuningModel tuning;
+    StabilityMapView view(tuning);
     view.resize(900, 400);
     view.show();
     child<QLineEdit>(view, "mapDelays")->setText(QStringLiteral("0,0.15"));
@@ -66,20 +68,22 @@ void TestStabilityMapView::computesTheEditedTuningsMap()
     QCOMPARE(direct[3].result.settleS, view.cells()[3].result.settleS);
 
     // The controller turned off in the editor: one map, off.
-    view.setPassivity(PassivityParams::off());
+    Tuning edited = tuning.edited();
+    edited.passivity = PassivityParams::off();
+    tuning.setEdited(edited);
     QCOMPARE(view.spec().cellCount(), 2);
 
     // A heavier damping edited: the map is stale, and the next one runs it.
-    DeviceParams damped;
-    damped.M_adm = 0.05;
-    view.setTuning(damped, HostParams{}, EffectParams{});
+    edited.device.M_adm = 0.05;
+    tuning.setEdited(edited);
     QVERIFY(view.status().contains(u"compute it again"));
     QCOMPARE(view.spec().base.device.M_adm, 0.05);
 }
 
 void TestStabilityMapView::cancels()
 {
-    StabilityMapView view;
+    TuningModel tuning;
+    StabilityMapView view(tuning);
     view.show();
     child<QLineEdit>(view, "mapDelays")->setText(QStringLiteral("0:0.3/20"));
     child<QLineEdit>(view, "mapGains")->setText(QStringLiteral("0.01:0.04/20"));
@@ -94,7 +98,8 @@ void TestStabilityMapView::cancels()
 
 void TestStabilityMapView::namesABadList()
 {
-    StabilityMapView view;
+    TuningModel tuning;
+    StabilityMapView view(tuning);
     child<QLineEdit>(view, "mapDelays")->setText(QStringLiteral("0,soon"));
     QVERIFY(!view.compute());
     QVERIFY2(view.status().contains(u"Delays: needs a number, got 'soon'"),

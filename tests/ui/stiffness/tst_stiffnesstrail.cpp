@@ -6,6 +6,7 @@
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
 #include "stiffness/stiffnessview.h"
+#include "tuning/tuningmodel.h"
 
 #include <QTest>
 
@@ -38,7 +39,8 @@ struct Rig
 {
     SampleBuffer buffer;
     PlotPanel panel;
-    StiffnessView view;
+    TuningModel tuning;
+    StiffnessView view{tuning};
 
     explicit Rig(int samples)
     {

@@ -11,6 +11,7 @@
 #include "plots/qcp.h"
 #include "stiffness/staticcurves.h"
 #include "stiffness/stiffnessview.h"
+#include "tuning/tuningmodel.h"
 
 #include <QTest>
 
@@ -23,6 +24,21 @@ using namespace Qt::StringLiterals;
 Q_DECLARE_METATYPE(hatpic::DeviceParams)
 
 namespace {
+
+// Edits as the parameter editor does: the view follows the model.
+void editParams(TuningModel &tuning, const DeviceParams &params)
+{
+    Tuning t = tuning.edited();
+    t.device = params;
+    tuning.setEdited(t);
+}
+
+void editEffects(TuningModel &tuning, const EffectParams &effects)
+{
+    Tuning t = tuning.edited();
+    t.effects = effects;
+    tuning.setEdited(t);
+}
 
 //! The title of the plot `graph` is drawn in (level, in its corner).
 QString title(const QCPGraph *graph)
@@ -128,8 +144,9 @@ void TestStiffnessView::curvesMatchModel_data()
 void TestStiffnessView::curvesMatchModel()
 {
     QFETCH(DeviceParams, p);
-    StiffnessView view;
-    view.setEditedParams(p);
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, p);
     const auto tau = points(view.torqueGraph());
     const auto k = points(view.stiffnessGraph());
     QVERIFY(tau.size() >= StiffnessView::kUniformSamples);
@@ -158,8 +175,9 @@ void TestStiffnessView::breakpointsPresent_data()
 void TestStiffnessView::breakpointsPresent()
 {
     QFETCH(DeviceParams, p);
-    StiffnessView view;
-    view.setEditedParams(p);
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, p);
     const QCPGraph *g = view.torqueGraph();
     const double lo = p.theta0 - StiffnessView::halfRange(p);
     const double hi = p.theta0 + StiffnessView::halfRange(p);
@@ -208,8 +226,9 @@ void TestStiffnessView::rangeAroundCenter()
     QFETCH(double, half);
     const DeviceParams p = params(0.1, 0.4, n, 0.01, theta0);
     QCOMPARE(StiffnessView::halfRange(p), half);
-    StiffnessView view;
-    view.setEditedParams(p);
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, p);
     const QCPRange range = view.torqueGraph()->keyAxis()->range();
     QCOMPARE(range.lower, theta0 - half);
     QCOMPARE(range.upper, theta0 + half);
@@ -222,7 +241,8 @@ void TestStiffnessView::rangeAroundCenter()
 void TestStiffnessView::replayLegendNamesTheRecording()
 {
     // In replay the dashed curve is not the device's and the dot is not live.
-    StiffnessView view;
+    TuningModel tuning;
+    StiffnessView view(tuning);
     QCOMPARE(view.deviceTorqueGraph()->name(), u"device"_s);
     view.setReplaying(true);
     QCOMPARE(view.deviceTorqueGraph()->name(), u"recording"_s);
@@ -236,8 +256,9 @@ void TestStiffnessView::coloursMatchTheTimePlots()
 {
     // τ_rec's colour for the τ_rec(θ) curves, the notch band amber as in the time plots (the
     // stiffness view once shaded it blue and drew the device curve orange, τ_total's colour).
-    StiffnessView view;
-    view.setEditedParams(DeviceParams{});
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, DeviceParams{});
     view.setDeviceTuning({DeviceParams{}, std::nullopt});
     const QColor tauRec = palette::channel(Channel::TauRec);
     QCOMPARE(view.torqueGraph()->pen().color(), tauRec);
@@ -264,8 +285,9 @@ void TestStiffnessView::coloursMatchTheTimePlots()
 
 void TestStiffnessView::deviceCurveDashed()
 {
-    StiffnessView view;
-    view.setEditedParams(DeviceParams{});
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, DeviceParams{});
     QVERIFY(!view.deviceTorqueGraph()->visible());
     QCOMPARE(view.torqueGraph()->pen().style(), Qt::SolidLine);
 
@@ -291,8 +313,9 @@ void TestStiffnessView::deviceCurveDashed()
 
 void TestStiffnessView::operatingPointMoves()
 {
-    StiffnessView view;
-    view.setEditedParams(DeviceParams{});
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, DeviceParams{});
     QVERIFY(view.operatingPointGraph()->data()->isEmpty());
     view.setOperatingPoint(0.05, -0.02);
     auto pts = points(view.operatingPointGraph());
@@ -307,7 +330,7 @@ void TestStiffnessView::operatingPointMoves()
     QCOMPARE(pts[0], QPointF(-0.3, 0.06));
 
     // Survives a parameter change.
-    view.setEditedParams(params(0.1, 0.5, 0.2, 0.02, 0.0));
+    editParams(tuning, params(0.1, 0.5, 0.2, 0.02, 0.0));
     QCOMPARE(points(view.operatingPointGraph()).value(0), QPointF(-0.3, 0.06));
 
     view.clearOperatingPoint();
@@ -316,9 +339,10 @@ void TestStiffnessView::operatingPointMoves()
 
 void TestStiffnessView::degreesOnlyScaleTheAxis()
 {
-    StiffnessView view;
+    TuningModel tuning;
+    StiffnessView view(tuning);
     const DeviceParams p = params(0.1, 0.5, 0.2, 0.02, 0.0);
-    view.setEditedParams(p);
+    editParams(tuning, p);
     view.setOperatingPoint(0.1, -0.05);
     view.setAngleInDegrees(true);
     const double toDeg = 180.0 / std::numbers::pi;
@@ -335,9 +359,10 @@ void TestStiffnessView::degreesOnlyScaleTheAxis()
 
 void TestStiffnessView::renders()
 {
-    StiffnessView view;
+    TuningModel tuning;
+    StiffnessView view(tuning);
     view.resize(500, 400);
-    view.setEditedParams(DeviceParams{});
+    editParams(tuning, DeviceParams{});
     view.setDeviceTuning({params(0.1, 1.0, 0.15, 0.03, 0.05), std::nullopt});
     view.setOperatingPoint(0.08, -0.03);
     const QPixmap pixmap = view.plot()->toPixmap(500, 400);
@@ -348,9 +373,10 @@ void TestStiffnessView::renders()
 
 void TestStiffnessView::curveIsTheStaticTorque()
 {
-    StiffnessView view;
-    view.setEditedParams(linear(0.5));
-    view.setEditedEffects(knob());
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, linear(0.5));
+    editEffects(tuning, knob());
     const QCPGraph *g = view.torqueGraph();
     // Shown to 1.25 × the farther wall: ±0.75 rad.
     QVERIFY(std::abs(g->keyAxis()->range().upper - 0.75) < 1e-12);
@@ -387,9 +413,10 @@ void TestStiffnessView::fineDetentsAreResolved()
 {
     // s = 0.01 rad (the spec's finest): 601 samples over ±π/2 would be ~2 per period.
     const EffectParams fx{.detent_strength = 0.02, .detent_spacing = 0.01, .detent_range = 1.0};
-    StiffnessView view;
-    view.setEditedParams(linear(0.0));
-    view.setEditedEffects(fx);
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, linear(0.0));
+    editEffects(tuning, fx);
     const auto tau = points(view.torqueGraph());
     double lo = 0;
     double hi = 0;
@@ -407,9 +434,10 @@ void TestStiffnessView::fineDetentsAreResolved()
 
 void TestStiffnessView::restPositionsAndWallsAreMarked()
 {
-    StiffnessView view;
-    view.setEditedParams(linear(0.5, 0.05));
-    view.setEditedEffects(knob());
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, linear(0.5, 0.05));
+    editEffects(tuning, knob());
     const EffectMarks &marks = view.editedMarks();
     // Rest positions θ0 + i·0.2 within ±0.45: i = −2 … 2, on the curve (τ_det = 0 there).
     const auto rest = points(marks.restPositions());
@@ -439,20 +467,21 @@ void TestStiffnessView::restPositionsAndWallsAreMarked()
     EffectParams off = knob();
     off.wall_stiffness = 0;
     off.detent_range = 0;
-    view.setEditedEffects(off);
+    editEffects(tuning, off);
     QVERIFY(marks.wallKeys().isEmpty());
     QVERIFY(!marks.restPositions()->visible());
     // A wall outside the view (at the end of travel, π) is not drawn.
     EffectParams far = knob();
     far.wall_max = std::numbers::pi;
-    view.setEditedEffects(far);
+    editEffects(tuning, far);
     QCOMPARE(marks.wallKeys().size(), 1);
 }
 
 void TestStiffnessView::deviceEffectsAreDrawnWithTheDevice()
 {
-    StiffnessView view;
-    view.setEditedParams(linear(0.5));
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, linear(0.5));
     EffectParams device = knob();
     device.wall_max = 0.3;
     // Effects without device parameters draw nothing.
@@ -483,8 +512,9 @@ void TestStiffnessView::deviceEffectsAreDrawnWithTheDevice()
 
 void TestStiffnessView::comparisonCarriesTheOtherSlotsEffects()
 {
-    StiffnessView view;
-    view.setEditedParams(linear(0.5));
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, linear(0.5));
     view.setComparison(linear(0.3), 0, knob());
     const QCPGraph *other = view.slotTorqueGraph(1);
     QVERIFY(other && other->visible());
@@ -504,12 +534,14 @@ void TestStiffnessView::defaultEffectsChangeNothing()
     const DeviceParams p = params(0.1, 1.5, 0.12, 0.04, 0.0);
     DeviceParams device = p;
     device.K_max = 1.0;
-    StiffnessView plain;
-    plain.setEditedParams(p);
+    TuningModel plainTuning;
+    StiffnessView plain(plainTuning);
+    editParams(plainTuning, p);
     plain.setDeviceTuning({device, std::nullopt});
-    StiffnessView withDefaults;
-    withDefaults.setEditedParams(p);
-    withDefaults.setEditedEffects(EffectParams{});
+    TuningModel defaultsTuning;
+    StiffnessView withDefaults(defaultsTuning);
+    editParams(defaultsTuning, p);
+    editEffects(defaultsTuning, EffectParams{});
     withDefaults.setDeviceTuning({device, EffectParams{}});
     QCOMPARE(points(withDefaults.torqueGraph()), points(plain.torqueGraph()));
     QCOMPARE(points(withDefaults.stiffnessGraph()), points(plain.stiffnessGraph()));
@@ -532,7 +564,8 @@ void TestStiffnessView::deviceCurveReadsOnTheDarkTheme()
 {
     // The device's dashed curve is τ_rec's own colour (which reads 3:1 on both themes,
     // tst_theme), not a darker shade that was faint on the dark one.
-    StiffnessView view;
+    TuningModel tuning;
+    StiffnessView view(tuning);
     view.setDeviceTuning({linear(0.5), std::nullopt});
     QCOMPARE(view.deviceTorqueGraph()->pen().color(), palette::channel(Channel::TauRec));
     QCOMPARE(view.deviceStiffnessGraph()->pen().color(), palette::channel(Channel::TauRec));
@@ -541,11 +574,12 @@ void TestStiffnessView::deviceCurveReadsOnTheDarkTheme()
 
 void TestStiffnessView::namesSayWhatIsDrawn()
 {
-    StiffnessView view;
-    view.setEditedParams(linear(0.5));
+    TuningModel tuning;
+    StiffnessView view(tuning);
+    editParams(tuning, linear(0.5));
     QCOMPARE(title(view.torqueGraph()), u"τ_rec [N·m]"_s);
     QVERIFY(!view.operatingPointGraph()->name().contains(u"τ_fx"_s));
-    view.setEditedEffects(knob());
+    editEffects(tuning, knob());
     QCOMPARE(title(view.torqueGraph()), u"static τ [N·m]"_s);
     QVERIFY(view.operatingPointGraph()->name().contains(u"τ_rec + τ_fx"_s));
     view.setReplaying(true);
@@ -558,7 +592,7 @@ void TestStiffnessView::namesSayWhatIsDrawn()
             inLegend = inLegend || legend->hasItemWithPlottable(view.editedMarks().restPositions());
     }
     QVERIFY(inLegend);
-    view.setEditedEffects(EffectParams{});
+    editEffects(tuning, EffectParams{});
     QCOMPARE(title(view.torqueGraph()), u"τ_rec [N·m]"_s);
     inLegend = false;
     for (QCPLayoutElement *e : view.plot()->plotLayout()->elements(true)) {
