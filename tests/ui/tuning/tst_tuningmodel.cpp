@@ -1,0 +1,159 @@
+// The window's one tuning, headless: the sync state follows the edited tuning, the device's
+// and the pushes' outcomes; comparisons are made as the device holds the values (float32);
+// a push sends each block the device has and does not hold yet; a refusal names its field, a
+// push that failed part-way leaves what it applied in force; signals come once per change.
+#include "tuning/tuningmodel.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace hatpic;
+
+namespace {
+
+//! The tuning as a device holds it after taking it: each value as its float32.
+DeviceParams asDeviceHolds(const DeviceParams &params)
+{
+    return roundedForWire(params);
+}
+
+Outcome done(const DeviceTuning &sent, const DeviceTuning &received)
+{
+    return {request::Push{sent}, outcome::Done{outcome::ReadBack::Matches}, received};
+}
+
+Tuning editedWith(const TuningModel &model, double kMax)
+{
+    Tuning t = model.edited();
+    t.device.K_max = kMax;
+    return t;
+}
+
+} // namespace
+
+class TestTuningModel : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void syncFollowsTheDeviceAndTheEdits()
+    {
+        TuningModel model;
+        QCOMPARE(model.syncState(), SyncState::NotConnected);
+        model.setCanPush(false, QStringLiteral("the legacy protocol cannot carry parameters"));
+        QCOMPARE(model.syncText(), QStringLiteral("the legacy protocol cannot carry parameters"));
+        model.setCanPush(true);
+        QCOMPARE(model.syncState(), SyncState::NotRead);
+
+        // 0.1 has no exact float: the device holds float(0.1), which is "the same".
+        model.setEdited(editedWith(model, 0.1));
+        model.setDevice({asDeviceHolds(model.edited().device), std::nullopt, std::nullopt});
+        QVERIFY(model.device().params->K_max != 0.1);
+        QCOMPARE(model.syncState(), SyncState::InSync);
+        QVERIFY(!model.differsFromDevice());
+
+        model.setEdited(editedWith(model, 0.3));
+        QCOMPARE(model.syncState(), SyncState::Edited);
+        QVERIFY(model.differsFromDevice());
+        const std::optional<Tuning> reverted = model.revertedToDevice();
+        QVERIFY(reverted);
+        QCOMPARE(reverted->device.K_max, 0.1); // tidied back to the decimal the user typed
+
+        // Disconnected: the device and what is known of it are forgotten.
+        model.setDevice({});
+        QCOMPARE(model.syncState(), SyncState::NotRead);
+        QVERIFY(!model.revertedToDevice());
+        QVERIFY(!model.differsFromDevice());
+    }
+
+    void aPushSendsWhatTheDeviceLacks()
+    {
+        TuningModel model;
+        model.setCanPush(true);
+        // A device that has told its blocks: while it has not announced them (their
+        // capabilities), they are neither compared nor sent.
+        model.setDevice({DeviceParams{}, std::nullopt, PassivityParams::off()});
+        QCOMPARE(model.syncState(), SyncState::InSync);
+        model.setEffectsTracked(true);
+        QCOMPARE(model.syncState(), SyncState::NotRead); // its effects not read yet
+        DeviceTuning sent = model.startPush();
+        QVERIFY(sent.params && sent.effects && !sent.passivity);
+        QCOMPARE(model.syncState(), SyncState::Pushing);
+        // The device reads back what it holds: each value as the wire carries it.
+        const DeviceTuning readBack = model.editedOnWire();
+        QVERIFY(model.pushFinished(done(sent, readBack)));
+        QCOMPARE(model.syncState(), SyncState::InSync);
+        QVERIFY(!model.pushFinished(done(sent, readBack))); // a late answer changes nothing
+
+        // Only what differs goes: the effects are the device's already.
+        model.setEdited(editedWith(model, 0.7));
+        sent = model.startPush();
+        QVERIFY(sent.params && !sent.effects);
+        QCOMPARE(sent.params->K_max, 0.7);
+    }
+
+    void aRefusalNamesItsFieldUntilTheNextEdit()
+    {
+        TuningModel model;
+        model.setCanPush(true);
+        model.setDevice({DeviceParams{}, std::nullopt, std::nullopt});
+        model.setEdited(editedWith(model, 0.9));
+        const DeviceTuning sent = model.startPush();
+        outcome::Refused refused;
+        refused.step = CommandKind::SetParams;
+        refused.status = v2::AckStatus::OutOfRange;
+        refused.field = deviceFieldIndex("K_max");
+        QVERIFY(model.pushFinished({request::Push{sent}, refused, {}}));
+        QCOMPARE(model.syncState(), SyncState::Rejected);
+        QCOMPARE(model.rejectedField(), QStringLiteral("K_max"));
+        QVERIFY(!model.syncText().isEmpty());
+        model.setEdited(editedWith(model, 0.5));
+        QCOMPARE(model.rejectedField(), QString());
+        QCOMPARE(model.syncState(), SyncState::Edited);
+    }
+
+    void aPushStoppedPartWayLeavesWhatItApplied()
+    {
+        TuningModel model;
+        model.setCanPush(true);
+        model.setEffectsTracked(true);
+        model.setDevice({DeviceParams{}, EffectParams{}, std::nullopt});
+        Tuning t = editedWith(model, 0.8);
+        t.effects.detent_strength = 0.05;
+        model.setEdited(t);
+        const DeviceTuning sent = model.startPush();
+        QVERIFY(sent.params && sent.effects);
+        outcome::TimedOut timedOut;
+        timedOut.step = CommandKind::SetEffects;
+        timedOut.applied = {sent.params, std::nullopt, std::nullopt};
+        QSignalSpy device(&model, &TuningModel::deviceChanged);
+        QVERIFY(model.pushFinished({request::Push{sent}, timedOut, {}}));
+        QCOMPARE(model.syncState(), SyncState::Timeout);
+        QCOMPARE(device.count(), 1);
+        QCOMPARE(model.device().params->K_max, 0.8);            // in force
+        QCOMPARE(model.device().effects->detent_strength, 0.0); // not
+        QVERIFY(model.differsFromDevice());
+    }
+
+    void signalsComeOncePerChange()
+    {
+        TuningModel model;
+        QSignalSpy edited(&model, &TuningModel::editedChanged);
+        QSignalSpy sync(&model, &TuningModel::syncChanged);
+        model.setEdited(model.edited()); // the same: nothing
+        QCOMPARE(edited.count(), 0);
+        Tuning t = model.edited();
+        t.host.v_max = 2.5;
+        model.setEdited(t);
+        QCOMPARE(edited.count(), 1);
+        const auto change = edited.at(0).at(0).value<TuningChange>();
+        QVERIFY(change.host && !change.device && !change.effects && !change.passivity);
+        QCOMPARE(sync.count(), 0); // still not connected, in the same words
+        model.setCanPush(true);
+        QCOMPARE(sync.count(), 1);
+        QCOMPARE(sync.at(0).at(0).value<SyncState>(), SyncState::NotRead);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestTuningModel)
+#include "tst_tuningmodel.moc"
