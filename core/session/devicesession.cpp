@@ -2,6 +2,7 @@
 
 #include "link/seriallink.h"
 #include "session/legacydriver.h"
+#include "session/sessionwording.h"
 #include "session/v2driver.h"
 
 #include <QLoggingCategory>
@@ -95,9 +96,9 @@ void DeviceSession::shutdown()
     m_samples.stop();
 }
 
-StateDetail DeviceSession::detail(StateDetail::Kind kind) const
+StateDetail DeviceSession::detail(StateDetail::Why why) const
 {
-    return stateDetail(kind, m_options, m_link);
+    return stateDetail(std::move(why), m_options, m_link);
 }
 
 void DeviceSession::openLink()
@@ -110,10 +111,9 @@ void DeviceSession::openLink()
     connect(m_link, &ByteLink::failed, this, &DeviceSession::linkLost);
 
     if (!m_everConnected)
-        setState(SessionState::Opening, detail(StateDetail::Kind::Opening));
+        setState(SessionState::Opening, detail(state::Opening{}));
     if (!m_link->open()) {
-        StateDetail error = detail(StateDetail::Kind::OpenFailed);
-        error.error = m_link->errorString();
+        const StateDetail error = detail(state::OpenFailed{m_link->errorString()});
         closeLink();
         if (m_everConnected) {
             // Still lost: the port has not come back yet.
@@ -184,15 +184,13 @@ void DeviceSession::setState(SessionState state, const StateDetail &detail)
         return;
     m_state = state;
     m_stateDetail = detail;
-    qCInfo(lcSession) << sessionStateName(state) << static_cast<int>(detail.kind) << detail.port
-                      << detail.error;
+    qCInfo(lcSession) << sessionStateName(state) << SessionWording::stateDetail(detail);
     Q_EMIT stateChanged(state, detail);
 }
 
 void DeviceSession::failDetection(const StateDetail &message)
 {
-    qCWarning(lcSession) << "detection failed:" << static_cast<int>(message.kind) << message.port
-                         << message.error;
+    qCWarning(lcSession) << "detection failed:" << SessionWording::stateDetail(message);
     m_queue.failAll(outcome::Cut::Why::DetectionFailed);
     closeLink();
     if (m_everConnected && m_wanted && m_options.autoReconnect) {
@@ -210,9 +208,7 @@ void DeviceSession::failDetection(const StateDetail &message)
 void DeviceSession::onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame> &rest)
 {
     if (const QString problem = helloReplyProblem(reply); !problem.isEmpty()) {
-        StateDetail refused = detail(StateDetail::Kind::Refused);
-        refused.error = problem;
-        failDetection(refused);
+        failDetection(detail(state::Refused{problem}));
         return;
     }
     auto driver = std::make_unique<V2Driver>(driverLinks(), m_queue, reply, m_options,
@@ -234,9 +230,7 @@ void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
     m_info = m_driver->info();
     m_everConnected = true;
     Q_EMIT deviceInfoChanged(m_info);
-    StateDetail connected = detail(m_driver->connectedKind());
-    connected.firmware = m_info.firmware;
-    setState(SessionState::Connected, connected);
+    setState(SessionState::Connected, detail(m_driver->connected()));
     m_driver->start();
     if (!m_link)
         return; // lost while writing the first command
@@ -248,16 +242,14 @@ void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
 
 void DeviceSession::linkLost(const QString &reason)
 {
-    StateDetail lost = detail(StateDetail::Kind::LinkFailed);
-    lost.error = reason;
-    loseLink(lost);
+    loseLink(detail(state::LinkFailed{reason}));
 }
 
 void DeviceSession::loseLink(const StateDetail &lost)
 {
     if (!m_link)
         return;
-    qCWarning(lcSession) << "lost" << lost.port << lost.error;
+    qCWarning(lcSession) << SessionWording::stateDetail(lost);
     m_queue.failAll(outcome::Cut::Why::ConnectionLost);
     closeLink();
     // A recording waits for the device when the session reconnects, else it closes.
@@ -300,9 +292,7 @@ void DeviceSession::onStatsTick()
     const qint64 now = m_clock.nsecsElapsed();
     m_statistics.tick(now);
     if (m_driver && now - m_statistics.lastReceivedNs() > qint64(kSilenceTimeoutMs) * 1'000'000) {
-        StateDetail silent = detail(StateDetail::Kind::Silent);
-        silent.silenceMs = kSilenceTimeoutMs;
-        loseLink(silent);
+        loseLink(detail(state::Silent{kSilenceTimeoutMs}));
     }
     Q_EMIT statsUpdated(stats());
 }

@@ -92,7 +92,7 @@ private:
     void openLink();
     void closeLink();
     void setState(SessionState state, const StateDetail &detail = {});
-    StateDetail detail(StateDetail::Kind kind) const;
+    StateDetail detail(StateDetail::Why why) const;
     void failDetection(const StateDetail &detail);
     void onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame> &rest);
     void onFoundLegacy();

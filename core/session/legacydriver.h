@@ -30,7 +30,7 @@ public:
     void hostParamsChanged(const HostParams &host) override;
     void close() override;
     const legacy::DecoderStats *legacyStats() const override { return &m_decoder.stats(); }
-    StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedLegacy; }
+    StateDetail::Why connected() const override { return state::ConnectedLegacy{}; }
 
 private:
     DriverLinks m_links;

@@ -26,10 +26,10 @@ quint8 safeHelloSeq(quint8 from)
 
 } // namespace
 
-StateDetail stateDetail(StateDetail::Kind kind, const ConnectOptions &options, const ByteLink *link)
+StateDetail stateDetail(StateDetail::Why why, const ConnectOptions &options, const ByteLink *link)
 {
     StateDetail d;
-    d.kind = kind;
+    d.why = std::move(why);
     d.port = options.port;
     d.simulated = options.link && options.link->simulated();
     d.baud = link ? link->baud() : requestedBaud(options);
@@ -53,9 +53,9 @@ ProtocolDetector::ProtocolDetector(CommandQueue &queue, LinkStatistics &statisti
     connect(&m_queue, &CommandQueue::helloUnanswered, this, &ProtocolDetector::onHelloUnanswered);
 }
 
-StateDetail ProtocolDetector::detail(StateDetail::Kind kind) const
+StateDetail ProtocolDetector::detail(StateDetail::Why why) const
 {
-    return stateDetail(kind, m_options, m_link);
+    return stateDetail(std::move(why), m_options, m_link);
 }
 
 bool ProtocolDetector::detectsAtTwoRates() const
@@ -72,11 +72,11 @@ void ProtocolDetector::start(ByteLink *link, const ConnectOptions &options)
     m_helloSeq.reset();
     switch (m_options.protocol) {
     case ProtocolChoice::Legacy:
-        Q_EMIT progress(detail(StateDetail::Kind::UsingLegacy));
+        Q_EMIT progress(detail(state::UsingLegacy{}));
         Q_EMIT foundLegacy();
         return;
     case ProtocolChoice::V2: {
-        Q_EMIT progress(detail(StateDetail::Kind::AskingHello));
+        Q_EMIT progress(detail(state::AskingHello{}));
         m_phase = Phase::Hello;
         m_queue.enqueueHello();
         return;
@@ -84,7 +84,7 @@ void ProtocolDetector::start(ByteLink *link, const ConnectOptions &options)
     case ProtocolChoice::Auto:
         break;
     }
-    Q_EMIT progress(detail(StateDetail::Kind::Listening));
+    Q_EMIT progress(detail(state::Listening{}));
     m_phase = Phase::Listening;
     m_timer.start(kListenMs);
 }
@@ -159,13 +159,10 @@ void ProtocolDetector::onListenTimeout()
     }
     // Step 2: HELLO with a seq whose frame holds no 'i', so a legacy device is never upset.
     if (detectsAtTwoRates() && !m_link->setBaud(kDefaultV2Baud)) {
-        StateDetail d = detail(StateDetail::Kind::BaudSwitchFailed);
-        d.targetBaud = kDefaultV2Baud;
-        d.error = m_link->errorString();
-        fail(d);
+        fail(detail(state::BaudSwitchFailed{kDefaultV2Baud, m_link->errorString()}));
         return;
     }
-    Q_EMIT progress(detail(StateDetail::Kind::SendingHello));
+    Q_EMIT progress(detail(state::SendingHello{}));
     m_phase = Phase::Hello;
     m_helloSeq = safeHelloSeq(m_queue.peekSeq());
     m_queue.setNextSeq(static_cast<quint8>(*m_helloSeq + 1));
@@ -190,23 +187,16 @@ void ProtocolDetector::onHelloTimeout()
         sendHello();
         return;
     }
-    StateDetail d = detail(StateDetail::Kind::NoAnswer);
-    d.listenBaud = detectsAtTwoRates() ? kDefaultLegacyBaud : 0;
-    d.listenMs = kListenMs;
-    d.legacyFrames = m_legacyFrames;
-    d.legacyFramesNeeded = kLegacyFramesNeeded;
-    d.helloWaitMs = kHelloWaitMs;
-    fail(d);
+    fail(detail(state::NoAnswer{detectsAtTwoRates() ? kDefaultLegacyBaud : 0, kListenMs,
+                                m_legacyFrames, kLegacyFramesNeeded, kHelloWaitMs}));
 }
 
 void ProtocolDetector::onHelloUnanswered()
 {
     if (m_phase != Phase::Hello)
         return;
-    StateDetail d = detail(StateDetail::Kind::NoHelloReply);
-    d.attempts = CommandQueue::kCommandRetries + 1;
-    d.intervalMs = CommandQueue::kCommandTimeoutMs;
-    fail(d);
+    fail(detail(
+        state::NoHelloReply{CommandQueue::kCommandRetries + 1, CommandQueue::kCommandTimeoutMs}));
 }
 
 void ProtocolDetector::fail(const StateDetail &detail)

@@ -60,7 +60,7 @@ private:
     void onHelloTimeout();
     void onHelloUnanswered();
     void fail(const StateDetail &detail);
-    StateDetail detail(StateDetail::Kind kind) const;
+    StateDetail detail(StateDetail::Why why) const;
     bool detectsAtTwoRates() const;
 
     CommandQueue &m_queue;
@@ -77,8 +77,7 @@ private:
 };
 
 //! A detail of `kind` naming the port and its rate (the link's, else the one it opens at).
-StateDetail stateDetail(StateDetail::Kind kind, const ConnectOptions &options,
-                        const ByteLink *link);
+StateDetail stateDetail(StateDetail::Why why, const ConnectOptions &options, const ByteLink *link);
 //! The baud rate a link to `options` opens at.
 qint32 requestedBaud(const ConnectOptions &options);
 

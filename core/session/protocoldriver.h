@@ -62,8 +62,8 @@ public:
     //! The live decoder counts, for LinkStats (one of the two is null).
     virtual const v2::DecoderStats *v2Stats() const { return nullptr; }
     virtual const legacy::DecoderStats *legacyStats() const { return nullptr; }
-    //! The `Connected` state's detail kind (ConnectedV2, ConnectedLegacy).
-    virtual StateDetail::Kind connectedKind() const = 0;
+    //! The `Connected` state's detail (state::ConnectedV2 with the firmware, ConnectedLegacy).
+    virtual StateDetail::Why connected() const = 0;
 };
 
 } // namespace hatpic

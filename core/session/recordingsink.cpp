@@ -113,13 +113,11 @@ void RecordingSink::closeForOtherDevice(const QStringList &differences)
 QString RecordingSink::gapText() const
 {
     QString why;
-    switch (m_gap->why.kind) {
-    case StateDetail::Kind::Silent:
-        why = u"no data for " % QString::number(m_gap->why.silenceMs) % u" ms";
-        break;
-    default:
-        why = u"port error: " % m_gap->why.error;
-        break;
+    if (const auto *silent = m_gap->why.as<state::Silent>()) {
+        why = u"no data for " % QString::number(silent->silenceMs) % u" ms";
+    } else {
+        const auto *failed = m_gap->why.as<state::LinkFailed>(); // the other kind of loss
+        why = u"port error: " % (failed ? failed->error : QString());
     }
     return u"gap: link lost after t_s " % compactNumberText(m_gap->lostAfter_s) % u" (" % why %
            u')';

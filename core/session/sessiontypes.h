@@ -17,6 +17,7 @@
 #include <QStringList>
 
 #include <array>
+#include <variant>
 
 namespace hatpic {
 
@@ -41,43 +42,100 @@ struct ConnectOptions
 enum class SessionState { Disconnected, Opening, Detecting, Connected, Lost };
 QString sessionStateName(SessionState state); //!< "disconnected", "opening", …
 
-//! Why the session is in its state (stateChanged's detail), in codes, names and numbers. The
-//! session composes no sentence; ui/ (with tr()) and hatpicctl word it.
+//! Why the session is in its state (stateChanged's detail), in codes, names and numbers: one
+//! type per reason, each with only its own facts. The session composes no sentence; ui/ (with
+//! tr()) and hatpicctl word it (SessionWording::stateDetail).
+namespace state {
+struct None //!< nothing to tell (e.g. disconnected by the user)
+{
+    friend bool operator==(const None &, const None &) = default;
+};
+struct Opening //!< opening the port
+{
+    friend bool operator==(const Opening &, const Opening &) = default;
+};
+struct OpenFailed //!< the port did not open
+{
+    QString error; //!< the system's reason
+    friend bool operator==(const OpenFailed &, const OpenFailed &) = default;
+};
+struct UsingLegacy //!< the legacy protocol was chosen: no detection
+{
+    friend bool operator==(const UsingLegacy &, const UsingLegacy &) = default;
+};
+struct AskingHello //!< v2 was chosen: HELLO sent, waiting for HELLO_REPLY
+{
+    friend bool operator==(const AskingHello &, const AskingHello &) = default;
+};
+struct Listening //!< auto, step 1: listening for legacy frames
+{
+    friend bool operator==(const Listening &, const Listening &) = default;
+};
+struct SendingHello //!< auto, step 2: HELLO sent, waiting for HELLO_REPLY
+{
+    friend bool operator==(const SendingHello &, const SendingHello &) = default;
+};
+struct BaudSwitchFailed //!< auto: the port would not switch to the v2 rate
+{
+    qint32 targetBaud = 0; //!< [bit/s]
+    QString error;         //!< the link's reason
+    friend bool operator==(const BaudSwitchFailed &, const BaudSwitchFailed &) = default;
+};
+struct NoAnswer //!< auto: neither protocol answered
+{
+    qint32 listenBaud = 0;      //!< the rate it listened at, if not the detail's `baud`; else 0
+    int listenMs = 0;           //!< how long it listened for legacy frames [ms]
+    int legacyFrames = 0;       //!< valid legacy frames heard
+    int legacyFramesNeeded = 0; //!< frames that decide "legacy"
+    int helloWaitMs = 0;        //!< how long it waited for HELLO_REPLY [ms]
+    friend bool operator==(const NoAnswer &, const NoAnswer &) = default;
+};
+struct NoHelloReply //!< v2 chosen: HELLO went unanswered
+{
+    int attempts = 0;   //!< HELLOs sent
+    int intervalMs = 0; //!< between them [ms]
+    friend bool operator==(const NoHelloReply &, const NoHelloReply &) = default;
+};
+struct Refused //!< HELLO_REPLY failed the checks
+{
+    QString error; //!< which (deviceinfo.h)
+    friend bool operator==(const Refused &, const Refused &) = default;
+};
+struct ConnectedV2 //!< a v2 device answered
+{
+    QString firmware; //!< as the device reports it (printable)
+    friend bool operator==(const ConnectedV2 &, const ConnectedV2 &) = default;
+};
+struct ConnectedLegacy //!< a legacy device was found (or chosen)
+{
+    friend bool operator==(const ConnectedLegacy &, const ConnectedLegacy &) = default;
+};
+struct LinkFailed //!< lost: the link failed
+{
+    QString error; //!< the link's reason
+    friend bool operator==(const LinkFailed &, const LinkFailed &) = default;
+};
+struct Silent //!< lost: no byte for a while
+{
+    int silenceMs = 0;
+    friend bool operator==(const Silent &, const Silent &) = default;
+};
+} // namespace state
+
 struct StateDetail
 {
-    enum class Kind {
-        None,             //!< nothing to tell (e.g. disconnected by the user)
-        Opening,          //!< opening the port
-        OpenFailed,       //!< the port did not open: `error` is the system's reason
-        UsingLegacy,      //!< the legacy protocol was chosen: no detection
-        AskingHello,      //!< v2 was chosen: HELLO sent, waiting for HELLO_REPLY
-        Listening,        //!< auto, step 1: listening for legacy frames
-        SendingHello,     //!< auto, step 2: HELLO sent, waiting for HELLO_REPLY
-        BaudSwitchFailed, //!< auto: the port would not switch to `targetBaud`; `error`
-        NoAnswer,     //!< auto: neither protocol answered (listen…, legacyFrames…, helloWaitMs)
-        NoHelloReply, //!< v2 chosen: HELLO went unanswered (attempts, intervalMs)
-        Refused,      //!< HELLO_REPLY failed the checks; `error` says which (deviceinfo.h)
-        ConnectedV2,  //!< a v2 device answered; `firmware`
-        ConnectedLegacy, //!< a legacy device was found (or chosen)
-        LinkFailed,      //!< lost: `error` is the link's reason
-        Silent,          //!< lost: no byte for `silenceMs`
-    };
-    Kind kind = Kind::None;
-    QString port;               //!< as given (ConnectOptions::port)
-    bool simulated = false;     //!< the device is a simulator (LinkSource::simulated)
-    qint32 baud = 0;            //!< the link's rate at the time [bit/s]
-    QString error;              //!< the system's, the link's or the check's own text
-    QString firmware;           //!< ConnectedV2: as the device reports it (printable)
-    qint32 targetBaud = 0;      //!< BaudSwitchFailed [bit/s]
-    qint32 listenBaud = 0;      //!< NoAnswer: the rate it listened at, if not `baud`; else 0
-    int listenMs = 0;           //!< NoAnswer: how long it listened [ms]
-    int legacyFrames = 0;       //!< NoAnswer: valid legacy frames heard
-    int legacyFramesNeeded = 0; //!< NoAnswer: frames that decide "legacy"
-    int helloWaitMs = 0;        //!< NoAnswer: how long it waited for HELLO_REPLY [ms]
-    int attempts = 0;           //!< NoHelloReply: HELLOs sent
-    int intervalMs = 0;         //!< NoHelloReply: between them [ms]
-    int silenceMs = 0;          //!< Silent [ms]
+    using Why =
+        std::variant<state::None, state::Opening, state::OpenFailed, state::UsingLegacy,
+                     state::AskingHello, state::Listening, state::SendingHello,
+                     state::BaudSwitchFailed, state::NoAnswer, state::NoHelloReply, state::Refused,
+                     state::ConnectedV2, state::ConnectedLegacy, state::LinkFailed, state::Silent>;
+    Why why;
+    QString port;           //!< as given (ConnectOptions::port)
+    bool simulated = false; //!< the device is a simulator (LinkSource::simulated)
+    qint32 baud = 0;        //!< the link's rate at the time [bit/s]
 
+    template<typename Reason> bool is() const { return std::holds_alternative<Reason>(why); }
+    template<typename Reason> const Reason *as() const { return std::get_if<Reason>(&why); }
     friend bool operator==(const StateDetail &, const StateDetail &) = default;
 };
 

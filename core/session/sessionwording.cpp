@@ -27,56 +27,61 @@ QString SessionWording::port(const StateDetail &detail)
 
 QString SessionWording::stateDetail(const StateDetail &d)
 {
-    using Kind = StateDetail::Kind;
-    switch (d.kind) {
-    case Kind::None:
-        return {};
-    case Kind::Opening:
-        return tr("Opening %1").arg(port(d));
-    case Kind::OpenFailed:
-        return tr("Cannot open %1: %2").arg(port(d), d.error);
-    case Kind::UsingLegacy:
-        return tr("Using the legacy protocol on %1").arg(port(d));
-    case Kind::AskingHello:
-        return tr("Asking for HELLO on %1").arg(port(d));
-    case Kind::Listening:
-        return tr("Listening for a legacy device on %1").arg(port(d));
-    case Kind::SendingHello:
-        return tr("Sending HELLO on %1").arg(port(d));
-    case Kind::BaudSwitchFailed:
-        return tr("Cannot switch %1 to %2 baud: %3").arg(d.port, number(d.targetBaud), d.error);
-    case Kind::NoAnswer: {
-        const QString heard =
-            tr("got %1 valid, %2 needed").arg(number(d.legacyFrames), number(d.legacyFramesNeeded));
-        if (d.listenBaud > 0) {
-            return tr("No HATPIC answered on %1: listened %2 ms at %3 baud for legacy frames (%4), "
-                      "then sent HELLO and got no HELLO_REPLY within %5 ms.")
-                .arg(port(d), number(d.listenMs), number(d.listenBaud), heard,
-                     number(d.helloWaitMs));
-        }
-        return tr("No HATPIC answered on %1: listened %2 ms for legacy frames (%3), then sent "
-                  "HELLO and got no HELLO_REPLY within %4 ms.")
-            .arg(port(d), number(d.listenMs), heard, number(d.helloWaitMs));
-    }
-    case Kind::NoHelloReply:
-        return tr("No HATPIC v2 device answered on %1: HELLO sent %2 times, %3 ms apart, without "
-                  "a HELLO_REPLY.")
-            .arg(port(d), number(d.attempts), number(d.intervalMs));
-    case Kind::Refused:
-        return tr("Refused the device on %1: %2. It does not behave as a HATPIC joystick; nothing "
-                  "was sent to it.")
-            .arg(port(d), d.error);
-    case Kind::ConnectedV2:
-        return tr("HATPIC v2 \"%1\" on %2").arg(d.firmware, port(d));
-    case Kind::ConnectedLegacy:
-        return tr("Legacy HATPIC on %1").arg(port(d));
-    case Kind::LinkFailed:
-        return tr("Lost %1: %2").arg(port(d), d.error);
-    case Kind::Silent:
-        return tr("Lost %1: no data from the device for %2 s")
-            .arg(port(d), QString::number(d.silenceMs / 1000.0));
-    }
-    return {};
+    const QString where = port(d);
+    return std::visit(
+        Overloaded{
+            [](const state::None &) { return QString(); },
+            [&](const state::Opening &) { return tr("Opening %1").arg(where); },
+            [&](const state::OpenFailed &w) {
+                return tr("Cannot open %1: %2").arg(where, w.error);
+            },
+            [&](const state::UsingLegacy &) {
+                return tr("Using the legacy protocol on %1").arg(where);
+            },
+            [&](const state::AskingHello &) { return tr("Asking for HELLO on %1").arg(where); },
+            [&](const state::Listening &) {
+                return tr("Listening for a legacy device on %1").arg(where);
+            },
+            [&](const state::SendingHello &) { return tr("Sending HELLO on %1").arg(where); },
+            [&](const state::BaudSwitchFailed &w) {
+                return tr("Cannot switch %1 to %2 baud: %3")
+                    .arg(d.port, number(w.targetBaud), w.error);
+            },
+            [&](const state::NoAnswer &w) {
+                const QString heard =
+                    tr("got %1 valid, %2 needed")
+                        .arg(number(w.legacyFrames), number(w.legacyFramesNeeded));
+                if (w.listenBaud > 0) {
+                    return tr("No HATPIC answered on %1: listened %2 ms at %3 baud for legacy "
+                              "frames (%4), then sent HELLO and got no HELLO_REPLY within %5 ms.")
+                        .arg(where, number(w.listenMs), number(w.listenBaud), heard,
+                             number(w.helloWaitMs));
+                }
+                return tr("No HATPIC answered on %1: listened %2 ms for legacy frames (%3), then "
+                          "sent HELLO and got no HELLO_REPLY within %4 ms.")
+                    .arg(where, number(w.listenMs), heard, number(w.helloWaitMs));
+            },
+            [&](const state::NoHelloReply &w) {
+                return tr("No HATPIC v2 device answered on %1: HELLO sent %2 times, %3 ms apart, "
+                          "without a HELLO_REPLY.")
+                    .arg(where, number(w.attempts), number(w.intervalMs));
+            },
+            [&](const state::Refused &w) {
+                return tr("Refused the device on %1: %2. It does not behave as a HATPIC "
+                          "joystick; nothing was sent to it.")
+                    .arg(where, w.error);
+            },
+            [&](const state::ConnectedV2 &w) {
+                return tr("HATPIC v2 \"%1\" on %2").arg(w.firmware, where);
+            },
+            [&](const state::ConnectedLegacy &) { return tr("Legacy HATPIC on %1").arg(where); },
+            [&](const state::LinkFailed &w) { return tr("Lost %1: %2").arg(where, w.error); },
+            [&](const state::Silent &w) {
+                return tr("Lost %1: no data from the device for %2 s")
+                    .arg(where, QString::number(w.silenceMs / 1000.0));
+            },
+        },
+        d.why);
 }
 
 QString SessionWording::notice(const SessionNotice &notice)

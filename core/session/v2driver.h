@@ -52,7 +52,7 @@ public:
     void hostParamsChanged(const HostParams &) override {}
     void close() override;
     const v2::DecoderStats *v2Stats() const override { return &m_decoder.stats(); }
-    StateDetail::Kind connectedKind() const override { return StateDetail::Kind::ConnectedV2; }
+    StateDetail::Why connected() const override { return state::ConnectedV2{m_info.firmware}; }
 
 private:
     //! An acknowledged change, applied with the next sample (or the read-back).

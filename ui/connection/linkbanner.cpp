@@ -64,17 +64,13 @@ namespace {
 
 QString lostSentence(const StateDetail &d, const QString &where)
 {
-    using Kind = StateDetail::Kind;
-    switch (d.kind) {
-    case Kind::Silent:
+    if (d.is<state::Silent>())
         return LinkBanner::tr("The device on %1 stopped sending data.").arg(where);
-    case Kind::LinkFailed:
+    if (d.is<state::LinkFailed>())
         return LinkBanner::tr("The connection to %1 was cut: the cable may have come loose, or "
                               "the device was reset or switched off.")
             .arg(where);
-    default:
-        return LinkBanner::tr("The connection to %1 was lost.").arg(where);
-    }
+    return LinkBanner::tr("The connection to %1 was lost.").arg(where);
 }
 
 } // namespace
@@ -92,9 +88,9 @@ void LinkBanner::setState(SessionState state, const StateDetail &detail, const Q
              details, "#c62828");
         break;
     case SessionState::Disconnected:
-        if (detail.kind == StateDetail::Kind::None)
+        if (detail.is<state::None>())
             show(startHint(port), QString(), "#1565c0"); // how to start, not an alarm
-        else if (detail.kind == StateDetail::Kind::OpenFailed)
+        else if (detail.is<state::OpenFailed>())
             show(tr("Could not open %1: it may be missing, in use by another program, or not "
                     "open to your user.")
                      .arg(where),

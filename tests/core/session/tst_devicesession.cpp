@@ -714,8 +714,10 @@ void TestDeviceSession::severedLinkReconnects()
     test::simLinkOf(h.session)->sever(QStringLiteral("unplugged by the test"));
     QCOMPARE(h.session.state(), SessionState::Lost);
     const double tLost = h.lastT(); // the loss flushed the samples still waiting in the batch
-    QCOMPARE(h.detailOf(SessionState::Lost).kind, StateDetail::Kind::LinkFailed);
-    QVERIFY(h.detailOf(SessionState::Lost).error.contains(u"unplugged by the test"));
+    const StateDetail lost = h.detailOf(SessionState::Lost);
+    const auto *failed = lost.as<state::LinkFailed>();
+    QVERIFY(failed);
+    QVERIFY(failed->error.contains(u"unplugged by the test"));
     // The recording waits for the device (tst_recordinggap); everything received before the
     // loss reaches the disk with the next flush and is readable.
     QVERIFY(h.recording.last().active);
@@ -750,8 +752,8 @@ void TestDeviceSession::silentLinkIsLostAndReconnects()
     test::simLinkOf(h.session)->setSilenced(true); // the port stays, the device says nothing
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Lost,
                               DeviceSession::kSilenceTimeoutMs + 2000);
-    QCOMPARE(h.detailOf(SessionState::Lost).kind, StateDetail::Kind::Silent);
-    QCOMPARE(h.detailOf(SessionState::Lost).silenceMs, DeviceSession::kSilenceTimeoutMs);
+    QVERIFY(h.detailOf(SessionState::Lost).why ==
+            StateDetail::Why(state::Silent{DeviceSession::kSilenceTimeoutMs}));
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
 }
 
@@ -767,14 +769,15 @@ void TestDeviceSession::detectionFailsOnSilentPty()
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Disconnected, kConnectTimeoutMs);
     QVERIFY(h.sawState(SessionState::Detecting));
     const StateDetail error = h.detailOf(SessionState::Disconnected);
-    QCOMPARE(error.kind, StateDetail::Kind::NoAnswer);
     QCOMPARE(error.port, peer.path());
     QCOMPARE(error.baud, 115200);
-    QCOMPARE(error.listenBaud, 0); // the baud was given: no second rate
-    QCOMPARE(error.legacyFrames, 0);
-    QCOMPARE(error.legacyFramesNeeded, ProtocolDetector::kLegacyFramesNeeded);
-    QCOMPARE(error.listenMs, ProtocolDetector::kListenMs);
-    QCOMPARE(error.helloWaitMs, ProtocolDetector::kHelloWaitMs);
+    const auto *noAnswer = error.as<state::NoAnswer>();
+    QVERIFY(noAnswer);
+    QCOMPARE(noAnswer->listenBaud, 0); // the baud was given: no second rate
+    QCOMPARE(noAnswer->legacyFrames, 0);
+    QCOMPARE(noAnswer->legacyFramesNeeded, ProtocolDetector::kLegacyFramesNeeded);
+    QCOMPARE(noAnswer->listenMs, ProtocolDetector::kListenMs);
+    QCOMPARE(noAnswer->helloWaitMs, ProtocolDetector::kHelloWaitMs);
 }
 
 void TestDeviceSession::helloOnPtyHasNoLetterI()
@@ -819,13 +822,13 @@ void TestDeviceSession::autoDetectionListensAtLegacyRateThenAsksAtV2Rate()
     h.session.connectDevice(o);
     QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Disconnected, kConnectTimeoutMs);
     QCOMPARE(seen.size(), 2);
-    QCOMPARE(seen[0].first.kind, StateDetail::Kind::Listening);
+    QVERIFY(seen[0].first.is<state::Listening>());
     QCOMPARE(seen[0].second, speed_t(B115200));
-    QCOMPARE(seen[1].first.kind, StateDetail::Kind::SendingHello);
+    QVERIFY(seen[1].first.is<state::SendingHello>());
     QCOMPARE(seen[1].second, speed_t(B921600));
     const StateDetail failure = h.detailOf(SessionState::Disconnected);
-    QCOMPARE(failure.kind, StateDetail::Kind::NoAnswer);
-    QCOMPARE(failure.listenBaud, 115200);
+    QVERIFY(failure.is<state::NoAnswer>());
+    QCOMPARE(failure.as<state::NoAnswer>()->listenBaud, 115200);
     QCOMPARE(failure.baud, 921600);
 }
 
@@ -868,9 +871,9 @@ void TestDeviceSession::openFailureNamesThePort()
     h.session.connectDevice(o);
     QCOMPARE(h.session.state(), SessionState::Disconnected);
     const StateDetail error = h.detailOf(SessionState::Disconnected);
-    QCOMPARE(error.kind, StateDetail::Kind::OpenFailed);
     QCOMPARE(error.port, o.port);
-    QVERIFY(!error.error.isEmpty());
+    QVERIFY(error.is<state::OpenFailed>());
+    QVERIFY(!error.as<state::OpenFailed>()->error.isEmpty());
     QVERIFY(h.sawState(SessionState::Opening));
 }
 
@@ -885,7 +888,7 @@ void TestDeviceSession::theLinkIsTheCallers()
         h.session.connectDevice(o);
         QCOMPARE(h.session.state(), SessionState::Disconnected);
         const StateDetail error = h.detailOf(SessionState::Disconnected);
-        QCOMPARE(error.kind, StateDetail::Kind::OpenFailed);
+        QVERIFY(error.is<state::OpenFailed>());
         QVERIFY(!error.simulated);
     }
     // A link of the caller's own that says it is hardware: a simulator's bytes, not its name.

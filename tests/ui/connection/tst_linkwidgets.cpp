@@ -91,33 +91,25 @@ void TestLinkWidgets::banner_data()
     QTest::addColumn<StateDetail>("detail");
     QTest::addColumn<QString>("contains"); // empty: hidden
     QTest::addColumn<QString>("details");  // the system's text, kept out of the sentence
-    StateDetail cut;
-    cut.kind = StateDetail::Kind::LinkFailed;
-    cut.port = QStringLiteral("/dev/ttyUSB0");
-    cut.baud = 921600;
-    cut.error = QStringLiteral("Inappropriate ioctl for device");
+    const QString ioctl = QStringLiteral("Inappropriate ioctl for device");
+    StateDetail cut{state::LinkFailed{ioctl}, QStringLiteral("/dev/ttyUSB0"), false, 921600};
     QTest::newRow("lost: link failed")
-        << SessionState::Lost << cut << QStringLiteral("was cut") << cut.error;
-    StateDetail silent;
-    silent.kind = StateDetail::Kind::Silent;
-    silent.port = cut.port;
-    silent.silenceMs = 2000;
+        << SessionState::Lost << cut << QStringLiteral("was cut") << ioctl;
+    StateDetail silent{state::Silent{2000}, cut.port, false, 921600};
     QTest::newRow("lost: silent") << SessionState::Lost << silent
                                   << QStringLiteral("stopped sending data")
                                   << QStringLiteral("2 s");
-    StateDetail open;
-    open.kind = StateDetail::Kind::OpenFailed;
-    open.port = cut.port;
-    open.error = QStringLiteral("Permission denied");
+    const QString denied = QStringLiteral("Permission denied");
+    StateDetail open{state::OpenFailed{denied}, cut.port, false, 921600};
     QTest::newRow("failed to open") << SessionState::Disconnected << open
-                                    << QStringLiteral("Could not open /dev/ttyUSB0") << open.error;
+                                    << QStringLiteral("Could not open /dev/ttyUSB0") << denied;
     StateDetail none;
     // Disconnected by the user (or never connected): how to start (issue 27).
     QTest::newRow("user disconnected")
         << SessionState::Disconnected << none
         << QStringLiteral("Press Connect (Ctrl+K) to open /dev/ttyUSB0") << QString();
     StateDetail connected;
-    connected.kind = StateDetail::Kind::ConnectedV2;
+    connected.why = state::ConnectedV2{};
     QTest::newRow("connected") << SessionState::Connected << connected << QString() << QString();
 }
 
@@ -138,7 +130,7 @@ void TestLinkWidgets::banner()
     auto *banner = new LinkBanner(&parent);
     parent.show();
     StateDetail before;
-    before.kind = StateDetail::Kind::Silent;
+    before.why = state::Silent{};
     banner->setState(SessionState::Lost, before, QStringLiteral("/dev/x"));
     banner->setState(state, detail, QStringLiteral("/dev/ttyUSB0"));
     QCOMPARE(banner->isVisible(), !contains.isEmpty());
@@ -148,7 +140,12 @@ void TestLinkWidgets::banner()
     }
     if (!details.isEmpty()) {
         // The user's words in the sentence; the system's text only in the details.
-        QVERIFY2(!banner->text().contains(detail.error) || detail.error.isEmpty(),
+        QString systemText;
+        if (const auto *failed = detail.as<state::LinkFailed>())
+            systemText = failed->error;
+        else if (const auto *notOpened = detail.as<state::OpenFailed>())
+            systemText = notOpened->error;
+        QVERIFY2(systemText.isEmpty() || !banner->text().contains(systemText),
                  qPrintable(banner->text()));
         QVERIFY2(banner->detailsText().contains(details), qPrintable(banner->detailsText()));
         auto *button = banner->findChild<QToolButton *>(QStringLiteral("linkBannerDetailsButton"));
