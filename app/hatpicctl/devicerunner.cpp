@@ -175,8 +175,7 @@ int DeviceRunner::runCommand(const Request &request, Outcome *outcome)
     std::optional<Outcome> finished;
     m_client.request(request, {&waiter, [&](const Outcome &o) {
                                    finished = o;
-                                   if (m_wake)
-                                       m_wake();
+                                   wake();
                                }});
     switch (wait([&] { return finished.has_value(); }, m_options.timeoutS)) {
     case Wait::Done:
