@@ -1,6 +1,7 @@
 #include "devicesession.h"
 
 #include "link/seriallink.h"
+#include "model/overloaded.h"
 #include "session/legacydriver.h"
 #include "session/sessionwording.h"
 #include "session/v2driver.h"
@@ -41,11 +42,7 @@ DeviceSession::DeviceSession(QObject *parent)
     connect(&m_deviceText, &DeviceTextGate::line, this, &DeviceSession::deviceLog);
     connect(&m_queue, &CommandQueue::finished, this, &DeviceSession::onCommandFinished);
     connect(&m_queue, &CommandQueue::retried, this, [this] { m_statistics.countRetry(); });
-    connect(&m_queue, &CommandQueue::acknowledged, this, [this](const Command &command) {
-        if (const auto *stream =
-                command.request ? std::get_if<request::Stream>(&*command.request) : nullptr)
-            m_options.streamRateHz = stream->rateHz; // a reconnect asks for the same rate
-    });
+    connect(&m_queue, &CommandQueue::acknowledged, this, &DeviceSession::onAcknowledged);
 
     connect(&m_samples, &SamplePipeline::notice, this, &DeviceSession::notice);
 }
@@ -138,10 +135,14 @@ void DeviceSession::closeLink()
     m_feedback.stop();
     m_ping.stop();
     if (m_driver) {
-        m_driver->close();
-        // Kept until the next close: this may run inside the driver's own feed().
+        if (const v2::DecoderStats *decoded = m_driver->v2Stats())
+            m_statistics.absorb(*decoded);
+        if (const legacy::DecoderStats *decoded = m_driver->legacyStats())
+            m_statistics.absorb(*decoded);
+        // Kept until the next close: this may run inside one of the driver's own writes.
         m_retired = std::move(m_driver);
     }
+    m_pendingChange.reset();
     if (m_link) {
         m_link->disconnect(this);
         m_link->close();
@@ -162,14 +163,81 @@ bool DeviceSession::sendPing(quint32 token)
     return m_driver && m_link && m_driver->sendPing(token);
 }
 
-DriverLinks DeviceSession::driverLinks()
+DriverWrite DeviceSession::writer()
 {
-    return {m_samples,
-            m_statistics,
-            m_ping,
-            m_clock,
-            [this](const QByteArray &bytes) { write(bytes); },
-            [this](const QString &line) { m_deviceText.feed(line); }};
+    return [this](const QByteArray &bytes) { write(bytes); };
+}
+
+void DeviceSession::dispatch(const std::vector<Received> &events)
+{
+    const ProtocolDriver *driver = m_driver.get();
+    for (const Received &event : events) {
+        if (!driver || m_driver.get() != driver)
+            return; // a handler closed the link: the rest is not this connection's
+        std::visit(Overloaded{
+                       [this](const received::Telemetry &t) {
+                           if (!m_statistics.countTelemetry(t.seq, t.telemetry.t_us))
+                               return; // a repeat
+                           if (!t.finite) {
+                               m_statistics.countNonFinite();
+                               return;
+                           }
+                           applyPendingChange();
+                           m_samples.push(m_samples.builder().fromTelemetry(
+                               t.telemetry, m_clock.nsecsElapsed() / 1000));
+                       },
+                       [this](const received::LegacyFrame &f) {
+                           m_statistics.countFrame();
+                           m_samples.push(m_samples.builder().fromLegacy(
+                               f.frame, *f.conversion, f.tauExt, m_clock.nsecsElapsed() / 1000));
+                       },
+                       [this](const v2::Ack &ack) { m_queue.onAck(ack); },
+                       [this](const DeviceTuning &told) {
+                           applyPendingChange(); // streaming off: no telemetry carried the change
+                           m_samples.tuningReceived(told);
+                           m_queue.onTuning(told);
+                       },
+                       [this](const received::Pong &pong) { m_ping.onPong(pong.token); },
+                       [this](const received::Text &text) { m_deviceText.feed(text.line); },
+                   },
+                   event);
+    }
+}
+
+void DeviceSession::onAcknowledged(const Command &command)
+{
+    const DeviceTuning *sent = command.pushed();
+    switch (command.stepKind()) {
+    case CommandKind::SetParams:
+        m_pendingChange = {CommandKind::SetParams, {sent->params, {}, {}}};
+        return;
+    case CommandKind::SetEffects:
+        m_pendingChange = {CommandKind::SetEffects, {{}, sent->effects, {}}};
+        return;
+    case CommandKind::SetPassivity:
+        m_pendingChange = {CommandKind::SetPassivity, {{}, {}, sent->passivity}};
+        return;
+    case CommandKind::Zero:
+        m_pendingChange = {CommandKind::Zero, {}};
+        return;
+    case CommandKind::SetStream:
+        m_statistics.restartSeq(); // a new stream: no gap to count against the old
+        if (const auto *stream =
+                command.request ? std::get_if<request::Stream>(&*command.request) : nullptr)
+            m_options.streamRateHz = stream->rateHz; // a reconnect asks for the same rate
+        return;
+    default:
+        return;
+    }
+}
+
+void DeviceSession::applyPendingChange()
+{
+    if (!m_pendingChange)
+        return;
+    const auto [kind, applied] = *m_pendingChange;
+    m_pendingChange.reset();
+    m_samples.tuningApplied(kind, applied);
 }
 
 void DeviceSession::write(const QByteArray &bytes)
@@ -211,17 +279,20 @@ void DeviceSession::onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame
         failDetection(detail(state::Refused{problem}));
         return;
     }
-    auto driver = std::make_unique<V2Driver>(driverLinks(), m_queue, reply, m_options,
-                                             m_link->baud(), m_detector.takeDecoder());
+    auto driver = std::make_unique<V2Driver>(reply, m_options, m_link->baud(),
+                                             m_detector.takeDecoder(), m_queue, writer());
     V2Driver *v2 = driver.get();
     becomeConnected(std::move(driver));
-    if (m_driver.get() == v2)
-        v2->handleFrames(rest); // what came after the reply in the same read
+    if (m_driver.get() == v2) { // what came after the reply in the same read
+        std::vector<Received> events;
+        v2->decode(rest, events);
+        dispatch(events);
+    }
 }
 
 void DeviceSession::onFoundLegacy()
 {
-    becomeConnected(std::make_unique<LegacyDriver>(driverLinks(), m_options, m_link->baud()));
+    becomeConnected(std::make_unique<LegacyDriver>(m_options, m_link->baud(), writer()));
 }
 
 void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
@@ -231,7 +302,10 @@ void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)
     m_everConnected = true;
     Q_EMIT deviceInfoChanged(m_info);
     setState(SessionState::Connected, detail(m_driver->connected()));
-    m_driver->start();
+    m_samples.builder().setTauLimit(m_driver->sampleTauLimit(m_samples.builder().hostParams()));
+    m_statistics.restartSeq();
+    for (const Request &request : m_driver->startRequests())
+        m_queue.enqueue(Command{request, wireSteps(request, m_info), {}});
     if (!m_link)
         return; // lost while writing the first command
     m_samples.connectionStarted(m_info);
@@ -272,8 +346,11 @@ void DeviceSession::onBytes(const QByteArray &bytes)
     m_statistics.countBytes(bytes.size(), m_clock.nsecsElapsed());
     if (m_detector.active())
         m_detector.feed(bytes);
-    else if (m_driver)
-        m_driver->feed(bytes);
+    else if (m_driver) {
+        std::vector<Received> events;
+        m_driver->feed(bytes, events);
+        dispatch(events);
+    }
 }
 
 LinkStats DeviceSession::stats() const
@@ -393,7 +470,7 @@ void DeviceSession::setHostParams(const HostParams &host)
         return;
     }
     if (m_samples.setHostParams(host) && m_driver)
-        m_driver->hostParamsChanged(host);
+        m_samples.builder().setTauLimit(m_driver->sampleTauLimit(host));
 }
 
 void DeviceSession::resetReference()

@@ -111,8 +111,16 @@ private:
                                            const std::vector<CommandKind> &steps) const;
     void onCommandFinished(const Command &command, const Outcome &outcome);
 
-    //! What a new driver holds of this session.
-    DriverLinks driverLinks();
+    //! Acts on what the driver decoded, in the frames' order: counts, samples, the command
+    //! queue's answers, PONGs, the device's text. Stops when a handler closed the link.
+    void dispatch(const std::vector<Received> &events);
+    //! A command step the device acknowledged: a change it applied (held until the next sample
+    //! or read-back, which it belongs to), a new stream.
+    void onAcknowledged(const Command &command);
+    //! Hands the acknowledged change to the samples, before the sample or read-back at hand.
+    void applyPendingChange();
+    //! Where the drivers' frames go out.
+    DriverWrite writer();
     void write(const QByteArray &bytes);
 
     ConnectOptions m_options;
@@ -133,6 +141,9 @@ private:
     ProtocolDetector m_detector;
     std::unique_ptr<ProtocolDriver> m_driver;  //!< while connected
     std::unique_ptr<ProtocolDriver> m_retired; //!< the last one, closed (it may be on the stack)
+    //! An acknowledged change (SET_PARAMS, SET_EFFECTS, SET_PASSIVITY with the part it sent;
+    //! ZERO), applied with the next sample or read-back.
+    std::optional<std::pair<CommandKind, DeviceTuning>> m_pendingChange;
     FeedbackStream m_feedback;
     PingProbe m_ping;
     DeviceTextGate m_deviceText; //!< the device's lines: printable, bounded in rate

@@ -1,12 +1,9 @@
 #include "legacydriver.h"
 
-#include "session/linkstatistics.h"
-#include "session/samplepipeline.h"
-
 namespace hatpic {
 
-LegacyDriver::LegacyDriver(DriverLinks links, const ConnectOptions &options, qint32 baud)
-    : m_links(std::move(links)), m_conversion(options.legacy),
+LegacyDriver::LegacyDriver(const ConnectOptions &options, qint32 baud, DriverWrite write)
+    : m_write(std::move(write)), m_conversion(options.legacy),
       m_feedbackOn(options.feedbackRateHz > 0), m_field(options.legacy.feedbackToField(0))
 {
     m_info.protocol = WireProtocol::Legacy;
@@ -20,38 +17,25 @@ LegacyDriver::LegacyDriver(DriverLinks links, const ConnectOptions &options, qin
     m_info.simulated = options.link && options.link->simulated();
 }
 
-void LegacyDriver::start()
-{
-    // The published firmware renders its own fixed spring; the host estimates τ_rec from its
-    // copy of the parameters, which stays at the defaults (θ0 = 0).
-    SampleBuilder &builder = m_links.samples.builder();
-    builder.setTauLimit(builder.hostParams().tau_limit);
-}
-
-void LegacyDriver::feed(const QByteArray &bytes)
+void LegacyDriver::feed(const QByteArray &bytes, std::vector<Received> &out)
 {
     QList<legacy::Frame> frames;
     QStringList lines;
     m_decoder.feed(bytes, frames, &lines);
-    for (const QString &line : std::as_const(lines)) {
+    for (QString &line : lines) {
         if (!line.isEmpty())
-            m_links.deviceText(line);
+            out.push_back(received::Text{std::move(line)});
     }
-    for (const legacy::Frame &frame : std::as_const(frames)) {
-        if (m_closed)
-            break;
-        m_links.statistics.countFrame();
-        const double tauExt = m_feedbackOn ? m_conversion.fieldToFeedback(m_field) : 0.0;
-        m_links.samples.push(m_links.samples.builder().fromLegacy(
-            frame, m_conversion, tauExt, m_links.clock.nsecsElapsed() / 1000));
-    }
+    const double tauExt = m_feedbackOn ? m_conversion.fieldToFeedback(m_field) : 0.0;
+    for (const legacy::Frame &frame : std::as_const(frames))
+        out.push_back(received::LegacyFrame{frame, &m_conversion, tauExt});
 }
 
 void LegacyDriver::sendFeedback(double tauExt)
 {
     // One whole frame per write: the published firmware busy-waits from 'i' to 'o'.
     m_field = m_conversion.feedbackToField(tauExt);
-    m_links.write(legacy::encodeFrame(legacy::Frame{m_field, 0, 0, 0}));
+    m_write(legacy::encodeFrame(legacy::Frame{m_field, 0, 0, 0}));
 }
 
 std::optional<outcome::Unsupported::Why> LegacyDriver::refusal(CommandKind step) const
@@ -63,20 +47,6 @@ std::optional<outcome::Unsupported::Why> LegacyDriver::refusal(CommandKind step)
     if (isPassivityCommand(step))
         return Why::NoPassivityCapability;
     return step == CommandKind::SetStream ? Why::FixedRate : Why::NoParameters;
-}
-
-void LegacyDriver::hostParamsChanged(const HostParams &host)
-{
-    m_links.samples.builder().setTauLimit(host.tau_limit);
-}
-
-void LegacyDriver::close()
-{
-    if (m_closed)
-        return;
-    m_closed = true;
-    m_links.statistics.absorb(m_decoder.stats());
-    m_decoder.resetStats();
 }
 
 } // namespace hatpic

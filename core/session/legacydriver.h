@@ -14,11 +14,11 @@ class LegacyDriver : public ProtocolDriver
 {
 public:
     //! @param feedbackOn whether feedback is streamed at all (else τ_ext is 0 in samples)
-    LegacyDriver(DriverLinks links, const ConnectOptions &options, qint32 baud);
+    LegacyDriver(const ConnectOptions &options, qint32 baud, DriverWrite write);
 
     DeviceInfo info() const override { return m_info; }
-    void start() override;
-    void feed(const QByteArray &bytes) override;
+    std::vector<Request> startRequests() const override { return {}; } // it takes none
+    void feed(const QByteArray &bytes, std::vector<Received> &out) override;
     //! The published firmware busy-waits for a whole frame: the host keeps to the rate it
     //! has always used with it [Hz].
     static constexpr double kMaxFeedbackHz = 100;
@@ -27,19 +27,19 @@ public:
     double maxFeedbackHz() const override { return kMaxFeedbackHz; }
     bool sendPing(quint32) override { return false; }
     std::optional<outcome::Unsupported::Why> refusal(CommandKind step) const override;
-    void hostParamsChanged(const HostParams &host) override;
-    void close() override;
+    //! The published firmware renders its own fixed spring and does not say its limit: the
+    //! host's copy of the parameters (the defaults) and its tau_limit estimate τ_rec.
+    double sampleTauLimit(const HostParams &host) const override { return host.tau_limit; }
     const legacy::DecoderStats *legacyStats() const override { return &m_decoder.stats(); }
     StateDetail::Why connected() const override { return state::ConnectedLegacy{}; }
 
 private:
-    DriverLinks m_links;
+    DriverWrite m_write;
     legacy::Conversion m_conversion;
     bool m_feedbackOn;
     DeviceInfo m_info;
     legacy::Decoder m_decoder;
     int m_field; //!< last feedback field A sent
-    bool m_closed = false;
 };
 
 } // namespace hatpic

@@ -1,39 +1,65 @@
-// One connected device's protocol: how received bytes become samples, parameters and log
-// lines, what feedback and PING look like on the wire, and which commands it takes (v2's are
-// encoded and resent by the CommandQueue, which the v2 driver feeds the answers). V2Driver and
-// LegacyDriver are the two; the session holds one of them while connected. The protocols'
-// differences live behind this interface except two the session passes on as they are: the
-// decoder counts (v2Stats() or legacyStats(), for LinkStats) and the Connected state's kind.
+// One connected device's protocol, as a decoder: received bytes become events the session acts
+// on (a telemetry frame, an ACK, the device's tuning, a PONG, a line of text), in the order the
+// frames came; feedback and PING go out in the protocol's own frames. V2Driver and LegacyDriver
+// are the two; the session holds one of them while connected. A driver holds nothing of the
+// session: it does not count, build samples or answer the command queue — the session does, with
+// what the driver returns (DeviceSession::dispatch). The protocols' differences live behind this
+// interface except the decoder counts (v2Stats() or legacyStats(), for LinkStats).
 #pragma once
 
 #include "model/params.h"
 #include "protocol/deviceinfo.h"
+#include "protocol/legacy.h"
+#include "protocol/messages.h"
 #include "session/sessiontypes.h"
-#include "telemetry/sample.h"
 
 #include <QByteArray>
-#include <QElapsedTimer>
 #include <QString>
 
 #include <functional>
+#include <variant>
+#include <vector>
 
 namespace hatpic {
 
-class LinkStatistics;
-class PingProbe;
-class SamplePipeline;
-
-//! What a driver works with, the session's parts it holds: where samples and the device's
-//! tuning go, the link's counts, the PING probe, the session's clock, and the way out.
-struct DriverLinks
+//! What a received frame said.
+namespace received {
+//! A v2 TELEMETRY: its seq and its quantities, those of capabilities the device did not
+//! announce already dropped.
+struct Telemetry
 {
-    SamplePipeline &samples;
-    LinkStatistics &statistics;
-    PingProbe &ping;
-    const QElapsedTimer &clock; //!< host time of samples
-    std::function<void(const QByteArray &bytes)> write;
-    std::function<void(const QString &line)> deviceText; //!< v2 LOG, legacy boot lines
+    quint8 seq = 0;
+    v2::Telemetry telemetry;
+    //! Every quantity is a number: a NaN or ±Inf would enter p_ref's integral and stay there
+    //! for the rest of the session, so such a frame is counted and never made a sample.
+    bool finite = true;
 };
+//! A legacy frame, with what turns it into a sample: the conversion and the τ_ext the host
+//! last sent the device [N·m] (0 while feedback is off).
+struct LegacyFrame
+{
+    legacy::Frame frame;
+    const legacy::Conversion *conversion = nullptr;
+    double tauExt = 0;
+};
+struct Pong
+{
+    quint32 token = 0;
+};
+//! A line the device said for people (v2 LOG, a legacy text line), as it came.
+struct Text
+{
+    QString line;
+};
+} // namespace received
+
+//! One event of a received frame. A PARAMS, EFFECTS or PASSIVITY is the DeviceTuning with the
+//! part it carried.
+using Received = std::variant<received::Telemetry, received::LegacyFrame, v2::Ack, DeviceTuning,
+                              received::Pong, received::Text>;
+
+//! Where a driver's frames go out (the session's link).
+using DriverWrite = std::function<void(const QByteArray &bytes)>;
 
 class ProtocolDriver
 {
@@ -42,10 +68,10 @@ public:
 
     //! What the device told (or what is known of it).
     virtual DeviceInfo info() const = 0;
-    //! The connection is established: the connect sequence (v2: GET_PARAMS, GET_EFFECTS when
-    //! the device has effects, SET_STREAM).
-    virtual void start() = 0;
-    virtual void feed(const QByteArray &bytes) = 0;
+    //! Requests the connection starts with (v2: read the tuning, set the stream).
+    virtual std::vector<Request> startRequests() const = 0;
+    //! Decodes `bytes` (any chunking) and appends what its frames said to `out`.
+    virtual void feed(const QByteArray &bytes, std::vector<Received> &out) = 0;
     //! One feedback frame with τ_ext [N·m].
     virtual void sendFeedback(double tauExt) = 0;
     //! Feedback frames per second the device and its link take at most [Hz].
@@ -54,11 +80,9 @@ public:
     virtual bool sendPing(quint32 token) = 0;
     //! Why the device cannot carry the wire step `step`; nullopt when it can.
     virtual std::optional<outcome::Unsupported::Why> refusal(CommandKind step) const = 0;
-    //! The host parameters changed (legacy: its τ limit is the host's).
-    virtual void hostParamsChanged(const HostParams &host) = 0;
-    //! Stops handling anything (the link is gone) and hands its decoder's counts to the
-    //! statistics.
-    virtual void close() = 0;
+    //! The τ limit samples are scaled and clamped with [N·m]: the device's (v2), or the host's
+    //! `host.tau_limit` (legacy: the published firmware does not tell).
+    virtual double sampleTauLimit(const HostParams &host) const = 0;
     //! The live decoder counts, for LinkStats (one of the two is null).
     virtual const v2::DecoderStats *v2Stats() const { return nullptr; }
     virtual const legacy::DecoderStats *legacyStats() const { return nullptr; }
