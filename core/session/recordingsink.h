@@ -36,7 +36,6 @@ public:
     //! The link was lost after the row at `lostAfter_s` [s], `why` (StateDetail of the loss):
     //! the files stay open, no row comes until resume(), and the status says `waiting`.
     void suspend(double lostAfter_s, const StateDetail &why);
-    bool isWaiting() const { return m_gap.has_value(); }
     //! The same device is back: the next row carries the gap's event, then `changes` (what the
     //! device holds differently from before the loss), or says its parameters were not read
     //! back (`unread`).

@@ -80,8 +80,6 @@ public:
     //! Closes the recording, or calls off an armed one.
     void stopRecording();
     bool isRecording() const { return m_recording.isOpen(); }
-    //! Open, but waiting for the device after a loss (no rows are written).
-    bool isWaiting() const { return m_gap.has_value(); }
     bool isArmed() const { return m_armed.has_value(); }
 
 Q_SIGNALS:

@@ -34,7 +34,6 @@ public:
     //! maxRateHz ≤ 0 sends nothing.
     void start(double maxRateHz);
     void stop();
-    bool isRunning() const { return m_running; }
     //! The torque to stream [N·m]; not finite = 0. A change is sent at once when the rate
     //! allows, else at the end of the current interval.
     void setTauExt(double tauExt);

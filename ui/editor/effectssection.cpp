@@ -59,11 +59,7 @@ EffectsSection::EffectsSection(QWidget *parent) : QWidget(parent)
     for (int i = 0; i < specs.size(); ++i) {
         auto *field = new ParameterField(specs[i], this, this);
         field->addToGrid(grid, 2 * i);
-        m_fields << field;
-        const QString key = specs[i].key;
-        connect(field, &ParameterField::edited, this,
-                [this, key](double v) { Q_EMIT edited(key, v); });
-        connect(field, &ParameterField::editFinished, this, &EffectsSection::editFinished);
+        m_fields << field; // the form takes their edits (ParameterForm::field)
     }
     column->addLayout(grid);
 

@@ -55,8 +55,6 @@ public:
     QPushButton *stopButton() const { return m_stop; }
 
 Q_SIGNALS:
-    void edited(const QString &key, double value); //!< an effect field [SI]
-    void editFinished();                           //!< end of a typing or dragging gesture
     void vibrateRequested(const hatpic::Vibration &vibration); //!< Vibrate, or Stop (a = 0)
 
 private:

@@ -23,10 +23,8 @@ public:
     //! parameters, no push is in flight).
     explicit LivePush(std::function<bool()> ready, QObject *parent = nullptr);
 
-    void setEnabled(bool enabled); //!< off: forgets a pending edit
-    bool isEnabled() const { return m_enabled; }
+    void setEnabled(bool enabled);      //!< off: forgets a pending edit
     void setInterval(int milliseconds); //!< negative: 0
-    int interval() const { return m_interval; }
 
     //! The edited set changed: it is to be sent, now or when the interval has passed.
     void edited();

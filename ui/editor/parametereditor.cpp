@@ -182,11 +182,6 @@ void ParameterEditor::setParams(const DeviceParams &device, const HostParams &ho
     setTuning({device, host, effects(), passivity()}, undoText);
 }
 
-void ParameterEditor::applyParams(const DeviceParams &device, const HostParams &host)
-{
-    applyTuning({device, host, effects(), passivity()});
-}
-
 void ParameterEditor::applyTuning(const Tuning &tuning)
 {
     m_model->setEdited(tuning);

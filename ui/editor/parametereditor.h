@@ -52,9 +52,8 @@ public:
     void setTuning(const Tuning &tuning, const QString &undoText);
     //! Shows a tuning without touching the undo stack (used by undo commands and A/B).
     void applyTuning(const Tuning &tuning);
-    //! setTuning / applyTuning with the effects and the passivity controller as they are.
+    //! setTuning with the effects and the passivity controller as they are.
     void setParams(const DeviceParams &device, const HostParams &host, const QString &undoText);
-    void applyParams(const DeviceParams &device, const HostParams &host);
 
     //! The device's tuning as read: drives the diff markers and the sync state. Without
     //! parameters (disconnected): no diff markers, no sync state.
@@ -96,9 +95,7 @@ public:
     //! Push on every edit while valid, at most one in flight and one per interval; the last
     //! value is always sent.
     void setLivePush(bool enabled);
-    bool livePush() const { return m_live->isEnabled(); }
     void setLivePushInterval(int milliseconds);
-    int livePushInterval() const { return m_live->interval(); }
 
     //! Display only: θ0, N and Q_dz in degrees; params() stays in rad.
     void setAngleInDegrees(bool degrees);

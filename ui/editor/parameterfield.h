@@ -78,7 +78,6 @@ public:
     bool differsFromDevice() const;
 
     ScientificSpinBox *spinBox() const { return m_spin; }
-    QLabel *nameLabel() const { return m_label; }
     QLabel *unitLabel() const { return m_unit; }
     QSlider *slider() const { return m_slider; }
 

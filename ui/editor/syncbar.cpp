@@ -133,11 +133,6 @@ void SyncBar::setProblems(const QStringList &problems)
     m_problem->setToolTip(problems.join(u'\n'));
 }
 
-QString SyncBar::problemText() const
-{
-    return m_problem->isVisible() ? m_problem->toolTip() : QString();
-}
-
 void SyncBar::setLivePush(bool on)
 {
     const QSignalBlocker block(m_liveCheck);

@@ -25,7 +25,6 @@ public:
     //! Why Push is off, beside it: the first broken rule ("K_min: must be ≤ K_max (0.4), got
     //! 0.9") and how many more; empty hides the line. Its "Show" link asks for the field.
     void setProblems(const QStringList &problems);
-    QString problemText() const;
     //! Show a switch without emitting its signal.
     void setLivePush(bool on);
     void setAngleInDegrees(bool on);

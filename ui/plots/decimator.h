@@ -3,7 +3,8 @@
 // When a time range holds more samples than twice the plot's pixel columns, each column keeps
 // only its minimum and its maximum (in time order), so a 1 kHz stream drawn on 800 pixels shows
 // every peak without drawing 60 000 points. Fewer samples are passed through unchanged. A time
-// step longer than gap() becomes a NaN point, which breaks the line (link loss, reconnection).
+// step longer than the gap (kDefaultGap) becomes a NaN point, which breaks the line (link loss,
+// reconnection).
 #pragma once
 
 #include "plots/channel.h"
@@ -29,9 +30,7 @@ public:
 
     explicit Decimator(int pixels = 1000, double gap = kDefaultGap);
 
-    int pixels() const { return m_pixels; }
     void setPixels(int pixels); //!< clamped to ≥ 1
-    double gap() const { return m_gap; }
 
     //! Replaces `out` with the points of `channel` over [t0, t1] (plus one neighbour on each
     //! side so lines reach the edges), values multiplied by `scale` (unit conversion).

@@ -61,10 +61,4 @@ void FadingTrail::setLayer(const QString &layer)
         curve->setLayer(layer);
 }
 
-void FadingTrail::setVisible(bool visible)
-{
-    for (QCPCurve *curve : m_pieces)
-        curve->setVisible(visible);
-}
-
 } // namespace hatpic

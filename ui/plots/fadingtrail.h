@@ -36,7 +36,6 @@ public:
                        double xScale, Channel yChannel, double yScale);
     void clear();
     void setLayer(const QString &layer);
-    void setVisible(bool visible);
 
     //! The points drawn, after thinning.
     qsizetype pointCount() const { return m_points; }

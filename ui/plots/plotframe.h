@@ -67,7 +67,6 @@ public:
     //! rows, the entries of hidden series left out) rather than clipping their entries
     //! (issue 27: a bottom panel squeezed "τ_rec" to "τ rec"). True when they changed.
     bool fitLegends(int plotHeight);
-    bool hasCompactLegends() const { return m_compact; }
 
     //! Axis labels with the units of `units` ("θ [°]", "v_ref [m/s]", …).
     void setAxisLabels(const DisplayUnits &units);

@@ -41,7 +41,6 @@ public:
     //! One marker per burst of events (eventmarkers.h), a short label on each; replaces the
     //! previous markers.
     void setEvents(const QList<RecordingEvent> &events, const QFont &font);
-    qsizetype eventItemCount() const { return m_eventItems.size(); }
     //! Puts each event label on the side of its line where it fits in the angle plot: right of
     //! the line, or left of it near the right edge (where live pushes land). Call before a
     //! replot, once the x range is set.

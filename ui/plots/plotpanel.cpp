@@ -328,11 +328,6 @@ void PlotPanel::setRepaintRate(double hz)
     m_timer->setInterval(std::max(1, static_cast<int>(std::lround(1000.0 / std::max(hz, 1.0)))));
 }
 
-double PlotPanel::repaintRate() const
-{
-    return 1000.0 / m_timer->interval();
-}
-
 qsizetype PlotPanel::pointCount(Channel channel) const
 {
     return graph(channel)->data()->size();

@@ -127,7 +127,6 @@ public:
     qsizetype exportCsv(const QString &path, QString *error = nullptr) const;
 
     void setRepaintRate(double hz);
-    double repaintRate() const;
     RepaintStats repaintStats() const { return m_stats; }
     //! Live samples arrived (they wait for the frame that shows them: the latency probe).
     void noteArrivals(const SampleBatch &batch) { m_latency.arrived(batch); }

@@ -36,7 +36,6 @@ public:
     QCustomPlot *plot() const { return m_plot; }
     const FadingTrail &trail() const { return *m_trail; }
     QCPGraph *pointGraph() const { return m_point; } //!< the newest sample
-    QComboBox *xBox() const { return m_x; }
     QComboBox *yBox() const { return m_y; }
 
 private:

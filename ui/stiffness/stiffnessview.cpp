@@ -172,7 +172,7 @@ StiffnessView::StiffnessView(const TuningModel &tuning, QWidget *parent)
     plottheme::follow(m_plot);
     updateComparisonStyle();
     connect(&m_tuning, &TuningModel::editedChanged, this, [this](TuningChange change) {
-        if (change.device || change.effects) // the curves ignore host and passivity edits
+        if (change.device || change.effects || change.host) // tau_limit is the host's
             rebuild();
     });
     rebuild();
@@ -340,12 +340,6 @@ void StiffnessView::setAngleInDegrees(bool degrees)
     rebuild();
 }
 
-void StiffnessView::setTauLimit(double tauLimit)
-{
-    m_tauLimit = tauLimit;
-    rebuild();
-}
-
 double StiffnessView::scale() const
 {
     return m_degrees ? 180.0 / kPi : 1.0;
@@ -372,6 +366,7 @@ void StiffnessView::fillCurves(const DeviceParams &params, const EffectParams &e
 void StiffnessView::rebuild()
 {
     const Tuning &edited = m_tuning.edited();
+    const double tauLimit = edited.host.tau_limit; // drawn ±, and the axis's reach
     const double center = edited.device.theta0;
     const EffectParams deviceEffects = m_deviceEffects.value_or(EffectParams{});
     double half = halfRange(edited.device, edited.effects);
@@ -416,22 +411,22 @@ void StiffnessView::rebuild()
                 kMax = std::max(kMax, it->value);
         }
     }
-    if (m_tauLimit > 0 && m_tauLimit < 2.0 * tauMax)
-        tauMax = std::max(tauMax, m_tauLimit);
+    if (tauLimit > 0 && tauLimit < 2.0 * tauMax)
+        tauMax = std::max(tauMax, tauLimit);
     tauMax = std::max(tauMax, 1e-3) * 1.15;
     // A stiff wall's spring grows far beyond what the device renders (it clamps at tau_limit):
     // with effects the axis stops at 1.5 × tau_limit, so the notch and the detents stay legible.
-    if (m_tauLimit > 0 && effectsShown())
-        tauMax = std::min(tauMax, 1.5 * m_tauLimit);
+    if (tauLimit > 0 && effectsShown())
+        tauMax = std::min(tauMax, 1.5 * tauLimit);
     m_torqueRect->axis(QCPAxis::atLeft)->setRange(-tauMax, tauMax);
     m_stiffnessRect->axis(QCPAxis::atLeft)->setRange(0, std::max(kMax, 1e-3) * 1.15);
 
-    m_limitHigh->point1->setCoords(0, m_tauLimit);
-    m_limitHigh->point2->setCoords(1, m_tauLimit);
-    m_limitLow->point1->setCoords(0, -m_tauLimit);
-    m_limitLow->point2->setCoords(1, -m_tauLimit);
-    m_limitHigh->setVisible(m_tauLimit > 0);
-    m_limitLow->setVisible(m_tauLimit > 0);
+    m_limitHigh->point1->setCoords(0, tauLimit);
+    m_limitHigh->point2->setCoords(1, tauLimit);
+    m_limitLow->point1->setCoords(0, -tauLimit);
+    m_limitLow->point2->setCoords(1, -tauLimit);
+    m_limitHigh->setVisible(tauLimit > 0);
+    m_limitLow->setVisible(tauLimit > 0);
 
     m_editedMarks->update(edited.device, edited.effects, center - half, center + half, scale());
     m_deviceMarks->update(m_device.value_or(DeviceParams{}),

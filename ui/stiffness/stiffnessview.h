@@ -37,7 +37,8 @@ public:
 
     static constexpr double kTrailSeconds = 3; //!< length of the operating point's trail [s]
 
-    //! Draws `tuning`'s edited parameters and effects, and follows its edits.
+    //! Draws `tuning`'s edited parameters and effects with ±tau_limit (the edited host
+    //! setting's), and follows its edits.
     explicit StiffnessView(const TuningModel &tuning, QWidget *parent = nullptr);
     ~StiffnessView() override;
 
@@ -51,8 +52,6 @@ public:
     //! Display only: the θ axis in degrees; the inputs stay SI.
     void setAngleInDegrees(bool degrees);
     bool angleInDegrees() const { return m_degrees; }
-    //! Draws ±tau_limit on the torque plot [N·m].
-    void setTauLimit(double tauLimit);
     //! In replay the dashed curve is the recording's parameters and the dot the sample at the
     //! playhead: the legend says so instead of "device" and "live".
     void setReplaying(bool replaying);
@@ -121,7 +120,6 @@ private:
     bool m_replaying = false;
     int m_activeSlot = 0;
     std::optional<std::pair<double, double>> m_operatingPoint; //!< θ [rad], τ_rec [N·m]
-    double m_tauLimit = 0.44;
     bool m_degrees = false;
 
     QCustomPlot *m_plot = nullptr;

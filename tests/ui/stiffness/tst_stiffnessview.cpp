@@ -397,7 +397,9 @@ void TestStiffnessView::curveIsTheStaticTorque()
     QVERIFY(std::abs(p.x() + 0.7) < 0.002);
     QVERIFY(std::abs(p.y() - (-0.5 * p.x() - 2 * (p.x() + 0.6))) < 1e-12);
     // The wall's spring grows beyond what the device renders: the axis stops at 1.5·tau_limit.
-    view.setTauLimit(0.2);
+    Tuning limited = tuning.edited();
+    limited.host.tau_limit = 0.2; // the edited host setting's, which the view follows
+    tuning.setEdited(limited);
     QVERIFY(std::abs(g->valueAxis()->range().upper - 0.3) < 1e-12);
     // Every sample: the model's sum; the stiffness plot stays K_rec.
     const auto k = points(view.stiffnessGraph());
