@@ -9,6 +9,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 void writeOut(const QByteArray &bytes)
 {
     std::fwrite(bytes.constData(), 1, static_cast<size_t>(bytes.size()), stdout);
@@ -30,9 +32,8 @@ QString outputTargetProblem(const QStringList &paths, bool force, const QString 
         const QFileInfo info(path);
         if (info.exists() && !info.isFile()) {
             return path + u" is not a regular file (" +
-                   (info.isDir() ? QStringLiteral("a folder")
-                                 : QStringLiteral("a device or pipe")) +
-                   u"); " + ownFiles + u'.';
+                   (info.isDir() ? u"a folder"_s : u"a device or pipe"_s) + u"); " + ownFiles +
+                   u'.';
         }
     }
     for (const QString &path : paths) {
@@ -61,9 +62,9 @@ void printNote(const QString &text)
 
 QString unreadNumber(const QString &what, const QString &text, bool whole)
 {
-    static const QRegularExpression integer(QStringLiteral("^[+-]?[0-9]+$"));
+    static const QRegularExpression integer(u"^[+-]?[0-9]+$"_s);
     static const QRegularExpression number(
-        QStringLiteral("^[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?$"));
+        u"^[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?$"_s);
     const QString quoted = QString::fromStdString(echoedText(text.toStdString()));
     if ((whole ? integer : number).match(text.trimmed()).hasMatch())
         return u"is out of range: it must be " + what + u", got '" + quoted + u"'.";

@@ -9,6 +9,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 // A grid point closer than this (relative to the step) to `to` is `to` itself, so that
@@ -25,7 +27,7 @@ std::optional<qint64> AngleGrid::rowCount(QString *error) const
         return std::nullopt;
     };
     if (!std::isfinite(from) || !std::isfinite(to) || !std::isfinite(step))
-        return fail(QStringLiteral("--from, --to and --step must be finite numbers."));
+        return fail(u"--from, --to and --step must be finite numbers."_s);
     if (step <= 0)
         return fail(u"--step must be above 0, got " + compactNumberText(step) + u'.');
     if (from > to) {

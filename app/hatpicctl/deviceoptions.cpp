@@ -11,19 +11,21 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 void addDeviceOptions(QCommandLineParser &parser)
 {
-    parser.addOption(connectionOption(
-        ConnectionOption::Port,
-        QStringLiteral("Serial device (e.g. /dev/ttyUSB0, a pty) or 'sim' for the built-in "
-                       "simulated joystick. Required; 'hatpicctl ports' lists them.")));
+    parser.addOption(
+        connectionOption(ConnectionOption::Port,
+                         u"Serial device (e.g. /dev/ttyUSB0, a pty) or 'sim' for the built-in "
+                         "simulated joystick. Required; 'hatpicctl ports' lists them."_s));
     parser.addOption(connectionOption(ConnectionOption::Baud));
     parser.addOption(connectionOption(ConnectionOption::Protocol));
-    parser.addOption(QCommandLineOption(
-        QStringList{QStringLiteral("timeout")},
-        QStringLiteral("Longest wait for the connection and for each answer, in seconds "
-                       "(default: 5)."),
-        QStringLiteral("S"), QStringLiteral("5")));
+    parser.addOption(
+        QCommandLineOption(u"timeout"_s,
+                           u"Longest wait for the connection and for each answer, in seconds "
+                           "(default: 5)."_s,
+                           u"S"_s, u"5"_s));
     parser.addOption(connectionOption(ConnectionOption::Faults));
     parser.addOption(connectionOption(ConnectionOption::Seed));
 }
@@ -33,9 +35,9 @@ std::optional<DeviceOptions> deviceOptions(const QCommandLineParser &parser)
     DeviceOptions options;
     options.connect.autoReconnect = false;
 
-    if (parser.value(QStringLiteral("port")).isEmpty()) {
-        printError(QStringLiteral("This command needs --port: a serial device path, or 'sim' "
-                                  "for the built-in simulated joystick."));
+    if (parser.value(u"port"_s).isEmpty()) {
+        printError(u"This command needs --port: a serial device path, or 'sim' "
+                   "for the built-in simulated joystick."_s);
         return std::nullopt;
     }
     QString error;
@@ -45,10 +47,10 @@ std::optional<DeviceOptions> deviceOptions(const QCommandLineParser &parser)
     }
 
     bool ok = false;
-    const double timeout = parser.value(QStringLiteral("timeout")).toDouble(&ok);
+    const double timeout = parser.value(u"timeout"_s).toDouble(&ok);
     if (!ok || !std::isfinite(timeout) || timeout <= 0 || timeout > 3600) {
         printError(u"--timeout must be a number of seconds above 0 and at most 3600, got '" +
-                   parser.value(QStringLiteral("timeout")) + u"'.");
+                   parser.value(u"timeout"_s) + u"'.");
         return std::nullopt;
     }
     options.timeoutS = timeout;

@@ -17,20 +17,20 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 constexpr int kResultAfterLossMs = 500; //!< wait for a command's result once the link is lost
 
 QString portText(const ConnectOptions &options)
 {
-    return options.link && options.link->simulated() ? QStringLiteral("the simulated joystick")
-                                                     : options.port;
+    return options.link && options.link->simulated() ? u"the simulated joystick"_s : options.port;
 }
 
 QString secondsText(double seconds)
 {
-    return compactNumberText(seconds) +
-           (seconds == 1.0 ? QStringLiteral(" second") : QStringLiteral(" seconds"));
+    return compactNumberText(seconds) + (seconds == 1.0 ? u" second"_s : u" seconds"_s);
 }
 
 } // namespace

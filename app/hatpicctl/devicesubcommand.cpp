@@ -3,7 +3,28 @@
 #include "common/exitcodes.h"
 #include "devicerunner.h"
 
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+
 namespace hatpic::cli {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+SubcommandText withPortHelp(SubcommandText text)
+{
+    text.description +=
+        u"\n\n--port is required: a serial device such as /dev/ttyUSB0 or the pseudo-terminal\n"
+        "hatpic-sim prints, or 'sim' for a simulated joystick inside this process (its\n"
+        "state starts afresh on every run)."_s;
+    return text;
+}
+
+} // namespace
+
+DeviceSubcommand::DeviceSubcommand(SubcommandText text) : Subcommand(withPortHelp(std::move(text)))
+{}
 
 void DeviceSubcommand::addOptions(QCommandLineParser &parser)
 {
@@ -11,10 +32,8 @@ void DeviceSubcommand::addOptions(QCommandLineParser &parser)
     addCommandOptions(parser);
 }
 
-int DeviceSubcommand::prepare(const QCommandLineParser &parser, DeviceOptions &options)
+int DeviceSubcommand::prepare(const QCommandLineParser &, DeviceOptions &)
 {
-    Q_UNUSED(parser);
-    Q_UNUSED(options);
     return ExitSuccess;
 }
 
@@ -31,12 +50,9 @@ int DeviceSubcommand::run(const QCommandLineParser &parser)
     return runConnected(runner, parser);
 }
 
-QString DeviceSubcommand::portHelp()
+void DeviceSubcommand::addJsonOption(QCommandLineParser &parser)
 {
-    return QStringLiteral(
-        "--port is required: a serial device such as /dev/ttyUSB0 or the pseudo-terminal\n"
-        "hatpic-sim prints, or 'sim' for a simulated joystick inside this process (its\n"
-        "state starts afresh on every run).");
+    parser.addOption({u"json"_s, u"Print a profile (JSON)."_s});
 }
 
 } // namespace hatpic::cli

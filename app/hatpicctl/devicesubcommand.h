@@ -11,6 +11,9 @@ class DeviceRunner;
 class DeviceSubcommand : public Subcommand
 {
 public:
+    //! The description gets the paragraph on --port every device subcommand ends with.
+    explicit DeviceSubcommand(SubcommandText text);
+
     void addOptions(QCommandLineParser &parser) final;
     int run(const QCommandLineParser &parser) final;
 
@@ -23,8 +26,8 @@ protected:
     //! Runs once the device is connected.
     virtual int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) = 0;
 
-    //! Text for the end of each device subcommand's --help.
-    static QString portHelp();
+    //! --json, "Print a profile (JSON).": get, set and zero.
+    static void addJsonOption(QCommandLineParser &parser);
 };
 
 } // namespace hatpic::cli

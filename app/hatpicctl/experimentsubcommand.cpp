@@ -64,20 +64,14 @@ std::optional<ExperimentKind> kindOf(const QString &name)
 class ExperimentSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("experiment"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Measure the knob's step or frequency response, or a spectrum.");
-    }
-    QString synopsis() const override
-    {
-        return QStringLiteral("experiment step|bode|spectrum --port PORT [options] [--csv FILE "
-                              "[--force]]");
-    }
-    QString description() const override
-    {
-        return QStringLiteral(
-                   "Applies tau_ext through the feedback stream and measures how the knob\n"
+    ExperimentSubcommand()
+        : DeviceSubcommand(
+              {.name = u"experiment"_s,
+               .summary = u"Measure the knob's step or frequency response, or a spectrum."_s,
+               .synopsis = u"experiment step|bode|spectrum --port PORT [options] [--csv FILE "
+                           "[--force]]"_s,
+               .description =
+                   u"Applies tau_ext through the feedback stream and measures how the knob\n"
                    "responds (hands off the knob; with --port sim the simulated hand is idle\n"
                    "for the run): 'step' steps tau_ext and fits omega_n and\n"
                    "zeta; 'bode' applies stepped sines (--frequencies) and prints theta/tau_ext\n"
@@ -87,43 +81,35 @@ public:
                    "Defaults keep the knob in the notch band (docs/experiments.md); tau_ext is\n"
                    "0 again when the experiment ends, fails or is interrupted. A protocol v2\n"
                    "device is needed. --csv FILE writes the curves (never overwritten without\n"
-                   "--force).\n\n") +
-               portHelp();
-    }
-    bool acceptsPositional() const override { return true; }
+                   "--force)."_s,
+               .acceptsPositional = true})
+    {}
 
 protected:
     void addCommandOptions(QCommandLineParser &parser) override
     {
         for (const NumberOption &o : kNumberOptions) {
-            parser.addOption(QCommandLineOption(QStringList{QString::fromUtf16(o.name)},
-                                                QString::fromUtf16(o.help), QStringLiteral("X")));
+            parser.addOption(
+                {QStringList{QString::fromUtf16(o.name)}, QString::fromUtf16(o.help), u"X"_s});
         }
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("frequencies")},
-            QStringLiteral("Bode: ascending frequencies in Hz, comma-separated (default: 8 from\n"
-                           "a tenth to three times the model's bandwidth)."),
-            QStringLiteral("LIST")));
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("cycles")},
-            QStringLiteral("Bode: whole periods measured per frequency (default: 4)."),
-            QStringLiteral("N")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("csv")},
-                                            QStringLiteral("Write the curves to FILE."),
-                                            QStringLiteral("FILE")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("force")},
-                                            QStringLiteral("Overwrite FILE if it exists.")));
+        parser.addOption({u"frequencies"_s,
+                          u"Bode: ascending frequencies in Hz, comma-separated (default: 8 from\n"
+                          "a tenth to three times the model's bandwidth)."_s,
+                          u"LIST"_s});
+        parser.addOption(
+            {u"cycles"_s, u"Bode: whole periods measured per frequency (default: 4)."_s, u"N"_s});
+        parser.addOption(QCommandLineOption(u"csv"_s, u"Write the curves to FILE."_s, u"FILE"_s));
+        parser.addOption(QCommandLineOption(u"force"_s, u"Overwrite FILE if it exists."_s));
     }
 
-    int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
+    int prepare(const QCommandLineParser &parser, DeviceOptions &) override
     {
-        Q_UNUSED(options);
         const QStringList positional = parser.positionalArguments();
         const std::optional<ExperimentKind> kind =
             positional.size() == 1 ? kindOf(positional.first()) : std::nullopt;
         if (!kind) {
-            printError(QStringLiteral("Name one experiment: step, bode or spectrum; run "
-                                      "'hatpicctl experiment --help' for the options."));
+            printError(u"Name one experiment: step, bode or spectrum; run "
+                       "'hatpicctl experiment --help' for the options."_s);
             return ExitBadUsage;
         }
         m_kind = *kind;
@@ -147,8 +133,8 @@ protected:
             }
             m_overrides.append({o.field, v});
         }
-        if (parser.isSet(QStringLiteral("frequencies"))) {
-            for (const QString &item : parser.value(QStringLiteral("frequencies")).split(u',')) {
+        if (parser.isSet(u"frequencies"_s)) {
+            for (const QString &item : parser.value(u"frequencies"_s).split(u',')) {
                 bool ok = false;
                 const double f = item.trimmed().toDouble(&ok);
                 if (!ok) {
@@ -160,26 +146,25 @@ protected:
                 m_frequencies.append(f);
             }
         }
-        if (parser.isSet(QStringLiteral("cycles"))) {
+        if (parser.isSet(u"cycles"_s)) {
             bool ok = false;
-            m_cycles = parser.value(QStringLiteral("cycles")).toInt(&ok);
+            m_cycles = parser.value(u"cycles"_s).toInt(&ok);
             if (!ok) {
-                printError(u"--cycles " + unreadNumber(u"a whole number"_s,
-                                                       parser.value(QStringLiteral("cycles")),
-                                                       true));
+                printError(u"--cycles " +
+                           unreadNumber(u"a whole number"_s, parser.value(u"cycles"_s), true));
                 return ExitBadUsage;
             }
         }
-        m_csvPath = parser.value(QStringLiteral("csv"));
-        if (parser.isSet(QStringLiteral("csv")) && m_csvPath.isEmpty()) {
-            printError(QStringLiteral("--csv needs a file name."));
+        m_csvPath = parser.value(u"csv"_s);
+        if (parser.isSet(u"csv"_s) && m_csvPath.isEmpty()) {
+            printError(u"--csv needs a file name."_s);
             return ExitBadUsage;
         }
         // Checked before the port is opened: a bad target must not cost a measurement.
         if (!m_csvPath.isEmpty()) {
             if (const QString problem =
-                    outputTargetProblem({m_csvPath}, parser.isSet(QStringLiteral("force")),
-                                        QStringLiteral("the curves need a file of their own"));
+                    outputTargetProblem({m_csvPath}, parser.isSet(u"force"_s),
+                                        u"the curves need a file of their own"_s);
                 !problem.isEmpty()) {
                 printError(problem);
                 return ExitBadUsage;
@@ -188,9 +173,8 @@ protected:
         return ExitSuccess;
     }
 
-    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &) override
     {
-        Q_UNUSED(parser);
         DeviceClient &client = runner.client();
         if (const QString why = ExperimentRunner::refusal(client);
             !why.isEmpty() && client.deviceInfo().protocol == WireProtocol::Legacy) {

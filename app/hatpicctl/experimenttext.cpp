@@ -7,11 +7,13 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 QString figure(double value, int decimals)
 {
-    return std::isfinite(value) ? QString::number(value, 'f', decimals) : QStringLiteral("–");
+    return std::isfinite(value) ? QString::number(value, 'f', decimals) : u"–"_s;
 }
 
 QString row(const QString &name, const QString &measured, const QString &model)
@@ -28,30 +30,26 @@ double degrees(double rad)
 
 QString stepReport(const ExperimentResult &r)
 {
-    QString out =
-        row(QStringLiteral("figure"), QStringLiteral("measured"), QStringLiteral("model"));
-    out += row(QStringLiteral("omega_n [rad/s]"), figure(r.fitMeasured.omegaN, 2),
-               figure(r.figures.omega_n, 2));
-    out += row(QStringLiteral("zeta"), figure(r.fitMeasured.zeta, 3), figure(r.figures.zeta, 3));
-    out += row(QStringLiteral("rise time [s]"), figure(r.stepMeasured.riseTime, 4),
+    QString out = row(u"figure"_s, u"measured"_s, u"model"_s);
+    out += row(u"omega_n [rad/s]"_s, figure(r.fitMeasured.omegaN, 2), figure(r.figures.omega_n, 2));
+    out += row(u"zeta"_s, figure(r.fitMeasured.zeta, 3), figure(r.figures.zeta, 3));
+    out += row(u"rise time [s]"_s, figure(r.stepMeasured.riseTime, 4),
                figure(r.stepIdeal.riseTime, 4));
-    out += row(QStringLiteral("overshoot [%]"), figure(100 * r.stepMeasured.overshoot, 1),
+    out += row(u"overshoot [%]"_s, figure(100 * r.stepMeasured.overshoot, 1),
                figure(100 * r.stepIdeal.overshoot, 1));
-    out += row(QStringLiteral("settling time [s]"), figure(r.stepMeasured.settlingTime, 4),
+    out += row(u"settling time [s]"_s, figure(r.stepMeasured.settlingTime, 4),
                figure(r.stepIdeal.settlingTime, 4));
-    out += row(QStringLiteral("step in theta [rad]"), figure(r.fitMeasured.gain, 4),
+    out += row(u"step in theta [rad]"_s, figure(r.fitMeasured.gain, 4),
                figure((r.plan.tauTo - r.plan.tauFrom) / r.params.K_max, 4));
-    out += row(QStringLiteral("fit rms [rad]"), figure(r.fitMeasured.rmsResidual, 5), QString());
+    out += row(u"fit rms [rad]"_s, figure(r.fitMeasured.rmsResidual, 5), QString());
     return out;
 }
 
 QString bodeReport(const ExperimentResult &r)
 {
-    QString out = QStringLiteral("frequency [Hz]").leftJustified(16) +
-                  QStringLiteral("|H| [dB]").rightJustified(10) +
-                  QStringLiteral("model").rightJustified(10) +
-                  QStringLiteral("phase [deg]").rightJustified(13) +
-                  QStringLiteral("model").rightJustified(10) + u'\n';
+    QString out = u"frequency [Hz]"_s.leftJustified(16) + u"|H| [dB]"_s.rightJustified(10) +
+                  u"model"_s.rightJustified(10) + u"phase [deg]"_s.rightJustified(13) +
+                  u"model"_s.rightJustified(10) + u'\n';
     for (const analysis::FrequencyPoint &p : r.points) {
         const std::complex<double> model = analysis::modelGain(r.params, p.frequency);
         out += figure(p.frequency, 2).leftJustified(16) +
@@ -61,8 +59,7 @@ QString bodeReport(const ExperimentResult &r)
                figure(degrees(std::arg(model)), 1).rightJustified(10) + u'\n';
     }
     out += u"(|H| = |theta/tau_ext| in dB re 1 rad/(N·m))\n";
-    out +=
-        row(QStringLiteral("bandwidth [Hz]"), figure(r.bandwidth, 2), figure(r.modelBandwidth, 2));
+    out += row(u"bandwidth [Hz]"_s, figure(r.bandwidth, 2), figure(r.modelBandwidth, 2));
     return out;
 }
 
@@ -94,8 +91,8 @@ QString experimentReport(const ExperimentResult &r)
               QString::number(std::llround(r.sampleRate / r.thetaSpectrum.resolution)) + u" at " +
               figure(r.sampleRate, 1) + u" Hz, resolution " +
               figure(r.thetaSpectrum.resolution, 3) + u" Hz\n";
-        out += peakLine(QStringLiteral("theta"), r.thetaSpectrum, QStringLiteral("rad"));
-        out += peakLine(QStringLiteral("tau"), r.tauSpectrum, QStringLiteral("N·m"));
+        out += peakLine(u"theta"_s, r.thetaSpectrum, u"rad"_s);
+        out += peakLine(u"tau"_s, r.tauSpectrum, u"N·m"_s);
         break;
     }
     out += u"hand: " + runHandText(r.hand) + u'\n'; // what else held the knob

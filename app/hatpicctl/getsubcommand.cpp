@@ -11,21 +11,20 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 class GetSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("get"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Print the device's current parameters (text or JSON).");
-    }
-    QString synopsis() const override { return QStringLiteral("get --port PORT [--json]"); }
-    QString description() const override
-    {
-        return QStringLiteral(
-                   "Reads the parameters with GET_PARAMS. The text form has one line per\n"
+    GetSubcommand()
+        : DeviceSubcommand(
+              {.name = u"get"_s,
+               .summary = u"Print the device's current parameters (text or JSON)."_s,
+               .synopsis = u"get --port PORT [--json]"_s,
+               .description =
+                   u"Reads the parameters with GET_PARAMS. The text form has one line per\n"
                    "parameter: name, value, unit, meaning. --json prints a complete profile\n"
                    "that 'hatpicctl set --profile' accepts (host settings are defaults, with\n"
                    "the device's tau_limit). The device holds 32-bit floats; each is shown\n"
@@ -34,16 +33,11 @@ public:
                    "more lines, and the profile's device.effects when they are not the\n"
                    "defaults. A device with the passivity capability is asked for its passivity\n"
                    "controller (GET_PASSIVITY): two more lines (pc_damping_max, pc_reserve_max),\n"
-                   "and the profile's device.passivity when they are not the defaults.\n\n") +
-               portHelp();
-    }
+                   "and the profile's device.passivity when they are not the defaults."_s})
+    {}
 
 protected:
-    void addCommandOptions(QCommandLineParser &parser) override
-    {
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
-                                            QStringLiteral("Print a profile (JSON).")));
-    }
+    void addCommandOptions(QCommandLineParser &parser) override { addJsonOption(parser); }
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
@@ -62,17 +56,17 @@ protected:
         };
         if (const QString p = problemText(validate(tuning.params.value_or(DeviceParams{})));
             !p.isEmpty())
-            return refuse(QStringLiteral("parameters"), p);
+            return refuse(u"parameters"_s, p);
         if (tuning.effects) {
             if (const QString p = problemText(validate(*tuning.effects, info.tauLimit));
                 !p.isEmpty())
-                return refuse(QStringLiteral("effects"), p);
+                return refuse(u"effects"_s, p);
         }
         if (tuning.passivity) {
             if (const QString p = problemText(validate(*tuning.passivity)); !p.isEmpty())
-                return refuse(QStringLiteral("passivity settings"), p);
+                return refuse(u"passivity settings"_s, p);
         }
-        writeOut(tuningOutput(tuning, info, parser.isSet(QStringLiteral("json"))));
+        writeOut(tuningOutput(tuning, info, parser.isSet(u"json"_s)));
         return ExitSuccess;
     }
 };

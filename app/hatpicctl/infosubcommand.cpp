@@ -14,47 +14,44 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 class InfoSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("info"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Show the device's identity, protocol and limits.");
-    }
-    QString synopsis() const override { return QStringLiteral("info --port PORT [--json]"); }
-    QString description() const override
-    {
-        return QStringLiteral("Connects (detecting the protocol unless --protocol is given) and "
-                              "prints what the\ndevice reported about itself.\n\n") +
-               portHelp();
-    }
+    InfoSubcommand()
+        : DeviceSubcommand({.name = u"info"_s,
+                            .summary = u"Show the device's identity, protocol and limits."_s,
+                            .synopsis = u"info --port PORT [--json]"_s,
+                            .description =
+                                u"Connects (detecting the protocol unless --protocol is given) and "
+                                "prints what the\ndevice reported about itself."_s})
+    {}
 
 protected:
     void addCommandOptions(QCommandLineParser &parser) override
     {
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
-                                            QStringLiteral("Print a JSON object.")));
+        parser.addOption({u"json"_s, u"Print a JSON object."_s});
     }
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         const DeviceInfo info = runner.client().deviceInfo();
         const QString deviceId = u"0x" + QString::number(info.deviceId, 16).rightJustified(8, u'0');
-        if (parser.isSet(QStringLiteral("json"))) {
+        if (parser.isSet(u"json"_s)) {
             QJsonObject object;
-            object.insert(QStringLiteral("port"), info.port);
-            object.insert(QStringLiteral("protocol"), wireProtocolName(info.protocol));
-            object.insert(QStringLiteral("protocol_version"), info.protocolVersion);
-            object.insert(QStringLiteral("baud"), info.baud);
-            object.insert(QStringLiteral("device_id"), deviceId);
-            object.insert(QStringLiteral("firmware"), info.firmware);
-            object.insert(QStringLiteral("max_stream_hz"), info.maxStreamHz);
-            object.insert(QStringLiteral("tau_limit"), shortestFloatDecimal(info.tauLimit));
-            object.insert(QStringLiteral("can_set_params"), info.canSetParams());
-            object.insert(QStringLiteral("simulated"), info.simulated);
+            object.insert(u"port"_s, info.port);
+            object.insert(u"protocol"_s, wireProtocolName(info.protocol));
+            object.insert(u"protocol_version"_s, info.protocolVersion);
+            object.insert(u"baud"_s, info.baud);
+            object.insert(u"device_id"_s, deviceId);
+            object.insert(u"firmware"_s, info.firmware);
+            object.insert(u"max_stream_hz"_s, info.maxStreamHz);
+            object.insert(u"tau_limit"_s, shortestFloatDecimal(info.tauLimit));
+            object.insert(u"can_set_params"_s, info.canSetParams());
+            object.insert(u"simulated"_s, info.simulated);
             writeOut(QJsonDocument(object).toJson(QJsonDocument::Indented));
             return ExitSuccess;
         }
@@ -62,19 +59,17 @@ protected:
             return key.leftJustified(18) + value + u'\n';
         };
         QString text;
-        text += line(QStringLiteral("port"), info.port);
-        text += line(QStringLiteral("protocol"), wireProtocolName(info.protocol));
-        text += line(QStringLiteral("protocol version"), QString::number(info.protocolVersion));
-        text += line(QStringLiteral("baud"), QString::number(info.baud));
-        text += line(QStringLiteral("device id"), deviceId);
-        text += line(QStringLiteral("firmware"), info.firmware);
-        text += line(QStringLiteral("max stream"), QString::number(info.maxStreamHz) + u" Hz");
-        text += line(QStringLiteral("tau_limit"), compactNumberText(info.tauLimit) + u" N·m");
-        text += line(QStringLiteral("parameters"), info.canSetParams()
-                                                       ? QStringLiteral("read and write")
-                                                       : QStringLiteral("not carried (legacy)"));
-        text += line(QStringLiteral("simulated"),
-                     info.simulated ? QStringLiteral("yes") : QStringLiteral("no"));
+        text += line(u"port"_s, info.port);
+        text += line(u"protocol"_s, wireProtocolName(info.protocol));
+        text += line(u"protocol version"_s, QString::number(info.protocolVersion));
+        text += line(u"baud"_s, QString::number(info.baud));
+        text += line(u"device id"_s, deviceId);
+        text += line(u"firmware"_s, info.firmware);
+        text += line(u"max stream"_s, QString::number(info.maxStreamHz) + u" Hz");
+        text += line(u"tau_limit"_s, compactNumberText(info.tauLimit) + u" N·m");
+        text += line(u"parameters"_s,
+                     info.canSetParams() ? u"read and write"_s : u"not carried (legacy)"_s);
+        text += line(u"simulated"_s, info.simulated ? u"yes"_s : u"no"_s);
         writeOut(text);
         return ExitSuccess;
     }

@@ -8,6 +8,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 QString text(std::string_view s)
@@ -47,7 +49,7 @@ QByteArray tuningOutput(const DeviceTuning &tuning, const DeviceInfo &info, bool
         return table.toUtf8();
     }
     Profile profile;
-    profile.name = QStringLiteral("Read from device");
+    profile.name = u"Read from device"_s;
     profile.notes = u"Device parameters read from " + info.port + u" (device id 0x" +
                     QString::number(info.deviceId, 16).rightJustified(8, u'0') +
                     u"); host settings are defaults.";
@@ -66,7 +68,7 @@ QString problemText(const std::vector<Violation> &violations)
     QStringList problems;
     for (const Violation &v : violations)
         problems << QString::fromStdString(v.message());
-    return problems.join(QStringLiteral("; "));
+    return problems.join(u"; "_s);
 }
 
 } // namespace hatpic::cli

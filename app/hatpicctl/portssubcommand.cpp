@@ -11,28 +11,28 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 class PortsSubcommand final : public Subcommand
 {
 public:
-    QString name() const override { return QStringLiteral("ports"); }
-    QString summary() const override { return QStringLiteral("List serial ports, and 'sim'."); }
-    QString synopsis() const override { return QStringLiteral("ports"); }
-    QString description() const override
-    {
-        return QStringLiteral(
-            "Prints one port per line: the name to pass to --port, a tab, and what the\n"
-            "system says about it. 'sim' (the simulated joystick) is always listed first.\n"
-            "Pseudo-terminals (such as the one hatpic-sim opens) are not listed.");
-    }
-    void addOptions(QCommandLineParser &parser) override { Q_UNUSED(parser); }
+    PortsSubcommand()
+        : Subcommand(
+              {.name = u"ports"_s,
+               .summary = u"List serial ports, and 'sim'."_s,
+               .synopsis = u"ports"_s,
+               .description =
+                   u"Prints one port per line: the name to pass to --port, a tab, and what the\n"
+                   "system says about it. 'sim' (the simulated joystick) is always listed first.\n"
+                   "Pseudo-terminals (such as the one hatpic-sim opens) are not listed."_s})
+    {}
 
-    int run(const QCommandLineParser &parser) override
+    int run(const QCommandLineParser &) override
     {
-        Q_UNUSED(parser);
-        QString text = QString::fromUtf16(kSimPortName) +
-                       QStringLiteral("\tsimulated joystick inside hatpicctl\n");
+        QString text =
+            QString::fromUtf16(kSimPortName) + u"\tsimulated joystick inside hatpicctl\n"_s;
         for (const QSerialPortInfo &port : QSerialPortInfo::availablePorts()) {
             QStringList about;
             if (!port.description().isEmpty())
@@ -41,7 +41,7 @@ public:
                 about << port.manufacturer();
             if (!port.serialNumber().isEmpty())
                 about << u"serial " + port.serialNumber();
-            text += port.systemLocation() + u'\t' + about.join(QStringLiteral(", ")) + u'\n';
+            text += port.systemLocation() + u'\t' + about.join(u", "_s) + u'\n';
         }
         writeOut(text);
         return ExitSuccess;

@@ -9,32 +9,30 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 class SaveSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("save"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Make the device keep its current parameters at power-up.");
-    }
-    QString synopsis() const override { return QStringLiteral("save --port PORT"); }
-    QString description() const override
-    {
-        return QStringLiteral("Sends SAVE_PARAMS. Prints nothing on stdout.\n\n") + portHelp();
-    }
+    SaveSubcommand()
+        : DeviceSubcommand(
+              {.name = u"save"_s,
+               .summary = u"Make the device keep its current parameters at power-up."_s,
+               .synopsis = u"save --port PORT"_s,
+               .description = u"Sends SAVE_PARAMS. Prints nothing on stdout."_s})
+    {}
 
 protected:
-    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &) override
     {
-        Q_UNUSED(parser);
         Outcome result;
         if (const int code = runner.runCommand(request::Save{}, &result); code)
             return code;
         if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
-        printNote(QStringLiteral("The device saved its parameters."));
+        printNote(u"The device saved its parameters."_s);
         return ExitSuccess;
     }
 };

@@ -21,6 +21,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 //! The blocks of a tuning that --set names fields of.
@@ -39,7 +41,7 @@ QString namesOf(const std::array<FieldSpec<Block>, N> &fields)
     QStringList names;
     for (const FieldSpec<Block> &spec : fields)
         names << QString::fromUtf8(spec.name.data(), static_cast<qsizetype>(spec.name.size()));
-    return names.join(QStringLiteral(", "));
+    return names.join(u", "_s);
 }
 
 QString allNames()
@@ -101,19 +103,13 @@ constexpr BlockWords kPassivityWords{u"passivity settings", u"passivity setting"
 class SetSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("set"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Push parameters from a profile or as NAME=VALUE.");
-    }
-    QString synopsis() const override
-    {
-        return QStringLiteral("set --port PORT (--profile FILE | --set NAME=VALUE …) [--json]");
-    }
-    QString description() const override
-    {
-        return QStringLiteral(
-                   "Sends SET_PARAMS and waits for the device's ACK, then prints the\n"
+    SetSubcommand()
+        : DeviceSubcommand(
+              {.name = u"set"_s,
+               .summary = u"Push parameters from a profile or as NAME=VALUE."_s,
+               .synopsis = u"set --port PORT (--profile FILE | --set NAME=VALUE …) [--json]"_s,
+               .description =
+                   u"Sends SET_PARAMS and waits for the device's ACK, then prints the\n"
                    "parameters read back (as 'get' does). With --set alone, the device's current\n"
                    "parameters are read first (GET_PARAMS) and only the named ones change;\n"
                    "with --profile, the profile's device parameters are the starting point and\n"
@@ -125,43 +121,36 @@ public:
                    "(their defaults when it has none) are sent whole. A device without the\n"
                    "capability refuses named fields (exit 2); a profile's non-default effects\n"
                    "are then not sent either, and its passivity block is left out with a note.\n"
-                   "Names: ") +
-               namesOf(kDeviceFields) + u"\nEffects: " + namesOf(kEffectFields) + u"\nPassivity: " +
-               namesOf(kPassivityFields) + u"\n\n" + portHelp();
-    }
+                   "Names: "_s +
+                   namesOf(kDeviceFields) + u"\nEffects: " + namesOf(kEffectFields) +
+                   u"\nPassivity: " + namesOf(kPassivityFields)})
+    {}
 
 protected:
     void addCommandOptions(QCommandLineParser &parser) override
     {
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("profile")},
-            QStringLiteral("Profile whose device parameters are sent."), QStringLiteral("FILE")));
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("set")},
-            QStringLiteral("Set one parameter, e.g. K_max=0.5 (SI units). Repeatable."),
-            QStringLiteral("NAME=VALUE")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
-                                            QStringLiteral("Print a profile (JSON).")));
+        parser.addOption({u"profile"_s, u"Profile whose device parameters are sent."_s, u"FILE"_s});
+        parser.addOption({u"set"_s, u"Set one parameter, e.g. K_max=0.5 (SI units). Repeatable."_s,
+                          u"NAME=VALUE"_s});
+        addJsonOption(parser);
     }
 
-    int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
+    int prepare(const QCommandLineParser &parser, DeviceOptions &) override
     {
-        Q_UNUSED(options);
         m_assignments.clear();
-        for (const QString &text : parser.values(QStringLiteral("set"))) {
+        for (const QString &text : parser.values(u"set"_s)) {
             const auto assignment = parseAssignment(text);
             if (!assignment)
                 return ExitBadUsage;
             m_assignments.push_back(*assignment);
         }
-        if (parser.isSet(QStringLiteral("profile"))) {
-            m_profile = loadProfile(parser.value(QStringLiteral("profile")));
+        if (parser.isSet(u"profile"_s)) {
+            m_profile = loadProfile(parser.value(u"profile"_s));
             if (!m_profile)
                 return ExitBadUsage;
         }
         if (!m_profile && m_assignments.empty()) {
-            printError(QStringLiteral(
-                "Nothing to set; give --profile FILE or at least one --set NAME=VALUE."));
+            printError(u"Nothing to set; give --profile FILE or at least one --set NAME=VALUE."_s);
             return ExitBadUsage;
         }
         // Without --set, the profile alone is already known to be valid; with --set on top
@@ -209,9 +198,9 @@ protected:
         }
         if (m_profile && !info.hasPassivity() &&
             !sameOnWire(m_profile->passivity, PassivityParams{}))
-            printNote(QStringLiteral("note: this device has no passivity controller (its "
-                                     "firmware does not announce the capability), so the "
-                                     "profile's device.passivity is not sent."));
+            printNote(u"note: this device has no passivity controller (its "
+                      "firmware does not announce the capability), so the "
+                      "profile's device.passivity is not sent."_s);
 
         DeviceTuning held; // what --set starts from without a profile: the device's own
         if (!m_profile) {
@@ -273,8 +262,7 @@ protected:
             noteAccepted(sent.passivity, back.passivity, kPassivityWords);
             shown = shown.updatedBy(back);
         }
-        writeOut(
-            tuningOutput(shownBlocks(shown, info), info, parser.isSet(QStringLiteral("json"))));
+        writeOut(tuningOutput(shownBlocks(shown, info), info, parser.isSet(u"json"_s)));
         return ExitSuccess;
     }
 
@@ -306,7 +294,7 @@ private:
             inForce.effects.reset();
         else if (step == CommandKind::SetPassivity)
             inForce.passivity.reset();
-        writeOut(tuningOutput(inForce, info, parser.isSet(QStringLiteral("json"))));
+        writeOut(tuningOutput(inForce, info, parser.isSet(u"json"_s)));
     }
 
     //! "The device accepted the …", after a warning when the read-back is not what was sent.

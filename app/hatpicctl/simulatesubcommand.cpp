@@ -15,6 +15,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 constexpr double kDefaultDuration = 2.0; //!< [s]
@@ -23,24 +25,17 @@ constexpr double kDefaultRate = 1000;    //!< [Hz]
 class SimulateSubcommand final : public Subcommand
 {
 public:
-    QString name() const override { return QStringLiteral("simulate"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Simulate the joystick's response to a hand input (CSV).");
-    }
-    QString synopsis() const override
-    {
-        return QStringLiteral("simulate --profile FILE --input SPEC [--duration S] [--rate HZ] "
-                              "[--ideal]");
-    }
-    QString description() const override
-    {
-        return QStringLiteral(
-                   "Runs the simulated joystick offline (no device, no clock) with the profile's\n"
-                   "device parameters and tau_limit, and prints one CSV row per control step:\n") +
-               QString::fromLatin1(sampleCsvHeader()) +
-               QStringLiteral(
-                   "\n"
+    SimulateSubcommand()
+        : Subcommand(
+              {.name = u"simulate"_s,
+               .summary = u"Simulate the joystick's response to a hand input (CSV)."_s,
+               .synopsis = u"simulate --profile FILE --input SPEC [--duration S] [--rate HZ] "
+                           "[--ideal]"_s,
+               .description =
+                   u"Runs the simulated joystick offline (no device, no clock) with the profile's\n"
+                   "device parameters and tau_limit, and prints one CSV row per control step:\n"_s +
+                   QString::fromLatin1(sampleCsvHeader()) +
+                   u"\n"
                    "from t = 0 (theta = theta0, omega = 0) to t = DURATION inclusive. v_ref and\n"
                    "p_ref come from the profile's host settings. tau is the measured interaction\n"
                    "torque; the operator's torque is -tau.\n"
@@ -58,59 +53,49 @@ public:
                    "reported in tau_fx.\n"
                    "\n"
                    "--ideal removes the servo's lag, tick quantisation and load-reading noise, so\n"
-                   "the rows are the model of docs/model.md (with its effects) alone.");
-    }
+                   "the rows are the model of docs/model.md (with its effects) alone."_s})
+    {}
     void addOptions(QCommandLineParser &parser) override
     {
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("profile")},
-                                            QStringLiteral("The profile (required)."),
-                                            QStringLiteral("FILE")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("input")},
-                                            QStringLiteral("The hand input (required)."),
-                                            QStringLiteral("SPEC")));
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("duration")},
-            QStringLiteral("Simulated time in seconds (default: 2)."), QStringLiteral("S")));
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("rate")},
-            QStringLiteral("Control rate in Hz, one row per step (default: 1000, at most "
-                           "65535)."),
-            QStringLiteral("HZ")));
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("ideal")},
-            QStringLiteral("No servo lag, quantisation or noise: the model alone.")));
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("noise")},
-            QStringLiteral("Load-reading noise std-dev in N·m (default: 0; ignored with "
-                           "--ideal)."),
-            QStringLiteral("NM")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("seed")},
-                                            QStringLiteral("Noise seed (default: 1)."),
-                                            QStringLiteral("N")));
+        parser.addOption(QCommandLineOption(u"profile"_s, u"The profile (required)."_s, u"FILE"_s));
+        parser.addOption({u"input"_s, u"The hand input (required)."_s, u"SPEC"_s});
+        parser.addOption({u"duration"_s, u"Simulated time in seconds (default: 2)."_s, u"S"_s});
+        parser.addOption(
+            QCommandLineOption(u"rate"_s,
+                               u"Control rate in Hz, one row per step (default: 1000, at most "
+                               "65535)."_s,
+                               u"HZ"_s));
+        parser.addOption({u"ideal"_s, u"No servo lag, quantisation or noise: the model alone."_s});
+        parser.addOption(
+            QCommandLineOption(u"noise"_s,
+                               u"Load-reading noise std-dev in N·m (default: 0; ignored with "
+                               "--ideal)."_s,
+                               u"NM"_s));
+        parser.addOption(QCommandLineOption(u"seed"_s, u"Noise seed (default: 1)."_s, u"N"_s));
     }
 
     int run(const QCommandLineParser &parser) override
     {
-        if (!parser.isSet(QStringLiteral("profile")) || !parser.isSet(QStringLiteral("input"))) {
-            printError(QStringLiteral("simulate needs --profile FILE and --input SPEC."));
+        if (!parser.isSet(u"profile"_s) || !parser.isSet(u"input"_s)) {
+            printError(u"simulate needs --profile FILE and --input SPEC."_s);
             return ExitBadUsage;
         }
         OfflineSimulationConfig config;
         config.duration = kDefaultDuration;
         config.rateHz = kDefaultRate;
-        config.ideal = parser.isSet(QStringLiteral("ideal"));
+        config.ideal = parser.isSet(u"ideal"_s);
 
         QString error;
-        const auto hand = HandInput::parse(parser.value(QStringLiteral("input")), &error);
+        const auto hand = HandInput::parse(parser.value(u"input"_s), &error);
         if (!hand) {
             printError(asSentence(error));
             return ExitBadUsage;
         }
         config.hand = *hand;
 
-        for (auto [option, target] : {std::pair{QStringLiteral("duration"), &config.duration},
-                                      std::pair{QStringLiteral("rate"), &config.rateHz},
-                                      std::pair{QStringLiteral("noise"), &config.noise}}) {
+        for (auto [option, target] :
+             {std::pair{u"duration"_s, &config.duration}, std::pair{u"rate"_s, &config.rateHz},
+              std::pair{u"noise"_s, &config.noise}}) {
             if (!parser.isSet(option))
                 continue;
             bool ok = false;
@@ -121,18 +106,18 @@ public:
                 return ExitBadUsage;
             }
         }
-        if (parser.isSet(QStringLiteral("seed"))) {
+        if (parser.isSet(u"seed"_s)) {
             bool ok = false;
-            config.seed = parser.value(QStringLiteral("seed")).toULongLong(&ok);
+            config.seed = parser.value(u"seed"_s).toULongLong(&ok);
             if (!ok) {
-                printError(u"--seed " + unreadNumber(QStringLiteral("a whole number from 0 to "
-                                                                    "18446744073709551615"),
-                                                     parser.value(QStringLiteral("seed")), true));
+                printError(u"--seed " + unreadNumber(u"a whole number from 0 to "
+                                                     "18446744073709551615"_s,
+                                                     parser.value(u"seed"_s), true));
                 return ExitBadUsage;
             }
         }
 
-        const auto profile = loadProfile(parser.value(QStringLiteral("profile")));
+        const auto profile = loadProfile(parser.value(u"profile"_s));
         if (!profile)
             return ExitBadUsage;
         config.device = profile->device;

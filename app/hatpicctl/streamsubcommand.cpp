@@ -30,90 +30,77 @@ constexpr int kDefaultRateHz = 1000;
 
 QString milliseconds(double ms)
 {
-    return ms < 0 ? QStringLiteral("–") : QString::number(ms, 'f', 3) + u" ms";
+    return ms < 0 ? u"–"_s : QString::number(ms, 'f', 3) + u" ms";
 }
 
 class StreamSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("stream"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Stream telemetry (CSV to stdout, or a recording); link stats.");
-    }
-    QString synopsis() const override
-    {
-        return QStringLiteral(
-            "stream --port PORT [--rate HZ] [--duration S] [--csv FILE [--force]]");
-    }
-    QString description() const override
-    {
-        return QStringLiteral(
-                   "Streams telemetry for --duration seconds (default: until Ctrl+C).\n"
-                   "Without --csv every sample goes to stdout as CSV with the header\n") +
-               QString::fromLatin1(sampleCsvHeader()) +
-               QStringLiteral(
-                   ".\n"
+    StreamSubcommand()
+        : DeviceSubcommand(
+              {.name = u"stream"_s,
+               .summary = u"Stream telemetry (CSV to stdout, or a recording); link stats."_s,
+               .synopsis =
+                   u"stream --port PORT [--rate HZ] [--duration S] [--csv FILE [--force]]"_s,
+               .description =
+                   u"Streams telemetry for --duration seconds (default: until Ctrl+C).\n"
+                   "Without --csv every sample goes to stdout as CSV with the header\n"_s +
+                   QString::fromLatin1(sampleCsvHeader()) +
+                   u".\n"
                    "With --csv FILE the samples are recorded to FILE (the tuner's recording\n"
                    "format, metadata in FILE's .json sibling) and stdout stays empty. An\n"
                    "existing FILE or .json is never overwritten without --force.\n"
                    "Ctrl+C, SIGTERM and SIGHUP end the stream cleanly (recording closed).\n"
                    "At the end the link statistics go to stderr: frames/s, frames, frames\n"
-                   "missing by sequence number, decoder drops by reason, round-trip time.\n\n") +
-               portHelp();
-    }
+                   "missing by sequence number, decoder drops by reason, round-trip time."_s})
+    {}
 
 protected:
     void addCommandOptions(QCommandLineParser &parser) override
     {
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("rate")},
-            QStringLiteral("Telemetry rate to request (default: 1000); the device may clamp "
-                           "it."),
-            QStringLiteral("HZ"), QString::number(kDefaultRateHz)));
-        parser.addOption(QCommandLineOption(
-            QStringList{QStringLiteral("duration")},
-            QStringLiteral("How long to stream, in seconds (default: until interrupted)."),
-            QStringLiteral("S")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("csv")},
-                                            QStringLiteral("Record to FILE instead of stdout."),
-                                            QStringLiteral("FILE")));
         parser.addOption(
-            QCommandLineOption(QStringList{QStringLiteral("force")},
-                               QStringLiteral("Overwrite FILE and its .json if they exist.")));
+            QCommandLineOption(u"rate"_s,
+                               u"Telemetry rate to request (default: 1000); the device may clamp "
+                               "it."_s,
+                               u"HZ"_s, QString::number(kDefaultRateHz)));
+        parser.addOption({u"duration"_s,
+                          u"How long to stream, in seconds (default: until interrupted)."_s,
+                          u"S"_s});
+        parser.addOption({u"csv"_s, u"Record to FILE instead of stdout."_s, u"FILE"_s});
+        parser.addOption({u"force"_s, u"Overwrite FILE and its .json if they exist."_s});
     }
 
     int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
     {
         bool ok = false;
-        const int rate = parser.value(QStringLiteral("rate")).toInt(&ok);
+        const int rate = parser.value(u"rate"_s).toInt(&ok);
         if (!ok || rate < 1 || rate > 65535) {
             printError(u"--rate must be a whole number of Hz from 1 to 65535, got '" +
-                       parser.value(QStringLiteral("rate")) + u"'.");
+                       parser.value(u"rate"_s) + u"'.");
             return ExitBadUsage;
         }
         options.connect.streamRateHz = static_cast<quint16>(rate);
         m_duration = 0;
-        if (parser.isSet(QStringLiteral("duration"))) {
-            m_duration = parser.value(QStringLiteral("duration")).toDouble(&ok);
+        if (parser.isSet(u"duration"_s)) {
+            m_duration = parser.value(u"duration"_s).toDouble(&ok);
             if (!ok || !std::isfinite(m_duration) || m_duration <= 0 || m_duration > 1e6) {
                 printError(u"--duration must be a number of seconds above 0, got '" +
-                           parser.value(QStringLiteral("duration")) + u"'.");
+                           parser.value(u"duration"_s) + u"'.");
                 return ExitBadUsage;
             }
         }
-        m_csvPath = parser.value(QStringLiteral("csv"));
-        m_force = parser.isSet(QStringLiteral("force"));
-        if (parser.isSet(QStringLiteral("csv")) && m_csvPath.isEmpty()) {
-            printError(QStringLiteral("--csv needs a file name; without --csv the samples go to "
-                                      "stdout."));
+        m_csvPath = parser.value(u"csv"_s);
+        m_force = parser.isSet(u"force"_s);
+        if (parser.isSet(u"csv"_s) && m_csvPath.isEmpty()) {
+            printError(u"--csv needs a file name; without --csv the samples go to "
+                       "stdout."_s);
             return ExitBadUsage;
         }
         // Everything about the files is checked before the port is opened or a file touched.
         if (!m_csvPath.isEmpty()) {
             if (const QString problem =
                     outputTargetProblem({m_csvPath, recordingMetadataPath(m_csvPath)}, m_force,
-                                        QStringLiteral("a recording needs files of its own"));
+                                        u"a recording needs files of its own"_s);
                 !problem.isEmpty()) {
                 printError(problem);
                 return ExitBadUsage;
@@ -122,9 +109,8 @@ protected:
         return ExitSuccess;
     }
 
-    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &) override
     {
-        Q_UNUSED(parser);
         DeviceClient &client = runner.client();
         const DeviceInfo info = client.deviceInfo();
 
@@ -160,7 +146,7 @@ protected:
                                  if (notice.kind == SessionNotice::Kind::RecordingNeedsDevice)
                                      refused = notice;
                              });
-            client.startRecording(m_csvPath, QStringLiteral("hatpicctl stream"));
+            client.startRecording(m_csvPath, u"hatpicctl stream"_s);
             runner.runFor(kRecordingStartWaitS, [&] {
                 const RecordingStatus status = client.recordingStatus();
                 return status.active || !status.error.isEmpty() || refused;
@@ -302,8 +288,8 @@ private:
             reasons << v2::dropReasonName(static_cast<v2::DropReason>(r)) + u' ' +
                            QString::number(stats.decoderDrops[static_cast<std::size_t>(r)]);
         }
-        QString drops = QString::number(stats.totalDecoderDrops()) + u" (" +
-                        reasons.join(QStringLiteral(", ")) + u')';
+        QString drops =
+            QString::number(stats.totalDecoderDrops()) + u" (" + reasons.join(u", "_s) + u')';
         if (info.protocol == WireProtocol::Legacy)
             drops += u", legacy malformed " + QString::number(stats.legacyMalformed);
         text += line(u"decoder drops", drops);

@@ -11,27 +11,29 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 QString overview(const std::vector<std::unique_ptr<Subcommand>> &commands)
 {
-    QString text = QStringLiteral(
-        "Usage: hatpicctl COMMAND [options]\n"
+    QString text =
+        u"Usage: hatpicctl COMMAND [options]\n"
         "\n"
         "Talks to a HATPIC joystick (or the simulated one), and computes the haptic model\n"
         "offline. Data (CSV, JSON, tables) goes to stdout, messages to stderr.\n"
         "\n"
-        "Commands:\n");
+        "Commands:\n"_s;
     qsizetype width = 0; // the longest name, then a gap of two
     for (const auto &command : commands)
-        width = std::max(width, command->name().size());
+        width = std::max(width, command->text().name.size());
     for (const auto &command : commands)
-        text += u"  " + command->name().leftJustified(width + 2) + command->summary() + u'\n';
-    text += QStringLiteral(
-        "\n"
-        "Run 'hatpicctl COMMAND --help' for the options of one command.\n"
-        "Exit codes: 0 success, 2 device rejected, 3 no device / timeout / link lost,\n"
-        "4 bad usage or bad file.\n");
+        text +=
+            u"  " + command->text().name.leftJustified(width + 2) + command->text().summary + u'\n';
+    text += u"\n"
+            "Run 'hatpicctl COMMAND --help' for the options of one command.\n"
+            "Exit codes: 0 success, 2 device rejected, 3 no device / timeout / link lost,\n"
+            "4 bad usage or bad file.\n"_s;
     return text;
 }
 
@@ -40,10 +42,10 @@ QString overview(const std::vector<std::unique_ptr<Subcommand>> &commands)
 QString commandHelp(const Subcommand &command, const QCommandLineParser &parser)
 {
     QString options = parser.helpText();
-    const qsizetype optionsStart = options.indexOf(QStringLiteral("Options:"));
+    const qsizetype optionsStart = options.indexOf(u"Options:"_s);
     options = optionsStart >= 0 ? options.mid(optionsStart) : QString();
-    return u"Usage: hatpicctl " + command.synopsis() + u"\n\n" + command.description() + u"\n\n" +
-           options;
+    return u"Usage: hatpicctl " + command.text().synopsis + u"\n\n" + command.text().description +
+           u"\n\n" + options;
 }
 
 } // namespace
@@ -80,13 +82,13 @@ int dispatch(const QStringList &arguments)
         return ExitSuccess;
     }
     if (first.isEmpty()) {
-        printError(QStringLiteral("No command given; run 'hatpicctl --help' for the list."));
+        printError(u"No command given; run 'hatpicctl --help' for the list."_s);
         return ExitBadUsage;
     }
 
     Subcommand *command = nullptr;
     for (const auto &candidate : commands) {
-        if (candidate->name() == first)
+        if (candidate->text().name == first)
             command = candidate.get();
     }
     if (!command) {
@@ -97,8 +99,7 @@ int dispatch(const QStringList &arguments)
 
     QCommandLineParser parser;
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
-                                  QStringLiteral("Show this help and exit."));
+    const QCommandLineOption help(QStringList{u"h"_s, u"help"_s}, u"Show this help and exit."_s);
     parser.addOption(help);
     command->addOptions(parser);
 
@@ -107,21 +108,21 @@ int dispatch(const QStringList &arguments)
     commandArguments.prepend(arguments.value(0));
     if (!parser.parse(commandArguments)) {
         printError(asSentence(parser.errorText()).chopped(1) + u"; run 'hatpicctl " +
-                   command->name() + u" --help' for the options.");
+                   command->text().name + u" --help' for the options.");
         return ExitBadUsage;
     }
     if (parser.isSet(help)) {
         writeOut(commandHelp(*command, parser));
         return ExitSuccess;
     }
-    if (!command->acceptsPositional() && !parser.positionalArguments().isEmpty()) {
+    if (!command->text().acceptsPositional && !parser.positionalArguments().isEmpty()) {
         printError(u"Unexpected argument '" + parser.positionalArguments().constFirst() +
-                   u"'; run 'hatpicctl " + command->name() + u" --help' for the options.");
+                   u"'; run 'hatpicctl " + command->text().name + u" --help' for the options.");
         return ExitBadUsage;
     }
     const int code = command->run(parser);
     if (!flushOut() && code == ExitSuccess) {
-        printError(QStringLiteral("Cannot write to standard output."));
+        printError(u"Cannot write to standard output."_s);
         return ExitBadUsage;
     }
     return code;

@@ -11,22 +11,30 @@ class QCommandLineParser;
 
 namespace hatpic::cli {
 
+//! What `hatpicctl --help` and `hatpicctl NAME --help` say of a subcommand.
+struct SubcommandText
+{
+    QString name;                   //!< "curve"
+    QString summary;                //!< one line for `hatpicctl --help`
+    QString synopsis;               //!< "curve --profile FILE [--from RAD] …"
+    QString description;            //!< paragraphs under the synopsis in `NAME --help`
+    bool acceptsPositional = false; //!< free arguments besides options (validate's FILE)
+};
+
 class Subcommand
 {
 public:
+    explicit Subcommand(SubcommandText text) : m_text(std::move(text)) {}
     virtual ~Subcommand() = default;
 
-    virtual QString name() const = 0;     //!< "curve"
-    virtual QString summary() const = 0;  //!< one line for `hatpicctl --help`
-    virtual QString synopsis() const = 0; //!< "curve --profile FILE [--from RAD] …"
-    //! Paragraphs shown by `hatpicctl NAME --help` under the synopsis.
-    virtual QString description() const = 0;
+    const SubcommandText &text() const { return m_text; }
     //! Registers the subcommand's options (the dispatcher adds --help itself).
-    virtual void addOptions(QCommandLineParser &parser) = 0;
-    //! Whether free arguments (besides options) are accepted; validate takes a FILE.
-    virtual bool acceptsPositional() const { return false; }
+    virtual void addOptions(QCommandLineParser &parser) { Q_UNUSED(parser); }
     //! Runs with parsed arguments; returns an ExitCode. Failures print one sentence first.
     virtual int run(const QCommandLineParser &parser) = 0;
+
+private:
+    SubcommandText m_text;
 };
 
 //! Every subcommand, in the order `hatpicctl --help` lists them.

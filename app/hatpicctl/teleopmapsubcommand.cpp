@@ -72,50 +72,51 @@ QString cell(double v, int width, int precision = 3)
 class TeleopMapSubcommand final : public Subcommand
 {
 public:
-    QString name() const override { return u"teleop-map"_s; }
-    QString summary() const override
-    {
-        return u"Map where the teleoperation loop settles: one-way delay × feedback gain."_s;
-    }
-    QString synopsis() const override
-    {
-        return u"teleop-map [--profile FILE] [--delays LIST] [--gains LIST] "
-               u"[--pc LIST | --vary FIELD=LIST] [--hand SPEC] [--duration S] [--seed N] [--jitter "
-               u"S] "
-               u"[--loss P] [--threads N] [--csv FILE] [--svg FILE] [--png FILE] [--force]"_s;
-    }
-    QString description() const override
-    {
-        return u"Runs robot.md's teleoperation loop in process, on virtual time, for every\n"
-               u"one-way delay and feedback gain (and every value of one tuning field): the\n"
-               u"simulated joystick with the profile's tuning and the hand of --hand, the\n"
-               u"bridge (--component force.x at the gain, its 100 Hz twist), the network's\n"
-               u"delay, jitter and loss both ways, and hatpic-robot-sim's robot (200 Hz\n"
-               u"wrench). No device, no ROS. Prints one row per cell:\n"
-               u"  settled   1 when every θ of the last 2 s lies within 0.003 rad of robot.md's\n"
-               u"            equilibrium\n"
-               u"  settle_s  from the first cycle with tau_ext ≠ 0 to the last one with\n"
-               u"            |θ − θ_eq| > 0.003 rad (passivity.md)\n"
-               u"  p2p       θ's peak to peak over the last 2 s [rad]\n"
-               u"  rms_tau_pc_ratio, dissipated_j  the passivity controller's price: RMS(tau_pc)\n"
-               u"            / RMS(tau_ext) from contact to rest, the energy it took out [J]\n"
-               u"\n"
-               u"LIST is comma-separated items, each a number, FROM:TO:STEP (FROM, FROM+STEP,\n"
-               u"… up to TO) or FROM:TO/N (N values from FROM to TO): --delays 0:0.3/10.\n"
-               u"--pc LIST maps each pc_damping_max (the passivity controller's most damping;\n"
-               u"0 = off) side by side: --pc 0,0.5 compares the controller off and on.\n"
-               u"--vary FIELD=LIST does so for any tuning field (a device parameter, host\n"
-               u"setting or passivity parameter by its profile name, e.g. M_adm=0.01,0.05).\n"
-               u"\n"
-               u"--csv FILE writes the table, --svg FILE the chart (settled cells coloured by\n"
-               u"settle time, the others grey and crossed), --png FILE the same chart at twice\n"
-               u"its size; an existing file needs --force.\n"
-               u"The cells run on --threads threads (default: one per core)."_s;
-    }
+    TeleopMapSubcommand()
+        : Subcommand(
+              {.name = u"teleop-map"_s,
+               .summary =
+                   u"Map where the teleoperation loop settles: one-way delay × feedback gain."_s,
+               .synopsis =
+                   u"teleop-map [--profile FILE] [--delays LIST] [--gains LIST] "
+                   u"[--pc LIST | --vary FIELD=LIST] [--hand SPEC] [--duration S] [--seed N] "
+                   u"[--jitter "
+                   u"S] "
+                   u"[--loss P] [--threads N] [--csv FILE] [--svg FILE] [--png FILE] [--force]"_s,
+               .description =
+                   u"Runs robot.md's teleoperation loop in process, on virtual time, for every\n"
+                   u"one-way delay and feedback gain (and every value of one tuning field): the\n"
+                   u"simulated joystick with the profile's tuning and the hand of --hand, the\n"
+                   u"bridge (--component force.x at the gain, its 100 Hz twist), the network's\n"
+                   u"delay, jitter and loss both ways, and hatpic-robot-sim's robot (200 Hz\n"
+                   u"wrench). No device, no ROS. Prints one row per cell:\n"
+                   u"  settled   1 when every θ of the last 2 s lies within 0.003 rad of "
+                   u"robot.md's\n"
+                   u"            equilibrium\n"
+                   u"  settle_s  from the first cycle with tau_ext ≠ 0 to the last one with\n"
+                   u"            |θ − θ_eq| > 0.003 rad (passivity.md)\n"
+                   u"  p2p       θ's peak to peak over the last 2 s [rad]\n"
+                   u"  rms_tau_pc_ratio, dissipated_j  the passivity controller's price: "
+                   u"RMS(tau_pc)\n"
+                   u"            / RMS(tau_ext) from contact to rest, the energy it took out [J]\n"
+                   u"\n"
+                   u"LIST is comma-separated items, each a number, FROM:TO:STEP (FROM, FROM+STEP,\n"
+                   u"… up to TO) or FROM:TO/N (N values from FROM to TO): --delays 0:0.3/10.\n"
+                   u"--pc LIST maps each pc_damping_max (the passivity controller's most damping;\n"
+                   u"0 = off) side by side: --pc 0,0.5 compares the controller off and on.\n"
+                   u"--vary FIELD=LIST does so for any tuning field (a device parameter, host\n"
+                   u"setting or passivity parameter by its profile name, e.g. M_adm=0.01,0.05).\n"
+                   u"\n"
+                   u"--csv FILE writes the table, --svg FILE the chart (settled cells coloured by\n"
+                   u"settle time, the others grey and crossed), --png FILE the same chart at "
+                   u"twice\n"
+                   u"its size; an existing file needs --force.\n"
+                   u"The cells run on --threads threads (default: one per core)."_s})
+    {}
     void addOptions(QCommandLineParser &parser) override
     {
         const auto add = [&](const QString &name, const QString &help, const QString &value) {
-            parser.addOption(QCommandLineOption(QStringList{name}, help, value));
+            parser.addOption({QStringList{name}, help, value});
         };
         add(u"profile"_s, u"The tuning (default: the defaults)."_s, u"FILE"_s);
         add(u"delays"_s,
@@ -136,8 +137,7 @@ public:
         add(u"csv"_s, u"Write the table as CSV."_s, u"FILE"_s);
         add(u"svg"_s, u"Write the chart as SVG."_s, u"FILE"_s);
         add(u"png"_s, u"Write the chart as PNG."_s, u"FILE"_s);
-        parser.addOption(QCommandLineOption(QStringList{u"force"_s},
-                                            u"Overwrite --csv, --svg and --png files."_s));
+        parser.addOption({u"force"_s, u"Overwrite --csv, --svg and --png files."_s});
     }
 
     int run(const QCommandLineParser &parser) override
@@ -264,8 +264,7 @@ public:
 
         printTable(cells, spec.field.name);
         flushOut(); // the table before the note, on a terminal showing both
-        printNote(QStringLiteral("%1 cells of %2 s in %3 s on %4 threads.")
-                      .arg(cells.size())
+        printNote(u"%1 cells of %2 s in %3 s on %4 threads."_s.arg(cells.size())
                       .arg(compactNumberText(spec.base.duration))
                       .arg(seconds, 0, 'f', 2)
                       .arg(spec.threads));

@@ -12,6 +12,8 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 // Figures in warnings are for a person: three significant digits.
@@ -34,37 +36,33 @@ QStringList floatRoundingErrors(const DeviceParams &params)
 class ValidateSubcommand final : public Subcommand
 {
 public:
-    QString name() const override { return QStringLiteral("validate"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Check a profile: OK, or every error; warnings either way.");
-    }
-    QString synopsis() const override { return QStringLiteral("validate FILE"); }
-    QString description() const override
-    {
-        return QStringLiteral(
-            "Reads the profile as the tuner would. A usable profile prints OK on stdout and\n"
-            "exits with 0; otherwise every error goes to stderr and the exit code is 4.\n"
-            "Warnings (ignored keys, a re-centering torque the actuator cannot render,\n"
-            "a lightly damped knob) go to stderr in both cases. --profile FILE is accepted\n"
-            "as well.");
-    }
-    bool acceptsPositional() const override { return true; }
+    ValidateSubcommand()
+        : Subcommand(
+              {.name = u"validate"_s,
+               .summary = u"Check a profile: OK, or every error; warnings either way."_s,
+               .synopsis = u"validate FILE"_s,
+               .description =
+                   u"Reads the profile as the tuner would. A usable profile prints OK on stdout "
+                   u"and\n"
+                   "exits with 0; otherwise every error goes to stderr and the exit code is 4.\n"
+                   "Warnings (ignored keys, a re-centering torque the actuator cannot render,\n"
+                   "a lightly damped knob) go to stderr in both cases. --profile FILE is accepted\n"
+                   "as well."_s,
+               .acceptsPositional = true})
+    {}
     void addOptions(QCommandLineParser &parser) override
     {
-        parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The profile."));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("profile")},
-                                            QStringLiteral("The profile (instead of FILE)."),
-                                            QStringLiteral("FILE")));
+        parser.addPositionalArgument(u"FILE"_s, u"The profile."_s);
+        parser.addOption({u"profile"_s, u"The profile (instead of FILE)."_s, u"FILE"_s});
     }
 
     int run(const QCommandLineParser &parser) override
     {
         QStringList files = parser.positionalArguments();
-        if (parser.isSet(QStringLiteral("profile")))
-            files << parser.value(QStringLiteral("profile"));
+        if (parser.isSet(u"profile"_s))
+            files << parser.value(u"profile"_s);
         if (files.size() != 1) {
-            printError(QStringLiteral("validate takes exactly one profile FILE."));
+            printError(u"validate takes exactly one profile FILE."_s);
             return ExitBadUsage;
         }
         const QString path = files.front();

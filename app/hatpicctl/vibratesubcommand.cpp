@@ -17,65 +17,52 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 class VibrateSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("vibrate"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Play a vibration cue on the knob (devices with effects).");
-    }
-    QString synopsis() const override
-    {
-        return QStringLiteral("vibrate --port PORT --amplitude NM --frequency HZ --duration S");
-    }
-    QString description() const override
-    {
-        return QStringLiteral(
-                   "Sends VIBRATE and waits for the device's ACK: the knob renders\n"
+    VibrateSubcommand()
+        : DeviceSubcommand(
+              {.name = u"vibrate"_s,
+               .summary = u"Play a vibration cue on the knob (devices with effects)."_s,
+               .synopsis = u"vibrate --port PORT --amplitude NM --frequency HZ --duration S"_s,
+               .description =
+                   u"Sends VIBRATE and waits for the device's ACK: the knob renders\n"
                    "a·sin(2π·f·t) for d seconds on top of everything else. The amplitude is at\n"
                    "most the device's tau_limit [N·m], the frequency 1 … 500 Hz and below half\n"
                    "the device's control rate (only the device knows it: it refuses with exit\n"
                    "2), the duration 0 … 10 s. Amplitude 0 stops a running cue. A new cue\n"
                    "replaces the running one. Fire and forget: the command returns once the\n"
                    "device has acknowledged, not when the cue ends. The published firmware and\n"
-                   "devices without the effects capability cannot vibrate (exit 2).\n\n") +
-               portHelp();
-    }
+                   "devices without the effects capability cannot vibrate (exit 2)."_s})
+    {}
 
 protected:
     void addCommandOptions(QCommandLineParser &parser) override
     {
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("amplitude")},
-                                            QStringLiteral("Amplitude a in N·m (required)."),
-                                            QStringLiteral("NM")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("frequency")},
-                                            QStringLiteral("Frequency f in Hz (required)."),
-                                            QStringLiteral("HZ")));
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("duration")},
-                                            QStringLiteral("Duration d in s (required)."),
-                                            QStringLiteral("S")));
+        parser.addOption({u"amplitude"_s, u"Amplitude a in N·m (required)."_s, u"NM"_s});
+        parser.addOption({u"frequency"_s, u"Frequency f in Hz (required)."_s, u"HZ"_s});
+        parser.addOption({u"duration"_s, u"Duration d in s (required)."_s, u"S"_s});
     }
 
-    int prepare(const QCommandLineParser &parser, DeviceOptions &options) override
+    int prepare(const QCommandLineParser &parser, DeviceOptions &) override
     {
-        Q_UNUSED(options);
-        const std::array options3 = {std::pair{QStringLiteral("amplitude"), &m_cue.amplitude},
-                                     std::pair{QStringLiteral("frequency"), &m_cue.frequency},
-                                     std::pair{QStringLiteral("duration"), &m_cue.duration}};
+        const std::array options3 = {std::pair{u"amplitude"_s, &m_cue.amplitude},
+                                     std::pair{u"frequency"_s, &m_cue.frequency},
+                                     std::pair{u"duration"_s, &m_cue.duration}};
         for (const auto &[option, target] : options3) {
             if (!parser.isSet(option)) {
-                printError(QStringLiteral(
-                    "vibrate needs --amplitude NM, --frequency HZ and --duration S."));
+                printError(u"vibrate needs --amplitude NM, --frequency HZ and --duration S."_s);
                 return ExitBadUsage;
             }
             bool ok = false;
             *target = parser.value(option).toDouble(&ok);
             if (!ok) {
                 printError(u"--" + option + u' ' +
-                           unreadNumber(QStringLiteral("a number"), parser.value(option)));
+                           unreadNumber(u"a number"_s, parser.value(option)));
                 return ExitBadUsage;
             }
         }
@@ -85,7 +72,7 @@ protected:
         const auto violations = validate(m_cue, std::numeric_limits<double>::infinity(),
                                          std::numeric_limits<double>::infinity());
         if (!violations.empty()) {
-            printError(QStringLiteral("The vibration cue is not valid; nothing was sent:"));
+            printError(u"The vibration cue is not valid; nothing was sent:"_s);
             for (const Violation &violation : violations)
                 printNote(u"  " + QString::fromStdString(violation.message()));
             return ExitBadUsage;
@@ -93,9 +80,8 @@ protected:
         return ExitSuccess;
     }
 
-    int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
+    int runConnected(DeviceRunner &runner, const QCommandLineParser &) override
     {
-        Q_UNUSED(parser);
         Outcome result;
         const Vibration cue = m_cue;
         if (const int code = runner.runCommand(request::Vibrate{cue}, &result); code)

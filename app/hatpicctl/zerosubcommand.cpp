@@ -12,31 +12,25 @@
 
 namespace hatpic::cli {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 
 class ZeroSubcommand final : public DeviceSubcommand
 {
 public:
-    QString name() const override { return QStringLiteral("zero"); }
-    QString summary() const override
-    {
-        return QStringLiteral("Make the current knob angle the center (theta0).");
-    }
-    QString synopsis() const override { return QStringLiteral("zero --port PORT [--json]"); }
-    QString description() const override
-    {
-        return QStringLiteral(
-                   "Sends ZERO, then prints the parameters read back (as 'get' does), whose\n"
-                   "theta0 is the new center. Not saved across power-up until 'save'.\n\n") +
-               portHelp();
-    }
+    ZeroSubcommand()
+        : DeviceSubcommand(
+              {.name = u"zero"_s,
+               .summary = u"Make the current knob angle the center (theta0)."_s,
+               .synopsis = u"zero --port PORT [--json]"_s,
+               .description =
+                   u"Sends ZERO, then prints the parameters read back (as 'get' does), whose\n"
+                   "theta0 is the new center. Not saved across power-up until 'save'."_s})
+    {}
 
 protected:
-    void addCommandOptions(QCommandLineParser &parser) override
-    {
-        parser.addOption(QCommandLineOption(QStringList{QStringLiteral("json")},
-                                            QStringLiteral("Print a profile (JSON).")));
-    }
+    void addCommandOptions(QCommandLineParser &parser) override { addJsonOption(parser); }
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
@@ -48,7 +42,7 @@ protected:
         const DeviceParams params = result.received.params.value_or(DeviceParams{});
         printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");
         writeOut(tuningOutput(DeviceTuning{params, std::nullopt}, runner.client().deviceInfo(),
-                              parser.isSet(QStringLiteral("json"))));
+                              parser.isSet(u"json"_s)));
         return ExitSuccess;
     }
 };

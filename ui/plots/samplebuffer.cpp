@@ -132,30 +132,12 @@ double SampleBuffer::lastTime() const
 
 qsizetype SampleBuffer::lowerBound(double t) const
 {
-    qsizetype lo = 0;
-    qsizetype hi = m_size;
-    while (lo < hi) {
-        const qsizetype mid = lo + (hi - lo) / 2;
-        if (time(mid) < t)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
+    return partitionPoint([&](qsizetype i) { return time(i) < t; });
 }
 
 qsizetype SampleBuffer::upperBound(double t) const
 {
-    qsizetype lo = 0;
-    qsizetype hi = m_size;
-    while (lo < hi) {
-        const qsizetype mid = lo + (hi - lo) / 2;
-        if (time(mid) <= t)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
+    return partitionPoint([&](qsizetype i) { return time(i) <= t; });
 }
 
 qsizetype SampleBuffer::nearest(double t) const

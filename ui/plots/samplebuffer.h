@@ -10,8 +10,10 @@
 #include "plots/channel.h"
 #include "telemetry/sample.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
+#include <ranges>
 #include <vector>
 
 namespace hatpic {
@@ -78,6 +80,12 @@ public:
     quint64 restartCount() const { return m_restarts; }        //!< clock restarts shifted
 
 private:
+    //! The first index at which `before` is false; it holds for a prefix (times only grow).
+    template<class Before> qsizetype partitionPoint(Before before) const
+    {
+        const auto indices = std::views::iota(qsizetype(0), m_size);
+        return std::ranges::partition_point(indices, before) - indices.begin();
+    }
     qsizetype slot(qsizetype index) const
     {
         const qsizetype s = m_head + index;
