@@ -268,6 +268,7 @@ std::optional<AppOptions> parseAppOptions(const QStringList &arguments, QString 
 
     AppOptions options;
     options.connect.autoReconnect = true;
+    options.connect.detectForMs = ConnectOptions::kDetectBootMs;
     // ROS_DOMAIN_ID, unless --domain (or the config's "domain") says otherwise: a bad variable
     // is refused only when it is the one that counts.
     std::string domainProblem;

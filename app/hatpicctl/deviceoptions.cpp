@@ -54,6 +54,8 @@ std::optional<DeviceOptions> deviceOptions(const QCommandLineParser &parser)
         return std::nullopt;
     }
     options.timeoutS = timeout;
+    // Detection keeps trying while hatpicctl waits: an ESP32 the port's DTR reset boots first.
+    options.connect.detectForMs = static_cast<int>(timeout * 1000);
     return options;
 }
 

@@ -4,6 +4,7 @@
 #include "session/commandqueue.h"
 #include "session/linkstatistics.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace hatpic {
@@ -67,9 +68,8 @@ void ProtocolDetector::start(ByteLink *link, const ConnectOptions &options)
 {
     m_link = link;
     m_options = options;
-    m_legacy = legacy::Decoder();
-    m_legacyFrames = 0;
     m_helloSeq.reset();
+    m_giveUp = QDeadlineTimer(std::max(0, options.detectForMs));
     switch (m_options.protocol) {
     case ProtocolChoice::Legacy:
         Q_EMIT progress(detail(state::UsingLegacy{}));
@@ -84,6 +84,14 @@ void ProtocolDetector::start(ByteLink *link, const ConnectOptions &options)
     case ProtocolChoice::Auto:
         break;
     }
+    listen();
+}
+
+void ProtocolDetector::listen()
+{
+    // Step 1: listen for the published firmware's frames, at its rate.
+    m_legacy = legacy::Decoder();
+    m_legacyFrames = 0;
     Q_EMIT progress(detail(state::Listening{}));
     m_phase = Phase::Listening;
     m_timer.start(kListenMs);
@@ -187,6 +195,15 @@ void ProtocolDetector::onHelloTimeout()
         sendHello();
         return;
     }
+    if (!m_giveUp.hasExpired()) { // another round, from the legacy frames at their rate
+        m_helloSeq.reset();
+        if (detectsAtTwoRates() && !m_link->setBaud(kDefaultLegacyBaud)) {
+            fail(detail(state::BaudSwitchFailed{kDefaultLegacyBaud, m_link->errorString()}));
+            return;
+        }
+        listen();
+        return;
+    }
     fail(detail(state::NoAnswer{detectsAtTwoRates() ? kDefaultLegacyBaud : 0, kListenMs,
                                 m_legacyFrames, kLegacyFramesNeeded, kHelloWaitMs}));
 }
@@ -195,6 +212,10 @@ void ProtocolDetector::onHelloUnanswered()
 {
     if (m_phase != Phase::Hello)
         return;
+    if (!m_giveUp.hasExpired()) { // a forced v2 device still booting: ask again
+        m_queue.enqueueHello();
+        return;
+    }
     fail(detail(
         state::NoHelloReply{CommandQueue::kCommandRetries + 1, CommandQueue::kCommandTimeoutMs}));
 }

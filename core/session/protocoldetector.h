@@ -8,6 +8,7 @@
 #include "protocol/v2codec.h"
 #include "session/sessiontypes.h"
 
+#include <QDeadlineTimer>
 #include <QObject>
 #include <QTimer>
 
@@ -55,6 +56,7 @@ private:
     enum class Phase { Idle, Listening, Hello };
 
     void onTimeout();
+    void listen();
     void onListenTimeout();
     void sendHello();
     void onHelloTimeout();
@@ -73,6 +75,7 @@ private:
     int m_legacyFrames = 0;
     std::optional<quint8> m_helloSeq; //!< auto detection's HELLO (forced v2 uses the queue)
     int m_helloSends = 0;
+    QDeadlineTimer m_giveUp; //!< when detection stops trying again (detectForMs)
     v2::FrameDecoder m_v2{v2::Direction::FromDevice};
 };
 

@@ -33,7 +33,13 @@ struct ConnectOptions
     //! the last one again every FeedbackStream::kKeepAliveMs; ≤ 0 = none [Hz]
     double feedbackRateHz = 1000;
     bool autoReconnect = true; //!< reopen the same port after it vanished
-    legacy::Conversion legacy; //!< tick and load-unit conversion for legacy devices
+    //! How long detection keeps trying — listening, then HELLO, again — before it gives up: an
+    //! ESP32 that resets when the port opens is silent while it boots. ≤ one round (auto: 1 s,
+    //! forced v2: the HELLO's resends): one round. The tuner and the bridge give it
+    //! kDetectBootMs, hatpicctl its --timeout [ms]
+    int detectForMs = 0;
+    static constexpr int kDetectBootMs = 3000; //!< an ESP32's reset and boot, with a margin [ms]
+    legacy::Conversion legacy;                 //!< tick and load-unit conversion for legacy devices
     //! What the session connects through, made by the program (the in-process simulator, …);
     //! none: the serial port `port`.
     LinkSourcePtr link;

@@ -64,6 +64,8 @@ private Q_SLOTS:
     // 12, 13: ports
     void secondClientOnAnAliasIsToldWhoHoldsThePort();
     void relativePortIsAPath();
+    void deviceThatBootsAfterTheOpenIsFound_data();
+    void deviceThatBootsAfterTheOpenIsFound();
     // 14: the smaller ones
     void slowStreamDoesNotSayTheDeviceDidNotStream();
     void streamIntoAClosedPipeExitsWithFour();
@@ -106,6 +108,38 @@ void TestHatpicctlFailures::refusedEffectsAfterAcceptedParameters()
     // What is in force, as `get` shows it: the new K_max, the old effects.
     QVERIFY2(run.out.contains("K_max") && run.out.contains("0.6"), qPrintable(describe(run)));
     QVERIFY2(run.out.contains("detent_strength"), qPrintable(describe(run)));
+}
+
+void TestHatpicctlFailures::deviceThatBootsAfterTheOpenIsFound_data()
+{
+    QTest::addColumn<QString>("protocol");
+    QTest::newRow("detecting") << u"auto"_s;
+    QTest::newRow("forced v2") << u"v2"_s;
+}
+
+// An ESP32 resets when the port opens (DTR) and says nothing while it boots: detection keeps
+// trying — listen, HELLO, again — for as long as --timeout, not one round of about a second.
+void TestHatpicctlFailures::deviceThatBootsAfterTheOpenIsFound()
+{
+    QFETCH(QString, protocol);
+    ScriptedDevice device;
+    QVERIFY(device.isValid());
+    QElapsedTimer sinceOpen;
+    int ignored = 0;
+    device.answer = [&](const v2::Frame &) {
+        if (!sinceOpen.isValid())
+            sinceOpen.start();
+        if (sinceOpen.elapsed() >= 2500)
+            return false;
+        ++ignored; // still booting
+        return true;
+    };
+    const Run run = runCtlServing(
+        {u"info"_s, u"--port"_s, device.path(), u"--protocol"_s, protocol, u"--timeout"_s, u"8"_s});
+    QVERIFY2(run.code == 0, qPrintable(describe(run)));
+    QVERIFY2(run.out.contains("scripted"), qPrintable(describe(run)));
+    QVERIFY2(ignored >= 2, qPrintable(QString::number(ignored))); // more than one round's HELLOs
+    QCOMPARE(device.hellosAnswered(), 1);
 }
 
 // SET_EFFECTS goes unanswered after SET_PARAMS was accepted.

@@ -40,6 +40,8 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 // The window icon lives in this static library: its resources must be registered by hand.
 static void initPlotsResources()
 {
@@ -262,6 +264,7 @@ bool MainWindow::startBridge(int rosVersion)
 void MainWindow::connectTo(const ConnectOptions &options)
 {
     ConnectOptions opts = options;
+    opts.detectForMs = std::max(opts.detectForMs, ConnectOptions::kDetectBootMs);
     if (opts.port == kSimPort) {
         // The window's simulator, configured as a command line's (its faults and seed) asked.
         if (const auto given = std::dynamic_pointer_cast<SimulatedJoystick>(opts.link))
