@@ -225,11 +225,12 @@ void StabilityMapView::redraw()
 {
     if (m_cells.empty())
         return;
+    // The mark is the map's own setting of the controller, not one edited since it was computed.
     m_svg = teleop::mapSvg(m_cells, m_shown.field.name, m_shown.base.duration,
                            teleop::MapMark{m_delayInUse->value(), m_gainInUse->value(),
                                            m_shown.field.name.isEmpty()
                                                ? NAN
-                                               : m_tuning.edited().passivity.pc_damping_max});
+                                               : m_shown.base.passivity.pc_damping_max});
     m_chart->load(m_svg);
 }
 
