@@ -4,7 +4,6 @@
 #include "editor/editoractions.h"
 #include "editor/effectssection.h"
 #include "editor/livepush.h"
-#include "editor/parametereditcommand.h"
 #include "editor/parameterfield.h"
 #include "editor/parameterform.h"
 #include "editor/scientificspinbox.h"
@@ -164,9 +163,7 @@ void ParameterEditor::onFieldEdited(const QString &key, double value)
 
 void ParameterEditor::recordEdit(const Tuning &tuning, const QString &text, const QString &field)
 {
-    if (tuning == this->tuning())
-        return;
-    m_undo->push(new ParameterEditCommand(this, this->tuning(), tuning, text, field, m_gesture));
+    m_model->edit(*m_undo, tuning, text, field, m_gesture);
 }
 
 void ParameterEditor::setTuning(const Tuning &tuning, const QString &undoText)
@@ -180,11 +177,6 @@ void ParameterEditor::setParams(const DeviceParams &device, const HostParams &ho
                                 const QString &undoText)
 {
     setTuning({device, host, effects(), passivity()}, undoText);
-}
-
-void ParameterEditor::applyTuning(const Tuning &tuning)
-{
-    m_model->setEdited(tuning);
 }
 
 void ParameterEditor::setEffectsAvailable(bool available, const QString &reason, double controlRate)

@@ -50,8 +50,6 @@ public:
 
     //! Replaces the whole tuning as one undo step named `undoText`.
     void setTuning(const Tuning &tuning, const QString &undoText);
-    //! Shows a tuning without touching the undo stack (used by undo commands and A/B).
-    void applyTuning(const Tuning &tuning);
     //! setTuning with the effects and the passivity controller as they are.
     void setParams(const DeviceParams &device, const HostParams &host, const QString &undoText);
 
@@ -121,7 +119,7 @@ Q_SIGNALS:
 private:
     void buildUi();
     void onFieldEdited(const QString &key, double value);
-    //! Puts the change on the undo stack (merged within one gesture) and applies it.
+    //! The change as an undo step of the model (merged within one gesture).
     void recordEdit(const Tuning &tuning, const QString &text, const QString &field);
     void revert();
     void startPush();

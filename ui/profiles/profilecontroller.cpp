@@ -414,7 +414,8 @@ void ProfileController::activateSlot(int slot, bool pushOnSwitch)
     from.working = currentProfile(m_active);
     m_active = slot;
     const Slot &to = m_slots[slot];
-    m_editor->applyTuning(
+    // Not an undo step: the A/B switch is one of its own (AbSwitchCommand).
+    m_editor->model()->setEdited(
         {to.working.device, to.working.host, to.working.effects, to.working.passivity});
     m_bridge = to.working.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);

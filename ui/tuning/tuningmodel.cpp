@@ -2,7 +2,51 @@
 
 #include "session/sessionwording.h"
 
+#include <QUndoStack>
+
 namespace hatpic {
+
+namespace {
+
+//! One undoable change of the edited tuning (TuningModel::edit).
+class TuningEdit : public QUndoCommand
+{
+public:
+    static constexpr int kMergeId = 0x4854; //!< 'HT'
+
+    TuningEdit(TuningModel &model, const Tuning &after, const QString &text, const QString &field,
+               quint64 gesture)
+        : m_model(model), m_before(model.edited()), m_after(after), m_field(field),
+          m_gesture(gesture)
+    {
+        setText(text);
+    }
+    void undo() override { m_model.setEdited(m_before); }
+    void redo() override { m_model.setEdited(m_after); }
+    int id() const override { return m_field.isEmpty() ? -1 : kMergeId; }
+    bool mergeWith(const QUndoCommand *other) override
+    {
+        if (other->id() != id())
+            return false;
+        const auto *next = static_cast<const TuningEdit *>(other);
+        if (next->m_field != m_field || next->m_gesture != m_gesture || &next->m_model != &m_model)
+            return false;
+        m_after = next->m_after;
+        setText(next->text());
+        // Dragging back to where the gesture started leaves nothing to undo.
+        setObsolete(m_after == m_before);
+        return true;
+    }
+
+private:
+    TuningModel &m_model;
+    Tuning m_before;
+    Tuning m_after;
+    QString m_field;
+    quint64 m_gesture;
+};
+
+} // namespace
 
 TuningModel::TuningModel(QObject *parent) : QObject(parent)
 {
@@ -21,6 +65,13 @@ void TuningModel::setEdited(const Tuning &tuning)
     m_rejectedField.clear();
     Q_EMIT editedChanged(change);
     refreshSync();
+}
+
+void TuningModel::edit(QUndoStack &undo, const Tuning &tuning, const QString &text,
+                       const QString &field, quint64 gesture)
+{
+    if (tuning != m_edited)
+        undo.push(new TuningEdit(*this, tuning, text, field, gesture));
 }
 
 void TuningModel::setDevice(const DeviceTuning &device)

@@ -2,8 +2,9 @@
 // read or read back), what it takes (pushes at all, the effect block, the passivity block), the
 // push in flight and how the last one ended. The sync state, the editor's "device differs"
 // markers, the stiffness view's edited curves, the stability map and the reference model all
-// read it and follow its signals; none keeps a copy. No widgets: the editor's undo stack
-// changes it through setEdited(), DeviceParameterLink through setDevice() and the push calls.
+// read it and follow its signals; none keeps a copy. No widgets: the editor changes it through
+// edit() (an undo step), A/B through setEdited(), DeviceParameterLink through setDevice() and the
+// push calls.
 //
 // Comparisons with the device are made "as the device holds it": the edited tuning rounded
 // once, here (editedOnWire()), the way the wire carries it.
@@ -17,6 +18,8 @@
 #include <QString>
 
 #include <optional>
+
+class QUndoStack;
 
 namespace hatpic {
 
@@ -54,6 +57,11 @@ public:
     //! Replaces the edited tuning; an edit forgets the last push's failure (it was about other
     //! values).
     void setEdited(const Tuning &tuning);
+    //! setEdited() as one step on `undo` named `text` ("Change K_max to 0.6"), when `tuning`
+    //! differs. Edits of the same `field` ("K_max") within one `gesture` (a typing or a drag, the
+    //! editor's counter) merge into one step; an empty field (a whole tuning) never merges.
+    void edit(QUndoStack &undo, const Tuning &tuning, const QString &text,
+              const QString &field = {}, quint64 gesture = 0);
 
     // ---- the device ----
     //! The device's tuning as read; without parameters (disconnected) everything about the

@@ -1,13 +1,16 @@
 // The window's one tuning, headless: the sync state follows the edited tuning, the device's
 // and the pushes' outcomes; comparisons are made as the device holds the values (float32);
 // a push sends each block the device has and does not hold yet; a refusal names its field, a
-// push that failed part-way leaves what it applied in force; signals come once per change.
+// push that failed part-way leaves what it applied in force; signals come once per change;
+// edits are undo steps that merge within one field's gesture.
 #include "tuning/tuningmodel.h"
 
 #include <QSignalSpy>
 #include <QTest>
+#include <QUndoStack>
 
 using namespace hatpic;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -152,6 +155,39 @@ private Q_SLOTS:
         model.setCanPush(true);
         QCOMPARE(sync.count(), 1);
         QCOMPARE(sync.at(0).at(0).value<SyncState>(), SyncState::NotRead);
+    }
+
+    void editsAreUndoStepsMergedWithinAGesture()
+    {
+        TuningModel model;
+        QUndoStack undo;
+        const double start = model.edited().device.K_max;
+        model.edit(undo, model.edited(), u"nothing"_s, u"K_max"_s, 1); // the same: no step
+        QCOMPARE(undo.count(), 0);
+        // One drag of K_max: three values, one step named after the last.
+        for (const double k : {0.5, 0.6, 0.7})
+            model.edit(undo, editedWith(model, k), u"K_max %1"_s.arg(k), u"K_max"_s, 1);
+        QCOMPARE(undo.count(), 1);
+        QCOMPARE(undo.text(0), u"K_max 0.7"_s);
+        QCOMPARE(model.edited().device.K_max, 0.7);
+        // The next gesture, and a whole tuning (no field), are steps of their own.
+        model.edit(undo, editedWith(model, 0.8), u"K_max 0.8"_s, u"K_max"_s, 2);
+        model.edit(undo, editedWith(model, 0.9), u"profile"_s);
+        model.edit(undo, editedWith(model, 1.0), u"profile"_s);
+        QCOMPARE(undo.count(), 4);
+        undo.undo();
+        undo.undo();
+        undo.undo();
+        QCOMPARE(model.edited().device.K_max, 0.7);
+        undo.undo();
+        QCOMPARE(model.edited().device.K_max, start);
+        undo.redo();
+        QCOMPARE(model.edited().device.K_max, 0.7);
+        // A drag back to where it started leaves nothing to undo.
+        QUndoStack back;
+        model.edit(back, editedWith(model, 0.75), u"K_max"_s, u"K_max"_s, 3);
+        model.edit(back, editedWith(model, 0.7), u"K_max"_s, u"K_max"_s, 3);
+        QCOMPARE(back.count(), 0);
     }
 };
 
