@@ -68,18 +68,16 @@ std::optional<Received> V2Driver::event(const v2::Frame &frame) const
                 // to interpret (effects.md § 3, passivity.md).
                 received::Telemetry said{frame.seq, message};
                 forEachCycleQuantity<v2::Telemetry>([&](const CycleQuantity &q, auto member) {
-                    if constexpr (requires { (said.telemetry.*member).reset(); }) {
+                    auto &value = said.telemetry.*member;
+                    if constexpr (requires { value.reset(); }) {
                         if ((m_info.capabilities & q.capability) == 0)
-                            (said.telemetry.*member).reset();
-                    }
-                });
-                forEachCycleQuantity<v2::Telemetry>([&](const CycleQuantity &, auto member) {
-                    const auto &value = said.telemetry.*member;
-                    if constexpr (requires { value.value_or(0.0f); }) // one not sent is no harm
+                            value.reset();
+                        // One not sent (or not announced) is no harm.
                         said.finite = said.finite && std::isfinite(value.value_or(0.0f));
-                    else if constexpr (std::is_floating_point_v<
-                                           std::remove_cvref_t<decltype(value)>>)
+                    } else if constexpr (std::is_floating_point_v<
+                                             std::remove_cvref_t<decltype(value)>>) {
                         said.finite = said.finite && std::isfinite(value);
+                    }
                 });
                 return said;
             } else if constexpr (std::is_same_v<T, v2::Ack>) {

@@ -6,6 +6,18 @@
 
 namespace hatpic {
 
+RecordingReadResult ReplayController::readReplayable(const QString &csvPath, QString *error)
+{
+    RecordingReadResult result = readRecording(csvPath);
+    if (result.recording && result.recording->samples.isEmpty()) {
+        result.recording.reset();
+        result.error = tr("%1 holds no samples.").arg(csvPath);
+    }
+    if (!result.recording && error)
+        *error = result.error;
+    return result;
+}
+
 ReplayController::ReplayController(QObject *parent)
     : QObject(parent), m_buffer(std::make_unique<SampleBuffer>(1)),
       m_overlay(std::make_unique<SampleBuffer>(1))
@@ -27,17 +39,9 @@ void ReplayController::setEffectsOf(const Recording &recording, SampleBuffer &bu
 
 bool ReplayController::open(const QString &csvPath, QString *error)
 {
-    RecordingReadResult result = readRecording(csvPath);
-    if (!result.recording) {
-        if (error)
-            *error = result.error;
+    RecordingReadResult result = readReplayable(csvPath, error);
+    if (!result.recording)
         return false;
-    }
-    if (result.recording->samples.isEmpty()) {
-        if (error)
-            *error = tr("%1 holds no samples.").arg(csvPath);
-        return false;
-    }
     pause();
     m_recording = std::move(*result.recording);
     m_warnings = result.warnings;
@@ -79,17 +83,9 @@ bool ReplayController::openOverlay(const QString &csvPath, QString *error)
             *error = tr("Open a recording to replay first.");
         return false;
     }
-    RecordingReadResult result = readRecording(csvPath);
-    if (!result.recording) {
-        if (error)
-            *error = result.error;
+    RecordingReadResult result = readReplayable(csvPath, error);
+    if (!result.recording)
         return false;
-    }
-    if (result.recording->samples.isEmpty()) {
-        if (error)
-            *error = tr("%1 holds no samples.").arg(csvPath);
-        return false;
-    }
     m_overlayRecording = std::move(*result.recording);
     m_overlayPath = csvPath;
     placeOverlay();

@@ -80,6 +80,8 @@ private:
     void placeOverlay();
     //! Gives `buffer` the effect block and θ0 `recording` started with, for τ_fx's parts.
     static void setEffectsOf(const Recording &recording, SampleBuffer &buffer);
+    //! readRecording(), with a recording without samples refused; the error goes to `error`.
+    static RecordingReadResult readReplayable(const QString &csvPath, QString *error);
 
     bool m_active = false;
     QString m_path;
