@@ -103,7 +103,7 @@ void DeviceParameterLink::refreshEffectsAvailability()
 
 void DeviceParameterLink::finishPush(const DeviceTuning &before, const Outcome &outcome)
 {
-    m_editor->pushFinished(outcome);
+    m_editor->model()->pushFinished(outcome);
     if (outcome.ok()) {
         // What changed is what the device held against what travelled (float32, bounds kept
         // by the session's one rounding), never the editor's doubles: the walls' ±π travel as

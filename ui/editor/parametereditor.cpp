@@ -49,6 +49,10 @@ ParameterEditor::ParameterEditor(QWidget *parent)
             m_live->edited();
     });
     connect(m_model, &TuningModel::deviceChanged, this, &ParameterEditor::refresh);
+    connect(m_model, &TuningModel::pushEnded, this, [this] {
+        refresh(); // shows or clears the field the device named
+        m_live->retry();
+    });
     connect(m_model, &TuningModel::syncChanged, m_syncBar, &SyncBar::setState);
     m_form->showTuning(tuning());
     m_syncBar->setState(syncState(), syncText());
@@ -210,14 +214,6 @@ void ParameterEditor::setTauLimit(double tauLimit)
     h.tau_limit = tauLimit;
     setParams(params(), h,
               tr("Use the device's torque limit (%1 N·m)").arg(QString::number(tauLimit, 'g', 6)));
-}
-
-void ParameterEditor::pushFinished(const Outcome &outcome)
-{
-    if (!m_model->pushFinished(outcome))
-        return; // a late answer after a disconnect
-    refresh();  // shows or clears the field the device named
-    m_live->retry();
 }
 
 void ParameterEditor::startPush()

@@ -78,9 +78,6 @@ public:
 
     QUndoStack *undoStack() const { return m_undo; }
 
-    //! The answer to the last pushRequested() (DeviceParameterLink hands it over).
-    void pushFinished(const hatpic::Outcome &outcome);
-
     QAction *pushAction() const { return m_actions->push; }     //!< Ctrl+Return
     QAction *readAction() const { return m_actions->read; }     //!< "Read from device"
     QAction *revertAction() const { return m_actions->revert; } //!< "Revert to device values"
@@ -109,6 +106,8 @@ public:
 Q_SIGNALS:
     //! Push or a live-push tick: the parameters, and the effects when the device renders
     //! effects and its read-back differs from them (absent: not sent).
+    //! Its outcome goes to the model (TuningModel::pushFinished; DeviceParameterLink hands it
+    //! over).
     void pushRequested(const hatpic::DeviceTuning &tuning);
     //! The vibration test's Vibrate or Stop (already valid).
     void vibrateRequested(const hatpic::Vibration &vibration);

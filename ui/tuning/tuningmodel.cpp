@@ -214,6 +214,7 @@ bool TuningModel::pushFinished(const Outcome &outcome)
     if (m_device != before)
         Q_EMIT deviceChanged(m_device);
     refreshSync();
+    Q_EMIT pushEnded();
     return true;
 }
 

@@ -109,6 +109,8 @@ Q_SIGNALS:
     void deviceChanged(const hatpic::DeviceTuning &device);
     //! The sync state or its wording changed.
     void syncChanged(hatpic::SyncState state, const QString &text);
+    //! The push in flight ended (pushFinished took its outcome): the editor may push again.
+    void pushEnded();
 
 private:
     template<typename Block>

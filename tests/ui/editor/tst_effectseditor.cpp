@@ -192,7 +192,7 @@ void TestEffectsEditor::pushCarriesEffectsOnlyToADeviceThatRendersThem()
     const auto withoutEffects = pushes.takeFirst().at(0).value<DeviceTuning>();
     QCOMPARE(withoutEffects.params, std::optional(editor.params()));
     QVERIFY(!withoutEffects.effects);
-    editor.pushFinished(
+    editor.model()->pushFinished(
         pushed({asFloat(editor.params()), std::nullopt}, {asFloat(editor.params()), std::nullopt}));
     QCOMPARE(editor.syncState(), SyncState::InSync);
 
@@ -213,7 +213,7 @@ void TestEffectsEditor::pushCarriesEffectsOnlyToADeviceThatRendersThem()
     const DeviceTuning onTheWire{asFloat(editor.params()), onWire(editor.effects())};
     EffectParams readBack = onWire(editor.effects());
     readBack.wall_stiffness = 1.5; // a device that kept another value
-    editor.pushFinished(pushed(onTheWire, {asFloat(editor.params()), readBack}));
+    editor.model()->pushFinished(pushed(onTheWire, {asFloat(editor.params()), readBack}));
     QCOMPARE(editor.syncState(), SyncState::ReadbackDiffers);
     QVERIFY(editor.field(u"wall_stiffness"_s)->differsFromDevice());
     QCOMPARE(editor.deviceTuning().effects, std::optional(readBack));
@@ -229,7 +229,7 @@ void TestEffectsEditor::pushCarriesEffectsOnlyToADeviceThatRendersThem()
     editor.pushAction()->trigger();
     QCOMPARE(pushes.size(), 1);
     const DeviceTuning again{asFloat(editor.params()), onWire(editor.effects())};
-    editor.pushFinished(pushed(again, again));
+    editor.model()->pushFinished(pushed(again, again));
     QCOMPARE(editor.syncState(), SyncState::InSync);
     QVERIFY(!editor.field(u"wall_stiffness"_s)->differsFromDevice());
 }
@@ -247,8 +247,8 @@ void TestEffectsEditor::refusedEffectsAfterAcceptedParametersSayWhatIsInForce()
     editor.pushAction()->trigger();
     // SET_PARAMS was acknowledged and read back before SET_EFFECTS was refused.
     const DeviceTuning readBack{asFloat(editor.params()), std::nullopt};
-    editor.pushFinished(wallStiffnessRejected({asFloat(editor.params()), onWire(editor.effects())},
-                                              readBack, readBack));
+    editor.model()->pushFinished(wallStiffnessRejected(
+        {asFloat(editor.params()), onWire(editor.effects())}, readBack, readBack));
     QCOMPARE(editor.syncState(), SyncState::Rejected);
     QCOMPARE(editor.syncText(),
              u"device rejected the effects: OUT_OF_RANGE (wall_stiffness); parameters applied"_s);
@@ -262,7 +262,7 @@ void TestEffectsEditor::rejectionNamesTheEffectField()
     connectWithEffects(editor);
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
     editor.pushAction()->trigger();
-    editor.pushFinished(wallStiffnessRejected());
+    editor.model()->pushFinished(wallStiffnessRejected());
     QCOMPARE(editor.syncState(), SyncState::Rejected);
     QCOMPARE(editor.syncText(), u"device rejected the effects: OUT_OF_RANGE (wall_stiffness)"_s);
     QVERIFY(editor.field(u"wall_stiffness"_s)->problem().contains(u"refused"_s));

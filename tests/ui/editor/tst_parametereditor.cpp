@@ -447,13 +447,13 @@ void TestParameterEditor::inSyncAfterAckAndReadback()
 
     QCOMPARE(pushes.at(0).at(0).value<DeviceTuning>().params, std::optional(editor.params()));
     if (readBackUnanswered) {
-        editor.pushFinished(Outcome{
+        editor.model()->pushFinished(Outcome{
             request::Push{{echo, std::nullopt}}, outcome::Done{outcome::ReadBack::Unanswered}, {}});
         QCOMPARE(editor.syncState(), SyncState::AwaitingReadback); // ACK alone is not enough
         QVERIFY(editor.syncText().contains(u"read-back"_s));
         editor.setDeviceTuning({echo, std::nullopt}); // read again
     } else {
-        editor.pushFinished(pushed({echo, std::nullopt}, {echo, std::nullopt}));
+        editor.model()->pushFinished(pushed({echo, std::nullopt}, {echo, std::nullopt}));
     }
     QCOMPARE(editor.syncState(), SyncState::InSync);
     QCOMPARE(editor.syncText(), u"in sync"_s);
@@ -470,7 +470,8 @@ void TestParameterEditor::mismatchingReadbackIsNotInSync()
     editor.pushAction()->trigger();
     DeviceParams other = asFloat(editor.params());
     other.K_max = 0.75f; // the device stored something else
-    editor.pushFinished(pushed({asFloat(editor.params()), std::nullopt}, {other, std::nullopt}));
+    editor.model()->pushFinished(
+        pushed({asFloat(editor.params()), std::nullopt}, {other, std::nullopt}));
     QCOMPARE(editor.syncState(), SyncState::ReadbackDiffers);
     QVERIFY(editor.syncText().startsWith(u"not in sync"_s));
     QVERIFY(editor.field(u"K_max"_s)->differsFromDevice());
@@ -489,7 +490,7 @@ void TestParameterEditor::rejectionShowsReasonAndKeepsValues()
     const DeviceParams edited = editor.params();
     editor.pushAction()->trigger();
 
-    editor.pushFinished(
+    editor.model()->pushFinished(
         Outcome{request::Push{{edited, std::nullopt}},
                 outcome::Refused{{CommandKind::SetParams, {}}, v2::AckStatus::OutOfRange, 3},
                 {}});
@@ -513,9 +514,9 @@ void TestParameterEditor::timeoutShown()
     editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(0.6);
     editor.pushAction()->trigger();
-    editor.pushFinished(Outcome{request::Push{{editor.params(), std::nullopt}},
-                                outcome::TimedOut{{CommandKind::SetParams, {}}, 4, 250},
-                                {}});
+    editor.model()->pushFinished(Outcome{request::Push{{editor.params(), std::nullopt}},
+                                         outcome::TimedOut{{CommandKind::SetParams, {}}, 4, 250},
+                                         {}});
     QCOMPARE(editor.syncState(), SyncState::Timeout);
     QVERIFY(editor.syncText().startsWith(u"timeout"_s));
     QCOMPARE(editor.params().K_max, 0.6);
@@ -523,7 +524,7 @@ void TestParameterEditor::timeoutShown()
     // A late answer after a disconnect changes nothing.
     editor.setDeviceTuning({});
     editor.setCanPush(false);
-    editor.pushFinished(ok());
+    editor.model()->pushFinished(ok());
     QCOMPARE(editor.syncState(), SyncState::NotConnected);
 }
 
@@ -686,10 +687,10 @@ void TestParameterEditor::livePushOneInFlightLastValueSent()
     QTest::qWait(60);
     QCOMPARE(pushes.count(), 1);
 
-    editor.pushFinished(echoed(*pushes.at(0).at(0).value<DeviceTuning>().params));
+    editor.model()->pushFinished(echoed(*pushes.at(0).at(0).value<DeviceTuning>().params));
     QTRY_COMPARE(pushes.count(), 2);
     QCOMPARE(pushes.at(1).at(0).value<DeviceTuning>().params->K_max, 0.4 + 0.01 * 30);
-    editor.pushFinished(echoed(*pushes.at(1).at(0).value<DeviceTuning>().params));
+    editor.model()->pushFinished(echoed(*pushes.at(1).at(0).value<DeviceTuning>().params));
     QCOMPARE(editor.syncState(), SyncState::InSync);
     QTest::qWait(60);
     QCOMPARE(pushes.count(), 2); // nothing new to send
@@ -722,7 +723,7 @@ void TestParameterEditor::livePushRateLimited()
         // The device answers at once (on the next event loop turn).
         QTimer::singleShot(0, &editor, [&, params = *t.params] {
             inFlight = false;
-            editor.pushFinished(echoed(params));
+            editor.model()->pushFinished(echoed(params));
         });
     });
 
