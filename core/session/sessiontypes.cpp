@@ -37,29 +37,16 @@ quint64 LinkStats::totalDecoderDrops() const
 
 namespace {
 
-QString describeParamChange(const DeviceParams &from, const DeviceParams &to)
-{
-    QStringList parts;
-    const DeviceParams a = roundedForWire(from);
-    const DeviceParams b = roundedForWire(to);
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        if (a.field(i) != b.field(i)) {
-            const std::string_view name = deviceFieldName(i);
-            parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
-                         compactNumberText(a.field(i)) % u" → " % compactNumberText(b.field(i));
-        }
-    }
-    return parts.join(QStringLiteral("; "));
-}
-
-//! "name a → b" for each field of a block that differs as float32 (effects, passivity).
+//! "name a → b" for each field of a block that differs as the wire carries it (`onWire`: the
+//! device's fields rounded by their own rule, the blocks' to float32).
 template<typename Block>
-QString describeBlockChange(const Block &from, const Block &to, std::string_view (*fieldName)(int))
+QString describeBlockChange(const Block &from, const Block &to, std::string_view (*fieldName)(int),
+                            double (*onWire)(int, double))
 {
     QStringList parts;
     for (int i = 0; i < Block::kFieldCount; ++i) {
-        const double a = static_cast<float>(from.field(i));
-        const double b = static_cast<float>(to.field(i));
+        const double a = onWire(i, from.field(i));
+        const double b = onWire(i, to.field(i));
         if (a != b) {
             const std::string_view name = fieldName(i);
             parts << QString::fromLatin1(name.data(), qsizetype(name.size())) % u' ' %
@@ -69,28 +56,28 @@ QString describeBlockChange(const Block &from, const Block &to, std::string_view
     return parts.join(QStringLiteral("; "));
 }
 
+double asFloat(int, double value)
+{
+    return static_cast<float>(value);
+}
+
 } // namespace
 
 QString describeTuningChange(const DeviceTuning &from, const DeviceTuning &to)
 {
     QStringList parts;
-    if (to.params) {
-        if (const QString p = describeParamChange(from.params.value_or(DeviceParams{}), *to.params);
+    const auto describe = [&parts](const auto &was, const auto &now, std::string_view (*name)(int),
+                                   double (*onWire)(int, double)) {
+        if (!now)
+            return;
+        using Block = std::decay_t<decltype(*now)>;
+        if (const QString p = describeBlockChange(was.value_or(Block{}), *now, name, onWire);
             !p.isEmpty())
             parts << p;
-    }
-    if (to.effects) {
-        if (const QString e = describeBlockChange(from.effects.value_or(EffectParams{}),
-                                                  *to.effects, &effectFieldName);
-            !e.isEmpty())
-            parts << e;
-    }
-    if (to.passivity) {
-        if (const QString c = describeBlockChange(from.passivity.value_or(PassivityParams{}),
-                                                  *to.passivity, &passivityFieldName);
-            !c.isEmpty())
-            parts << c;
-    }
+    };
+    describe(from.params, to.params, &deviceFieldName, &roundedForWire);
+    describe(from.effects, to.effects, &effectFieldName, &asFloat);
+    describe(from.passivity, to.passivity, &passivityFieldName, &asFloat);
     return parts.join(QStringLiteral("; "));
 }
 
