@@ -51,10 +51,7 @@ EffectsSection::EffectsSection(QWidget *parent) : QWidget(parent)
     m_unavailable->setWordWrap(true);
     column->addWidget(m_unavailable);
 
-    auto *grid = new QGridLayout;
-    grid->setHorizontalSpacing(8);
-    grid->setVerticalSpacing(2);
-    grid->setColumnStretch(4, 1);
+    QGridLayout *grid = ParameterField::newGrid(nullptr);
     const QList<ParameterField::Spec> specs = effectFieldSpecs();
     for (int i = 0; i < specs.size(); ++i) {
         auto *field = new ParameterField(specs[i], this, this);
@@ -89,15 +86,12 @@ QWidget *EffectsSection::buildVibrationGroup()
     // the fields out of line with the others and widen the editor.
     auto *group = new QWidget(this);
     group->setObjectName(u"group_vibration"_s);
-    auto *grid = new QGridLayout(group);
+    QGridLayout *grid = ParameterField::newGrid(group);
     grid->setContentsMargins(0, 6, 0, 0);
     auto *title = new QLabel(u"<b>%1</b>"_s.arg(tr("Vibration test")) + u" — "_s +
                                  tr("sent now, not part of the profile"),
                              group);
     grid->addWidget(title, 0, 0, 1, 5);
-    grid->setHorizontalSpacing(8);
-    grid->setVerticalSpacing(2);
-    grid->setColumnStretch(4, 1);
     const QList<ParameterField::Spec> specs = vibrationFieldSpecs();
     for (int i = 0; i < specs.size(); ++i) {
         auto *field = new ParameterField(specs[i], group, this);

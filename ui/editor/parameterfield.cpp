@@ -139,6 +139,15 @@ void ParameterField::alignColumns(const QList<ParameterField *> &fields,
     }
 }
 
+QGridLayout *ParameterField::newGrid(QWidget *parent)
+{
+    auto *grid = new QGridLayout(parent);
+    grid->setHorizontalSpacing(8);
+    grid->setVerticalSpacing(2);
+    grid->setColumnStretch(4, 1);
+    return grid;
+}
+
 void ParameterField::addToGrid(QGridLayout *grid, int row)
 {
     grid->addWidget(m_marker, row, 0);

@@ -52,6 +52,8 @@ public:
 
     //! Places the row at `row` and its message line at `row + 1`.
     void addToGrid(QGridLayout *grid, int row);
+    //! A grid for fields, spaced as every group of the editor is (on `parent`, or none).
+    static QGridLayout *newGrid(QWidget *parent);
 
     const Spec &spec() const { return m_spec; }
     double value() const { return m_value; } //!< SI

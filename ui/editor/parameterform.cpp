@@ -49,10 +49,7 @@ QWidget *ParameterForm::buildDeviceGroups()
                   {tr("Re-centering stiffness — device"), 2, 6}};
     for (const auto &g : groups) {
         auto *group = new QGroupBox(g.title, box);
-        auto *grid = new QGridLayout(group);
-        grid->setHorizontalSpacing(8);
-        grid->setVerticalSpacing(2);
-        grid->setColumnStretch(4, 1);
+        QGridLayout *grid = ParameterField::newGrid(group);
         for (int i = g.first; i <= g.last; ++i) {
             auto *field = new ParameterField(specs[i], group, this);
             field->addToGrid(grid, 2 * (i - g.first));
@@ -66,10 +63,7 @@ QWidget *ParameterForm::buildDeviceGroups()
 QWidget *ParameterForm::buildHostGroup()
 {
     auto *group = new QGroupBox(tr("Reference model — host only, not sent to the device"));
-    auto *grid = new QGridLayout(group);
-    grid->setHorizontalSpacing(8);
-    grid->setVerticalSpacing(2);
-    grid->setColumnStretch(4, 1);
+    QGridLayout *grid = ParameterField::newGrid(group);
 
     auto *modeLabel = new QLabel(tr("<b>mode</b>&nbsp;&nbsp;<span style=\"color:gray\">unit "
                                     "family of v_ref, p_ref</span>"),
@@ -122,10 +116,7 @@ QWidget *ParameterForm::buildPassivityGroup()
 {
     auto *group = new QGroupBox(tr("Passivity controller — device: stable contact under delay"));
     group->setObjectName(u"group_passivity"_s);
-    auto *grid = new QGridLayout(group);
-    grid->setHorizontalSpacing(8);
-    grid->setVerticalSpacing(2);
-    grid->setColumnStretch(4, 1);
+    QGridLayout *grid = ParameterField::newGrid(group);
     m_passivityUnavailable = new QLabel(group);
     m_passivityUnavailable->setObjectName(u"label_passivity_unavailable"_s);
     m_passivityUnavailable->setWordWrap(true);
@@ -171,27 +162,21 @@ void ParameterForm::addField(ParameterField *field)
 
 void ParameterForm::showTuning(const Tuning &tuning)
 {
-    const DeviceParams &device = tuning.device;
     const HostParams &host = tuning.host;
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i) {
-        ParameterField *f = m_fields.value(QString::fromLatin1(deviceFieldName(i)));
-        if (f->value() != device.field(i))
-            f->setValue(device.field(i));
-    }
-    for (int i = 0; i < EffectParams::kFieldCount; ++i) {
-        ParameterField *f = m_fields.value(QString::fromLatin1(effectFieldName(i)));
-        if (f->value() != tuning.effects.field(i))
-            f->setValue(tuning.effects.field(i));
-    }
-    for (int i = 0; i < PassivityParams::kFieldCount; ++i) {
-        ParameterField *f = m_fields.value(QString::fromLatin1(passivityFieldName(i)));
-        if (f->value() != tuning.passivity.field(i))
-            f->setValue(tuning.passivity.field(i));
-    }
-    if (m_fields.value(u"v_max"_s)->value() != host.v_max)
-        m_fields.value(u"v_max"_s)->setValue(host.v_max);
-    if (m_fields.value(u"tau_limit"_s)->value() != host.tau_limit)
-        m_fields.value(u"tau_limit"_s)->setValue(host.tau_limit);
+    const auto show = [this](const QString &key, double value) {
+        ParameterField *f = m_fields.value(key);
+        if (f->value() != value)
+            f->setValue(value);
+    };
+    const auto showBlock = [&show](const auto &block, std::string_view (*name)(int)) {
+        for (int i = 0; i < std::decay_t<decltype(block)>::kFieldCount; ++i)
+            show(QString::fromLatin1(name(i)), block.field(i));
+    };
+    showBlock(tuning.device, &deviceFieldName);
+    showBlock(tuning.effects, &effectFieldName);
+    showBlock(tuning.passivity, &passivityFieldName);
+    show(u"v_max"_s, host.v_max);
+    show(u"tau_limit"_s, host.tau_limit);
     m_fields.value(u"v_max"_s)
         ->setUnit(host.mode == ReferenceMode::Rotation ? u"rad/s"_s : u"m/s"_s);
     const QSignalBlocker b1(m_mode);
