@@ -21,8 +21,9 @@ ScientificSpinBox::ScientificSpinBox(QWidget *parent) : QDoubleSpinBox(parent)
 
 bool ScientificSpinBox::event(QEvent *event)
 {
-    // A number needs no space, and Ctrl+Z means the field's own undo only while there is
-    // uncommitted typing: otherwise the window's shortcuts get them (pause, undo the edit).
+    // A number needs no space, and Ctrl+Z (Ctrl+Shift+Z) means the field's own undo (redo)
+    // only while it has typing to undo (redo): otherwise the window's shortcuts get them
+    // (pause, undo or redo the edit).
     if (event->type() == QEvent::ShortcutOverride) {
         const auto *key = static_cast<QKeyEvent *>(event);
         if (key->key() == Qt::Key_Space && key->modifiers() == Qt::NoModifier) {
@@ -32,7 +33,8 @@ bool ScientificSpinBox::event(QEvent *event)
         // Typing not yet committed (Enter, leaving the field) is the field's to undo.
         const bool typing =
             lineEdit()->isUndoAvailable() && lineEdit()->text() != textFromValue(value());
-        if (key->matches(QKeySequence::Undo) && !typing) {
+        if ((key->matches(QKeySequence::Undo) && !typing) ||
+            (key->matches(QKeySequence::Redo) && !lineEdit()->isRedoAvailable())) {
             event->ignore();
             return true;
         }

@@ -1240,6 +1240,9 @@ void TestMainWindow::keyboardReachesFieldsAndActions()
     for (int i = 0; i < 3 && editor->params().K_max != before; ++i)
         QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(editor->params().K_max, before);
+    // Ctrl+Shift+Z in the field redoes the edit: the field has no typing of its own to redo.
+    QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(editor->params().K_max, 0.7);
 
     // Read and window length by key.
     QSignalSpy reads(editor, &ParameterEditor::readRequested);
