@@ -135,6 +135,7 @@ void BridgeProgram::printStats()
                   u" (median/p95), lost ~" + QString::number(s.timing.lost) + u" | energy " +
                   num(s.passivity.energy * 1e3) + u" mJ" +
                   (s.passivity.warning ? QStringLiteral(", GENERATING") : QString()) +
+                  (s.passivity.dampedAtRest ? QStringLiteral(", damped at rest") : QString()) +
                   // The dead man's state, when there is one (ros.md § Enable switch).
                   (m_options.settings.topics.enable.empty() ? QString()
                    : s.engaged                              ? QStringLiteral(" | engaged")

@@ -30,10 +30,10 @@ public:
                    "the device's tau_limit). The device holds 32-bit floats; each is shown\n"
                    "as the shortest decimal that gives back that float. A device with the\n"
                    "effects capability is also asked for its effect block (GET_EFFECTS): seven\n"
-                   "more lines, and the profile's device.effects when they are not the\n"
-                   "defaults. A device with the passivity capability is asked for its passivity\n"
-                   "controller (GET_PASSIVITY): two more lines (pc_damping_max, pc_reserve_max),\n"
-                   "and the profile's device.passivity when they are not the defaults."_s})
+                   "more lines, and the profile's device.effects. A device with the passivity\n"
+                   "capability is asked for its passivity controller (GET_PASSIVITY): two more\n"
+                   "lines (pc_damping_max, pc_reserve_max), and the profile's device.passivity.\n"
+                   "The profile carries every block the device has, defaults included."_s})
     {}
 
 protected:

@@ -60,7 +60,10 @@ QByteArray tuningOutput(const DeviceTuning &tuning, const DeviceInfo &info, bool
         profile.effects = tidyEffectParams(*tuning.effects);
     if (tuning.passivity)
         profile.passivity = tidyPassivityParams(*tuning.passivity);
-    return serializeProfile(profile);
+    // Every block the device has, defaults or not: a profile saved from it must not take
+    // another version's defaults for what the device held.
+    return serializeProfile(profile, {.effects = tuning.effects.has_value(),
+                                      .passivity = tuning.passivity.has_value()});
 }
 
 QString problemText(const std::vector<Violation> &violations)

@@ -79,26 +79,26 @@ public:
                    u"Map where the teleoperation loop settles: one-way delay × feedback gain."_s,
                .synopsis =
                    u"teleop-map [--profile FILE] [--delays LIST] [--gains LIST] "
-                   u"[--pc LIST | --vary FIELD=LIST] [--hand SPEC] [--duration S] [--seed N] "
-                   u"[--jitter "
-                   u"S] "
-                   u"[--loss P] [--threads N] [--csv FILE] [--svg FILE] [--png FILE] [--force]"_s,
+                   u"[--pc LIST | --vary FIELD=LIST] [--hand LIST | --hand SPEC] [--contacts N] "
+                   u"[--duration S] [--seed N] [--jitter S] [--loss P] [--threads N] "
+                   u"[--csv FILE] [--svg FILE] [--png FILE] [--force]"_s,
                .description =
                    u"Runs robot.md's teleoperation loop in process, on virtual time, for every\n"
-                   u"one-way delay and feedback gain (and every value of one tuning field): the\n"
-                   u"simulated joystick with the profile's tuning and the hand of --hand, the\n"
-                   u"bridge (--component force.x at the gain, its 100 Hz twist), the network's\n"
-                   u"delay, jitter and loss both ways, and hatpic-robot-sim's robot (200 Hz\n"
-                   u"wrench). No device, no ROS. Prints one row per cell:\n"
-                   u"  settled   1 when every θ of the last 2 s lies within 0.003 rad of "
-                   u"robot.md's\n"
-                   u"            equilibrium\n"
+                   u"one-way delay and feedback gain (and every hand and every value of one\n"
+                   u"tuning field): the simulated joystick with the profile's tuning and the\n"
+                   u"hand, the bridge (--component force.x at the gain, its 100 Hz twist), the\n"
+                   u"network's delay, jitter and loss both ways, and hatpic-robot-sim's robot\n"
+                   u"(200 Hz wrench). No device, no ROS. Prints one row per cell and contact:\n"
+                   u"  settled   1 when every θ of the last 2 s lies within 0.003 rad of\n"
+                   u"            robot.md's equilibrium\n"
                    u"  settle_s  from the first cycle with tau_ext ≠ 0 to the last one with\n"
                    u"            |θ − θ_eq| > 0.003 rad (passivity.md)\n"
                    u"  p2p       θ's peak to peak over the last 2 s [rad]\n"
-                   u"  rms_tau_pc_ratio, dissipated_j  the passivity controller's price: "
-                   u"RMS(tau_pc)\n"
-                   u"            / RMS(tau_ext) from contact to rest, the energy it took out [J]\n"
+                   u"  rms_tau_pc_ratio, dissipated_j  the passivity controller's price:\n"
+                   u"            RMS(tau_pc) / RMS(tau_ext) from contact to rest, the energy it\n"
+                   u"            took out [J]\n"
+                   u"  damped_rest  the share of the last 2 s's cycles in which the controller\n"
+                   u"            damped (the knob made heavier at rest)\n"
                    u"\n"
                    u"LIST is comma-separated items, each a number, FROM:TO:STEP (FROM, FROM+STEP,\n"
                    u"… up to TO) or FROM:TO/N (N values from FROM to TO): --delays 0:0.3/10.\n"
@@ -106,11 +106,16 @@ public:
                    u"0 = off) side by side: --pc 0,0.5 compares the controller off and on.\n"
                    u"--vary FIELD=LIST does so for any tuning field (a device parameter, host\n"
                    u"setting or passivity parameter by its profile name, e.g. M_adm=0.01,0.05).\n"
+                   u"--hand LIST maps each constant hand torque in N·m (--hand 0.03:0.1/8);\n"
+                   u"--hand SPEC runs one hand of hatpic-sim's kinds (const:0.05, step:…).\n"
+                   u"--contacts N: the hand pushes for --duration, lets go for 2 s and pushes\n"
+                   u"again, N times; each contact is a row, and a cell's chart colour is its\n"
+                   u"worst contact's.\n"
                    u"\n"
-                   u"--csv FILE writes the table, --svg FILE the chart (settled cells coloured by\n"
-                   u"settle time, the others grey and crossed), --png FILE the same chart at "
-                   u"twice\n"
-                   u"its size; an existing file needs --force.\n"
+                   u"--csv FILE writes the table (with the columns hand and contact), --svg FILE\n"
+                   u"the chart (settled cells coloured by settle time, the others grey and\n"
+                   u"crossed), --png FILE the same chart at twice its size; an existing file\n"
+                   u"needs --force.\n"
                    u"The cells run on --threads threads (default: one per core)."_s})
     {}
     void addOptions(QCommandLineParser &parser) override
@@ -128,8 +133,14 @@ public:
         add(u"pc"_s, u"Values of pc_damping_max (0: the controller off): one map each."_s,
             u"LIST"_s);
         add(u"vary"_s, u"A tuning field and its values: one map each."_s, u"FIELD=LIST"_s);
-        add(u"hand"_s, u"The hand on the knob (default: const:0.05)."_s, u"SPEC"_s);
-        add(u"duration"_s, u"Seconds of virtual time per cell, 2 to 3600 (default: 20)."_s, u"S"_s);
+        add(u"hand"_s,
+            u"Constant hands' torques, N·m, a map each; or one hand SPEC (default: const:0.05)."_s,
+            u"LIST|SPEC"_s);
+        add(u"contacts"_s,
+            u"Contacts per cell, 1 to 100: push, let go for 2 s, push again (default: 1)."_s,
+            u"N"_s);
+        add(u"duration"_s,
+            u"Seconds of virtual time per cell (per contact), 2 to 3600 (default: 20)."_s, u"S"_s);
         add(u"seed"_s, u"Seed of the load noise and the network's faults (default: 1)."_s, u"N"_s);
         add(u"jitter"_s, u"Uniform extra latency each way, 0 to 10 s (default: 0)."_s, u"S"_s);
         add(u"loss"_s, u"Fraction of messages lost each way, 0 to 1 (default: 0)."_s, u"P"_s);
@@ -197,13 +208,34 @@ public:
             spec.field.values = *values;
         }
         if (parser.isSet(u"hand"_s)) {
+            // A list of torques when it starts like a number, else a hand of hatpic-sim's.
+            const QString text = parser.value(u"hand"_s).trimmed();
             QString why;
-            const auto hand = HandInput::parse(parser.value(u"hand"_s), &why);
-            if (!hand) {
-                printError(u"--hand: "_s + asSentence(why));
+            if (!text.isEmpty() && !text.front().isLetter()) {
+                const auto hands = teleop::parseValueList(text, &why);
+                if (!hands) {
+                    printError(u"--hand "_s + why + u'.');
+                    return ExitBadUsage;
+                }
+                spec.hands = *hands;
+            } else {
+                const auto hand = HandInput::parse(text, &why);
+                if (!hand) {
+                    printError(u"--hand: "_s + asSentence(why));
+                    return ExitBadUsage;
+                }
+                spec.base.hand = *hand;
+            }
+        }
+        if (parser.isSet(u"contacts"_s)) {
+            bool ok = false;
+            spec.base.contacts = parser.value(u"contacts"_s).toInt(&ok);
+            if (!ok) {
+                printError(u"--contacts needs a whole number from 1 to "_s +
+                           QString::number(teleop::LoopConfig::kMaxContacts) + u", got '"_s +
+                           parser.value(u"contacts"_s) + u"'."_s);
                 return ExitBadUsage;
             }
-            spec.base.hand = *hand;
         }
         for (auto [option, target] : {std::pair{u"duration"_s, &spec.base.duration},
                                       std::pair{u"jitter"_s, &spec.base.robot.faults.jitter},
@@ -262,7 +294,7 @@ public:
         const std::vector<teleop::MapCell> cells = teleop::runMap(spec);
         const double seconds = double(clock.elapsed()) / 1000.0;
 
-        printTable(cells, spec.field.name);
+        printTable(cells, spec.field.name, !spec.hands.empty(), spec.base.contacts > 1);
         flushOut(); // the table before the note, on a terminal showing both
         printNote(u"%1 cells of %2 s in %3 s on %4 threads."_s.arg(cells.size())
                       .arg(compactNumberText(spec.base.duration))
@@ -288,23 +320,36 @@ public:
     }
 
 private:
-    static void printTable(const std::vector<teleop::MapCell> &cells, QString field)
+    static void printTable(const std::vector<teleop::MapCell> &cells, QString field, bool hands,
+                           bool contacts)
     {
         if (field == u"pc_damping_max")
             field.clear(); // the pc column shows it
 
-        QString out = u"   delay     gain       pc"_s;
+        QString out = u"   delay     gain"_s;
+        if (hands)
+            out += u"     hand"_s;
+        out += u"       pc"_s;
         if (!field.isEmpty())
             out += u' ' + field.rightJustified(10);
-        out += u"  settled  settle_s      p2p  rms_tau_pc_ratio  dissipated_j\n"_s;
+        if (contacts)
+            out += u"  contact"_s;
+        out += u"  settled  settle_s      p2p  rms_tau_pc_ratio  dissipated_j  damped_rest\n"_s;
         for (const teleop::MapCell &c : cells) {
-            const teleop::LoopResult &r = c.result;
-            out += cell(c.delay, 8) + u' ' + cell(c.gain, 8, 4) + u' ' + cell(c.pc, 8);
-            if (!field.isEmpty())
-                out += u' ' + cell(c.field, std::max<int>(10, int(field.size())), 4);
-            out += (r.settled ? u"        1"_s : u"        0"_s) + u' ' + cell(r.settleS, 9, 2) +
-                   u' ' + cell(r.p2p, 8, 4) + u' ' + cell(r.rmsTauPcRatio, 17) + u' ' +
-                   cell(r.dissipatedJ, 13, 4) + u'\n';
+            for (const teleop::LoopResult &r : c.contacts) {
+                out += cell(c.delay, 8) + u' ' + cell(c.gain, 8, 4);
+                if (hands)
+                    out += u' ' + cell(c.hand, 8, 4);
+                out += u' ' + cell(c.pc, 8);
+                if (!field.isEmpty())
+                    out += u' ' + cell(c.field, std::max<int>(10, int(field.size())), 4);
+                if (contacts)
+                    out += u' ' + QString::number(r.index).rightJustified(8);
+                out += (r.settled ? u"        1"_s : u"        0"_s) + u' ' +
+                       cell(r.settleS, 9, 2) + u' ' + cell(r.p2p, 8, 4) + u' ' +
+                       cell(r.rmsTauPcRatio, 17) + u' ' + cell(r.dissipatedJ, 13, 4) + u' ' +
+                       cell(r.dampedAtRest, 12) + u'\n';
+            }
         }
         writeOut(out);
     }

@@ -1,5 +1,7 @@
 #include "passivityobserver.h"
 
+#include "model/passivity.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -42,7 +44,8 @@ void PassivityObserver::reset()
     *this = PassivityObserver(m_settings);
 }
 
-void PassivityObserver::add(double t, double tauExt, double omega, double tauPc, double reserve)
+void PassivityObserver::add(double t, double tauExt, double omega, double tauPc, double reserve,
+                            double theta)
 {
     if (!std::isfinite(t) || !std::isfinite(tauExt) || !std::isfinite(omega)) {
         ++m_state.invalid;
@@ -123,6 +126,30 @@ void PassivityObserver::add(double t, double tauExt, double omega, double tauPc,
         m_lastGeneratingT = t;
     m_state.warning = t - m_lastGeneratingT <= m_settings.hold;
     m_state.time = t;
+    judgeRest(t, theta, reported && tauPc != 0);
+}
+
+void PassivityObserver::judgeRest(double t, double theta, bool damped)
+{
+    // At rest as the device's tank judges it (model/passivity.h): within the still band of
+    // where the knob stopped, for the rest time. Then how often the controller damped it there,
+    // averaged over about a second.
+    constexpr double kShareTime = 1.0; //!< [s]
+    if (!std::isfinite(theta) || !(std::abs(theta - m_restAnchor) <= passivity::kStillBand)) {
+        m_restAnchor = theta;
+        m_stillSince = t;
+    }
+    m_state.atRest = std::isfinite(theta) && t - m_stillSince >= passivity::kRestTime;
+    if (!m_state.atRest) {
+        m_state.restDampedShare = 0;
+        m_restT = std::numeric_limits<double>::quiet_NaN();
+    } else {
+        const double dt = std::isfinite(m_restT) ? std::clamp(t - m_restT, 0.0, kShareTime) : 0.0;
+        m_state.restDampedShare +=
+            ((damped ? 1.0 : 0.0) - m_state.restDampedShare) * dt / kShareTime;
+        m_restT = t;
+    }
+    m_state.dampedAtRest = m_state.atRest && m_state.restDampedShare > kDampedAtRestShare;
 }
 
 } // namespace hatpic::analysis

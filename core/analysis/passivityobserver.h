@@ -71,17 +71,31 @@ public:
         double dissipated = 0;
         //! R of the last sample; NaN when the device does not report it [J].
         double reserve = std::numeric_limits<double>::quiet_NaN();
+        //! The knob has stayed within passivity::kStillBand for passivity::kRestTime (θ given).
+        bool atRest = false;
+        //! While at rest: the share of samples with τ_pc ≠ 0, averaged over about the last
+        //! second (exponentially); 0 otherwise.
+        double restDampedShare = 0;
+        //! At rest and damped in more than kDampedAtRestShare of it: the controller holds the
+        //! knob heavier than tuned because the loop does not rest on its own (docs/teleop.md).
+        bool dampedAtRest = false;
     };
+
+    //! Damped in more than this share of a rest's samples is "damped at rest" (passivity.md's
+    //! target: at most 5 % once at rest).
+    static constexpr double kDampedAtRestShare = 0.05;
 
     //! Settings that validate() refuses are not taken: the defaults are used instead.
     explicit PassivityObserver(const PassivitySettings &settings = {});
 
     //! One sample: time `t` [s], τ_ext as the device rendered it [N·m], the knob's ω [rad/s],
-    //! and the passivity controller's τ_pc [N·m] and reserve R [J] (NaN: not reported). The
-    //! energies are integrated by the trapezoidal rule from the previous sample.
+    //! the passivity controller's τ_pc [N·m] and reserve R [J] (NaN: not reported), and the
+    //! knob's angle θ [rad] (NaN: rest is not judged). The energies are integrated by the
+    //! trapezoidal rule from the previous sample.
     void add(double t, double tauExt, double omega,
              double tauPc = std::numeric_limits<double>::quiet_NaN(),
-             double reserve = std::numeric_limits<double>::quiet_NaN());
+             double reserve = std::numeric_limits<double>::quiet_NaN(),
+             double theta = std::numeric_limits<double>::quiet_NaN());
     //! E back to 0, no contact, counters 0.
     void reset();
 
@@ -89,6 +103,9 @@ public:
     const PassivitySettings &settings() const { return m_settings; }
 
 private:
+    //! Whether the knob rests at `theta` and how often the controller damped it there.
+    void judgeRest(double t, double theta, bool damped);
+
     struct Point
     {
         double t;
@@ -110,6 +127,9 @@ private:
     bool m_approachOver = false;     //!< m_contactStartEnergy holds
     double m_lastContactT = -std::numeric_limits<double>::infinity();
     double m_lastGeneratingT = -std::numeric_limits<double>::infinity();
+    double m_restAnchor = std::numeric_limits<double>::quiet_NaN(); //!< θ the knob stopped at
+    double m_stillSince = 0;                                        //!< when it stopped there [s]
+    double m_restT = std::numeric_limits<double>::quiet_NaN();      //!< the rest's last sample [s]
 };
 
 } // namespace hatpic::analysis

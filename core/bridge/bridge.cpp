@@ -206,7 +206,8 @@ void Bridge::sampleDecoded(const Sample &sample)
         const std::lock_guard lock(m_mutex);
         if (!m_endpoints)
             return;
-        m_passivity.add(sample.t_s, sample.tau_ext, sample.omega, sample.tau_pc, sample.pc_reserve);
+        m_passivity.add(sample.t_s, sample.tau_ext, sample.omega, sample.tau_pc, sample.pc_reserve,
+                        sample.theta);
         m_deviceTauExt = sample.tau_ext;
         if (sample.arrival_ns > 0)
             m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);

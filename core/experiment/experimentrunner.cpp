@@ -22,7 +22,10 @@ ExperimentRunner::ExperimentRunner(DeviceClient &client, SimulatedJoystick *simu
             [this] { end(ExperimentResult::Outcome::Completed, {}); });
     m_releaseTimer.setSingleShot(true);
     m_releaseTimer.setInterval(kReleaseMs);
-    connect(&m_releaseTimer, &QTimer::timeout, this, &ExperimentRunner::beginPlan);
+    connect(&m_releaseTimer, &QTimer::timeout, this, [this] {
+        m_releasing = false;
+        beginPlanWhenReady();
+    });
     connect(&client, &DeviceClient::samplesReady, this, &ExperimentRunner::onSamples);
     connect(&client, &DeviceClient::deviceLog, this, &ExperimentRunner::onDeviceLog);
     connect(&client, &DeviceClient::stateChanged, this, [this](SessionState state) {
@@ -37,6 +40,7 @@ ExperimentRunner::~ExperimentRunner()
     if (running() && m_client) {
         m_client->setFeedback(0);
         restoreHand();
+        restorePassivity();
     }
 }
 
@@ -55,7 +59,8 @@ QString ExperimentRunner::refusal(const DeviceClient &client)
             "Experiments need a protocol v2 device: the legacy firmware has no telemetry rate to "
             "ask for (it streams at its own few hertz) and reports no τ_ext, too little to "
             "measure a response.");
-    if (!client.deviceTuning().params)
+    if (!client.deviceTuning().params ||
+        (client.deviceInfo().hasPassivity() && !client.deviceTuning().passivity))
         return QStringLiteral("The device's parameters have not been read yet.");
     return {};
 }
@@ -85,15 +90,61 @@ QString ExperimentRunner::start(const ExperimentPlan &plan)
     m_hand = handFor();
     m_handBefore = m_hand == RunHand::SimulatedIdle ? m_simulator->hand() : HandInput{};
     m_client->setFeedback(m_plan.tauExt(0));
-    if (m_hand == RunHand::SimulatedIdle && m_handBefore.kind != HandInput::Kind::Idle) {
+    m_passivityBefore.reset();
+    m_phase = Phase::Preparing;
+    const std::optional<PassivityParams> &passivity = m_client->deviceTuning().passivity;
+    m_quieting = passivity && passivity->enabled();
+    if (m_quieting) {
+        // The controller off before the plan, once the device has taken it.
+        m_passivityBefore = *passivity;
+        DeviceTuning off;
+        off.passivity = PassivityParams{0.0, passivity->pc_reserve_max};
+        m_client->request(request::Push{off},
+                          {this, [this](const Outcome &outcome) { onQuieted(outcome); }});
+        if (m_phase != Phase::Preparing)
+            return {}; // refused at once: the run has ended, saying why
+    }
+    m_releasing = m_hand == RunHand::SimulatedIdle && m_handBefore.kind != HandInput::Kind::Idle;
+    if (m_releasing) {
         // The hand lets go; the knob comes to rest at the plan's first level, then the plan.
         m_simulator->setHand(HandInput{});
-        m_phase = Phase::Releasing;
         m_releaseTimer.start();
-        return {};
     }
-    beginPlan();
+    beginPlanWhenReady();
     return {};
+}
+
+void ExperimentRunner::onQuieted(const Outcome &outcome)
+{
+    if (m_phase != Phase::Preparing || !m_quieting)
+        return; // the run ended meanwhile
+    m_quieting = false;
+    if (!outcome.ok()) {
+        // Whether a timed-out SET_PASSIVITY took effect is unknown: end() sends the block back.
+        end(ExperimentResult::Outcome::Failed,
+            QStringLiteral("The device did not turn its passivity controller off for the run, "
+                           "so the experiment did not start."));
+        return;
+    }
+    beginPlanWhenReady();
+}
+
+void ExperimentRunner::beginPlanWhenReady()
+{
+    if (m_phase == Phase::Preparing && !m_quieting && !m_releasing)
+        beginPlan();
+}
+
+void ExperimentRunner::restorePassivity()
+{
+    if (!m_passivityBefore)
+        return;
+    if (m_client) {
+        DeviceTuning before;
+        before.passivity = m_passivityBefore;
+        m_client->request(request::Push{before});
+    }
+    m_passivityBefore.reset();
 }
 
 void ExperimentRunner::beginPlan()
@@ -155,7 +206,7 @@ void ExperimentRunner::onDeviceLog(const QString &line)
 
 void ExperimentRunner::onSamples(const QList<Sample> &batch)
 {
-    if (!running() || m_phase == Phase::Releasing || batch.isEmpty())
+    if (!running() || m_phase == Phase::Preparing || batch.isEmpty())
         return;
     for (const Sample &s : batch) {
         if (s.flags & v2::kFlagTorqueOff) {
@@ -185,9 +236,12 @@ void ExperimentRunner::end(ExperimentResult::Outcome outcome, const QString &pro
     m_timer.stop();
     m_drainTimer.stop();
     m_releaseTimer.stop();
+    m_quieting = false;
+    m_releasing = false;
     if (m_client)
         m_client->setFeedback(0);
     restoreHand();
+    restorePassivity();
     m_phase = Phase::Idle;
     ExperimentResult result;
     if (outcome == ExperimentResult::Outcome::Completed) {

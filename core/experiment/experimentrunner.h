@@ -10,6 +10,9 @@
 // come to rest first when it was pushing) and is given back, as it was, whenever the run ends. A
 // device on a port has a person's hand (or hatpic-sim's --hand), which no program can lift: the
 // result says which it was (RunHand).
+// The device's passivity controller (docs/teleop.md) would take the plan's τ_ext for a robot's
+// port and damp the very response measured: it is turned off for the run (SET_PASSIVITY with
+// pc_damping_max 0 before the plan) and its block is sent back whenever the run ends.
 //
 // Lives on the client's thread; every method returns at once.
 #pragma once
@@ -22,6 +25,8 @@
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
+
+#include <optional>
 
 namespace hatpic {
 
@@ -64,9 +69,16 @@ Q_SIGNALS:
     void finished(const hatpic::ExperimentResult &result);
 
 private:
-    enum class Phase { Idle, Releasing, Running, Draining };
+    //! Preparing: the passivity controller going off, the simulated hand letting go.
+    enum class Phase { Idle, Preparing, Running, Draining };
 
+    //! The device answered the push that turns its passivity controller off.
+    void onQuieted(const Outcome &outcome);
+    //! The plan, once the controller is off and the knob has come to rest.
+    void beginPlanWhenReady();
     void beginPlan();
+    //! Sends the passivity block back as it was before the run, once.
+    void restorePassivity();
     void tick();
     void onSamples(const QList<Sample> &batch);
     void onDeviceLog(const QString &line);
@@ -91,6 +103,10 @@ private:
     int m_lastProgress = -1; //!< percent last reported
     RunHand m_hand = RunHand::User;
     HandInput m_handBefore; //!< the simulated hand to give back (RunHand::SimulatedIdle)
+    //! The device's passivity block to send back at the end; empty when it was left alone.
+    std::optional<PassivityParams> m_passivityBefore;
+    bool m_quieting = false;  //!< Preparing: the controller's push is on its way
+    bool m_releasing = false; //!< Preparing: the simulated hand let go kReleaseMs ago
 };
 
 } // namespace hatpic

@@ -17,6 +17,8 @@ QList<Sample> idealResponse(const ExperimentPlan &plan, const DeviceParams &para
     config.ideal = true;
     config.tauLimit = tauLimit;
     config.params = params;
+    // The model's knob alone: the runner turns the device's passivity controller off too.
+    config.passivity = PassivityParams::off();
     SimulatedDevice device(config);
     QList<Sample> out;
     const auto steps = static_cast<qsizetype>(std::floor(plan.totalDuration() * rateHz)) + 1;

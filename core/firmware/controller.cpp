@@ -28,7 +28,7 @@ template<typename T> bool Controller<T>::start(const DeviceParams &params, std::
     m_filter = {theta, T(0)};
     m_measured = {theta, T(0), T(0)};
     m_record.theta = theta;
-    m_tank.fill(); // passivity.md: the tank starts full at start and after a reset
+    m_tank.fill(); // passivity.md: the tank starts armed at start and after a reset
     m_record.pc_reserve = m_tank.reserve();
     return true;
 }
@@ -139,7 +139,10 @@ template<typename T> const CycleRecord<T> &Controller<T>::cycle(std::uint32_t no
     r.tau_pc = T(0);
     r.pc_reserve = m_tank.reserve();
     if (measured) {
-        const auto pc = m_tank.step(r.tau_ext, m_filter.omega, m_h);
+        // The port's energy is booked on the τ_ext the knob can render (the torque limit); the
+        // tank's level follows the hand's work against the knob's centre.
+        const auto pc = m_tank.step(std::clamp(r.tau_ext, -m_tauLimit, m_tauLimit), m_filter.omega,
+                                    m_h, r.theta - m_shape.theta0, r.tau);
         r.tau_pc = pc.tauPc;
         r.pc_reserve = pc.reserve;
         const T u = -r.tau + r.tau_total;

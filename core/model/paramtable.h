@@ -299,8 +299,9 @@ using PassivityFieldSpec = FieldSpec<PassivityParams>;
 
 //! The passivity controller's fields in wire order (passivity.md, "Parameters"). Tuning
 //! ranges: β_max 0.1 fails at 0.5 s one-way delay, 0.5 holds it but not with 20 % loss, 0.7
-//! (the default) holds both; a tank of 0.02 J lets a rate-controlled robot's stable contact
-//! (about 15 mJ back through the knob) pass undamped.
+//! (the default) holds both; R_max caps the tank, whose level follows the hand's work
+//! (model/passivity.h): 0.15 J covers the hardest impact a robot driven at v_max returns
+//! through the knob (about 0.13 J), a smaller R_max damps such contacts earlier.
 inline constexpr std::array<PassivityFieldSpec, PassivityParams::kFieldCount> kPassivityFields = {{
     {"pc_damping_max",
      "β_max",
@@ -317,13 +318,13 @@ inline constexpr std::array<PassivityFieldSpec, PassivityParams::kFieldCount> kP
      "R_max",
      "J",
      "passivity reserve (max)",
-     "energy a contact may give back through the knob undamped (the tank's size)",
+     "most energy a contact may give back through the knob undamped (the tank's cap)",
      &PassivityParams::pc_reserve_max,
      paramtable::atLeast(0.0),
      paramtable::atMost(1.0),
      {},
      false,
-     {0.0, 0.1, 0.001}},
+     {0.0, 0.3, 0.005}},
 }};
 
 //! VIBRATE's fields (effects.md § 2); amplitude's upper bound is tau_limit, and the frequency

@@ -183,14 +183,15 @@ QByteArray hostJson(const Profile &profile)
 // The device object; its effects object only when the block travels differently from the
 // defaults (a device's read-back of them is ±π moved inside by one float), so profiles
 // without effects stay as they were.
-QByteArray deviceJson(const Profile &profile)
+QByteArray deviceJson(const Profile &profile, ProfileBlocks always)
 {
     JsonObjectWriter writer = deviceParamsWriter(profile.device, 2);
     const double tauLimit = profile.host.tau_limit;
-    if (roundedForWire(profile.effects, tauLimit) != roundedForWire(EffectParams{}, tauLimit))
+    if (always.effects ||
+        roundedForWire(profile.effects, tauLimit) != roundedForWire(EffectParams{}, tauLimit))
         writer.add("effects", effectParamsJson(profile.effects, 4));
     // The same for the passivity block: written once it differs from the defaults.
-    if (!sameOnWire(profile.passivity, PassivityParams{}))
+    if (always.passivity || !sameOnWire(profile.passivity, PassivityParams{}))
         writer.add("passivity", passivityParamsJson(profile.passivity, 4));
     return writer.text();
 }
@@ -255,14 +256,14 @@ ProfileReadResult readProfile(const QString &path)
     return parseProfile(*data);
 }
 
-QByteArray serializeProfile(const Profile &profile)
+QByteArray serializeProfile(const Profile &profile, ProfileBlocks always)
 {
     return JsonObjectWriter(0)
                .add("format", jsonString(kFormat))
                .add("version", QByteArray::number(kProfileVersion))
                .add("name", jsonString(profile.name))
                .add("notes", jsonString(profile.notes))
-               .add("device", deviceJson(profile))
+               .add("device", deviceJson(profile, always))
                .add("host", hostJson(profile))
                .text() +
            '\n';

@@ -52,8 +52,17 @@ ProfileReadResult parseProfile(const QByteArray &json);
 //! Reads a file (refusing files larger than kMaxProfileBytes) and parses it.
 ProfileReadResult readProfile(const QString &path);
 
+//! Which of the device's optional blocks a profile's text carries whatever their values; a
+//! block not named is written only when it differs from its defaults, so files that never
+//! touched it stay as they were.
+struct ProfileBlocks
+{
+    bool effects = false;   //!< device.effects
+    bool passivity = false; //!< device.passivity
+};
+
 //! The JSON text of a profile (key order of profile.md, two-space indent, exact doubles).
-QByteArray serializeProfile(const Profile &profile);
+QByteArray serializeProfile(const Profile &profile, ProfileBlocks always = {});
 //! Writes atomically with QSaveFile. Returns an empty string on success, else the error.
 QString writeProfile(const Profile &profile, const QString &path);
 

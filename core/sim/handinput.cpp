@@ -30,6 +30,7 @@ const KindInfo kKinds[] = {
     {HandInput::Kind::Sine, QLatin1String("sine"), QLatin1String("sine:A:F"), 2, 2},
     {HandInput::Kind::Chirp, QLatin1String("chirp"), QLatin1String("chirp:A:F0:F1"), 3, 3},
     {HandInput::Kind::VirtualHand, QLatin1String("hand"), QLatin1String("hand:ANGLE"), 1, 1},
+    {HandInput::Kind::Pushes, QLatin1String("pushes"), QLatin1String("pushes:T:N:ON:OFF"), 4, 4},
 };
 
 const KindInfo &infoOf(HandInput::Kind kind)
@@ -75,8 +76,26 @@ double HandInput::torque(double t, double theta, double omega) const
     }
     case Kind::VirtualHand:
         return kHandStiffness * (angle - theta) - kHandDamping * omega;
+    case Kind::Pushes: {
+        const double period = pushTime + releaseTime;
+        if (t < 0 || period <= 0)
+            return 0.0;
+        const double index = std::floor(t / period);
+        return index < pushes && t - index * period < pushTime ? amplitude : 0.0;
+    }
     }
     return 0.0;
+}
+
+HandInput HandInput::pushing(double torque, int count, double on, double off)
+{
+    HandInput hand;
+    hand.kind = Kind::Pushes;
+    hand.amplitude = torque;
+    hand.pushes = count;
+    hand.pushTime = on;
+    hand.releaseTime = off;
+    return hand;
 }
 
 std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
@@ -84,7 +103,8 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
     const QString text = spec.trimmed();
     if (text.isEmpty()) {
         setError(error, QStringLiteral("The hand input is empty; expected idle, const:T, "
-                                       "step:T[:T0[:AT]], sine:A:F, chirp:A:F0:F1 or hand:ANGLE."));
+                                       "step:T[:T0[:AT]], sine:A:F, chirp:A:F0:F1, hand:ANGLE "
+                                       "or pushes:T:N:ON:OFF."));
         return std::nullopt;
     }
     const QStringList parts = text.split(QLatin1Char(':'));
@@ -96,7 +116,7 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
     }
     if (!info) {
         setError(error, QStringLiteral("Unknown hand input kind \"%1\" in \"%2\"; expected idle, "
-                                       "const, step, sine, chirp or hand.")
+                                       "const, step, sine, chirp, hand or pushes.")
                             .arg(parts.first(), text));
         return std::nullopt;
     }
@@ -201,6 +221,36 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
             return std::nullopt;
         }
         break;
+    case Kind::Pushes: {
+        hand.amplitude = values.at(0);
+        if (!checkTorque(hand.amplitude))
+            return std::nullopt;
+        const double n = values.at(1);
+        if (n != std::floor(n) || n < 1 || n > kMaxPushes) {
+            setError(error, QStringLiteral("Hand input push count %1 in \"%2\" must be a whole "
+                                           "number from 1 to %3.")
+                                .arg(compactNumberText(n), text, QString::number(kMaxPushes)));
+            return std::nullopt;
+        }
+        hand.pushes = int(n);
+        hand.pushTime = values.at(2);
+        hand.releaseTime = values.at(3);
+        if (hand.pushTime <= 0 || hand.pushTime > kMaxPhase) {
+            setError(error, QStringLiteral("Hand input push time %1 s in \"%2\" must be above 0 "
+                                           "and at most %3 s.")
+                                .arg(compactNumberText(hand.pushTime), text,
+                                     compactNumberText(kMaxPhase)));
+            return std::nullopt;
+        }
+        if (hand.releaseTime < 0 || hand.releaseTime > kMaxPhase) {
+            setError(error, QStringLiteral("Hand input release time %1 s in \"%2\" must be from "
+                                           "0 to %3 s.")
+                                .arg(compactNumberText(hand.releaseTime), text,
+                                     compactNumberText(kMaxPhase)));
+            return std::nullopt;
+        }
+        break;
+    }
     }
     return hand;
 }
@@ -231,6 +281,9 @@ QString HandInput::toSpec() const
         break;
     case Kind::VirtualHand:
         values = {angle};
+        break;
+    case Kind::Pushes:
+        values = {amplitude, double(pushes), pushTime, releaseTime};
         break;
     }
     std::string spec(infoOf(kind).name.data(), static_cast<std::size_t>(infoOf(kind).name.size()));

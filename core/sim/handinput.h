@@ -10,12 +10,11 @@
 namespace hatpic {
 
 //! Parsed form of a hand SPEC (docs/cli.md): `idle`, `const:T`, `step:T[:T0[:AT]]`,
-//! `sine:A:F`,
-//! `chirp:A:F0:F1`, `hand:ANGLE`. Torques are the operator's torque τ_op on the knob; positive
-//! pushes θ positive (so the measured τ is its negative).
+//! `sine:A:F`, `chirp:A:F0:F1`, `hand:ANGLE`, `pushes:T:N:ON:OFF`. Torques are the operator's
+//! torque τ_op on the knob; positive pushes θ positive (so the measured τ is its negative).
 struct HandInput
 {
-    enum class Kind { Idle, Constant, Step, Sine, Chirp, VirtualHand };
+    enum class Kind { Idle, Constant, Step, Sine, Chirp, VirtualHand, Pushes };
 
     Kind kind = Kind::Idle;
     double amplitude = 0;  //!< T for const/step, A for sine/chirp [N·m]
@@ -26,6 +25,9 @@ struct HandInput
     //! AT of step: when the step happens [s]. Last, so that brace-initialised hands written
     //! before it keep their meaning.
     double stepTime = kStepTime;
+    int pushes = 1;         //!< N of pushes: how many times the hand pushes
+    double pushTime = 0;    //!< ON of pushes: how long each push holds T [s]
+    double releaseTime = 0; //!< OFF of pushes: how long the hand lets go between pushes [s]
 
     static constexpr double kStepTime = 0.1;      //!< when a step happens by default [s]
     static constexpr double kMaxStepTime = 3600;  //!< AT at most: an hour [s]
@@ -38,6 +40,14 @@ struct HandInput
     static constexpr double kMaxTorque = 10.0;                //!< |T|, |T0|, |A| [N·m]
     static constexpr double kMaxFrequency = 1000.0;           //!< F, F0, F1 [Hz]
     static constexpr double kMaxAngle = 2 * std::numbers::pi; //!< |ANGLE|: one turn [rad]
+    static constexpr int kMaxPushes = 1000;                   //!< N of pushes at most
+    static constexpr double kMaxPhase = 3600;                 //!< ON, OFF at most: an hour [s]
+
+    //! A hand that pushes `torque` for `on` s, lets go for `off` s, `count` times, and then lets
+    //! go (pushes:T:N:ON:OFF): the same contact made again and again.
+    static HandInput pushing(double torque, int count, double on, double off);
+    //! Pushes: when push `index` (from 0) begins [s].
+    double pushStart(int index) const { return index * (pushTime + releaseTime); }
 
     //! τ_op at time t since the input started, for knob angle θ [rad] and rate ω [rad/s].
     double torque(double t, double theta, double omega) const;

@@ -46,14 +46,19 @@ public:
     // What the figures need, per cycle.
     std::vector<double> theta, x, tauExtSeen;
     std::vector<double> tauPc2, tauExt2; //!< running sums of τ_pc², τ_ext²
-    double dissipated = 0;
-    std::int64_t contactCycle = -1;
+    std::vector<double> dissipated;      //!< running sum of −τ_pc·ω·h [J]
+    std::vector<char> damped;            //!< τ_pc ≠ 0 (β > 0)
     QString problem;
+
+    //! The cycles of contact `index` (from 0): from its push to the next release.
+    std::pair<std::int64_t, std::int64_t> window(int index) const;
+    //! The figures of contact `index` over the cycles run so far.
+    LoopResult figures(int index) const;
 };
 
 LoopSimulation::Private::Private(const LoopConfig &c)
     : config(c), feedback(c.feedback), rate(c.twistRateHz), robot(c.robot),
-      total(std::int64_t(std::floor(c.duration / kStep + 1e-9)) + 1)
+      total(std::int64_t(std::floor(c.runTime() / kStep + 1e-9)) + 1)
 {
     SimulatedDevice::Config dc;
     dc.protocol = WireProtocol::V2;
@@ -61,7 +66,9 @@ LoopSimulation::Private::Private(const LoopConfig &c)
     dc.throttle = false;
     dc.noise = c.noise;
     dc.seed = c.seed;
-    dc.hand = c.hand;
+    dc.hand = c.contacts > 1 ? HandInput::pushing(c.hand.amplitude, c.contacts, c.duration,
+                                                  LoopConfig::kRelease)
+                             : c.hand;
     dc.tauLimit = c.host.tau_limit;
     dc.params = c.device;
     dc.passivity = roundedForWire(c.passivity); // as the device holds it: float32
@@ -72,8 +79,9 @@ LoopSimulation::Private::Private(const LoopConfig &c)
         const EffectParams wire = roundedForWire(c.effects, c.host.tau_limit);
         device->receive(v2::encodeFrame(seq++, v2::SetEffects{wire}));
     }
-    for (auto *v : {&theta, &x, &tauExtSeen, &tauPc2, &tauExt2})
+    for (auto *v : {&theta, &x, &tauExtSeen, &tauPc2, &tauExt2, &dissipated})
         v->reserve(std::size_t(total));
+    damped.reserve(std::size_t(total));
 }
 
 QString LoopSimulation::check(const LoopConfig &config)
@@ -82,6 +90,16 @@ QString LoopSimulation::check(const LoopConfig &config)
         config.duration > kMaxDuration)
         return u"duration must be from 2 to 3600 s, got " + compactNumberText(config.duration) +
                u'.';
+    if (config.contacts < 1 || config.contacts > LoopConfig::kMaxContacts)
+        return u"contacts must be from 1 to " + QString::number(LoopConfig::kMaxContacts) +
+               u", got " + QString::number(config.contacts) + u'.';
+    if (config.contacts > 1 && config.hand.kind != HandInput::Kind::Constant)
+        return u"contacts above 1 need a constant hand (const:T), got " + config.hand.toSpec() +
+               u'.';
+    if (config.runTime() > kMaxDuration)
+        return u"contacts × duration must be at most 3600 s of virtual time with the releases, "
+               u"got " +
+               compactNumberText(config.runTime()) + u" s.";
     if (!std::isfinite(config.noise) || config.noise < 0 || config.noise > 1)
         return u"noise must be from 0 to 1 N·m, got " + compactNumberText(config.noise) + u'.';
     if (QString error; !HandInput::parse(config.hand.toSpec(), &error))
@@ -124,7 +142,8 @@ QString LoopSimulation::check(const LoopConfig &config)
 
 std::optional<robot::LoopEquilibrium> LoopSimulation::equilibrium(const LoopConfig &config)
 {
-    if (config.hand.kind != HandInput::Kind::Constant && config.hand.kind != HandInput::Kind::Step)
+    if (config.hand.kind != HandInput::Kind::Constant &&
+        config.hand.kind != HandInput::Kind::Step && config.hand.kind != HandInput::Kind::Pushes)
         return std::nullopt;
     // The device renders its floats; the rest is where they balance.
     return robot::loopEquilibrium(roundedToFloat(config.device), config.host, config.hand.amplitude,
@@ -176,89 +195,144 @@ LoopSimulation::Step LoopSimulation::step()
     s.omega = cycle.omega;
     s.tauExt = cycle.tau_ext;
     s.tauPc = cycle.tau_pc;
+    s.reserve = cycle.pc_reserve;
     s.x = p.robot.model().position();
 
     if (!std::isfinite(s.theta) || !std::isfinite(s.omega) || !std::isfinite(s.x)) {
         p.problem = u"The loop left the finite numbers at t = " + compactNumberText(t) + u" s.";
         return s;
     }
-    if (p.contactCycle < 0 && s.tauExt != 0)
-        p.contactCycle = std::int64_t(p.theta.size());
-    const double prevPc = p.tauPc2.empty() ? 0.0 : p.tauPc2.back();
-    const double prevExt = p.tauExt2.empty() ? 0.0 : p.tauExt2.back();
+    const auto last = [](const std::vector<double> &v) { return v.empty() ? 0.0 : v.back(); };
+    p.tauPc2.push_back(last(p.tauPc2) + s.tauPc * s.tauPc);
+    p.tauExt2.push_back(last(p.tauExt2) + s.tauExt * s.tauExt);
+    p.dissipated.push_back(last(p.dissipated) - s.tauPc * s.omega * kStep);
     p.theta.push_back(s.theta);
     p.x.push_back(s.x);
     p.tauExtSeen.push_back(s.tauExt);
-    p.tauPc2.push_back(prevPc + s.tauPc * s.tauPc);
-    p.tauExt2.push_back(prevExt + s.tauExt * s.tauExt);
-    p.dissipated += -s.tauPc * s.omega * kStep;
+    p.damped.push_back(s.tauPc != 0);
     return s;
 }
 
-LoopResult LoopSimulation::result() const
+std::pair<std::int64_t, std::int64_t> LoopSimulation::Private::window(int index) const
 {
-    const Private &p = *d;
+    if (config.contacts <= 1)
+        return {0, total};
+    const std::int64_t begin =
+        std::llround((config.duration + LoopConfig::kRelease) * index / kStep);
+    const std::int64_t end =
+        index == config.contacts - 1 ? total : begin + std::llround(config.duration / kStep);
+    return {begin, end};
+}
+
+LoopResult LoopSimulation::Private::figures(int index) const
+{
     LoopResult r;
-    r.problem = p.problem;
-    r.dissipatedJ = p.dissipated;
-    const std::int64_t n = std::int64_t(p.theta.size());
-    if (n == 0)
+    r.index = index + 1;
+    r.problem = problem;
+    const auto [begin, end] = window(index);
+    const std::int64_t n = std::min(end, std::int64_t(theta.size()));
+    if (n <= begin)
         return r;
+    r.dissipatedJ =
+        dissipated[std::size_t(n - 1)] - (begin > 0 ? dissipated[std::size_t(begin - 1)] : 0.0);
     const std::int64_t window =
-        std::min<std::int64_t>(n, std::int64_t(std::llround(LoopResult::kRestWindow / kStep)));
+        std::min<std::int64_t>(n - begin, std::llround(LoopResult::kRestWindow / kStep));
     const std::int64_t from = n - window;
-    double lo = p.theta[std::size_t(from)], hi = lo, sumTheta = 0, sumTau = 0, sumX = 0;
+    double lo = theta[std::size_t(from)], hi = lo, sumTheta = 0, sumTau = 0, sumX = 0;
+    std::int64_t dampedCycles = 0;
     for (std::int64_t i = from; i < n; ++i) {
-        const double th = p.theta[std::size_t(i)];
+        const double th = theta[std::size_t(i)];
         lo = std::min(lo, th);
         hi = std::max(hi, th);
         sumTheta += th;
-        sumTau += p.tauExtSeen[std::size_t(i)];
-        sumX += p.x[std::size_t(i)];
+        sumTau += tauExtSeen[std::size_t(i)];
+        sumX += x[std::size_t(i)];
+        dampedCycles += damped[std::size_t(i)];
     }
     r.p2p = hi - lo;
     r.thetaRest = sumTheta / double(window);
     r.tauExtRest = sumTau / double(window);
     r.xRest = sumX / double(window);
+    r.dampedAtRest = double(dampedCycles) / double(window);
 
-    r.contact = p.contactCycle >= 0;
+    std::int64_t contactCycle = -1;
+    for (std::int64_t i = begin; i < n && contactCycle < 0; ++i) {
+        if (tauExtSeen[std::size_t(i)] != 0)
+            contactCycle = i;
+    }
+    r.contact = contactCycle >= 0;
     if (!r.contact)
         return r;
-    r.contactAt = double(p.contactCycle) * kStep;
-    if (const auto eq = equilibrium(p.config))
+    r.contactAt = double(contactCycle) * kStep;
+    if (const auto eq = LoopSimulation::equilibrium(config))
         r.thetaEq = eq->theta;
 
     // The last cycle out of the band around θ_eq.
     std::int64_t lastOut = -1;
     if (std::isfinite(r.thetaEq)) {
-        for (std::int64_t i = n - 1; i >= 0; --i) {
-            if (std::abs(p.theta[std::size_t(i)] - r.thetaEq) > LoopResult::kBand) {
+        for (std::int64_t i = n - 1; i >= begin; --i) {
+            if (std::abs(theta[std::size_t(i)] - r.thetaEq) > LoopResult::kBand) {
                 lastOut = i;
                 break;
             }
         }
-        r.settled = p.problem.isEmpty() && lastOut < from;
+        r.settled = problem.isEmpty() && lastOut < from;
     }
     std::int64_t restCycle = n - 1;
     if (r.settled) {
-        restCycle = std::max(lastOut, p.contactCycle);
-        r.settleS = double(restCycle - p.contactCycle) * kStep;
+        restCycle = std::max(lastOut, contactCycle);
+        r.settleS = double(restCycle - contactCycle) * kStep;
     }
     const auto span = [&](const std::vector<double> &sums) {
-        const double before = p.contactCycle > 0 ? sums[std::size_t(p.contactCycle - 1)] : 0.0;
-        return sums[std::size_t(restCycle)] - before;
+        const double start = contactCycle > 0 ? sums[std::size_t(contactCycle - 1)] : 0.0;
+        return sums[std::size_t(restCycle)] - start;
     };
-    const double ext = span(p.tauExt2);
-    r.rmsTauPcRatio = ext > 0 ? std::sqrt(span(p.tauPc2) / ext) : LoopResult::kNaN;
+    const double ext = span(tauExt2);
+    r.rmsTauPcRatio = ext > 0 ? std::sqrt(span(tauPc2) / ext) : LoopResult::kNaN;
     return r;
+}
+
+std::vector<LoopResult> LoopSimulation::contactResults() const
+{
+    std::vector<LoopResult> out;
+    for (int i = 0; i < d->config.contacts; ++i) {
+        if (d->window(i).first >= std::int64_t(d->theta.size()) && i > 0)
+            break; // not reached yet
+        out.push_back(d->figures(i));
+    }
+    return out;
+}
+
+LoopResult LoopSimulation::worst(const std::vector<LoopResult> &contacts)
+{
+    if (contacts.empty())
+        return {};
+    const auto badness = [](const LoopResult &r) {
+        // Not settled (the wider the swing, the worse) before settled (the slower, the worse).
+        return r.settled ? std::pair{0.0, r.settleS}
+                         : std::pair{1.0, std::isfinite(r.p2p) ? r.p2p : HUGE_VAL};
+    };
+    return *std::max_element(
+        contacts.begin(), contacts.end(),
+        [&](const LoopResult &a, const LoopResult &b) { return badness(a) < badness(b); });
+}
+
+LoopResult LoopSimulation::result() const
+{
+    return worst(contactResults());
 }
 
 LoopResult LoopSimulation::run(const LoopConfig &config)
 {
+    return worst(runContacts(config));
+}
+
+std::vector<LoopResult> LoopSimulation::runContacts(const LoopConfig &config)
+{
     LoopSimulation loop(config);
     while (!loop.atEnd())
         loop.step();
-    return loop.result();
+    return loop.contactResults();
 }
 
 } // namespace hatpic::teleop

@@ -42,20 +42,32 @@ struct LoopConfig
     //! The robot, its wrench rate and stale time (hatpic-robot-sim's defaults), the network's
     //! faults (--delay, --jitter, --loss) and their seed.
     robot::RobotEndSettings robot;
-    double duration = 20;                          //!< virtual time run [s]
+    //! Virtual time run [s]; with several contacts, the time of each.
+    double duration = 20;
+    //! How many contacts (passivity.md's "every contact"): with more than one, a constant hand
+    //! pushes for `duration`, lets go for kRelease, and pushes again, `contacts` times
+    //! (HandInput::pushing); each contact is judged on its own.
+    int contacts = 1;
     double noise = SimulatedDevice::kProgramNoise; //!< load-reading noise, hatpic-sim's [N·m]
     std::uint64_t seed = 1;                        //!< the noise's seed (the faults': robot.seed)
+
+    static constexpr double kRelease = 2.0; //!< the hand lets go this long between contacts [s]
+    static constexpr int kMaxContacts = 100;
+    //! The virtual time the whole run takes: every contact and the releases between [s].
+    double runTime() const { return contacts * duration + (contacts - 1) * kRelease; }
 };
 
-//! The figures of one run (docs/teleop.md § The stability map).
+//! The figures of one contact of a run (docs/teleop.md § The stability map): the whole run
+//! when it makes one contact.
 struct LoopResult
 {
     static constexpr double kBand = 0.003;     //!< |θ − θ_eq| that counts as at rest [rad]
     static constexpr double kRestWindow = 2.0; //!< the last seconds judged [s]
     static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+    int index = 1;           //!< which contact of the run, from 1
     bool contact = false;    //!< τ_ext ≠ 0 in some cycle
-    double contactAt = kNaN; //!< the first such cycle [s]
+    double contactAt = kNaN; //!< the first such cycle, from the run's start [s]
     double thetaEq = kNaN;   //!< where the loop must rest (robot.md), NaN: no rest known [rad]
     //! At rest at θ_eq: every θ of the last 2 s within kBand of θ_eq.
     bool settled = false;
@@ -70,6 +82,9 @@ struct LoopResult
     //! without contact.
     double rmsTauPcRatio = kNaN;
     double dissipatedJ = 0; //!< Σ β·ω²·h: what the passivity controller took out [J]
+    //! The share of the last 2 s's cycles in which the passivity controller damped (β > 0):
+    //! the knob made heavier at rest (passivity.md: at most 5 % once at rest).
+    double dampedAtRest = kNaN;
     //! Empty, or why the run stopped early (it left the finite numbers).
     QString problem;
 };
@@ -80,12 +95,13 @@ public:
     //! One cycle of the loop as the device and the robot saw it.
     struct Step
     {
-        double t = 0;      //!< [s]
-        double theta = 0;  //!< measured knob angle [rad]
-        double omega = 0;  //!< [rad/s]
-        double tauExt = 0; //!< the feedback the device rendered [N·m]
-        double tauPc = 0;  //!< the passivity controller's torque [N·m]
-        double x = 0;      //!< the robot's position [m]
+        double t = 0;       //!< [s]
+        double theta = 0;   //!< measured knob angle [rad]
+        double omega = 0;   //!< [rad/s]
+        double tauExt = 0;  //!< the feedback the device rendered [N·m]
+        double tauPc = 0;   //!< the passivity controller's torque [N·m]
+        double reserve = 0; //!< the passivity controller's reserve R after the cycle [J]
+        double x = 0;       //!< the robot's position [m]
     };
 
     //! Empty when `config` can run, else one sentence naming the field, the rule and the value.
@@ -102,11 +118,18 @@ public:
 
     bool atEnd() const;
     Step step(); //!< the next millisecond
-    //! The figures of the cycles run so far.
+    //! The figures of each contact, of the cycles run so far.
+    std::vector<LoopResult> contactResults() const;
+    //! The figures of the worst contact (worst(contactResults())).
     LoopResult result() const;
+    //! The worst of `contacts`: one that never settled (the widest swing) before the slowest
+    //! to settle; a default result when empty.
+    static LoopResult worst(const std::vector<LoopResult> &contacts);
 
-    //! Runs `config` to its end and returns its figures.
+    //! Runs `config` to its end and returns its figures (its worst contact's).
     static LoopResult run(const LoopConfig &config);
+    //! Runs `config` to its end and returns the figures of each contact.
+    static std::vector<LoopResult> runContacts(const LoopConfig &config);
 
 private:
     class Private;

@@ -174,7 +174,8 @@ bool setFieldValue(LoopConfig &config, const QString &name, double value)
 qsizetype MapSpec::cellCount() const
 {
     const qsizetype fields = field.name.isEmpty() ? 1 : qsizetype(field.values.size());
-    return qsizetype(delays.size()) * qsizetype(gains.size()) * fields;
+    const qsizetype handCount = hands.empty() ? 1 : qsizetype(hands.size());
+    return qsizetype(delays.size()) * qsizetype(gains.size()) * handCount * fields;
 }
 
 LoopConfig MapSpec::cellConfig(qsizetype index) const
@@ -182,10 +183,13 @@ LoopConfig MapSpec::cellConfig(qsizetype index) const
     LoopConfig c = base;
     const qsizetype nd = qsizetype(delays.size());
     const qsizetype ng = qsizetype(gains.size());
+    const qsizetype nh = hands.empty() ? 1 : qsizetype(hands.size());
     c.robot.faults.delay = delays[std::size_t(index % nd)];
     c.feedback.gain = gains[std::size_t((index / nd) % ng)];
+    if (!hands.empty())
+        c.hand = {HandInput::Kind::Constant, hands[std::size_t((index / (nd * ng)) % nh)]};
     if (!field.name.isEmpty())
-        setFieldValue(c, field.name, field.values[std::size_t(index / (nd * ng))]);
+        setFieldValue(c, field.name, field.values[std::size_t(index / (nd * ng * nh))]);
     return c;
 }
 
@@ -204,6 +208,7 @@ QString checkSpec(const MapSpec &spec)
         return u"threads must be from 1 to " + QString::number(kMaxMapThreads) + u", got " +
                QString::number(spec.threads) + u'.';
     const double cells = double(spec.delays.size()) * double(spec.gains.size()) *
+                         double(spec.hands.empty() ? 1 : spec.hands.size()) *
                          double(spec.field.name.isEmpty() ? 1 : spec.field.values.size());
     if (cells > double(kMaxMapCells))
         return u"The map would have " + compactNumberText(cells) + u" cells, more than " +
@@ -220,6 +225,12 @@ QString checkSpec(const MapSpec &spec)
         c.feedback.gain = g;
         if (const QString p = LoopSimulation::check(c); !p.isEmpty())
             return p;
+    }
+    for (double h : spec.hands) {
+        LoopConfig c = spec.base;
+        c.hand = {HandInput::Kind::Constant, h};
+        if (const QString p = LoopSimulation::check(c); !p.isEmpty())
+            return u"hand " + compactNumberText(h) + u" N·m: " + p;
     }
     for (double v : spec.field.values) {
         LoopConfig c = spec.base;
@@ -250,12 +261,11 @@ std::vector<MapCell> runMap(const MapSpec &spec,
             MapCell &cell = cells[std::size_t(i)];
             cell.delay = c.robot.faults.delay;
             cell.gain = c.feedback.gain;
-            cell.field = spec.field.name.isEmpty()
-                             ? kNaN
-                             : spec.field.values[std::size_t(
-                                   i / qsizetype(spec.delays.size() * spec.gains.size()))];
+            cell.hand = c.hand.kind == HandInput::Kind::Constant ? c.hand.amplitude : kNaN;
+            cell.field = spec.field.name.isEmpty() ? kNaN : *fieldValue(c, spec.field.name);
             cell.pc = c.passivity.pc_damping_max;
-            cell.result = LoopSimulation::run(c);
+            cell.contacts = LoopSimulation::runContacts(c);
+            cell.result = LoopSimulation::worst(cell.contacts);
             ran[std::size_t(i)] = 1;
             const qsizetype n = ++done;
             if (progress)
@@ -285,18 +295,20 @@ QByteArray mapCsv(const std::vector<MapCell> &cells, const QString &fieldName)
     if (extra)
         out += fieldName.toUtf8() + ',';
     out += "settled,settle_s,p2p,rms_tau_pc_ratio,dissipated_j,theta_rest,tau_ext_rest,x_rest,"
-           "contact_s\n";
+           "contact_s,hand,contact,damped_at_rest,theta_eq\n";
     for (const MapCell &c : cells) {
-        const LoopResult &r = c.result;
-        QStringList row{compactNumberText(c.delay), compactNumberText(c.gain),
-                        compactNumberText(c.pc)};
-        if (extra)
-            row.append(cellText(c.field));
-        row << (r.settled ? QStringLiteral("1") : QStringLiteral("0")) << cellText(r.settleS)
-            << cellText(r.p2p) << cellText(r.rmsTauPcRatio) << cellText(r.dissipatedJ)
-            << cellText(r.thetaRest) << cellText(r.tauExtRest) << cellText(r.xRest)
-            << cellText(r.contactAt);
-        out += row.join(u',').toUtf8() + '\n';
+        for (const LoopResult &r : c.contacts) {
+            QStringList row{compactNumberText(c.delay), compactNumberText(c.gain),
+                            compactNumberText(c.pc)};
+            if (extra)
+                row.append(cellText(c.field));
+            row << (r.settled ? QStringLiteral("1") : QStringLiteral("0")) << cellText(r.settleS)
+                << cellText(r.p2p) << cellText(r.rmsTauPcRatio) << cellText(r.dissipatedJ)
+                << cellText(r.thetaRest) << cellText(r.tauExtRest) << cellText(r.xRest)
+                << cellText(r.contactAt) << cellText(c.hand) << QString::number(r.index)
+                << cellText(r.dampedAtRest) << cellText(r.thetaEq);
+            out += row.join(u',').toUtf8() + '\n';
+        }
     }
     return out;
 }
@@ -351,21 +363,37 @@ double indexOf(const std::vector<double> &axis, double v)
 QByteArray mapSvg(const std::vector<MapCell> &cells, const QString &fieldName, double duration,
                   const std::optional<MapMark> &mark)
 {
-    std::vector<double> delays, gains, fields;
+    std::vector<double> delays, gains, fields, hands;
     for (const MapCell &c : cells) {
         delays.push_back(c.delay);
         gains.push_back(c.gain);
         fields.push_back(fieldName.isEmpty() ? 0.0 : c.field);
+        if (std::isfinite(c.hand))
+            hands.push_back(c.hand);
     }
     delays = distinct(delays);
     gains = distinct(gains);
     fields = distinct(fields);
+    hands = distinct(hands);
     if (fields.empty())
         fields.push_back(0);
+    // A panel per field value and hand; the hand is named only when the map has several.
+    const bool perHand = hands.size() > 1;
+    if (!perHand)
+        hands.assign(1, kNaN);
+    struct Panel
+    {
+        double field, hand;
+    };
+    std::vector<Panel> panels;
+    for (double f : fields) {
+        for (double h : hands)
+            panels.push_back({f, h});
+    }
 
     constexpr double kPanelW = 320, kPanelH = 260, kLeft = 90, kTop = 40, kGap = 30;
     constexpr double kBottom = 60, kLegendW = 110;
-    const double width = kLeft + double(fields.size()) * (kPanelW + kGap) + kLegendW;
+    const double width = kLeft + double(panels.size()) * (kPanelW + kGap) + kLegendW;
     const double height = kTop + kPanelH + kBottom;
     const double cw = kPanelW / double(std::max<std::size_t>(1, delays.size()));
     const double ch = kPanelH / double(std::max<std::size_t>(1, gains.size()));
@@ -376,15 +404,21 @@ QByteArray mapSvg(const std::vector<MapCell> &cells, const QString &fieldName, d
          num(height) + u"\" viewBox=\"0 0 " + num(width) + u' ' + num(height) +
          u"\" font-family=\"sans-serif\" font-size=\"11\">\n";
     s += u"<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    for (std::size_t p = 0; p < fields.size(); ++p) {
+    for (std::size_t p = 0; p < panels.size(); ++p) {
+        const Panel &panel = panels[p];
         const double x0 = kLeft + double(p) * (kPanelW + kGap);
-        const QString title = fieldName.isEmpty()
-                                  ? QStringLiteral("stability map")
-                                  : esc(fieldName) + u" = " + compactNumberText(fields[p]);
+        QStringList titles;
+        if (!fieldName.isEmpty())
+            titles.append(esc(fieldName) + u" = " + compactNumberText(panel.field));
+        if (perHand)
+            titles.append(u"hand " + compactNumberText(panel.hand) + u" N·m");
+        const QString title =
+            titles.isEmpty() ? QStringLiteral("stability map") : titles.join(u", ");
         s += u"<text x=\"" + num(x0 + kPanelW / 2) + u"\" y=\"" + num(kTop - 12) +
              u"\" text-anchor=\"middle\" font-size=\"13\">" + title + u"</text>\n";
         for (const MapCell &c : cells) {
-            if (!fieldName.isEmpty() && c.field != fields[p])
+            if ((!fieldName.isEmpty() && c.field != panel.field) ||
+                (perHand && c.hand != panel.hand))
                 continue;
             const double cx = x0 + indexOf(delays, c.delay) * cw;
             const double cy = kTop + kPanelH - (indexOf(gains, c.gain) + 1) * ch;
@@ -397,6 +431,9 @@ QByteArray mapSvg(const std::vector<MapCell> &cells, const QString &fieldName, d
                  compactNumberText(c.delay) + u" s, gain " + compactNumberText(c.gain) + u": " +
                  (r.settled ? QString(u"settled in " + compactNumberText(r.settleS) + u" s")
                             : QString(u"not settled, θ p2p " + cellText(r.p2p) + u" rad")) +
+                 (c.contacts.size() > 1 ? u" (contact " + QString::number(r.index) + u" of " +
+                                              QString::number(c.contacts.size()) + u", the worst)"
+                                        : QString()) +
                  u"</title></rect>\n";
             if (!r.settled) {
                 const double m = std::min(cw, ch) * 0.25;
@@ -428,7 +465,8 @@ QByteArray mapSvg(const std::vector<MapCell> &cells, const QString &fieldName, d
         s += u"<rect x=\"" + num(x0) + u"\" y=\"" + num(kTop) + u"\" width=\"" + num(kPanelW) +
              u"\" height=\"" + num(kPanelH) + u"\" fill=\"none\" stroke=\"#404040\"/>\n";
         if (mark &&
-            (fieldName.isEmpty() || !std::isfinite(mark->field) || mark->field == fields[p])) {
+            (fieldName.isEmpty() || !std::isfinite(mark->field) || mark->field == panel.field) &&
+            (!perHand || !std::isfinite(mark->hand) || mark->hand == panel.hand)) {
             const double mx = x0 + (indexOf(delays, mark->delay) + 0.5) * cw;
             const double my = kTop + kPanelH - (indexOf(gains, mark->gain) + 0.5) * ch;
             const double rad = std::max(5.0, std::min(cw, ch) * 0.3);

@@ -39,15 +39,17 @@ bool setFieldValue(LoopConfig &config, const QString &name, double value);
 
 struct MapSpec
 {
-    LoopConfig base; //!< everything but the delay, the gain and the field
+    LoopConfig base; //!< everything but the delay, the gain, the hand and the field
     std::vector<double> delays{0.0};
     std::vector<double> gains{0.02};
+    //! Constant hands' torques [N·m], a map each; empty: the base's hand only.
+    std::vector<double> hands;
     MapField field; //!< name empty: the base's tuning only
     int threads = 2;
 
-    //! The cells' count: delays × gains × field values (at least one).
+    //! The cells' count: delays × gains × hands × field values (at least one).
     qsizetype cellCount() const;
-    //! The config of cell `index` (field value slowest, then gain, delay fastest).
+    //! The config of cell `index` (field value slowest, then hand, then gain, delay fastest).
     LoopConfig cellConfig(qsizetype index) const;
 };
 
@@ -59,11 +61,13 @@ QString checkSpec(const MapSpec &spec);
 
 struct MapCell
 {
-    double delay = 0; //!< one-way [s]
-    double gain = 0;  //!< [N·m/N]
-    double field = 0; //!< the varied field's value (NaN: no field varied)
-    double pc = 0;    //!< pc_damping_max used [N·m·s/rad] (0: no controller)
-    LoopResult result;
+    double delay = 0;  //!< one-way [s]
+    double gain = 0;   //!< [N·m/N]
+    double hand = 0;   //!< the hand's torque [N·m] (NaN: a hand that is not constant)
+    double field = 0;  //!< the varied field's value (NaN: no field varied)
+    double pc = 0;     //!< pc_damping_max used [N·m·s/rad] (0: no controller)
+    LoopResult result; //!< the worst contact's figures
+    std::vector<LoopResult> contacts; //!< each contact's, in order
 };
 
 //! Runs every cell of a checked `spec` on `spec.threads` threads; `progress(done, total)`
@@ -72,7 +76,7 @@ std::vector<MapCell> runMap(const MapSpec &spec,
                             const std::function<void(qsizetype, qsizetype)> &progress = {},
                             const std::atomic<bool> *cancel = nullptr);
 
-//! The CSV (docs/teleop.md): header, then one row per cell.
+//! The CSV (docs/teleop.md): header, then one row per cell and contact.
 QByteArray mapCsv(const std::vector<MapCell> &cells, const QString &fieldName);
 
 //! Where a chart marks the settings in use.
@@ -80,11 +84,13 @@ struct MapMark
 {
     double delay = 0;
     double gain = 0;
-    double field = 0; //!< the panel it is on (NaN: the only one)
+    double field = 0;               //!< the panel it is on (NaN: the only one)
+    double hand = LoopResult::kNaN; //!< the hand's panel it is on (NaN: every one)
 };
 
-//! The chart: one panel per field value, delay across, gain up; a settled cell coloured by
-//! its settle time (scale 0 … duration), an unsettled one grey and crossed.
+//! The chart: one panel per field value and hand, delay across, gain up; a settled cell
+//! coloured by its worst contact's settle time (scale 0 … duration), an unsettled one grey and
+//! crossed.
 QByteArray mapSvg(const std::vector<MapCell> &cells, const QString &fieldName, double duration,
                   const std::optional<MapMark> &mark = std::nullopt);
 

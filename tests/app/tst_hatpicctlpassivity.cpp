@@ -32,12 +32,21 @@ void TestHatpicCtlPassivity::getShowsTheBlock()
     const QList<QByteArray> lines = get.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 16);
     QVERIFY2(lines[14].startsWith("pc_damping_max  0.7 "), lines[14].constData());
-    QVERIFY2(lines[15].startsWith("pc_reserve_max  0.02 "), lines[15].constData());
+    QVERIFY2(lines[15].startsWith("pc_reserve_max  0.15 "), lines[15].constData());
     QVERIFY(lines[14].contains("N·m·s/rad"));
-    // --json: the defaults are not written, so the block reads back as the defaults.
+    // --json carries every block the device has, defaults included (issue 35: get --json >
+    // profile.json lost the effects and passivity blocks, leaving them to another version's
+    // defaults).
     const Run json = runCtl({u"get"_s, u"--port"_s, u"sim"_s, u"--json"_s});
     QVERIFY2(json.code == 0, qPrintable(describe(json)));
-    QVERIFY(!json.out.contains("passivity"));
+    QVERIFY2(json.out.contains("\"passivity\": {"), json.out.constData());
+    QVERIFY2(json.out.contains("\"effects\": {"), json.out.constData());
+    QVERIFY2(json.out.contains("\"pc_reserve_max\": 0.15"), json.out.constData());
+    QVERIFY2(json.out.contains("\"detent_strength\""), json.out.constData());
+    const ProfileReadResult read = parseProfile(json.out);
+    QVERIFY2(read.ok(), qPrintable(read.errors.join(u'\n')));
+    QVERIFY(read.warnings.isEmpty());
+    QVERIFY(sameOnWire(read.profile->passivity, PassivityParams{}));
 }
 
 void TestHatpicCtlPassivity::setOneField()
@@ -49,7 +58,7 @@ void TestHatpicCtlPassivity::setOneField()
     QVERIFY(!set.err.contains("accepted the parameters"));
     QVERIFY(!set.err.contains("accepted the effects"));
     QVERIFY2(set.out.contains("\npc_damping_max  0 "), set.out.constData());
-    QVERIFY2(set.out.contains("\npc_reserve_max  0.02 "), set.out.constData()); // unchanged
+    QVERIFY2(set.out.contains("\npc_reserve_max  0.15 "), set.out.constData()); // unchanged
     const Run json = runCtl(
         {u"set"_s, u"--port"_s, u"sim"_s, u"--set"_s, u"pc_reserve_max=0.05"_s, u"--json"_s});
     QVERIFY2(json.code == 0, qPrintable(describe(json)));

@@ -19,6 +19,7 @@ private Q_SLOTS:
     void pngWithoutADisplay();
     void variesAField();
     void controllerOffAndOn();
+    void handsAndContacts();
     void badOptions_data();
     void badOptions();
     void keepsAnExistingFile();
@@ -128,6 +129,37 @@ void TestHatpicctlTeleopMap::controllerOffAndOn()
     QVERIFY(off.at(6).toDouble() == 0 && off.at(7).toDouble() == 0);
 }
 
+// Issue 35: --hand takes a list of torques (a sweep axis like --gains) and --contacts N pushes
+// N times; a row per cell and contact, with the hand and contact columns.
+void TestHatpicctlTeleopMap::handsAndContacts()
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(u"map.csv"_s);
+    const Run run = runCtl({u"teleop-map"_s, u"--delays"_s, u"0"_s, u"--hand"_s, u"0.03,0.05"_s,
+                            u"--contacts"_s, u"2"_s, u"--duration"_s, u"4"_s, u"--csv"_s, csv});
+    QVERIFY2(run.code == 0, run.err.constData());
+    const QList<QByteArray> lines = run.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 1 + 2 * 2);
+    QVERIFY(lines[0].contains(" hand ") && lines[0].contains(" contact ") &&
+            lines[0].contains("damped_rest"));
+    QVERIFY2(lines[1].simplified().startsWith("0.000 0.0200 0.0300 0.700 1 1 "),
+             lines[1].constData());
+    QVERIFY2(lines[4].simplified().startsWith("0.000 0.0200 0.0500 0.700 2 1 "),
+             lines[4].constData());
+    QVERIFY(run.err.contains("2 cells of 4 s"));
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QList<QByteArray> rows = file.readAll().trimmed().split('\n');
+    QCOMPARE(rows.size(), 5);
+    QVERIFY(rows[0].contains(",hand,contact,"));
+    QVERIFY2(rows[3].contains(",0.05,1,"), rows[3].constData());
+    // A hand SPEC still runs one hand of hatpic-sim's kinds.
+    const Run spec = runCtl({u"teleop-map"_s, u"--delays"_s, u"0"_s, u"--hand"_s,
+                             u"step:0.05:0:0.5"_s, u"--duration"_s, u"4"_s});
+    QVERIFY2(spec.code == 0, spec.err.constData());
+    QVERIFY(!spec.out.contains(" hand "));
+}
+
 void TestHatpicctlTeleopMap::badOptions_data()
 {
     QTest::addColumn<QStringList>("arguments");
@@ -151,6 +183,17 @@ void TestHatpicctlTeleopMap::badOptions_data()
     QTest::newRow("pc value") << QStringList{u"--pc"_s, u"2"_s}
                               << QByteArray("pc_damping_max: must be");
     QTest::newRow("hand") << QStringList{u"--hand"_s, u"push"_s} << QByteArray("--hand");
+    QTest::newRow("hand list") << QStringList{u"--hand"_s, u"0.05,x"_s}
+                               << QByteArray("--hand needs a number, got 'x'.");
+    QTest::newRow("hand torque") << QStringList{u"--hand"_s, u"0.05,12"_s}
+                                 << QByteArray("hand 12 N·m");
+    QTest::newRow("contacts word") << QStringList{u"--contacts"_s, u"two"_s}
+                                   << QByteArray("--contacts needs a whole number from 1 to 100");
+    QTest::newRow("contacts range") << QStringList{u"--contacts"_s, u"0"_s}
+                                    << QByteArray("contacts must be from 1 to 100, got 0.");
+    QTest::newRow("contacts of a sine")
+        << QStringList{u"--contacts"_s, u"2"_s, u"--hand"_s, u"sine:0.05:1"_s}
+        << QByteArray("contacts above 1 need a constant hand");
     QTest::newRow("folder") << QStringList{u"--csv"_s, u"/nonexistent/m.csv"_s}
                             << QByteArray("the folder /nonexistent does not exist");
 #ifdef HATPICCTL_DRAWS_PNG

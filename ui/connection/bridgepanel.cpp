@@ -550,6 +550,8 @@ void BridgePanel::refresh()
         showLoopState(tr("Bridge off"), LoopState::Off);
     else if (s.passivity.warning)
         showLoopState(tr("Loop generating energy: see Passivity below"), LoopState::Generating);
+    else if (s.passivity.dampedAtRest)
+        showLoopState(tr("Loop held at rest by damping: see Passivity below"), LoopState::Passive);
     else if (s.passivity.inContact)
         showLoopState(tr("Loop passive, in contact"), LoopState::Passive);
     else

@@ -108,6 +108,15 @@ void PassivityView::setState(const analysis::PassivityObserver::State &s,
         m_controller->setText(tr("Controller: none reported — this device's telemetry carries "
                                  "no τ_pc (no passivity capability); only the observer below "
                                  "watches."));
+    else if (s.dampedAtRest)
+        m_controller->setText(
+            tr("Controller: damping at rest — the knob rests, yet the controller damps it in "
+               "%1 % of the samples (β up to %2 N·m·s/rad), so it feels heavier than tuned: the "
+               "loop does not rest on its own at this gain and delay. Lower the gain, raise "
+               "M_adm or cut the delay. Took out %3; reserve %4.")
+                .arg(QString::number(100 * s.restDampedShare, 'f', 0),
+                     QString::number(s.dampingCoefficient, 'f', 3), millijoules(s.dissipated),
+                     reserveText(s.reserve)));
     else if (s.damping)
         m_controller->setText(
             tr("Controller: damping — β up to %1 N·m·s/rad (τ_pc %2 N·m). Took out %3; "

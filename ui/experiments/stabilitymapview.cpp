@@ -1,5 +1,6 @@
 #include "experiments/stabilitymapview.h"
 
+#include "analysis/passivityobserver.h"
 #include "tuning/tuningmodel.h"
 
 #include <QDoubleSpinBox>
@@ -10,6 +11,7 @@
 #include <QMetaObject>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QSvgWidget>
 #include <QThread>
 #include <QVBoxLayout>
@@ -46,8 +48,22 @@ StabilityMapView::StabilityMapView(const TuningModel &tuning, QWidget *parent)
     m_gains = new QLineEdit(QStringLiteral("0.01:0.04/7"), this);
     m_gains->setObjectName(QStringLiteral("mapGains"));
     m_gains->setToolTip(tr("Feedback gains in N·m/N, as the delays."));
+    m_hands = new QLineEdit(QStringLiteral("0.05"), this);
+    m_hands->setObjectName(QStringLiteral("mapHands"));
+    m_hands->setToolTip(tr("The hand's constant torque in N·m, as the delays: one map each "
+                           "(0.03:0.1/4 tries four hands)."));
+    m_contacts = new QSpinBox(this);
+    m_contacts->setObjectName(QStringLiteral("mapContacts"));
+    m_contacts->setRange(1, 10);
+    m_contacts->setValue(1);
+    m_contacts->setPrefix(tr("× "));
+    m_contacts->setSuffix(tr(" contacts"));
+    m_contacts->setToolTip(tr("How many times the hand pushes, lets go for %1 s and pushes "
+                              "again; a cell's colour is its worst contact's.")
+                               .arg(teleop::LoopConfig::kRelease));
     m_duration = spin(this, "mapDuration", teleop::LoopResult::kRestWindow, 120, 1, 20, tr(" s"));
-    m_duration->setToolTip(tr("Virtual time each cell runs; it settles when the last 2 s rest."));
+    m_duration->setToolTip(
+        tr("Virtual time each contact runs; it settles when its last 2 s rest."));
     m_delayInUse = spin(this, "mapDelayInUse", 0, robot::kMaxLinkDelay, 3, 0, tr(" s"));
     m_delayInUse->setToolTip(tr("Your network's one-way delay: marked on the map."));
     m_gainInUse = spin(this, "mapGainInUse", 0, bridge::kMaxFeedbackGain, 4,
@@ -57,9 +73,17 @@ StabilityMapView::StabilityMapView(const TuningModel &tuning, QWidget *parent)
     auto *form = new QFormLayout;
     form->addRow(tr("Delays [s]"), m_delays);
     form->addRow(tr("Gains [N·m/N]"), m_gains);
+    // Hands and their contacts share a row, as the settings in use do: the tab stays as short
+    // as before in a 1280×720 window.
+    auto *hands = new QHBoxLayout;
+    hands->addWidget(m_hands, 1);
+    hands->addWidget(m_contacts);
+    form->addRow(tr("Hands [N·m]"), hands);
     form->addRow(tr("Run each"), m_duration);
-    form->addRow(tr("Delay in use"), m_delayInUse);
-    form->addRow(tr("Gain in use"), m_gainInUse);
+    auto *inUse = new QHBoxLayout;
+    inUse->addWidget(m_delayInUse);
+    inUse->addWidget(m_gainInUse);
+    form->addRow(tr("In use"), inUse);
 
     m_compute = new QPushButton(tr("Compute map"), this);
     m_compute->setObjectName(QStringLiteral("computeMap"));
@@ -70,8 +94,8 @@ StabilityMapView::StabilityMapView(const TuningModel &tuning, QWidget *parent)
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("mapStatus"));
     m_status->setWordWrap(true);
-    m_status->setText(tr("The loop of robot.md (hand 0.05 N·m, robot against its wall) for the "
-                         "tuning you edit: where does contact settle, and how fast?"));
+    m_status->setText(tr("The loop of robot.md (a hand pushing the robot against its wall) for "
+                         "the tuning you edit: where does contact settle, and how fast?"));
 
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_compute);
@@ -139,8 +163,20 @@ teleop::MapSpec StabilityMapView::spec(QString *error) const
             *error = tr("Gains: %1.").arg(why);
         return s;
     }
+    const auto hands = teleop::parseValueList(m_hands->text(), &why);
+    if (!hands) {
+        if (error)
+            *error = tr("Hands: %1.").arg(why);
+        return s;
+    }
     s.delays = *delays;
     s.gains = *gains;
+    // One hand is the base's hand: no panel per hand.
+    if (hands->size() == 1)
+        s.base.hand = {HandInput::Kind::Constant, hands->front()};
+    else
+        s.hands = *hands;
+    s.base.contacts = m_contacts->value();
     if (error)
         *error = teleop::checkSpec(s);
     return s;
@@ -206,14 +242,27 @@ void StabilityMapView::onFinished(quint64 generation, std::vector<teleop::MapCel
         m_cells = std::move(cells);
         const auto settled = std::count_if(m_cells.begin(), m_cells.end(),
                                            [](const auto &c) { return c.result.settled; });
-        m_status->setText(
+        const auto dampedAtRest =
+            std::count_if(m_cells.begin(), m_cells.end(), [](const teleop::MapCell &c) {
+                return std::any_of(c.contacts.begin(), c.contacts.end(), [](const auto &r) {
+                    return r.settled &&
+                           r.dampedAtRest > analysis::PassivityObserver::kDampedAtRestShare;
+                });
+            });
+        QString text =
             tr("%1 of %2 cells settle within %3 s. Grey, crossed cells keep swinging: there "
                "the contact chatters. Lower the gain, add damping (M_adm) or the passivity "
                "controller (pc_damping_max, right) — what it costs is the settle time's "
                "colour.")
                 .arg(settled)
                 .arg(m_cells.size())
-                .arg(m_shown.base.duration));
+                .arg(m_shown.base.duration);
+        if (dampedAtRest > 0)
+            text +=
+                u' ' + tr("In %n of them the controller still damps the knob at rest: the loop "
+                          "does not rest there on its own, and the knob feels heavier than tuned.",
+                          nullptr, int(dampedAtRest));
+        m_status->setText(text);
         redraw();
     }
     m_progress->setValue(complete ? 100 : 0);

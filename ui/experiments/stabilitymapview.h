@@ -1,6 +1,7 @@
 // The stability map in the Experiments panel (docs/experiments.md § Stability map): the
 // teleoperation loop of robot.md run in process for the tuning being edited over a grid of
-// one-way delays × feedback gains, the passivity controller off and as edited, drawn as
+// one-way delays × feedback gains (× hands, each making one or more contacts), the passivity
+// controller off and as edited, drawn as
 // `hatpicctl teleop-map` draws it (teleop/stabilitymap.h) with the settings in use marked.
 // The cells run on threads of their own; the GUI thread only starts, cancels and shows.
 #pragma once
@@ -19,6 +20,7 @@ class QLabel;
 class QLineEdit;
 class QProgressBar;
 class QPushButton;
+class QSpinBox;
 class QSvgWidget;
 
 namespace hatpic {
@@ -60,7 +62,8 @@ private:
 
     const TuningModel &m_tuning;
 
-    QLineEdit *m_delays{}, *m_gains{};
+    QLineEdit *m_delays{}, *m_gains{}, *m_hands{};
+    QSpinBox *m_contacts{};
     QDoubleSpinBox *m_duration{}, *m_delayInUse{}, *m_gainInUse{};
     QPushButton *m_compute{}, *m_cancel{};
     QProgressBar *m_progress{};

@@ -8,6 +8,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -48,6 +49,7 @@ SimulatorPanel::SimulatorPanel(QWidget *parent) : QWidget(parent)
     m_kind->addItem(tr("Sine"), int(Kind::Sine));
     m_kind->addItem(tr("Chirp (linear sweep)"), int(Kind::Chirp));
     m_kind->addItem(tr("Virtual hand — drag the target"), int(Kind::VirtualHand));
+    m_kind->addItem(tr("Pushes — push, let go, again"), int(Kind::Pushes));
 
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("handStatus"));
@@ -74,6 +76,15 @@ SimulatorPanel::SimulatorPanel(QWidget *parent) : QWidget(parent)
                          "of %2 N·m·s/rad pull the knob toward it")
                           .arg(HandInput::kHandStiffness)
                           .arg(HandInput::kHandDamping));
+    m_pushes = new QSpinBox(this);
+    m_pushes->setObjectName(u"spin_hand_pushes"_s);
+    m_pushes->setRange(1, HandInput::kMaxPushes);
+    m_pushes->setKeyboardTracking(false);
+    m_pushes->setToolTip(tr("How many times the hand pushes; then it lets go"));
+    m_pushTime = spinBox(this, u"spin_hand_push_time"_s, 0.1, HandInput::kMaxPhase, 1, 1, u" s"_s,
+                         tr("How long each push holds the torque T"));
+    m_releaseTime = spinBox(this, u"spin_hand_release_time"_s, 0, HandInput::kMaxPhase, 0.5, 1,
+                            u" s"_s, tr("How long the hand lets go between two pushes"));
     m_angleSlider = new QSlider(Qt::Horizontal, this);
     m_angleSlider->setObjectName(u"slider_hand_angle"_s);
     const int ticks = int(std::lround(std::numbers::pi / 2 * kAngleTicksPerRad));
@@ -91,6 +102,9 @@ SimulatorPanel::SimulatorPanel(QWidget *parent) : QWidget(parent)
     m_frequencyLabel = new QLabel(tr("Frequency F / F0"), this);
     m_frequency1Label = new QLabel(tr("End frequency F1"), this);
     m_angleLabel = new QLabel(tr("Target angle"), this);
+    m_pushesLabel = new QLabel(tr("Pushes N"), this);
+    m_pushTimeLabel = new QLabel(tr("Each push"), this);
+    m_releaseTimeLabel = new QLabel(tr("Let go between"), this);
 
     auto *angleRow = new QHBoxLayout;
     angleRow->addWidget(m_angleSlider, 1);
@@ -108,6 +122,9 @@ SimulatorPanel::SimulatorPanel(QWidget *parent) : QWidget(parent)
     form->addRow(m_frequencyLabel, m_frequency);
     form->addRow(m_frequency1Label, m_frequency1);
     form->addRow(m_angleLabel, angleRow);
+    form->addRow(m_pushesLabel, m_pushes);
+    form->addRow(m_pushTimeLabel, m_pushTime);
+    form->addRow(m_releaseTimeLabel, m_releaseTime);
 
     m_inputs = new QWidget(this);
     m_inputs->setLayout(form);
@@ -121,13 +138,18 @@ SimulatorPanel::SimulatorPanel(QWidget *parent) : QWidget(parent)
     m_offset->setValue(0.0);
     m_frequency->setValue(1.0);
     m_frequency1->setValue(10.0);
+    m_pushes->setValue(3);
+    m_pushTime->setValue(10.0);
+    m_releaseTime->setValue(2.0);
 
     connect(m_kind, &QComboBox::currentIndexChanged, this, [this] {
         updateVisibility();
         emitIfChanged();
     });
-    for (QDoubleSpinBox *s : {m_amplitude, m_offset, m_frequency, m_frequency1})
+    for (QDoubleSpinBox *s :
+         {m_amplitude, m_offset, m_frequency, m_frequency1, m_pushTime, m_releaseTime})
         connect(s, &QDoubleSpinBox::valueChanged, this, &SimulatorPanel::emitIfChanged);
+    connect(m_pushes, &QSpinBox::valueChanged, this, &SimulatorPanel::emitIfChanged);
     connect(m_angle, &QDoubleSpinBox::valueChanged, this, [this](double rad) {
         const QSignalBlocker block(m_angleSlider);
         m_angleSlider->setValue(int(std::lround(rad * kAngleTicksPerRad)));
@@ -171,6 +193,10 @@ HandInput SimulatorPanel::hand() const
     case Kind::VirtualHand:
         h.angle = m_angle->value();
         break;
+    case Kind::Pushes:
+        h = HandInput::pushing(m_amplitude->value(), m_pushes->value(), m_pushTime->value(),
+                               m_releaseTime->value());
+        break;
     }
     return h;
 }
@@ -185,6 +211,9 @@ void SimulatorPanel::setHand(const HandInput &hand)
         const QSignalBlocker b4(m_frequency1);
         const QSignalBlocker b5(m_angle);
         const QSignalBlocker b6(m_angleSlider);
+        const QSignalBlocker b7(m_pushes);
+        const QSignalBlocker b8(m_pushTime);
+        const QSignalBlocker b9(m_releaseTime);
         m_kind->setCurrentIndex(m_kind->findData(int(hand.kind)));
         // Only the fields this kind uses; the others keep what the user last typed.
         switch (hand.kind) {
@@ -210,6 +239,12 @@ void SimulatorPanel::setHand(const HandInput &hand)
             m_angle->setValue(hand.angle);
             m_angleSlider->setValue(int(std::lround(hand.angle * kAngleTicksPerRad)));
             break;
+        case Kind::Pushes:
+            m_amplitude->setValue(hand.amplitude);
+            m_pushes->setValue(hand.pushes);
+            m_pushTime->setValue(hand.pushTime);
+            m_releaseTime->setValue(hand.releaseTime);
+            break;
         }
     }
     updateVisibility();
@@ -233,6 +268,9 @@ QString SimulatorPanel::describe(const HandInput &h)
             .arg(n(h.amplitude), n(h.frequency), n(h.frequency1));
     case Kind::VirtualHand:
         return tr("Hand: virtual hand to %1 rad").arg(n(h.angle));
+    case Kind::Pushes:
+        return tr("Hand: %1 N·m pushes, %2 × %3 s, %4 s apart")
+            .arg(n(h.amplitude), QString::number(h.pushes), n(h.pushTime), n(h.releaseTime));
     }
     return {};
 }
@@ -263,6 +301,10 @@ void SimulatorPanel::updateVisibility()
     show(m_angleLabel, m_angle, kind == Kind::VirtualHand);
     m_angleSlider->setVisible(kind == Kind::VirtualHand);
     m_angleDegrees->setVisible(kind == Kind::VirtualHand);
+    for (auto [label, field] : {std::pair<QWidget *, QWidget *>{m_pushesLabel, m_pushes},
+                                {m_pushTimeLabel, m_pushTime},
+                                {m_releaseTimeLabel, m_releaseTime}})
+        show(label, field, kind == Kind::Pushes);
     m_amplitudeLabel->setText(periodic ? tr("Amplitude A") : tr("Torque T"));
     m_frequencyLabel->setText(kind == Kind::Chirp ? tr("Start frequency F0") : tr("Frequency F"));
     m_angleDegrees->setText(tr("%1°").arg(m_angle->value() * 180.0 / std::numbers::pi, 0, 'f', 1));
@@ -290,6 +332,10 @@ void SimulatorPanel::updateVisibility()
                   "%2 N·m·s/rad): drag the slider to move it.")
                    .arg(HandInput::kHandStiffness)
                    .arg(HandInput::kHandDamping);
+        break;
+    case Kind::Pushes:
+        text = tr("The same contact again and again: the hand pushes with T, lets go, and "
+                  "pushes again, N times; then it lets go.");
         break;
     }
     if (m_held)

@@ -10,6 +10,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSlider;
+class QSpinBox;
 
 namespace hatpic {
 
@@ -76,6 +77,12 @@ private:
     QDoubleSpinBox *m_angle = nullptr;
     QSlider *m_angleSlider = nullptr;
     QLabel *m_angleDegrees = nullptr;
+    QLabel *m_pushesLabel = nullptr;
+    QSpinBox *m_pushes = nullptr;
+    QLabel *m_pushTimeLabel = nullptr;
+    QDoubleSpinBox *m_pushTime = nullptr;
+    QLabel *m_releaseTimeLabel = nullptr;
+    QDoubleSpinBox *m_releaseTime = nullptr;
 };
 
 } // namespace hatpic

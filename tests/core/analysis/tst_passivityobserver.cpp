@@ -3,6 +3,7 @@
 // it stored), a wall behind a delay flagged, and a closed loop of the knob's admittance against
 // a delayed wall: quiet without delay, warned with 40 ms.
 #include "analysis/passivityobserver.h"
+#include "model/passivity.h"
 
 #include <QTest>
 
@@ -294,6 +295,48 @@ private Q_SLOTS:
         QCOMPARE(none.state().dissipated, 0.0);
         QVERIFY(std::isnan(none.state().reserve));
         QVERIFY(none.state().samples > 0); // the observer itself still runs
+    }
+
+    //! Issue 35: the observer says when the knob rests yet the controller keeps damping it
+    //! (the loop cannot rest on its own there), and not when it rests undamped or is moving.
+    void dampedAtRestIsSaid()
+    {
+        PassivityObserver observer;
+        const auto &s = observer.state();
+        double t = 0;
+        // Moving in contact, damped: damping, not "at rest".
+        for (; t < 2.0; t += kStep)
+            observer.add(t, -0.03, 0.5, -0.1, -0.001, 0.1 + 0.5 * t);
+        QVERIFY(s.damping);
+        QVERIFY(!s.atRest);
+        QVERIFY(!s.dampedAtRest);
+        // Still within the band (one count's flicker), damped in every sample: after the rest
+        // time it is at rest, and damped at rest once the share passes 5 %.
+        const double stopped = t;
+        const double theta = 1.1;
+        for (; t < stopped + hatpic::passivity::kRestTime - 0.01; t += kStep)
+            observer.add(t, -0.03, 0.01, -0.007, -0.001, theta + (int(t * 1e3) % 2) * 0.0015);
+        QVERIFY(!s.atRest);
+        for (; t < stopped + hatpic::passivity::kRestTime + 1.0; t += kStep)
+            observer.add(t, -0.03, 0.01, -0.007, -0.001, theta + (int(t * 1e3) % 2) * 0.0015);
+        QVERIFY(s.atRest);
+        QVERIFY2(s.restDampedShare > 0.5, qPrintable(QString::number(s.restDampedShare)));
+        QVERIFY(s.dampedAtRest);
+        // The damping stops: the share falls below 5 % within a few seconds, still at rest.
+        for (const double until = t + 4.0; t < until; t += kStep)
+            observer.add(t, -0.03, 0.01, 0.0, 0.001, theta);
+        QVERIFY(s.atRest);
+        QVERIFY2(!s.dampedAtRest, qPrintable(QString::number(s.restDampedShare)));
+        // The knob moves off: not at rest, nothing said of rest.
+        observer.add(t, -0.03, 1.0, -0.1, 0.0, theta + 0.05);
+        QVERIFY(!s.atRest);
+        QCOMPARE(s.restDampedShare, 0.0);
+        // Without θ (a caller that has none) rest is never judged.
+        PassivityObserver blind;
+        for (double u = 0; u < 3.0; u += kStep)
+            blind.add(u, -0.03, 0.0, -0.007, -0.001);
+        QVERIFY(!blind.state().atRest);
+        QVERIFY(!blind.state().dampedAtRest);
     }
 
     void settingsAreChecked_data()

@@ -91,6 +91,7 @@ private Q_SLOTS:
     void stepRecoversTheModel();
     void simulatedHandIsIdleForTheRun_data();
     void simulatedHandIsIdleForTheRun();
+    void passivityIsOffForTheRun();
     void bodeMatchesTheModelBelowTheBandwidth();
     void spectrumShowsTheKnobAtRest();
     void cancelRestoresZeroFeedback();
@@ -114,7 +115,7 @@ void TestExperimentRunner::stepRecoversTheModel()
     QFETCH(double, M);
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(ExperimentRunner::refusal(bench.client).isEmpty(), kConnectMs);
     DeviceParams params = bench.client.deviceTuning().params.value();
     params.D_adm = D;
     params.M_adm = M;
@@ -174,7 +175,7 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
     QObject::connect(&client, &DeviceClient::samplesReady,
                      [&samples](const SampleBatch &b) { samples.append(b); });
     client.connectDevice(o);
-    QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().params.has_value(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(ExperimentRunner::refusal(client).isEmpty(), kConnectMs);
     DeviceParams params = client.deviceTuning().params.value();
     params.D_adm = 2e-3; // the slow knob of stepRecoversTheModel: 14.1 rad/s, ζ 0.707
     params.M_adm = 4e-2;
@@ -220,11 +221,44 @@ void TestExperimentRunner::simulatedHandIsIdleForTheRun()
     }
 }
 
+//! The device's passivity controller would damp the response measured (it takes the plan's
+//! τ_ext for a robot's port): it is off for the run, on again after it, as it was.
+void TestExperimentRunner::passivityIsOffForTheRun()
+{
+    Bench bench;
+    QVERIFY(bench.connect());
+    QTRY_VERIFY_WITH_TIMEOUT(ExperimentRunner::refusal(bench.client).isEmpty(), kConnectMs);
+    const PassivityParams before = bench.client.deviceTuning().passivity.value();
+    QVERIFY(before.enabled());
+    // A knob the servo follows closely (stepRecoversTheModel's), so the fit checks the model.
+    DeviceParams params = bench.client.deviceTuning().params.value();
+    params.D_adm = 2e-3;
+    params.M_adm = 4e-2;
+    QVERIFY(bench.push(params));
+    bool sawOff = false;
+    QObject watcher;
+    connect(&bench.client, &DeviceClient::deviceTuningChanged, &watcher,
+            [&](const DeviceTuning &t) { sawOff |= t.passivity && !t.passivity->enabled(); });
+    ExperimentRunner runner(bench.client);
+    const ExperimentResult r = run(runner, ExperimentPlan::defaults(ExperimentKind::Step, params));
+    QVERIFY2(r.completed() && r.problem.isEmpty(), qPrintable(r.problem));
+    QVERIFY(sawOff);
+    QVERIFY(!r.samples.isEmpty());
+    for (const Sample &s : r.samples)
+        QCOMPARE(s.tau_pc, 0.0); // not one damped cycle in the run
+    QVERIFY2(std::abs(r.fitMeasured.omegaN / r.figures.omega_n - 1) < 0.10,
+             qPrintable(QString::number(r.fitMeasured.omegaN)));
+    // On again, as it was.
+    QTRY_VERIFY_WITH_TIMEOUT(
+        sameOnWire(bench.client.deviceTuning().passivity.value_or(PassivityParams::off()), before),
+        kConnectMs);
+}
+
 void TestExperimentRunner::bodeMatchesTheModelBelowTheBandwidth()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(ExperimentRunner::refusal(bench.client).isEmpty(), kConnectMs);
     ExperimentRunner runner(bench.client);
     const DeviceParams params = bench.client.deviceTuning().params.value();
     ExperimentPlan plan = ExperimentPlan::defaults(ExperimentKind::Frequency, params);
@@ -255,7 +289,7 @@ void TestExperimentRunner::spectrumShowsTheKnobAtRest()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(ExperimentRunner::refusal(bench.client).isEmpty(), kConnectMs);
     ExperimentRunner runner(bench.client);
     ExperimentPlan plan = ExperimentPlan::defaults(ExperimentKind::Spectrum, {});
     plan.duration = 0.5;
@@ -271,15 +305,18 @@ void TestExperimentRunner::cancelRestoresZeroFeedback()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(ExperimentRunner::refusal(bench.client).isEmpty(), kConnectMs);
     ExperimentRunner runner(bench.client);
     ExperimentPlan plan =
         ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceTuning().params.value());
     plan.duration = 10; // would run for 10 s
     QSignalSpy finished(&runner, &ExperimentRunner::finished);
+    QSignalSpy progress(&runner, &ExperimentRunner::progress);
     QVERIFY(runner.start(plan).isEmpty());
     QVERIFY(!runner.start(plan).isEmpty()); // one at a time
-    QTRY_VERIFY_WITH_TIMEOUT(!bench.samples.isEmpty() && bench.samples.last().tau_ext > 0,
+    // Mid-run: the plan has begun (its progress reported) and its τ_ext is on the knob.
+    QTRY_VERIFY_WITH_TIMEOUT(progress.size() > 2 && !bench.samples.isEmpty() &&
+                                 bench.samples.last().tau_ext > 0,
                              kConnectMs);
     runner.cancel();
     QCOMPARE(finished.size(), 1);
@@ -294,7 +331,7 @@ void TestExperimentRunner::lostDeviceFailsTheRun()
 {
     Bench bench;
     QVERIFY(bench.connect());
-    QTRY_VERIFY_WITH_TIMEOUT(bench.client.deviceTuning().params.has_value(), kConnectMs);
+    QTRY_VERIFY_WITH_TIMEOUT(ExperimentRunner::refusal(bench.client).isEmpty(), kConnectMs);
     ExperimentRunner runner(bench.client);
     ExperimentPlan plan =
         ExperimentPlan::defaults(ExperimentKind::Step, bench.client.deviceTuning().params.value());

@@ -95,15 +95,16 @@ private Q_SLOTS:
     void telemetryCarriesTauPcAndReserve()
     {
         Host host(idealConfig());
-        host.send(1, v2::SetPassivity{pc(0.5, 0.015)});
+        host.send(1, v2::SetPassivity{pc(0.5, 0.003)});
         host.send(2, v2::SetStream{100});
         const auto t = host.reply<v2::Telemetry>();
         QVERIFY(t);
         QVERIFY(t->tau_fx);
         QVERIFY(t->tau_pc);
         QVERIFY(t->pc_reserve);
-        QCOMPARE(*t->tau_pc, 0.0f);              // no τ_ext: nothing to damp
-        QCOMPARE(*t->pc_reserve, float(0.015f)); // the full tank, capped at once
+        QCOMPARE(*t->tau_pc, 0.0f); // no τ_ext: nothing to damp
+        // The tank at its floor's level for a knob at start, capped at once by an R_max below it.
+        QCOMPARE(*t->pc_reserve, float(0.003f));
     }
 
     void controllerDampsWhatThePortGivesBack()

@@ -2,6 +2,7 @@
 // pseudo-terminals: hatpic-sim (a device core with the passivity capability) and a scripted v2
 // device without it, which is told apart and sent nothing.
 #include "commandwait.h"
+#include "model/passivity.h"
 #include "scripteddevice.h"
 #include "session/deviceclient.h"
 #include "session/devicesession.h"
@@ -72,12 +73,12 @@ void TestSessionPassivity::passivityOverPty()
     QTRY_VERIFY_WITH_TIMEOUT(client.deviceTuning().passivity.has_value(), kTimeoutMs);
     QVERIFY(client.deviceInfo().hasPassivity());
     QVERIFY(sameOnWire(client.deviceTuning().passivity.value(), PassivityParams{}));
-    // τ_pc and R arrive: at rest, no damping, the tank full.
+    // τ_pc and R arrive: at rest with no hand, no damping, the tank at its floor's level.
     QTRY_VERIFY_WITH_TIMEOUT(!samples.isEmpty(), kTimeoutMs);
     QCOMPARE(samples.last().tau_pc, 0.0);
-    QCOMPARE(samples.last().pc_reserve, double(float(PassivityParams{}.pc_reserve_max)));
+    QCOMPARE(samples.last().pc_reserve, double(float(passivity::kLevelFloor)));
 
-    const PassivityParams pc{.pc_damping_max = 0.25, .pc_reserve_max = 0.01};
+    const PassivityParams pc{.pc_damping_max = 0.25, .pc_reserve_max = 0.004};
     const Outcome pushed = waitFor(client, request::Push{{std::nullopt, std::nullopt, pc}});
     QVERIFY2(pushed.ok(), qPrintable(failure(pushed)));
     // A passivity-only push: SET_PASSIVITY, then its read-back, and nothing else.
@@ -89,8 +90,8 @@ void TestSessionPassivity::passivityOverPty()
     QCOMPARE(std::get<outcome::Done>(pushed.result).readBack, outcome::ReadBack::Matches);
     QVERIFY(sameOnWire(pushed.received.passivity.value(), pc));
     QVERIFY(sameOnWire(client.deviceTuning().passivity.value(), pc));
-    // A smaller R_max caps the reserve at once.
-    QTRY_COMPARE_WITH_TIMEOUT(samples.last().pc_reserve, double(0.01f), kTimeoutMs);
+    // An R_max below the reserve caps it at once.
+    QTRY_COMPARE_WITH_TIMEOUT(samples.last().pc_reserve, double(0.004f), kTimeoutMs);
 
     // A push of every part: each sent and read back.
     const PassivityParams off = PassivityParams::off();

@@ -24,6 +24,7 @@ private Q_SLOTS:
     void torqueSine();
     void torqueChirp();
     void torqueVirtualHand();
+    void torquePushes();
 };
 
 static HandInput make(HandInput::Kind kind, double amplitude = 0, double offset = 0,
@@ -57,6 +58,9 @@ void TestHandInput::parseValid_data()
     QTest::newRow("virtual hand") << u"hand:0.3"_s << make(K::VirtualHand, 0, 0, 0, 0, 0.3);
     QTest::newRow("virtual hand negative")
         << u"hand:-1.2"_s << make(K::VirtualHand, 0, 0, 0, 0, -1.2);
+    QTest::newRow("pushes") << u"pushes:0.05:3:20:2"_s << HandInput::pushing(0.05, 3, 20, 2);
+    QTest::newRow("pushes without a release")
+        << u"pushes:-0.1:1:0.5:0"_s << HandInput::pushing(-0.1, 1, 0.5, 0);
     // The bounds themselves are accepted (simulator.md § 4).
     QTest::newRow("torque at its bound") << u"step:10:-10"_s << make(K::Step, 10, -10);
     QTest::newRow("frequency at its bound")
@@ -113,6 +117,18 @@ void TestHandInput::parseInvalid_data()
     QTest::newRow("huge angle") << u"hand:1e307"_s
                                 << u"angle 1e+307 rad in \"hand:1e307\" is more than one turn"_s;
     QTest::newRow("angle beyond a turn") << u"hand:-6.3"_s << u"more than one turn"_s;
+    QTest::newRow("pushes three values") << u"pushes:0.05:3:20"_s << u"pushes:T:N:ON:OFF"_s;
+    QTest::newRow("pushes no count") << u"pushes:0.05:0:20:2"_s
+                                     << u"push count 0 in \"pushes:0.05:0:20:2\" must be a whole "
+                                        "number from 1 to 1000"_s;
+    QTest::newRow("pushes half a count") << u"pushes:0.05:2.5:20:2"_s << u"push count 2.5"_s;
+    QTest::newRow("pushes too many") << u"pushes:0.05:1001:1:1"_s << u"from 1 to 1000"_s;
+    QTest::newRow("pushes zero push time")
+        << u"pushes:0.05:3:0:2"_s << u"push time 0 s in \"pushes:0.05:3:0:2\" must be above 0"_s;
+    QTest::newRow("pushes negative release") << u"pushes:0.05:3:20:-1"_s << u"release time -1 s"_s;
+    QTest::newRow("pushes release beyond an hour")
+        << u"pushes:0.05:3:20:3601"_s << u"from 0 to 3600 s"_s;
+    QTest::newRow("pushes huge torque") << u"pushes:11:3:20:2"_s << u"beyond the ±10 N·m"_s;
 }
 
 void TestHandInput::parseInvalid()
@@ -142,6 +158,7 @@ void TestHandInput::roundTrip_data()
     QTest::newRow("sine") << make(K::Sine, 0.05, 0, 1.0 / 7);
     QTest::newRow("chirp") << make(K::Chirp, 0.02, 0, 0.1, 30);
     QTest::newRow("hand") << make(K::VirtualHand, 0, 0, 0, 0, std::numbers::pi / 5);
+    QTest::newRow("pushes") << HandInput::pushing(0.1 / 3, 7, 12.5, 1.0 / 3);
 }
 
 void TestHandInput::roundTrip()
@@ -225,6 +242,24 @@ void TestHandInput::torqueVirtualHand()
     QVERIFY(std::abs(h.torque(1.0, 0.5, 2.0) + b * 2.0) < 1e-15);
     QVERIFY(std::abs(h.torque(7.0, 0.7, -1.0) - (k * -0.2 + b * 1.0)) < 1e-15);
     QVERIFY(h.torque(0, 0.0, 0) > 0); // pulls toward its angle
+}
+
+//! pushes:T:N:ON:OFF — T for ON s, nothing for OFF s, N times, then nothing: the same contact
+//! made again and again (teleop-map --contacts, bench/teleop-passivity).
+void TestHandInput::torquePushes()
+{
+    const HandInput p = HandInput::pushing(0.05, 3, 20, 2);
+    QCOMPARE(p.torque(-0.001, 0, 0), 0.0);
+    QCOMPARE(p.torque(0.0, 0, 0), 0.05);
+    QCOMPARE(p.torque(19.999, 0, 0), 0.05);
+    QCOMPARE(p.torque(20.0, 0, 0), 0.0);
+    QCOMPARE(p.torque(21.999, 0, 0), 0.0);
+    QCOMPARE(p.pushStart(1), 22.0);
+    QCOMPARE(p.torque(22.0, 0, 0), 0.05);
+    QCOMPARE(p.torque(44.0 + 19.9, 0, 0), 0.05); // the third push
+    QCOMPARE(p.torque(64.0, 0, 0), 0.0);         // over: it lets go…
+    QCOMPARE(p.torque(66.5, 0, 0), 0.0);         // …and does not push a fourth time
+    QCOMPARE(p.torque(1e6, 0.3, 1.0), 0.0);
 }
 
 QTEST_GUILESS_MAIN(TestHandInput)

@@ -21,6 +21,7 @@ private Q_SLOTS:
     void csvAndSvg();
     void variesATuningField();
     void controllerOffAndOn();
+    void handsAndContacts();
     void badSpecs();
 };
 
@@ -163,6 +164,50 @@ void TestStabilityMap::controllerOffAndOn()
     QVERIFY(csv.contains("\n0.15,0.02,0.5,1,"));
     QVERIFY(mapSvg(cells, spec.field.name, 12).contains("pc_damping_max = 0.5"));
     QVERIFY(mapFieldNames().contains(u"pc_reserve_max"));
+}
+
+// Issue 35: hands are a sweep axis like gains, each contact a row of the CSV (columns hand and
+// contact), a cell's chart colour its worst contact's, a panel per hand.
+void TestStabilityMap::handsAndContacts()
+{
+    MapSpec spec;
+    spec.base.duration = 4;
+    spec.base.contacts = 2;
+    spec.delays = {0, 0.04};
+    spec.gains = {0.02};
+    spec.hands = {0.03, 0.07};
+    QVERIFY(checkSpec(spec).isEmpty());
+    QCOMPARE(spec.cellCount(), 4);
+    // Delay fastest, then gain, then hand.
+    QCOMPARE(spec.cellConfig(1).robot.faults.delay, 0.04);
+    QCOMPARE(spec.cellConfig(2).hand, (HandInput{HandInput::Kind::Constant, 0.07}));
+    QCOMPARE(spec.cellConfig(2).robot.faults.delay, 0.0);
+    const auto cells = runMap(spec);
+    QCOMPARE(cells.size(), std::size_t(4));
+    for (const MapCell &c : cells) {
+        QCOMPARE(c.contacts.size(), std::size_t(2));
+        QCOMPARE(c.contacts[0].index, 1);
+        QCOMPARE(c.contacts[1].index, 2);
+        QCOMPARE(c.result.index, LoopSimulation::worst(c.contacts).index);
+    }
+    QCOMPARE(cells[0].hand, 0.03);
+    QCOMPARE(cells[3].hand, 0.07);
+    const QByteArray csv = mapCsv(cells, {});
+    const QList<QByteArray> lines = csv.trimmed().split('\n');
+    QCOMPARE(lines.size(), 1 + 4 * 2);
+    QVERIFY2(lines[0].endsWith(",contact_s,hand,contact,damped_at_rest,theta_eq"),
+             lines[0].constData());
+    QVERIFY2(lines[1].contains(",0.03,1,"), lines[1].constData());
+    QVERIFY2(lines[2].contains(",0.03,2,"), lines[2].constData());
+    QVERIFY2(lines[8].contains(",0.07,2,"), lines[8].constData());
+    // A panel per hand, each cell telling which contact coloured it.
+    const QByteArray svg = mapSvg(cells, {}, 4);
+    QVERIFY(svg.contains("hand 0.03 N·m"));
+    QVERIFY(svg.contains("hand 0.07 N·m"));
+    QCOMPARE(svg.count("of 2, the worst)"), 4);
+    // Hands are checked like any value, naming the hand.
+    spec.hands = {0.05, 11};
+    QVERIFY2(checkSpec(spec).contains(u"hand 11 N·m"), qPrintable(checkSpec(spec)));
 }
 
 void TestStabilityMap::badSpecs()
