@@ -135,11 +135,10 @@ void PassivityObserver::judgeRest(double t, double theta, bool damped)
     // where the knob stopped, for the rest time. Then how often the controller damped it there,
     // averaged over about a second.
     constexpr double kShareTime = 1.0; //!< [s]
-    if (!std::isfinite(theta) || !(std::abs(theta - m_restAnchor) <= passivity::kStillBand)) {
-        m_restAnchor = theta;
-        m_stillSince = t;
-    }
-    m_state.atRest = std::isfinite(theta) && t - m_stillSince >= passivity::kRestTime;
+    const double h = std::isfinite(m_stillT) ? t - m_stillT : 0.0;
+    m_stillT = t;
+    m_still.update(theta, h);
+    m_state.atRest = std::isfinite(theta) && m_still.stillFor(passivity::kRestTime);
     if (!m_state.atRest) {
         m_state.restDampedShare = 0;
         m_restT = std::numeric_limits<double>::quiet_NaN();

@@ -13,6 +13,8 @@
 // energies [J].
 #pragma once
 
+#include "model/passivity.h"
+
 #include <cstdint>
 #include <deque>
 #include <limits>
@@ -127,9 +129,9 @@ private:
     bool m_approachOver = false;     //!< m_contactStartEnergy holds
     double m_lastContactT = -std::numeric_limits<double>::infinity();
     double m_lastGeneratingT = -std::numeric_limits<double>::infinity();
-    double m_restAnchor = std::numeric_limits<double>::quiet_NaN(); //!< θ the knob stopped at
-    double m_stillSince = 0;                                        //!< when it stopped there [s]
-    double m_restT = std::numeric_limits<double>::quiet_NaN();      //!< the rest's last sample [s]
+    StillClock<double> m_still;                                 //!< of θ, as the device's tank
+    double m_stillT = std::numeric_limits<double>::quiet_NaN(); //!< its last observation [s]
+    double m_restT = std::numeric_limits<double>::quiet_NaN();  //!< the rest's last sample [s]
 };
 
 } // namespace hatpic::analysis

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace hatpic {
@@ -57,10 +58,15 @@ namespace passivity {
 //! reports a force that decays toward 0 without reaching it.
 inline constexpr double kContactTorque = 0.002;
 //! The level's floor: what a contact may give back undamped beyond the hand's own work [J].
-inline constexpr double kLevelFloor = 0.005;
+inline constexpr double kLevelFloor = 0.010;
 //! The knob is still while its angle stays within this of where it stopped [rad]: three
 //! encoder counts (one is 1.53 mrad), more than a resting knob's flicker of one.
 inline constexpr double kStillBand = 0.0046;
+//! Once the knob rests (still for kRestTime), where it stopped follows the centre of its
+//! flicker with this time constant [s]: a rest first seen at the edge of its flicker, or one
+//! that creeps by a count as the loop settles, stays a rest; a motion of more than the band
+//! does not. Before the rest the anchor stays put, so a slow motion is not taken for a rest.
+inline constexpr double kAnchorTime = 4.0;
 //! Still this long with the hand let go and no contact, the tank is armed again [s].
 inline constexpr double kLetGoTime = 0.5;
 //! The hand has let go when it holds the knob with at most this [N·m].
@@ -102,6 +108,41 @@ public:
 private:
     T m_sum{};
     T m_lost{}; //!< what the last additions lost, taken back from the next
+};
+
+//! Whether the knob is still, as the device's tank and the host's observer both judge it: its
+//! angle within passivity::kStillBand of where it stopped (an anchor that follows the centre
+//! of a resting knob's flicker, passivity::kAnchorTime), and for how long.
+template<typename T> class StillClock
+{
+public:
+    //! One observation of the angle `x` [rad], `h` [s] after the last; a non-finite x starts
+    //! over. Returns how long the knob has been still [s].
+    T update(T x, T h)
+    {
+        if (!std::isfinite(x) || !std::isfinite(h) ||
+            !(std::abs(x - m_anchor) <= T(passivity::kStillBand))) {
+            m_anchor = x;
+            m_still = T(0);
+        } else {
+            m_still = std::min(m_still + h, T(kCap)); // long past every threshold
+            if (stillFor(T(passivity::kRestTime)))
+                m_anchor += (x - m_anchor) * std::min(T(1), h / T(passivity::kAnchorTime));
+        }
+        return m_still;
+    }
+    T still() const { return m_still; }
+    //! Compared with a time that sums periods: half a microsecond of rounding slack.
+    bool stillFor(T seconds) const { return m_still >= seconds - T(kTimeSlack); }
+
+private:
+    //! Sums of periods compared with a time: half a microsecond of rounding slack [s].
+    static constexpr double kTimeSlack = 5e-7;
+    //! How long a still knob's time is counted, so that a float sum never stops growing [s].
+    static constexpr double kCap = 60;
+
+    T m_anchor = std::numeric_limits<T>::quiet_NaN(); //!< where the knob stopped [rad]
+    T m_still{};                                      //!< how long it has stayed there [s]
 };
 
 //! The law of one control cycle (passivity.md, "Per control cycle") with this project's tank,
@@ -150,7 +191,7 @@ public:
         m_reserve.set(level(T(0)));
         m_armed = true;
         m_fade = T(1);
-        m_still = T(0);
+        m_still = StillClock<T>();
     }
 
     //! One cycle with the feedback rendered `tauExt` [N·m] (after the watchdog and the torque
@@ -167,14 +208,9 @@ public:
             return s;
         const T hand = std::abs(tau);
         const T power = tauExt * omega; // > 0: the port gives energy to the knob
-        if (std::abs(deflection - m_anchor) > T(passivity::kStillBand)) {
-            m_anchor = deflection;
-            m_still = T(0);
-        } else {
-            m_still = std::min(m_still + h, T(kStillCap)); // long past every threshold
-        }
+        m_still.update(deflection, h);
         const bool contact = std::abs(tauExt) > T(passivity::kContactTorque);
-        if (!contact && m_still >= T(passivity::kLetGoTime - kTimeSlack) &&
+        if (!contact && m_still.stillFor(T(passivity::kLetGoTime)) &&
             hand <= T(passivity::kLetGoTorque))
             m_armed = true;
         else if (contact && power > T(passivity::kGivingPower))
@@ -184,7 +220,7 @@ public:
             if (m_reserve.value() < lvl)
                 m_reserve.set(lvl);
         }
-        const bool rests = contact && m_still >= T(passivity::kRestTime - kTimeSlack);
+        const bool rests = contact && m_still.stillFor(T(passivity::kRestTime));
         m_fade = rests ? std::max(T(0), m_fade - h / T(passivity::kFadeTime)) : T(1);
         if (tauExt != T(0)) {
             const T w2h = omega * omega * h;
@@ -214,11 +250,6 @@ public:
     T fade() const { return m_fade; }
 
 private:
-    //! Sums of periods compared with a time: half a microsecond of rounding slack [s].
-    static constexpr double kTimeSlack = 5e-7;
-    //! How long a still knob's time is counted, so that a float sum never stops growing [s].
-    static constexpr double kStillCap = 60;
-
     //! The tank's level for the hand's work [J]: the floor plus that work, at most R_max.
     T level(T handWork) const
     {
@@ -229,9 +260,8 @@ private:
     T m_reserveMax{};            //!< [J]
     CompensatedSum<T> m_reserve; //!< R [J]
     bool m_armed = true;
-    T m_fade = T(1); //!< the share of β_max in force
-    T m_anchor{};    //!< the deflection the knob stopped at [rad]
-    T m_still{};     //!< how long it has stayed within kStillBand of it [s]
+    T m_fade = T(1);       //!< the share of β_max in force
+    StillClock<T> m_still; //!< of the deflection θ − θ0
 };
 
 } // namespace hatpic

@@ -414,14 +414,15 @@ void TestLoopSimulation::halfASecondWithJitterAndLoss()
 
 // A hand of 0.1 N·m rests beyond the notch, where the fed-back torque outweighs the knob's
 // spring: without damping that rest swings away again (docs/teleop.md). The controller holds it
-// within a few encoder counts of that rest (creeping toward it under the damping), and says so:
-// damped at rest.
+// within a few encoder counts of that rest (creeping toward it under the damping; six counts,
+// 9.2 mrad, since the rest's anchor follows a resting knob's flicker: docs/teleop.md § Choosing
+// the tank), and says so: damped at rest.
 void TestLoopSimulation::aRestThatNeedsDampingIsHeld()
 {
     const auto off = LoopSimulation::run(contactsLoop(0.12, 0.1, false));
     QVERIFY2(!off.settled && off.p2p > 0.1, qPrintable(describe(off)));
     for (const LoopResult &r : LoopSimulation::runContacts(contactsLoop(0.12, 0.1, true))) {
-        QVERIFY2(r.p2p <= 0.008, qPrintable(describe(r)));
+        QVERIFY2(r.p2p <= 0.010, qPrintable(describe(r)));
         QVERIFY2(std::abs(r.thetaRest - r.thetaEq) < 0.008, qPrintable(describe(r)));
         QVERIFY2(r.dampedAtRest > 0.5, qPrintable(describe(r)));
     }

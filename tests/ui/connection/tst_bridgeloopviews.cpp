@@ -109,23 +109,32 @@ private Q_SLOTS:
     {
         QTest::addColumn<bool>("reported");
         QTest::addColumn<bool>("damping");
+        QTest::addColumn<bool>("atRest");
         QTest::addColumn<QString>("line");
         QTest::newRow("no capability")
-            << false << false
+            << false << false << false
             << u"Controller: none reported — this device's telemetry carries no τ_pc (no "
                "passivity capability); only the observer below watches."_s;
-        QTest::newRow("idle") << true << false
+        QTest::newRow("idle") << true << false << false
                               << u"Controller: idle — nothing to damp. Took out 1.25 mJ; "
                                  "reserve 20.00 mJ."_s;
         QTest::newRow("damping")
-            << true << true
+            << true << true << false
             << u"Controller: damping — β up to 0.420 N·m·s/rad (τ_pc -0.0210 N·m). Took out "
                "1.25 mJ; reserve 0.00 mJ."_s;
+        // Issue 35: damping a knob that rests is said in words, with what to do.
+        QTest::newRow("damping at rest")
+            << true << true << true
+            << u"Controller: damping at rest — the knob rests, yet the controller damps it in "
+               "87 % of the samples (β up to 0.420 N·m·s/rad), so it feels heavier than tuned: "
+               "the loop does not rest on its own at this gain and delay. Lower the gain, raise "
+               "M_adm or cut the delay. Took out 1.25 mJ; reserve 0.00 mJ."_s;
     }
     void controllerSaysIdleOrDamping()
     {
         QFETCH(bool, reported);
         QFETCH(bool, damping);
+        QFETCH(bool, atRest);
         QFETCH(QString, line);
         PassivityView view;
         view.show();
@@ -140,6 +149,9 @@ private Q_SLOTS:
         s.controllerTorque = damping ? -0.021 : 0;
         s.dissipated = reported ? 1.25e-3 : 0;
         s.reserve = damping ? 0.0 : 0.02;
+        s.atRest = atRest;
+        s.restDampedShare = atRest ? 0.87 : 0;
+        s.dampedAtRest = atRest && damping;
         view.setState(s);
         QCOMPARE(label(view, u"bridge_passivity_controller"_s), line);
         QVERIFY(view.text().startsWith(line));
