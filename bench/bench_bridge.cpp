@@ -1,12 +1,16 @@
 // bench_bridge [--ros 1|2] [--seconds S] [--steps N] [--domain ID] [--feedback-rate HZ]
-//              [--load N] [--windows K]
+//              [--load N] [--hogs busy|stress-ng] [--peer-realtime] [--windows K]
 //
 // The robot path as users run it: `hatpic-sim` on a pseudo-terminal, `hatpic-bridge --port
-// <pty> --rate 1000` on it, and this program as the robot, a node made through the project's
-// ROS layer (ros/node.h). ROS 2 runs in a private DDS domain (default 81) with CYCLONEDDS_URI
-// binding Cyclone DDS to `lo` without multicast; ROS 1 (--ros 1) starts a roscore of its own on
-// a free port with ROS_MASTER_URI, ROS_IP, ROS_HOME and ROS_LOG_DIR set for every process. Run
-// it inside /work/bin/isolated (or any network namespace of its own) on a shared machine.
+// <pty> --rate 1000` on it, and the robot, a node made through the project's ROS layer
+// (ros/node.h) in a process of its own (this program again, with --as-peer), which takes every
+// figure below. It runs at normal priority, as a user's ROS node does (HATPIC_REALTIME=0 in its
+// environment: none of its threads real-time); --peer-realtime lets it make its middleware's
+// threads real-time as the bridge does, which is what this bench measured before 2026-12-06. ROS 2
+// runs in a private DDS domain (default 81) with CYCLONEDDS_URI binding Cyclone DDS to `lo` without
+// multicast; ROS 1 (--ros 1) starts a roscore of its own on a free port with ROS_MASTER_URI,
+// ROS_IP, ROS_HOME and ROS_LOG_DIR set for every process. Run it inside /work/bin/isolated (or any
+// network namespace of its own) on a shared machine.
 //
 //   knob → topic: every JointState that arrives on /hatpic/joint_states during S seconds
 //     (default 10): its arrival (host wall clock) minus its header.stamp, which the bridge
@@ -20,10 +24,12 @@
 //     is the new value (gain 0.154: ±0.077 N·m). ROS 2: once with a reliable publisher (ROS
 //     2's default QoS), once best effort; ROS 1 has no QoS (TCPROS).
 //   CPU: hatpic-bridge's utime + stime (/proc/PID/stat) over each window, as % of one core.
-//   --load N: `stress-ng --cpu N` runs for the whole measurement (N CPU-bound processes, as a
-//     robot host running a simulator or a build); --windows K: the knob → topic window and the
-//     wrench steps K times, one row each, and the worst of them (performance.md § The loop
-//     with the CPU busy). Every program runs as it starts by itself: real-time where allowed.
+//   --load N: N CPU-bound processes run for the whole measurement (as a robot host running a
+//     simulator or a build), started once the topic flows: --hogs busy (the default) N shells
+//     `sh -c 'while :; do :; done'`, the plainest hog; --hogs stress-ng `stress-ng --cpu N`.
+//     --windows K: the knob → topic window and the wrench steps K times, one row each, and the
+//     worst of them (performance.md § The loop with the CPU busy). The bridge and hatpic-sim
+//     run as they start by themselves: real-time where allowed.
 // Prints one plain table; exit 1 when a program does not start or nothing arrives.
 #include "ros/node.h"
 
@@ -72,8 +78,11 @@ struct Options
     int steps = 100;                    //!< wrench steps per QoS
     int domain = 81;                    //!< ROS 2's private DDS domain
     std::optional<double> feedbackRate; //!< passed on as --feedback-rate [Hz]
-    int load = 0;                       //!< stress-ng --cpu N during the measurement
+    int load = 0;                       //!< N CPU hogs during the measurement
+    bool stressNg = false;              //!< the hogs: stress-ng --cpu N, else busy shells
+    bool peerRealtime = false;          //!< the peer's middleware threads real-time
     int windows = 1;                    //!< measurement windows
+    qint64 peerOf[2] = {0, 0};          //!< --as-peer BRIDGE_PID SIM_PID: the measuring peer
 };
 
 std::optional<Options> parseOptions(int argc, char *argv[])
@@ -81,6 +90,15 @@ std::optional<Options> parseOptions(int argc, char *argv[])
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string name = argv[i];
+        if (name == "--peer-realtime") {
+            o.peerRealtime = true;
+            continue;
+        }
+        if (name == "--as-peer" && i + 2 < argc) {
+            o.peerOf[0] = std::atoll(argv[++i]);
+            o.peerOf[1] = std::atoll(argv[++i]);
+            continue;
+        }
         if (i + 1 >= argc) {
             std::fprintf(stderr, "bench_bridge: %s needs a value.\n", name.c_str());
             return std::nullopt;
@@ -98,13 +116,16 @@ std::optional<Options> parseOptions(int argc, char *argv[])
             o.feedbackRate = std::atof(value);
         } else if (name == "--load" && std::atoi(value) >= 0) {
             o.load = std::atoi(value);
+        } else if (name == "--hogs" &&
+                   (std::string(value) == "busy" || std::string(value) == "stress-ng")) {
+            o.stressNg = std::string(value) == "stress-ng";
         } else if (name == "--windows" && std::atoi(value) > 0) {
             o.windows = std::atoi(value);
         } else {
             std::fprintf(stderr,
                          "bench_bridge: bad option %s %s; usage: bench_bridge [--ros 1|2] "
                          "[--seconds S] [--steps N] [--domain ID] [--feedback-rate HZ] "
-                         "[--load N] [--windows K]\n",
+                         "[--load N] [--hogs busy|stress-ng] [--peer-realtime] [--windows K]\n",
                          name.c_str(), value);
             return std::nullopt;
         }
@@ -371,6 +392,134 @@ int fail(const char *what, Child *child = nullptr)
     return 1;
 }
 
+// The measuring peer (--as-peer): the robot's node, in a process of its own. Prints "ready"
+// once the topic flows, waits for a line on stdin (the hogs are running then), measures and
+// prints the table's rows; exit 1 when nothing arrives.
+int runPeer(const Options &options)
+{
+    const qint64 bridgePid = options.peerOf[0], simPid = options.peerOf[1];
+    const bool ros1 = options.ros == ros::RosVersion::Ros1;
+    KnobProbe knob; // before the node: its subscriptions call them until they are gone
+    FeedbackProbe feedback;
+    std::string error;
+    const auto node = ros::Node::open({options.ros, "hatpic_bench", options.domain, {}}, &error);
+    if (!node)
+        return fail(error.c_str());
+    auto joints = node->subscribe(
+        "/hatpic/joint_states", ros::MessageType::JointState, ros::Qos::defaults(),
+        [&knob](const ros::Message &m) { knob.onMessage(m); }, &error);
+    auto feedbackSub = node->subscribe(
+        "/hatpic/feedback", ros::MessageType::WrenchStamped, ros::Qos::defaults(),
+        [&feedback](const ros::Message &m) { feedback.onMessage(m); }, &error);
+    if (!joints || !feedbackSub)
+        return fail(error.c_str());
+
+    // The device connected and the topic matched: messages arrive. Then a second to settle.
+    const auto deadline = Clock::now() + 30s;
+    while (knob.seen() < 1000 && Clock::now() < deadline)
+        std::this_thread::sleep_for(50ms);
+    if (knob.seen() < 1000)
+        return fail("no JointState arrives from hatpic-bridge");
+    std::this_thread::sleep_for(1s);
+    std::printf("ready\n");
+    std::fflush(stdout);
+    char go[16];
+    if (!std::fgets(go, sizeof go, stdin))
+        return fail("the bench went away");
+
+    // The wrench round trip, per publisher QoS (ROS 1: none).
+    struct Run
+    {
+        const char *qosName;
+        ros::Qos qos;
+        std::unique_ptr<ros::Publisher> publisher;
+    };
+    std::vector<Run> runs;
+    if (ros1) {
+        runs.push_back({"TCPROS", ros::Qos::defaults(), {}});
+    } else {
+        runs.push_back({"reliable", ros::Qos::defaults(), {}});
+        runs.push_back({"best effort",
+                        {ros::Qos::Reliability::BestEffort, ros::Qos::Durability::Volatile, 1},
+                        {}});
+    }
+    for (Run &run : runs) {
+        run.publisher =
+            node->advertise("/wrench_estimation", ros::MessageType::WrenchStamped, run.qos, &error);
+        if (!run.publisher)
+            return fail(error.c_str());
+    }
+
+    struct Window
+    {
+        std::vector<double> knobMs;
+        double knobSeconds = 0;
+        double bridgeCpu = NAN, simCpu = NAN; //!< [% of one core]
+        std::vector<RoundTrips> trips;        //!< per run
+        std::vector<double> tripCpu;          //!< per run
+    };
+    std::vector<Window> windows(std::size_t(options.windows));
+    for (Window &w : windows) {
+        // knob → topic, with the bridge's CPU over the same window.
+        knob.record(true, std::size_t(options.seconds * 1100));
+        const CpuWindow knobCpu(bridgePid);
+        const CpuWindow knobSimCpu(simPid);
+        const auto knobStart = Clock::now();
+        std::this_thread::sleep_for(std::chrono::duration<double>(options.seconds));
+        knob.record(false);
+        w.knobSeconds = msBetween(knobStart, Clock::now()) * 1e-3;
+        w.bridgeCpu = knobCpu.percent();
+        w.simCpu = knobSimCpu.percent();
+        w.knobMs = knob.latencies();
+        for (Run &run : runs) {
+            const CpuWindow cpu(bridgePid);
+            w.trips.push_back(measureRoundTrips(*run.publisher, feedback, options.steps));
+            w.tripCpu.push_back(cpu.percent());
+            if (!w.trips.back().warmedUp)
+                return fail("the wrench never came back on /hatpic/feedback");
+        }
+    }
+
+    std::printf("%-40s %7s %8s %8s %8s %8s\n", "latency [ms]", "count", "p50", "p95", "p99", "max");
+    double worstKnobP99 = 0, worstTripP95 = 0, worstRate = INFINITY;
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        const Window &w = windows[i];
+        const std::string prefix =
+            windows.size() > 1 ? "[" + std::to_string(i + 1) + "] " : std::string();
+        const double rate = double(w.knobMs.size()) / w.knobSeconds;
+        const QByteArray note = QByteArray::number(rate, 'f', 1) + " messages/s over " +
+                                QByteArray::number(w.knobSeconds, 'f', 1) + " s";
+        printRow((prefix + "knob -> /hatpic/joint_states").c_str(), w.knobMs, note.constData());
+        std::vector<double> sorted = w.knobMs;
+        std::sort(sorted.begin(), sorted.end());
+        worstKnobP99 = std::max(worstKnobP99, percentile(sorted, 0.99));
+        worstRate = std::min(worstRate, rate);
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            const std::string name =
+                prefix + "wrench (" + runs[r].qosName + ") -> /hatpic/feedback";
+            const std::string lost = std::to_string(w.trips[r].lost) + " lost (none within 1 s)";
+            printRow(name.c_str(), w.trips[r].ms, lost.c_str());
+            std::vector<double> trip = w.trips[r].ms;
+            std::sort(trip.begin(), trip.end());
+            worstTripP95 = std::max(worstTripP95, percentile(trip, 0.95));
+        }
+        std::printf("%shatpic-bridge CPU [%% of one core]: %.1f during the joint_states window "
+                    "(hatpic-sim %.1f)",
+                    prefix.c_str(), w.bridgeCpu, w.simCpu);
+        for (std::size_t r = 0; r < runs.size(); ++r)
+            std::printf(", %.1f during the %s steps", w.tripCpu[r], runs[r].qosName);
+        std::printf("\n");
+    }
+    if (windows.size() > 1)
+        std::printf("worst of %zu windows: knob -> topic p99 %.2f ms, round trip p95 %.2f ms, "
+                    "%.1f messages/s\n",
+                    windows.size(), worstKnobP99, worstTripP95, worstRate);
+    std::fflush(stdout);
+    joints.reset();
+    feedbackSub.reset();
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -379,6 +528,8 @@ int main(int argc, char *argv[])
     const auto options = parseOptions(argc, argv);
     if (!options)
         return 4;
+    if (options->peerOf[0] > 0)
+        return runPeer(*options);
     const bool ros1 = options->ros == ros::RosVersion::Ros1;
     QTemporaryDir dir;
     if (!dir.isValid())
@@ -422,138 +573,77 @@ int main(int argc, char *argv[])
     if (!bridge.start(QStringLiteral(HATPIC_BRIDGE_PATH), bridgeArguments, nullptr))
         return fail("hatpic-bridge does not start", &bridge);
 
-    KnobProbe knob; // before the node: its subscriptions call them until they are gone
-    FeedbackProbe feedback;
-    std::string error;
-    const auto node = ros::Node::open({options->ros, "hatpic_bench", options->domain, {}}, &error);
-    if (!node)
-        return fail(error.c_str());
-    auto joints = node->subscribe(
-        "/hatpic/joint_states", ros::MessageType::JointState, ros::Qos::defaults(),
-        [&knob](const ros::Message &m) { knob.onMessage(m); }, &error);
-    auto feedbackSub = node->subscribe(
-        "/hatpic/feedback", ros::MessageType::WrenchStamped, ros::Qos::defaults(),
-        [&feedback](const ros::Message &m) { feedback.onMessage(m); }, &error);
-    if (!joints || !feedbackSub)
-        return fail(error.c_str());
-
-    // The device connected and the topic matched: messages arrive. Then a second to settle.
-    const auto deadline = Clock::now() + 30s;
-    while (knob.seen() < 1000 && bridge.running() && Clock::now() < deadline)
-        std::this_thread::sleep_for(50ms);
-    if (knob.seen() < 1000)
-        return fail("no JointState arrives from hatpic-bridge", &bridge);
-    std::this_thread::sleep_for(1s);
+    // The measuring peer: this program again, at normal priority unless --peer-realtime.
+    QProcess peer;
+    QProcessEnvironment peerEnvironment = QProcessEnvironment::systemEnvironment();
+    if (!options->peerRealtime)
+        peerEnvironment.insert(QStringLiteral("HATPIC_REALTIME"), QStringLiteral("0"));
+    peer.setProcessEnvironment(peerEnvironment);
+    peer.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    QStringList peerArguments = QCoreApplication::arguments().mid(1);
+    peerArguments << QStringLiteral("--as-peer") << QString::number(bridge.pid())
+                  << QString::number(sim.pid());
+    peer.start(QCoreApplication::applicationFilePath(), peerArguments);
+    if (!peer.waitForStarted(5000))
+        return fail("the measuring peer does not start");
+    // Its "ready", after whatever the middleware logs on stdout (roscpp's INFO lines).
+    bool ready = false;
+    const auto readyBy = Clock::now() + 40s;
+    while (!ready && Clock::now() < readyBy && peer.state() == QProcess::Running) {
+        if (peer.canReadLine())
+            ready = peer.readLine().trimmed() == "ready";
+        else
+            peer.waitForReadyRead(1000);
+    }
+    if (!ready)
+        return fail("the measuring peer sees no JointState from hatpic-bridge", &bridge);
 
     // N CPU hogs for the whole measurement.
-    Child hogs(dir.filePath(QStringLiteral("stress.log")));
-    if (options->load > 0 &&
-        !hogs.start(QStringLiteral("stress-ng"),
-                    {QStringLiteral("--cpu"), QString::number(options->load)}, nullptr))
-        return fail("stress-ng does not start (apt-get install stress-ng)", &hogs);
+    std::vector<std::unique_ptr<Child>> hogs;
+    for (int i = 0; i < (options->stressNg ? std::min(options->load, 1) : options->load); ++i) {
+        hogs.push_back(std::make_unique<Child>(dir.filePath(QStringLiteral("hog%1.log").arg(i))));
+        const bool started =
+            options->stressNg
+                ? hogs.back()->start(QStringLiteral("stress-ng"),
+                                     {QStringLiteral("--cpu"), QString::number(options->load)},
+                                     nullptr)
+                : hogs.back()->start(QStringLiteral("sh"),
+                                     {QStringLiteral("-c"), QStringLiteral("while :; do :; done")},
+                                     nullptr);
+        if (!started)
+            return fail(options->stressNg ? "stress-ng does not start (apt-get install stress-ng)"
+                                          : "sh does not start",
+                        hogs.back().get());
+    }
     if (options->load > 0)
         std::this_thread::sleep_for(1s); // the hogs at full speed
-
-    // The wrench round trip, per publisher QoS (ROS 1: none).
-    struct Run
-    {
-        const char *qosName;
-        ros::Qos qos;
-        std::unique_ptr<ros::Publisher> publisher;
-    };
-    std::vector<Run> runs;
-    if (ros1) {
-        runs.push_back({"TCPROS", ros::Qos::defaults(), {}});
-    } else {
-        runs.push_back({"reliable", ros::Qos::defaults(), {}});
-        runs.push_back({"best effort",
-                        {ros::Qos::Reliability::BestEffort, ros::Qos::Durability::Volatile, 1},
-                        {}});
-    }
-    for (Run &run : runs) {
-        run.publisher =
-            node->advertise("/wrench_estimation", ros::MessageType::WrenchStamped, run.qos, &error);
-        if (!run.publisher)
-            return fail(error.c_str());
-    }
-
-    struct Window
-    {
-        std::vector<double> knobMs;
-        double knobSeconds = 0;
-        double bridgeCpu = NAN, simCpu = NAN; //!< [% of one core]
-        std::vector<RoundTrips> trips;        //!< per run
-        std::vector<double> tripCpu;          //!< per run
-    };
-    std::vector<Window> windows(std::size_t(options->windows));
-    for (Window &w : windows) {
-        // knob → topic, with the bridge's CPU over the same window.
-        knob.record(true, std::size_t(options->seconds * 1100));
-        const CpuWindow knobCpu(bridge.pid());
-        const CpuWindow knobSimCpu(sim.pid());
-        const auto knobStart = Clock::now();
-        std::this_thread::sleep_for(std::chrono::duration<double>(options->seconds));
-        knob.record(false);
-        w.knobSeconds = msBetween(knobStart, Clock::now()) * 1e-3;
-        w.bridgeCpu = knobCpu.percent();
-        w.simCpu = knobSimCpu.percent();
-        w.knobMs = knob.latencies();
-        for (Run &run : runs) {
-            const CpuWindow cpu(bridge.pid());
-            w.trips.push_back(measureRoundTrips(*run.publisher, feedback, options->steps));
-            w.tripCpu.push_back(cpu.percent());
-            if (!w.trips.back().warmedUp)
-                return fail("the wrench never came back on /hatpic/feedback", &bridge);
-        }
-    }
-    hogs.stop();
+    peer.write("go\n");
+    peer.waitForBytesWritten(1000);
+    const int budgetMs =
+        int(options->windows * (options->seconds + 3.0 * options->steps * 0.2 + 10) * 1000);
+    const bool finished = peer.waitForFinished(budgetMs);
+    for (auto &hog : hogs)
+        hog->stop();
     const QByteArray loadEnd = loadAverage();
+    const QByteArray table = peer.readAllStandardOutput();
+    if (!finished || peer.exitCode() != 0) {
+        peer.kill();
+        peer.waitForFinished(2000);
+        return fail(QByteArray("the measuring peer failed: " + table).constData(), &bridge);
+    }
 
     std::printf("bench_bridge: %s; hatpic-sim on %s; hatpic-bridge --rate 1000", where.constData(),
                 pty.constData());
     if (options->feedbackRate)
         std::printf(" --feedback-rate %g", *options->feedbackRate);
     if (options->load > 0)
-        std::printf("; stress-ng --cpu %d", options->load);
-    std::printf("\nload average %s at the start, %s at the end; %ld cores online\n",
+        std::printf(options->stressNg ? "; stress-ng --cpu %d" : "; %d busy shells", options->load);
+    std::printf("; the peer %s\n",
+                options->peerRealtime ? "real-time where allowed" : "at normal priority");
+    std::printf("load average %s at the start, %s at the end; %ld cores online\n",
                 loadStart.constData(), loadEnd.constData(), sysconf(_SC_NPROCESSORS_ONLN));
-    std::printf("%-40s %7s %8s %8s %8s %8s\n", "latency [ms]", "count", "p50", "p95", "p99", "max");
-    double worstKnobP99 = 0, worstTripP95 = 0, worstRate = INFINITY;
-    for (std::size_t i = 0; i < windows.size(); ++i) {
-        const Window &w = windows[i];
-        const std::string prefix =
-            windows.size() > 1 ? "[" + std::to_string(i + 1) + "] " : std::string();
-        const double rate = double(w.knobMs.size()) / w.knobSeconds;
-        const QByteArray note = QByteArray::number(rate, 'f', 1) + " messages/s over " +
-                                QByteArray::number(w.knobSeconds, 'f', 1) + " s";
-        printRow((prefix + "knob -> /hatpic/joint_states").c_str(), w.knobMs, note.constData());
-        std::vector<double> sorted = w.knobMs;
-        std::sort(sorted.begin(), sorted.end());
-        worstKnobP99 = std::max(worstKnobP99, percentile(sorted, 0.99));
-        worstRate = std::min(worstRate, rate);
-        for (std::size_t r = 0; r < runs.size(); ++r) {
-            const std::string name =
-                prefix + "wrench (" + runs[r].qosName + ") -> /hatpic/feedback";
-            const std::string lost = std::to_string(w.trips[r].lost) + " lost (none within 1 s)";
-            printRow(name.c_str(), w.trips[r].ms, lost.c_str());
-            std::vector<double> trip = w.trips[r].ms;
-            std::sort(trip.begin(), trip.end());
-            worstTripP95 = std::max(worstTripP95, percentile(trip, 0.95));
-        }
-        std::printf("%shatpic-bridge CPU [%% of one core]: %.1f during the joint_states window "
-                    "(hatpic-sim %.1f)",
-                    prefix.c_str(), w.bridgeCpu, w.simCpu);
-        for (std::size_t r = 0; r < runs.size(); ++r)
-            std::printf(", %.1f during the %s steps", w.tripCpu[r], runs[r].qosName);
-        std::printf("\n");
-    }
-    if (windows.size() > 1)
-        std::printf("worst of %zu windows: knob -> topic p99 %.2f ms, round trip p95 %.2f ms, "
-                    "%.1f messages/s\n",
-                    windows.size(), worstKnobP99, worstTripP95, worstRate);
+    std::fwrite(table.constData(), 1, std::size_t(table.size()), stdout);
 
-    joints.reset();
-    feedbackSub.reset();
     bridge.stop();
     sim.stop();
     if (roscore)

@@ -1,5 +1,6 @@
 #include "bridgeprogram.h"
 
+#include "common/exitcodes.h"
 #include "realtime/realtime.h"
 #include "session/sessionwording.h"
 
@@ -58,6 +59,11 @@ QString BridgeProgram::start()
     // thread's scheduling by the client (said on connecting), the middleware's by core/ros.
     if (const std::string problem = realtime::lockMemory(); !problem.empty())
         printLine(stderr, u"hatpic-bridge: " + QString::fromStdString(problem) + u'.');
+    // Said now, before any thread asks for it, and on every status line after (issue 38): a
+    // robot path at normal priority is delayed by every busy process on the machine.
+    m_realtimeProblem = QString::fromStdString(realtime::probeRealtime());
+    if (!m_realtimeProblem.isEmpty() && realtime::firstTimeFor(m_realtimeProblem.toStdString()))
+        printLine(stderr, u"hatpic-bridge: robot path: " + m_realtimeProblem + u'.');
     if (m_options.profile)
         m_bridge.setReferenceMode(m_options.profile->host.mode);
     if (const QString error = m_bridge.start(m_options.settings); !error.isEmpty())
@@ -97,17 +103,33 @@ void BridgeProgram::onConnected()
     if (std::isfinite(limit) && limit > 0 && limit <= 10)
         host.tau_limit = limit;
     m_client.setHostParams(host);
-    // The device's tau_limit is known now (its HELLO): a limit above it is refused here, said
-    // once, and the feedback stays 0 while the references go on (ros.md § Wrench → τ_ext).
+    // The device's tau_limit is known now (its HELLO): a limit above it is a bad option found
+    // late. Refused as the options are, one sentence and the usage exit code (ros.md § Wrench
+    // → τ_ext); the feedback is released first, so the device is left without force.
     if (const std::string problem = limitProblem(m_bridge.settings().feedback, limit);
         !problem.empty()) {
-        printLine(stderr, u"hatpic-bridge: " + QString::fromStdString(problem) +
-                              u"; the device renders no more. The feedback stays 0: restart "
-                              u"with a --limit within it.");
-        m_bridge.releaseFeedback();
+        refuse(QString::fromStdString(problem) + u"; restart with a --limit within it.");
+        return;
     }
-    if (m_options.profile && m_client.deviceInfo().canSetParams())
-        m_client.request(request::Push{{m_options.profile->device, std::nullopt}});
+    // The profile's device block: refused by the device, it is a bad option found late too.
+    if (m_options.profile && m_client.deviceInfo().canSetParams()) {
+        m_client.request(request::Push{{m_options.profile->device, std::nullopt}},
+                         {this, [this](const Outcome &outcome) {
+                              if (std::holds_alternative<outcome::Refused>(outcome.result) ||
+                                  std::holds_alternative<outcome::Invalid>(outcome.result))
+                                  refuse(u"--profile: " + SessionWording::commandFailure(outcome));
+                          }});
+    }
+}
+
+void BridgeProgram::refuse(const QString &sentence)
+{
+    if (m_closing || m_exitCode != ExitSuccess)
+        return;
+    printLine(stderr, u"hatpic-bridge: " + sentence);
+    m_bridge.releaseFeedback();
+    m_exitCode = ExitBadUsage;
+    Q_EMIT refused();
 }
 
 void BridgeProgram::printStats()
@@ -136,6 +158,7 @@ void BridgeProgram::printStats()
                   num(s.passivity.energy * 1e3) + u" mJ" +
                   (s.passivity.warning ? QStringLiteral(", GENERATING") : QString()) +
                   (s.passivity.dampedAtRest ? QStringLiteral(", damped at rest") : QString()) +
+                  (m_realtimeProblem.isEmpty() ? QString() : QStringLiteral(" | not real-time")) +
                   // The dead man's state, when there is one (ros.md § Enable switch).
                   (m_options.settings.topics.enable.empty() ? QString()
                    : s.engaged                              ? QStringLiteral(" | engaged")

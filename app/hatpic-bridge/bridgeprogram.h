@@ -31,7 +31,17 @@ public:
     //! published it, at most kZeroConfirmMs), then closes the endpoints and the port.
     void shutdown();
 
+    //! ExitSuccess, or ExitBadUsage once an option was refused that only the connected device
+    //! could judge (a --limit above its tau_limit, a --profile whose device block it refuses).
+    int exitCode() const { return m_exitCode; }
+
+Q_SIGNALS:
+    //! An option was refused after connecting (said on stderr, the feedback released): the
+    //! program ends with exitCode().
+    void refused();
+
 private:
+    void refuse(const QString &sentence);
     void onStateChanged(SessionState state, const StateDetail &detail);
     void onConnected();
     void printStats();
@@ -45,6 +55,9 @@ private:
     //! Connected: the bridge's figure of the device's τ_ext is the device's now (stats()).
     bool m_deviceKnown = false;
     bool m_closing = false;
+    //! Why the robot path's threads may not run real-time; empty when they may.
+    QString m_realtimeProblem;
+    int m_exitCode = 0; //!< ExitCode (common/exitcodes.h)
 };
 
 } // namespace hatpic::bridge

@@ -1,6 +1,7 @@
 // hatpic-bridge: the joystick on ROS 2 (or ROS 1) and the robot's wrench back in the operator's
-// hand (docs/ros.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4;
-// the middleware refused (or that ROS is not built in): exit 1 (common/exitcodes.h).
+// hand (docs/ros.md). Exit 0 after SIGINT/SIGTERM; bad options: one sentence on stderr, exit 4,
+// also when only the connected device can tell (a --limit above its tau_limit); the middleware
+// refused (or that ROS is not built in): exit 1 (common/exitcodes.h).
 #include "bridgeoptions.h"
 #include "bridgeprogram.h"
 
@@ -53,7 +54,9 @@ int main(int argc, char *argv[])
         printError(failure);
         return ExitFailure;
     }
+    QObject::connect(&program, &bridge::BridgeProgram::refused, &app, &QCoreApplication::quit,
+                     Qt::QueuedConnection);
     app.exec();
     program.shutdown();
-    return ExitSuccess;
+    return program.exitCode();
 }
