@@ -598,19 +598,18 @@ int main(int argc, char *argv[])
     if (!ready)
         return fail("the measuring peer sees no JointState from hatpic-bridge", &bridge);
 
-    // N CPU hogs for the whole measurement.
+    // N CPU hogs for the whole measurement: one stress-ng running N workers, or N shells.
+    const int hogProcesses = options->stressNg ? std::min(options->load, 1) : options->load;
+    const QString hogProgram =
+        options->stressNg ? QStringLiteral("stress-ng") : QStringLiteral("sh");
+    const QStringList hogArguments =
+        options->stressNg
+            ? QStringList{QStringLiteral("--cpu"), QString::number(options->load)}
+            : QStringList{QStringLiteral("-c"), QStringLiteral("while :; do :; done")};
     std::vector<std::unique_ptr<Child>> hogs;
-    for (int i = 0; i < (options->stressNg ? std::min(options->load, 1) : options->load); ++i) {
+    for (int i = 0; i < hogProcesses; ++i) {
         hogs.push_back(std::make_unique<Child>(dir.filePath(QStringLiteral("hog%1.log").arg(i))));
-        const bool started =
-            options->stressNg
-                ? hogs.back()->start(QStringLiteral("stress-ng"),
-                                     {QStringLiteral("--cpu"), QString::number(options->load)},
-                                     nullptr)
-                : hogs.back()->start(QStringLiteral("sh"),
-                                     {QStringLiteral("-c"), QStringLiteral("while :; do :; done")},
-                                     nullptr);
-        if (!started)
+        if (!hogs.back()->start(hogProgram, hogArguments, nullptr))
             return fail(options->stressNg ? "stress-ng does not start (apt-get install stress-ng)"
                                           : "sh does not start",
                         hogs.back().get());
@@ -619,8 +618,9 @@ int main(int argc, char *argv[])
         std::this_thread::sleep_for(1s); // the hogs at full speed
     peer.write("go\n");
     peer.waitForBytesWritten(1000);
+    // A window: its seconds, then two QoS × steps of at most 1 s each (lost ones), and 10 s.
     const int budgetMs =
-        int(options->windows * (options->seconds + 3.0 * options->steps * 0.2 + 10) * 1000);
+        int(options->windows * (options->seconds + 2.0 * options->steps * 1.0 + 10) * 1000);
     const bool finished = peer.waitForFinished(budgetMs);
     for (auto &hog : hogs)
         hog->stop();

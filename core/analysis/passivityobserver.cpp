@@ -138,7 +138,7 @@ void PassivityObserver::judgeRest(double t, double theta, bool damped)
     const double h = std::isfinite(m_stillT) ? t - m_stillT : 0.0;
     m_stillT = t;
     m_still.update(theta, h);
-    m_state.atRest = std::isfinite(theta) && m_still.stillFor(passivity::kRestTime);
+    m_state.atRest = m_still.stillFor(passivity::kRestTime); // a NaN θ restarts the clock
     if (!m_state.atRest) {
         m_state.restDampedShare = 0;
         m_restT = std::numeric_limits<double>::quiet_NaN();

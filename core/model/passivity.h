@@ -17,7 +17,7 @@ namespace hatpic {
 
 //! The controller's tuning, in wire order (passivity.md, "Parameters"). The defaults turn it
 //! on; they were chosen with the stability map and confirmed on the real teleoperation loop
-//! (docs/teleop.md § The passivity controller, "Choosing the defaults").
+//! (docs/teleop.md § The stability map, "Choosing the tank").
 struct PassivityParams
 {
     double pc_damping_max = 0.7;  //!< β_max [N·m·s/rad]; 0 turns the controller off
@@ -28,7 +28,7 @@ struct PassivityParams
     double field(int index) const;          //!< by wire index 0…1; NaN outside
     void setField(int index, double value); //!< by wire index; ignored outside
 
-    //! β_max = 0: the controller off (the tank's size kept).
+    //! β_max = 0: the controller off (the default R_max kept).
     static constexpr PassivityParams off() { return {0.0, PassivityParams{}.pc_reserve_max}; }
     //! Whether the controller runs at all (β_max > 0).
     bool enabled() const { return pc_damping_max > 0; }

@@ -180,9 +180,9 @@ QByteArray hostJson(const Profile &profile)
     return writer.text();
 }
 
-// The device object; its effects object only when the block travels differently from the
-// defaults (a device's read-back of them is ±π moved inside by one float), so profiles
-// without effects stay as they were.
+// The device object; its effects object when `always` names it or when the block travels
+// differently from the defaults (a device's read-back of them is ±π moved inside by one
+// float), so profiles without effects stay as they were.
 QByteArray deviceJson(const Profile &profile, ProfileBlocks always)
 {
     JsonObjectWriter writer = deviceParamsWriter(profile.device, 2);

@@ -176,6 +176,17 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
                             .arg(compactNumberText(tau), text, compactNumberText(kMaxTorque)));
         return false;
     };
+    // A time of the hand's pattern: from 0 (or above 0, for a push that must last) to `most`.
+    auto checkTime = [&](const char *what, double t, double most, bool zeroAllowed) {
+        if ((zeroAllowed ? t >= 0 : t > 0) && t <= most)
+            return true;
+        const QString range = zeroAllowed ? QStringLiteral("must be from 0 to %1 s.")
+                                          : QStringLiteral("must be above 0 and at most %1 s.");
+        setError(error, QStringLiteral("Hand input %1 time %2 s in \"%3\" ")
+                                .arg(QLatin1String(what), compactNumberText(t), text) +
+                            range.arg(compactNumberText(most)));
+        return false;
+    };
     switch (hand.kind) {
     case Kind::Idle:
         break;
@@ -190,13 +201,8 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
         hand.stepTime = values.size() > 2 ? values.at(2) : kStepTime;
         if (!checkTorque(hand.amplitude) || !checkTorque(hand.offset))
             return std::nullopt;
-        if (hand.stepTime < 0 || hand.stepTime > kMaxStepTime) {
-            setError(error, QStringLiteral("Hand input step time %1 s in \"%2\" must be from 0 "
-                                           "to %3 s.")
-                                .arg(compactNumberText(hand.stepTime), text,
-                                     compactNumberText(kMaxStepTime)));
+        if (!checkTime("step", hand.stepTime, kMaxStepTime, true))
             return std::nullopt;
-        }
         break;
     case Kind::Sine:
         hand.amplitude = values.at(0);
@@ -235,20 +241,9 @@ std::optional<HandInput> HandInput::parse(const QString &spec, QString *error)
         hand.pushes = int(n);
         hand.pushTime = values.at(2);
         hand.releaseTime = values.at(3);
-        if (hand.pushTime <= 0 || hand.pushTime > kMaxPhase) {
-            setError(error, QStringLiteral("Hand input push time %1 s in \"%2\" must be above 0 "
-                                           "and at most %3 s.")
-                                .arg(compactNumberText(hand.pushTime), text,
-                                     compactNumberText(kMaxPhase)));
+        if (!checkTime("push", hand.pushTime, kMaxPhase, false) ||
+            !checkTime("release", hand.releaseTime, kMaxPhase, true))
             return std::nullopt;
-        }
-        if (hand.releaseTime < 0 || hand.releaseTime > kMaxPhase) {
-            setError(error, QStringLiteral("Hand input release time %1 s in \"%2\" must be from "
-                                           "0 to %3 s.")
-                                .arg(compactNumberText(hand.releaseTime), text,
-                                     compactNumberText(kMaxPhase)));
-            return std::nullopt;
-        }
         break;
     }
     }

@@ -38,6 +38,8 @@ public:
     robot::RobotEnd<double> robot;
     std::int64_t cycles = 0;
     std::int64_t total = 0;
+    //! The hand the device is given: config.hand, or its pushes with several contacts.
+    HandInput hand;
     double tauExt = 0;    //!< the bridge's τ_ext, last sent to the device [N·m]
     double lastSent = -1; //!< when it was last sent [s]
     bool sendNow = true;  //!< a new τ_ext waits for the next cycle
@@ -58,7 +60,10 @@ public:
 
 LoopSimulation::Private::Private(const LoopConfig &c)
     : config(c), feedback(c.feedback), rate(c.twistRateHz), robot(c.robot),
-      total(std::int64_t(std::floor(c.runTime() / kStep + 1e-9)) + 1)
+      total(std::int64_t(std::floor(c.runTime() / kStep + 1e-9)) + 1),
+      hand(c.contacts > 1
+               ? HandInput::pushing(c.hand.amplitude, c.contacts, c.duration, LoopConfig::kRelease)
+               : c.hand)
 {
     SimulatedDevice::Config dc;
     dc.protocol = WireProtocol::V2;
@@ -66,9 +71,7 @@ LoopSimulation::Private::Private(const LoopConfig &c)
     dc.throttle = false;
     dc.noise = c.noise;
     dc.seed = c.seed;
-    dc.hand = c.contacts > 1 ? HandInput::pushing(c.hand.amplitude, c.contacts, c.duration,
-                                                  LoopConfig::kRelease)
-                             : c.hand;
+    dc.hand = hand;
     dc.tauLimit = c.host.tau_limit;
     dc.params = c.device;
     dc.passivity = roundedForWire(c.passivity); // as the device holds it: float32
@@ -217,10 +220,9 @@ std::pair<std::int64_t, std::int64_t> LoopSimulation::Private::window(int index)
 {
     if (config.contacts <= 1)
         return {0, total};
-    const std::int64_t begin =
-        std::llround((config.duration + LoopConfig::kRelease) * index / kStep);
+    const std::int64_t begin = std::llround(hand.pushStart(index) / kStep);
     const std::int64_t end =
-        index == config.contacts - 1 ? total : begin + std::llround(config.duration / kStep);
+        index == config.contacts - 1 ? total : begin + std::llround(hand.pushTime / kStep);
     return {begin, end};
 }
 
