@@ -139,12 +139,24 @@ void ExperimentRunner::restorePassivity()
 {
     if (!m_passivityBefore)
         return;
-    if (m_client) {
-        DeviceTuning before;
-        before.passivity = m_passivityBefore;
-        m_client->request(request::Push{before});
-    }
+    if (m_client)
+        sendPassivity(*m_passivityBefore, kRestoreAttempts);
     m_passivityBefore.reset();
+}
+
+void ExperimentRunner::sendPassivity(const PassivityParams &block, int attempts)
+{
+    DeviceTuning tuning;
+    tuning.passivity = block;
+    m_client->request(request::Push{tuning},
+                      {this, [this, block, attempts](const Outcome &outcome) {
+                           const bool unanswered =
+                               std::holds_alternative<outcome::TimedOut>(outcome.result) ||
+                               std::holds_alternative<outcome::QueueFull>(outcome.result);
+                           // Not once a new run has begun: it sends its own block back.
+                           if (unanswered && attempts > 1 && m_client && !running())
+                               sendPassivity(block, attempts - 1);
+                       }});
 }
 
 void ExperimentRunner::beginPlan()

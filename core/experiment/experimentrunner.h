@@ -43,6 +43,10 @@ public:
     static constexpr qsizetype kMaxLogLines = 4;
     //! Time for the knob to come to rest once the simulated hand let go, before the plan [ms].
     static constexpr int kReleaseMs = 1000;
+    //! Times the passivity block is sent back at the end when the device does not answer: a
+    //! push that timed out may or may not have taken effect, and a controller left off after
+    //! an experiment would leave a robot's loop without it.
+    static constexpr int kRestoreAttempts = 3;
 
     //! `simulator`: the simulated joystick the client is connected through, if it is; its hand
     //! is idle for a run.
@@ -77,8 +81,10 @@ private:
     //! The plan, once the controller is off and the knob has come to rest.
     void beginPlanWhenReady();
     void beginPlan();
-    //! Sends the passivity block back as it was before the run, once.
+    //! Sends the passivity block back as it was before the run, once per run.
     void restorePassivity();
+    //! Pushes `block`; again while the device does not answer, `attempts` times in all.
+    void sendPassivity(const PassivityParams &block, int attempts);
     void tick();
     void onSamples(const QList<Sample> &batch);
     void onDeviceLog(const QString &line);
