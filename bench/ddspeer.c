@@ -75,8 +75,8 @@ static void takeAll(dds_entity_t reader, struct Latencies *into, int recording)
             const sensor_msgs_msg_dds__JointState_ *joints = samples[i];
             ++into->seen;
             if (recording && into->count < into->capacity) {
-                const double stamp = (double)joints->header.stamp.sec +
-                                     (double)joints->header.stamp.nanosec * 1e-9;
+                const double stamp =
+                    (double)joints->header.stamp.sec + (double)joints->header.stamp.nanosec * 1e-9;
                 into->ms[into->count++] = (now - stamp) * 1e3;
             }
         }
@@ -130,8 +130,8 @@ int main(int argc, char *argv[])
         fprintf(stderr, "ddspeer: no participant: %s\n", dds_strretcode(participant));
         return 1;
     }
-    const dds_entity_t topic = dds_create_topic(
-        participant, &sensor_msgs_msg_dds__JointState__desc, "rt/hatpic/joint_states", NULL, NULL);
+    const dds_entity_t topic = dds_create_topic(participant, &sensor_msgs_msg_dds__JointState__desc,
+                                                "rt/hatpic/joint_states", NULL, NULL);
     /* ROS 2's default subscription: reliable, volatile, keep last 10 (rmw_cyclonedds'
        create_readwrite_qos of rmw_qos_profile_default). */
     dds_qos_t *qos = dds_create_qos();
