@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # teleop-passivity-figures.py DELAY MODE HAND THETA_EQ CONTACTS SECONDS FILE: passivity.md's
-# figures per contact from hatpic-sim --cycle-log (t_s,theta,omega,tau,tau_ext,tau_pc,
-# pc_reserve,tau_total), one table row each. Contact i is the cycles from its push
+# figures per contact from hatpic-sim --cycle-log (its columns read by name: t_s, theta,
+# omega, tau_ext, tau_pc), one table row each. Contact i is the cycles from its push
 # (i · (SECONDS + 2) s after the first cycle) to SECONDS later; the last contact ends 0.3 s
 # before the last cycle with τ_ext ≠ 0 (the run's teardown: the bridge is stopped first).
 # THETA_EQ is robot.md's rest for the hand (hatpicctl teleop-map's theta_eq column).
@@ -10,7 +10,10 @@ import csv, math, sys
 delay, mode, hand = sys.argv[1], sys.argv[2], sys.argv[3]
 th_eq, contacts, seconds = float(sys.argv[4]), int(sys.argv[5]), float(sys.argv[6])
 BAND, REST = 0.003, 2.0
-rows = [[float(x) for x in r] for r in list(csv.reader(open(sys.argv[7])))[1:] if len(r) == 8]
+# Each row as (t_s, theta, omega, tau, tau_ext, tau_pc): the indices below.
+COLUMNS = ("t_s", "theta", "omega", "tau", "tau_ext", "tau_pc")
+table = csv.DictReader(open(sys.argv[7]))
+rows = [[float(r[c]) for c in COLUMNS] for r in table if None not in r.values()]
 lastfb = max((i for i, r in enumerate(rows) if r[4] != 0), default=len(rows) - 1)
 rows = rows[:max(2, lastfb - 300)]
 t0 = rows[0][0]

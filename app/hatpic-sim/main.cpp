@@ -7,6 +7,7 @@
 #include "common/faultreport.h"
 #include "common/ptyprogram.h"
 #include "realtime/realtime.h"
+#include "sim/cyclelog.h"
 #include "sim/simulateddevice.h"
 #include "sim/simulatorhost.h"
 
@@ -70,8 +71,8 @@ int main(int argc, char *argv[])
     const auto noThrottle = program.add("no-throttle", "Do not limit output to the baud rate.");
     const auto cycleLog =
         program.add("cycle-log",
-                    "Write every control cycle to FILE as CSV (t_s, theta, omega, tau, tau_ext, "
-                    "tau_pc, pc_reserve, tau_total): about 90 bytes a cycle.",
+                    "Write every control cycle to FILE as CSV: t_s, the quantities TELEMETRY "
+                    "carries (t_us, theta, omega, tau, ...), tau_total; about 110 bytes a cycle.",
                     "FILE");
     program.add(SharedOption::Hand);
     program.add(SharedOption::Seed, "Seed of the load-reading noise and of the faults.");
@@ -99,17 +100,9 @@ int main(int argc, char *argv[])
                                    .arg(log.fileName(), log.errorString()));
             return PtyProgram::kExitBadOptions;
         }
-        log.write("t_s,theta,omega,tau,tau_ext,tau_pc,pc_reserve,tau_total\n");
-        host.device().setCycleObserver([&log](const SimulatedDevice::Cycle &c) {
-            QByteArray line;
-            for (const double v :
-                 {c.t, c.theta, c.omega, c.tau, c.tau_ext, c.tau_pc, c.pc_reserve, c.tau_total}) {
-                if (!line.isEmpty())
-                    line += ',';
-                line += QByteArray::number(v, 'g', 9);
-            }
-            log.write(line + '\n');
-        });
+        log.write(cycleLogHeader() + '\n');
+        host.device().setCycleObserver(
+            [&log](const SimulatedDevice::Cycle &c) { log.write(cycleLogLine(c) + '\n'); });
     }
     for (const QString &warning : {host.device().stateWarning(), host.device().saveWarning()}) {
         if (!warning.isEmpty())
