@@ -1,5 +1,6 @@
 # hatpic-tuner: the tuning window. Included from app/CMakeLists.txt when HATPIC_BUILD_UI is on.
-add_executable(hatpic-tuner hatpic-tuner/main.cpp)
+add_executable(hatpic-tuner hatpic-tuner/main.cpp hatpic-tuner/tuneroptions.cpp
+                            hatpic-tuner/tuneroptions.h)
 target_link_libraries(hatpic-tuner PRIVATE hatpic::ui hatpic_appcommon hatpic::build_settings)
 target_compile_definitions(hatpic-tuner PRIVATE HATPIC_VERSION="${PROJECT_VERSION}")
 set_target_properties(hatpic-tuner PROPERTIES AUTOMOC ON)

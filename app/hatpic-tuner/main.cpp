@@ -1,241 +1,37 @@
 // hatpic-tuner [--port PATH|sim] [--baud N] [--protocol auto|v2|legacy] [--profile FILE]
 //              [--hand SPEC] [--bridge 1|2] [--record FILE.csv] [RECORDING.csv]
-// A bad option: one sentence on stderr, exit 4 (common/exitcodes.h), before any window.
-// SIGTERM, SIGHUP, SIGINT (and every other signal that would end it and can wait) quit as the
-// window's Quit does, without its questions: the recording is closed with every row written,
-// the device left without the bridge's force; exit 0 (SIGINT, SIGTERM) or 128 + the signal.
-#include "common/connectionoptions.h"
-#include "common/exitcodes.h"
+// A bad option: one sentence on stderr, exit 4 (common/exitcodes.h), before any window
+// (tuneroptions.h). SIGTERM, SIGHUP, SIGINT (and every other signal that would end it and can
+// wait) quit as the window's Quit does, without its questions: the recording is closed with
+// every row written, the device left without the bridge's force; exit 0 (SIGINT, SIGTERM) or
+// 128 + the signal.
 #include "common/quitonsignal.h"
-#include "plots/plotpanel.h"
+#include "hatpic-tuner/tuneroptions.h"
 #include "window/mainwindow.h"
 
 #include <QApplication>
-#include <QCommandLineParser>
-#include <QTimer>
 
-#include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <vector>
 
 using namespace hatpic;
-using namespace Qt::StringLiterals;
-
-namespace {
-
-constexpr double kMaxQuitAfterSeconds = 604800; //!< --quit-after: at most one week [s]
-
-void fail(const QString &message)
-{
-    std::fprintf(stderr, "hatpic-tuner: %s\n", qPrintable(message));
-}
-
-// Qt's own options (-platform, -style, …) are known only to a QApplication, and --help-all
-// lists them. One on the offscreen platform, which needs no display, parses the command line
-// as process() does (a bad option or help: a message and exit), then goes. The user's
-// arguments come first, so the appended -platform wins only for this one.
-void parseWithQt(int argc, char *argv[], QCommandLineParser &parser)
-{
-    static char platform[] = "-platform";
-    static char offscreen[] = "offscreen";
-    std::vector<char *> arguments(argv, argv + argc);
-    arguments.push_back(platform);
-    arguments.push_back(offscreen);
-    arguments.push_back(nullptr);
-    int count = argc + 2;
-    const QApplication probe(count, arguments.data());
-    // A bad option is bad usage, as in every program (Qt's process() would exit 1).
-    if (!parser.parse(QCoreApplication::arguments())) {
-        fail(parser.errorText());
-        std::exit(ExitBadUsage);
-    }
-    parser.process(probe); // help, help-all, version: printed, then exits
-}
-
-// True when every argument that looks like an option is one of `names` spelt out ("--port",
-// "--port=X", "-p"): QApplication then takes none of them, and the parser sees them as they
-// are. Anything else ("-platform", "-pX", a value starting with '-') may be Qt's.
-bool onlyOwnOptions(const QStringList &arguments, const QStringList &names)
-{
-    for (qsizetype i = 1; i < arguments.size(); ++i) {
-        const QString &a = arguments[i];
-        if (!a.startsWith(u'-') || a == u"-")
-            continue;
-        const bool own = a.startsWith(u"--")
-                             ? a.size() > 3 && names.contains(a.mid(2).section(u'=', 0, 0))
-                             : a.size() == 2 && names.contains(a.mid(1));
-        if (!own)
-            return false;
-    }
-    return true;
-}
-
-} // namespace
 
 int main(int argc, char *argv[])
 {
-    // --version answers without a display (over ssh, in a package check): before QApplication,
-    // which needs one. The same text as QCommandLineParser's.
-    for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--version") == 0 || std::strcmp(argv[i], "-v") == 0) {
-            std::printf("hatpic-tuner %s\n", HATPIC_VERSION);
-            return 0;
-        }
-    }
     QApplication::setOrganizationName(QStringLiteral("HATPIC"));
     QApplication::setApplicationName(QStringLiteral("hatpic-tuner"));
     QApplication::setApplicationVersion(QStringLiteral(HATPIC_VERSION));
-
-    QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Tune, plot and record the HATPIC single-axis haptic joystick."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption port = connectionOption(
-        ConnectionOption::Port,
-        QStringLiteral("Connect at once to PORT (a serial port or pty), or 'sim' for the "
-                       "built-in simulated joystick."));
-    const QCommandLineOption baud = connectionOption(ConnectionOption::Baud);
-    const QCommandLineOption protocol = connectionOption(ConnectionOption::Protocol);
-    const QCommandLineOption profile(QStringLiteral("profile"),
-                                     QStringLiteral("Open this profile (JSON) in the editor."),
-                                     QStringLiteral("FILE"));
-    const QCommandLineOption hand(QStringLiteral("hand"),
-                                  QStringLiteral("Simulated operator input (docs/cli.md), e.g. "
-                                                 "sine:0.06:0.2 or hand:0.3; default for --port "
-                                                 "sim: a gentle sine."),
-                                  QStringLiteral("SPEC"));
-    const QCommandLineOption repaint(QStringLiteral("repaint-rate"),
-                                     QStringLiteral("Plot repaint rate in Hz (default 30)."),
-                                     QStringLiteral("HZ"));
-    const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
-                                       QStringLiteral("Close the window after SECONDS (for "
-                                                      "scripted screenshots and measurements)."),
-                                       QStringLiteral("SECONDS"));
-    const QCommandLineOption faults = connectionOption(ConnectionOption::Faults);
-    const QCommandLineOption seed = connectionOption(ConnectionOption::Seed);
-    const QCommandLineOption bridge(QStringLiteral("bridge"),
-                                    QStringLiteral("Open the Bridge panel and start the robot "
-                                                   "bridge on ROS 1 or ROS 2, with the profile's "
-                                                   "bridge settings (docs/teleop.md)."),
-                                    QStringLiteral("1|2"));
-    const QCommandLineOption record(QStringLiteral("record"),
-                                    QStringLiteral("Record every sample to FILE.csv (and its "
-                                                   ".json) once connected, as Record does."),
-                                    QStringLiteral("FILE.csv"));
-    parser.addOptions(
-        {port, baud, protocol, profile, hand, repaint, quitAfter, faults, seed, bridge, record});
-    parser.addPositionalArgument(QStringLiteral("recording"),
-                                 QStringLiteral("A recording (CSV) to open in replay."),
-                                 QStringLiteral("[RECORDING.csv]"));
-    // Help and option errors need no display: the options are parsed before QApplication.
-    QStringList arguments;
-    for (int i = 0; i < argc; ++i)
-        arguments << QString::fromLocal8Bit(argv[i]);
-    QStringList names{u"h"_s, u"help"_s, u"help-all"_s, u"v"_s, u"version"_s};
-    for (const QCommandLineOption *o : {&port, &baud, &protocol, &profile, &hand, &repaint,
-                                        &quitAfter, &faults, &seed, &bridge, &record})
-        names << o->names();
-    if (!onlyOwnOptions(arguments, names) || !parser.parse(arguments) ||
-        parser.isSet(QStringLiteral("help-all"))) {
-        parseWithQt(argc, argv, parser); // maybe Qt's own options; exits unless they were
-    } else if (parser.isSet(QStringLiteral("help"))) {
-        // As process() prints it; without an application object Qt cannot name the program.
-        std::fputs(qPrintable(parser.helpText().replace(QStringLiteral("<executable_name>"),
-                                                        arguments.constFirst())),
-                   stdout);
-        return 0;
-    }
-
-    ConnectOptions options;
-    if (QString error; !readConnectionOptions(parser, options, &error)) {
-        fail(error);
-        return ExitBadUsage;
-    }
-    std::optional<HandInput> handInput;
-    if (parser.isSet(hand)) {
-        QString error;
-        handInput = HandInput::parse(parser.value(hand), &error);
-        if (!handInput) {
-            fail(QStringLiteral("--hand: %1").arg(error));
-            return ExitBadUsage;
-        }
-    }
-    double repaintHz = PlotPanel::kDefaultRepaintHz;
-    if (parser.isSet(repaint)) {
-        bool ok = false;
-        repaintHz = parser.value(repaint).toDouble(&ok);
-        // NaN passes neither comparison, so finiteness is checked on its own.
-        if (!ok || !std::isfinite(repaintHz) || repaintHz < 1 || repaintHz > 240) {
-            fail(QStringLiteral("--repaint-rate: expected 1 to 240 Hz, got \"%1\"")
-                     .arg(parser.value(repaint)));
-            return ExitBadUsage;
-        }
-    }
-    double quitAfterSeconds = -1;
-    if (parser.isSet(quitAfter)) {
-        bool ok = false;
-        quitAfterSeconds = parser.value(quitAfter).toDouble(&ok);
-        if (!ok || !std::isfinite(quitAfterSeconds) || quitAfterSeconds < 0 ||
-            quitAfterSeconds > kMaxQuitAfterSeconds) {
-            fail(QStringLiteral("--quit-after: expected 0 to %1 seconds, got \"%2\"")
-                     .arg(kMaxQuitAfterSeconds)
-                     .arg(parser.value(quitAfter)));
-            return ExitBadUsage;
-        }
-    }
-    int bridgeRos = 0;
-    if (parser.isSet(bridge)) {
-        const QString v = parser.value(bridge).trimmed();
-        if (v != u"1" && v != u"2") {
-            fail(QStringLiteral("--bridge: expected 1 or 2 (the ROS version), got \"%1\"")
-                     .arg(parser.value(bridge).left(40)));
-            return ExitBadUsage;
-        }
-        bridgeRos = v.toInt();
-    }
-    if (parser.positionalArguments().size() > 1) {
-        fail(QStringLiteral("at most one recording can be opened"));
-        return ExitBadUsage;
-    }
-
-    if (parser.isSet(record) && options.port.isEmpty()) {
-        fail(QStringLiteral("--record needs --port: a recording is of a connected device"));
-        return ExitBadUsage;
-    }
+    const std::variant<TunerOptions, int> options = readTunerOptions(argc, argv);
+    if (const int *exitCode = std::get_if<int>(&options))
+        return *exitCode;
 
     QApplication app(argc, argv);
     QApplication::setDesktopFileName(QStringLiteral("hatpic-tuner"));
     if (!quitOnSignals())
-        fail(QStringLiteral("cannot install the signal handlers; a kill will not close a "
-                            "recording"));
+        std::fprintf(stderr, "hatpic-tuner: cannot install the signal handlers; a kill will not "
+                             "close a recording\n");
     MainWindow window;
-    window.setRepaintRate(repaintHz);
-    if (parser.isSet(profile)) {
-        QString error;
-        if (!window.openProfile(parser.value(profile), &error))
-            fail(QStringLiteral("--profile: %1").arg(error));
-    }
-    if (handInput)
-        window.setSimulatedHand(*handInput);
-    window.show();
-    if (parser.isSet(record))
-        window.recordOnConnect(parser.value(record));
-    if (!options.port.isEmpty())
-        window.connectTo(options);
-    if (bridgeRos != 0 && !window.startBridge(bridgeRos))
-        fail(QStringLiteral("--bridge: the robot bridge did not start; the Bridge panel says why"));
-    if (!parser.positionalArguments().isEmpty()) {
-        QString error;
-        if (!window.openRecording(parser.positionalArguments().constFirst(), &error))
-            fail(error);
-    }
-    if (quitAfterSeconds >= 0)
-        QTimer::singleShot(static_cast<int>(std::lround(quitAfterSeconds * 1000)), &window,
-                           &QWidget::close);
+    applyTunerOptions(std::get<TunerOptions>(options), window);
     const int code = app.exec();
     // Quit by a signal: the window's destruction below closes the recording and the link.
     const int signal = quitSignal();
