@@ -91,32 +91,34 @@ std::variant<TunerOptions, int> readTunerOptions(int argc, char *argv[])
                        "built-in simulated joystick."));
     const QCommandLineOption baud = connectionOption(ConnectionOption::Baud);
     const QCommandLineOption protocol = connectionOption(ConnectionOption::Protocol);
-    const QCommandLineOption profile(QStringLiteral("profile"),
-                                     QStringLiteral("Open this profile (JSON) in the editor."),
-                                     QStringLiteral("FILE"));
-    const QCommandLineOption hand(QStringLiteral("hand"),
-                                  QStringLiteral("Simulated operator input (docs/cli.md), e.g. "
-                                                 "sine:0.06:0.2 or hand:0.3; default for --port "
-                                                 "sim: a gentle sine."),
-                                  QStringLiteral("SPEC"));
-    const QCommandLineOption repaint(QStringLiteral("repaint-rate"),
-                                     QStringLiteral("Plot repaint rate in Hz (default 30)."),
-                                     QStringLiteral("HZ"));
-    const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
-                                       QStringLiteral("Close the window after SECONDS (for "
-                                                      "scripted screenshots and measurements)."),
-                                       QStringLiteral("SECONDS"));
+    const auto option = [](const QString &name, const QString &help, const QString &value) {
+        return QCommandLineOption(name, help, value);
+    };
+    const QCommandLineOption profile =
+        option(u"profile"_s, u"Open this profile (JSON) in the editor."_s, u"FILE"_s);
+    const QCommandLineOption hand =
+        option(u"hand"_s,
+               u"Simulated operator input (docs/cli.md), e.g. sine:0.06:0.2 or hand:0.3; "
+               "default for --port sim: a gentle sine."_s,
+               u"SPEC"_s);
+    const QCommandLineOption repaint = option(
+        u"repaint-rate"_s,
+        u"Plot repaint rate in Hz (default %1)."_s.arg(PlotPanel::kDefaultRepaintHz), u"HZ"_s);
+    const QCommandLineOption quitAfter =
+        option(u"quit-after"_s,
+               u"Close the window after SECONDS (for scripted screenshots and measurements)."_s,
+               u"SECONDS"_s);
     const QCommandLineOption faults = connectionOption(ConnectionOption::Faults);
     const QCommandLineOption seed = connectionOption(ConnectionOption::Seed);
-    const QCommandLineOption bridge(QStringLiteral("bridge"),
-                                    QStringLiteral("Open the Bridge panel and start the robot "
-                                                   "bridge on ROS 1 or ROS 2, with the profile's "
-                                                   "bridge settings (docs/teleop.md)."),
-                                    QStringLiteral("1|2"));
-    const QCommandLineOption record(QStringLiteral("record"),
-                                    QStringLiteral("Record every sample to FILE.csv (and its "
-                                                   ".json) once connected, as Record does."),
-                                    QStringLiteral("FILE.csv"));
+    const QCommandLineOption bridge =
+        option(u"bridge"_s,
+               u"Open the Bridge panel and start the robot bridge on ROS 1 or ROS 2, with the "
+               "profile's bridge settings (docs/teleop.md)."_s,
+               u"1|2"_s);
+    const QCommandLineOption record =
+        option(u"record"_s,
+               u"Record every sample to FILE.csv (and its .json) once connected, as Record does."_s,
+               u"FILE.csv"_s);
     parser.addOptions(
         {port, baud, protocol, profile, hand, repaint, quitAfter, faults, seed, bridge, record});
     parser.addPositionalArgument(QStringLiteral("recording"),
