@@ -1,7 +1,7 @@
 // fw::DeviceCore on its own seams: no allocation after start (a counting allocator), bus
 // errors held and, 100 in a row, torque off with a LOG; the float build (the ESP32's) tracking
 // the double build (the simulator's). Protocol semantics are covered through the simulator,
-// which runs this same core (tst_simulateddevice).
+// which runs this same core (tst_simulateddevice, tst_simulateddevicelink).
 #include "devicecoretest.h"
 
 #include "firmware/devicecore.h"

@@ -179,7 +179,7 @@ void TestFirmwareHost::closedLoopThroughPtys()
     qInfo("stale %lld ms after the last feedback frame", static_cast<long long>(staleAfterMs));
     // Not before 200 ms (less the host timer's slack). The upper bound only says "it came":
     // on a loaded 2-core CI machine the ptys and two event loops can add a second of delay;
-    // the watchdog's exact timing is tested on simulated time (tst_simulateddevice::watchdog).
+    // the watchdog's exact timing is tested on simulated time (tst_simulateddevicelink::watchdog).
     QVERIFY2(staleAfterMs >= 180 && staleAfterMs < 1500, qPrintable(QString::number(staleAfterMs)));
     const double back = settledTheta(client);
     QVERIFY2(std::abs(back - 0.0396) < 2 * kTick, qPrintable(QString::number(back)));

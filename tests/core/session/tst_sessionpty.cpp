@@ -138,7 +138,7 @@ void TestSessionPty::throughput()
           "RTT last %.2f ms / median %.2f ms / max %.2f ms",
           rate, s.framesPerSecond, s.bytesPerSecond, s.seqDrops, s.totalDecoderDrops(), s.rttLastMs,
           s.rttMedianMs, s.rttMaxMs);
-    // The exact rate is tested on simulated time (tst_simulateddevice); here the point is that
+    // The exact rate is tested on simulated time (tst_simulateddevicelink); here the point is that
     // the pty carries the stream without a loss. The rate is judged over two seconds of host
     // time, loosely: a loaded CI machine delays the simulator, which then catches up in bursts.
     QVERIFY2(averageRate > 0.8 * rate && averageRate < 1.2 * rate,
