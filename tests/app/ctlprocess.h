@@ -1,5 +1,6 @@
 // hatpicctl run as a real process, and the model computed again independently: the parts the
-// hatpicctl tests share (tst_hatpicctl, tst_hatpicctleffects).
+// hatpicctl tests share (tst_hatpicctl, tst_hatpicctlsimulate, tst_hatpicctldevice,
+// tst_hatpicctleffects and others).
 #pragma once
 
 #include "model/params.h"
