@@ -1,5 +1,4 @@
 #include "connection/connectionbar.h"
-#include "sim/simportname.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -11,12 +10,6 @@
 
 namespace hatpic {
 
-namespace {
-
-const QString kSimPort = QString::fromUtf16(kSimPortName);
-
-} // namespace
-
 ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
 {
     m_port = new QComboBox(this);
@@ -27,7 +20,6 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setToolTip(tr("Serial port of the joystick, or the built-in simulated HATPIC.\n"
                           "A path such as /dev/pts/3 can be typed."));
-    m_port->addItem(tr("Simulated HATPIC"), kSimPort);
 
     m_baud = new QComboBox(this);
     m_baud->setObjectName(QStringLiteral("baud"));
@@ -74,6 +66,26 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_refresh->start();
 }
 
+void ConnectionBar::addSource(const QString &label, const QString &name, LinkSourcePtr source)
+{
+    const int at = int(m_sources.size());
+    const bool first = at == 0;
+    m_sources.emplace_back(name, std::move(source));
+    const QSignalBlocker blocker(m_port);
+    m_port->insertItem(at, label, name);
+    if (first)
+        m_port->setCurrentIndex(0); // the first source is the default choice
+}
+
+LinkSourcePtr ConnectionBar::sourceNamed(const QString &name) const
+{
+    for (const auto &[sourceName, source] : m_sources) {
+        if (sourceName == name)
+            return source;
+    }
+    return nullptr;
+}
+
 void ConnectionBar::refreshPorts()
 {
     QStringList found;
@@ -82,21 +94,22 @@ void ConnectionBar::refreshPorts()
         found << info.systemLocation();
     found.sort();
 
-    // Keep the current choice (also a typed path) and the simulator; swap the rest.
+    // Keep the current choice (also a typed path) and the sources; swap the rest.
     const QString current = port();
     const QString typed = m_port->currentText();
+    const int fixed = int(m_sources.size());
     QStringList listed;
-    for (int i = 1; i < m_port->count(); ++i)
+    for (int i = fixed; i < m_port->count(); ++i)
         listed << m_port->itemData(i).toString();
     QStringList wanted = found;
-    if (current != kSimPort && !current.isEmpty() && !wanted.contains(current))
+    if (!sourceNamed(current) && !current.isEmpty() && !wanted.contains(current))
         wanted.prepend(current);
     if (listed == wanted)
         return;
 
     const QSignalBlocker blocker(m_port);
-    while (m_port->count() > 1)
-        m_port->removeItem(1);
+    while (m_port->count() > fixed)
+        m_port->removeItem(fixed);
     for (const QString &path : std::as_const(wanted)) {
         QString label = path;
         for (const QSerialPortInfo &info : infos) {
@@ -126,7 +139,7 @@ QString ConnectionBar::port() const
     const int index = m_port->currentIndex();
     if (index >= 0 && m_port->itemText(index) == text)
         return m_port->itemData(index).toString();
-    // A typed path, or a typed "sim".
+    // A typed path, or a source's typed name.
     return text;
 }
 
@@ -152,6 +165,7 @@ ConnectOptions ConnectionBar::options() const
     options.port = port();
     options.baud = baud();
     options.protocol = protocol();
+    options.link = sourceNamed(options.port);
     return options;
 }
 

@@ -1,10 +1,15 @@
-// The row that opens a device: port chooser ("Simulated HATPIC" first, then the serial ports,
-// refreshed as devices come and go; a pty path can be typed), baud, protocol, connect button.
+// The row that opens a device: port chooser (the link sources the window adds — the simulated
+// joystick — first, then the serial ports, refreshed as devices come and go; a pty path can be
+// typed), baud, protocol, connect button.
 #pragma once
 
+#include "link/linksource.h"
 #include "session/sessiontypes.h"
 
 #include <QWidget>
+
+#include <utility>
+#include <vector>
 
 class QComboBox;
 class QPushButton;
@@ -20,7 +25,14 @@ public:
 
     explicit ConnectionBar(QWidget *parent = nullptr);
 
-    //! The options the controls describe (port "sim" for the simulator).
+    //! Lists `source` before the serial ports as `label`; choosing it (or typing `name`)
+    //! connects through it, with `name` as the port the session words and records.
+    void addSource(const QString &label, const QString &name, LinkSourcePtr source);
+    //! The source listed as `name`, else null (a serial port's path).
+    LinkSourcePtr sourceNamed(const QString &name) const;
+
+    //! The options the controls describe: a listed source's name and link, or a serial port's
+    //! path and no link.
     ConnectOptions options() const;
     //! Selects port (adding it when the list does not have it), baud and protocol.
     void setOptions(const QString &port, qint32 baud, ProtocolChoice protocol);
@@ -35,7 +47,7 @@ public:
 
     //! Re-reads the serial ports now (the timer does it every kRefreshMs while disconnected).
     void refreshPorts();
-    QStringList listedPorts() const; //!< "sim" first, then device paths
+    QStringList listedPorts() const; //!< the sources' names first, then device paths
 
     //! What the button does: connect with options(), or disconnect.
     void toggleConnection();
@@ -54,6 +66,7 @@ private:
     QPushButton *m_button = nullptr;
     QTimer *m_refresh = nullptr;
     SessionState m_state = SessionState::Disconnected;
+    std::vector<std::pair<QString, LinkSourcePtr>> m_sources; //!< (name, source), as listed
 };
 
 } // namespace hatpic

@@ -1,7 +1,6 @@
 #include "connection/linkbanner.h"
 
 #include "session/sessionwording.h"
-#include "sim/simportname.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -75,7 +74,8 @@ QString lostSentence(const StateDetail &d, const QString &where)
 
 } // namespace
 
-void LinkBanner::setState(SessionState state, const StateDetail &detail, const QString &port)
+void LinkBanner::setState(SessionState state, const StateDetail &detail, const QString &port,
+                          bool simulated)
 {
     const QString where = port.isEmpty() ? tr("the device") : port;
     // The session's full account (with the system's text, when there is one) is the details.
@@ -89,7 +89,7 @@ void LinkBanner::setState(SessionState state, const StateDetail &detail, const Q
         break;
     case SessionState::Disconnected:
         if (detail.is<state::None>())
-            show(startHint(port), QString(), "#1565c0"); // how to start, not an alarm
+            show(startHint(port, simulated), QString(), "#1565c0"); // how to start, not an alarm
         else if (detail.is<state::OpenFailed>())
             show(tr("Could not open %1: it may be missing, in use by another program, or not "
                     "open to your user.")
@@ -106,10 +106,10 @@ void LinkBanner::setState(SessionState state, const StateDetail &detail, const Q
         break; // keep a "lost" banner up while reconnecting
     }
 }
-QString LinkBanner::startHint(const QString &port)
+QString LinkBanner::startHint(const QString &port, bool simulated)
 {
     // Issue 27: the window opened disconnected with nothing saying how to begin.
-    if (port.isEmpty() || port == QStringView(kSimPortName))
+    if (port.isEmpty() || simulated)
         return tr("Not connected. Press Connect (Ctrl+K) to try the simulated knob.");
     return tr("Not connected. Press Connect (Ctrl+K) to open %1, or choose the simulated "
               "joystick in the port list to try the simulated knob.")

@@ -19,11 +19,13 @@ class LinkBanner : public QFrame
 public:
     explicit LinkBanner(QWidget *parent = nullptr);
 
-    //! `port` names the port in the message; `detail` is the session's structured reason.
-    void setState(SessionState state, const StateDetail &detail, const QString &port);
+    //! `port` names the port in the message; `detail` is the session's structured reason;
+    //! `simulated`: the port is a simulated joystick's (ConnectOptions::link's simulated()).
+    void setState(SessionState state, const StateDetail &detail, const QString &port,
+                  bool simulated = false);
     QString text() const; //!< the sentence shown
-    //! While disconnected: how to start, on `port` (the simulated joystick's name: try it).
-    static QString startHint(const QString &port);
+    //! While disconnected: how to start, on `port` (a simulated one: try it).
+    static QString startHint(const QString &port, bool simulated);
     QString detailsText() const; //!< the system's and the session's own text; may be empty
 
 private:

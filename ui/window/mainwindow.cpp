@@ -50,12 +50,6 @@ static void initPlotsResources()
 
 namespace hatpic {
 
-namespace {
-
-const QString kSimPort = QString::fromUtf16(kSimPortName);
-
-} // namespace
-
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
@@ -128,6 +122,7 @@ void MainWindow::createParts()
     m_profiles = named(new ProfileController(m_editor, this, this), "profileController");
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
     m_simulator = std::make_shared<SimulatedJoystick>();
+    m_connection->addSource(tr("Simulated HATPIC"), QString::fromUtf16(kSimPortName), m_simulator);
     for (QWidget *readout :
          {static_cast<QWidget *>(m_simPanel->statusLabel()), static_cast<QWidget *>(m_stats)})
         m_statusLine->readouts()->layout()->addWidget(readout);
@@ -265,9 +260,11 @@ void MainWindow::connectTo(const ConnectOptions &options)
 {
     ConnectOptions opts = options;
     opts.detectForMs = std::max(opts.detectForMs, ConnectOptions::kDetectBootMs);
-    if (opts.port == kSimPort) {
+    if (!opts.link)
+        opts.link = m_connection->sourceNamed(opts.port); // a listed source, given by its name
+    if (const auto given = std::dynamic_pointer_cast<SimulatedJoystick>(opts.link)) {
         // The window's simulator, configured as a command line's (its faults and seed) asked.
-        if (const auto given = std::dynamic_pointer_cast<SimulatedJoystick>(opts.link))
+        if (given != m_simulator)
             m_simulator->setConfig(given->config());
         m_simulator->answerIn(opts.protocol);
         m_simulator->setHand(m_simPanel->handToStartWith(m_simulator->hand()));
@@ -275,6 +272,7 @@ void MainWindow::connectTo(const ConnectOptions &options)
     }
     m_paramLink->prepare(opts);
     m_port = opts.port;
+    m_portSimulated = opts.link && opts.link->simulated();
     m_connection->setOptions(opts.port, opts.baud, opts.protocol);
     m_client->connectDevice(opts);
 }
@@ -290,7 +288,11 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
     m_connection->setState(state);
     m_linkStatus->setState(state);
     // Before the first connection, the port chosen in the bar (the banner says how to start).
-    m_banner->setState(state, event, m_port.isEmpty() ? m_connection->port() : m_port);
+    const ConnectOptions chosen = m_connection->options();
+    if (m_port.isEmpty())
+        m_banner->setState(state, event, chosen.port, chosen.link && chosen.link->simulated());
+    else
+        m_banner->setState(state, event, m_port, m_portSimulated);
     m_recording->setCanRecord(state == SessionState::Connected);
     if (state == SessionState::Disconnected) {
         m_stats->clear();
@@ -390,7 +392,7 @@ void MainWindow::readSettings()
 {
     QSettings settings;
     m_connection->setOptions(
-        settings.value(QStringLiteral("connection/port"), kSimPort).toString(),
+        settings.value(QStringLiteral("connection/port")).toString(), // none: the first source
         settings.value(QStringLiteral("connection/baud"), 0).toInt(),
         static_cast<ProtocolChoice>(
             settings.value(QStringLiteral("connection/protocol"), int(ProtocolChoice::Auto))

@@ -118,8 +118,8 @@ private:
     StiffnessView *m_stiffness = nullptr;
     ProfileController *m_profiles = nullptr;
     SimulatorPanel *m_simPanel = nullptr;
-    //! The simulated joystick the window connects through for the port "sim"; its hand is the
-    //! simulator panel's.
+    //! The simulated joystick the window connects through (the connection bar's first source);
+    //! its hand is the simulator panel's.
     std::shared_ptr<SimulatedJoystick> m_simulator;
 
     WindowActions *m_actions = nullptr;
@@ -127,10 +127,11 @@ private:
     WindowDocks m_docks;
     ThemeController *m_theme = nullptr;
 
-    QString m_port;          //!< port of the current or last connection
-    QByteArray m_firstState; //!< the docks as at a first launch (View → Reset layout)
-    bool m_shown = false;    //!< shown once: the first window's frame fitted
-    QSize m_firstSize;       //!< a first launch's size (nothing restored), else empty
+    QString m_port;               //!< port of the current or last connection
+    bool m_portSimulated = false; //!< that connection's link is a simulator
+    QByteArray m_firstState;      //!< the docks as at a first launch (View → Reset layout)
+    bool m_shown = false;         //!< shown once: the first window's frame fitted
+    QSize m_firstSize;            //!< a first launch's size (nothing restored), else empty
 };
 
 } // namespace hatpic

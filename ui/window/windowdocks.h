@@ -33,7 +33,7 @@ struct WindowDockParts
     ParameterEditor *editor = nullptr;
     StiffnessView *stiffness = nullptr;
     SimulatorPanel *simPanel = nullptr;
-    SimulatedJoystick *simulator = nullptr; //!< the one the window connects through for "sim"
+    SimulatedJoystick *simulator = nullptr; //!< the one the window connects through
     QMenu *view = nullptr;
 };
 

@@ -1,5 +1,7 @@
-// ConnectionBar: the simulator first, options from the controls, typed paths, state.
+// ConnectionBar: the sources added (the simulator) first, options from the controls with the
+// chosen source's link, typed paths and names, state.
 #include "connection/connectionbar.h"
+#include "sim/simulatedjoystick.h"
 
 #include <QComboBox>
 #include <QLineEdit>
@@ -9,11 +11,24 @@
 
 using namespace hatpic;
 
+namespace {
+
+// A bar as the window makes it: the simulated joystick added as its first source, "sim".
+struct Bar
+{
+    std::shared_ptr<SimulatedJoystick> simulator = std::make_shared<SimulatedJoystick>();
+    ConnectionBar bar;
+    Bar() { bar.addSource(QStringLiteral("Simulated HATPIC"), QStringLiteral("sim"), simulator); }
+};
+
+} // namespace
+
 class TestConnectionBar : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
     void simulatorIsFirst();
+    void sourcesComeBeforeThePorts();
     void optionsFromControls_data();
     void optionsFromControls();
     void typedPathIsUsed();
@@ -24,13 +39,35 @@ private Q_SLOTS:
 
 void TestConnectionBar::simulatorIsFirst()
 {
-    ConnectionBar bar;
+    Bar b;
+    ConnectionBar &bar = b.bar;
     QVERIFY(!bar.listedPorts().isEmpty());
     QCOMPARE(bar.listedPorts().constFirst(), QStringLiteral("sim"));
     QCOMPARE(bar.portBox()->itemText(0), QStringLiteral("Simulated HATPIC"));
     QCOMPARE(bar.port(), QStringLiteral("sim"));
     QCOMPARE(bar.baud(), 0);
     QCOMPARE(bar.protocol(), ProtocolChoice::Auto);
+    QCOMPARE(bar.options().link, std::static_pointer_cast<LinkSource>(b.simulator));
+}
+
+void TestConnectionBar::sourcesComeBeforeThePorts()
+{
+    Bar b;
+    ConnectionBar &bar = b.bar;
+    bar.setOptions(QStringLiteral("/dev/ttyGONE1"), 0, ProtocolChoice::Auto);
+    const auto second = std::make_shared<SimulatedJoystick>();
+    bar.addSource(QStringLiteral("Second knob"), QStringLiteral("sim2"), second);
+    bar.refreshPorts();
+    QCOMPARE(bar.listedPorts().mid(0, 3),
+             (QStringList{QStringLiteral("sim"), QStringLiteral("sim2"),
+                          QStringLiteral("/dev/ttyGONE1")}));
+    QCOMPARE(bar.port(), QStringLiteral("/dev/ttyGONE1")); // adding one keeps the choice
+    QVERIFY(!bar.options().link);                          // a serial port: no link
+    bar.setOptions(QStringLiteral("sim2"), 0, ProtocolChoice::Auto);
+    QCOMPARE(bar.options().link, std::static_pointer_cast<LinkSource>(second));
+    QCOMPARE(bar.sourceNamed(QStringLiteral("sim")),
+             std::static_pointer_cast<LinkSource>(b.simulator));
+    QVERIFY(!bar.sourceNamed(QStringLiteral("/dev/ttyGONE1")));
 }
 
 void TestConnectionBar::optionsFromControls_data()
@@ -51,10 +88,12 @@ void TestConnectionBar::optionsFromControls()
     QFETCH(QString, port);
     QFETCH(int, baud);
     QFETCH(ProtocolChoice, protocol);
-    ConnectionBar bar;
+    Bar b;
+    ConnectionBar &bar = b.bar;
     bar.setOptions(port, baud, protocol);
     const ConnectOptions options = bar.options();
     QCOMPARE(options.port, port);
+    QCOMPARE(bool(options.link), port == QStringLiteral("sim")); // the source's link, or none
     QCOMPARE(options.baud, baud);
     QCOMPARE(options.protocol, protocol);
     QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
@@ -65,11 +104,14 @@ void TestConnectionBar::optionsFromControls()
 
 void TestConnectionBar::typedPathIsUsed()
 {
-    ConnectionBar bar;
+    Bar b;
+    ConnectionBar &bar = b.bar;
     bar.portBox()->setEditText(QStringLiteral("/tmp/my-sim-link"));
     QCOMPARE(bar.port(), QStringLiteral("/tmp/my-sim-link"));
-    bar.portBox()->setEditText(QStringLiteral("sim"));
+    QVERIFY(!bar.options().link);
+    bar.portBox()->setEditText(QStringLiteral("sim")); // a source's name, typed
     QCOMPARE(bar.port(), QStringLiteral("sim"));
+    QCOMPARE(bar.options().link, std::static_pointer_cast<LinkSource>(b.simulator));
 }
 
 void TestConnectionBar::buttonFollowsState_data()
@@ -103,7 +145,8 @@ void TestConnectionBar::buttonFollowsState()
 
 void TestConnectionBar::refreshKeepsChoice()
 {
-    ConnectionBar bar;
+    Bar b;
+    ConnectionBar &bar = b.bar;
     bar.setOptions(QStringLiteral("/dev/ttyGONE0"), 0, ProtocolChoice::Auto);
     bar.refreshPorts(); // the port is not on the system, but it is the user's choice
     QCOMPARE(bar.port(), QStringLiteral("/dev/ttyGONE0"));

@@ -2,7 +2,6 @@
 #include "connection/linkbanner.h"
 #include "connection/linkstatswidget.h"
 #include "connection/linkstatuswidget.h"
-#include "sim/simportname.h"
 
 #include <QLabel>
 #include <QTest>
@@ -115,9 +114,15 @@ void TestLinkWidgets::banner_data()
 
 void TestLinkWidgets::startHintForTheSimulator()
 {
-    QCOMPARE(LinkBanner::startHint(QString::fromUtf16(kSimPortName)),
-             QStringLiteral("Not connected. Press Connect (Ctrl+K) to try the simulated knob."));
-    QVERIFY(LinkBanner::startHint(QStringLiteral("/dev/ttyACM0")).contains(u"simulated knob"));
+    // Told by the link, not by the name: a simulated source is tried, whatever it is called.
+    for (const QString &name : {QStringLiteral("sim"), QStringLiteral("my-knob")})
+        QCOMPARE(
+            LinkBanner::startHint(name, true),
+            QStringLiteral("Not connected. Press Connect (Ctrl+K) to try the simulated knob."));
+    const QString serial = LinkBanner::startHint(QStringLiteral("/dev/ttyACM0"), false);
+    QVERIFY(serial.contains(u"to open /dev/ttyACM0"));
+    QVERIFY(serial.contains(u"simulated knob"));
+    QVERIFY(LinkBanner::startHint(QStringLiteral("sim"), false).contains(u"to open sim"));
 }
 
 void TestLinkWidgets::banner()
