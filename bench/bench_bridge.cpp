@@ -30,7 +30,9 @@
 //     --windows K: the knob → topic window and the wrench steps K times, one row each, and the
 //     worst of them (performance.md § The loop with the CPU busy). The bridge and hatpic-sim
 //     run as they start by themselves: real-time where allowed.
-// Prints one plain table; exit 1 when a program does not start or nothing arrives.
+// Prints one plain table; exit 1 when a program does not start or nothing arrives. The peer's
+// probes, round trips, CPU windows and rows are in benchpeer.h.
+#include "benchpeer.h"
 #include "ros/node.h"
 
 #ifdef HATPIC_BENCH_ROS1
@@ -45,31 +47,22 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 using namespace hatpic;
+using namespace hatpic::bench;
 using namespace std::chrono_literals;
-using Clock = std::chrono::steady_clock;
 
 namespace {
-
-constexpr double kForce = 0.5;         //!< wrench step: force.z alternates ±kForce [N]
-constexpr double kGain = 0.154;        //!< hatpic-bridge's default gain [N·m/N]
-constexpr double kTauTolerance = 1e-6; //!< τ_ext travels as float32 [N·m]
-constexpr auto kStepPeriod = 100ms;    //!< a new wrench every 100 ms
-constexpr auto kEchoTimeout = 1000ms;  //!< a step not seen by then counts as lost
 
 struct Options
 {
@@ -133,32 +126,6 @@ std::optional<Options> parseOptions(int argc, char *argv[])
     return o;
 }
 
-double wallSeconds()
-{
-    return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-
-double msBetween(Clock::time_point from, Clock::time_point to)
-{
-    return std::chrono::duration<double, std::milli>(to - from).count();
-}
-
-//! utime + stime of a process [s]; −1 when it cannot be read.
-double cpuSeconds(qint64 pid)
-{
-    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
-    if (!stat.open(QIODevice::ReadOnly))
-        return -1;
-    const QByteArray text = stat.readAll();
-    // Fields after the command name in parentheses (which may hold spaces): state is field 3,
-    // utime field 14, stime field 15 (proc(5)).
-    const QList<QByteArray> fields = text.mid(text.lastIndexOf(')') + 2).split(' ');
-    if (fields.size() < 13)
-        return -1;
-    return double(fields[11].toLongLong() + fields[12].toLongLong()) / double(sysconf(_SC_CLK_TCK));
-}
-
 QByteArray loadAverage()
 {
     QFile file(QStringLiteral("/proc/loadavg"));
@@ -166,23 +133,6 @@ QByteArray loadAverage()
         return "?";
     const QList<QByteArray> parts = file.readAll().split(' ');
     return parts.size() >= 3 ? parts[0] + ' ' + parts[1] + ' ' + parts[2] : QByteArray("?");
-}
-
-//! Nearest-rank percentile of sorted values.
-double percentile(const std::vector<double> &sorted, double p)
-{
-    if (sorted.empty())
-        return NAN;
-    const auto rank = std::size_t(std::ceil(p * double(sorted.size())));
-    return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
-}
-
-void printRow(const char *what, std::vector<double> values, const char *note = "")
-{
-    std::sort(values.begin(), values.end());
-    std::printf("%-40s %7zu %8.2f %8.2f %8.2f %8.2f  %s\n", what, values.size(),
-                percentile(values, 0.50), percentile(values, 0.95), percentile(values, 0.99),
-                values.empty() ? NAN : values.back(), note);
 }
 
 QByteArray tail(const QString &path)
@@ -236,142 +186,6 @@ public:
 private:
     QProcess m_process;
     QString m_log;
-};
-
-// The knob → topic figure: each JointState's arrival minus its stamp, while recording.
-class KnobProbe
-{
-public:
-    void onMessage(const ros::Message &message)
-    {
-        const double now = wallSeconds();
-        const auto *joints = std::get_if<ros::JointState>(&message);
-        if (!joints)
-            return;
-        m_seen.fetch_add(1);
-        if (!m_recording.load())
-            return;
-        const std::lock_guard lock(m_mutex);
-        m_latencies.push_back((now - ros::seconds(joints->header.stamp)) * 1e3);
-    }
-    std::uint64_t seen() const { return m_seen.load(); }
-    void record(bool on, std::size_t expected = 0)
-    {
-        const std::lock_guard lock(m_mutex);
-        if (on) {
-            m_latencies.clear();
-            m_latencies.reserve(expected);
-        }
-        m_recording.store(on);
-    }
-    std::vector<double> latencies() const
-    {
-        const std::lock_guard lock(m_mutex);
-        return m_latencies;
-    }
-
-private:
-    std::atomic<std::uint64_t> m_seen{0};
-    std::atomic<bool> m_recording{false};
-    mutable std::mutex m_mutex;
-    std::vector<double> m_latencies; //!< [ms]
-};
-
-// The wrench round trip: waits for the first /hatpic/feedback that shows an expected τ_ext.
-class FeedbackProbe
-{
-public:
-    void onMessage(const ros::Message &message)
-    {
-        const auto now = Clock::now();
-        const auto *wrench = std::get_if<ros::WrenchStamped>(&message);
-        if (!wrench)
-            return;
-        const std::lock_guard lock(m_mutex);
-        if (!m_seen && std::abs(wrench->wrench.torque.z - m_expected) < kTauTolerance) {
-            m_seen = now;
-            m_changed.notify_all();
-        }
-    }
-    void expect(double tau)
-    {
-        const std::lock_guard lock(m_mutex);
-        m_expected = tau;
-        m_seen.reset();
-    }
-    //! When the expected τ_ext was first seen, waiting until `deadline`.
-    std::optional<Clock::time_point> waitUntil(Clock::time_point deadline)
-    {
-        std::unique_lock lock(m_mutex);
-        m_changed.wait_until(lock, deadline, [this] { return m_seen.has_value(); });
-        return m_seen;
-    }
-
-private:
-    std::mutex m_mutex;
-    std::condition_variable m_changed;
-    double m_expected = NAN;
-    std::optional<Clock::time_point> m_seen;
-};
-
-ros::WrenchStamped wrenchOf(double force)
-{
-    ros::WrenchStamped w;
-    w.header.stamp = ros::timeFromSeconds(wallSeconds());
-    w.header.frameId = "bench";
-    w.wrench.force.z = force;
-    return w;
-}
-
-struct RoundTrips
-{
-    std::vector<double> ms; //!< publish → first /hatpic/feedback with the new τ_ext
-    int lost = 0;           //!< steps not seen within kEchoTimeout
-    bool warmedUp = false;
-};
-
-// Publishes kForce/2, a value no step uses, until the device's τ_ext shows it (the publisher
-// is matched and the path works), then `steps` steps between ±kForce, kStepPeriod apart.
-RoundTrips measureRoundTrips(ros::Publisher &publisher, FeedbackProbe &feedback, int steps)
-{
-    RoundTrips r;
-    feedback.expect(kGain * kForce / 2);
-    const auto warmUpEnd = Clock::now() + 20s;
-    while (Clock::now() < warmUpEnd && !r.warmedUp) {
-        publisher.publish(wrenchOf(kForce / 2));
-        r.warmedUp = feedback.waitUntil(Clock::now() + kStepPeriod).has_value();
-    }
-    if (!r.warmedUp)
-        return r;
-    std::this_thread::sleep_for(kStepPeriod);
-    r.ms.reserve(std::size_t(steps));
-    auto next = Clock::now();
-    for (int i = 0; i < steps; ++i) {
-        const double force = i % 2 == 0 ? -kForce : kForce;
-        feedback.expect(kGain * force);
-        std::this_thread::sleep_until(next);
-        const auto sent = Clock::now();
-        publisher.publish(wrenchOf(force));
-        if (const auto seen = feedback.waitUntil(sent + kEchoTimeout))
-            r.ms.push_back(msBetween(sent, *seen));
-        else
-            ++r.lost;
-        next = std::max(sent + kStepPeriod, Clock::now());
-    }
-    return r;
-}
-
-struct CpuWindow
-{
-    qint64 pid;
-    double cpu0;
-    Clock::time_point t0 = Clock::now();
-    explicit CpuWindow(qint64 p) : pid(p), cpu0(cpuSeconds(p)) {}
-    //! % of one core since construction.
-    double percent() const
-    {
-        return (cpuSeconds(pid) - cpu0) / (msBetween(t0, Clock::now()) * 1e-3) * 100;
-    }
 };
 
 void confineToLoopback(int domain)
