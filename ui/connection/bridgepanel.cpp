@@ -1,4 +1,5 @@
 #include "connection/bridgepanel.h"
+#include "connection/bridgepanelform.h"
 
 #ifdef HATPIC_HAVE_BRIDGE
 #include "bridge/bridge.h"
@@ -29,77 +30,16 @@ namespace hatpic {
 using namespace Qt::StringLiterals;
 using bridge::BridgeSettings;
 using bridge::Component;
+using bridgeform::kNeeds;
+using bridgeform::kTopicFields;
+using bridgeform::spin;
+using bridgeform::taken;
 
 namespace {
-
-// The topic fields, in the order of the form.
-struct TopicField
-{
-    const char *label; //!< translated
-    const char16_t *name;
-    std::string bridge::Topics::*topic;
-};
-constexpr TopicField kTopicFields[] = {
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Joint states (out)"), u"bridge_topic_joint_states",
-     &bridge::Topics::jointStates},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Twist (out)"), u"bridge_topic_twist",
-     &bridge::Topics::twist},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Twist, unstamped (out)"),
-     u"bridge_topic_twist_unstamped", &bridge::Topics::twistUnstamped},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Pose (out)"), u"bridge_topic_pose",
-     &bridge::Topics::pose},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Feedback (out)"), u"bridge_topic_feedback",
-     &bridge::Topics::feedback},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Wrench (in)"), u"bridge_topic_wrench",
-     &bridge::Topics::wrench},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Wrench, unstamped (in)"),
-     u"bridge_topic_wrench_unstamped", &bridge::Topics::wrenchUnstamped},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Enable, dead man (in)"), u"bridge_topic_enable",
-     &bridge::Topics::enable},
-    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Joint jog, MoveIt Servo (out)"),
-     u"bridge_topic_joint_jog", &bridge::Topics::jointJog},
-};
-static_assert(std::size(kTopicFields) == 9);
 
 //! Wrenches in a row whose chosen component was 0 while another was not, before the panel
 //! says so (at 50 Hz, a fifth of a second).
 constexpr std::uint64_t kOtherComponentStreak = 10;
-
-// What the bridge needs to do its work, a line each (issue 21: the panel once said nothing of
-// it). A new way to get a robot's wrench (a simulated robot) is one more line.
-constexpr const char *kNeeds[] = {
-    QT_TRANSLATE_NOOP("hatpic::BridgePanel",
-                      "ROS 2 on the robot's network, in the domain below (the bridge speaks DDS "
-                      "itself: no ROS installation needed here), or a ROS 1 master "
-                      "(ROS_MASTER_URI)."),
-    QT_TRANSLATE_NOOP("hatpic::BridgePanel",
-                      "A robot, or any ROS node, publishing its wrench on the Wrench topic: "
-                      "the knob's force."),
-    QT_TRANSLATE_NOOP("hatpic::BridgePanel",
-                      "No robot? hatpic-robot-sim is a simulated one, a wall to push against; "
-                      "scripts/teleop-demo starts it and this tuner with the bridge running "
-                      "(docs/teleop.md)."),
-};
-
-QDoubleSpinBox *spin(QWidget *parent, const QString &name, double low, double high, int decimals,
-                     const QString &suffix)
-{
-    auto *box = new QDoubleSpinBox(parent);
-    box->setObjectName(name);
-    box->setRange(low, high);
-    box->setDecimals(decimals);
-    box->setSuffix(suffix);
-    box->setKeyboardTracking(false);
-    return box;
-}
-
-// The box's value, or `original` when the box still shows it (rounded to its decimals): an
-// edit elsewhere in the panel keeps every digit the profile had.
-double taken(const QDoubleSpinBox *box, double original)
-{
-    const double shown = QString::number(original, 'f', box->decimals()).toDouble();
-    return box->value() == shown ? original : box->value();
-}
 
 #ifdef HATPIC_HAVE_BRIDGE
 QString number(double value)

@@ -8,10 +8,11 @@
 // bridge::panelDefaults() (force.x, the project's own robot). Without HATPIC_BUILD_BRIDGE the
 // panel only says that the bridge is not built.
 //
-// It first says what the bridge needs (a line each in kNeeds: add one when a new way to get a
-// wrench exists). Its sections — ROS (needs, enable, status, ROS version, domain or master,
-// rate), the wrench's feedback, the topics — stand side by side as far as the panel's width
-// allows, else under each other, and scroll: a new section is one more entry in m_sections.
+// It first says what the bridge needs (a line each in kNeeds, bridgepanelform.h: add one when a
+// new way to get a wrench exists). Its sections — ROS (needs, enable, status, ROS version,
+// domain or master, rate), the wrench's feedback, the topics — stand side by side as far as the
+// panel's width allows, else under each other, and scroll: a new section is one more entry in
+// m_sections.
 // Two show the robot side as measured (RobotSideView) and the energy at the knob's port
 // (PassivityView); they come right after ROS, and a header above the scroll area says the
 // loop's state at a glance. It scrolls on its own, so it never sets the dock's size.
