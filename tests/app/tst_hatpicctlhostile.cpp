@@ -3,6 +3,7 @@
 // HELLO, a silent legacy port.
 #include "scripteddevice.h"
 #include "telemetry/recordingreader.h"
+#include "testfiles.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -22,6 +23,8 @@
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
+using hatpic::test::readAll;
+using hatpic::test::writeFile;
 
 namespace {
 
@@ -60,18 +63,6 @@ Run runCtl(const QStringList &arguments, qint64 fileSizeLimit = 0)
 QString describe(const Run &run)
 {
     return u"exit "_s + QString::number(run.code) + u"\nstderr: "_s + QString::fromUtf8(run.err);
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-bool writeFile(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
 //! The rows of a recording's CSV on disk, and whether it ends in a whole row.

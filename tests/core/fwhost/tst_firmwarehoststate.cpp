@@ -4,6 +4,7 @@
 // file-size limit; start-up warns about a folder SAVE_PARAMS cannot write.
 #include "fwhosttest.h"
 #include "profile/profile.h"
+#include "testfiles.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -25,12 +26,6 @@ QString fwHost()
 QString servoSim()
 {
     return QStringLiteral(HATPIC_SERVO_SIM_PATH);
-}
-
-QByteArray contents(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 //! hatpicctl ARGUMENTS; its exit code, stderr on failure in `error`.
@@ -76,7 +71,7 @@ void TestFirmwareHostState::profileKeepsWhatSaveDoesNotOwn()
     knob.host.v_max = 0.5;
     knob.bridge.topics.wrench = "/crane/wrench";
     QCOMPARE(writeProfile(knob, file), QString());
-    const QByteArray before = contents(file);
+    const QByteArray before = readAll(file);
 
     PtyProgram servo(servoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
@@ -87,7 +82,7 @@ void TestFirmwareHostState::profileKeepsWhatSaveDoesNotOwn()
     QString error;
     // A save that changes nothing leaves the profile as it was, to the byte.
     QVERIFY2(hatpicctl({u"save"_s, u"--port"_s, host.path()}, error) == 0, qPrintable(error));
-    QCOMPARE(contents(file), before);
+    QCOMPARE(readAll(file), before);
 
     // A changed parameter changes that parameter only.
     QVERIFY2(hatpicctl({u"set"_s, u"--port"_s, host.path(), u"--set"_s, u"K_max=0.35"_s}, error) ==

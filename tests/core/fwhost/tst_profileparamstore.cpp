@@ -3,6 +3,7 @@
 // left alone; a failure says why, with the system's own words.
 #include "fwhost/profileparamstore.h"
 #include "profile/profile.h"
+#include "testfiles.h"
 
 #include <QDir>
 #include <QFile>
@@ -11,6 +12,7 @@
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
+using hatpic::test::readAll;
 
 namespace {
 
@@ -40,12 +42,6 @@ fw::StoredSettings asDevice(const Profile &p)
 {
     return {roundedToFloat(p.device), roundedForWire(p.effects, kTauLimit),
             roundedForWire(p.passivity)};
-}
-
-QByteArray contents(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 } // namespace
@@ -89,13 +85,13 @@ void TestProfileParamStore::unchangedSaveLeavesTheProfileAsItWas()
     QTemporaryDir dir;
     const QString path = dir.filePath(u"knob.json"_s);
     QCOMPARE(writeProfile(userProfile(), path), QString());
-    const QByteArray before = contents(path);
+    const QByteArray before = readAll(path);
     ProfileParamStore store(path, u"hatpic-fw-host"_s, kTauLimit);
     fw::StoredSettings loaded;
     QVERIFY(store.load(loaded));
     // The device holds f32: 0.15 is 0.15000000596… there, and stays 0.15 in the file.
     QVERIFY(store.save(asDevice(userProfile())));
-    QCOMPARE(contents(path), before);
+    QCOMPARE(readAll(path), before);
 }
 
 void TestProfileParamStore::saveChangesOnlyTheDeviceAndEffects()
@@ -158,7 +154,7 @@ void TestProfileParamStore::fileItCannotRewriteWholeIsLeftAlone()
     const QString failure = QString::fromUtf8(store.failure());
     QVERIFY2(failure.startsWith(u"not overwriting " + path) && failure.contains(says),
              qPrintable(failure));
-    QCOMPARE(contents(path), text);
+    QCOMPARE(readAll(path), text);
 }
 
 void TestProfileParamStore::failureSaysWhy()
@@ -198,14 +194,14 @@ void TestProfileParamStore::savedNumbersAreTheFloatsShortestDecimals()
     settings.params.K_max = double(0.45f); // 0.44999998807907104
     settings.effects.detent_range = double(1.1f);
     QVERIFY(store.save(settings));
-    const QByteArray text = contents(path);
+    const QByteArray text = readAll(path);
     QVERIFY2(text.contains("\"K_max\": 0.45,") && text.contains("\"detent_range\": 1.1"),
              text.constData());
     QVERIFY2(!text.contains("0.449999") && !text.contains("1.100000"), text.constData());
     // And a new file likewise.
     const QString fresh = dir.filePath(u"new.json"_s);
     QVERIFY(ProfileParamStore(fresh, u"hatpic-sim"_s, kTauLimit).save(settings));
-    QVERIFY2(contents(fresh).contains("\"K_max\": 0.45,"), contents(fresh).constData());
+    QVERIFY2(readAll(fresh).contains("\"K_max\": 0.45,"), readAll(fresh).constData());
 }
 
 void TestProfileParamStore::effectsAboveTheFilesTauLimitAreSaved()
@@ -246,7 +242,7 @@ void TestProfileParamStore::saveThatWouldNotReadBackIsRefused()
     profile.notes = QString(kMaxProfileBytes - 1 - base, u'n');
     QCOMPARE(serializeProfile(profile).size(), kMaxProfileBytes - 1);
     QCOMPARE(writeProfile(profile, path), QString());
-    const QByteArray before = contents(path);
+    const QByteArray before = readAll(path);
 
     ProfileParamStore store(path, u"hatpic-sim"_s, kTauLimit);
     fw::StoredSettings settings = asDevice(profile);
@@ -256,7 +252,7 @@ void TestProfileParamStore::saveThatWouldNotReadBackIsRefused()
     QVERIFY2(failure.contains(path) && failure.contains(u"1048577 bytes"_s) &&
                  failure.contains(u"1 MiB"_s),
              qPrintable(failure));
-    QCOMPARE(contents(path), before);
+    QCOMPARE(readAll(path), before);
     fw::StoredSettings loaded;
     QVERIFY2(store.load(loaded), qPrintable(store.warning()));
     QCOMPARE(loaded.params.K_max, 0.3);

@@ -1,8 +1,9 @@
-// What a profile written and read back must give, to the bit, and a file's bytes: the profile
-// tests share them (tst_profile, tst_profilerules, tst_profilepresets).
+// What a profile written and read back must give, to the bit (a file's bytes: testfiles.h): the
+// profile tests share them (tst_profile, tst_profilerules, tst_profilepresets).
 #pragma once
 
 #include "profile/profile.h"
+#include "testfiles.h"
 
 #include <QByteArray>
 #include <QFile>
@@ -37,14 +38,6 @@ inline bool identical(const Profile &read, const Profile &written)
            read.host.ref_deadzone == written.host.ref_deadzone &&
            readsBackAs(read.host.v_max, written.host.v_max) &&
            readsBackAs(read.host.tau_limit, written.host.tau_limit);
-}
-
-inline QByteArray fileBytes(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {};
-    return file.readAll();
 }
 
 } // namespace hatpic::test

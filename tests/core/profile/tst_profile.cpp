@@ -29,8 +29,8 @@ using namespace Qt::Literals::StringLiterals;
 namespace {
 
 using hatpic::Profile;
-using hatpic::test::fileBytes;
 using hatpic::test::identical;
+using hatpic::test::readAll;
 using hatpic::test::readsBackAs;
 
 // Number of seeded random cases; raise with HATPIC_RANDOM_CASES=100000.
@@ -285,7 +285,7 @@ void TestProfile::writeThenRead()
     p.device.K_max = 0.7;
     p.device.theta0 = -0.25;
     QCOMPARE(hatpic::writeProfile(p, path), QString());
-    QCOMPARE(fileBytes(path), hatpic::serializeProfile(p));
+    QCOMPARE(readAll(path), hatpic::serializeProfile(p));
     const auto result = hatpic::readProfile(path);
     QVERIFY2(result.ok(), qPrintable(result.errors.join(u'\n')));
     QVERIFY(identical(*result.profile, p));
@@ -293,7 +293,7 @@ void TestProfile::writeThenRead()
     // Overwriting replaces the whole content.
     p.name = u"x"_s;
     QCOMPARE(hatpic::writeProfile(p, path), QString());
-    QCOMPARE(fileBytes(path), hatpic::serializeProfile(p));
+    QCOMPARE(readAll(path), hatpic::serializeProfile(p));
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{u"tuning.json"_s});
 }
 
@@ -325,7 +325,7 @@ void TestProfile::writeFailureKeepsExistingFile()
     QVERIFY(QDir(dir.path()).mkdir(u"adir"_s));
     const QString good = dir.filePath(u"good.json"_s);
     QCOMPARE(hatpic::writeProfile(namedDefault(u"Good"_s), good), QString());
-    const QByteArray before = fileBytes(good);
+    const QByteArray before = readAll(good);
     QVERIFY(!before.isEmpty());
 
     Profile p = namedDefault(u"Other"_s);
@@ -335,7 +335,7 @@ void TestProfile::writeFailureKeepsExistingFile()
     }
     const QString path = dir.filePath(target);
     QCOMPARE(hatpic::writeProfile(p, path), error.arg(path));
-    QCOMPARE(fileBytes(good), before);
+    QCOMPARE(readAll(good), before);
     QVERIFY(QFileInfo(dir.filePath(u"adir"_s)).isDir());
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{u"good.json"_s});
 }
@@ -358,7 +358,7 @@ void TestProfile::writeFailureDiskFull()
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(u"good.json"_s);
     QCOMPARE(hatpic::writeProfile(namedDefault(u"Good"_s), path), QString());
-    const QByteArray before = fileBytes(path);
+    const QByteArray before = readAll(path);
 
     Profile big = namedDefault(u"Big"_s);
     big.notes = QString(notesSize, u'n');
@@ -374,7 +374,7 @@ void TestProfile::writeFailureDiskFull()
     std::signal(SIGXFSZ, oldHandler);
 
     QCOMPARE(error, u"cannot write profile \""_s + path + u"\": File too large"_s);
-    QCOMPARE(fileBytes(path), before);
+    QCOMPARE(readAll(path), before);
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{u"good.json"_s});
 }
 
@@ -384,7 +384,7 @@ void TestProfile::writeFailureReadOnlyDirectory()
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(u"good.json"_s);
     QCOMPARE(hatpic::writeProfile(namedDefault(u"Good"_s), path), QString());
-    const QByteArray before = fileBytes(path);
+    const QByteArray before = readAll(path);
     QVERIFY(QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner));
     const bool canStillCreate = QFile(dir.filePath(u"probe"_s)).open(QIODevice::WriteOnly);
     if (canStillCreate) {
@@ -395,7 +395,7 @@ void TestProfile::writeFailureReadOnlyDirectory()
     const QString error = hatpic::writeProfile(namedDefault(u"Other"_s), path);
     QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
     QVERIFY(error.startsWith(u"cannot write profile \""_s + path + u"\": "_s));
-    QCOMPARE(fileBytes(path), before);
+    QCOMPARE(readAll(path), before);
 }
 
 void TestProfile::readMissingFile()

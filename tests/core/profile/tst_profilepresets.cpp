@@ -14,8 +14,8 @@ using namespace Qt::Literals::StringLiterals;
 namespace {
 
 using hatpic::Profile;
-using hatpic::test::fileBytes;
 using hatpic::test::identical;
+using hatpic::test::readAll;
 
 } // namespace
 
@@ -56,7 +56,7 @@ void TestProfilePresets::presetsLoadAndValidate()
         QVERIFY(hatpic::validate(result.profile->device).empty());
         QVERIFY(hatpic::validate(result.profile->host).empty());
         // The shipped file is exactly what the writer produces for it.
-        QCOMPARE(fileBytes(path), hatpic::serializeProfile(*result.profile));
+        QCOMPARE(readAll(path), hatpic::serializeProfile(*result.profile));
         const std::optional<Profile> viaPreset = hatpic::preset(name);
         QVERIFY(viaPreset);
         QVERIFY(identical(*viaPreset, *result.profile));

@@ -1,8 +1,9 @@
 // What the recording file tests share (tst_recordingwriter, tst_recordingreader): the metadata
-// and samples they write, a file read whole, and the header of an older recording.
+// and samples they write and the header of an older recording (a file read whole: testfiles.h).
 #pragma once
 
 #include "telemetry/recordingwriter.h"
+#include "testfiles.h"
 
 #include <QByteArray>
 #include <QDateTime>
@@ -44,12 +45,6 @@ inline Sample sample(double t)
     s.p_ref = 1.0 / 3.0;
     s.flags = 0x0102;
     return s;
-}
-
-inline QByteArray readAll(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 //! The header of a recording made before tau_fx, tau_pc and pc_reserve existed: the hand-written

@@ -18,15 +18,7 @@ using namespace hatpic;
 using namespace hatpic::test;
 using namespace Qt::StringLiterals;
 
-namespace {
-
-bool writeFile(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
-}
-
-} // namespace
+namespace {} // namespace
 
 class TestRecordingReader : public QObject
 {

@@ -3,6 +3,7 @@
 // devices, CR-only line ends. Real files on real filesystems (a 64 KiB tmpfs for the full disk).
 #include "telemetry/recordingreader.h"
 #include "telemetry/recordingwriter.h"
+#include "testfiles.h"
 #include "tmpfsmount.h"
 
 #include <QElapsedTimer>
@@ -17,6 +18,8 @@
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
+using hatpic::test::readAll;
+using hatpic::test::writeFile;
 
 namespace {
 
@@ -41,18 +44,6 @@ Sample sample(double t)
     s.v_ref = 0.025;
     s.p_ref = 1.0 / 3.0;
     return s;
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-bool writeFile(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include "editor/scientificspinbox.h"
 #include "profile/profile.h"
 #include "profiles/profilecontroller.h"
+#include "testfiles.h"
 
 #include <QAction>
 #include <QApplication>
@@ -20,24 +21,14 @@
 
 using namespace hatpic;
 using namespace Qt::StringLiterals;
+using hatpic::test::readAll;
+using hatpic::test::writeFile;
 
 namespace {
 
 void setValue(ParameterEditor &editor, const QString &key, double value)
 {
     editor.field(key)->spinBox()->setValue(value);
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-bool writeAll(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
 QList<QAction *> fileActions(QMenu *menu)
@@ -207,7 +198,7 @@ void TestProfileController::refusedFileChangesNothing()
 {
     QFETCH(QByteArray, content);
     const QString path = m_dir->filePath(u"bad.json"_s);
-    QVERIFY(writeAll(path, content));
+    QVERIFY(writeFile(path, content));
     const ProfileReadResult expected = readProfile(path);
     QVERIFY(!expected.ok());
     QVERIFY(!expected.errors.isEmpty());
