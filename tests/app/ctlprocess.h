@@ -4,6 +4,7 @@
 #pragma once
 
 #include "model/params.h"
+#include "processrun.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
@@ -22,13 +23,6 @@ using namespace Qt::StringLiterals;
 
 constexpr int kProcessTimeoutMs = 60000;
 
-struct Run
-{
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
 inline Run runCtl(const QStringList &arguments, int timeoutMs = kProcessTimeoutMs,
                   const QProcessEnvironment &environment = QProcessEnvironment::systemEnvironment())
 {
@@ -36,23 +30,7 @@ inline Run runCtl(const QStringList &arguments, int timeoutMs = kProcessTimeoutM
     process.setProgram(QStringLiteral(HATPICCTL_PATH));
     process.setArguments(arguments);
     process.setProcessEnvironment(environment);
-    process.start();
-    Run run;
-    if (!process.waitForStarted(10000)) {
-        run.err = "did not start: " + process.errorString().toUtf8();
-        return run;
-    }
-    process.closeWriteChannel();
-    if (!process.waitForFinished(timeoutMs)) {
-        process.kill();
-        process.waitForFinished(5000);
-        run.err = "timed out; stderr so far: " + process.readAllStandardError();
-        return run;
-    }
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    return run;
+    return runToEnd(process, timeoutMs);
 }
 
 //! runCtl() while this thread's event loop runs: devices the test scripts on pseudo-terminals

@@ -2,6 +2,7 @@
 // with a test ROS 2 node (its own IDL types) on loopback-only Cyclone DDS: references out,
 // wrench in as τ_ext, statistics, options, ROS 2's discovery variables, and SIGINT leaving the
 // device with τ_ext 0.
+#include "processrun.h"
 #include "rostestpeer.h"
 
 #include "profile/profile.h"
@@ -23,18 +24,14 @@
 
 using namespace hatpic;
 using hatpic::test::RosTestPeer;
+using hatpic::test::Run;
+using hatpic::test::runToEnd;
 using namespace Qt::StringLiterals;
 
 namespace {
 
 constexpr int kDomain = 72;               //!< this test's own DDS domain
 constexpr double kTauExtTolerance = 1e-6; //!< τ_ext travels as float32 [N·m]
-
-struct Run
-{
-    int code = -1;
-    QByteArray out, err;
-};
 
 Run runBridge(const QStringList &arguments, const QByteArray &domain = QByteArray())
 {
@@ -46,17 +43,7 @@ Run runBridge(const QStringList &arguments, const QByteArray &domain = QByteArra
         env.insert(u"ROS_DOMAIN_ID"_s, QString::fromLatin1(domain));
         process.setProcessEnvironment(env);
     }
-    process.start();
-    Run run;
-    if (!process.waitForFinished(30000)) {
-        process.kill();
-        process.waitForFinished();
-        return run;
-    }
-    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    return runToEnd(process, 30000);
 }
 
 } // namespace

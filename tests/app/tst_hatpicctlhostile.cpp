@@ -1,6 +1,7 @@
 // hatpicctl as a real process against hostile conditions (issue 10, "Hostile input"): files it
 // did not create, paths that are not files, signals, a file-size limit, line noise before
 // HELLO, a silent legacy port.
+#include "processrun.h"
 #include "scripteddevice.h"
 #include "telemetry/recordingreader.h"
 #include "testfiles.h"
@@ -24,16 +25,11 @@
 using namespace hatpic;
 using namespace Qt::StringLiterals;
 using hatpic::test::readAll;
+using hatpic::test::Run;
+using hatpic::test::runToEnd;
 using hatpic::test::writeFile;
 
 namespace {
-
-struct Run
-{
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-};
 
 Run runCtl(const QStringList &arguments, qint64 fileSizeLimit = 0)
 {
@@ -46,18 +42,7 @@ Run runCtl(const QStringList &arguments, qint64 fileSizeLimit = 0)
             ::setrlimit(RLIMIT_FSIZE, &limit);
         });
     }
-    process.start();
-    Run run;
-    if (!process.waitForStarted(10000) || !process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished(5000);
-        run.err = "did not run to the end";
-        return run;
-    }
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    return run;
+    return runToEnd(process, 60000);
 }
 
 QString describe(const Run &run)

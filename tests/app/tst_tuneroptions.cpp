@@ -1,5 +1,7 @@
 // hatpic-tuner as a real process: numeric options out of range or not numbers are refused
 // before the window opens, with one sentence and exit code 2 (issue 10, "Hostile input").
+#include "processrun.h"
+
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -11,15 +13,10 @@
 #include <csignal>
 
 using namespace Qt::StringLiterals;
+using hatpic::test::Run;
+using hatpic::test::runToEnd;
 
 namespace {
-
-struct Run
-{
-    int code = -1; //!< -1: did not finish in time, -2: crashed
-    QByteArray err;
-    QByteArray out;
-};
 
 //! `platform` "offscreen", or "xcb" with no display to connect to (an ssh session).
 Run runTuner(const QString &configDir, const QStringList &arguments, int timeoutMs,
@@ -35,19 +32,7 @@ Run runTuner(const QString &configDir, const QStringList &arguments, int timeout
     env.insert(u"XDG_CONFIG_HOME"_s, configDir); // never the user's own settings
     env.insert(u"XDG_RUNTIME_DIR"_s, configDir); // 0700: no warning on stderr
     process.setProcessEnvironment(env);
-    process.start();
-    Run run;
-    if (!process.waitForStarted(10000))
-        return run;
-    if (!process.waitForFinished(timeoutMs)) {
-        process.kill();
-        process.waitForFinished(5000);
-        return run;
-    }
-    run.err = process.readAllStandardError();
-    run.out = process.readAllStandardOutput();
-    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    return run;
+    return runToEnd(process, timeoutMs);
 }
 
 } // namespace
