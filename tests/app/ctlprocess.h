@@ -7,7 +7,6 @@
 #include "processrun.h"
 
 #include <QByteArray>
-#include <QElapsedTimer>
 #include <QList>
 #include <QProcess>
 #include <QString>
@@ -40,25 +39,7 @@ inline Run runCtlServing(const QStringList &arguments, int timeoutMs = kProcessT
     QProcess process;
     process.setProgram(QStringLiteral(HATPICCTL_PATH));
     process.setArguments(arguments);
-    process.start();
-    Run run;
-    if (!process.waitForStarted(10000))
-        return run;
-    process.closeWriteChannel();
-    QElapsedTimer clock;
-    clock.start();
-    while (process.state() != QProcess::NotRunning && clock.elapsed() < timeoutMs)
-        QTest::qWait(10);
-    if (process.state() != QProcess::NotRunning) {
-        process.kill();
-        process.waitForFinished(5000);
-        run.err = "timed out: " + process.readAllStandardError();
-        return run;
-    }
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    run.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    return run;
+    return runToEnd(process, timeoutMs, true);
 }
 
 inline QString describe(const Run &run)

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QProcess>
+#include <QTest>
 
 namespace hatpic::test {
 
@@ -15,8 +17,10 @@ struct Run
 };
 
 //! Starts `process` (program, arguments and environment set) with its stdin closed and waits
-//! up to `timeoutMs` for its end; a process still running then is killed.
-inline Run runToEnd(QProcess &process, int timeoutMs)
+//! up to `timeoutMs` for its end; a process still running then is killed. `serving`: this
+//! thread's event loop runs meanwhile (devices a test scripts on pseudo-terminals keep
+//! answering); else the wait blocks it.
+inline Run runToEnd(QProcess &process, int timeoutMs, bool serving = false)
 {
     Run run;
     process.start();
@@ -25,7 +29,17 @@ inline Run runToEnd(QProcess &process, int timeoutMs)
         return run;
     }
     process.closeWriteChannel();
-    if (!process.waitForFinished(timeoutMs)) {
+    bool ended = false;
+    if (serving) {
+        QElapsedTimer clock;
+        clock.start();
+        while (process.state() != QProcess::NotRunning && clock.elapsed() < timeoutMs)
+            QTest::qWait(10);
+        ended = process.state() == QProcess::NotRunning;
+    } else {
+        ended = process.waitForFinished(timeoutMs);
+    }
+    if (!ended) {
         process.kill();
         process.waitForFinished(5000);
         run.err = "timed out; stderr so far: " + process.readAllStandardError();
