@@ -1,5 +1,5 @@
 // hatpic-tuner as a real process: numeric options out of range or not numbers are refused
-// before the window opens, with one sentence and exit code 2 (issue 10, "Hostile input").
+// before the window opens, with one sentence and exit code 4 (issue 10, "Hostile input").
 #include "processrun.h"
 
 #include <QFile>
