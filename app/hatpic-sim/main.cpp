@@ -72,7 +72,7 @@ int main(int argc, char *argv[])
     const auto cycleLog =
         program.add("cycle-log",
                     "Write every control cycle to FILE as CSV: t_s, the quantities TELEMETRY "
-                    "carries (t_us, theta, omega, tau, ...), tau_total; about 110 bytes a cycle.",
+                    "carries (t_us, theta, omega, tau, ...), tau_total; about 100 bytes a cycle.",
                     "FILE");
     program.add(SharedOption::Hand);
     program.add(SharedOption::Seed, "Seed of the load-reading noise and of the faults.");
