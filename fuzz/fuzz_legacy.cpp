@@ -10,6 +10,7 @@
 #include "fuzzcheck.h"
 #include "protocol/legacy.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 using namespace hatpic::legacy;
@@ -42,11 +43,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const DecoderStats &s = chunked.stats();
     FUZZ_CHECK(s.bytes == quint64(stream.size()));
     FUZZ_CHECK(s.frames == quint64(frames.size()));
+    FUZZ_CHECK(s.tiltFrames == quint64(std::count_if(frames.cbegin(), frames.cend(),
+                                                     [](const Frame &f) { return bool(f.tilt); })));
     for (const QString &line : std::as_const(text))
         FUZZ_CHECK(line.size() <= Decoder::kMaxLineBytes);
     for (const Frame &f : std::as_const(frames)) {
-        for (const int v : {f.a, f.b, f.c, f.d})
+        for (const int v : f.fields())
             FUZZ_CHECK(std::abs(v) <= kFieldLimit);
+        if (f.tilt)
+            FUZZ_CHECK(std::abs(f.tilt->roll) <= kFieldLimit &&
+                       std::abs(f.tilt->pitch) <= kFieldLimit);
         Decoder again;
         QList<Frame> back;
         again.feed(QByteArray(encodeFrame(f) + "\r\n"), back);

@@ -165,6 +165,10 @@ int main(int argc, char **argv)
           cat({{1}, text("ia1000b0c0d0oia1350b0c0d0oia650b0c0d0o")}));
     write(u"fuzz_legacy"_qs, u"malformed_then_good"_qs,
           cat({{2}, text("ia10ia1000b1000c1000d1000o\r\nmedia1 viable via 2\r\n")}));
+    write(u"fuzz_legacy"_qs, u"imu_branch"_qs,
+          cat({{3},
+               text("ia1000b990c1012d1000p1000r1000o\r\nia1b2c3d4p0r2000o\r\n"
+                    "ia1b2c3d4p5o\r\nia1000b1000c1000d1000o\r\n")}));
 
     // ---- STS3032 ----
     const Bytes feedbackReply = sts(1, 0, {0xE8, 0x03, 0x10, 0x80, 0x20, 0x04});

@@ -2,13 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 namespace hatpic::legacy {
 
 namespace {
 
-constexpr char kFieldEnd[4] = {'b', 'c', 'd', 'o'};
+//! The letter that ends field n (A…D, roll, pitch). Field D also ends at 'o' (the master
+//! firmware's frame, and the host's); 'p' there goes on to the IMU branch's tilt.
+constexpr char kFieldEnd[6] = {'b', 'c', 'd', 'p', 'r', 'o'};
+constexpr int kFieldD = 3;
+constexpr int kFieldPitch = 5;
 
 bool isDigit(char c)
 {
@@ -18,7 +23,24 @@ bool isDigit(char c)
 //! Bytes that can occur inside a frame after "ia" (the 'o' ends it).
 bool isFrameInner(char c)
 {
-    return isDigit(c) || c == '-' || c == '+' || c == 'b' || c == 'c' || c == 'd';
+    return isDigit(c) || c == '-' || c == '+' || c == 'b' || c == 'c' || c == 'd' || c == 'p' ||
+           c == 'r';
+}
+
+double tiltAngle(int field)
+{
+    const int clamped = std::clamp(field, 0, TiltConversion::kFieldMax);
+    return double(clamped - TiltConversion::kLevel) * (std::numbers::pi / 2) /
+           TiltConversion::kFieldsPerQuarterTurn;
+}
+
+int tiltField(double angle)
+{
+    if (std::isnan(angle))
+        return TiltConversion::kLevel;
+    const double field = TiltConversion::kLevel +
+                         angle * TiltConversion::kFieldsPerQuarterTurn / (std::numbers::pi / 2);
+    return int(std::lround(std::clamp(field, 0.0, double(TiltConversion::kFieldMax))));
 }
 
 } // namespace
@@ -28,8 +50,11 @@ QByteArray encodeFrame(const Frame &frame)
     const auto field = [](int v) {
         return QByteArray::number(std::clamp(v, -kFieldLimit, kFieldLimit));
     };
-    return "ia" + field(frame.a) + 'b' + field(frame.b) + 'c' + field(frame.c) + 'd' +
-           field(frame.d) + 'o';
+    QByteArray bytes =
+        "ia" + field(frame.a) + 'b' + field(frame.b) + 'c' + field(frame.c) + 'd' + field(frame.d);
+    if (frame.tilt)
+        bytes += 'p' + field(frame.tilt->roll) + 'r' + field(frame.tilt->pitch);
+    return bytes + 'o';
 }
 
 // ---- Decoder ----
@@ -62,6 +87,8 @@ void Decoder::feed(QByteArrayView bytes, QList<Frame> &frames, QStringList *text
                 case Step::Done:
                     frames.append(m_current);
                     ++m_stats.frames;
+                    if (m_current.tilt)
+                        ++m_stats.tiltFrames;
                     m_lineConsumed = true;
                     m_frame.resize(0);
                     m_state = State::Text;
@@ -141,7 +168,8 @@ Decoder::Step Decoder::stepFrame(char c)
         m_frame.append(c);
         return Step::More;
     }
-    if (c != kFieldEnd[m_field] || m_digits == 0)
+    const bool masterEnd = m_field == kFieldD && c == 'o';
+    if ((c != kFieldEnd[m_field] && !masterEnd) || m_digits == 0)
         return Step::Fail; // wrong or missing letter, or a letter where a number belongs
     const int value = m_negative ? -m_value : m_value;
     if (value < -kFieldLimit || value > kFieldLimit)
@@ -156,10 +184,20 @@ Decoder::Step Decoder::stepFrame(char c)
     case 2:
         m_current.c = value;
         break;
-    default:
+    case kFieldD:
         m_current.d = value;
+        if (masterEnd)
+            return Step::Done;
+        m_current.tilt = Tilt{};
+        break;
+    case 4:
+        m_current.tilt->roll = value;
+        break;
+    default:
+        m_current.tilt->pitch = value;
         return Step::Done;
     }
+    static_assert(kFieldPitch + 1 == std::size(kFieldEnd));
     ++m_field;
     m_digits = 0;
     m_signed = false;
@@ -234,6 +272,28 @@ int Conversion::feedbackToField(double tauExt) const
 double Conversion::fieldToFeedback(int a) const
 {
     return static_cast<double>(a - kFeedbackZero) * tauLimit / 1000.0;
+}
+
+// ---- TiltConversion ----
+
+double TiltConversion::rollFromField(int roll)
+{
+    return -tiltAngle(roll); // the upside-down mount: the field falls as the roll grows
+}
+
+double TiltConversion::pitchFromField(int pitch)
+{
+    return tiltAngle(pitch);
+}
+
+int TiltConversion::rollToField(double roll)
+{
+    return tiltField(-roll);
+}
+
+int TiltConversion::pitchToField(double pitch)
+{
+    return tiltField(pitch);
 }
 
 } // namespace hatpic::legacy

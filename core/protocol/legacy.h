@@ -6,31 +6,58 @@
 #include <QList>
 #include <QStringList>
 
+#include <array>
+#include <optional>
+
 namespace hatpic::legacy {
 
-//! One `ia<A>b<B>c<C>d<D>o` frame.
+//! The tilt fields of the IMU branch's device frame: `p<ROLL>r<PITCH>` (docs/protocol.md § 1.2),
+//! each 0…2000 with 1000 level. Note the letter `p` comes before ROLL and `r` before PITCH.
+struct Tilt
+{
+    int roll = 1000;
+    int pitch = 1000;
+    friend bool operator==(const Tilt &, const Tilt &) = default;
+};
+
+//! One frame: the master firmware's `ia<A>b<B>c<C>d<D>o`, or the IMU branch's device frame
+//! `ia<P1>b<P2>c<P3>d<P4>p<ROLL>r<PITCH>o`, which carries `tilt`.
 struct Frame
 {
+    Frame() = default;
+    Frame(int a, int b, int c, int d, std::optional<Tilt> tilt = std::nullopt)
+        : a(a), b(b), c(c), d(d), tilt(tilt)
+    {}
+
     int a = 0;
     int b = 0;
     int c = 0;
     int d = 0;
+    std::optional<Tilt> tilt; //!< only in the IMU branch's device → host frame
     friend bool operator==(const Frame &, const Frame &) = default;
+
+    //! The four fields in order, A…D: the IMU branch's four servos.
+    std::array<int, 4> fields() const { return {a, b, c, d}; }
 };
+
+//! Servos of the IMU-branch board (ids 1–4), one per frame field A…D.
+constexpr int kImuBranchServos = 4;
 
 constexpr int kFieldLimit = 99999; //!< |field| larger than this is malformed
 
-//! Whole frame as ASCII, no terminator: "ia1000b0c0d0o". Fields beyond ±kFieldLimit are
-//! clamped so that the frame is always one a receiver accepts.
+//! Whole frame as ASCII, no terminator: "ia1000b0c0d0o", or with its tilt
+//! "ia1000b1000c1000d1000p1000r1000o". Fields beyond ±kFieldLimit are clamped so that the frame
+//! is always one a receiver accepts.
 QByteArray encodeFrame(const Frame &frame);
 
 struct DecoderStats
 {
     quint64 bytes = 0;
-    quint64 frames = 0;    //!< valid frames
-    quint64 malformed = 0; //!< started with 'i' but broke a rule
-    quint64 textLines = 0; //!< non-frame text lines (boot messages)
-    quint64 longLines = 0; //!< text lines cut at kMaxLineBytes (each piece is a text line)
+    quint64 frames = 0;     //!< valid frames
+    quint64 tiltFrames = 0; //!< of which the IMU branch's, with the tilt fields
+    quint64 malformed = 0;  //!< started with 'i' but broke a rule
+    quint64 textLines = 0;  //!< non-frame text lines (boot messages)
+    quint64 longLines = 0;  //!< text lines cut at kMaxLineBytes (each piece is a text line)
     friend bool operator==(const DecoderStats &, const DecoderStats &) = default;
 };
 
@@ -81,7 +108,7 @@ private:
     QByteArray m_frame;          //!< raw bytes of the candidate frame
     QByteArray m_line;           //!< text line so far, '\r' removed
     bool m_lineConsumed = false; //!< a frame or a cut piece came from this line already
-    int m_field = 0;             //!< field being read: 0 = A … 3 = D
+    int m_field = 0;             //!< field being read: 0 = A … 3 = D, 4 = roll, 5 = pitch
     int m_digits = 0;            //!< digits read in this field
     bool m_signed = false;       //!< sign read in this field
     bool m_negative = false;
@@ -112,6 +139,28 @@ struct Conversion
     int feedbackToField(double tauExt) const;
     //! τ_ext that a received field A stands for (device side), not clamped [N·m].
     double fieldToFeedback(int a) const;
+};
+
+//! The IMU branch's tilt fields ↔ angles (docs/protocol.md § 1.2). The firmware maps its sensor's
+//! pitch −90°…90° onto 0…2000 and, the board being mounted upside down, its roll away from the
+//! ±180° it reads level onto 1000…0 (rolling one way) and 1000…2000 (the other), both clamped.
+//! Here roll is the board's roll away from level and pitch the sensor's pitch, each with the
+//! sensor's own sign, in −π/2…π/2.
+struct TiltConversion
+{
+    static constexpr int kLevel = 1000;                //!< the field of a level board
+    static constexpr int kFieldMax = 2000;             //!< fields span 0…kFieldMax
+    static constexpr int kFieldsPerQuarterTurn = 1000; //!< 90° is 1000 field units
+
+    //! roll [rad] of a ROLL field; fields outside 0…2000 are clamped first.
+    static double rollFromField(int roll);
+    //! pitch [rad] of a PITCH field; the same clamp.
+    static double pitchFromField(int pitch);
+    //! The ROLL field the firmware sends for `roll` [rad], rounded, clamped to 0…2000; NaN
+    //! gives level.
+    static int rollToField(double roll);
+    //! The PITCH field for `pitch` [rad], likewise.
+    static int pitchToField(double pitch);
 };
 
 } // namespace hatpic::legacy

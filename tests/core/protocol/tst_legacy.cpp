@@ -4,6 +4,10 @@
 #include <QRandomGenerator>
 #include <QTest>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 using namespace hatpic::legacy;
 using namespace Qt::StringLiterals;
 
@@ -13,12 +17,7 @@ Q_DECLARE_METATYPE(Frames)
 namespace hatpic::legacy {
 inline char *toString(const Frame &f)
 {
-    return qstrdup(QByteArray("ia%1b%2c%3d%4o")
-                       .replace("%1", QByteArray::number(f.a))
-                       .replace("%2", QByteArray::number(f.b))
-                       .replace("%3", QByteArray::number(f.c))
-                       .replace("%4", QByteArray::number(f.d))
-                       .constData());
+    return qstrdup(encodeFrame(f).constData());
 }
 } // namespace hatpic::legacy
 
@@ -104,13 +103,83 @@ private Q_SLOTS:
             const auto field = [&rng] {
                 return int(rng.bounded(2 * kFieldLimit + 1)) - kFieldLimit;
             };
-            const Frame f{field(), field(), field(), field()};
+            Frame f{field(), field(), field(), field()};
+            if (rng.bounded(2))
+                f.tilt = Tilt{field(), field()};
             sent.append(f);
             decoder.feed(encodeFrame(f), got, &text);
         }
         QCOMPARE(got, sent);
         QVERIFY(text.isEmpty());
         QCOMPARE(decoder.stats().malformed, quint64(0));
+        QCOMPARE(decoder.stats().tiltFrames,
+                 quint64(std::count_if(sent.cbegin(), sent.cend(),
+                                       [](const Frame &f) { return f.tilt.has_value(); })));
+    }
+
+    void encodeTilt()
+    {
+        const QByteArray encoded = encodeFrame(Frame{1000, 1001, 999, 1000, Tilt{0, 2000}});
+        QCOMPARE(encoded, QByteArray("ia1000b1001c999d1000p0r2000o"));
+        QCOMPARE(encoded.count('i'), 1);
+    }
+
+    // ---- the IMU branch's tilt fields ----
+    void tiltFromTheFirmwaresMapping_data()
+    {
+        // What the firmware computes from its sensor's reading (issue 36): pitch
+        // map(−90…90 → 0…2000); roll map(−90…−180 → 0…1000) below 0, map(180…90 → 1000…2000)
+        // from 0 on (mounted upside down: ±180° is level).
+        QTest::addColumn<double>("sensorRollDeg");
+        QTest::addColumn<double>("sensorPitchDeg");
+        QTest::addColumn<double>("rollDeg");
+        QTest::addColumn<double>("pitchDeg");
+        QTest::newRow("level") << 180.0 << 0.0 << 0.0 << 0.0;
+        QTest::newRow("level, read as -180") << -180.0 << 0.0 << 0.0 << 0.0;
+        QTest::newRow("rolled +30") << -150.0 << 0.0 << 30.0 << 0.0;
+        QTest::newRow("rolled -45") << 135.0 << 0.0 << -45.0 << 0.0;
+        QTest::newRow("rolled a quarter turn") << -90.0 << 0.0 << 90.0 << 0.0;
+        QTest::newRow("pitched +60") << 180.0 << 60.0 << 0.0 << 60.0;
+        QTest::newRow("pitched -90") << 180.0 << -90.0 << 0.0 << -90.0;
+    }
+    void tiltFromTheFirmwaresMapping()
+    {
+        QFETCH(double, sensorRollDeg);
+        QFETCH(double, sensorPitchDeg);
+        QFETCH(double, rollDeg);
+        QFETCH(double, pitchDeg);
+        // Arduino's map(), on the firmware's doubles.
+        const auto map = [](double x, double inMin, double inMax, double outMin, double outMax) {
+            return (x - inMin) * (outMax - outMin) / (inMax - inMin) + outMin;
+        };
+        const int rollField =
+            int(std::lround(sensorRollDeg < 0 ? map(sensorRollDeg, -90, -180, 0, 1000)
+                                              : map(sensorRollDeg, 180, 90, 1000, 2000)));
+        const int pitchField = int(std::lround(map(sensorPitchDeg, -90, 90, 0, 2000)));
+        const double degree = std::numbers::pi / 180;
+        const double halfField = 0.5 * (std::numbers::pi / 2) / 1000;
+        QVERIFY(std::abs(TiltConversion::rollFromField(rollField) - rollDeg * degree) <= halfField);
+        QVERIFY(std::abs(TiltConversion::pitchFromField(pitchField) - pitchDeg * degree) <=
+                halfField);
+        QCOMPARE(TiltConversion::rollToField(rollDeg * degree), rollField);
+        QCOMPARE(TiltConversion::pitchToField(pitchDeg * degree), pitchField);
+    }
+
+    void tiltFieldsAreClamped()
+    {
+        const double quarter = std::numbers::pi / 2;
+        QCOMPARE(TiltConversion::rollFromField(-5), quarter);
+        QCOMPARE(TiltConversion::rollFromField(99999), -quarter);
+        QCOMPARE(TiltConversion::pitchFromField(2001), quarter);
+        QCOMPARE(TiltConversion::rollToField(10.0), 0);
+        QCOMPARE(TiltConversion::pitchToField(-10.0), 0);
+        QCOMPARE(TiltConversion::rollToField(std::nan("")), TiltConversion::kLevel);
+        QCOMPARE(TiltConversion::pitchToField(std::nan("")), TiltConversion::kLevel);
+        // A field is 0.09°: every field comes back from its angle.
+        for (int field = 0; field <= TiltConversion::kFieldMax; ++field) {
+            QCOMPARE(TiltConversion::rollToField(TiltConversion::rollFromField(field)), field);
+            QCOMPARE(TiltConversion::pitchToField(TiltConversion::pitchFromField(field)), field);
+        }
     }
 
     // ---- decoding ----
@@ -201,6 +270,25 @@ private Q_SLOTS:
             << noText << 1;
         QTest::newRow("malformed then good frame on the next line")
             << QByteArray("ia12b3\r\nia1b2c3d4o\r\n") << Frames{{1, 2, 3, 4}} << noText << 1;
+
+        // The IMU branch's device frame: four servos, then p<ROLL>r<PITCH>.
+        QTest::newRow("IMU-branch frame")
+            << QByteArray("ia1000b990c2000d0p1000r1500o\r\n")
+            << Frames{{1000, 990, 2000, 0, Tilt{1000, 1500}}} << noText << 0;
+        QTest::newRow("IMU-branch and master frames mixed")
+            << QByteArray("ia1b2c3d4p5r6o\r\nia1b2c3d4o\r\n")
+            << Frames{{1, 2, 3, 4, Tilt{5, 6}}, {1, 2, 3, 4}} << noText << 0;
+        QTest::newRow("malformed: pitch missing")
+            << QByteArray("ia1b2c3d4p5o\r\nia1b2c3d4p5r6o\r\n") << Frames{{1, 2, 3, 4, Tilt{5, 6}}}
+            << noText << 1;
+        QTest::newRow("malformed: r before p")
+            << QByteArray("ia1b2c3d4r5p6o\r\n") << none << noText << 1;
+        QTest::newRow("malformed: tilt after field C")
+            << QByteArray("ia1b2c3p5r6o\r\n") << none << noText << 1;
+        QTest::newRow("malformed: letter where the roll belongs")
+            << QByteArray("ia1b2c3d4pr6o\r\n") << none << noText << 1;
+        QTest::newRow("malformed: a field after the pitch")
+            << QByteArray("ia1b2c3d4p5r6d7o\r\n") << none << noText << 1;
     }
     void decode()
     {
