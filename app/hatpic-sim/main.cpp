@@ -14,7 +14,11 @@
 #include <QCoreApplication>
 #include <QFile>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 
 using namespace hatpic;
 
@@ -53,6 +57,72 @@ bool readLinkOptions(const PtyProgram &program, const LinkOptions &options,
     return true;
 }
 
+// The board: one knob, or the IMU branch's four knobs and tilt.
+struct BoardOptions
+{
+    QCommandLineOption device;
+    QCommandLineOption protocol;
+    std::array<QCommandLineOption, SimulatedDevice::kOtherKnobs> hands;
+    QCommandLineOption tilt;
+};
+
+bool readBoardOptions(const PtyProgram &program, const BoardOptions &options,
+                      SimulatedDevice::Config &config)
+{
+    const QString device = program.value(options.device);
+    const bool imu = device == u"imu-branch";
+    if (!imu && device != u"knob") {
+        program.printError(
+            QStringLiteral("--device: must be knob or imu-branch, got \"%1\".").arg(device));
+        return false;
+    }
+    const bool extras = program.isSet(options.tilt) ||
+                        std::any_of(options.hands.begin(), options.hands.end(),
+                                    [&](const QCommandLineOption &o) { return program.isSet(o); });
+    if (!imu) {
+        if (extras)
+            program.printError(QStringLiteral("--tilt and --hand-2 … --hand-4 need "
+                                              "--device imu-branch (a single knob has neither)."));
+        return !extras;
+    }
+    if (program.isSet(options.protocol) && config.protocol != WireProtocol::Legacy) {
+        program.printError(QStringLiteral("--device imu-branch speaks the IMU branch's legacy "
+                                          "frames; drop --protocol or give legacy."));
+        return false;
+    }
+    config.board = SimulatedDevice::Board::ImuBranch;
+    config.protocol = WireProtocol::Legacy;
+    for (std::size_t k = 0; k < options.hands.size(); ++k) {
+        if (!program.isSet(options.hands[k]))
+            continue;
+        QString error;
+        const auto hand = HandInput::parse(program.value(options.hands[k]), &error);
+        if (!hand) {
+            program.printError(QStringLiteral("--hand-%1: %2").arg(k + 2).arg(error));
+            return false;
+        }
+        config.otherHands[k] = *hand;
+    }
+    if (program.isSet(options.tilt)) {
+        const QString text = program.value(options.tilt);
+        const QStringList parts = text.split(u',');
+        bool rollOk = false;
+        bool pitchOk = false;
+        const double roll = parts.size() == 2 ? parts[0].toDouble(&rollOk) : 0;
+        const double pitch = parts.size() == 2 ? parts[1].toDouble(&pitchOk) : 0;
+        const double limit = std::numbers::pi / 2;
+        if (!rollOk || !pitchOk || !(std::abs(roll) <= limit) || !(std::abs(pitch) <= limit)) {
+            program.printError(QStringLiteral("--tilt: must be ROLL,PITCH in rad, each from "
+                                              "-1.5708 to 1.5708 (a quarter turn), got \"%1\".")
+                                   .arg(text));
+            return false;
+        }
+        config.roll = roll;
+        config.pitch = pitch;
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -60,6 +130,11 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     PtyProgram program(app, "hatpic-sim",
                        QStringLiteral("Simulated HATPIC joystick on a pseudo-terminal."));
+    const auto device = program.add(
+        "device",
+        "The board: knob (one knob, the master firmware or ours) or imu-branch (the published "
+        "IMU branch: four knobs and a tilt, its legacy frames; docs/simulator.md).",
+        "knob|imu-branch", "knob");
     const auto protocol =
         program.add("protocol", "Wire protocol: v2 or legacy.", "v2|legacy", "v2");
     program.add(SharedOption::Rate);
@@ -75,6 +150,12 @@ int main(int argc, char *argv[])
                     "carries (t_us, theta, omega, tau, ...), tau_total; about 100 bytes a cycle.",
                     "FILE");
     program.add(SharedOption::Hand);
+    const std::array<QCommandLineOption, SimulatedDevice::kOtherKnobs> otherHands{
+        program.add("hand-2", "imu-branch: the hand on knob 2, as --hand (default idle).", "SPEC"),
+        program.add("hand-3", "imu-branch: the hand on knob 3, likewise.", "SPEC"),
+        program.add("hand-4", "imu-branch: the hand on knob 4, likewise.", "SPEC")};
+    const auto tilt = program.add(
+        "tilt", "imu-branch: the board's roll and pitch [rad] (default 0,0: level).", "ROLL,PITCH");
     program.add(SharedOption::Seed, "Seed of the load-reading noise and of the faults.");
     program.add(SharedOption::State);
     program.add(SharedOption::Link);
@@ -86,6 +167,7 @@ int main(int argc, char *argv[])
     SimulatedDevice::Config config;
     config.noise = SimulatedDevice::kProgramNoise;
     if (!program.parse() || !readLinkOptions(program, {protocol, baud, noThrottle}, config) ||
+        !readBoardOptions(program, {device, protocol, otherHands, tilt}, config) ||
         !program.readHand(config.hand) || !program.readSeed(config.seed) ||
         !program.readStateFile(config.stateFile) || !program.readFaults(config.faults) ||
         !program.readLink())
@@ -118,7 +200,9 @@ int main(int argc, char *argv[])
         if (!problem.empty())
             program.printError(QString::fromStdString(problem) + u'.');
     }
-    std::fprintf(stderr, "hatpic-sim: %s protocol, %g Hz control, %d baud%s\n",
+    std::fprintf(stderr, "hatpic-sim: %s%s protocol, %g Hz control, %d baud%s\n",
+                 config.board == SimulatedDevice::Board::ImuBranch ? "IMU-branch board (4 knobs), "
+                                                                   : "",
                  qPrintable(wireProtocolName(config.protocol)), config.controlRateHz,
                  host.device().baud(), config.throttle ? "" : " (not throttled)");
 

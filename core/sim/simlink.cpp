@@ -59,7 +59,7 @@ qint32 SimLink::baud() const
         return m_device->baud();
     if (m_config.baud > 0)
         return m_config.baud;
-    return defaultBaud(m_config.protocol);
+    return defaultBaud(m_config.wireProtocol());
 }
 
 void SimLink::write(const QByteArray &bytes)

@@ -97,6 +97,10 @@ public:
 
     void receive(QByteArrayView bytes);
     void receiveLegacy(QByteArrayView bytes);
+    //! The knob's frame: the master firmware's, or the IMU branch's with every knob and the tilt.
+    QByteArray legacyDeviceFrame() const;
+    //! Passes the host's frame on to knobs 2–4 of an IMU-branch board, as each one's field A.
+    void forwardToOtherKnobs(QByteArrayView bytes);
     Cycle runCycle();
     void runPlant(double t);
 
@@ -148,13 +152,35 @@ public:
     qint64 nextLegacyUs = kLegacyPeriodUs;
     legacy::Conversion legacyConversion;
     quint64 legacyDropped = 0;
+    //! The IMU branch's knobs 2–4, each the published firmware's spring on its own servo: a
+    //! single legacy knob of its own, stepped with this one (empty for a single knob).
+    std::vector<std::unique_ptr<SimulatedDevice>> otherKnobs;
+    std::vector<double> otherAngles; //!< their servos' last readings [rad]
+    double roll = 0;                 //!< the board's tilt [rad]
+    double pitch = 0;
     QString stateWarning;
     QString saveWarning;
 };
 
 SimulatedDevice::Private::Private(const Config &c)
-    : config(c), plant(0.44), uart(c.baud > 0 ? c.baud : defaultBaud(c.protocol), c.throttle)
+    : config(c), plant(0.44), uart(c.baud > 0 ? c.baud : defaultBaud(c.wireProtocol()), c.throttle)
 {
+    config.protocol = c.wireProtocol();
+    if (c.board == Board::ImuBranch) {
+        for (const HandInput &other : c.otherHands) {
+            Config knob = c;
+            knob.board = Board::Knob;
+            knob.protocol = WireProtocol::Legacy;
+            knob.hand = other;
+            knob.faults = {};
+            knob.throttle = false; // its own frames are not sent: this board's are
+            knob.seed = c.seed + otherKnobs.size() + 1;
+            otherKnobs.push_back(std::make_unique<SimulatedDevice>(knob));
+        }
+        otherAngles.assign(otherKnobs.size(), 0.0);
+        roll = c.roll;
+        pitch = c.pitch;
+    }
     if (std::isfinite(c.controlRateHz) && c.controlRateHz > 0)
         rate = std::clamp(c.controlRateHz, fw::DeviceCore<double>::kMinControlRate,
                           fw::DeviceCore<double>::kMaxControlRate);
@@ -198,7 +224,7 @@ SimulatedDevice::Private::Private(const Config &c)
                            .arg(violationsText(configured));
 
     DeviceParams powerUp;
-    if (c.protocol == WireProtocol::V2) {
+    if (config.protocol == WireProtocol::V2) {
         if (!c.stateFile.isEmpty()) {
             store.emplace(c.stateFile, QStringLiteral("hatpic-sim"), tauLimit);
             saveWarning = store->saveProblem();
@@ -237,7 +263,7 @@ SimulatedDevice::Private::Private(const Config &c)
         legacyController->start(powerUp, 0);
     last.theta = core ? core->controller().last().theta : legacyController->last().theta;
 
-    if (c.protocol == WireProtocol::Legacy) {
+    if (config.protocol == WireProtocol::Legacy) {
         const QByteArray pos = QByteArray::number(legacyTicks());
         uart.write(QByteArray("STS3032 Torque control\r\nCurrent pos motor : " + pos + "\r\n" +
                               pos + "\r\n"),
@@ -279,6 +305,7 @@ void SimulatedDevice::Private::receiveLegacy(QByteArrayView bytes)
             if (c == 'i') {
                 legacyWaiting = true;
                 legacyFrame = QByteArray(1, c);
+                forwardToOtherKnobs("i"); // the whole board's loop waits
             }
             continue;
         }
@@ -287,18 +314,49 @@ void SimulatedDevice::Private::receiveLegacy(QByteArrayView bytes)
         if (c != 'o')
             continue;
         legacyWaiting = false;
-        if (legacyFrame.endsWith('o')) {
-            legacy::Decoder parser;
-            QList<legacy::Frame> frames;
+        legacy::Decoder parser;
+        QList<legacy::Frame> frames;
+        if (legacyFrame.endsWith('o'))
             parser.feed(legacyFrame, frames);
-            if (frames.size() == 1) {
-                const double tauExt = legacyConversion.fieldToFeedback(frames.first().a);
-                if (std::isfinite(tauExt))
-                    legacyController->setFeedback(tauExt, 0);
+        if (frames.size() == 1) {
+            const legacy::Frame &frame = frames.first();
+            const double tauExt = legacyConversion.fieldToFeedback(frame.a);
+            if (std::isfinite(tauExt))
+                legacyController->setFeedback(tauExt, 0);
+            // The branch adds field n − 1000 to servo n's torque: knob n's field A.
+            const std::array<int, 4> fields = frame.fields();
+            for (std::size_t k = 0; k < otherKnobs.size(); ++k) {
+                const QByteArray rest = legacy::encodeFrame({fields[k + 1], 0, 0, 0}).mid(1);
+                otherKnobs[k]->receive(rest);
             }
+        } else {
+            forwardToOtherKnobs("o"); // "io": nothing they act on, and they go on
         }
         legacyFrame.clear();
     }
+}
+
+void SimulatedDevice::Private::forwardToOtherKnobs(QByteArrayView bytes)
+{
+    for (const auto &knob : otherKnobs)
+        knob->receive(bytes);
+}
+
+QByteArray SimulatedDevice::Private::legacyDeviceFrame() const
+{
+    if (otherKnobs.empty())
+        return legacy::encodeFrame({legacyTicks(), 1000, 1000, 1000});
+    // The branch's P1…P4: the reading minus the servo's offset (the centre tick here), +1000,
+    // clamped to 0…2000.
+    const auto field = [](double theta) {
+        const double ticks = theta * kTicksPerRev / (2.0 * std::numbers::pi) + 1000.0;
+        return int(std::lround(std::clamp(ticks, 0.0, 2000.0)));
+    };
+    legacy::Frame frame{field(last.theta), field(otherAngles[0]), field(otherAngles[1]),
+                        field(otherAngles[2])};
+    frame.tilt = legacy::Tilt{legacy::TiltConversion::rollToField(roll),
+                              legacy::TiltConversion::pitchToField(pitch)};
+    return legacy::encodeFrame(frame);
 }
 
 void SimulatedDevice::Private::runPlant(double t)
@@ -319,6 +377,10 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
     const qint64 tUs = cycleMicros(n);
     cycleTime = t;
 
+    for (std::size_t k = 0; k < otherKnobs.size(); ++k) {
+        otherAngles[k] = otherKnobs[k]->step().theta;
+        otherKnobs[k]->takeOutput(); // its own frames: this board sends the branch's
+    }
     if (legacyController && legacyWaiting) {
         // The firmware is stuck waiting for 'o': no control, no frames. The servo keeps
         // holding its last position command on its own.
@@ -338,8 +400,9 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
         nextLegacyUs += kLegacyPeriodUs;
         if (nextLegacyUs <= tUs)
             nextLegacyUs = tUs + kLegacyPeriodUs;
-        const legacy::Frame frame{legacyTicks(), 1000, 1000, 1000};
-        if (!uart.write(QByteArray(legacy::encodeFrame(frame) + "\r\n"), Traffic::Stream))
+        // Knob 1's reading of this cycle, which `last` gets below.
+        last.theta = r.theta;
+        if (!uart.write(QByteArray(legacyDeviceFrame() + "\r\n"), Traffic::Stream))
             ++legacyDropped;
     }
 
@@ -410,6 +473,34 @@ HandInput SimulatedDevice::hand() const
     return d->hand;
 }
 
+void SimulatedDevice::setHand(int knob, const HandInput &hand)
+{
+    if (knob == 1)
+        setHand(hand);
+    else if (knob >= 2 && knob <= knobs())
+        d->otherKnobs[std::size_t(knob - 2)]->setHand(hand);
+}
+
+void SimulatedDevice::setTilt(double roll, double pitch)
+{
+    if (d->otherKnobs.empty())
+        return;
+    d->roll = roll;
+    d->pitch = pitch;
+}
+
+int SimulatedDevice::knobs() const
+{
+    return 1 + int(d->otherKnobs.size());
+}
+
+std::vector<double> SimulatedDevice::knobAngles() const
+{
+    std::vector<double> angles{d->last.theta};
+    angles.insert(angles.end(), d->otherAngles.begin(), d->otherAngles.end());
+    return angles;
+}
+
 const SimulatedDevice::Config &SimulatedDevice::config() const
 {
     return d->config;
@@ -470,7 +561,7 @@ std::unique_ptr<FaultInjector> makeFaultInjector(const SimulatedDevice::Config &
     if (config.faults.isEmpty())
         return nullptr;
     return std::make_unique<FaultInjector>(config.faults, config.seed,
-                                           config.protocol == WireProtocol::Legacy
+                                           config.wireProtocol() == WireProtocol::Legacy
                                                ? FaultInjector::Framing::Legacy
                                                : FaultInjector::Framing::V2);
 }

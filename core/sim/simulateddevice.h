@@ -20,10 +20,12 @@
 #include <QByteArray>
 #include <QString>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
 #include <random>
+#include <vector>
 
 namespace hatpic {
 
@@ -33,9 +35,19 @@ public:
     //! The load-reading noise hatpic-sim and hatpic-servo-sim run with: std-dev [N·m].
     static constexpr double kProgramNoise = 0.0005;
 
+    //! Which board is simulated.
+    enum class Board {
+        Knob,      //!< one knob: the master firmware (legacy) or our device core (v2)
+        ImuBranch, //!< the published IMU branch: four knobs and a tilt, legacy only (§ 1.2)
+    };
+    //! Knobs beyond the first that an IMU-branch board has.
+    static constexpr int kOtherKnobs = legacy::kImuBranchServos - 1;
+
     struct Config
     {
         WireProtocol protocol = WireProtocol::V2;
+        //! ImuBranch speaks the branch's legacy frames whatever `protocol` says.
+        Board board = Board::Knob;
         double controlRateHz = 1000;   //!< control loop rate [Hz]
         qint32 baud = 0;               //!< emulated link; 0 = the protocol's defaultBaud()
         bool throttle = true;          //!< limit output to the link's byte rate
@@ -50,6 +62,17 @@ public:
         PassivityParams passivity;     //!< power-up passivity block (the same; v2 only)
         //! Faults the link to the host injects (SimLink, SimulatorHost); empty = none.
         FaultSpec faults;
+        //! ImuBranch: the operator inputs on knobs 2–4 (`hand` is knob 1's).
+        std::array<HandInput, kOtherKnobs> otherHands{};
+        //! ImuBranch: the board's tilt at start, roll and pitch [rad] (legacy::TiltConversion).
+        double roll = 0;
+        double pitch = 0;
+
+        //! The protocol the board speaks: `protocol`, or legacy for the IMU branch.
+        WireProtocol wireProtocol() const
+        {
+            return board == Board::ImuBranch ? WireProtocol::Legacy : protocol;
+        }
     };
 
     //! One control cycle as the device saw it: its record, on simulated time.
@@ -82,6 +105,15 @@ public:
 
     void setHand(const HandInput &hand); //!< switch the operator input while running
     HandInput hand() const;
+    //! Switches knob `knob`'s operator input (1 … knobs()); knob 1 is setHand's. Another knob
+    //! is ignored.
+    void setHand(int knob, const HandInput &hand);
+    //! Tilts the IMU-branch board to `roll`, `pitch` [rad]; ignored by a single knob.
+    void setTilt(double roll, double pitch);
+    //! Knobs on the board: 1, or 4 for the IMU branch.
+    int knobs() const;
+    //! The angle each knob's servo read at the last cycle, knob 1 first [rad].
+    std::vector<double> knobAngles() const;
 
     const Config &config() const;
     DeviceParams params() const;

@@ -10,6 +10,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <csignal>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -77,6 +78,7 @@ private Q_SLOTS:
     void binaryRunsAndStops_data();
     void binaryRunsAndStops();
     void binarySurvivesTheFileSizeLimit();
+    void binaryImuBranchBoard();
     void binaryRefusesBadOptions_data();
     void binaryRefusesBadOptions();
 };
@@ -302,6 +304,31 @@ void TestSimulatorHost::binarySurvivesTheFileSizeLimit()
     QCOMPARE(sim.exitCode(), 0);
 }
 
+void TestSimulatorHost::binaryImuBranchBoard()
+{
+    QProcess sim;
+    sim.start(QStringLiteral(HATPIC_SIM_PATH),
+              {u"--device"_s, u"imu-branch"_s, u"--tilt"_s, u"0.3,-0.2"_s, u"--hand-3"_s,
+               u"const:0.05"_s, u"--seed"_s, u"5"_s});
+    QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
+    const QString path = QString::fromLocal8Bit(sim.readLine()).chopped(1);
+    {
+        Client client(path, 115200);
+        QVERIFY2(client.open(), qPrintable(client.errorString()));
+        QTRY_VERIFY_WITH_TIMEOUT(client.legacyFrames.size() >= 3, 5000);
+        const legacy::Frame last = client.legacyFrames.last();
+        QVERIFY(last.tilt.has_value());
+        QCOMPARE(*last.tilt, (legacy::Tilt{809, 873}));
+        QVERIFY2(last.c > 1010, qPrintable(QString::number(last.c))); // knob 3 pushed
+        QVERIFY2(std::abs(last.a - 1000) <= 2, qPrintable(QString::number(last.a)));
+    }
+    sim.terminate();
+    QVERIFY(sim.waitForFinished(10000));
+    QCOMPARE(sim.exitCode(), 0);
+    const QString err = QString::fromLocal8Bit(sim.readAllStandardError());
+    QVERIFY2(err.contains(u"IMU-branch board (4 knobs), legacy protocol"_s), qPrintable(err));
+}
+
 void TestSimulatorHost::binaryRefusesBadOptions_data()
 {
     QTest::addColumn<QStringList>("arguments");
@@ -319,6 +346,22 @@ void TestSimulatorHost::binaryRefusesBadOptions_data()
                                 << u"Fault spec item \"delay=0.1:20\": delay's duration"_s;
     QTest::newRow("missing value") << QStringList{u"--rate"_s} << u"rate"_s;
     QTest::newRow("positional argument") << QStringList{u"extra"_s} << u"extra"_s;
+    QTest::newRow("unknown board")
+        << QStringList{u"--device"_s, u"arm"_s} << u"--device: must be knob or imu-branch"_s;
+    QTest::newRow("tilt on a single knob")
+        << QStringList{u"--tilt"_s, u"0.1,0"_s} << u"need --device imu-branch"_s;
+    QTest::newRow("hand-2 on a single knob")
+        << QStringList{u"--hand-2"_s, u"idle"_s} << u"need --device imu-branch"_s;
+    QTest::newRow("imu-branch over v2")
+        << QStringList{u"--device"_s, u"imu-branch"_s, u"--protocol"_s, u"v2"_s}
+        << u"legacy frames"_s;
+    QTest::newRow("tilt beyond a quarter turn")
+        << QStringList{u"--device"_s, u"imu-branch"_s, u"--tilt"_s, u"2,0"_s} << u"--tilt"_s;
+    QTest::newRow("tilt not two numbers")
+        << QStringList{u"--device"_s, u"imu-branch"_s, u"--tilt"_s, u"0.1"_s} << u"ROLL,PITCH"_s;
+    QTest::newRow("bad hand-4") << QStringList{u"--device"_s, u"imu-branch"_s, u"--hand-4"_s,
+                                               u"sine:1"_s}
+                                << u"--hand-4: "_s;
     // A pipe as the state file once blocked open() before signals were handled (issue 10).
     static QTemporaryDir dir;
     const QString fifo = dir.filePath(u"state.fifo"_s);
