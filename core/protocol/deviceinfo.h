@@ -43,6 +43,8 @@ struct DeviceInfo
     QString firmware;           //!< legacy: "published firmware (legacy)"
     bool simulated = false;     //!< the in-process simulator
     quint8 capabilities = 0;    //!< HELLO_REPLY's v2::kCapability* bits; legacy: 0
+    quint8 axes = 1;            //!< knobs, 1…kMaxAxes (model/axes.h): 4 for the IMU branch
+    bool tilt = false;          //!< it measures its tilt (roll, pitch): the IMU branch
     bool canSetParams() const { return protocol == WireProtocol::V2; }
     //! SET_EFFECTS, GET_EFFECTS, VIBRATE and τ_fx in TELEMETRY (effects.md § 3).
     bool hasEffects() const

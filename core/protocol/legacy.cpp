@@ -274,6 +274,11 @@ double Conversion::fieldToFeedback(int a) const
     return static_cast<double>(a - kFeedbackZero) * tauLimit / 1000.0;
 }
 
+double imuBranchAngle(int field)
+{
+    return Conversion{}.ticksToRad(field); // the default centre is the branch's
+}
+
 // ---- TiltConversion ----
 
 double TiltConversion::rollFromField(int roll)

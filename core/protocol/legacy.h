@@ -1,6 +1,8 @@
 // Legacy ASCII protocol of the published HATPIC firmware (protocol.md § 1).
 #pragma once
 
+#include "model/axes.h"
+
 #include <QByteArray>
 #include <QByteArrayView>
 #include <QList>
@@ -42,6 +44,11 @@ struct Frame
 
 //! Servos of the IMU-branch board (ids 1–4), one per frame field A…D.
 constexpr int kImuBranchServos = 4;
+static_assert(kImuBranchServos <= kMaxAxes);
+
+//! θ [rad] of the IMU branch's position field P_n: (P_n − 1000) · 2π / 4096 (its firmware
+//! centres every servo on 1000).
+double imuBranchAngle(int field);
 
 constexpr int kFieldLimit = 99999; //!< |field| larger than this is malformed
 

@@ -188,6 +188,10 @@ void DeviceSession::dispatch(const std::vector<Received> &events)
                        },
                        [this](const received::LegacyFrame &f) {
                            m_statistics.countFrame();
+                           if (f.frame.tilt && !m_info.tilt) { // the IMU branch's board
+                               m_info = m_driver->info();
+                               Q_EMIT deviceInfoChanged(m_info);
+                           }
                            m_samples.push(m_samples.builder().fromLegacy(
                                f.frame, *f.conversion, f.tauExt, m_clock.nsecsElapsed() / 1000));
                        },
@@ -292,7 +296,10 @@ void DeviceSession::onFoundV2(const v2::HelloReply &reply, const QList<v2::Frame
 
 void DeviceSession::onFoundLegacy()
 {
-    becomeConnected(std::make_unique<LegacyDriver>(m_options, m_link->baud(), writer()));
+    auto driver = std::make_unique<LegacyDriver>(m_options, m_link->baud(), writer());
+    if (m_detector.heardImuBranch()) // known before the first sample, and so to a recording
+        driver->noteImuBranch();
+    becomeConnected(std::move(driver));
 }
 
 void DeviceSession::becomeConnected(std::unique_ptr<ProtocolDriver> driver)

@@ -27,15 +27,28 @@ void LegacyDriver::feed(const QByteArray &bytes, std::vector<Received> &out)
             out.push_back(received::Text{std::move(line)});
     }
     const double tauExt = m_feedbackOn ? m_conversion.fieldToFeedback(m_field) : 0.0;
-    for (const legacy::Frame &frame : std::as_const(frames))
+    for (const legacy::Frame &frame : std::as_const(frames)) {
+        if (frame.tilt) // what the board is shows in its frames only
+            noteImuBranch();
         out.push_back(received::LegacyFrame{frame, &m_conversion, tauExt});
+    }
+}
+
+void LegacyDriver::noteImuBranch()
+{
+    m_info.axes = legacy::kImuBranchServos;
+    m_info.tilt = true;
+    m_info.firmware = QStringLiteral("published IMU branch (legacy)");
 }
 
 void LegacyDriver::sendFeedback(double tauExt)
 {
-    // One whole frame per write: the published firmware busy-waits from 'i' to 'o'.
+    // One whole frame per write: the published firmware busy-waits from 'i' to 'o'. B, C and D
+    // carry no force: the master firmware ignores them, and the IMU branch adds each − 1000 to
+    // servo 2, 3, 4's torque, so the 0 the published driver sends would be −100 % there.
     m_field = m_conversion.feedbackToField(tauExt);
-    m_write(legacy::encodeFrame(legacy::Frame{m_field, 0, 0, 0}));
+    constexpr int kNoForce = legacy::Conversion::kFeedbackZero;
+    m_write(legacy::encodeFrame(legacy::Frame{m_field, kNoForce, kNoForce, kNoForce}));
 }
 
 std::optional<outcome::Unsupported::Why> LegacyDriver::refusal(CommandKind step) const

@@ -24,6 +24,9 @@ public:
     static constexpr double kMaxFeedbackHz = 100;
 
     void sendFeedback(double tauExt) override;
+    //! The device is the IMU branch's board (four knobs, a tilt): detection heard it, or its
+    //! first frame with the tilt says so.
+    void noteImuBranch();
     double maxFeedbackHz() const override { return kMaxFeedbackHz; }
     bool sendPing(quint32) override { return false; }
     std::optional<outcome::Unsupported::Why> refusal(CommandKind step) const override;

@@ -43,6 +43,8 @@ public:
     const v2::DecoderStats &decoderStats() const { return m_v2.stats(); }
     //! Hands over the v2 decoder (it may hold the start of the next frame).
     v2::FrameDecoder takeDecoder();
+    //! The legacy frames it listened to were the IMU branch's (with the tilt).
+    bool heardImuBranch() const { return m_legacy.stats().tiltFrames > 0; }
 
 Q_SIGNALS:
     //! What detection is doing, for the Detecting state's detail.

@@ -13,6 +13,8 @@ namespace hatpic {
 void SampleBuilder::clear()
 {
     m_reference.clear();
+    for (ReferenceGenerator &reference : m_moreReferences)
+        reference.clear();
     m_started = false;
     m_discontinuity = false;
     m_lastDeviceUs = 0;
@@ -79,9 +81,11 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     Sample s;
     s.t_s = sessionTime();
     s.t_us = hostClock;
-    s.theta = conversion.ticksToRad(frame.a);
-    s.omega = std::numeric_limits<double>::quiet_NaN();
-    s.tau = std::numeric_limits<double>::quiet_NaN();
+    constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+    // The IMU branch centres every servo on 1000 itself; the master's centre is configurable.
+    s.theta = frame.tilt ? legacy::imuBranchAngle(frame.a) : conversion.ticksToRad(frame.a);
+    s.omega = kUnknown;
+    s.tau = kUnknown;
     s.tau_rec = recenteringTorque(m_stiffness, s.theta);
     s.tau_ext = tauExt;
     // The published firmware has no capability (effects, passivity controller): what one brings
@@ -99,6 +103,27 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
         flags |= v2::kFlagSaturated;
     s.flags = flags;
     addReference(s);
+    if (frame.tilt) {
+        auto board = std::make_shared<BoardSample>();
+        board->axes = legacy::kImuBranchServos;
+        const std::array<int, 4> fields = frame.fields();
+        for (std::size_t k = 0; k + 1 < std::size_t(legacy::kImuBranchServos); ++k) {
+            AxisSample &axis = board->more[k];
+            axis.theta = legacy::imuBranchAngle(fields[k + 1]);
+            axis.omega = kUnknown;
+            axis.tau = kUnknown;
+            axis.tau_rec = recenteringTorque(m_stiffness, axis.theta);
+            axis.tau_ext = 0; // the host sends these knobs none (LegacyDriver::sendFeedback)
+            axis.tau_total = std::clamp(axis.tau_rec + axis.tau_ext, -m_tauLimit, m_tauLimit);
+            const auto reference =
+                m_moreReferences[k].update(m_referenceUs, m_referenceShape, axis.theta);
+            axis.v_ref = reference.v_ref;
+            axis.p_ref = reference.p_ref;
+        }
+        board->roll = legacy::TiltConversion::rollFromField(frame.tilt->roll);
+        board->pitch = legacy::TiltConversion::pitchFromField(frame.tilt->pitch);
+        s.board = std::move(board);
+    }
     return s;
 }
 

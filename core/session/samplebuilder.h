@@ -12,6 +12,8 @@
 
 #include <QtGlobal>
 
+#include <array>
+
 namespace hatpic {
 
 class SampleBuilder
@@ -38,8 +40,13 @@ public:
     //! Torque limit τ_total is clamped to [N·m].
     void setTauLimit(double tauLimit) { m_tauLimit = tauLimit; }
 
-    //! p_ref := 0.
-    void resetReference() { m_reference.resetPosition(); }
+    //! p_ref := 0, on every axis.
+    void resetReference()
+    {
+        m_reference.resetPosition();
+        for (ReferenceGenerator &reference : m_moreReferences)
+            reference.resetPosition();
+    }
     //! The next sample comes from a new connection: its device clock is not comparable with
     //! the last one, so t_s advances by host time there.
     void markDiscontinuity() { m_discontinuity = true; }
@@ -49,6 +56,8 @@ public:
     //! @param hostUs host monotonic time of reception [µs]
     Sample fromTelemetry(const v2::Telemetry &telemetry, qint64 hostUs);
     //! A legacy frame: θ from ticks, τ_rec estimated from the model; ω and τ unknown (NaN).
+    //! The IMU branch's frame (with its tilt) makes a four-axis sample with roll and pitch,
+    //! every knob estimated the same way and given its own reference.
     //! @param tauExt the feedback torque the device renders (after its conversion) [N·m]
     Sample fromLegacy(const legacy::Frame &frame, const legacy::Conversion &conversion,
                       double tauExt, qint64 hostUs);
@@ -69,6 +78,7 @@ private:
     ReferenceShape m_referenceShape = ReferenceShape::from(m_host, m_device);
     double m_tauLimit = 0.44;
     ReferenceGenerator m_reference;
+    std::array<ReferenceGenerator, kMaxAxes - 1> m_moreReferences; //!< axes 2…
     bool m_started = false;
     bool m_discontinuity = false;
     quint32 m_lastDeviceUs = 0;
