@@ -7,12 +7,14 @@
 
 namespace hatpic {
 
-QStringList recordingColumns()
+QStringList recordingColumns(int axes, bool tilt)
 {
     QStringList columns;
     for (const SampleColumn &column : kSampleColumns)
         columns << QString::fromUtf8(column.name.data(),
                                      static_cast<qsizetype>(column.name.size()));
+    for (const QByteArray &extra : extraSampleColumns(axes, tilt))
+        columns << QString::fromLatin1(extra);
     columns << QStringLiteral("event");
     return columns;
 }

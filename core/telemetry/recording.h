@@ -18,9 +18,10 @@
 
 namespace hatpic {
 
-//! Header of the CSV, in column order: the sample columns (samplecolumns.h), then "event", the
-//! text of what the device applied (or what happened) on that sample.
-QStringList recordingColumns();
+//! Header of the CSV, in column order: the sample columns (samplecolumns.h), the columns a
+//! device with `axes` axes and a tilt sensor adds (extraSampleColumns; none for a single knob),
+//! then "event", the text of what the device applied (or what happened) on that sample.
+QStringList recordingColumns(int axes = 1, bool tilt = false);
 
 struct RecordingMetadata
 {

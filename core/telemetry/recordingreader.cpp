@@ -20,6 +20,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace hatpic {
@@ -111,6 +112,25 @@ constexpr std::size_t kColFlags = sampleColumnIndex("flags");
 constexpr std::size_t kColEvent = kSampleColumns.size();
 constexpr std::size_t kColCount = kColEvent + 1;
 
+// The columns a multi-axis device adds (extraSampleColumns for the most axes, with the tilt):
+// each axis's kAxisColumns in turn, then kTiltColumns.
+constexpr std::size_t kPerAxis = kAxisColumns.size();
+constexpr std::size_t kAxisExtras = kPerAxis * (kMaxAxes - 1);
+
+//! The axis (2…) of extra column `e`; 0 for the tilt's.
+int extraAxis(std::size_t e)
+{
+    return e < kAxisExtras ? int(e / kPerAxis) + 2 : 0;
+}
+
+//! Where extra column `e`'s value goes in `board`.
+double &extraValue(BoardSample &board, std::size_t e)
+{
+    if (e < kAxisExtras)
+        return board.more[e / kPerAxis].*kAxisColumns[e % kPerAxis].value;
+    return board.*kTiltColumns[e - kAxisExtras].value;
+}
+
 void applyMetadata(const QByteArray &text, const QString &fileName, Recording &rec,
                    QStringList &warnings);
 
@@ -177,6 +197,8 @@ void applyMetadata(const QByteArray &text, const QString &fileName, Recording &r
     m.device.deviceId = static_cast<quint32>(dev.value(u"device_id").toDouble());
     m.device.tauLimit = dev.value(u"tau_limit").toDouble(m.device.tauLimit);
     m.device.firmware = dev.value(u"firmware").toString();
+    m.device.axes = quint8(std::clamp(dev.value(u"axes").toInt(1), 1, kMaxAxes));
+    m.device.tilt = dev.value(u"tilt").toBool();
     // The parameters are read as a profile's are (paramsjson.h); what is missing or not of its
     // type keeps its default, with a warning.
     const QJsonObject params = root.value(u"parameters").toObject();
@@ -311,6 +333,10 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
     QList<QByteArray> fields;
     QString problem;
     const QStringList columns = recordingColumns();
+    const QList<QByteArray> extraNames = extraSampleColumns(kMaxAxes, true);
+    std::vector<int> extraIndex(std::size_t(extraNames.size()), -1);
+    int fileAxes = 1;             //!< the most axes the header has columns for
+    bool hasBoardColumns = false; //!< it has a further axis's or the tilt's
     qint64 eventChars = 0;
     bool eventsCut = false;
     int warningsLeft = kMaxWarnings;
@@ -362,6 +388,16 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
             for (int c = 0; c < columnCount; ++c) {
                 const QString name = QString::fromUtf8(fields[c].trimmed());
                 const qsizetype known = columns.indexOf(name);
+                if (const qsizetype extra = known < 0 ? extraNames.indexOf(name.toUtf8()) : -1;
+                    extra >= 0) {
+                    int &at = extraIndex[std::size_t(extra)];
+                    if (at >= 0)
+                        return fail(u"column \"" % name % u"\" appears twice");
+                    at = c;
+                    fileAxes = std::max(fileAxes, extraAxis(std::size_t(extra)));
+                    hasBoardColumns = true;
+                    continue;
+                }
                 if (known < 0) {
                     warn(u"line 1: unknown column \"" % name % u"\" ignored.");
                     continue;
@@ -412,6 +448,26 @@ bool readCsv(QIODevice &file, const QString &name, qint64 maxBytes, Recording &r
             }
             return fail(u"column " % columns[static_cast<qsizetype>(k)] % u": \"" %
                         QString::fromUtf8(fields[at].left(40)) % u"\" is not a number");
+        }
+        if (hasBoardColumns && !cutOff) {
+            auto board = std::make_shared<BoardSample>();
+            board->axes = fileAxes;
+            for (std::size_t e = 0; e < extraIndex.size(); ++e) {
+                if (extraAxis(e) > fileAxes)
+                    continue; // an axis the file does not have keeps its defaults
+                double &value = extraValue(*board, e);
+                value = std::numeric_limits<double>::quiet_NaN();
+                const int at = extraIndex[e];
+                if (at < 0 || parseDouble(fields[at], value))
+                    continue;
+                if (!complete) {
+                    cutOff = true;
+                    break;
+                }
+                return fail(u"column " % QString::fromUtf8(extraNames[qsizetype(e)]) % u": \"" %
+                            QString::fromUtf8(fields[at].left(40)) % u"\" is not a number");
+            }
+            s.board = std::move(board);
         }
         if (cutOff) {
             warn(u"line " % QString::number(lineNumber) %

@@ -25,16 +25,21 @@ constexpr qsizetype kFlushThresholdBytes = 256 * 1024; //!< write out earlier wh
 
 QByteArray deviceInfoJson(const DeviceInfo &d, int indent)
 {
-    return JsonObjectWriter(indent)
-        .add("port", jsonString(d.port))
+    JsonObjectWriter json(indent);
+    json.add("port", jsonString(d.port))
         .add("baud", QByteArray::number(d.baud))
         .add("simulated", jsonBool(d.simulated))
         .add("protocol_version", QByteArray::number(d.protocolVersion))
         .add("max_stream_hz", QByteArray::number(d.maxStreamHz))
         .add("device_id", QByteArray::number(d.deviceId))
         .add("tau_limit", jsonNumber(d.tauLimit))
-        .add("firmware", jsonString(d.firmware))
-        .text();
+        .add("firmware", jsonString(d.firmware));
+    // Said only by a device that has them: a single knob's metadata stays as it always was.
+    if (d.axes > 1)
+        json.add("axes", QByteArray::number(d.axes));
+    if (d.tilt)
+        json.add("tilt", jsonBool(d.tilt));
+    return json.text();
 }
 
 // ---- CSV ----
@@ -313,7 +318,8 @@ bool RecordingWriter::open(const QString &csvPath, const RecordingMetadata &meta
         return false;
     }
     d->open = true;
-    d->buffer = recordingColumns().join(u',').toUtf8() + '\n';
+    d->buffer =
+        recordingColumns(metadata.device.axes, metadata.device.tilt).join(u',').toUtf8() + '\n';
     if (!d->writeOut())
         return false;
     if (!json.commit()) {
@@ -360,6 +366,7 @@ bool RecordingWriter::append(const SampleBatch &batch)
         d->lastSeenT = s.t_s;
         d->bufferTimes.push_back(s.t_s);
         appendSampleCsvRow(out, s);
+        appendExtraCsvFields(out, s, d->metadata.device.axes, d->metadata.device.tilt);
         out += ',';
         // Events left out are noted on the next row with a kept event, or at most once per
         // second of recording time, so the note itself cannot flood the file.

@@ -7,6 +7,7 @@
 #include "telemetry/sample.h"
 
 #include <QByteArray>
+#include <QList>
 
 #include <array>
 #include <cstddef>
@@ -72,6 +73,54 @@ constexpr std::size_t sampleColumnIndex(std::string_view name)
 
 static_assert(sampleColumnIndex("t_s") == 0 && !kSampleColumns.back().name.empty());
 static_assert(kFirstQuantityColumn + kQuantityColumnCount == sampleColumnIndex("flags"));
+
+//! One quantity of each further axis of a multi-axis device (Sample::more): its column for axis
+//! n (2…axes) is `<name>_<n>`, in the unit and meaning of the sample column `name` (axis 1's).
+struct AxisColumn
+{
+    std::string_view name;
+    double AxisSample::*value;
+};
+
+inline constexpr std::array<AxisColumn, 8> kAxisColumns{{
+    {"theta", &AxisSample::theta},
+    {"omega", &AxisSample::omega},
+    {"tau", &AxisSample::tau},
+    {"tau_rec", &AxisSample::tau_rec},
+    {"tau_ext", &AxisSample::tau_ext},
+    {"tau_total", &AxisSample::tau_total},
+    {"v_ref", &AxisSample::v_ref},
+    {"p_ref", &AxisSample::p_ref},
+}};
+static_assert([] {
+    for (const AxisColumn &column : kAxisColumns) {
+        if (sampleColumnIndex(column.name) == kSampleColumns.size())
+            return false;
+    }
+    return true;
+}());
+
+//! The board's tilt (BoardSample::roll, ::pitch), after the further axes' columns.
+struct TiltColumn
+{
+    std::string_view name;
+    std::string_view unit;
+    std::string_view meaning;
+    double BoardSample::*value;
+};
+
+inline constexpr std::array<TiltColumn, 2> kTiltColumns{{
+    {"roll", "rad", "the board's roll away from level", &BoardSample::roll},
+    {"pitch", "rad", "the board's pitch", &BoardSample::pitch},
+}};
+
+//! The columns a device with `axes` axes and (or not) a tilt sensor adds after the sample
+//! columns: theta_2 … p_ref_2, theta_3 …, …, then roll, pitch. None for a single knob.
+QList<QByteArray> extraSampleColumns(int axes, bool tilt);
+
+//! Appends `,value` for each of extraSampleColumns(axes, tilt) to `row`, as
+//! appendSampleCsvRow writes its numbers (NaN, and axes the sample lacks, as empty fields).
+void appendExtraCsvFields(QByteArray &row, const Sample &sample, int axes, bool tilt);
 
 //! The header of the sample CSV, "t_s,theta,…,flags,tau_fx,tau_pc,pc_reserve", without line end.
 QByteArray sampleCsvHeader();
