@@ -52,6 +52,10 @@ protected:
             object.insert(u"tau_limit"_s, shortestFloatDecimal(info.tauLimit));
             object.insert(u"can_set_params"_s, info.canSetParams());
             object.insert(u"simulated"_s, info.simulated);
+            if (info.axes > 1 || info.tilt) { // a board with several knobs (the IMU branch)
+                object.insert(u"axes"_s, info.axes);
+                object.insert(u"tilt"_s, info.tilt);
+            }
             writeOut(QJsonDocument(object).toJson(QJsonDocument::Indented));
             return ExitSuccess;
         }
@@ -70,6 +74,10 @@ protected:
         text += line(u"parameters"_s,
                      info.canSetParams() ? u"read and write"_s : u"not carried (legacy)"_s);
         text += line(u"simulated"_s, info.simulated ? u"yes"_s : u"no"_s);
+        if (info.axes > 1 || info.tilt) {
+            text += line(u"knobs"_s, QString::number(info.axes));
+            text += line(u"tilt"_s, info.tilt ? u"roll and pitch"_s : u"none"_s);
+        }
         writeOut(text);
         return ExitSuccess;
     }

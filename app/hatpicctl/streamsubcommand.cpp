@@ -46,7 +46,9 @@ public:
                    u"Streams telemetry for --duration seconds (default: until Ctrl+C).\n"
                    "Without --csv every sample goes to stdout as CSV with the header\n"_s +
                    QString::fromLatin1(sampleCsvHeader()) +
-                   u".\n"
+                   u",\n"
+                   "then a device with several knobs or a tilt adds theta_2 ... p_ref_2, ...,\n"
+                   "roll, pitch (docs/recording.md).\n"
                    "With --csv FILE the samples are recorded to FILE (the tuner's recording\n"
                    "format, metadata in FILE's .json sibling) and stdout stays empty. An\n"
                    "existing FILE or .json is never overwritten without --force.\n"
@@ -157,9 +159,19 @@ protected:
                                               : client.recordingStatus().error));
                 return ExitBadUsage;
             }
-        } else {
-            writeOut(sampleCsvHeader() + '\n');
         }
+        // To stdout the header goes with the first samples: the IMU branch's board says what it
+        // is (four knobs, a tilt) in its first frame. A stream without samples still gets it.
+        std::optional<DeviceInfo> columnsOf;
+        const auto writeHeader = [&] {
+            if (columnsOf || !m_csvPath.isEmpty())
+                return;
+            columnsOf = client.deviceInfo();
+            QByteArray header = sampleCsvHeader();
+            for (const QByteArray &extra : extraSampleColumns(columnsOf->axes, columnsOf->tilt))
+                header += ',' + extra;
+            writeOut(header + '\n');
+        };
 
         quint64 samples = 0;
         bool recordingFailed = false;
@@ -169,19 +181,21 @@ protected:
                              if (!status.active && !status.error.isEmpty())
                                  recordingFailed = true;
                          });
-        QObject::connect(&client, &DeviceClient::samplesReady, &context,
-                         [&](const SampleBatch &batch) {
-                             samples += static_cast<quint64>(batch.size());
-                             if (m_csvPath.isEmpty()) {
-                                 QByteArray rows;
-                                 for (const Sample &sample : batch) {
-                                     appendSampleCsvRow(rows, sample);
-                                     rows += '\n';
-                                 }
-                                 writeOut(rows);
-                                 stdoutClosed = stdoutClosed || !flushOut();
-                             }
-                         });
+        QObject::connect(
+            &client, &DeviceClient::samplesReady, &context, [&](const SampleBatch &batch) {
+                samples += static_cast<quint64>(batch.size());
+                if (m_csvPath.isEmpty()) {
+                    writeHeader();
+                    QByteArray rows;
+                    for (const Sample &sample : batch) {
+                        appendSampleCsvRow(rows, sample);
+                        appendExtraCsvFields(rows, sample, columnsOf->axes, columnsOf->tilt);
+                        rows += '\n';
+                    }
+                    writeOut(rows);
+                    stdoutClosed = stdoutClosed || !flushOut();
+                }
+            });
         QObject::connect(&client, &DeviceClient::statsUpdated, &context,
                          [&](const LinkStats &) { ++m_statsUpdates; });
 
@@ -198,6 +212,7 @@ protected:
                                  [&] { return interrupted || recordingFailed || stdoutClosed; });
         }
         const double seconds = elapsed.nsecsElapsed() * 1e-9;
+        writeHeader();
         QObject::disconnect(&client, &DeviceClient::samplesReady, &context, nullptr);
 
         // The recording covers the requested duration, not the wait for statistics below.

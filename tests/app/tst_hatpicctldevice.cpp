@@ -20,6 +20,24 @@ using namespace hatpic;
 using namespace hatpic::test;
 using namespace Qt::StringLiterals;
 
+namespace {
+
+#ifdef HATPIC_SIM_PATH
+//! Starts hatpic-sim with `arguments` and returns its pseudo-terminal's path, the first line it
+//! prints; empty when it did not start or say one within 10 s.
+QString startSim(QProcess &sim, const QStringList &arguments)
+{
+    sim.start(QStringLiteral(HATPIC_SIM_PATH), arguments);
+    if (!sim.waitForStarted(5000))
+        return {};
+    for (int waited = 0; !sim.canReadLine() && waited < 10000; waited += 50)
+        sim.waitForReadyRead(50);
+    return QString::fromLocal8Bit(sim.readLine()).trimmed();
+}
+#endif
+
+} // namespace
+
 class TestHatpicCtlDevice : public CtlTest
 {
     Q_OBJECT
@@ -38,6 +56,7 @@ private Q_SLOTS:
     void silentPort();
     void ptySimulator();
     void ptyLegacySimulator();
+    void ptyImuBranchSimulator();
     void ptyLinkLostDuringStream();
     void ptySaveStorageError();
     void streamInterruptedEndsCleanly_data();
@@ -236,12 +255,8 @@ void TestHatpicCtlDevice::ptySimulator()
 #else
     const QString link = m_dir.filePath(u"hatpic"_s);
     QProcess sim;
-    sim.setProgram(QStringLiteral(HATPIC_SIM_PATH));
-    sim.setArguments({u"--link"_s, link});
-    sim.start();
-    QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
-    QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
-    const QString path = QString::fromLocal8Bit(sim.readLine()).trimmed();
+    const QString path = startSim(sim, {u"--link"_s, link});
+    QVERIFY2(!path.isEmpty(), qPrintable(sim.errorString()));
     QVERIFY2(path.startsWith(u"/dev/"_s), qPrintable(path));
 
     const Run get = runCtl({u"get"_s, u"--port"_s, link});
@@ -283,12 +298,8 @@ void TestHatpicCtlDevice::ptyLegacySimulator()
 #else
     // The published firmware's protocol: identity and telemetry work, parameters cannot.
     QProcess sim;
-    sim.setProgram(QStringLiteral(HATPIC_SIM_PATH));
-    sim.setArguments({u"--protocol"_s, u"legacy"_s});
-    sim.start();
-    QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
-    QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
-    const QString path = QString::fromLocal8Bit(sim.readLine()).trimmed();
+    const QString path = startSim(sim, {u"--protocol"_s, u"legacy"_s});
+    QVERIFY2(!path.isEmpty(), qPrintable(sim.errorString()));
 
     const Run info = runCtl({u"info"_s, u"--port"_s, path});
     QVERIFY2(info.code == 0, qPrintable(describe(info)));
@@ -322,6 +333,53 @@ void TestHatpicCtlDevice::ptyLegacySimulator()
     // …nor a passivity controller: τ_pc and R unknown.
     QVERIFY2(fields[11].isEmpty() && fields[12].isEmpty(), lines[1].constData());
     QVERIFY(!fields[1].isEmpty());
+
+    sim.terminate();
+    QVERIFY(sim.waitForFinished(10000));
+#endif
+}
+
+void TestHatpicCtlDevice::ptyImuBranchSimulator()
+{
+#ifndef HATPIC_SIM_PATH
+    QSKIP("hatpic-sim is not built");
+#else
+    // The published IMU branch's board: four knobs and the tilt, to stdout and to a recording.
+    QProcess sim;
+    const QString path = startSim(sim, {u"--device"_s, u"imu-branch"_s, u"--hand-2"_s,
+                                        u"const:0.05"_s, u"--tilt"_s, u"0.3,0"_s});
+    QVERIFY2(!path.isEmpty(), qPrintable(sim.errorString()));
+
+    const Run info = runCtl({u"info"_s, u"--port"_s, path});
+    QVERIFY2(info.code == 0, qPrintable(describe(info)));
+    QVERIFY2(info.out.contains("published IMU branch (legacy)") &&
+                 info.out.contains("knobs             4") &&
+                 info.out.contains("tilt              roll and pitch"),
+             qPrintable(describe(info)));
+
+    const Run out = runCtl({u"stream"_s, u"--port"_s, path, u"--duration"_s, u"1.2"_s});
+    QVERIFY2(out.code == 0, qPrintable(describe(out)));
+    const QList<QByteArray> lines = out.out.trimmed().split('\n');
+    QVERIFY2(lines.size() >= 3, qPrintable(describe(out)));
+    const QList<QByteArray> header = lines[0].split(',');
+    QCOMPARE(header.size(), 13 + 3 * 8 + 2);
+    QCOMPARE(header[13], QByteArray("theta_2"));
+    QCOMPARE(header.last(), QByteArray("pitch"));
+    const QList<QByteArray> fields = lines.last().split(',');
+    QCOMPARE(fields.size(), header.size());
+    QVERIFY2(fields[13].toDouble() > 0.02, lines.last().constData()); // knob 2 pushed
+    QVERIFY2(fields[14].isEmpty(), lines.last().constData());         // omega_2 not carried
+    QVERIFY2(std::abs(fields[header.size() - 2].toDouble() - 0.3) < 1e-3, lines.last().constData());
+
+    const QString csv = m_dir.filePath(u"imu-stream.csv"_s);
+    const Run stream =
+        runCtl({u"stream"_s, u"--port"_s, path, u"--duration"_s, u"1.2"_s, u"--csv"_s, csv});
+    QVERIFY2(stream.code == 0, qPrintable(describe(stream)));
+    const RecordingReadResult read = readRecording(csv);
+    QVERIFY2(read.recording.has_value(), qPrintable(read.error));
+    QVERIFY(!read.recording->samples.isEmpty());
+    QCOMPARE(read.recording->samples.last().axes(), 4);
+    QVERIFY(read.recording->samples.last().axis(2)->theta > 0.02);
 
     sim.terminate();
     QVERIFY(sim.waitForFinished(10000));
@@ -375,12 +433,9 @@ void TestHatpicCtlDevice::ptySaveStorageError()
     // A state file in a folder that does not exist: SAVE_PARAMS fails on the device, which
     // answers STORAGE_ERROR, and hatpicctl exits with 2 (docs/cli.md, exit codes).
     QProcess sim;
-    sim.setProgram(QStringLiteral(HATPIC_SIM_PATH));
-    sim.setArguments({u"--state"_s, m_dir.filePath(u"no-such-folder/state.json"_s)});
-    sim.start();
-    QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
-    QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
-    const QString path = QString::fromLocal8Bit(sim.readLine()).trimmed();
+    const QString path =
+        startSim(sim, {u"--state"_s, m_dir.filePath(u"no-such-folder/state.json"_s)});
+    QVERIFY2(!path.isEmpty(), qPrintable(sim.errorString()));
 
     const Run save = runCtl({u"save"_s, u"--port"_s, path});
     sim.terminate();
