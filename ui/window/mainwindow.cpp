@@ -8,6 +8,7 @@
 #include "editor/chatterdetector.h"
 #include "editor/deviceparameterlink.h"
 #include "editor/parametereditor.h"
+#include "plots/knobsview.h"
 #include "plots/plotactions.h"
 #include "plots/plotfeed.h"
 #include "plots/plotpanel.h"
@@ -76,6 +77,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
                                     .simPanel = m_simPanel,
                                     .simulator = m_simulator.get(),
                                     .view = m_menus->viewMenu()});
+    addKnobsDock();
     connectParts();
     setWindowTitle(m_profiles->windowTitle());
     m_firstState = saveState(); // before the saved layout: what Reset layout returns to
@@ -180,6 +182,10 @@ void MainWindow::connectParts()
 
     // What the plots and the stiffness view show: the feed, live or replay.
     connect(m_client, &DeviceClient::samplesReady, m_feed, &PlotFeed::appendLive);
+    connect(m_client, &DeviceClient::samplesReady, m_knobs, [this](const SampleBatch &batch) {
+        m_knobs->setUnits(m_plots->units());
+        m_knobs->showSamples(batch);
+    });
     connect(m_client, &DeviceClient::samplesReady, new ChatterWatch(m_editor),
             &ChatterWatch::addSamples); // warns in the derived figures
     connect(m_client, &DeviceClient::deviceTuningChanged, m_feed, &PlotFeed::setLiveDeviceTuning);
@@ -299,6 +305,9 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
         m_linkStatus->setDeviceInfo(std::nullopt);
         m_docks.simulator->hide();
         m_docks.simulator->toggleViewAction()->setEnabled(false);
+        m_knobs->clear();
+        m_knobsDock->hide();
+        m_knobsDock->toggleViewAction()->setEnabled(false);
         m_simPanel->statusLabel()->hide();
         m_feed->setLiveDeviceTuning({});
     }
@@ -309,9 +318,25 @@ void MainWindow::onStateChanged(SessionState state, const StateDetail &event)
     updateActions();
 }
 
+void MainWindow::addKnobsDock()
+{
+    m_knobs = new KnobsView(this);
+    m_knobsDock = new QDockWidget(tr("Knobs"), this);
+    m_knobsDock->setObjectName(QStringLiteral("knobsDock"));
+    m_knobsDock->setWidget(m_knobs);
+    addDockWidget(Qt::BottomDockWidgetArea, m_knobsDock);
+    m_knobsDock->hide();
+    m_knobsDock->toggleViewAction()->setEnabled(false);
+    m_menus->viewMenu()->addAction(m_knobsDock->toggleViewAction());
+}
+
 void MainWindow::onDeviceInfo(const DeviceInfo &info)
 {
     m_linkStatus->setDeviceInfo(info);
+    const bool board = info.axes > 1 || info.tilt;
+    m_knobsDock->toggleViewAction()->setEnabled(board);
+    if (board != m_knobsDock->isVisible())
+        m_knobsDock->setVisible(board);
     m_docks.simulator->toggleViewAction()->setEnabled(info.simulated);
     m_docks.simulator->setVisible(info.simulated);
     m_simPanel->statusLabel()->setVisible(info.simulated);

@@ -17,6 +17,8 @@
 
 class QAction;
 
+class QDockWidget;
+
 namespace hatpic {
 
 class ConnectionBar;
@@ -27,6 +29,7 @@ class LinkStatusWidget;
 class ParameterEditor;
 class PlotActions;
 class PlotFeed;
+class KnobsView;
 class PlotPanel;
 class ProfileController;
 class RecordingControls;
@@ -95,6 +98,8 @@ private:
 
     void onStateChanged(SessionState state, const StateDetail &event);
     void onDeviceInfo(const DeviceInfo &info);
+    //! The Knobs dock: a board's several knobs and its tilt (hidden for a single knob).
+    void addKnobsDock();
     void setAngleInDegrees(bool degrees);
     void showStatus(const QString &message);
     void openRecordingInteractive();
@@ -125,6 +130,8 @@ private:
     WindowActions *m_actions = nullptr;
     WindowMenus *m_menus = nullptr;
     WindowDocks m_docks;
+    KnobsView *m_knobs = nullptr;
+    QDockWidget *m_knobsDock = nullptr; //!< "knobsDock": shown for a board with several knobs
     ThemeController *m_theme = nullptr;
 
     QString m_port;               //!< port of the current or last connection

@@ -10,6 +10,7 @@
 #include "editor/deviceparameterlink.h"
 #include "editor/parametereditor.h"
 #include "mainwindowtest.h"
+#include "plots/knobsview.h"
 #include "plots/plotfeed.h"
 #include "plots/plotpanel.h"
 #include "plots/qcp.h"
@@ -72,6 +73,7 @@ private Q_SLOTS:
     void disconnectKeepsPlotData();
     void lostLinkKeepsDataAndReconnects();
     void degreesToggleReachesEveryView();
+    void imuBranchBoardShowsItsKnobs();
 };
 
 void TestMainWindow::connectsToSimulatorAndPlotsSamples_data()
@@ -94,6 +96,9 @@ void TestMainWindow::connectsToSimulatorAndPlotsSamples()
              QStringLiteral("Disconnect"));
     QVERIFY(find<QDockWidget>("simulatorDock")->isVisible());
     QCOMPARE(find<SimulatorPanel>("simulatorPanel")->hand(), SimulatorPanel::gentleHand());
+    // One knob: its plots show it all, and the Knobs dock stays away.
+    QVERIFY(!find<QDockWidget>("knobsDock")->isVisible());
+    QVERIFY(!find<QDockWidget>("knobsDock")->toggleViewAction()->isEnabled());
 
     QVERIFY(waitForSamples(1500));
     PlotPanel *plots = find<PlotPanel>("plotPanel");
@@ -438,6 +443,49 @@ void TestMainWindow::degreesToggleReachesEveryView()
     // The editor's own check box drives the same switch.
     find<ParameterEditor>("parameterEditor")->setAngleInDegrees(false);
     QTRY_VERIFY(!degrees->isChecked());
+}
+
+void TestMainWindow::imuBranchBoardShowsItsKnobs()
+{
+#ifndef HATPIC_SIM_EXECUTABLE
+    QSKIP("hatpic-sim is not built");
+#else
+    // The published IMU branch's board (simulated, on a pseudo-terminal): four knobs and a tilt.
+    QProcess sim;
+    sim.start(QStringLiteral(HATPIC_SIM_EXECUTABLE),
+              {QStringLiteral("--device"), QStringLiteral("imu-branch"), QStringLiteral("--hand-2"),
+               QStringLiteral("const:0.05"), QStringLiteral("--tilt"), QStringLiteral("0.3,-0.2")});
+    QVERIFY(sim.waitForStarted(5000));
+    QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
+    ConnectOptions options;
+    options.port = QString::fromLocal8Bit(sim.readLine()).trimmed();
+    m_window->connectTo(options);
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Connected, kConnectMs);
+    auto *dock = find<QDockWidget>("knobsDock");
+    auto *knobs = find<KnobsView>("knobs_view");
+    QTRY_VERIFY_WITH_TIMEOUT(dock->isVisible(), kConnectMs);
+    QVERIFY(dock->toggleViewAction()->isEnabled());
+    QTRY_COMPARE_WITH_TIMEOUT(knobs->knobs(), 4, kDataMs);
+    QVERIFY(knobs->showsTilt());
+    QTRY_VERIFY_WITH_TIMEOUT(knobs->knobAngle(2) > 0.02, kDataMs); // knob 2 is pushed
+    QVERIFY(std::abs(knobs->knobAngle(1)) < 0.01);
+    QVERIFY2(knobs->text().contains(QStringLiteral("Knob 4: ")) &&
+                 knobs->text().contains(QStringLiteral("; roll ")),
+             qPrintable(knobs->text()));
+    QVERIFY2(linkStatus()->identityText().contains(QStringLiteral("IMU branch")),
+             qPrintable(linkStatus()->identityText()));
+    find<PlotPanel>("plotPanel")->repaintNow();
+    QVERIFY(find<PlotPanel>("plotPanel")->pointCount(Channel::Theta) > 0); // knob 1 is plotted
+    const QImage shot = knobs->grab().toImage();
+    QVERIFY(shot.width() >= 5 * 84 && shot.height() >= 84);
+
+    m_window->disconnectDevice();
+    QTRY_COMPARE_WITH_TIMEOUT(client()->state(), SessionState::Disconnected, kConnectMs);
+    QVERIFY(!dock->isVisible());
+    QCOMPARE(knobs->knobs(), 0);
+    sim.terminate();
+    QVERIFY(sim.waitForFinished(5000));
+#endif
 }
 
 QTEST_MAIN(TestMainWindow)
