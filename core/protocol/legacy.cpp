@@ -13,6 +13,7 @@ namespace {
 //! firmware's frame, and the host's); 'p' there goes on to the IMU branch's tilt.
 constexpr char kFieldEnd[6] = {'b', 'c', 'd', 'p', 'r', 'o'};
 constexpr int kFieldD = 3;
+constexpr int kFieldRoll = 4;
 constexpr int kFieldPitch = 5;
 
 bool isDigit(char c)
@@ -190,7 +191,7 @@ Decoder::Step Decoder::stepFrame(char c)
             return Step::Done;
         m_current.tilt = Tilt{};
         break;
-    case 4:
+    case kFieldRoll:
         m_current.tilt->roll = value;
         break;
     default:
@@ -277,6 +278,12 @@ double Conversion::fieldToFeedback(int a) const
 double imuBranchAngle(int field)
 {
     return Conversion{}.ticksToRad(field); // the default centre is the branch's
+}
+
+int imuBranchField(double theta)
+{
+    constexpr int kFieldMax = 2000; // the firmware's clamp of a position
+    return std::clamp(Conversion{}.radToTicks(theta), 0, kFieldMax);
 }
 
 // ---- TiltConversion ----

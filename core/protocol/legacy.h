@@ -13,8 +13,9 @@
 
 namespace hatpic::legacy {
 
-//! The tilt fields of the IMU branch's device frame: `p<ROLL>r<PITCH>` (docs/protocol.md § 1.2),
-//! each 0…2000 with 1000 level. Note the letter `p` comes before ROLL and `r` before PITCH.
+//! The tilt fields of the IMU branch's device frame: `p<ROLL>r<PITCH>` (docs/protocol.md § 1, the
+//! IMU branch's frames), each 0…2000 with 1000 level. Note the letter `p` comes before ROLL and `r`
+//! before PITCH.
 struct Tilt
 {
     int roll = 1000;
@@ -49,6 +50,9 @@ static_assert(kImuBranchServos <= kMaxAxes);
 //! θ [rad] of the IMU branch's position field P_n: (P_n − 1000) · 2π / 4096 (its firmware
 //! centres every servo on 1000).
 double imuBranchAngle(int field);
+//! The position field P_n the branch sends for θ [rad]: 1000 + round(θ · 4096 / 2π), clamped to
+//! 0…2000 as the firmware clamps it; NaN gives 1000.
+int imuBranchField(double theta);
 
 constexpr int kFieldLimit = 99999; //!< |field| larger than this is malformed
 
@@ -148,7 +152,7 @@ struct Conversion
     double fieldToFeedback(int a) const;
 };
 
-//! The IMU branch's tilt fields ↔ angles (docs/protocol.md § 1.2). The firmware maps its sensor's
+//! The IMU branch's tilt fields ↔ angles (docs/protocol.md § 1). The firmware maps its sensor's
 //! pitch −90°…90° onto 0…2000 and, the board being mounted upside down, its roll away from the
 //! ±180° it reads level onto 1000…0 (rolling one way) and 1000…2000 (the other), both clamped.
 //! Here roll is the board's roll away from level and pitch the sensor's pitch, each with the

@@ -97,8 +97,9 @@ public:
 
     void receive(QByteArrayView bytes);
     void receiveLegacy(QByteArrayView bytes);
-    //! The knob's frame: the master firmware's, or the IMU branch's with every knob and the tilt.
-    QByteArray legacyDeviceFrame() const;
+    //! The knob's frame: the master firmware's, or the IMU branch's with every knob (knob 1's
+    //! servo read `knob1` [rad] this cycle) and the tilt.
+    QByteArray legacyDeviceFrame(double knob1) const;
     //! Passes the host's frame on to knobs 2–4 of an IMU-branch board, as each one's field A.
     void forwardToOtherKnobs(QByteArrayView bytes);
     Cycle runCycle();
@@ -342,18 +343,14 @@ void SimulatedDevice::Private::forwardToOtherKnobs(QByteArrayView bytes)
         knob->receive(bytes);
 }
 
-QByteArray SimulatedDevice::Private::legacyDeviceFrame() const
+QByteArray SimulatedDevice::Private::legacyDeviceFrame(double knob1) const
 {
     if (otherKnobs.empty())
         return legacy::encodeFrame({legacyTicks(), 1000, 1000, 1000});
-    // The branch's P1…P4: the reading minus the servo's offset (the centre tick here), +1000,
-    // clamped to 0…2000.
-    const auto field = [](double theta) {
-        const double ticks = theta * kTicksPerRev / (2.0 * std::numbers::pi) + 1000.0;
-        return int(std::lround(std::clamp(ticks, 0.0, 2000.0)));
-    };
-    legacy::Frame frame{field(last.theta), field(otherAngles[0]), field(otherAngles[1]),
-                        field(otherAngles[2])};
+    // The branch's P1…P4: each servo's reading minus its offset (the centre tick here).
+    legacy::Frame frame{legacy::imuBranchField(knob1), legacy::imuBranchField(otherAngles[0]),
+                        legacy::imuBranchField(otherAngles[1]),
+                        legacy::imuBranchField(otherAngles[2])};
     frame.tilt = legacy::Tilt{legacy::TiltConversion::rollToField(roll),
                               legacy::TiltConversion::pitchToField(pitch)};
     return legacy::encodeFrame(frame);
@@ -400,9 +397,7 @@ SimulatedDevice::Cycle SimulatedDevice::Private::runCycle()
         nextLegacyUs += kLegacyPeriodUs;
         if (nextLegacyUs <= tUs)
             nextLegacyUs = tUs + kLegacyPeriodUs;
-        // Knob 1's reading of this cycle, which `last` gets below.
-        last.theta = r.theta;
-        if (!uart.write(QByteArray(legacyDeviceFrame() + "\r\n"), Traffic::Stream))
+        if (!uart.write(QByteArray(legacyDeviceFrame(r.theta) + "\r\n"), Traffic::Stream))
             ++legacyDropped;
     }
 

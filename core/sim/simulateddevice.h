@@ -38,7 +38,8 @@ public:
     //! Which board is simulated.
     enum class Board {
         Knob,      //!< one knob: the master firmware (legacy) or our device core (v2)
-        ImuBranch, //!< the published IMU branch: four knobs and a tilt, legacy only (§ 1.2)
+        ImuBranch, //!< the published IMU branch: four knobs and a tilt, legacy only (protocol.md §
+                   //!< 1)
     };
     //! Knobs beyond the first that an IMU-branch board has.
     static constexpr int kOtherKnobs = legacy::kImuBranchServos - 1;

@@ -36,14 +36,18 @@ void KnobsView::showSamples(const SampleBatch &batch)
 {
     if (batch.isEmpty())
         return;
+    const int knobsBefore = knobs();
+    const bool tiltBefore = showsTilt();
     m_sample = batch.constLast();
-    updateGeometry();
+    if (knobs() != knobsBefore || showsTilt() != tiltBefore)
+        updateGeometry(); // the size hint follows the drawings, not every batch
     update();
 }
 
 void KnobsView::clear()
 {
     m_sample.reset();
+    updateGeometry();
     update();
 }
 

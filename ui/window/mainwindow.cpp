@@ -182,10 +182,7 @@ void MainWindow::connectParts()
 
     // What the plots and the stiffness view show: the feed, live or replay.
     connect(m_client, &DeviceClient::samplesReady, m_feed, &PlotFeed::appendLive);
-    connect(m_client, &DeviceClient::samplesReady, m_knobs, [this](const SampleBatch &batch) {
-        m_knobs->setUnits(m_plots->units());
-        m_knobs->showSamples(batch);
-    });
+    connect(m_client, &DeviceClient::samplesReady, m_knobs, &KnobsView::showSamples);
     connect(m_client, &DeviceClient::samplesReady, new ChatterWatch(m_editor),
             &ChatterWatch::addSamples); // warns in the derived figures
     connect(m_client, &DeviceClient::deviceTuningChanged, m_feed, &PlotFeed::setLiveDeviceTuning);
@@ -377,6 +374,7 @@ void MainWindow::setAngleInDegrees(bool degrees)
 {
     m_actions->degrees->setChecked(degrees);
     m_plots->setAngleInDegrees(degrees);
+    m_knobs->setUnits(m_plots->units()); // angles only: the reference mode does not reach it
     m_stiffness->setAngleInDegrees(degrees);
     m_editor->setAngleInDegrees(degrees);
 }

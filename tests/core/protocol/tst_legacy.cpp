@@ -165,6 +165,18 @@ private Q_SLOTS:
         QCOMPARE(TiltConversion::pitchToField(pitchDeg * degree), pitchField);
     }
 
+    void imuBranchPositions()
+    {
+        // P_n: 1000 at the centre, 4096 a turn, clamped to 0…2000 as the branch's firmware does.
+        QCOMPARE(imuBranchField(0.0), 1000);
+        QCOMPARE(imuBranchField(2 * std::numbers::pi / 4096 * 12), 1012);
+        QCOMPARE(imuBranchField(-10.0), 0);
+        QCOMPARE(imuBranchField(10.0), 2000);
+        QCOMPARE(imuBranchField(std::nan("")), 1000);
+        for (int field = 0; field <= 2000; ++field)
+            QCOMPARE(imuBranchField(imuBranchAngle(field)), field);
+    }
+
     void tiltFieldsAreClamped()
     {
         const double quarter = std::numbers::pi / 2;
