@@ -141,7 +141,7 @@ int main(int argc, char **argv)
         for (long i = 0; i < n; ++i) {
             sum +=
                 builder
-                    .fromLegacy(frames[std::size_t(i) % kAngles], conversion, 0.0, qint64(i) * 1000)
+                    .fromLegacy(frames[std::size_t(i) % kAngles], conversion, {}, qint64(i) * 1000)
                     .tau_rec;
         }
         g_sink += sum;

@@ -169,14 +169,36 @@ void DeviceClient::removeSampleListener(SampleListener *listener)
 
 void DeviceClient::setFeedback(double tauExt)
 {
+    {
+        const std::lock_guard lock(m_feedbackMutex);
+        m_feedback[0] = tauExt;
+    }
+    postFeedback();
+}
+
+void DeviceClient::setFeedback(const AxisTorques &tauExt)
+{
+    {
+        const std::lock_guard lock(m_feedbackMutex);
+        m_feedback = tauExt;
+    }
+    postFeedback();
+}
+
+void DeviceClient::postFeedback()
+{
     // At most one call waits on the session thread, and it takes the newest value: a flood of
     // wrenches never makes its queue grow.
-    m_feedback.store(tauExt);
     if (m_feedbackPosted.exchange(true))
         return;
     QMetaObject::invokeMethod(m_session, [this, s = m_session] {
         m_feedbackPosted.store(false);
-        s->setFeedback(m_feedback.load());
+        AxisTorques newest;
+        {
+            const std::lock_guard lock(m_feedbackMutex);
+            newest = m_feedback;
+        }
+        s->setFeedback(newest);
     });
 }
 

@@ -58,8 +58,10 @@ public:
 
     //! τ_ext streamed to the device [N·m]: sent at once, within ConnectOptions'
     //! feedbackRateHz. Callable from any thread (the robot path calls it from the
-    //! middleware's).
+    //! middleware's). This one sets knob 1's; the other knobs' stay as they are.
     void setFeedback(double tauExt);
+    //! Every knob's τ_ext at once, knob 1 first (a device with fewer knobs ignores the rest).
+    void setFeedback(const AxisTorques &tauExt);
     void setHostParams(const HostParams &host); //!< reference model settings
     void resetReference();                      //!< p_ref := 0
 
@@ -113,6 +115,7 @@ private:
     //! Session thread: posts `deliver` to this object's thread unless `cap` deliveries counted
     //! by `pending` already wait there. False when dropped.
     template<typename Deliver> bool post(std::atomic<int> &pending, int cap, Deliver deliver);
+    void postFeedback(); //!< hands the newest m_feedback to the session thread, once
 
     QThread *m_thread = nullptr;
     mutable std::mutex m_realtimeMutex;
@@ -124,13 +127,16 @@ private:
     ConnectOptions m_options;
     LinkStats m_stats;
     RecordingStatus m_recording;
-    // Shared with the session thread: only these atomics are touched from both threads.
+    // Shared with the session thread: only these atomics, and m_feedback under its mutex, are
+    // touched from both threads.
     std::atomic<int> m_pendingBatches{0};
     std::atomic<int> m_pendingStats{0};
     std::atomic<int> m_pendingRecording{0};
     std::atomic<int> m_pendingLogLines{0};
     std::atomic<quint64> m_droppedBatches{0};
-    std::atomic<double> m_feedback{0};         //!< the newest setFeedback() [N·m]
+    // The newest setFeedback(), whole: one wrench's torques never reach the device half old.
+    std::mutex m_feedbackMutex;
+    AxisTorques m_feedback{};                  //!< [N·m], with m_feedbackMutex held
     std::atomic<bool> m_feedbackPosted{false}; //!< a call to take it waits on the session thread
 };
 

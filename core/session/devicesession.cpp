@@ -18,7 +18,7 @@ namespace hatpic {
 DeviceSession::DeviceSession(QObject *parent)
     : QObject(parent), m_reconnectTimer(this), m_statsTimer(this), m_queue(this),
       m_detector(m_queue, m_statistics, this),
-      m_feedback([this](double tauExt) { sendFeedback(tauExt); }, this),
+      m_feedback([this](const AxisTorques &tauExt) { sendFeedback(tauExt); }, this),
       m_ping(
           m_clock, [this](quint32 token) { return sendPing(token); }, this),
       m_deviceText(this), m_samples(this)
@@ -152,7 +152,7 @@ void DeviceSession::closeLink()
     }
 }
 
-void DeviceSession::sendFeedback(double tauExt)
+void DeviceSession::sendFeedback(const AxisTorques &tauExt)
 {
     if (m_driver && m_link)
         m_driver->sendFeedback(tauExt);
@@ -463,6 +463,11 @@ void DeviceSession::onCommandFinished(const Command &command, const Outcome &out
 void DeviceSession::setFeedback(double tauExt)
 {
     m_feedback.setTauExt(tauExt);
+}
+
+void DeviceSession::setFeedback(const AxisTorques &tauExt)
+{
+    m_feedback.setTorques(tauExt);
 }
 
 void DeviceSession::setHostParams(const HostParams &host)

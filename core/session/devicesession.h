@@ -52,7 +52,8 @@ public:
     //! passivity block: dropped beside other parts, refused alone.
     void request(Request request, OutcomeHandler then = {});
 
-    void setFeedback(double tauExt);
+    void setFeedback(double tauExt);             //!< knob 1's; the others' stay
+    void setFeedback(const AxisTorques &tauExt); //!< every knob's
     void setHostParams(const HostParams &host);
     void resetReference();
 
@@ -102,8 +103,8 @@ private:
     void tryReconnect();
     void onBytes(const QByteArray &bytes);
     void onStatsTick();
-    void sendFeedback(double tauExt); //!< through the driver, while connected
-    bool sendPing(quint32 token);     //!< through the driver; false when none went out
+    void sendFeedback(const AxisTorques &tauExt); //!< through the driver, while connected
+    bool sendPing(quint32 token);                 //!< through the driver; false when none went out
 
     // commands
     //! Why `request` (its wire steps `steps`) cannot be sent; nullopt when it can go.

@@ -4,8 +4,9 @@ namespace hatpic {
 
 LegacyDriver::LegacyDriver(const ConnectOptions &options, qint32 baud, DriverWrite write)
     : m_write(std::move(write)), m_conversion(options.legacy),
-      m_feedbackOn(options.feedbackRateHz > 0), m_field(options.legacy.feedbackToField(0))
+      m_feedbackOn(options.feedbackRateHz > 0)
 {
+    m_fields.fill(m_conversion.feedbackToField(0));
     m_info.protocol = WireProtocol::Legacy;
     m_info.port = options.port;
     m_info.baud = baud;
@@ -26,7 +27,9 @@ void LegacyDriver::feed(const QByteArray &bytes, std::vector<Received> &out)
         if (!line.isEmpty())
             out.push_back(received::Text{std::move(line)});
     }
-    const double tauExt = m_feedbackOn ? m_conversion.fieldToFeedback(m_field) : 0.0;
+    AxisTorques tauExt{};
+    for (std::size_t n = 0; m_feedbackOn && n < tauExt.size(); ++n)
+        tauExt[n] = m_conversion.fieldToFeedback(m_fields[n]);
     for (const legacy::Frame &frame : std::as_const(frames)) {
         if (frame.tilt) // what the board is shows in its frames only
             noteImuBranch();
@@ -41,14 +44,15 @@ void LegacyDriver::noteImuBranch()
     m_info.firmware = QStringLiteral("published IMU branch (legacy)");
 }
 
-void LegacyDriver::sendFeedback(double tauExt)
+void LegacyDriver::sendFeedback(const AxisTorques &tauExt)
 {
-    // One whole frame per write: the published firmware busy-waits from 'i' to 'o'. B, C and D
-    // carry no force: the master firmware ignores them, and the IMU branch adds each − 1000 to
-    // servo 2, 3, 4's torque, so the 0 the published driver sends would be −100 % there.
-    m_field = m_conversion.feedbackToField(tauExt);
-    constexpr int kNoForce = legacy::Conversion::kFeedbackZero;
-    m_write(legacy::encodeFrame(legacy::Frame{m_field, kNoForce, kNoForce, kNoForce}));
+    // One whole frame per write: the published firmware busy-waits from 'i' to 'o'. Field n is
+    // knob n's, on the same scale as A (the IMU branch adds each − 1000 to its servo's torque);
+    // the master firmware ignores B, C and D. No force is 1000 in every field, never the 0 the
+    // published driver sends: the IMU branch would render that as −100 % on servos 2, 3, 4.
+    for (std::size_t n = 0; n < tauExt.size(); ++n)
+        m_fields[n] = m_conversion.feedbackToField(tauExt[n]);
+    m_write(legacy::encodeFrame(legacy::Frame{m_fields[0], m_fields[1], m_fields[2], m_fields[3]}));
 }
 
 std::optional<outcome::Unsupported::Why> LegacyDriver::refusal(CommandKind step) const

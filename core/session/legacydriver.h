@@ -23,7 +23,7 @@ public:
     //! has always used with it [Hz].
     static constexpr double kMaxFeedbackHz = 100;
 
-    void sendFeedback(double tauExt) override;
+    void sendFeedback(const AxisTorques &tauExt) override;
     //! The device is the IMU branch's board (four knobs, a tilt): detection heard it, or its
     //! first frame with the tilt says so.
     void noteImuBranch();
@@ -42,7 +42,7 @@ private:
     bool m_feedbackOn;
     DeviceInfo m_info;
     legacy::Decoder m_decoder;
-    int m_field; //!< last feedback field A sent
+    std::array<int, kMaxAxes> m_fields; //!< the last feedback fields A … D sent
 };
 
 } // namespace hatpic

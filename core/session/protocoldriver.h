@@ -7,6 +7,7 @@
 // interface except the decoder counts (v2Stats() or legacyStats(), for LinkStats).
 #pragma once
 
+#include "model/axes.h"
 #include "model/params.h"
 #include "protocol/deviceinfo.h"
 #include "protocol/legacy.h"
@@ -35,12 +36,12 @@ struct Telemetry
     bool finite = true;
 };
 //! A legacy frame, with what turns it into a sample: the conversion and the τ_ext the host
-//! last sent the device [N·m] (0 while feedback is off).
+//! last sent each knob [N·m] (0 while feedback is off).
 struct LegacyFrame
 {
     legacy::Frame frame;
     const legacy::Conversion *conversion = nullptr;
-    double tauExt = 0;
+    AxisTorques tauExt{};
 };
 struct Pong
 {
@@ -72,8 +73,8 @@ public:
     virtual std::vector<Request> startRequests() const = 0;
     //! Decodes `bytes` (any chunking) and appends what its frames said to `out`.
     virtual void feed(const QByteArray &bytes, std::vector<Received> &out) = 0;
-    //! One feedback frame with τ_ext [N·m].
-    virtual void sendFeedback(double tauExt) = 0;
+    //! One feedback frame with each knob's τ_ext [N·m]; a device with one knob takes the first.
+    virtual void sendFeedback(const AxisTorques &tauExt) = 0;
     //! Feedback frames per second the device and its link take at most [Hz].
     virtual double maxFeedbackHz() const = 0;
     //! Sends a PING; false when the protocol has none or a command waits for its answer.

@@ -74,7 +74,7 @@ Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostU
 }
 
 Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conversion &conversion,
-                                 double tauExt, qint64 hostUs)
+                                 const AxisTorques &tauExt, qint64 hostUs)
 {
     const auto hostClock = static_cast<quint32>(hostUs);
     advanceClock(hostClock, hostUs);
@@ -87,7 +87,7 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
     s.omega = kUnknown;
     s.tau = kUnknown;
     s.tau_rec = recenteringTorque(m_stiffness, s.theta);
-    s.tau_ext = tauExt;
+    s.tau_ext = tauExt[0];
     // The published firmware has no capability (effects, passivity controller): what one brings
     // is unknown.
     forEachCycleQuantity<Sample>([&s](const CycleQuantity &q, auto member) {
@@ -113,7 +113,7 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
             axis.omega = kUnknown;
             axis.tau = kUnknown;
             axis.tau_rec = recenteringTorque(m_stiffness, axis.theta);
-            axis.tau_ext = 0; // the host sends these knobs none (LegacyDriver::sendFeedback)
+            axis.tau_ext = tauExt[k + 1];
             axis.tau_total = std::clamp(axis.tau_rec + axis.tau_ext, -m_tauLimit, m_tauLimit);
             const auto reference =
                 m_moreReferences[k].update(m_referenceUs, m_referenceShape, axis.theta);

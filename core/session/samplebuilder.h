@@ -58,9 +58,9 @@ public:
     //! A legacy frame: θ from ticks, τ_rec estimated from the model; ω and τ unknown (NaN).
     //! The IMU branch's frame (with its tilt) makes a four-axis sample with roll and pitch,
     //! every knob estimated the same way and given its own reference.
-    //! @param tauExt the feedback torque the device renders (after its conversion) [N·m]
+    //! @param tauExt the feedback torque each knob renders (after its conversion) [N·m]
     Sample fromLegacy(const legacy::Frame &frame, const legacy::Conversion &conversion,
-                      double tauExt, qint64 hostUs);
+                      const AxisTorques &tauExt, qint64 hostUs);
 
     quint64 referenceGaps() const { return m_reference.gapCount(); }
     //! [s]; divided (not multiplied by 1e-6) so that whole µs give the nearest double

@@ -35,7 +35,16 @@ void FeedbackStream::stop()
 
 void FeedbackStream::setTauExt(double tauExt)
 {
-    const double tau = std::isfinite(tauExt) ? tauExt : 0.0;
+    AxisTorques torques = m_tauExt;
+    torques[0] = tauExt;
+    setTorques(torques);
+}
+
+void FeedbackStream::setTorques(const AxisTorques &tauExt)
+{
+    AxisTorques tau = tauExt;
+    for (double &t : tau)
+        t = std::isfinite(t) ? t : 0.0;
     if (tau == m_tauExt)
         return;
     m_tauExt = tau;

@@ -3,6 +3,7 @@
 // What goes on the wire is the protocol driver's business; these only keep the time.
 #pragma once
 
+#include "model/axes.h"
 #include "session/rttstats.h"
 
 #include <QElapsedTimer>
@@ -26,7 +27,7 @@ public:
     //! feedback watchdog (200 ms, protocol.md), so a lost frame or two never trips it.
     static constexpr int kKeepAliveMs = 50;
 
-    using Sender = std::function<void(double tauExt)>;
+    using Sender = std::function<void(const AxisTorques &tauExt)>;
 
     explicit FeedbackStream(Sender send, QObject *parent = nullptr);
 
@@ -34,10 +35,13 @@ public:
     //! maxRateHz ≤ 0 sends nothing.
     void start(double maxRateHz);
     void stop();
-    //! The torque to stream [N·m]; not finite = 0. A change is sent at once when the rate
-    //! allows, else at the end of the current interval.
+    //! The torque to stream to each knob [N·m]; not finite = 0. A change is sent at once when
+    //! the rate allows, else at the end of the current interval.
+    void setTorques(const AxisTorques &tauExt);
+    //! Knob 1's torque; the other knobs' stay as they are.
     void setTauExt(double tauExt);
-    double tauExt() const { return m_tauExt; }
+    double tauExt() const { return m_tauExt[0]; }
+    const AxisTorques &torques() const { return m_tauExt; }
     //! Paused: nothing is sent (e.g. to see the device's watchdog act).
     void setPaused(bool paused) { m_paused = paused; }
 
@@ -49,7 +53,7 @@ private:
     QTimer m_deferred;  //!< a change that came within the minimum interval
     QElapsedTimer m_sinceSend;
     qint64 m_minIntervalNs = 0; //!< 1/maxRateHz [ns]
-    double m_tauExt = 0;        //!< requested feedback [N·m]
+    AxisTorques m_tauExt{};     //!< requested feedback, per knob [N·m]
     bool m_running = false;
     bool m_paused = false;
 };

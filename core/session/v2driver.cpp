@@ -101,9 +101,10 @@ std::optional<Received> V2Driver::event(const v2::Frame &frame) const
         frame.message);
 }
 
-void V2Driver::sendFeedback(double tauExt)
+void V2Driver::sendFeedback(const AxisTorques &tauExt)
 {
-    m_write(v2::encodeFrame(m_feedbackSeq++, v2::SetFeedback{static_cast<float>(tauExt)}));
+    // Protocol v2 carries one knob.
+    m_write(v2::encodeFrame(m_feedbackSeq++, v2::SetFeedback{static_cast<float>(tauExt[0])}));
 }
 
 bool V2Driver::sendPing(quint32 token)

@@ -29,7 +29,7 @@ public:
     void feed(const QByteArray &bytes, std::vector<Received> &out) override;
     //! Frames decoded elsewhere (detection's chunk after HELLO_REPLY).
     void decode(const QList<v2::Frame> &frames, std::vector<Received> &out) const;
-    void sendFeedback(double tauExt) override;
+    void sendFeedback(const AxisTorques &tauExt) override;
     //! The device's control rate (its highest telemetry rate): a faster frame is never used.
     //! A device that does not say leaves the cap to the session's options.
     double maxFeedbackHz() const override

@@ -247,7 +247,7 @@ void TestSampleBuilder::legacyIsEstimatedFromTheModel()
     QFETCH(bool, saturated);
     SampleBuilder b;
     legacy::Conversion conv;
-    const Sample s = b.fromLegacy({ticks, 1000, 1000, 1000}, conv, tauExt, 123456);
+    const Sample s = b.fromLegacy({ticks, 1000, 1000, 1000}, conv, {tauExt}, 123456);
     QCOMPARE(s.theta, conv.ticksToRad(ticks));
     QVERIFY(std::isnan(s.omega));
     QVERIFY(std::isnan(s.tau));
@@ -260,7 +260,7 @@ void TestSampleBuilder::legacyIsEstimatedFromTheModel()
     QCOMPARE(int(s.flags & (v2::kFlagDeadZone | v2::kFlagNotch)), zoneFlag);
     QCOMPARE(bool(s.flags & v2::kFlagSaturated), saturated);
     // The host clock drives t_s: 200 ms later.
-    const Sample next = b.fromLegacy({ticks, 1000, 1000, 1000}, conv, tauExt, 323456);
+    const Sample next = b.fromLegacy({ticks, 1000, 1000, 1000}, conv, {tauExt}, 323456);
     QCOMPARE(next.t_s, 0.2);
 }
 

@@ -1,6 +1,6 @@
 // The session with the published IMU branch's board: the simulated one behind a real
-// pseudo-terminal, found by auto-detection; four-axis samples with the tilt, and feedback that
-// leaves knobs 2–4 without force.
+// pseudo-terminal, found by auto-detection; four-axis samples with the tilt; knob 1's feedback
+// leaves knobs 2–4 without force, and each knob feels its own.
 #include "model/reference.h"
 #include "model/stiffness.h"
 #include "session/devicesession.h"
@@ -76,22 +76,70 @@ private Q_SLOTS:
         h.session.disconnectDevice();
     }
 
+    void eachKnobFeelsItsOwnFeedback()
+    {
+        SimulatedDevice::Config config;
+        config.board = SimulatedDevice::Board::ImuBranch;
+        SimulatorHost host(config);
+        Harness h;
+        QVERIFY(connectTo(host, h));
+        QTRY_COMPARE_WITH_TIMEOUT(h.session.state(), SessionState::Connected, kConnectTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(h.session.deviceInfo().axes, quint8(4), kConnectTimeoutMs);
+
+        // Knobs 2 and 4 pushed opposite ways, 1 and 3 left alone.
+        h.session.setFeedback(AxisTorques{0.0, 0.1, 0.0, -0.1});
+        QTest::qWait(1200);
+        const std::vector<double> angles = host.device().knobAngles();
+        QVERIFY2(angles[1] > 0.01, qPrintable(QString::number(angles[1])));
+        QVERIFY2(angles[3] < -0.01, qPrintable(QString::number(angles[3])));
+        QVERIFY2(std::abs(angles[0]) < 0.01, qPrintable(QString::number(angles[0])));
+        QVERIFY2(std::abs(angles[2]) < 0.01, qPrintable(QString::number(angles[2])));
+        // The samples say what each knob was sent, after the wire's rounding.
+        const legacy::Conversion conversion = h.session.options().legacy;
+        const double sent = conversion.fieldToFeedback(conversion.feedbackToField(0.1));
+        const Sample last = h.samples.last();
+        QCOMPARE(last.tau_ext, 0.0);
+        QCOMPARE(last.axis(2)->tau_ext, sent);
+        QCOMPARE(last.axis(3)->tau_ext, 0.0);
+        QCOMPARE(last.axis(4)->tau_ext, -sent);
+
+        // Knob 1's setter leaves the others' as they were.
+        h.session.setFeedback(0.05);
+        QTest::qWait(300);
+        QCOMPARE(h.samples.last().axis(2)->tau_ext, sent);
+        QVERIFY(h.samples.last().tau_ext > 0.04);
+        h.session.setFeedback(AxisTorques{});
+        QTest::qWait(300);
+        QCOMPARE(h.samples.last().axis(4)->tau_ext, 0.0);
+        h.session.disconnectDevice();
+    }
+
     void aSingleKnobStaysOneAxis()
     {
         SimulatedDevice::Config config;
         config.protocol = WireProtocol::Legacy;
         SimulatorHost host(config);
-        QVERIFY(host.start().isEmpty());
         Harness h;
-        ConnectOptions o;
-        o.port = host.slavePath();
-        h.session.connectDevice(o);
+        QVERIFY(connectTo(host, h));
         QTRY_VERIFY_WITH_TIMEOUT(h.samples.size() >= 3, kConnectTimeoutMs);
         QCOMPARE(h.session.deviceInfo().axes, quint8(1));
         QVERIFY(!h.session.deviceInfo().tilt);
         QCOMPARE(h.samples.last().axes(), 1);
         QVERIFY(!h.samples.last().board);
         h.session.disconnectDevice();
+    }
+
+private:
+    //! Starts `host` and has `h`'s session connect to it, auto-detecting (it listens at
+    //! 115200 first). False when the host did not start.
+    static bool connectTo(SimulatorHost &host, Harness &h)
+    {
+        if (!host.start().isEmpty())
+            return false;
+        ConnectOptions o;
+        o.port = host.slavePath();
+        h.session.connectDevice(o);
+        return true;
     }
 };
 

@@ -25,6 +25,7 @@ private Q_SLOTS:
     void feedbackGoesAtOnceWithinItsCap();
     void feedbackIsKeptAliveUnlessPaused();
     void feedbackIsFinite();
+    void feedbackCarriesEveryKnob();
     void removedListenerIsNeverCalledAgain();
     void pingMeasuresTheRoundTrip();
     void busyPingWaitsAndUnansweredAreBounded();
@@ -91,7 +92,7 @@ void TestSessionParts::ratesCoverTheLastSecond()
 void TestSessionParts::feedbackGoesAtOnceWithinItsCap()
 {
     QList<double> sent;
-    FeedbackStream stream([&](double tau) { sent.append(tau); });
+    FeedbackStream stream([&](const AxisTorques &tau) { sent.append(tau[0]); });
     stream.start(20);                   // at most one frame per 50 ms
     QCOMPARE(sent, QList<double>{0.0}); // once at once
     stream.setTauExt(0.05);             // within the 50 ms: waits for the rest of them
@@ -114,7 +115,7 @@ void TestSessionParts::feedbackGoesAtOnceWithinItsCap()
 void TestSessionParts::feedbackIsKeptAliveUnlessPaused()
 {
     QList<double> sent;
-    FeedbackStream stream([&](double tau) { sent.append(tau); });
+    FeedbackStream stream([&](const AxisTorques &tau) { sent.append(tau[0]); });
     stream.setTauExt(0.05);
     stream.start(1000);
     QCOMPARE(sent.size(), 1);
@@ -142,13 +143,37 @@ void TestSessionParts::feedbackIsKeptAliveUnlessPaused()
 
 void TestSessionParts::feedbackIsFinite()
 {
-    FeedbackStream stream([](double) {});
+    FeedbackStream stream([](const AxisTorques &) {});
     stream.setTauExt(std::numeric_limits<double>::quiet_NaN());
     QCOMPARE(stream.tauExt(), 0.0);
     stream.setTauExt(-std::numeric_limits<double>::infinity());
     QCOMPARE(stream.tauExt(), 0.0);
     stream.setTauExt(-0.1);
     QCOMPARE(stream.tauExt(), -0.1);
+    // Every knob's, each made finite on its own.
+    stream.setTorques({0.01, std::numeric_limits<double>::quiet_NaN(), -0.03, 0.04});
+    QCOMPARE(stream.torques(), (AxisTorques{0.01, 0.0, -0.03, 0.04}));
+}
+
+void TestSessionParts::feedbackCarriesEveryKnob()
+{
+    // Knob 1's setter leaves the others' torques alone; a change to any knob is sent.
+    QList<AxisTorques> sent;
+    FeedbackStream stream([&](const AxisTorques &tau) { sent.append(tau); });
+    stream.start(1000); // sends once at once: within a millisecond, a change would wait
+    QTest::qWait(5);
+    stream.setTorques({0.0, 0.02, 0.0, -0.04});
+    QCOMPARE(sent.size(), 2);
+    QCOMPARE(sent.last(), (AxisTorques{0.0, 0.02, 0.0, -0.04}));
+    QTest::qWait(5);
+    stream.setTauExt(0.1);
+    QCOMPARE(sent.last(), (AxisTorques{0.1, 0.02, 0.0, -0.04}));
+    QTest::qWait(5);
+    const qsizetype before = sent.size();
+    stream.setTorques({0.1, 0.02, 0.03, -0.04}); // knob 3 alone changed
+    QCOMPARE(sent.size(), before + 1);
+    QCOMPARE(sent.last()[2], 0.03);
+    stream.stop();
 }
 
 void TestSessionParts::removedListenerIsNeverCalledAgain()
