@@ -56,6 +56,7 @@ QString Bridge::start(const BridgeSettings &settings)
         const std::lock_guard publishing(m_publishMutex);
         const std::lock_guard lock(m_mutex);
         m_settings = settings;
+        m_axes = knobComponents(settings, settings.axisFor(m_mode));
         m_feedback = WrenchFeedback(settings.feedback);
         m_timing = WrenchTiming();
         m_timing.setPauseAfter(settings.feedback.staleAfter);
@@ -68,12 +69,12 @@ QString Bridge::start(const BridgeSettings &settings)
         m_gate.setLocal(local);
         m_lastWrench.fill(NAN);
         m_otherComponentStreak = 0;
-        m_tauExt = 0;
+        m_torques = {};
         m_deviceTauExt = std::numeric_limits<double>::quiet_NaN();
         m_echoes = 0;
         m_endpoints = std::move(endpoints);
     }
-    m_client.setFeedback(0);
+    m_client.setFeedback(AxisTorques{});
     m_client.addSampleListener(this);
     m_checkTimer.start();
     return {};
@@ -83,7 +84,7 @@ void Bridge::releaseFeedback()
 {
     const std::lock_guard lock(m_mutex);
     m_released = true;
-    applyTorque(0);
+    applyTorques({});
 }
 
 void Bridge::stop()
@@ -102,7 +103,7 @@ void Bridge::stop()
             m_publishedBefore[i] += m_endpoints->written(OutTopic(i));
         m_writeErrorsBefore += m_endpoints->writeErrors();
         closing = std::move(m_endpoints); // onWrench() ignores what still arrives
-        applyTorque(0);
+        applyTorques({});
     }
     closing.reset(); // waits for a handler in progress, outside the lock it may be waiting for
 }
@@ -130,7 +131,7 @@ QString Bridge::setFeedbackSettings(const FeedbackSettings &feedback)
     m_feedback.setSettings(feedback);
     m_timing.setPauseAfter(feedback.staleAfter);
     if (m_endpoints)
-        applyTorque(torqueAt(now()));
+        applyTorques(torquesAt(now()));
     return {};
 }
 
@@ -139,7 +140,7 @@ void Bridge::setEngaged(bool engaged)
     const std::lock_guard lock(m_mutex);
     m_gate.setLocal(engaged);
     if (m_endpoints)
-        applyTorque(torqueAt(now()));
+        applyTorques(torquesAt(now()));
 }
 
 bool Bridge::setPublishRate(double rateHz)
@@ -158,6 +159,7 @@ void Bridge::setReferenceMode(ReferenceMode mode)
 {
     const std::lock_guard lock(m_mutex);
     m_mode = mode;
+    m_axes = knobComponents(m_settings, m_settings.axisFor(mode));
 }
 
 BridgeSettings Bridge::settings() const
@@ -188,7 +190,8 @@ BridgeStats Bridge::stats() const
     s.lastWrench = m_feedback.lastValue();
     s.lastWrenchValues = m_lastWrench;
     s.otherComponentStreak = m_otherComponentStreak;
-    s.tauExt = m_tauExt;
+    s.tauExt = m_torques[0];
+    s.torques = m_torques;
     s.publishedTauExt = m_publishedTauExt;
     s.deviceTauExt = m_deviceTauExt;
     s.timing = m_timing.stats(now());
@@ -212,16 +215,22 @@ void Bridge::sampleDecoded(const Sample &sample)
         if (sample.arrival_ns > 0)
             m_timing.sampleShows(sample.tau_ext, double(sample.arrival_ns) * 1e-9);
         const double t = now();
-        applyTorque(torqueAt(t)); // counts a wrench gone stale
-        // Released: no motion asked of the robot, the pose held; engaged again: re-anchored.
+        applyTorques(torquesAt(t)); // counts a wrench gone stale
+        // Released: no motion asked of the robot, each knob's pose held; engaged again:
+        // re-anchored.
         const bool engaged = m_gate.engaged(t);
-        Sample gated = sample;
-        gated.p_ref = m_gate.reference(sample.p_ref, engaged);
-        if (!engaged)
-            gated.v_ref = 0;
+        Knobs knobs{};
+        for (int n = 1; n <= sample.axes(); ++n) {
+            AxisSample &knob = knobs[std::size_t(n - 1)];
+            knob = sample.knob(n);
+            knob.p_ref = m_gate.reference(knob.p_ref, engaged, n - 1);
+            if (!engaged)
+                knob.v_ref = 0;
+        }
         if (!m_rate.due(sample.t_s))
             return;
-        m = referenceMessages(gated, wallSecondsOf(sample), m_settings, m_settings.axisFor(m_mode));
+        m = referenceMessages(knobs, sample.axes(), wallSecondsOf(sample), m_settings, m_axes,
+                              sample.roll(), sample.pitch());
         m_publishedTauExt = m.feedbackTorque;
     }
     // Without m_mutex: a wrench handler called inside publish() takes it.
@@ -248,11 +257,18 @@ void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
         another =
             another || (i != chosen && wrench.values[i] != 0 && std::isfinite(wrench.values[i]));
     m_otherComponentStreak = wrench.values[chosen] == 0 && another ? m_otherComponentStreak + 1 : 0;
-    const double tau = m_feedback.receive(wrench.values[chosen], arrived);
-    const double applied = m_gate.engaged(arrived) ? tau : 0.0;
-    if (applied != m_tauExt)
-        m_timing.torqueAsked(applied, arrived);
-    applyTorque(applied);
+    // A board's knobs 2 … 4 feel the components of their own axes (ros.md § Several knobs).
+    WrenchFeedback::OtherKnobs others{};
+    for (std::size_t k = 0; k < others.size(); ++k) {
+        const Component axis = m_axes[k + 1];
+        others[k] = wrench.values[std::size_t((axis.angular ? 3 : 0) + axis.index)];
+    }
+    m_feedback.receive(wrench.values[chosen], arrived, others);
+    const AxisTorques applied =
+        m_gate.engaged(arrived) ? m_feedback.torquesAt(arrived) : AxisTorques{};
+    if (applied[0] != m_torques[0])
+        m_timing.torqueAsked(applied[0], arrived);
+    applyTorques(applied);
 }
 
 void Bridge::onEnable(bool value)
@@ -262,27 +278,27 @@ void Bridge::onEnable(bool value)
     if (!m_endpoints)
         return;
     m_gate.received(value, t);
-    applyTorque(torqueAt(t));
+    applyTorques(torquesAt(t));
 }
 
 void Bridge::checkStale()
 {
     const std::lock_guard lock(m_mutex);
     if (m_endpoints)
-        applyTorque(torqueAt(now()));
+        applyTorques(torquesAt(now()));
 }
 
-double Bridge::torqueAt(double t)
+AxisTorques Bridge::torquesAt(double t)
 {
-    return m_released || !m_gate.engaged(t) ? 0.0 : m_feedback.torqueAt(t);
+    return m_released || !m_gate.engaged(t) ? AxisTorques{} : m_feedback.torquesAt(t);
 }
 
-void Bridge::applyTorque(double tau)
+void Bridge::applyTorques(const AxisTorques &torques)
 {
-    if (tau == m_tauExt)
+    if (torques == m_torques)
         return;
-    m_tauExt = tau;
-    m_client.setFeedback(tau); // posts to the session thread: never waits
+    m_torques = torques;
+    m_client.setFeedback(torques); // posts to the session thread: never waits
 }
 
 } // namespace hatpic::bridge

@@ -42,7 +42,8 @@ struct BridgeStats
     std::uint64_t otherComponentStreak = 0;
     //! Wrenches ignored as the bridge's own feedback come back (RosEndpoints::Wrench::echo).
     std::uint64_t echoes = 0;
-    double tauExt = 0;          //!< τ_ext asked of the device [N·m]
+    double tauExt = 0;          //!< τ_ext asked of the device's knob 1 [N·m]
+    AxisTorques torques{};      //!< … and of every knob, knob 1's first [N·m]
     double publishedTauExt = 0; //!< torque.z of the last /hatpic/feedback message [N·m]
     //! τ_ext of the newest sample the bridge saw, the device's own figure (NaN before any): up
     //! to date to the sample, unlike the batches the owner's thread gets every 20 ms [N·m].
@@ -98,14 +99,14 @@ private:
     void sampleDecoded(const Sample &sample) override; //!< the session thread
     void onWrench(const RosEndpoints::Wrench &wrench); //!< a middleware thread
     void onEnable(bool value);                         //!< a middleware thread
-    //! With m_mutex held: the τ_ext the wrench asks for at `t`, or 0 when released (by the
-    //! enable switch, or by a limit above the device's).
-    double torqueAt(double t);
+    //! With m_mutex held: the τ_ext the wrench asks of each knob at `t`, or 0 when released
+    //! (by the enable switch, or by a limit above the device's).
+    AxisTorques torquesAt(double t);
     void checkStale(); //!< any thread
     //! The connected device's tau_limit; NaN while not known (not connected) [N·m].
     double deviceTauLimit() const;
-    //! With m_mutex held: τ_ext becomes `tau`; the device is told when it changed.
-    void applyTorque(double tau);
+    //! With m_mutex held: τ_ext becomes `torques`; the device is told when it changed.
+    void applyTorques(const AxisTorques &torques);
     //! The monotonic clock wrenches are dated on [s].
     static double now() { return double(sampleClockNs()) * 1e-9; }
 
@@ -123,12 +124,13 @@ private:
     mutable std::mutex m_mutex;
     BridgeSettings m_settings;
     ReferenceMode m_mode = ReferenceMode::Translation;
+    KnobComponents m_axes{}; //!< each knob's axis: m_settings' for m_mode
     std::unique_ptr<RosEndpoints> m_endpoints;
     WrenchFeedback m_feedback;
     WrenchTiming m_timing;
     analysis::PassivityObserver m_passivity;
     RateLimiter m_rate{100};
-    double m_tauExt = 0;
+    AxisTorques m_torques{}; //!< asked of the device
     double m_publishedTauExt = 0;
     double m_deviceTauExt = std::numeric_limits<double>::quiet_NaN();
     bool m_released = false; //!< releaseFeedback(): wrenches ignored, τ_ext held at 0

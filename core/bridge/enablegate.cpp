@@ -17,21 +17,22 @@ bool EnableGate::engaged(double now) const
     return !m_topic || (m_value && now - m_lastMessage <= m_timeout);
 }
 
-double EnableGate::reference(double pRef, bool engaged)
+double EnableGate::reference(double pRef, bool engaged, int knob)
 {
-    if (!m_started) {
+    Knob &k = m_knobs[std::size_t(knob)];
+    if (!k.started) {
         // The first sample: released from the start holds the reference where the knob is.
-        m_started = true;
-        m_wasEngaged = engaged;
-        m_held = pRef;
+        k.started = true;
+        k.wasEngaged = engaged;
+        k.held = pRef;
     }
-    if (engaged && !m_wasEngaged)
-        m_offset = pRef - m_held; // re-anchored: goes on from the held reference
-    m_wasEngaged = engaged;
+    if (engaged && !k.wasEngaged)
+        k.offset = pRef - k.held; // re-anchored: goes on from the held reference
+    k.wasEngaged = engaged;
     if (!engaged)
-        return m_held;
-    m_held = pRef - m_offset;
-    return m_held;
+        return k.held;
+    k.held = pRef - k.offset;
+    return k.held;
 }
 
 } // namespace hatpic::bridge

@@ -3,6 +3,10 @@
 // the robot sees across a release. Plain C++, no middleware, no Qt; the caller holds the lock.
 #pragma once
 
+#include "model/axes.h"
+
+#include <array>
+
 namespace hatpic::bridge {
 
 class EnableGate
@@ -23,12 +27,13 @@ public:
     //! received less than `timeout` ago.
     bool engaged(double now) const;
 
-    //! The reference position to publish for the device's `pRef` when the gate is `engaged`:
-    //! held while released; on engaging again it re-anchors, so that the published reference
-    //! goes on from where it was held, without a jump, and follows the knob's motion from there.
-    double reference(double pRef, bool engaged);
-    //! The offset subtracted from the device's p_ref now (0 until the first re-anchoring).
-    double offset() const { return m_offset; }
+    //! The reference position to publish for knob `knob`'s (0 = knob 1) `pRef` when the gate
+    //! is `engaged`: held while released; on engaging again it re-anchors, so that the published
+    //! reference goes on from where it was held, without a jump, and follows the knob's motion
+    //! from there. Each knob keeps its own.
+    double reference(double pRef, bool engaged, int knob = 0);
+    //! The offset subtracted from knob `knob`'s p_ref now (0 until the first re-anchoring).
+    double offset(int knob = 0) const { return m_knobs[std::size_t(knob)].offset; }
 
 private:
     bool m_topic;
@@ -36,10 +41,14 @@ private:
     bool m_local = true;
     bool m_value = false;        //!< the last message's value
     double m_lastMessage = -1e9; //!< when it came [s]
-    bool m_wasEngaged = true;    //!< at the last reference()
-    double m_offset = 0;         //!< published p_ref = device's p_ref − m_offset
-    double m_held = 0;           //!< the published p_ref while released
-    bool m_started = false;      //!< reference() has been called
+    struct Knob
+    {
+        bool wasEngaged = true; //!< at the last reference()
+        double offset = 0;      //!< published p_ref = device's p_ref − offset
+        double held = 0;        //!< the published p_ref while released
+        bool started = false;   //!< reference() has been called
+    };
+    std::array<Knob, kMaxAxes> m_knobs{};
 };
 
 } // namespace hatpic::bridge

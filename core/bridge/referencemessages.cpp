@@ -1,30 +1,79 @@
 #include "referencemessages.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hatpic::bridge {
 
-ReferenceMessages referenceMessages(const Sample &sample, double wallSeconds,
-                                    const BridgeSettings &settings, Component axis)
+namespace {
+
+using Quaternion = std::array<double, 4>; // x y z w
+
+//! a ⊗ b: b's rotation, then a's.
+Quaternion product(const Quaternion &a, const Quaternion &b)
+{
+    return {a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1],
+            a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0],
+            a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3],
+            a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2]};
+}
+
+} // namespace
+
+KnobComponents knobComponents(const BridgeSettings &settings, Component axis)
+{
+    KnobComponents axes{axis};
+    for (int n = 2; n <= kMaxAxes; ++n)
+        axes[std::size_t(n - 1)] = settings.knobAxis(n);
+    return axes;
+}
+
+ReferenceMessages referenceMessages(const Knobs &knobs, int count, double wallSeconds,
+                                    const BridgeSettings &settings, const KnobComponents &axes,
+                                    double roll, double pitch)
 {
     ReferenceMessages m;
     m.stamp = ros::timeFromSeconds(wallSeconds);
-    m.position = sample.theta;
-    m.velocity = sample.omega;
-    m.effort = sample.tau;
-    m.twist[(axis.angular ? 3 : 0) + axis.index] = sample.v_ref;
+    m.joints = std::clamp(count, 1, kMaxAxes);
     for (int i = 0; i < 3; ++i)
         m.posePosition[i] = settings.poseOrigin[i];
-    if (axis.angular) {
-        // p_ref is an angle about that axis: the rotation as a unit quaternion.
-        m.poseOrientation[axis.index] = std::sin(sample.p_ref / 2);
-        m.poseOrientation[3] = std::cos(sample.p_ref / 2);
-    } else {
-        m.posePosition[axis.index] += sample.p_ref;
+    for (int k = 0; k < m.joints; ++k) {
+        const AxisSample &knob = knobs[std::size_t(k)];
+        m.position[k] = knob.theta;
+        m.velocity[k] = knob.omega;
+        m.effort[k] = knob.tau;
+        m.jointJogVelocity[k] = knob.v_ref;
+        const Component c = axes[std::size_t(k)];
+        if (std::find(axes.begin(), axes.begin() + k, c) != axes.begin() + k)
+            continue; // the axis is an earlier knob's
+        m.twist[(c.angular ? 3 : 0) + c.index] = knob.v_ref;
+        if (c.angular) {
+            // p_ref is an angle about that axis: the rotation as a unit quaternion, after the
+            // earlier knobs' (each about the frame's own axis).
+            Quaternion q{0, 0, 0, std::cos(knob.p_ref / 2)};
+            q[c.index] = std::sin(knob.p_ref / 2);
+            m.poseOrientation = product(q, m.poseOrientation);
+        } else {
+            m.posePosition[c.index] += knob.p_ref;
+        }
     }
-    m.feedbackTorque = sample.tau_ext;
-    m.jointJogVelocity = sample.v_ref;
+    m.feedbackTorque = knobs[0].tau_ext;
+    if (std::isfinite(roll) && std::isfinite(pitch)) {
+        const Quaternion aboutX{std::sin(roll / 2), 0, 0, std::cos(roll / 2)};
+        const Quaternion aboutY{0, std::sin(pitch / 2), 0, std::cos(pitch / 2)};
+        m.tilt = product(aboutY, aboutX);
+    }
     return m;
+}
+
+ReferenceMessages referenceMessages(const Sample &sample, double wallSeconds,
+                                    const BridgeSettings &settings, Component axis)
+{
+    Knobs knobs{};
+    for (int n = 1; n <= sample.axes(); ++n)
+        knobs[std::size_t(n - 1)] = sample.knob(n);
+    return referenceMessages(knobs, sample.axes(), wallSeconds, settings,
+                             knobComponents(settings, axis), sample.roll(), sample.pitch());
 }
 
 } // namespace hatpic::bridge

@@ -38,13 +38,16 @@ const char *outTopicKey(OutTopic topic)
         return "feedback";
     case OutTopic::JointJog:
         return "joint_jog";
+    case OutTopic::Imu:
+        return "imu";
     }
     return "";
 }
 
 RosEndpoints::RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench,
                            EnableHandler onEnable)
-    : m_settings(settings), m_onWrench(std::move(onWrench)), m_onEnable(std::move(onEnable))
+    : m_settings(settings), m_jointNames(jointNames(settings.jointName)),
+      m_onWrench(std::move(onWrench)), m_onEnable(std::move(onEnable))
 {}
 
 RosEndpoints::~RosEndpoints()
@@ -104,10 +107,12 @@ std::string RosEndpoints::create()
         {OutTopic::TwistUnstamped, ros::MessageType::Twist},
         {OutTopic::Pose, ros::MessageType::PoseStamped},
         {OutTopic::Feedback, ros::MessageType::WrenchStamped},
-        {OutTopic::JointJog, ros::MessageType::JointJog}};
-    std::string Topics::*const names[] = {&Topics::jointStates,    &Topics::twist,
-                                          &Topics::twistUnstamped, &Topics::pose,
-                                          &Topics::feedback,       &Topics::jointJog};
+        {OutTopic::JointJog, ros::MessageType::JointJog},
+        {OutTopic::Imu, ros::MessageType::Imu}};
+    std::string Topics::*const names[] = {
+        &Topics::jointStates, &Topics::twist,    &Topics::twistUnstamped,
+        &Topics::pose,        &Topics::feedback, &Topics::jointJog,
+        &Topics::imu};
     static_assert(std::size(out) == kOutTopicCount && std::size(names) == kOutTopicCount);
     for (int i = 0; i < kOutTopicCount; ++i) {
         const std::string name = resolved(m_settings, names[i]);
@@ -156,9 +161,14 @@ void RosEndpoints::publish(const ReferenceMessages &m)
         if (const auto &publisher = m_publishers[int(topic)])
             publisher->publish(make());
     };
+    // One joint per knob (ros.md § Several knobs).
+    const auto joints = [&m](const std::array<double, kMaxAxes> &values) {
+        return std::vector<double>(values.begin(), values.begin() + m.joints);
+    };
+    const std::vector<std::string> names(m_jointNames.begin(), m_jointNames.begin() + m.joints);
     send(OutTopic::JointStates, [&] {
-        return ros::JointState{
-            header, {m_settings.jointName}, {m.position}, {m.velocity}, {m.effort}};
+        return ros::JointState{header, names, joints(m.position), joints(m.velocity),
+                               joints(m.effort)};
     });
     const ros::Twist twist{{m.twist[0], m.twist[1], m.twist[2]},
                            {m.twist[3], m.twist[4], m.twist[5]}};
@@ -175,8 +185,19 @@ void RosEndpoints::publish(const ReferenceMessages &m)
         return ros::WrenchStamped{header, {{0, 0, 0}, {0, 0, m.feedbackTorque}}};
     });
     send(OutTopic::JointJog, [&] {
-        return ros::JointJog{header, {m_settings.jointName}, {}, {m.jointJogVelocity}, 0};
+        return ros::JointJog{header, names, {}, joints(m.jointJogVelocity), 0};
     });
+    if (m.tilt) { // a board with a tilt sensor: its orientation, nothing else known
+        send(OutTopic::Imu, [&] {
+            const auto &q = *m.tilt;
+            ros::Imu imu;
+            imu.header = header;
+            imu.orientation = {q[0], q[1], q[2], q[3]};
+            imu.angularVelocityCovariance[0] = -1; // not given
+            imu.linearAccelerationCovariance[0] = -1;
+            return imu;
+        });
+    }
 }
 
 void RosEndpoints::rememberFeedback(const ros::Time &stamp)

@@ -23,9 +23,9 @@
 namespace hatpic::bridge {
 
 //! The outgoing topics, in the order of every per-topic array.
-enum class OutTopic { JointStates, Twist, TwistUnstamped, Pose, Feedback, JointJog };
-constexpr int kOutTopicCount = 6;
-//! "joint_states", "twist", "twist_unstamped", "pose", "feedback", "joint_jog"
+enum class OutTopic { JointStates, Twist, TwistUnstamped, Pose, Feedback, JointJog, Imu };
+constexpr int kOutTopicCount = 7;
+//! "joint_states", "twist", "twist_unstamped", "pose", "feedback", "joint_jog", "imu"
 const char *outTopicKey(OutTopic topic);
 
 class RosEndpoints
@@ -89,6 +89,7 @@ private:
     bool isEcho(const ros::Header &header);
 
     BridgeSettings m_settings;
+    std::vector<std::string> m_jointNames; //!< each knob's, knob 1 first (jointNames())
     WrenchHandler m_onWrench;
     EnableHandler m_onEnable;
     std::mutex m_echoMutex;                 //!< guards the two below; nothing is called with it

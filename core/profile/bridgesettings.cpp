@@ -2,6 +2,7 @@
 
 #include "model/paramtable.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -78,7 +79,7 @@ constexpr SettingSpec topic(std::string_view key, std::string_view label,
 
 } // namespace
 
-const std::array<SettingSpec, 23> kSettings = {
+const std::array<SettingSpec, 25> kSettings = {
     // The network's (withNetworkOf()): no profile holds them.
     setting("ros", "ROS version", &BridgeSettings::rosVersion, {1, 2}, "VERSION",
             "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp (ROS_MASTER_URI).",
@@ -104,6 +105,9 @@ const std::array<SettingSpec, 23> kSettings = {
           "after the last message (default: none, always enabled)."),
     topic("joint_jog_topic", "joint jog topic", &Topics::jointJog,
           "control_msgs/JointJog out, for MoveIt Servo; ROS 2 only (default: none)."),
+    topic("imu_topic", "IMU topic", &Topics::imu,
+          "sensor_msgs/Imu out: the orientation of a board with a tilt sensor, written only for "
+          "one (default /hatpic/imu)."),
     setting("namespace", "namespace", &BridgeSettings::nodeNamespace, {0, 200}, "NS",
             "The node's namespace; default and relative topics go under it (default: none; "
             "ROS 1: ROS_NAMESPACE)."),
@@ -112,11 +116,15 @@ const std::array<SettingSpec, 23> kSettings = {
             "Messages per topic per second, at most (default 100)."),
     setting("frame_id", "frame id", &BridgeSettings::frameId, {0, 256}, "ID",
             "header.frame_id (default hatpic)."),
-    setting("joint_name", "joint name", &BridgeSettings::jointName, {1, 256}, "NAME",
-            "JointState's and JointJog's joint name (default hatpic_knob)."),
+    setting("joint_name", "joint name", &BridgeSettings::jointName, {1, 256}, "NAME[,NAME…]",
+            "JointState's and JointJog's joint name, one per knob and ',' between them; a knob "
+            "not named is the first name with _N (default hatpic_knob)."),
     setting("axis", "axis", AxisPlace{}, {}, "AXIS",
             "Twist/pose axis: linear.x … angular.z, or auto (default: linear.x, angular.z in "
             "rotation mode)."),
+    setting("knob_axes", "knob axes", &BridgeSettings::knobAxes, {1, 64}, "C2,C3,C4",
+            "A board's knobs 2, 3, 4: twist/pose axis and wrench component fed back, three "
+            "different ones (default linear.y,linear.z,angular.z)."),
     setting("origin", "pose origin", OriginPlace{}, {-1e6, 1e6, "m"}, "X,Y,Z",
             "Pose position origin [m] (default 0,0,0; MAVROS: 0,0,0.5)."),
     setting("component", "component", ComponentPlace{}, {}, "COMPONENT",
@@ -218,6 +226,64 @@ Component BridgeSettings::axisFor(ReferenceMode mode) const
     if (referenceAxis)
         return *referenceAxis;
     return mode == ReferenceMode::Rotation ? Component{true, 2} : Component{false, 0};
+}
+
+Component BridgeSettings::knobAxis(int n) const
+{
+    const auto axes = parseKnobAxes(knobAxes);
+    if (!axes || n < 2 || n > kMaxAxes)
+        throw std::logic_error("knob " + std::to_string(n) + " of knob axes '" + knobAxes + "'");
+    return (*axes)[std::size_t(n - 2)];
+}
+
+namespace {
+
+//! `text` split at ','.
+std::vector<std::string> splitAtCommas(const std::string &text)
+{
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t end = text.find(',', start);
+        parts.push_back(text.substr(start, end == std::string::npos ? end : end - start));
+        if (end == std::string::npos)
+            return parts;
+        start = end + 1;
+    }
+}
+
+} // namespace
+
+std::optional<std::array<Component, kMaxAxes - 1>> parseKnobAxes(const std::string &text)
+{
+    const std::vector<std::string> parts = splitAtCommas(text);
+    if (parts.size() != kMaxAxes - 1)
+        return std::nullopt;
+    std::array<Component, kMaxAxes - 1> axes;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const auto c = Component::parse(parts[i]);
+        if (!c || std::find(axes.begin(), axes.begin() + long(i), *c) != axes.begin() + long(i))
+            return std::nullopt;
+        axes[i] = *c;
+    }
+    return axes;
+}
+
+std::vector<std::string> jointNames(const std::string &text, int count)
+{
+    std::vector<std::string> names = splitAtCommas(text);
+    for (const std::string &name : names) {
+        if (name.empty() || std::count(names.begin(), names.end(), name) > 1)
+            return {};
+    }
+    for (int n = int(names.size()) + 1; n <= count; ++n) {
+        std::string added = names.front() + "_" + std::to_string(n);
+        if (std::find(names.begin(), names.end(), added) != names.end())
+            return {};
+        names.push_back(std::move(added));
+    }
+    names.resize(std::size_t(count));
+    return names;
 }
 
 std::string limitProblem(const FeedbackSettings &feedback, double tauLimit)
@@ -330,6 +396,14 @@ std::vector<std::string> validate(const BridgeSettings &s)
     }
     if (const std::string problem = namespaceProblem(s.nodeNamespace); !problem.empty())
         errors.push_back("namespace: " + problem);
+    if (!s.jointName.empty() && jointNames(s.jointName).empty())
+        errors.push_back("joint name: must be names separated by ',', none empty and no two "
+                         "alike, got '" +
+                         echoedText(s.jointName) + "'");
+    if (!s.knobAxes.empty() && !parseKnobAxes(s.knobAxes))
+        errors.push_back("knob axes: must be three different components (linear.x … angular.z) "
+                         "separated by ',', got '" +
+                         echoedText(s.knobAxes) + "'");
     checkTopicsApart(errors, s);
     return errors;
 }

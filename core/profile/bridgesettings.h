@@ -2,6 +2,7 @@
 // Plain values with their defaults; no DDS, no Qt.
 #pragma once
 
+#include "model/axes.h"
 #include "model/overloaded.h"
 #include "model/params.h"
 
@@ -49,6 +50,7 @@ struct Topics
     std::string wrenchUnstamped;                      //!< in: geometry_msgs/Wrench (off)
     std::string enable;                               //!< in: std_msgs/Bool, dead man (off)
     std::string jointJog;                             //!< out: control_msgs/JointJog (off)
+    std::string imu = "/hatpic/imu"; //!< out: sensor_msgs/Imu, a board's tilt (only then)
 
     friend bool operator==(const Topics &, const Topics &) = default;
 };
@@ -68,22 +70,30 @@ struct FeedbackSettings
 struct BridgeSettings
 {
     Topics topics;
-    double publishRateHz = 100;            //!< messages per topic per second, at most [Hz]
-    std::string frameId = "hatpic";        //!< header.frame_id of every message out
-    std::string jointName = "hatpic_knob"; //!< JointState.name[0], JointJog.joint_names[0]
+    double publishRateHz = 100;     //!< messages per topic per second, at most [Hz]
+    std::string frameId = "hatpic"; //!< header.frame_id of every message out
+    //! JointState's and JointJog's joint names, ',' between knobs' (knob 1 first): jointNames().
+    std::string jointName = "hatpic_knob";
     //! The node's namespace ("knob1", "lab/knob1"; empty: the root, or ROS_NAMESPACE on ROS 1).
     //! The node and every topic at its default value, or relative, go under it.
     std::string nodeNamespace;
     std::optional<Component> referenceAxis; //!< unset: linear.x, angular.z in rotation mode
-    std::array<double, 3> poseOrigin{};     //!< added to the pose's position [m]
-    FeedbackSettings feedback;              //!< the wrench that comes back
-    QosProfile qos = QosProfile::Reliable;  //!< of the publishers (topics out)
-    int depth = 10;                         //!< keep last N, of the publishers
-    int domainId = 0;                       //!< DDS domain (ROS_DOMAIN_ID)
-    int rosVersion = 2;                     //!< 2: ROS 2 over Cyclone DDS; 1: ROS 1 (roscpp)
+    //! The components of knobs 2, 3, 4 on a board with several (the IMU branch's), ','
+    //! between them: their references on the twist and pose, their wrench component fed back
+    //! (knobAxes()). The published ROS script's y, z and yaw.
+    std::string knobAxes = "linear.y,linear.z,angular.z";
+    std::array<double, 3> poseOrigin{};    //!< added to the pose's position [m]
+    FeedbackSettings feedback;             //!< the wrench that comes back
+    QosProfile qos = QosProfile::Reliable; //!< of the publishers (topics out)
+    int depth = 10;                        //!< keep last N, of the publishers
+    int domainId = 0;                      //!< DDS domain (ROS_DOMAIN_ID)
+    int rosVersion = 2;                    //!< 2: ROS 2 over Cyclone DDS; 1: ROS 1 (roscpp)
 
     //! The axis the references go on for the given reference mode.
     Component axisFor(ReferenceMode mode) const;
+    //! Knob n's component (n = 2 … kMaxAxes) from knobAxes: its twist and pose axis, and the
+    //! wrench component fed back to it. Only for settings validate() accepts.
+    Component knobAxis(int n) const;
 
     friend bool operator==(const BridgeSettings &, const BridgeSettings &) = default;
 };
@@ -154,9 +164,17 @@ struct SettingSpec
 };
 
 //! Every setting, in --help's order; a profile writes those it holds in the same order.
-extern const std::array<SettingSpec, 23> kSettings;
+extern const std::array<SettingSpec, 25> kSettings;
 //! The row of kSettings with this key (a program error when there is none).
 const SettingSpec &settingSpec(std::string_view key);
+
+//! The components of knobs 2 … kMaxAxes in `text` ("linear.y,linear.z,angular.z"; "force.y"
+//! alike): nullopt unless it names kMaxAxes − 1 different ones.
+std::optional<std::array<Component, kMaxAxes - 1>> parseKnobAxes(const std::string &text);
+//! Each knob's joint name from the joint_name setting `text`: its names split at ',', knob 1
+//! first; a knob it does not name is the first name with "_N" (its number) appended
+//! ("hatpic_knob" → hatpic_knob, hatpic_knob_2, …). Empty when a name is empty or two are alike.
+std::vector<std::string> jointNames(const std::string &text, int count = kMaxAxes);
 
 //! A range's rule in words: "above 0 and at most 1000 Hz", "from 0 to 10 N·m", "a whole number
 //! from 1 to 1000", "1 or 2". The one wording of every setting's and option's range (the

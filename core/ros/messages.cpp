@@ -46,6 +46,8 @@ const char *rosTypeName(MessageType type)
         return "std_msgs/msg/Bool";
     case MessageType::JointJog:
         return "control_msgs/msg/JointJog";
+    case MessageType::Imu:
+        return "sensor_msgs/msg/Imu";
     }
     return "";
 }

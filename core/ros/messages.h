@@ -4,6 +4,7 @@
 // defines them. No middleware, no Qt.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -118,9 +119,23 @@ struct JointJog
     friend bool operator==(const JointJog &, const JointJog &) = default;
 };
 
+//! sensor_msgs/Imu. A covariance whose element 0 is −1 says that quantity is not given; one of
+//! all zeros, that its covariance is not known (the .msg file's rules).
+struct Imu
+{
+    Header header;
+    Quaternion orientation;
+    std::array<double, 9> orientationCovariance{}; //!< row major about x, y, z [rad²]
+    Vector3 angularVelocity;                       //!< [rad/s]
+    std::array<double, 9> angularVelocityCovariance{};
+    Vector3 linearAcceleration; //!< [m/s²]
+    std::array<double, 9> linearAccelerationCovariance{};
+    friend bool operator==(const Imu &, const Imu &) = default;
+};
+
 //! Every message type a topic can carry; the index of each alternative is its MessageType.
 using Message = std::variant<JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench,
-                             Bool, JointJog>;
+                             Bool, JointJog, Imu>;
 enum class MessageType {
     JointState,
     TwistStamped,
@@ -129,9 +144,10 @@ enum class MessageType {
     WrenchStamped,
     Wrench,
     Bool,
-    JointJog
+    JointJog,
+    Imu
 };
-constexpr int kMessageTypeCount = 8;
+constexpr int kMessageTypeCount = 9;
 
 inline MessageType typeOf(const Message &message)
 {

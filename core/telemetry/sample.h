@@ -77,6 +77,13 @@ struct Sample
     {
         return board && n >= 2 && n <= board->axes ? &board->more[std::size_t(n - 2)] : nullptr;
     }
+    //! Knob n's quantities (1 … axes()), knob 1's being the sample's own.
+    AxisSample knob(int n) const
+    {
+        if (const AxisSample *other = axis(n))
+            return *other;
+        return {theta, omega, tau, tau_rec, tau_ext, tau_total, v_ref, p_ref};
+    }
     //! The board's tilt [rad]; NaN without a tilt sensor.
     double roll() const { return board ? board->roll : std::numeric_limits<double>::quiet_NaN(); }
     double pitch() const { return board ? board->pitch : std::numeric_limits<double>::quiet_NaN(); }

@@ -15,10 +15,11 @@ double WrenchFeedback::mapped(double value)
     return std::clamp(tau, -m_settings.limit, m_settings.limit);
 }
 
-double WrenchFeedback::receive(double value, double now)
+double WrenchFeedback::receive(double value, double now, const OtherKnobs &others)
 {
     ++m_counters.received;
     m_lastValue = value;
+    m_otherValues = others;
     m_lastTime = now;
     m_stale = false;
     if (!std::isfinite(value)) {
@@ -37,6 +38,14 @@ double WrenchFeedback::torqueAt(double now)
         ++m_counters.stale;
     }
     return m_stale ? 0.0 : mapped(m_lastValue);
+}
+
+AxisTorques WrenchFeedback::torquesAt(double now)
+{
+    AxisTorques torques{torqueAt(now)};
+    for (std::size_t k = 0; !m_stale && k < m_otherValues.size(); ++k)
+        torques[k + 1] = mapped(m_otherValues[k]);
+    return torques;
 }
 
 } // namespace hatpic::bridge

@@ -2,6 +2,7 @@
 // network is untrusted, so a non-finite value or a wrench that stopped coming gives 0.
 #pragma once
 
+#include "model/axes.h"
 #include "profile/bridgesettings.h"
 
 #include <cstdint>
@@ -26,12 +27,19 @@ public:
     void setSettings(const FeedbackSettings &settings) { m_settings = settings; }
     const FeedbackSettings &settings() const { return m_settings; }
 
-    //! A wrench whose chosen component is `value` arrived at monotonic time `now` [s].
-    //! Returns τ_ext = clamp(gain · value, ±limit), or 0 for a non-finite value [N·m].
-    double receive(double value, double now);
+    //! The components fed back to knobs 2 … kMaxAxes (a board's), in order.
+    using OtherKnobs = std::array<double, kMaxAxes - 1>;
+
+    //! A wrench whose chosen component is `value` arrived at monotonic time `now` [s], with
+    //! `others` for a board's other knobs. Returns τ_ext = clamp(gain · value, ±limit), or 0
+    //! for a non-finite value [N·m]. Only knob 1's value is counted.
+    double receive(double value, double now, const OtherKnobs &others = {});
     //! τ_ext at monotonic time `now`: the last wrench's, or 0 once it is older than
     //! staleAfter (or when none came) [N·m].
     double torqueAt(double now);
+    //! Every knob's τ_ext at `now`, knob 1's torqueAt() first: each of the last wrench's
+    //! components mapped as knob 1's, all 0 once it is stale [N·m].
+    AxisTorques torquesAt(double now);
 
     const Counters &counters() const { return m_counters; }
     double lastValue() const { return m_lastValue; } //!< last component received (NaN: none)
@@ -43,6 +51,7 @@ private:
     FeedbackSettings m_settings;
     Counters m_counters;
     double m_lastValue = std::numeric_limits<double>::quiet_NaN();
+    OtherKnobs m_otherValues{};
     double m_lastTime = 0;
     bool m_stale = true; //!< no wrench yet counts as stale, but is not counted
 };

@@ -231,7 +231,7 @@ void BridgePanel::buildForm()
     topics->setObjectName(u"bridge_section_topics"_s);
     auto *topicForm = new QFormLayout(topics);
     for (std::size_t i = 0; i < std::size(kTopicFields); ++i) {
-        m_topics[i] = new QLineEdit(topics);
+        m_topics.append(new QLineEdit(topics));
         m_topics[i]->setObjectName(QString::fromUtf16(kTopicFields[i].name));
         topicForm->addRow(tr(kTopicFields[i].label), m_topics[i]);
         connect(m_topics[i], &QLineEdit::editingFinished, this, [this] { edited(true); });

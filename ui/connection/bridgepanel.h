@@ -124,7 +124,7 @@ private:
     QComboBox *m_ros = nullptr; //!< ROS 2, ROS 1 (data: the version)
     QLabel *m_master = nullptr; //!< ROS 1: ROS_MASTER_URI
     QSpinBox *m_domain = nullptr;
-    QLineEdit *m_topics[9] = {};
+    QList<QLineEdit *> m_topics; //!< one per bridgeform::kTopicFields, in its order
     QLineEdit *m_namespace = nullptr;
     QPushButton *m_engaged = nullptr; //!< the local enable switch (dead man)
     QDoubleSpinBox *m_rate = nullptr;

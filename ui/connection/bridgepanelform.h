@@ -43,8 +43,10 @@ inline constexpr TopicField kTopicFields[] = {
      &bridge::Topics::enable},
     {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Joint jog, MoveIt Servo (out)"),
      u"bridge_topic_joint_jog", &bridge::Topics::jointJog},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "IMU, a board's tilt (out)"), u"bridge_topic_imu",
+     &bridge::Topics::imu},
 };
-static_assert(std::size(kTopicFields) == 9);
+static_assert(std::size(kTopicFields) == 10);
 
 // What the bridge needs to do its work, a line each (issue 21: the panel once said nothing of
 // it). A new way to get a robot's wrench (a simulated robot) is one more line.

@@ -2,6 +2,7 @@
 
 #include <ros/message_traits.h>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -177,6 +178,44 @@ BoolMsg toRos(const Bool &m)
 Bool fromRos(const BoolMsg &m)
 {
     return {m.data != 0};
+}
+
+ImuMsg toRos(const Imu &m)
+{
+    ImuMsg r;
+    r.header = toRos(m.header);
+    r.orientation.x = m.orientation.x;
+    r.orientation.y = m.orientation.y;
+    r.orientation.z = m.orientation.z;
+    r.orientation.w = m.orientation.w;
+    r.angular_velocity = toRos(m.angularVelocity);
+    r.linear_acceleration = toRos(m.linearAcceleration);
+    std::copy(m.orientationCovariance.begin(), m.orientationCovariance.end(),
+              r.orientation_covariance.begin());
+    std::copy(m.angularVelocityCovariance.begin(), m.angularVelocityCovariance.end(),
+              r.angular_velocity_covariance.begin());
+    std::copy(m.linearAccelerationCovariance.begin(), m.linearAccelerationCovariance.end(),
+              r.linear_acceleration_covariance.begin());
+    return r;
+}
+
+Imu fromRos(const ImuMsg &m)
+{
+    const auto &q = m.orientation;
+    Imu r{fromRos(m.header),
+          {q.x, q.y, q.z, q.w},
+          {},
+          fromRos(m.angular_velocity),
+          {},
+          fromRos(m.linear_acceleration),
+          {}};
+    std::copy(m.orientation_covariance.begin(), m.orientation_covariance.end(),
+              r.orientationCovariance.begin());
+    std::copy(m.angular_velocity_covariance.begin(), m.angular_velocity_covariance.end(),
+              r.angularVelocityCovariance.begin());
+    std::copy(m.linear_acceleration_covariance.begin(), m.linear_acceleration_covariance.end(),
+              r.linearAccelerationCovariance.begin());
+    return r;
 }
 
 } // namespace hatpic::ros::ros1

@@ -10,6 +10,7 @@
 #include <geometry_msgs/TwistStamped.h>
 #include <geometry_msgs/Wrench.h>
 #include <geometry_msgs/WrenchStamped.h>
+#include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
 
@@ -40,6 +41,7 @@ using PoseStampedMsg = geometry_msgs::PoseStamped_<Allocator<void>>;
 using WrenchStampedMsg = geometry_msgs::WrenchStamped_<Allocator<void>>;
 using WrenchMsg = geometry_msgs::Wrench_<Allocator<void>>;
 using BoolMsg = std_msgs::Bool_<Allocator<void>>;
+using ImuMsg = sensor_msgs::Imu_<Allocator<void>>;
 using HeaderMsg = std_msgs::Header_<Allocator<void>>;
 using Vector3Msg = geometry_msgs::Vector3_<Allocator<void>>;
 
@@ -75,6 +77,8 @@ template<typename F> decltype(auto) visitType(MessageType type, F &&f)
         return f(RosType<WrenchMsg>{});
     case MessageType::Bool:
         return f(RosType<BoolMsg>{});
+    case MessageType::Imu:
+        return f(RosType<ImuMsg>{});
     case MessageType::JointJog:
         break;
     }
@@ -91,6 +95,7 @@ PoseStampedMsg toRos(const PoseStamped &m);
 WrenchStampedMsg toRos(const WrenchStamped &m);
 WrenchMsg toRos(const Wrench &m);
 BoolMsg toRos(const Bool &m);
+ImuMsg toRos(const Imu &m);
 
 //! ROS 1 header stamps are unsigned: a stamp beyond int32 seconds is clamped to its largest.
 JointState fromRos(const JointStateMsg &m);
@@ -98,6 +103,7 @@ TwistStamped fromRos(const TwistStampedMsg &m);
 Twist fromRos(const TwistMsg &m);
 PoseStamped fromRos(const PoseStampedMsg &m);
 WrenchStamped fromRos(const WrenchStampedMsg &m);
+Imu fromRos(const ImuMsg &m);
 Wrench fromRos(const WrenchMsg &m);
 Bool fromRos(const BoolMsg &m);
 

@@ -68,8 +68,11 @@ std::string idlText()
             open = package;
         }
         out += "  @final struct " + std::string(messageOf(type.name)) + "_ {\n";
-        for (const FieldDef &field : type.fields)
-            out += "    " + idlType(field) + " " + field.name + ";\n";
+        for (const FieldDef &field : type.fields) {
+            const std::string size =
+                field.capacity > 0 ? "[" + std::to_string(field.capacity) + "]" : "";
+            out += "    " + idlType(field) + " " + field.name + size + ";\n";
+        }
         out += "  };\n";
     }
     close();

@@ -29,7 +29,7 @@ std::string quoted(std::string_view text)
 }
 
 // IndividualTypeDescription without the fields' default_value:
-// {"type_name": …, "fields": [{"name": …, "type": {"type_id": …, "capacity": 0,
+// {"type_name": …, "fields": [{"name": …, "type": {"type_id": …, "capacity": N,
 // "string_capacity": 0, "nested_type_name": …}}, …]}
 std::string individual(const TypeDef &type)
 {
@@ -39,11 +39,11 @@ std::string individual(const TypeDef &type)
         if (!first)
             out += ", ";
         first = false;
-        // Unbounded sequences and strings: capacity and string_capacity 0.
+        // Unbounded sequences and strings: capacity and string_capacity 0; an array its size.
         out += "{\"name\": " + quoted(field.name) +
                ", \"type\": {\"type_id\": " + std::to_string(field.typeId()) +
-               ", \"capacity\": 0, \"string_capacity\": 0, \"nested_type_name\": " +
-               quoted(field.nestedType) + "}}";
+               ", \"capacity\": " + std::to_string(field.capacity) +
+               ", \"string_capacity\": 0, \"nested_type_name\": " + quoted(field.nestedType) + "}}";
     }
     return out + "]}";
 }

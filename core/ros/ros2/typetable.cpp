@@ -41,6 +41,13 @@ constexpr FieldDef kJointJog[] = {{"header", K::Nested, false, "std_msgs/msg/Hea
                                   {"displacements", K::Double, true},
                                   {"velocities", K::Double, true},
                                   {"duration", K::Double}};
+constexpr FieldDef kImu[] = {{"header", K::Nested, false, "std_msgs/msg/Header"},
+                             {"orientation", K::Nested, false, "geometry_msgs/msg/Quaternion"},
+                             {"orientation_covariance", K::Double, false, "", 9},
+                             {"angular_velocity", K::Nested, false, "geometry_msgs/msg/Vector3"},
+                             {"angular_velocity_covariance", K::Double, false, "", 9},
+                             {"linear_acceleration", K::Nested, false, "geometry_msgs/msg/Vector3"},
+                             {"linear_acceleration_covariance", K::Double, false, "", 9}};
 
 constexpr TypeDef kTypes[] = {
     {"builtin_interfaces/msg/Time", kTime},
@@ -57,6 +64,7 @@ constexpr TypeDef kTypes[] = {
     {"sensor_msgs/msg/JointState", kJointState},
     {"std_msgs/msg/Bool", kBool},
     {"control_msgs/msg/JointJog", kJointJog},
+    {"sensor_msgs/msg/Imu", kImu},
 };
 
 bool isIdentifier(std::string_view s)
@@ -119,6 +127,8 @@ std::string checkTypeTable()
             const std::string_view nested = field.nestedType;
             if ((field.kind == FieldKind::Nested) == nested.empty())
                 return where + ": a nested type goes with kind Nested, and only with it";
+            if (field.capacity < 0 || (field.capacity > 0 && field.sequence))
+                return where + ": an array has a size above 0 and is not a sequence";
             if (field.kind == FieldKind::Nested && !listed(nested))
                 return where + ": its type '" + std::string(nested) + "' is not listed before it";
         }

@@ -24,6 +24,8 @@ enum class FieldKind : int {
 //! FieldType numbers an unbounded sequence of a value type this much above the value type
 //! (FIELD_TYPE_DOUBLE_UNBOUNDED_SEQUENCE = 155 = 11 + 144).
 constexpr int kUnboundedSequenceOffset = 144;
+//! … and an array of fixed size this much (FIELD_TYPE_DOUBLE_ARRAY = 59 = 11 + 48).
+constexpr int kArrayOffset = 48;
 
 struct FieldDef
 {
@@ -31,9 +33,13 @@ struct FieldDef
     FieldKind kind;
     bool sequence = false;       //!< an unbounded sequence (`float64[]`, `string[]`)
     const char *nestedType = ""; //!< kind Nested: the type's ROS name
+    int capacity = 0;            //!< a fixed-size array's size (`float64[9]`), else 0
 
-    //! The FieldType id of the field: its kind, or the unbounded sequence of it.
-    constexpr int typeId() const { return int(kind) + (sequence ? kUnboundedSequenceOffset : 0); }
+    //! The FieldType id of the field: its kind, the array of it or the unbounded sequence.
+    constexpr int typeId() const
+    {
+        return int(kind) + (sequence ? kUnboundedSequenceOffset : capacity > 0 ? kArrayOffset : 0);
+    }
 };
 
 struct TypeDef

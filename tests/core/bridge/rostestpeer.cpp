@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 
 namespace hatpic::test {
 
@@ -111,7 +112,7 @@ struct RosTestPeer::Entities
 {
     dds_entity_t domain = 0, participant = 0, joint = 0, twist = 0, bestEffortTwist = 0,
                  unstampedTwist = 0, pose = 0, feedback = 0, wrench = 0, unstamped = 0,
-                 publications = 0, subscriptions = 0, enable = 0, jog = 0, twistOut = 0;
+                 publications = 0, subscriptions = 0, enable = 0, jog = 0, twistOut = 0, imu = 0;
     std::string twistTopic; //!< "rt/…/hatpic/twist", for twistOut
 
     dds_entity_t topic(const dds_topic_descriptor_t *desc, const char *name) const
@@ -143,6 +144,7 @@ RosTestPeer::RosTestPeer(int domain, const std::string &domainConfig, const std:
     e.pose = reader(&geometry_msgs_msg_dds__PoseStamped__desc, under("/hatpic/pose"));
     e.feedback = reader(&geometry_msgs_msg_dds__WrenchStamped__desc, under("/hatpic/feedback"));
     e.jog = reader(&control_msgs_msg_dds__JointJog__desc, kJointJogTopic);
+    e.imu = reader(&sensor_msgs_msg_dds__Imu__desc, under("/hatpic/imu"));
     dds_delete_qos(qos);
     qos = rmwQos(false, false, 1000); // a sensor-data subscription
     e.bestEffortTwist = reader(&geometry_msgs_msg_dds__TwistStamped__desc, under("/hatpic/twist"));
@@ -216,6 +218,16 @@ void RosTestPeer::publishWrench(double forceZ, double torqueZ, double stampSecon
     dds_write(m_e->wrench, &w);
 }
 
+void RosTestPeer::publishWrench(const std::array<double, 3> &force,
+                                const std::array<double, 3> &torque)
+{
+    geometry_msgs_msg_dds__WrenchStamped_ w{};
+    w.header.frame_id = const_cast<char *>("robot");
+    w.wrench.force = {force[0], force[1], force[2]};
+    w.wrench.torque = {torque[0], torque[1], torque[2]};
+    dds_write(m_e->wrench, &w);
+}
+
 void RosTestPeer::publishTwist(double linearX, const std::string &frame)
 {
     Entities &e = *m_e;
@@ -249,6 +261,7 @@ void RosTestPeer::publishEnable(bool enabled)
 void RosTestPeer::clear()
 {
     jogs.clear();
+    imus.clear();
     joints.clear();
     twists.clear();
     bestEffortTwists.clear();
@@ -286,6 +299,18 @@ void RosTestPeer::take()
                          m.header.frame_id,
                          {p.position.x, p.position.y, p.position.z},
                          {p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w}});
+    });
+    takeAll<sensor_msgs_msg_dds__Imu_>(m_e->imu, [this](const auto &m) {
+        const auto &q = m.orientation;
+        ImuGot g{timeOf(m.header), m.header.frame_id, {q.x, q.y, q.z, q.w}, {}, {}, {}};
+        std::copy(std::begin(m.orientation_covariance), std::end(m.orientation_covariance),
+                  g.orientationCovariance.begin());
+        std::copy(std::begin(m.angular_velocity_covariance),
+                  std::end(m.angular_velocity_covariance), g.angularVelocityCovariance.begin());
+        std::copy(std::begin(m.linear_acceleration_covariance),
+                  std::end(m.linear_acceleration_covariance),
+                  g.linearAccelerationCovariance.begin());
+        imus.push_back(g);
     });
     takeAll<control_msgs_msg_dds__JointJog_>(m_e->jog, [this](const auto &m) {
         JogGot g{timeOf(m.header), {}, {}, {}, m.duration};

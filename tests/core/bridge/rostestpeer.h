@@ -72,6 +72,15 @@ struct JogGot //!< control_msgs/JointJog
     double duration = 0;
 };
 
+struct ImuGot //!< sensor_msgs/Imu
+{
+    TimeGot stamp;
+    std::string frame;
+    std::array<double, 4> orientation{};
+    std::array<double, 9> orientationCovariance{}, angularVelocityCovariance{},
+        linearAccelerationCovariance{};
+};
+
 //! A remote reader or writer as DDS's built-in topics announce it.
 struct EndpointSeen
 {
@@ -114,6 +123,8 @@ public:
     //! a sender that does not fill it); its frame_id `frame`.
     void publishWrench(double forceZ, double torqueZ = 0, double stampSeconds = 0,
                        const std::string &frame = "robot");
+    //! A WrenchStamped with every component (unstamped, frame "robot"): force [N], torque [N·m].
+    void publishWrench(const std::array<double, 3> &force, const std::array<double, 3> &torque);
     //! A TwistStamped on /hatpic/twist (under the namespace) as the bridge sends it (reliable,
     //! keep last 1), for a robot's subscription; its frame_id `frame`. The writer is made on
     //! the first call, so until then the peer's own twist readers hear only the bridge.
@@ -136,6 +147,7 @@ public:
     std::vector<PoseGot> poses;
     std::vector<VectorsGot> feedbacks;
     std::vector<JogGot> jogs;
+    std::vector<ImuGot> imus; //!< on /hatpic/imu (under the namespace)
 
 private:
     struct Entities;

@@ -47,6 +47,7 @@ private Q_SLOTS:
         QVERIFY2(m_peer->joints.size() >= 20 && m_peer->twists.size() >= 20 &&
                      m_peer->poses.size() >= 20,
                  qPrintable(QString::number(m_peer->joints.size())));
+        QVERIFY(m_peer->imus.empty()); // a single knob has no tilt: the IMU topic stays silent
         const double received = wallNow();
 
         for (const auto &j : m_peer->joints) {
@@ -136,14 +137,16 @@ private Q_SLOTS:
                                    "895677ce52";
         const std::string jog = "RIHS01_ba249455a20f70168a1acb7bf43b776b72ff1f7eb5fc4cfea443f749"
                                 "e963c6e7";
+        const std::string imu = "RIHS01_7d9a00ff131080897a5ec7e26e315954b8eae3353c3f995c55faf715"
+                                "74000b5b";
         const Expected writers[] = {
             {"rt/servo_node/delta_joint_cmds", "control_msgs::msg::dds_::JointJog_", jog, true},
             {"rt/hatpic/joint_states", "sensor_msgs::msg::dds_::JointState_", joint, true},
             {"rt/hatpic/twist", "geometry_msgs::msg::dds_::TwistStamped_", twistStamped, true},
             {"rt/haptic_twist", "geometry_msgs::msg::dds_::Twist_", twist, true},
             {"rt/hatpic/pose", "geometry_msgs::msg::dds_::PoseStamped_", pose, true},
-            {"rt/hatpic/feedback", "geometry_msgs::msg::dds_::WrenchStamped_", wrenchStamped,
-             true}};
+            {"rt/hatpic/feedback", "geometry_msgs::msg::dds_::WrenchStamped_", wrenchStamped, true},
+            {"rt/hatpic/imu", "sensor_msgs::msg::dds_::Imu_", imu, true}};
         const Expected readers[] = {
             {"rt/wrench_estimation", "geometry_msgs::msg::dds_::WrenchStamped_", wrenchStamped,
              false},

@@ -118,9 +118,11 @@ private Q_SLOTS:
         const ReferenceMessages m = referenceMessages(s, 1700000000.25, settings,
                                                       settings.axisFor(ReferenceMode::Translation));
         QCOMPARE(m.stamp, (ros::Time{1700000000, 250000000}));
-        QCOMPARE(m.position, 0.4);
-        QCOMPARE(m.velocity, -0.25);
-        QCOMPARE(m.effort, 0.03);
+        QCOMPARE(m.joints, 1);
+        QCOMPARE(m.position[0], 0.4);
+        QCOMPARE(m.velocity[0], -0.25);
+        QCOMPARE(m.effort[0], 0.03);
+        QCOMPARE(m.jointJogVelocity[0], 0.2);
         QCOMPARE(m.twist, (std::array<double, 6>{0.2, 0, 0, 0, 0, 0}));
         QCOMPARE(m.posePosition, (std::array<double, 3>{1.5, 0, 0.5}));
         QCOMPARE(m.poseOrientation, (std::array<double, 4>{0, 0, 0, 1}));
@@ -139,6 +141,85 @@ private Q_SLOTS:
         const ReferenceMessages z = referenceMessages(s, 0, settings, *settings.referenceAxis);
         QCOMPARE(z.twist[2], 0.2);
         QCOMPARE(z.posePosition[2], 2.0);
+    }
+
+    void aBoardsKnobsGoOnTheirOwnAxes()
+    {
+        // Four knobs: knob 1 on linear.x, 2 … 4 on the default linear.y, linear.z, angular.z.
+        BoardSample board;
+        board.axes = 4;
+        for (std::size_t k = 0; k < 3; ++k) {
+            board.more[k].theta = 0.1 * double(k + 2);
+            board.more[k].v_ref = 0.01 * double(k + 2);
+            board.more[k].p_ref = 0.5 * double(k + 2);
+        }
+        Sample s;
+        s.theta = 0.1;
+        s.v_ref = 0.01;
+        s.p_ref = 0.5;
+        s.board = std::make_shared<const BoardSample>(board);
+        BridgeSettings settings;
+        const ReferenceMessages m =
+            referenceMessages(s, 0, settings, settings.axisFor(ReferenceMode::Translation));
+        QCOMPARE(m.joints, 4);
+        QCOMPARE(m.position, (std::array<double, 4>{0.1, 0.2, 0.30000000000000004, 0.4}));
+        QCOMPARE(m.jointJogVelocity[3], 0.04);
+        QCOMPARE(m.twist, (std::array<double, 6>{0.01, 0.02, 0.03, 0, 0, 0.04}));
+        QCOMPARE(m.posePosition, (std::array<double, 3>{0.5, 1.0, 1.5}));
+        QCOMPARE(m.poseOrientation[2], std::sin(1.0));
+        QCOMPARE(m.poseOrientation[3], std::cos(1.0));
+
+        // Rotation mode puts knob 1 on angular.z too: knob 4's axis is taken, its references
+        // go nowhere (its joint still does).
+        const ReferenceMessages r =
+            referenceMessages(s, 0, settings, settings.axisFor(ReferenceMode::Rotation));
+        QCOMPARE(r.twist, (std::array<double, 6>{0, 0.02, 0.03, 0, 0, 0.01}));
+        QCOMPARE(r.poseOrientation[2], std::sin(0.25));
+        QCOMPARE(r.position[3], 0.4);
+
+        // Two angular axes: knob 1's roll, then knob 2's pitch about the frame's own y axis.
+        settings.knobAxes = "angular.y,linear.z,force.y";
+        const ReferenceMessages q = referenceMessages(s, 0, settings, Component{true, 0});
+        const double c1 = std::cos(0.25), s1 = std::sin(0.25), c2 = std::cos(0.5),
+                     s2 = std::sin(0.5);
+        // q2 ⊗ q1 with q1 = (s1, 0, 0, c1), q2 = (0, s2, 0, c2).
+        QVERIFY(std::abs(q.poseOrientation[0] - c2 * s1) < 1e-15);
+        QVERIFY(std::abs(q.poseOrientation[1] - s2 * c1) < 1e-15);
+        QVERIFY(std::abs(q.poseOrientation[2] + s2 * s1) < 1e-15);
+        QVERIFY(std::abs(q.poseOrientation[3] - c2 * c1) < 1e-15);
+        QCOMPARE(q.twist, (std::array<double, 6>{0, 0.04, 0.03, 0.01, 0.02, 0}));
+    }
+
+    void knobAxesAndJointNamesAreChecked()
+    {
+        QCOMPARE(parseKnobAxes("linear.y,linear.z,angular.z"),
+                 (std::array<Component, 3>{Component{false, 1}, Component{false, 2},
+                                           Component{true, 2}}));
+        QCOMPARE(parseKnobAxes("force.y,torque.x,linear.x")->at(1), (Component{true, 0}));
+        QVERIFY(!parseKnobAxes("linear.y,linear.z"));
+        QVERIFY(!parseKnobAxes("linear.y,linear.z,angular.z,angular.x"));
+        QVERIFY(!parseKnobAxes("linear.y,force.y,angular.z")); // the same component twice
+        QVERIFY(!parseKnobAxes("linear.y,,angular.z"));
+        QVERIFY(!parseKnobAxes("linear.y, linear.z,angular.z"));
+
+        QCOMPARE(jointNames("hatpic_knob"),
+                 (std::vector<std::string>{"hatpic_knob", "hatpic_knob_2", "hatpic_knob_3",
+                                           "hatpic_knob_4"}));
+        QCOMPARE(jointNames("x,y", 3), (std::vector<std::string>{"x", "y", "x_3"}));
+        QCOMPARE(jointNames("a,b,c,d,e", 4), (std::vector<std::string>{"a", "b", "c", "d"}));
+        QVERIFY(jointNames("a,,b").empty());
+        QVERIFY(jointNames("a,a").empty());
+        QVERIFY(jointNames("a,a_3").empty()); // knob 3 would be a_3 as well
+
+        BridgeSettings s;
+        s.knobAxes = "linear.y,linear.y,angular.z";
+        s.jointName = "a,a";
+        const auto errors = validate(s);
+        QCOMPARE(errors.size(), 2u);
+        QCOMPARE(errors[0], "joint name: must be names separated by ',', none empty and no two "
+                            "alike, got 'a,a'");
+        QCOMPARE(errors[1], "knob axes: must be three different components (linear.x … "
+                            "angular.z) separated by ',', got 'linear.y,linear.y,angular.z'");
     }
 
     void sampleWallClock() { QCOMPARE(sampleWallSeconds(100.0, 5.0, 4.98), 100.0 - (5.0 - 4.98)); }
@@ -348,6 +429,34 @@ private Q_SLOTS:
         QCOMPARE(late.reference(0.4, false), 0.4);
         QCOMPARE(late.reference(0.9, false), 0.4);
         QCOMPARE(late.reference(1.0, true), 0.4);
+
+        // Each knob holds and re-anchors its own reference.
+        EnableGate board;
+        QCOMPARE(board.reference(1.0, true, 0), 1.0);
+        QCOMPARE(board.reference(-2.0, true, 3), -2.0);
+        QCOMPARE(board.reference(1.5, false, 0), 1.0);
+        QCOMPARE(board.reference(-1.0, false, 3), -2.0);
+        QCOMPARE(board.reference(1.5, true, 0), 1.0);
+        QCOMPARE(board.reference(-1.0, true, 3), -2.0);
+        QCOMPARE(board.offset(0), 0.5);
+        QCOMPARE(board.offset(3), 1.0);
+        QCOMPARE(board.offset(1), 0.0);
+    }
+
+    // A board's other knobs: each component through knob 1's gain and limit, all 0 when stale.
+    void otherKnobsShareTheMapping()
+    {
+        WrenchFeedback w;
+        QCOMPARE(w.receive(0.5, 1.0, {-0.5, 1e9, std::numeric_limits<double>::quiet_NaN()}),
+                 0.5 * 0.154);
+        const AxisTorques t = w.torquesAt(1.1);
+        QCOMPARE(t[0], 0.5 * 0.154);
+        QCOMPARE(t[1], -0.5 * 0.154);
+        QCOMPARE(t[2], 0.154);
+        QCOMPARE(t[3], 0.0);
+        QCOMPARE(w.counters().limited, 0u); // only knob 1's value is counted
+        QCOMPARE(w.torquesAt(1.6), AxisTorques{});
+        QCOMPARE(w.counters().stale, 1u);
     }
 };
 

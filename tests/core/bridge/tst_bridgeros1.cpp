@@ -1,11 +1,13 @@
 // The bridge over ROS 1 (roscpp) against a real roscore on loopback and a rospy node that is
 // not ours, with the in-process simulated joystick held at a known angle: the same topics,
 // types and mapping as over ROS 2 (tst_bridge), the wrench back as τ_ext, NaN and silence
-// giving 0, and stop() leaving 0.
+// giving 0, and stop() leaving 0; then the IMU branch's board, one joint and one feedback per
+// knob.
 #include "roscore.h"
 
 #include "bridge/bridge.h"
 #include "session/deviceclient.h"
+#include "sim/simulatorhost.h"
 #include "simulatoroptions.h"
 
 #include <QDateTime>
@@ -66,7 +68,8 @@ private Q_SLOTS:
                                u"/hatpic/feedback=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
                                u"/wrench_estimation=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
                                u"/robot/wrench=geometry_msgs/Wrench"_s, u"--pub"_s,
-                               u"/teleop/enable=std_msgs/Bool"_s}),
+                               u"/teleop/enable=std_msgs/Bool"_s, u"--sub"_s,
+                               u"/hatpic/imu=sensor_msgs/Imu"_s}),
                  QString());
     }
     void cleanupTestCase()
@@ -213,6 +216,63 @@ private Q_SLOTS:
         QVERIFY(!m_bridge.isRunning());
         QTRY_COMPARE_WITH_TIMEOUT(m_deviceTauExt, 0.0, 300); // well before staleness would
         m_peer.send(u"stop /wrench_estimation"_s);
+    }
+
+    // The IMU branch's board (simulated, on a real pty) through a bridge of its own on the
+    // same topics, once the single knob's has stopped: four joints, each wrench component felt
+    // on its knob (ros.md § A board's knobs).
+    void aBoardsKnobsOverRos1()
+    {
+        m_bridge.stop();
+        SimulatedDevice::Config config;
+        config.board = SimulatedDevice::Board::ImuBranch;
+        config.otherHands[1] = *HandInput::parse(u"const:0.05"_s); // knob 3 pushed, 0.05 N·m
+        SimulatorHost host(config);
+        QCOMPARE(host.start(), QString());
+        DeviceClient board;
+        Sample last;
+        connect(&board, &DeviceClient::samplesReady, this, [&last](const SampleBatch &batch) {
+            if (!batch.isEmpty())
+                last = batch.last();
+        });
+        ConnectOptions o;
+        o.port = host.slavePath();
+        board.connectDevice(o);
+        QTRY_COMPARE_WITH_TIMEOUT(last.axes(), 4, 10000);
+        Bridge bridge(board);
+        BridgeSettings settings;
+        settings.rosVersion = 1;
+        settings.feedback.component = Component{false, 0}; // the published script's force.x
+        QCOMPARE(bridge.start(settings), QString());
+
+        m_peer.clear();
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.received(u"/hatpic/joint_states"_s).size() >= 5, 10000);
+        const QJsonObject j = m_peer.received(u"/hatpic/joint_states"_s).last();
+        QCOMPARE(j.value(u"msg"_s).toObject().value(u"name"_s).toArray(),
+                 (QJsonArray{u"hatpic_knob"_s, u"hatpic_knob_2"_s, u"hatpic_knob_3"_s,
+                             u"hatpic_knob_4"_s}));
+        QVERIFY2(field(j, u"position.2"_s) > 0.1 && std::abs(field(j, u"position.1"_s)) < 0.01,
+                 qPrintable(QString::number(field(j, u"position.2"_s))));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            field(m_peer.received(u"/hatpic/twist"_s).last(), u"twist.linear.z"_s) > 0, 5000);
+        // The tilt (level here) as sensor_msgs/Imu, orientation only.
+        QTRY_VERIFY_WITH_TIMEOUT(!m_peer.received(u"/hatpic/imu"_s).isEmpty(), 5000);
+        const QJsonObject imu = m_peer.received(u"/hatpic/imu"_s).last();
+        QVERIFY(std::abs(field(imu, u"orientation.w"_s) - 1) < 1e-6);
+        QCOMPARE(field(imu, u"angular_velocity_covariance.0"_s), -1.0);
+        QCOMPARE(field(imu, u"linear_acceleration_covariance.0"_s), -1.0);
+        QCOMPARE(field(imu, u"orientation_covariance.0"_s), 0.0);
+
+        m_peer.send(
+            uR"(set /wrench_estimation {"wrench": {"force": {"y": 0.5}, "torque": {"z": -0.5}}})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(last.axis(2)->tau_ext > 0.07, 5000);
+        QVERIFY(last.axis(4)->tau_ext < -0.07);
+        QCOMPARE(bridge.stats().torques, (AxisTorques{0, 0.077, 0, -0.077}));
+        bridge.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(last.axis(2)->tau_ext, 0.0, 1000);
+        QCOMPARE(last.axis(4)->tau_ext, 0.0);
+        m_peer.send(u"stop /wrench_estimation"_s);
+        board.disconnectDevice();
     }
 
 private:

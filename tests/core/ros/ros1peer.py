@@ -27,10 +27,10 @@ import threading
 import rosgraph
 import rospy
 from geometry_msgs.msg import PoseStamped, Twist, TwistStamped, Wrench, WrenchStamped
-from sensor_msgs.msg import JointState
+from sensor_msgs.msg import Imu, JointState
 from std_msgs.msg import Bool
 
-TYPES = {cls._type: cls for cls in (JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench, Bool)}
+TYPES = {cls._type: cls for cls in (JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench, Bool, Imu)}
 out_lock = threading.Lock()
 
 

@@ -84,6 +84,14 @@ Message sampleMessage(MessageType type)
         return Bool{true};
     case MessageType::JointJog:
         return JointJog{header, {"joint_1", "joint ü"}, {0.125}, {-0.5, 2}, 0.25};
+    case MessageType::Imu:
+        return Imu{header,
+                   {0.1, -0.2, 0.3, 0.9},
+                   {1, 2, 3, 4, 5, 6, 7, 8, 9},
+                   a,
+                   {-1, 0, 0, 0, 0, 0, 0, 0, 1e-9},
+                   b,
+                   {0.5, 0, 0, 0, 0.5, 0, 0, 0, -0.5}};
     }
     return {};
 }

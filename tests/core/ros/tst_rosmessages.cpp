@@ -53,13 +53,15 @@ private Q_SLOTS:
         QTest::newRow("Wrench") << 5 << QStringLiteral("geometry_msgs/msg/Wrench");
         QTest::newRow("Bool") << 6 << QStringLiteral("std_msgs/msg/Bool");
         QTest::newRow("JointJog") << 7 << QStringLiteral("control_msgs/msg/JointJog");
+        QTest::newRow("Imu") << 8 << QStringLiteral("sensor_msgs/msg/Imu");
     }
     void typeOfFollowsTheVariant()
     {
         QFETCH(int, index);
         QFETCH(QString, rosName);
-        const Message messages[] = {JointState{},    TwistStamped{}, Twist{}, PoseStamped{},
-                                    WrenchStamped{}, Wrench{},       Bool{},  JointJog{}};
+        const Message messages[] = {JointState{},  TwistStamped{},  Twist{},
+                                    PoseStamped{}, WrenchStamped{}, Wrench{},
+                                    Bool{},        JointJog{},      Imu{}};
         static_assert(std::size(messages) == kMessageTypeCount);
         QCOMPARE(int(typeOf(messages[index])), index);
         QCOMPARE(QString::fromLatin1(rosTypeName(MessageType(index))), rosName);
