@@ -250,19 +250,17 @@ void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
     }
     m_timing.arrived(arrived, wall, wrench.stamp);
     const Component c = m_settings.feedback.component;
-    const int chosen = (c.angular ? 3 : 0) + c.index;
+    const int chosen = c.slot();
     m_lastWrench = wrench.values;
     bool another = false;
     for (int i = 0; i < 6; ++i)
         another =
             another || (i != chosen && wrench.values[i] != 0 && std::isfinite(wrench.values[i]));
     m_otherComponentStreak = wrench.values[chosen] == 0 && another ? m_otherComponentStreak + 1 : 0;
-    // A board's knobs 2 … 4 feel the components of their own axes (ros.md § Several knobs).
+    // A board's knobs 2 … 4 feel the components of their own axes (ros.md § A board's knobs).
     WrenchFeedback::OtherKnobs others{};
-    for (std::size_t k = 0; k < others.size(); ++k) {
-        const Component axis = m_axes[k + 1];
-        others[k] = wrench.values[std::size_t((axis.angular ? 3 : 0) + axis.index)];
-    }
+    for (std::size_t k = 0; k < others.size(); ++k)
+        others[k] = wrench.values[std::size_t(m_axes[k + 1].slot())];
     m_feedback.receive(wrench.values[chosen], arrived, others);
     const AxisTorques applied =
         m_gate.engaged(arrived) ? m_feedback.torquesAt(arrived) : AxisTorques{};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace hatpic::bridge {
 
@@ -22,9 +23,11 @@ Quaternion product(const Quaternion &a, const Quaternion &b)
 
 KnobComponents knobComponents(const BridgeSettings &settings, Component axis)
 {
+    const auto others = parseKnobAxes(settings.knobAxes);
+    if (!others) // validate() refuses such settings before they get here
+        throw std::logic_error("knob axes '" + settings.knobAxes + "'");
     KnobComponents axes{axis};
-    for (int n = 2; n <= kMaxAxes; ++n)
-        axes[std::size_t(n - 1)] = settings.knobAxis(n);
+    std::copy(others->begin(), others->end(), axes.begin() + 1);
     return axes;
 }
 
@@ -46,7 +49,7 @@ ReferenceMessages referenceMessages(const Knobs &knobs, int count, double wallSe
         const Component c = axes[std::size_t(k)];
         if (std::find(axes.begin(), axes.begin() + k, c) != axes.begin() + k)
             continue; // the axis is an earlier knob's
-        m.twist[(c.angular ? 3 : 0) + c.index] = knob.v_ref;
+        m.twist[c.slot()] = knob.v_ref;
         if (c.angular) {
             // p_ref is an angle about that axis: the rotation as a unit quaternion, after the
             // earlier knobs' (each about the frame's own axis).

@@ -39,7 +39,7 @@ struct ReferenceMessages
 };
 
 //! Each knob's twist and pose axis, knob 1 first: `axis` for knob 1, then the settings'
-//! knobAxis().
+//! knobAxes (parseKnobAxes(); settings validate() accepts).
 using KnobComponents = std::array<Component, kMaxAxes>;
 KnobComponents knobComponents(const BridgeSettings &settings, Component axis);
 

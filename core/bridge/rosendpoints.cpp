@@ -161,13 +161,15 @@ void RosEndpoints::publish(const ReferenceMessages &m)
         if (const auto &publisher = m_publishers[int(topic)])
             publisher->publish(make());
     };
-    // One joint per knob (ros.md § Several knobs).
+    // One joint per knob (ros.md § A board's knobs), built only for a topic that publishes.
     const auto joints = [&m](const std::array<double, kMaxAxes> &values) {
         return std::vector<double>(values.begin(), values.begin() + m.joints);
     };
-    const std::vector<std::string> names(m_jointNames.begin(), m_jointNames.begin() + m.joints);
+    const auto names = [this, &m] {
+        return std::vector<std::string>(m_jointNames.begin(), m_jointNames.begin() + m.joints);
+    };
     send(OutTopic::JointStates, [&] {
-        return ros::JointState{header, names, joints(m.position), joints(m.velocity),
+        return ros::JointState{header, names(), joints(m.position), joints(m.velocity),
                                joints(m.effort)};
     });
     const ros::Twist twist{{m.twist[0], m.twist[1], m.twist[2]},
@@ -185,7 +187,7 @@ void RosEndpoints::publish(const ReferenceMessages &m)
         return ros::WrenchStamped{header, {{0, 0, 0}, {0, 0, m.feedbackTorque}}};
     });
     send(OutTopic::JointJog, [&] {
-        return ros::JointJog{header, names, {}, joints(m.jointJogVelocity), 0};
+        return ros::JointJog{header, names(), {}, joints(m.jointJogVelocity), 0};
     });
     if (m.tilt) { // a board with a tilt sensor: its orientation, nothing else known
         send(OutTopic::Imu, [&] {

@@ -228,14 +228,6 @@ Component BridgeSettings::axisFor(ReferenceMode mode) const
     return mode == ReferenceMode::Rotation ? Component{true, 2} : Component{false, 0};
 }
 
-Component BridgeSettings::knobAxis(int n) const
-{
-    const auto axes = parseKnobAxes(knobAxes);
-    if (!axes || n < 2 || n > kMaxAxes)
-        throw std::logic_error("knob " + std::to_string(n) + " of knob axes '" + knobAxes + "'");
-    return (*axes)[std::size_t(n - 2)];
-}
-
 namespace {
 
 //! `text` split at ','.

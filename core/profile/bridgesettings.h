@@ -26,6 +26,9 @@ struct Component
     std::string wrenchName() const;
     //! Accepts both spellings ("linear.x" or "force.x"); nullopt for anything else.
     static std::optional<Component> parse(const std::string &text);
+    //! Its place in a twist's or wrench's six values: linear (force) x y z, angular (torque)
+    //! x y z.
+    constexpr int slot() const { return (angular ? 3 : 0) + index; }
 
     friend bool operator==(const Component &, const Component &) = default;
 };
@@ -80,7 +83,7 @@ struct BridgeSettings
     std::optional<Component> referenceAxis; //!< unset: linear.x, angular.z in rotation mode
     //! The components of knobs 2, 3, 4 on a board with several (the IMU branch's), ','
     //! between them: their references on the twist and pose, their wrench component fed back
-    //! (knobAxes()). The published ROS script's y, z and yaw.
+    //! (parseKnobAxes()). The published ROS script's y, z and yaw.
     std::string knobAxes = "linear.y,linear.z,angular.z";
     std::array<double, 3> poseOrigin{};    //!< added to the pose's position [m]
     FeedbackSettings feedback;             //!< the wrench that comes back
@@ -91,9 +94,6 @@ struct BridgeSettings
 
     //! The axis the references go on for the given reference mode.
     Component axisFor(ReferenceMode mode) const;
-    //! Knob n's component (n = 2 … kMaxAxes) from knobAxes: its twist and pose axis, and the
-    //! wrench component fed back to it. Only for settings validate() accepts.
-    Component knobAxis(int n) const;
 
     friend bool operator==(const BridgeSettings &, const BridgeSettings &) = default;
 };

@@ -311,7 +311,7 @@ void BridgePanel::showSettings()
     m_domain->setValue(m_settings.domainId);
     m_rate->setValue(m_settings.publishRateHz);
     const Component c = m_settings.feedback.component;
-    m_component->setCurrentIndex((c.angular ? 3 : 0) + c.index);
+    m_component->setCurrentIndex(c.slot());
     m_gain->setValue(m_settings.feedback.gain);
     m_limit->setValue(m_settings.feedback.limit);
     m_stale->setValue(m_settings.feedback.staleAfter);
