@@ -1,5 +1,7 @@
 #include "bridge.h"
 
+#include "protocol/messages.h"
+
 #include <chrono>
 #include <cmath>
 
@@ -47,16 +49,21 @@ QString Bridge::start(const BridgeSettings &settings)
     // Opened without the lock: a wrench that arrives meanwhile waits for it in onWrench(), and
     // endpoints that fail are deleted here, which waits for that handler.
     std::string error;
-    auto endpoints = RosEndpoints::open(
-        settings, [this](const RosEndpoints::Wrench &w) { onWrench(w); },
-        [this](bool value) { onEnable(value); }, &error);
+    auto endpoints = RosEndpoints::open(settings,
+                                        {[this](const RosEndpoints::Wrench &w) { onWrench(w); },
+                                         [this](bool value) { onEnable(value); },
+                                         [this](const RosEndpoints::AxisRequest &r) { onAxis(r); }},
+                                        &error);
     if (!endpoints)
         return QString::fromStdString(error);
     {
         const std::lock_guard publishing(m_publishMutex);
         const std::lock_guard lock(m_mutex);
         m_settings = settings;
-        m_axes = knobComponents(settings, settings.axisFor(m_mode));
+        m_selector = AxisSelector(settings.axisFor(m_mode));
+        m_axisRejected = 0;
+        m_lastAxisRejected.clear();
+        m_axes = knobComponents(settings, m_selector.axis());
         m_feedback = WrenchFeedback(settings.feedback);
         m_timing = WrenchTiming();
         m_timing.setPauseAfter(settings.feedback.staleAfter);
@@ -159,7 +166,22 @@ void Bridge::setReferenceMode(ReferenceMode mode)
 {
     const std::lock_guard lock(m_mutex);
     m_mode = mode;
-    m_axes = knobComponents(m_settings, m_settings.axisFor(mode));
+    m_selector.setDefault(m_settings.axisFor(mode));
+    m_axes = knobComponents(m_settings, m_selector.axis());
+}
+
+bool Bridge::selectAxis(Component axis)
+{
+    const std::lock_guard lock(m_mutex);
+    if (!m_endpoints)
+        return false;
+    m_selector.request(axis);
+    return true;
+}
+
+Component Bridge::feltComponent() const
+{
+    return m_selector.chosen() ? m_selector.axis() : m_settings.feedback.component;
 }
 
 BridgeSettings Bridge::settings() const
@@ -198,6 +220,12 @@ BridgeStats Bridge::stats() const
     s.passivity = m_passivity.state();
     s.engaged = m_gate.engaged(now());
     s.localEngaged = m_gate.local();
+    s.axis = m_selector.axis();
+    s.pendingAxis = m_selector.pending();
+    s.feltComponent = feltComponent();
+    s.axisSwitches = m_selector.switches();
+    s.axisRejected = m_axisRejected;
+    s.lastAxisRejected = m_lastAxisRejected;
     return s;
 }
 
@@ -227,10 +255,20 @@ void Bridge::sampleDecoded(const Sample &sample)
             if (!engaged)
                 knob.v_ref = 0;
         }
+        // The operator's axis: switched only while knob 1 rests in its dead zone, its pose
+        // going on from what each axis held (ros.md § Choosing the knob's axis).
+        const bool inDeadZone = (sample.flags & v2::kFlagDeadZone) != 0;
+        if (m_selector.update(knobs[0].p_ref, inDeadZone)) {
+            m_axes = knobComponents(m_settings, m_selector.axis());
+            if (m_feedback.counters().received > 0) // feel the new component of the last wrench
+                m_feedback.rechoose(m_lastWrench[std::size_t(feltComponent().slot())]);
+            applyTorques(torquesAt(t));
+        }
         if (!m_rate.due(sample.t_s))
             return;
+        const SlotPose knob1Pose = m_selector.pose(knobs[0].p_ref);
         m = referenceMessages(knobs, sample.axes(), wallSecondsOf(sample), m_settings, m_axes,
-                              sample.roll(), sample.pitch());
+                              sample.roll(), sample.pitch(), &knob1Pose);
         m_publishedTauExt = m.feedbackTorque;
     }
     // Without m_mutex: a wrench handler called inside publish() takes it.
@@ -249,8 +287,7 @@ void Bridge::onWrench(const RosEndpoints::Wrench &wrench)
         return;
     }
     m_timing.arrived(arrived, wall, wrench.stamp);
-    const Component c = m_settings.feedback.component;
-    const int chosen = c.slot();
+    const int chosen = feltComponent().slot();
     m_lastWrench = wrench.values;
     bool another = false;
     for (int i = 0; i < 6; ++i)
@@ -277,6 +314,19 @@ void Bridge::onEnable(bool value)
         return;
     m_gate.received(value, t);
     applyTorques(torquesAt(t));
+}
+
+void Bridge::onAxis(const RosEndpoints::AxisRequest &request)
+{
+    const std::lock_guard lock(m_mutex);
+    if (!m_endpoints)
+        return;
+    if (request.axis) {
+        m_selector.request(*request.axis);
+    } else {
+        ++m_axisRejected; // untrusted input: counted, shown, never acted on
+        m_lastAxisRejected = request.text;
+    }
 }
 
 void Bridge::checkStale()

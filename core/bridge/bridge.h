@@ -6,6 +6,7 @@
 // the statistics, and checks staleness on a timer as a second line behind the samples.
 #pragma once
 
+#include "axisselector.h"
 #include "enablegate.h"
 #include "profile/bridgesettings.h"
 #include "referencemessages.h"
@@ -26,6 +27,8 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <string>
 
 namespace hatpic::bridge {
 
@@ -53,6 +56,13 @@ struct BridgeStats
     analysis::PassivityObserver::State passivity;
     bool engaged = true;      //!< the enable switch: the knob drives the robot (ros.md)
     bool localEngaged = true; //!< the local switch (setEngaged())
+    // The operator's axis selection (ros.md § Choosing the knob's axis).
+    Component axis;                       //!< the axis knob 1 drives
+    std::optional<Component> pendingAxis; //!< asked for, driven once the knob is in its dead zone
+    Component feltComponent;              //!< the wrench component knob 1 feels
+    std::uint64_t axisSwitches = 0;       //!< selections that took effect since start()
+    std::uint64_t axisRejected = 0;       //!< selections refused (not an axis)
+    std::string lastAxisRejected;         //!< the last one refused, as it came (echoedText())
 };
 
 class Bridge : public QObject, private SampleListener
@@ -87,8 +97,14 @@ public:
     //! again, the pose goes on from where it held (ros.md § Enable switch). Engaged until
     //! released; start() keeps it as it is.
     void setEngaged(bool engaged);
-    //! The reference mode picks the default axis (linear.x, or angular.z in rotation).
+    //! The reference mode picks the default axis (linear.x, or angular.z in rotation); an axis
+    //! the operator chose (selectAxis()) stays.
     void setReferenceMode(ReferenceMode mode);
+    //! The operator's choice, as the axis topics' (ros.md § Choosing the knob's axis): knob 1
+    //! drives `axis` from the first sample in its dead zone, the references going on without a
+    //! jump, and feels its wrench component. False while stopped (start() begins from the
+    //! settings' axis).
+    bool selectAxis(Component axis);
 
     BridgeSettings settings() const;
     BridgeStats stats() const;
@@ -96,9 +112,12 @@ public:
     QString where() const;
 
 private:
-    void sampleDecoded(const Sample &sample) override; //!< the session thread
-    void onWrench(const RosEndpoints::Wrench &wrench); //!< a middleware thread
-    void onEnable(bool value);                         //!< a middleware thread
+    void sampleDecoded(const Sample &sample) override;     //!< the session thread
+    void onWrench(const RosEndpoints::Wrench &wrench);     //!< a middleware thread
+    void onEnable(bool value);                             //!< a middleware thread
+    void onAxis(const RosEndpoints::AxisRequest &request); //!< a middleware thread
+    //! With m_mutex held: the component knob 1 feels (the chosen axis's, else the settings').
+    Component feltComponent() const;
     //! With m_mutex held: the τ_ext the wrench asks of each knob at `t`, or 0 when released
     //! (by the enable switch, or by a limit above the device's).
     AxisTorques torquesAt(double t);
@@ -137,6 +156,9 @@ private:
     std::array<double, 6> m_lastWrench{NAN, NAN, NAN, NAN, NAN, NAN};
     std::uint64_t m_otherComponentStreak = 0;
     EnableGate m_gate;
+    AxisSelector m_selector;
+    std::uint64_t m_axisRejected = 0;
+    std::string m_lastAxisRejected;
     std::uint64_t m_echoes = 0;
     std::array<std::uint64_t, kOutTopicCount> m_publishedBefore{}; //!< by endpoints now closed
     std::uint64_t m_writeErrorsBefore = 0;

@@ -19,6 +19,19 @@ Quaternion product(const Quaternion &a, const Quaternion &b)
             a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2]};
 }
 
+//! Moves the pose of `m` by `value` along (linear) or about (angular) `c`, about the frame's own
+//! axis after the rotations it already has.
+void addToPose(ReferenceMessages &m, Component c, double value)
+{
+    if (c.angular) {
+        Quaternion q{0, 0, 0, std::cos(value / 2)};
+        q[std::size_t(c.index)] = std::sin(value / 2);
+        m.poseOrientation = product(q, m.poseOrientation);
+    } else {
+        m.posePosition[std::size_t(c.index)] += value;
+    }
+}
+
 } // namespace
 
 KnobComponents knobComponents(const BridgeSettings &settings, Component axis)
@@ -33,7 +46,7 @@ KnobComponents knobComponents(const BridgeSettings &settings, Component axis)
 
 ReferenceMessages referenceMessages(const Knobs &knobs, int count, double wallSeconds,
                                     const BridgeSettings &settings, const KnobComponents &axes,
-                                    double roll, double pitch)
+                                    double roll, double pitch, const SlotPose *knob1Pose)
 {
     ReferenceMessages m;
     m.stamp = ros::timeFromSeconds(wallSeconds);
@@ -50,14 +63,16 @@ ReferenceMessages referenceMessages(const Knobs &knobs, int count, double wallSe
         if (std::find(axes.begin(), axes.begin() + k, c) != axes.begin() + k)
             continue; // the axis is an earlier knob's
         m.twist[c.slot()] = knob.v_ref;
-        if (c.angular) {
-            // p_ref is an angle about that axis: the rotation as a unit quaternion, after the
-            // earlier knobs' (each about the frame's own axis).
-            Quaternion q{0, 0, 0, std::cos(knob.p_ref / 2)};
-            q[c.index] = std::sin(knob.p_ref / 2);
-            m.poseOrientation = product(q, m.poseOrientation);
+        // p_ref about an angular axis is an angle: the rotation as a unit quaternion, after the
+        // earlier knobs' (each about the frame's own axis).
+        if (k == 0 && knob1Pose) {
+            for (int slot = 0; slot < 6; ++slot) {
+                const double value = (*knob1Pose)[std::size_t(slot)];
+                if (value != 0 || slot == c.slot())
+                    addToPose(m, *Component::fromSlot(slot), value);
+            }
         } else {
-            m.posePosition[c.index] += knob.p_ref;
+            addToPose(m, c, knob.p_ref);
         }
     }
     m.feedbackTorque = knobs[0].tau_ext;

@@ -43,12 +43,20 @@ struct ReferenceMessages
 using KnobComponents = std::array<Component, kMaxAxes>;
 KnobComponents knobComponents(const BridgeSettings &settings, Component axis);
 
+//! Knob 1's pose on each of the six twist places (Component::slot()): what it gives the axis it
+//! drives and holds on the axes it drove before (AxisSelector::pose(), ros.md § Choosing the
+//! knob's axis) [m or rad].
+using SlotPose = std::array<double, 6>;
+
 //! The messages for `count` knobs, stamped `wallSeconds` (Unix time of the sample), each
 //! knob's references on its `axes`; a knob whose axis an earlier knob has goes in the joints
 //! only (ros.md § A board's knobs). `roll` and `pitch` [rad] are the board's tilt (NaN: none).
+//! `knob1Pose`: knob 1's pose on every place, its rotations composed x, y, z; null: its p_ref
+//! on its axis alone.
 ReferenceMessages referenceMessages(const Knobs &knobs, int count, double wallSeconds,
                                     const BridgeSettings &settings, const KnobComponents &axes,
-                                    double roll = NAN, double pitch = NAN);
+                                    double roll = NAN, double pitch = NAN,
+                                    const SlotPose *knob1Pose = nullptr);
 //! The messages for every knob of `sample` as it is, knob 1's references on `axis`.
 ReferenceMessages referenceMessages(const Sample &sample, double wallSeconds,
                                     const BridgeSettings &settings, Component axis);

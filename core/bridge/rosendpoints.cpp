@@ -1,5 +1,7 @@
 #include "rosendpoints.h"
 
+#include "model/params.h"
+
 #include <tuple>
 
 namespace hatpic::bridge {
@@ -44,10 +46,9 @@ const char *outTopicKey(OutTopic topic)
     return "";
 }
 
-RosEndpoints::RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench,
-                           EnableHandler onEnable)
+RosEndpoints::RosEndpoints(const BridgeSettings &settings, Handlers handlers)
     : m_settings(settings), m_jointNames(jointNames(settings.jointName)),
-      m_onWrench(std::move(onWrench)), m_onEnable(std::move(onEnable))
+      m_handlers(std::move(handlers))
 {}
 
 RosEndpoints::~RosEndpoints()
@@ -58,12 +59,10 @@ RosEndpoints::~RosEndpoints()
     m_node.reset();
 }
 
-std::unique_ptr<RosEndpoints> RosEndpoints::open(const BridgeSettings &settings,
-                                                 WrenchHandler onWrench, EnableHandler onEnable,
+std::unique_ptr<RosEndpoints> RosEndpoints::open(const BridgeSettings &settings, Handlers handlers,
                                                  std::string *error)
 {
-    std::unique_ptr<RosEndpoints> endpoints(
-        new RosEndpoints(settings, std::move(onWrench), std::move(onEnable)));
+    std::unique_ptr<RosEndpoints> endpoints(new RosEndpoints(settings, std::move(handlers)));
     const std::string problem = endpoints->create();
     if (!problem.empty()) {
         if (error)
@@ -129,21 +128,26 @@ std::string RosEndpoints::create()
         if (const auto *stamped = std::get_if<ros::WrenchStamped>(&message)) {
             Wrench w = wrenchOf(*stamped);
             w.echo = isEcho(stamped->header);
-            m_onWrench(w);
+            m_handlers.wrench(w);
         } else if (const auto *wrench = std::get_if<ros::Wrench>(&message))
-            m_onWrench(wrenchOf(*wrench));
+            m_handlers.wrench(wrenchOf(*wrench));
     };
     const auto enableHandler = [this](const ros::Message &message) {
         if (const auto *b = std::get_if<ros::Bool>(&message))
-            m_onEnable(b->data);
+            m_handlers.enable(b->data);
     };
-    const std::tuple<std::string Topics::*, ros::MessageType, ros::MessageHandler> in[] = {
-        {&Topics::wrench, ros::MessageType::WrenchStamped, handler},
-        {&Topics::wrenchUnstamped, ros::MessageType::Wrench, handler},
-        {&Topics::enable, ros::MessageType::Bool, enableHandler}};
-    for (const auto &[topic, type, onMessage] : in) {
+    const auto axisHandler = [this](const ros::Message &message) {
+        m_handlers.axis(axisRequest(message));
+    };
+    const std::tuple<std::string Topics::*, ros::MessageType, ros::MessageHandler, bool> in[] = {
+        {&Topics::wrench, ros::MessageType::WrenchStamped, handler, bool(m_handlers.wrench)},
+        {&Topics::wrenchUnstamped, ros::MessageType::Wrench, handler, bool(m_handlers.wrench)},
+        {&Topics::enable, ros::MessageType::Bool, enableHandler, bool(m_handlers.enable)},
+        {&Topics::axis, ros::MessageType::String, axisHandler, bool(m_handlers.axis)},
+        {&Topics::axisIndex, ros::MessageType::UInt8, axisHandler, bool(m_handlers.axis)}};
+    for (const auto &[topic, type, onMessage, handled] : in) {
         const std::string name = resolved(m_settings, topic);
-        if (name.empty())
+        if (name.empty() || !handled)
             continue;
         auto subscription = m_node->subscribe(name, type, ros::Qos::matchAny(), onMessage, &error);
         if (!subscription)
@@ -151,6 +155,23 @@ std::string RosEndpoints::create()
         m_subscriptions.push_back(std::move(subscription));
     }
     return {};
+}
+
+RosEndpoints::AxisRequest RosEndpoints::axisRequest(const ros::Message &message)
+{
+    AxisRequest request;
+    if (const auto *s = std::get_if<ros::String>(&message)) {
+        const auto first = s->data.find_first_not_of(" \t\r\n");
+        const auto last = s->data.find_last_not_of(" \t\r\n");
+        const std::string text =
+            first == std::string::npos ? std::string() : s->data.substr(first, last - first + 1);
+        request.axis = Component::parse(text);
+        request.text = echoedText(text);
+    } else if (const auto *u = std::get_if<ros::UInt8>(&message)) {
+        request.axis = Component::fromSlot(u->data);
+        request.text = std::to_string(u->data);
+    }
+    return request;
 }
 
 void RosEndpoints::publish(const ReferenceMessages &m)

@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -50,15 +51,32 @@ public:
     using WrenchHandler = std::function<void(const Wrench &)>;
     //! Called on a middleware thread, once per std_msgs/Bool on the enable topic.
     using EnableHandler = std::function<void(bool)>;
+    //! An axis the operator asked for on an axis topic (ros.md § Choosing the knob's axis).
+    struct AxisRequest
+    {
+        std::optional<Component> axis; //!< none: the message named no axis
+        std::string text;              //!< what came, for the refusal (echoedText())
+    };
+    //! Called on a middleware thread, once per message on either axis topic.
+    using AxisHandler = std::function<void(const AxisRequest &)>;
+    //! What the subscriptions call; an empty one is not called.
+    struct Handlers
+    {
+        WrenchHandler wrench;
+        EnableHandler enable;
+        AxisHandler axis;
+    };
+    //! The request a message on an axis topic makes: a std_msgs/String's text (trimmed) names
+    //! a component as Component::parse() reads it; a std_msgs/UInt8 is its place (slot()).
+    static AxisRequest axisRequest(const ros::Message &message);
 
     //! Opens the node "hatpic_bridge" of settings.rosVersion in settings.nodeNamespace (ROS 2:
     //! in settings.domainId, ROS's discovery variables and CYCLONEDDS_URI apply; ROS 1:
     //! ROS_MASTER_URI and ROS_NAMESPACE apply), a publisher of every named outgoing topic with
-    //! writerQos() and a subscription of every named wrench topic and the enable topic with
+    //! writerQos() and a subscription of every named input topic (wrench, enable, axis) with
     //! ros::Qos::matchAny(), each under the namespace as topicInNamespace() says. Null with
     //! `*error` set to one sentence when the middleware refuses.
-    static std::unique_ptr<RosEndpoints> open(const BridgeSettings &settings,
-                                              WrenchHandler onWrench, EnableHandler onEnable,
+    static std::unique_ptr<RosEndpoints> open(const BridgeSettings &settings, Handlers handlers,
                                               std::string *error);
     ~RosEndpoints(); //!< closes the node; no handler call runs after it returns
     RosEndpoints(const RosEndpoints &) = delete;
@@ -80,7 +98,7 @@ public:
     std::string where() const;
 
 private:
-    RosEndpoints(const BridgeSettings &settings, WrenchHandler onWrench, EnableHandler onEnable);
+    RosEndpoints(const BridgeSettings &settings, Handlers handlers);
     std::string create();
 
     //! Notes a feedback message's stamp (publish()); whether `header` is one of them (the
@@ -90,8 +108,7 @@ private:
 
     BridgeSettings m_settings;
     std::vector<std::string> m_jointNames; //!< each knob's, knob 1 first (jointNames())
-    WrenchHandler m_onWrench;
-    EnableHandler m_onEnable;
+    Handlers m_handlers;
     std::mutex m_echoMutex;                 //!< guards the two below; nothing is called with it
     std::deque<ros::Time> m_feedbackStamps; //!< published, oldest first
     std::set<std::pair<std::int32_t, std::uint32_t>> m_feedbackStampSet;

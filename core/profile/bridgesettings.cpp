@@ -79,7 +79,7 @@ constexpr SettingSpec topic(std::string_view key, std::string_view label,
 
 } // namespace
 
-const std::array<SettingSpec, 25> kSettings = {
+const std::array<SettingSpec, 27> kSettings = {
     // The network's (withNetworkOf()): no profile holds them.
     setting("ros", "ROS version", &BridgeSettings::rosVersion, {1, 2}, "VERSION",
             "2: ROS 2 over Cyclone DDS (default); 1: ROS 1 through roscpp (ROS_MASTER_URI).",
@@ -108,6 +108,11 @@ const std::array<SettingSpec, 25> kSettings = {
     topic("imu_topic", "IMU topic", &Topics::imu,
           "sensor_msgs/Imu out: the orientation of a board with a tilt sensor, written only for "
           "one (default /hatpic/imu)."),
+    topic("axis_topic", "axis topic", &Topics::axis,
+          "std_msgs/String in: the axis the knob drives, linear.x … angular.z, switched when the "
+          "knob is next in its dead zone (default: none)."),
+    topic("axis_index_topic", "axis index topic", &Topics::axisIndex,
+          "std_msgs/UInt8 in: the same by number, 0 … 5 = linear.x … angular.z (default: none)."),
     setting("namespace", "namespace", &BridgeSettings::nodeNamespace, {0, 200}, "NS",
             "The node's namespace; default and relative topics go under it (default: none; "
             "ROS 1: ROS_NAMESPACE)."),
@@ -293,7 +298,7 @@ std::string limitProblem(const FeedbackSettings &feedback, double tauLimit)
 bool isInputTopic(std::string Topics::*topic)
 {
     return topic == &Topics::wrench || topic == &Topics::wrenchUnstamped ||
-           topic == &Topics::enable;
+           topic == &Topics::enable || topic == &Topics::axis || topic == &Topics::axisIndex;
 }
 
 bool isValidTopicName(const std::string &name)

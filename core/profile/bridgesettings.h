@@ -29,6 +29,13 @@ struct Component
     //! Its place in a twist's or wrench's six values: linear (force) x y z, angular (torque)
     //! x y z.
     constexpr int slot() const { return (angular ? 3 : 0) + index; }
+    //! The component in that place (0 … 5); nullopt for any other number.
+    static constexpr std::optional<Component> fromSlot(int slot)
+    {
+        if (slot < 0 || slot >= 6)
+            return std::nullopt;
+        return Component{slot >= 3, slot % 3};
+    }
 
     friend bool operator==(const Component &, const Component &) = default;
 };
@@ -54,6 +61,10 @@ struct Topics
     std::string enable;                               //!< in: std_msgs/Bool, dead man (off)
     std::string jointJog;                             //!< out: control_msgs/JointJog (off)
     std::string imu = "/hatpic/imu"; //!< out: sensor_msgs/Imu, a board's tilt (only then)
+    //! in: std_msgs/String, the axis knob 1 is to drive ("linear.y"), by name (off)
+    std::string axis;
+    //! in: std_msgs/UInt8, the same by its place: 0 … 5 = linear x y z, angular x y z (off)
+    std::string axisIndex;
 
     friend bool operator==(const Topics &, const Topics &) = default;
 };
@@ -164,7 +175,7 @@ struct SettingSpec
 };
 
 //! Every setting, in --help's order; a profile writes those it holds in the same order.
-extern const std::array<SettingSpec, 25> kSettings;
+extern const std::array<SettingSpec, 27> kSettings;
 //! The row of kSettings with this key (a program error when there is none).
 const SettingSpec &settingSpec(std::string_view key);
 
@@ -199,8 +210,8 @@ std::vector<std::string> validate(const BridgeSettings &settings);
 //! checks nothing. The one check of a profile (its host tau_limit), and of the bridge once it knows
 //! the device's (Bridge::start(), a device that connects).
 std::string limitProblem(const FeedbackSettings &feedback, double tauLimit);
-//! Whether the bridge subscribes to that topic (the wrench, stamped or not, and the enable
-//! switch) rather than publishing it.
+//! Whether the bridge subscribes to that topic (the wrench, stamped or not, the enable switch
+//! and the axis selection) rather than publishing it.
 bool isInputTopic(std::string Topics::*topic);
 //! A topic name rmw would accept: '/'-separated tokens of [A-Za-z0-9_], not starting with a
 //! digit, no "//", no trailing '/'.

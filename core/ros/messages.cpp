@@ -48,6 +48,10 @@ const char *rosTypeName(MessageType type)
         return "control_msgs/msg/JointJog";
     case MessageType::Imu:
         return "sensor_msgs/msg/Imu";
+    case MessageType::String:
+        return "std_msgs/msg/String";
+    case MessageType::UInt8:
+        return "std_msgs/msg/UInt8";
     }
     return "";
 }

@@ -107,6 +107,19 @@ struct Bool
     friend bool operator==(const Bool &, const Bool &) = default;
 };
 
+//! std_msgs/String and std_msgs/UInt8: the operator's axis selection (ros.md § Choosing the
+//! knob's axis).
+struct String
+{
+    std::string data;
+    friend bool operator==(const String &, const String &) = default;
+};
+struct UInt8
+{
+    std::uint8_t data = 0;
+    friend bool operator==(const UInt8 &, const UInt8 &) = default;
+};
+
 //! control_msgs/JointJog (MoveIt Servo's joint command). ROS 2 only: Debian has no ROS 1
 //! control_msgs.
 struct JointJog
@@ -135,7 +148,7 @@ struct Imu
 
 //! Every message type a topic can carry; the index of each alternative is its MessageType.
 using Message = std::variant<JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench,
-                             Bool, JointJog, Imu>;
+                             Bool, JointJog, Imu, String, UInt8>;
 enum class MessageType {
     JointState,
     TwistStamped,
@@ -145,9 +158,11 @@ enum class MessageType {
     Wrench,
     Bool,
     JointJog,
-    Imu
+    Imu,
+    String,
+    UInt8
 };
-constexpr int kMessageTypeCount = 9;
+constexpr int kMessageTypeCount = 11;
 
 inline MessageType typeOf(const Message &message)
 {

@@ -34,6 +34,9 @@ public:
     //! `others` for a board's other knobs. Returns τ_ext = clamp(gain · value, ±limit), or 0
     //! for a non-finite value [N·m]. Only knob 1's value is counted.
     double receive(double value, double now, const OtherKnobs &others = {});
+    //! Knob 1 now feels another component of the same last wrench, whose value is `value`
+    //! (the operator switched its axis): it keeps the wrench's time, and nothing is counted.
+    void rechoose(double value) { m_lastValue = value; }
     //! τ_ext at monotonic time `now`: the last wrench's, or 0 once it is older than
     //! staleAfter (or when none came) [N·m].
     double torqueAt(double now);

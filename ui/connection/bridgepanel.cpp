@@ -8,6 +8,7 @@
 #include "ros/node.h"
 #endif
 
+#include <QAbstractItemView>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -187,6 +188,21 @@ void BridgePanel::buildForm()
                              "pose holds; engaged again, the pose goes on from there (with an "
                              "enable topic, both must be on)"));
     rosLayout->addWidget(m_engaged);
+    // The operator's axis (ros.md § Choosing the knob's axis), as the axis topics choose it.
+    auto *axisForm = new QFormLayout;
+    m_axis = new QComboBox(ros);
+    m_axis->setObjectName(u"bridge_axis"_s);
+    for (int slot = 0; slot < 6; ++slot)
+        m_axis->addItem(QString::fromStdString(Component::fromSlot(slot)->twistName()));
+    m_axis->setToolTip(tr("The axis the knob drives while the bridge runs. A change waits until "
+                          "the knob rests in its dead zone, the references go on without a "
+                          "jump, and the knob then feels that axis's force or torque"));
+    axisForm->addRow(tr("Knob drives"), m_axis);
+    m_axisState = new QLabel(ros);
+    m_axisState->setObjectName(u"bridge_axis_state"_s);
+    m_axisState->setWordWrap(true);
+    axisForm->addRow(m_axisState);
+    rosLayout->addLayout(axisForm);
     rosLayout->addStretch(1);
 
     QWidget *content = ros->parentWidget();
@@ -260,6 +276,15 @@ void BridgePanel::buildForm()
     for (QDoubleSpinBox *box : {m_gain, m_limit, m_stale})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { edited(false); });
     connect(m_component, &QComboBox::currentIndexChanged, this, [this] { edited(false); });
+    connect(m_axis, &QComboBox::activated, this, [this](int slot) {
+#ifdef HATPIC_HAVE_BRIDGE
+        if (m_bridge)
+            m_bridge->selectAxis(*Component::fromSlot(slot));
+#else
+        Q_UNUSED(slot);
+#endif
+        refresh();
+    });
     connect(m_namespace, &QLineEdit::editingFinished, this, [this] { edited(true); });
     connect(m_engaged, &QPushButton::toggled, this, [this](bool engaged) {
         m_engaged->setText(engaged ? tr("Engaged") : tr("Released"));
@@ -337,7 +362,7 @@ void BridgePanel::edited(bool reopen)
     s.domainId = m_domain->value();
     s.publishRateHz = taken(m_rate, m_settings.publishRateHz);
     const int c = m_component->currentIndex();
-    s.feedback.component = Component{c >= 3, c % 3};
+    s.feedback.component = *Component::fromSlot(c);
     s.feedback.gain = taken(m_gain, m_settings.feedback.gain);
     s.feedback.limit = taken(m_limit, m_settings.feedback.limit);
     s.feedback.staleAfter = taken(m_stale, m_settings.feedback.staleAfter);
@@ -384,11 +409,10 @@ void BridgePanel::edited(bool reopen)
 
 void BridgePanel::setReferenceMode(ReferenceMode mode)
 {
+    m_mode = mode;
 #ifdef HATPIC_HAVE_BRIDGE
     if (m_bridge)
         m_bridge->setReferenceMode(mode);
-#else
-    Q_UNUSED(mode);
 #endif
 }
 
@@ -452,7 +476,10 @@ void BridgePanel::refresh()
     if (!m_bridge)
         return;
     const bridge::BridgeStats s = m_bridge->stats();
-    const Component c = m_settings.feedback.component;
+    const bool running = m_bridge->isRunning();
+    // Once the operator chose an axis the knob feels that axis's component (Bridge::selectAxis).
+    const Component c = running ? s.feltComponent : m_settings.feedback.component;
+    showAxis(s, running);
     // The whole wrench, so that a robot sending on another component shows.
     const auto &w = s.lastWrenchValues;
     m_wrench->setText(tr("force %1 %2 %3 N, torque %4 %5 %6 N·m")
@@ -465,7 +492,7 @@ void BridgePanel::refresh()
         int largest = 0;
         for (int i = 1; i < 6; ++i)
             largest = std::abs(w[i]) > std::abs(w[largest]) ? i : largest;
-        const Component o{largest >= 3, largest % 3};
+        const Component o = *Component::fromSlot(largest);
         other =
             tr("%1 stays 0 while the robot sends %2 = %3 %4: is the component right?")
                 .arg(QString::fromStdString(c.wrenchName()), QString::fromStdString(o.wrenchName()),
@@ -486,7 +513,7 @@ void BridgePanel::refresh()
     m_published->setText(out);
     m_robotSide->setStats(s, c);
     m_passivityView->setState(s.passivity);
-    if (!m_bridge->isRunning())
+    if (!running)
         showLoopState(tr("Bridge off"), LoopState::Off);
     else if (s.passivity.warning)
         showLoopState(tr("Loop generating energy: see Passivity below"), LoopState::Generating);
@@ -498,6 +525,32 @@ void BridgePanel::refresh()
         showLoopState(tr("Loop passive, no contact"), LoopState::Passive);
 #endif
 }
+
+#ifdef HATPIC_HAVE_BRIDGE
+void BridgePanel::showAxis(const bridge::BridgeStats &s, bool running)
+{
+    m_axis->setEnabled(running);
+    if (!m_axis->view()->isVisible()) { // not while the user picks one
+        const QSignalBlocker blocker(m_axis);
+        m_axis->setCurrentIndex(running ? s.pendingAxis.value_or(s.axis).slot()
+                                        : m_settings.axisFor(m_mode).slot());
+    }
+    QString text;
+    if (running && s.pendingAxis)
+        text = tr("Drives %1; %2 once the knob rests in its dead zone")
+                   .arg(QString::fromStdString(s.axis.twistName()),
+                        QString::fromStdString(s.pendingAxis->twistName()));
+    else if (running)
+        text = tr("Feels %1").arg(QString::fromStdString(s.feltComponent.wrenchName()));
+    if (running && s.axisRejected > 0)
+        text += tr("; %1 refused on the axis topics, the last '%2' (not linear.x … angular.z, "
+                   "or 0 … 5)")
+                    .arg(s.axisRejected)
+                    .arg(QString::fromStdString(s.lastAxisRejected));
+    m_axisState->setText(text);
+    m_axisState->setVisible(!text.isEmpty());
+}
+#endif
 
 void BridgePanel::showLoopState(const QString &text, LoopState state)
 {

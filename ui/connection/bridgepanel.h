@@ -42,7 +42,8 @@ class RobotSideView;
 
 namespace bridge {
 class Bridge;
-}
+struct BridgeStats;
+} // namespace bridge
 
 class BridgePanel : public QWidget
 {
@@ -105,10 +106,13 @@ private:
     //! The Domain row for ROS 2, the Master row for ROS 1.
     void showNetworkRows();
     void showLoopState(const QString &text, LoopState state);
+    //! The axis the knob drives, one it waits to drive, and refused selections.
+    void showAxis(const bridge::BridgeStats &s, bool running);
 
     DeviceClient &m_client;
     bridge::Bridge *m_bridge = nullptr; //!< a child; null when not built
     bridge::BridgeSettings m_settings = bridge::panelDefaults();
+    ReferenceMode m_mode = ReferenceMode::Translation; //!< the axis's default follows it
     QTimer m_refresh;
 
     QGridLayout *m_grid = nullptr; //!< the sections, in m_columns columns
@@ -128,6 +132,8 @@ private:
     QLineEdit *m_namespace = nullptr;
     QPushButton *m_engaged = nullptr; //!< the local enable switch (dead man)
     QDoubleSpinBox *m_rate = nullptr;
+    QComboBox *m_axis = nullptr;   //!< the axis the knob drives (Bridge::selectAxis())
+    QLabel *m_axisState = nullptr; //!< … what it waits for, what the topics had refused
     QComboBox *m_component = nullptr;
     QDoubleSpinBox *m_gain = nullptr;
     QDoubleSpinBox *m_limit = nullptr;

@@ -45,8 +45,12 @@ inline constexpr TopicField kTopicFields[] = {
      u"bridge_topic_joint_jog", &bridge::Topics::jointJog},
     {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "IMU, a board's tilt (out)"), u"bridge_topic_imu",
      &bridge::Topics::imu},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Axis by name (in)"), u"bridge_topic_axis",
+     &bridge::Topics::axis},
+    {QT_TRANSLATE_NOOP("hatpic::BridgePanel", "Axis by number (in)"), u"bridge_topic_axis_index",
+     &bridge::Topics::axisIndex},
 };
-static_assert(std::size(kTopicFields) == 10);
+static_assert(std::size(kTopicFields) == 12);
 
 // What the bridge needs to do its work, a line each (issue 21: the panel once said nothing of
 // it). A new way to get a robot's wrench (a simulated robot) is one more line.

@@ -180,6 +180,30 @@ Bool fromRos(const BoolMsg &m)
     return {m.data != 0};
 }
 
+StringMsg toRos(const String &m)
+{
+    StringMsg r;
+    r.data.assign(m.data.begin(), m.data.end());
+    return r;
+}
+
+String fromRos(const StringMsg &m)
+{
+    return {std::string(m.data.begin(), m.data.end())};
+}
+
+UInt8Msg toRos(const UInt8 &m)
+{
+    UInt8Msg r;
+    r.data = m.data;
+    return r;
+}
+
+UInt8 fromRos(const UInt8Msg &m)
+{
+    return {m.data};
+}
+
 ImuMsg toRos(const Imu &m)
 {
     ImuMsg r;

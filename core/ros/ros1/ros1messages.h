@@ -13,6 +13,8 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
+#include <std_msgs/String.h>
+#include <std_msgs/UInt8.h>
 
 #include <cstdlib>
 
@@ -42,6 +44,8 @@ using WrenchStampedMsg = geometry_msgs::WrenchStamped_<Allocator<void>>;
 using WrenchMsg = geometry_msgs::Wrench_<Allocator<void>>;
 using BoolMsg = std_msgs::Bool_<Allocator<void>>;
 using ImuMsg = sensor_msgs::Imu_<Allocator<void>>;
+using StringMsg = std_msgs::String_<Allocator<void>>;
+using UInt8Msg = std_msgs::UInt8_<Allocator<void>>;
 using HeaderMsg = std_msgs::Header_<Allocator<void>>;
 using Vector3Msg = geometry_msgs::Vector3_<Allocator<void>>;
 
@@ -79,6 +83,10 @@ template<typename F> decltype(auto) visitType(MessageType type, F &&f)
         return f(RosType<BoolMsg>{});
     case MessageType::Imu:
         return f(RosType<ImuMsg>{});
+    case MessageType::String:
+        return f(RosType<StringMsg>{});
+    case MessageType::UInt8:
+        return f(RosType<UInt8Msg>{});
     case MessageType::JointJog:
         break;
     }
@@ -96,6 +104,8 @@ WrenchStampedMsg toRos(const WrenchStamped &m);
 WrenchMsg toRos(const Wrench &m);
 BoolMsg toRos(const Bool &m);
 ImuMsg toRos(const Imu &m);
+StringMsg toRos(const String &m);
+UInt8Msg toRos(const UInt8 &m);
 
 //! ROS 1 header stamps are unsigned: a stamp beyond int32 seconds is clamped to its largest.
 JointState fromRos(const JointStateMsg &m);
@@ -106,5 +116,7 @@ WrenchStamped fromRos(const WrenchStampedMsg &m);
 Imu fromRos(const ImuMsg &m);
 Wrench fromRos(const WrenchMsg &m);
 Bool fromRos(const BoolMsg &m);
+String fromRos(const StringMsg &m);
+UInt8 fromRos(const UInt8Msg &m);
 
 } // namespace hatpic::ros::ros1

@@ -32,6 +32,9 @@ std::string idlType(const FieldDef &field)
     case FieldKind::Nested:
         value = ddsTypeName(field.nestedType);
         break;
+    case FieldKind::Uint8:
+        value = "uint8";
+        break;
     case FieldKind::Int32:
         value = "int32";
         break;

@@ -115,6 +115,10 @@ const dds_topic_descriptor_t *descriptorOf(MessageType type)
         return &control_msgs_msg_dds__JointJog__desc;
     case MessageType::Imu:
         return &sensor_msgs_msg_dds__Imu__desc;
+    case MessageType::String:
+        return &std_msgs_msg_dds__String__desc;
+    case MessageType::UInt8:
+        return &std_msgs_msg_dds__UInt8__desc;
     }
     return nullptr;
 }
@@ -152,6 +156,12 @@ dds_return_t writeMessage(dds_entity_t writer, const Message &message)
                 return dds_write(writer, &c);
             } else if constexpr (std::is_same_v<T, Bool>) {
                 const std_msgs_msg_dds__Bool_ c{m.data};
+                return dds_write(writer, &c);
+            } else if constexpr (std::is_same_v<T, String>) {
+                const std_msgs_msg_dds__String_ c{text(m.data)};
+                return dds_write(writer, &c);
+            } else if constexpr (std::is_same_v<T, UInt8>) {
+                const std_msgs_msg_dds__UInt8_ c{m.data};
                 return dds_write(writer, &c);
             } else if constexpr (std::is_same_v<T, Imu>) {
                 const auto &o = m.orientation;
@@ -210,6 +220,12 @@ Message messageOf(MessageType type, const void *sample)
         return fromC(*static_cast<const CWrench *>(sample));
     case MessageType::Bool:
         return Bool{static_cast<const std_msgs_msg_dds__Bool_ *>(sample)->data};
+    case MessageType::String: {
+        const char *data = static_cast<const std_msgs_msg_dds__String_ *>(sample)->data;
+        return String{data ? data : ""};
+    }
+    case MessageType::UInt8:
+        return UInt8{static_cast<const std_msgs_msg_dds__UInt8_ *>(sample)->data};
     case MessageType::JointJog: {
         const auto &c = *static_cast<const control_msgs_msg_dds__JointJog_ *>(sample);
         return JointJog{fromC(c.header), fromC(c.joint_names), fromC(c.displacements),

@@ -36,6 +36,8 @@ constexpr FieldDef kJointState[] = {{"header", K::Nested, false, "std_msgs/msg/H
                                     {"velocity", K::Double, true},
                                     {"effort", K::Double, true}};
 constexpr FieldDef kBool[] = {{"data", K::Bool}};
+constexpr FieldDef kString[] = {{"data", K::String}};
+constexpr FieldDef kUInt8[] = {{"data", K::Uint8}};
 constexpr FieldDef kJointJog[] = {{"header", K::Nested, false, "std_msgs/msg/Header"},
                                   {"joint_names", K::String, true},
                                   {"displacements", K::Double, true},
@@ -65,6 +67,8 @@ constexpr TypeDef kTypes[] = {
     {"std_msgs/msg/Bool", kBool},
     {"control_msgs/msg/JointJog", kJointJog},
     {"sensor_msgs/msg/Imu", kImu},
+    {"std_msgs/msg/String", kString},
+    {"std_msgs/msg/UInt8", kUInt8},
 };
 
 bool isIdentifier(std::string_view s)

@@ -15,6 +15,7 @@ namespace hatpic::ros::ros2 {
 //! A field's value type, numbered as type_description_interfaces/msg/FieldType.
 enum class FieldKind : int {
     Nested = 1,  //!< FIELD_TYPE_NESTED_TYPE: another message
+    Uint8 = 3,   //!< FIELD_TYPE_UINT8
     Int32 = 6,   //!< FIELD_TYPE_INT32
     Uint32 = 7,  //!< FIELD_TYPE_UINT32
     Double = 11, //!< FIELD_TYPE_DOUBLE (float64)

@@ -112,7 +112,8 @@ struct RosTestPeer::Entities
 {
     dds_entity_t domain = 0, participant = 0, joint = 0, twist = 0, bestEffortTwist = 0,
                  unstampedTwist = 0, pose = 0, feedback = 0, wrench = 0, unstamped = 0,
-                 publications = 0, subscriptions = 0, enable = 0, jog = 0, twistOut = 0, imu = 0;
+                 publications = 0, subscriptions = 0, enable = 0, jog = 0, twistOut = 0, imu = 0,
+                 axis = 0, axisIndex = 0;
     std::string twistTopic; //!< "rt/…/hatpic/twist", for twistOut
 
     dds_entity_t topic(const dds_topic_descriptor_t *desc, const char *name) const
@@ -163,6 +164,10 @@ RosTestPeer::RosTestPeer(int domain, const std::string &domainConfig, const std:
     qos = rmwQos(true, false, 1); // a teleop node's dead man: reliable, keep last 1
     e.enable = dds_create_writer(
         e.participant, e.topic(&std_msgs_msg_dds__Bool__desc, kEnableTopic), qos, nullptr);
+    e.axis = dds_create_writer(e.participant, e.topic(&std_msgs_msg_dds__String__desc, kAxisTopic),
+                               qos, nullptr);
+    e.axisIndex = dds_create_writer(
+        e.participant, e.topic(&std_msgs_msg_dds__UInt8__desc, kAxisIndexTopic), qos, nullptr);
     dds_delete_qos(qos);
     e.publications =
         dds_create_reader(e.participant, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
@@ -183,7 +188,8 @@ bool RosTestPeer::isValid() const
     const Entities &e = *m_e;
     for (const dds_entity_t h :
          {e.participant, e.joint, e.twist, e.bestEffortTwist, e.unstampedTwist, e.pose, e.feedback,
-          e.wrench, e.unstamped, e.publications, e.subscriptions, e.enable, e.jog}) {
+          e.wrench, e.unstamped, e.publications, e.subscriptions, e.enable, e.jog, e.axis,
+          e.axisIndex}) {
         if (h <= 0)
             return false;
     }
@@ -256,6 +262,26 @@ void RosTestPeer::publishEnable(bool enabled)
 {
     const std_msgs_msg_dds__Bool_ b{enabled};
     dds_write(m_e->enable, &b);
+}
+
+void RosTestPeer::publishAxis(const std::string &name)
+{
+    const std_msgs_msg_dds__String_ s{const_cast<char *>(name.c_str())};
+    dds_write(m_e->axis, &s);
+}
+
+void RosTestPeer::publishAxisIndex(std::uint8_t index)
+{
+    const std_msgs_msg_dds__UInt8_ u{index};
+    dds_write(m_e->axisIndex, &u);
+}
+
+bool RosTestPeer::axisMatched(bool index) const
+{
+    dds_publication_matched_status_t status{};
+    return dds_get_publication_matched_status(index ? m_e->axisIndex : m_e->axis, &status) ==
+               DDS_RETCODE_OK &&
+           status.current_count > 0;
 }
 
 void RosTestPeer::clear()

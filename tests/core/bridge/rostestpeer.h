@@ -100,6 +100,10 @@ public:
     static constexpr const char *kTwistUnstampedTopic = "rt/haptic_twist";
     //! Where it publishes std_msgs/Bool, a dead man (ROS name "/teleop/enable").
     static constexpr const char *kEnableTopic = "rt/teleop/enable";
+    //! Where it publishes std_msgs/String and std_msgs/UInt8, an operator's choice of axis (ROS
+    //! names "/teleop/axis" and "/teleop/axis_index").
+    static constexpr const char *kAxisTopic = "rt/teleop/axis";
+    static constexpr const char *kAxisIndexTopic = "rt/teleop/axis_index";
     //! Where it reads control_msgs/JointJog (ROS name "/servo_node/delta_joint_cmds", MoveIt
     //! Servo's).
     static constexpr const char *kJointJogTopic = "rt/servo_node/delta_joint_cmds";
@@ -131,6 +135,11 @@ public:
     void publishTwist(double linearX, const std::string &frame = "hatpic");
     void publishUnstampedWrench(double forceZ);
     void publishEnable(bool enabled);
+    //! An axis by name (std_msgs/String) or by number (std_msgs/UInt8), reliable, keep last 1.
+    void publishAxis(const std::string &name);
+    void publishAxisIndex(std::uint8_t index);
+    //! The bridge's reader of the axis topic (by number: `index`) matched ours.
+    bool axisMatched(bool index = false) const;
 
     //! Takes everything that arrived into joints, twists, … (reliable readers, as ROS 2's
     //! default subscription) and bestEffortTwists (a sensor-data subscription).

@@ -145,6 +145,8 @@ void TestProfileBridge::exactText()
                                 "  \"enable_topic\": \"\",\n"
                                 "  \"joint_jog_topic\": \"\",\n"
                                 "  \"imu_topic\": \"/hatpic/imu\",\n"
+                                "  \"axis_topic\": \"\",\n"
+                                "  \"axis_index_topic\": \"\",\n"
                                 "  \"namespace\": \"\",\n"
                                 "  \"rate\": 100.0,\n"
                                 "  \"frame_id\": \"hatpic\",\n"

@@ -28,9 +28,10 @@ import rosgraph
 import rospy
 from geometry_msgs.msg import PoseStamped, Twist, TwistStamped, Wrench, WrenchStamped
 from sensor_msgs.msg import Imu, JointState
-from std_msgs.msg import Bool
+from std_msgs.msg import Bool, String, UInt8
 
-TYPES = {cls._type: cls for cls in (JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench, Bool, Imu)}
+TYPES = {cls._type: cls for cls in (JointState, TwistStamped, Twist, PoseStamped, WrenchStamped, Wrench, Bool, Imu,
+                                    String, UInt8)}
 out_lock = threading.Lock()
 
 

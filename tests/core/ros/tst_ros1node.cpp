@@ -281,6 +281,11 @@ private Q_SLOTS:
             << u"/robot/twist"_s << int(MessageType::TwistStamped)
             << uR"({"header": {"stamp": {"secs": 3, "nsecs": 4}}, "twist": {"angular": {"z": 2}}})"_s
             << Message(TwistStamped{{{3, 4}, ""}, {{0, 0, 0}, {0, 0, 2}}});
+        // The operator's axis selection (ros.md § Choosing the knob's axis).
+        QTest::newRow("String") << u"/hatpic/axis"_s << int(MessageType::String)
+                                << uR"({"data": "angular.z"})"_s << Message(String{"angular.z"});
+        QTest::newRow("UInt8") << u"/hatpic/axis_index"_s << int(MessageType::UInt8)
+                               << uR"({"data": 4})"_s << Message(UInt8{4});
     }
     void rospyReachesTheHandler()
     {
@@ -465,17 +470,19 @@ private:
     {
         if (!m_peer.uri().isEmpty())
             return true;
-        const QString problem =
-            m_peer.start(m_core.environment(),
-                         {u"--sub"_s, u"/hatpic/joint_states=sensor_msgs/JointState"_s, u"--sub"_s,
-                          u"/hatpic/twist=geometry_msgs/TwistStamped"_s, u"--sub"_s,
-                          u"/hatpic/twist_unstamped=geometry_msgs/Twist"_s, u"--sub"_s,
-                          u"/mavros/setpoint_position/local=geometry_msgs/PoseStamped"_s,
-                          u"--sub"_s, u"/hatpic/feedback=geometry_msgs/WrenchStamped"_s, u"--sub"_s,
-                          u"/robot/wrench_out=geometry_msgs/Wrench"_s, u"--pub"_s,
-                          u"/wrench_estimation=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
-                          u"/robot/wrench=geometry_msgs/Wrench"_s, u"--pub"_s,
-                          u"/robot/twist=geometry_msgs/TwistStamped"_s});
+        const QString problem = m_peer.start(
+            m_core.environment(),
+            {u"--sub"_s, u"/hatpic/joint_states=sensor_msgs/JointState"_s,
+             u"--sub"_s, u"/hatpic/twist=geometry_msgs/TwistStamped"_s,
+             u"--sub"_s, u"/hatpic/twist_unstamped=geometry_msgs/Twist"_s,
+             u"--sub"_s, u"/mavros/setpoint_position/local=geometry_msgs/PoseStamped"_s,
+             u"--sub"_s, u"/hatpic/feedback=geometry_msgs/WrenchStamped"_s,
+             u"--sub"_s, u"/robot/wrench_out=geometry_msgs/Wrench"_s,
+             u"--pub"_s, u"/wrench_estimation=geometry_msgs/WrenchStamped"_s,
+             u"--pub"_s, u"/robot/wrench=geometry_msgs/Wrench"_s,
+             u"--pub"_s, u"/robot/twist=geometry_msgs/TwistStamped"_s,
+             u"--pub"_s, u"/hatpic/axis=std_msgs/String"_s,
+             u"--pub"_s, u"/hatpic/axis_index=std_msgs/UInt8"_s});
         if (!problem.isEmpty())
             qWarning("%s", qPrintable(problem));
         return problem.isEmpty();

@@ -92,6 +92,10 @@ Message sampleMessage(MessageType type)
                    {-1, 0, 0, 0, 0, 0, 0, 0, 1e-9},
                    b,
                    {0.5, 0, 0, 0, 0.5, 0, 0, 0, -0.5}};
+    case MessageType::String:
+        return String{"angular.z ü"};
+    case MessageType::UInt8:
+        return UInt8{255};
     }
     return {};
 }

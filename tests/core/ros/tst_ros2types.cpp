@@ -63,6 +63,12 @@ private Q_SLOTS:
         // Vector3's and Header's hashes above (a fixed-size array: float64[9]).
         row("sensor_msgs/msg/Imu",
             "7d9a00ff131080897a5ec7e26e315954b8eae3353c3f995c55faf71574000b5b");
+        // As a ROS 2 node announces them (String's is the one rmw_zenoh's keys and rosbag2's
+        // metadata show for /chatter; a micro-ROS struct.h lists other figures for both).
+        row("std_msgs/msg/String",
+            "df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18");
+        row("std_msgs/msg/UInt8",
+            "6138bd83d8c3569cb80a667db03cfc1629f529fee79d944c39c34e352e72f010");
     }
     void hashesAreThePublishedOnes()
     {

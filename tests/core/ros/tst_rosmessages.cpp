@@ -54,14 +54,16 @@ private Q_SLOTS:
         QTest::newRow("Bool") << 6 << QStringLiteral("std_msgs/msg/Bool");
         QTest::newRow("JointJog") << 7 << QStringLiteral("control_msgs/msg/JointJog");
         QTest::newRow("Imu") << 8 << QStringLiteral("sensor_msgs/msg/Imu");
+        QTest::newRow("String") << 9 << QStringLiteral("std_msgs/msg/String");
+        QTest::newRow("UInt8") << 10 << QStringLiteral("std_msgs/msg/UInt8");
     }
     void typeOfFollowsTheVariant()
     {
         QFETCH(int, index);
         QFETCH(QString, rosName);
-        const Message messages[] = {JointState{},  TwistStamped{},  Twist{},
-                                    PoseStamped{}, WrenchStamped{}, Wrench{},
-                                    Bool{},        JointJog{},      Imu{}};
+        const Message messages[] = {JointState{},    TwistStamped{}, Twist{}, PoseStamped{},
+                                    WrenchStamped{}, Wrench{},       Bool{},  JointJog{},
+                                    Imu{},           String{},       UInt8{}};
         static_assert(std::size(messages) == kMessageTypeCount);
         QCOMPARE(int(typeOf(messages[index])), index);
         QCOMPARE(QString::fromLatin1(rosTypeName(MessageType(index))), rosName);
