@@ -142,6 +142,17 @@ void BridgeProgram::printStats()
                QString::number(s.published[i]);
     }
     const QString rtt = link.rttMedianMs < 0 ? QStringLiteral("–") : num(link.rttMedianMs) + u" ms";
+    // The operator's axis, when there are axis topics (ros.md § Choosing the knob's axis).
+    QString axis;
+    if (!m_options.settings.topics.axis.empty() || !m_options.settings.topics.axisIndex.empty()) {
+        axis = u" | axis " + QString::fromStdString(s.axis.twistName());
+        if (s.pendingAxis)
+            axis +=
+                u", " + QString::fromStdString(s.pendingAxis->twistName()) + u" in the dead zone";
+        if (s.axisRejected > 0)
+            axis += u", refused " + QString::number(s.axisRejected) + u" (last '" +
+                    QString::fromStdString(s.lastAxisRejected) + u"')";
+    }
     printLine(stdout,
               u"link " + sessionStateName(m_client.state()) + u", " + num(link.framesPerSecond) +
                   u" frames/s, " + QString::number(link.seqDrops) + u" missing, rtt " + rtt +
@@ -162,7 +173,8 @@ void BridgeProgram::printStats()
                   // The dead man's state, when there is one (ros.md § Enable switch).
                   (m_options.settings.topics.enable.empty() ? QString()
                    : s.engaged                              ? QStringLiteral(" | engaged")
-                                                            : QStringLiteral(" | released")));
+                                                            : QStringLiteral(" | released")) +
+                  axis);
 }
 
 void BridgeProgram::shutdown()

@@ -276,12 +276,10 @@ void BridgePanel::buildForm()
     for (QDoubleSpinBox *box : {m_gain, m_limit, m_stale})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { edited(false); });
     connect(m_component, &QComboBox::currentIndexChanged, this, [this] { edited(false); });
-    connect(m_axis, &QComboBox::activated, this, [this](int slot) {
+    connect(m_axis, &QComboBox::activated, this, [this]([[maybe_unused]] int slot) {
 #ifdef HATPIC_HAVE_BRIDGE
         if (m_bridge)
             m_bridge->selectAxis(*Component::fromSlot(slot));
-#else
-        Q_UNUSED(slot);
 #endif
         refresh();
     });
@@ -536,7 +534,11 @@ void BridgePanel::showAxis(const bridge::BridgeStats &s, bool running)
                                         : m_settings.axisFor(m_mode).slot());
     }
     QString text;
-    if (running && s.pendingAxis)
+    if (running && s.pendingAxis == s.axis) // the driven axis, chosen: its component to come
+        text = tr("Drives %1; feels %2 once the knob rests in its dead zone")
+                   .arg(QString::fromStdString(s.axis.twistName()),
+                        QString::fromStdString(s.axis.wrenchName()));
+    else if (running && s.pendingAxis)
         text = tr("Drives %1; %2 once the knob rests in its dead zone")
                    .arg(QString::fromStdString(s.axis.twistName()),
                         QString::fromStdString(s.pendingAxis->twistName()));

@@ -56,8 +56,15 @@ protected:
     //! connected.
     bool connectKnob(DeviceClient &client, double angle, double &tauExt, double *theta = nullptr)
     {
+        return connectKnob(client, HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, angle},
+                           tauExt, theta);
+    }
+    //! … whose operator input is `hand`.
+    bool connectKnob(DeviceClient &client, const HandInput &hand, double &tauExt,
+                     double *theta = nullptr)
+    {
         SimulatedDevice::Config config;
-        config.hand = HandInput{HandInput::Kind::VirtualHand, 0, 0, 0, 0, angle};
+        config.hand = hand;
         // These tests measure the bridge and its observer against a plain knob: the device's
         // passivity controller (tst_passivity, tst_teleoploop) off. On, the deficit the ±limit
         // pushes of wrenchBecomesTauExt leave in its tank damps robotSideMeasured's push, which

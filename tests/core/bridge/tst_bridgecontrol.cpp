@@ -1,7 +1,8 @@
 // The bridge over real Cyclone DDS on loopback, against the in-process simulated joystick and a
 // test node built as rmw_cyclonedds builds one: a limit above the device's refused, stop leaving
 // τ_ext at zero, the enable switch (the dead man: released, engaged, the local switch,
-// silence), and two knobs side by side in one domain, each bridge under its own namespace.
+// silence), two knobs side by side in one domain, each bridge under its own namespace, and the
+// operator's choice of the axis a knob drives.
 #include "bridgetest.h"
 #include "rostestpeer.h"
 
@@ -192,6 +193,113 @@ private Q_SLOTS:
         robot2.stop();
         bridge2.stop();
         second.disconnectDevice();
+    }
+
+    // The operator's choice of axis (ros.md § Choosing the knob's axis), on a knob a hand
+    // pushes and lets go again and again, under the namespace knob3: a choice made mid-push
+    // waits for the dead zone; then the knob drives the new axis and feels its component, the
+    // pose going on without a jump and the axis left keeping its pose. The same by number;
+    // what names no axis is counted and shown, never acted on.
+    void operatorChoosesTheAxis()
+    {
+        double tauExt = 0, theta = 0; // outlive the client that writes them
+        DeviceClient knob;
+        HandInput hand;
+        hand.kind = HandInput::Kind::Pushes;
+        hand.amplitude = 0.1;
+        hand.pushes = 1000;
+        hand.pushTime = 0.8;
+        hand.releaseTime = 0.8;
+        QVERIFY(connectKnob(knob, hand, tauExt, &theta));
+        BridgeSettings settings;
+        settings.domainId = kDomain;
+        settings.nodeNamespace = "knob3";
+        settings.topics.axis = "/teleop/axis";
+        settings.topics.axisIndex = "/teleop/axis_index";
+        Bridge bridge(knob);
+        RosTestPeer peer(kDomain, {}, "/knob3");
+        QVERIFY(peer.isValid());
+        QCOMPARE(bridge.start(settings), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(peer.axisMatched() && peer.axisMatched(true), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(peer.wrenchMatched(), 5000);
+        // The robot pushes back along y only: not felt while the knob drives x (force.z).
+        QTimer robot;
+        connect(&robot, &QTimer::timeout, this, [&] {
+            peer.publishWrench({0, 0.5, 0}, {0, 0, 0});
+        });
+        robot.start(10);
+        const Component x{false, 0}, y{false, 1}, yaw{true, 2};
+
+        // Mid-push: the choice waits.
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(theta) < 0.01, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(theta) > 0.05, 5000);
+        peer.take();
+        peer.clear();
+        peer.publishAxis("linear.y");
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().pendingAxis == y, 2000);
+        QCOMPARE(bridge.stats().axis, x);
+        QVERIFY2(std::abs(theta) > 0.03, qPrintable(QString::number(theta)));
+        QCOMPARE(tauExt, 0.0);
+        // Let go: in the dead zone it drives y, and feels force.y.
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().axis == y, 3000);
+        QVERIFY(!bridge.stats().pendingAxis);
+        QCOMPARE(bridge.stats().feltComponent, y);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(tauExt - 0.5 * settings.feedback.gain) < kTauExtTolerance,
+                                 2000);
+        // A steady force holds the knob out of its dead zone (which has no spring): the robot
+        // falls silent, and its wrench goes stale.
+        robot.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(tauExt, 0.0, 2000);
+        // The next push moves the pose along y; x keeps what the knob gave it.
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(lastTwistOf(peer, 1)) > 0.05, 4000);
+        QTest::qWait(100);
+        peer.take();
+        QVERIFY(peer.poses.size() >= 50);
+        const double heldX = peer.poses.back().position[0];
+        QVERIFY2(std::abs(heldX) > 0.02, qPrintable(QString::number(heldX)));
+        std::size_t afterSwitch = 0;
+        for (std::size_t i = 1; i < peer.poses.size(); ++i) {
+            const auto &a = peer.poses[i - 1].position, &b = peer.poses[i].position;
+            QVERIFY2(std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) < 0.02,
+                     qPrintable(QStringLiteral("pose jumps at %1").arg(i)));
+            if (b[1] != 0 && afterSwitch == 0)
+                afterSwitch = i;
+        }
+        QVERIFY(afterSwitch > 0);
+        for (std::size_t i = afterSwitch; i < peer.poses.size(); ++i)
+            QCOMPARE(peer.poses[i].position[0], heldX);
+        for (const auto &t : peer.twists)
+            QVERIFY(t.a[0] == 0 || t.a[1] == 0); // never both: one axis at a time
+
+        // By number: 5 is angular.z; the position holds, the orientation goes on from identity.
+        peer.publishAxisIndex(5);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().axis == yaw, 4000);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(lastTwistOf(peer, 5)) > 0.05, 4000);
+        QTest::qWait(300);
+        peer.take();
+        const auto &turned = peer.poses.back();
+        QVERIFY(std::abs(turned.orientation[2]) > 0.001);
+        QCOMPARE(turned.position[0], heldX);
+
+        // What names no axis: counted, shown, the axis kept.
+        peer.publishAxis("up");
+        peer.publishAxisIndex(9);
+        QTRY_COMPARE_WITH_TIMEOUT(bridge.stats().axisRejected, std::uint64_t(2), 2000);
+        QCOMPARE(bridge.stats().lastAxisRejected, std::string("9"));
+        QCOMPARE(bridge.stats().axis, yaw);
+        QVERIFY(!bridge.stats().pendingAxis);
+        bridge.stop();
+        knob.disconnectDevice();
+    }
+
+private:
+    static double lastTwistOf(RosTestPeer &peer, int slot)
+    {
+        peer.take();
+        if (peer.twists.empty())
+            return 0.0;
+        const auto &t = peer.twists.back();
+        return slot < 3 ? t.a[std::size_t(slot)] : t.b[std::size_t(slot - 3)];
     }
 };
 

@@ -2,7 +2,7 @@
 // not ours, with the in-process simulated joystick held at a known angle: the same topics,
 // types and mapping as over ROS 2 (tst_bridge), the wrench back as τ_ext, NaN and silence
 // giving 0, and stop() leaving 0; then the IMU branch's board, one joint and one feedback per
-// knob.
+// knob; and the operator's choice of axis, by name and by number, from rospy.
 #include "roscore.h"
 
 #include "bridge/bridge.h"
@@ -64,12 +64,14 @@ private Q_SLOTS:
         QCOMPARE(m_peer.start(m_core.environment(),
                               {u"--sub"_s, u"/hatpic/joint_states=sensor_msgs/JointState"_s,
                                u"--sub"_s, u"/hatpic/twist=geometry_msgs/TwistStamped"_s,
-                               u"--sub"_s, u"/hatpic/pose=geometry_msgs/PoseStamped"_s, u"--sub"_s,
-                               u"/hatpic/feedback=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
-                               u"/wrench_estimation=geometry_msgs/WrenchStamped"_s, u"--pub"_s,
-                               u"/robot/wrench=geometry_msgs/Wrench"_s, u"--pub"_s,
-                               u"/teleop/enable=std_msgs/Bool"_s, u"--sub"_s,
-                               u"/hatpic/imu=sensor_msgs/Imu"_s}),
+                               u"--sub"_s, u"/hatpic/pose=geometry_msgs/PoseStamped"_s,
+                               u"--sub"_s, u"/hatpic/feedback=geometry_msgs/WrenchStamped"_s,
+                               u"--pub"_s, u"/wrench_estimation=geometry_msgs/WrenchStamped"_s,
+                               u"--pub"_s, u"/robot/wrench=geometry_msgs/Wrench"_s,
+                               u"--pub"_s, u"/teleop/enable=std_msgs/Bool"_s,
+                               u"--sub"_s, u"/hatpic/imu=sensor_msgs/Imu"_s,
+                               u"--pub"_s, u"/teleop/axis=std_msgs/String"_s,
+                               u"--pub"_s, u"/teleop/axis_index=std_msgs/UInt8"_s}),
                  QString());
     }
     void cleanupTestCase()
@@ -273,6 +275,60 @@ private Q_SLOTS:
         QCOMPARE(last.axis(4)->tau_ext, 0.0);
         m_peer.send(u"stop /wrench_estimation"_s);
         board.disconnectDevice();
+    }
+
+    // The operator's choice of axis from rospy (ros.md § Choosing the knob's axis), on a knob
+    // a hand pushes and lets go: asked mid-push it waits, taken in the dead zone the pose goes
+    // on along it, and what names no axis is counted.
+    void anAxisChosenOverRos1()
+    {
+        m_bridge.stop();
+        HandInput hand;
+        hand.kind = HandInput::Kind::Pushes;
+        hand.amplitude = 0.1;
+        hand.pushes = 1000;
+        hand.pushTime = 0.8;
+        hand.releaseTime = 0.8;
+        SimulatedDevice::Config config;
+        config.hand = hand;
+        DeviceClient knob;
+        double theta = 0;
+        connect(&knob, &DeviceClient::samplesReady, this, [&theta](const SampleBatch &batch) {
+            if (!batch.isEmpty())
+                theta = batch.last().theta;
+        });
+        knob.connectDevice(test::simulatorOptions(config));
+        QTRY_COMPARE_WITH_TIMEOUT(knob.state(), SessionState::Connected, 10000);
+        knob.setHostParams(HostParams{});
+        Bridge bridge(knob);
+        BridgeSettings settings;
+        settings.rosVersion = 1;
+        settings.topics.axis = "/teleop/axis";
+        settings.topics.axisIndex = "/teleop/axis_index";
+        QCOMPARE(bridge.start(settings), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(m_peer.connections(u"/teleop/axis"_s) >= 1 &&
+                                     m_peer.connections(u"/teleop/axis_index"_s) >= 1,
+                                 10000);
+        const Component y{false, 1}, pitch{true, 1};
+
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(theta) < 0.01, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(theta) > 0.05, 5000);
+        m_peer.send(uR"(once /teleop/axis {"data": "linear.y"})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().pendingAxis == y, 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().axis == y, 3000);
+        QCOMPARE(bridge.stats().feltComponent, y);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            std::abs(field(m_peer.received(u"/hatpic/pose"_s).last(), u"pose.position.y"_s)) > 0.01,
+            5000);
+
+        m_peer.send(uR"(once /teleop/axis_index {"data": 4})"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().axis == pitch, 4000);
+        m_peer.send(uR"(once /teleop/axis {"data": "up"})"_s);
+        QTRY_COMPARE_WITH_TIMEOUT(bridge.stats().axisRejected, std::uint64_t(1), 3000);
+        QCOMPARE(bridge.stats().lastAxisRejected, std::string("up"));
+        QCOMPARE(bridge.stats().axis, pitch);
+        bridge.stop();
+        knob.disconnectDevice();
     }
 
 private:

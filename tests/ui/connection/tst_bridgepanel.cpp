@@ -269,6 +269,33 @@ private Q_SLOTS:
         expectTauExt(tau);
     }
 
+    // The knob's axis chosen in the panel (ros.md § Choosing the knob's axis): this knob is
+    // held out of its dead zone, so the choice waits, and the panel says for what.
+    void axisChosenWaitsForTheDeadZone()
+    {
+        auto *axis = find<QComboBox>(u"bridge_axis"_s);
+        QVERIFY(axis->isEnabled());
+        QCOMPARE(axis->currentText(), u"linear.x"_s);
+        QTRY_COMPARE(label(u"bridge_axis_state"_s), u"Feels force.z"_s);
+        axis->setFocus();
+        QTest::keyClick(axis, Qt::Key_Down); // as a user picks linear.y
+        QTRY_COMPARE(label(u"bridge_axis_state"_s),
+                     u"Drives linear.x; linear.y once the knob rests in its dead zone"_s);
+        QCOMPARE(axis->currentText(), u"linear.y"_s);
+        QTest::qWait(300);
+        QCOMPARE(axis->currentText(), u"linear.y"_s);
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(200);
+        m_peer->take();
+        QVERIFY(!m_peer->twists.empty());
+        for (const auto &t : m_peer->twists)
+            QVERIFY(t.a[0] != 0 && t.a[1] == 0); // still x: the knob never rested
+        QTest::keyClick(axis, Qt::Key_Up);
+        QTRY_COMPARE(label(u"bridge_axis_state"_s),
+                     u"Drives linear.x; feels force.x once the knob rests in its dead zone"_s);
+    }
+
     void disableLeavesZero()
     {
         find<QCheckBox>(u"bridge_enable"_s)->click();
@@ -276,6 +303,8 @@ private Q_SLOTS:
         QCOMPARE(label(u"bridge_status"_s), u"Off"_s);
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(m_deviceTauExt) < kTauExtTolerance, 5000);
         m_robot.stop();
+        QVERIFY(!find<QComboBox>(u"bridge_axis"_s)->isEnabled()); // a choice needs a bridge
+        QVERIFY(!find<QLabel>(u"bridge_axis_state"_s)->isVisible());
     }
 
     // hatpic-tuner --bridge: the panel picks the ROS and starts as Enable would; a ROS that
