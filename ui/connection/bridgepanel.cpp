@@ -42,13 +42,6 @@ namespace {
 //! says so (at 50 Hz, a fifth of a second).
 constexpr std::uint64_t kOtherComponentStreak = 10;
 
-#ifdef HATPIC_HAVE_BRIDGE
-QString number(double value)
-{
-    return std::isfinite(value) ? QString::number(value, 'g', 4) : u"–"_s;
-}
-#endif
-
 } // namespace
 
 bool BridgePanel::isBuilt()
@@ -479,26 +472,17 @@ void BridgePanel::refresh()
     const Component c = running ? s.feltComponent : m_settings.feedback.component;
     showAxis(s, running);
     // The whole wrench, so that a robot sending on another component shows.
-    const auto &w = s.lastWrenchValues;
-    m_wrench->setText(tr("force %1 %2 %3 N, torque %4 %5 %6 N·m")
-                          .arg(number(w[0]), number(w[1]), number(w[2]), number(w[3]), number(w[4]),
-                               number(w[5])));
+    m_wrench->setText(bridgeform::wrenchText(s.lastWrenchValues));
     m_wrench->setToolTip(
         tr("x y z; the component fed back: %1").arg(QString::fromStdString(c.wrenchName())));
-    QString other;
-    if (s.otherComponentStreak >= kOtherComponentStreak) {
-        int largest = 0;
-        for (int i = 1; i < 6; ++i)
-            largest = std::abs(w[i]) > std::abs(w[largest]) ? i : largest;
-        const Component o = *Component::fromSlot(largest);
-        other =
-            tr("%1 stays 0 while the robot sends %2 = %3 %4: is the component right?")
-                .arg(QString::fromStdString(c.wrenchName()), QString::fromStdString(o.wrenchName()),
-                     number(w[largest]), o.angular ? u"N·m"_s : u"N"_s);
-    }
+    const QString other = s.otherComponentStreak >= kOtherComponentStreak
+                              ? bridgeform::otherComponentWarning(s.lastWrenchValues, c)
+                              : QString();
     m_otherComponent->setText(other);
     m_otherComponent->setVisible(!other.isEmpty());
-    m_tauExt->setText(number(s.tauExt) + u" N·m"_s);
+    // A board's knobs 2–4 feel their own axes' components (ros.md § A board's knobs).
+    const int knobs = m_client.state() == SessionState::Connected ? m_client.deviceInfo().axes : 1;
+    m_tauExt->setText(bridgeform::torquesText(s.torques, knobs));
     m_counts->setText(tr("%1 received, %2 non-finite, %3 stale, %4 limited")
                           .arg(s.wrenches.received)
                           .arg(s.wrenches.nonFinite)

@@ -4,11 +4,13 @@
 // read without losing a digit of what a profile gave them.
 #pragma once
 
+#include "model/axes.h"
 #include "profile/bridgesettings.h"
 
 #include <QString>
 #include <QtGlobal>
 
+#include <array>
 #include <iterator>
 #include <string>
 
@@ -76,5 +78,15 @@ QDoubleSpinBox *spin(QWidget *parent, const QString &name, double low, double hi
 // The box's value, or `original` when the box still shows it (rounded to its decimals): an
 // edit elsewhere in the panel keeps every digit the profile had.
 double taken(const QDoubleSpinBox *box, double original);
+
+//! A figure as the panel shows it: 4 significant digits, "–" when not finite (none yet).
+QString number(double value);
+//! The whole wrench, force then torque: "force 0 0 0.5 N, torque 0 0 0 N·m".
+QString wrenchText(const std::array<double, 6> &wrench);
+//! The robot sends on another component than `felt`: which, and how much (its largest).
+QString otherComponentWarning(const std::array<double, 6> &wrench, bridge::Component felt);
+//! τ_ext asked of the knob ("0.077 N·m"); of each knob on a board of `knobs` ("0.077 N·m;
+//! knobs 2–4: 0, 0.077, -0.077 N·m").
+QString torquesText(const AxisTorques &torques, int knobs);
 
 } // namespace hatpic::bridgeform

@@ -6,6 +6,7 @@
 #include "rostestpeer.h"
 
 #include "connection/bridgepanel.h"
+#include "connection/bridgepanelform.h"
 #include "plots/qcp.h"
 #include "session/deviceclient.h"
 #include "simulatoroptions.h"
@@ -294,6 +295,23 @@ private Q_SLOTS:
         QTest::keyClick(axis, Qt::Key_Up);
         QTRY_COMPARE(label(u"bridge_axis_state"_s),
                      u"Drives linear.x; feels force.x once the knob rests in its dead zone"_s);
+    }
+
+    // τ_ext as the panel words it: one knob's, or every knob's on a board (ros.md § A board's
+    // knobs); the whole wrench and the warning of a robot sending on another component.
+    void figuresAsWorded()
+    {
+        using bridgeform::torquesText;
+        QCOMPARE(torquesText({0.077, 0.1, 0.2, 0.3}, 1), u"0.077 N·m"_s);
+        QCOMPARE(torquesText({0.077, 0, 0.077, -0.077}, 4),
+                 u"0.077 N·m; knobs 2–4: 0, 0.077, -0.077 N·m"_s);
+        QCOMPARE(torquesText({0, -0.5, 0, 0}, 2), u"0 N·m; knob 2: -0.5 N·m"_s);
+        QCOMPARE(bridgeform::wrenchText({NAN, NAN, NAN, NAN, NAN, NAN}),
+                 u"force – – – N, torque – – – N·m"_s);
+        QCOMPARE(
+            bridgeform::otherComponentWarning({0, 0, 0, 0, 0, -0.25}, bridge::Component{false, 2}),
+            u"force.z stays 0 while the robot sends torque.z = -0.25 N·m: is the component "
+            u"right?"_s);
     }
 
     void disableLeavesZero()
