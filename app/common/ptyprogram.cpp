@@ -3,6 +3,7 @@
 #include "common/connectionoptions.h"
 
 #include "firmware/devicecore.h"
+#include "firmware/sts3032.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -15,7 +16,6 @@ namespace hatpic {
 
 namespace {
 
-constexpr qint64 kMaxServoId = 253;     //!< highest --servo-id (254 is the broadcast id)
 constexpr qint64 kMaxCenterTick = 4095; //!< highest --center-tick (12-bit position)
 //! Lowest --rate: the device core's, below which the feedback watchdog cannot hold [Hz].
 constexpr double kMinRateHz = fw::DeviceCore<double>::kMinControlRate;
@@ -126,6 +126,40 @@ bool PtyProgram::readHand(HandInput &hand) const
     return parseInto(optionValue(SharedOption::Hand), &HandInput::parse, hand);
 }
 
+PtyProgram::OtherHandOptions PtyProgram::addOtherHands(const char *where)
+{
+    const auto make = [&](int knob) {
+        const QString name = QStringLiteral("hand-%1").arg(knob);
+        const QString help =
+            knob == 2 ? QStringLiteral("%1: the hand on knob 2, as --hand (default idle).")
+                            .arg(QString::fromUtf8(where))
+                      : QStringLiteral("%1: the hand on knob %2, likewise.")
+                            .arg(QString::fromUtf8(where))
+                            .arg(knob);
+        QCommandLineOption option(name, help, QStringLiteral("SPEC"));
+        m_parser.addOption(option);
+        return option;
+    };
+    return {make(2), make(3), make(4)};
+}
+
+bool PtyProgram::readOtherHands(const OtherHandOptions &options,
+                                std::array<HandInput, kMaxAxes - 1> &hands) const
+{
+    for (std::size_t k = 0; k < options.size(); ++k) {
+        if (!isSet(options[k]))
+            continue;
+        QString error;
+        const auto hand = HandInput::parse(value(options[k]), &error);
+        if (!hand) {
+            printError(QStringLiteral("--hand-%1: %2").arg(k + 2).arg(error));
+            return false;
+        }
+        hands[k] = *hand;
+    }
+    return true;
+}
+
 bool PtyProgram::readRate(double &hz) const
 {
     const QString text = optionValue(SharedOption::Rate);
@@ -155,7 +189,8 @@ std::optional<quint64> PtyProgram::seedValue() const
 
 bool PtyProgram::readServoId(std::uint8_t &id) const
 {
-    return assign(wholeNumber(optionValue(SharedOption::ServoId), 0, kMaxServoId, "servo id"), id);
+    return assign(
+        wholeNumber(optionValue(SharedOption::ServoId), 0, fw::sts::kMaxServoId, "servo id"), id);
 }
 
 bool PtyProgram::readCenterTick(std::int32_t &tick) const

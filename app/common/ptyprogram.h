@@ -8,12 +8,14 @@
 #include "common/exitcodes.h"
 #include "common/quitonsignal.h"
 #include "link/faultinjector.h"
+#include "model/axes.h"
 #include "sim/handinput.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QString>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -73,6 +75,14 @@ public:
     QString value(const QCommandLineOption &option) const { return m_parser.value(option); }
 
     bool readHand(HandInput &hand) const;
+    //! --hand-2 … --hand-N: the hands on a board's other knobs, as --hand (default idle);
+    //! `where` says when they apply ("imu-branch", "--servos N").
+    using OtherHandOptions = std::array<QCommandLineOption, kMaxAxes - 1>;
+    OtherHandOptions addOtherHands(const char *where);
+    //! Those of `options` that are set, into `hands`; false after the sentence naming the
+    //! option.
+    bool readOtherHands(const OtherHandOptions &options,
+                        std::array<HandInput, kMaxAxes - 1> &hands) const;
     bool readRate(double &hz) const;
     //! Into quint64 (SimulatedDevice, FirmwareHost) or std::uint64_t (ServoBusHost).
     template<typename Unsigned> bool readSeed(Unsigned &seed) const

@@ -62,7 +62,7 @@ struct BoardOptions
 {
     QCommandLineOption device;
     QCommandLineOption protocol;
-    std::array<QCommandLineOption, SimulatedDevice::kOtherKnobs> hands;
+    PtyProgram::OtherHandOptions hands;
     QCommandLineOption tilt;
 };
 
@@ -92,17 +92,8 @@ bool readBoardOptions(const PtyProgram &program, const BoardOptions &options,
     }
     config.board = SimulatedDevice::Board::ImuBranch;
     config.protocol = WireProtocol::Legacy;
-    for (std::size_t k = 0; k < options.hands.size(); ++k) {
-        if (!program.isSet(options.hands[k]))
-            continue;
-        QString error;
-        const auto hand = HandInput::parse(program.value(options.hands[k]), &error);
-        if (!hand) {
-            program.printError(QStringLiteral("--hand-%1: %2").arg(k + 2).arg(error));
-            return false;
-        }
-        config.otherHands[k] = *hand;
-    }
+    if (!program.readOtherHands(options.hands, config.otherHands))
+        return false;
     if (program.isSet(options.tilt)) {
         const QString text = program.value(options.tilt);
         const QStringList parts = text.split(u',');
@@ -150,10 +141,7 @@ int main(int argc, char *argv[])
                     "carries (t_us, theta, omega, tau, ...), tau_total; about 100 bytes a cycle.",
                     "FILE");
     program.add(SharedOption::Hand);
-    const std::array<QCommandLineOption, SimulatedDevice::kOtherKnobs> otherHands{
-        program.add("hand-2", "imu-branch: the hand on knob 2, as --hand (default idle).", "SPEC"),
-        program.add("hand-3", "imu-branch: the hand on knob 3, likewise.", "SPEC"),
-        program.add("hand-4", "imu-branch: the hand on knob 4, likewise.", "SPEC")};
+    const PtyProgram::OtherHandOptions otherHands = program.addOtherHands("imu-branch");
     const auto tilt = program.add(
         "tilt", "imu-branch: the board's roll and pitch [rad] (default 0,0: level).", "ROLL,PITCH");
     program.add(SharedOption::Seed, "Seed of the load-reading noise and of the faults.");

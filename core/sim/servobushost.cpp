@@ -6,23 +6,48 @@
 #include <QSocketNotifier>
 #include <QTimer>
 
+#include <algorithm>
+
 #include <cerrno>
 #include <cmath>
 #include <unistd.h>
 
 namespace hatpic {
 
-ServoBusHost::ServoBusHost(const Config &config, QObject *parent)
-    : QObject(parent), m_config(config), m_plant(std::make_unique<ServoPlant>(config.tauLimit))
+QString ServoBusHost::validate(const Config &config)
 {
-    EmulatedSts3032::Config servo;
-    servo.id = config.id;
-    servo.centerTick = config.centerTick;
-    servo.tauLimit = config.tauLimit;
-    servo.noise = config.noise;
-    servo.seed = config.seed;
-    m_servo = std::make_unique<EmulatedSts3032>(*m_plant, servo);
-    m_torque = torqueEnabled();
+    if (config.servos < 1 || config.servos > kMaxAxes)
+        return QStringLiteral("servos: must be a whole number from 1 to %1, got %2.")
+            .arg(kMaxAxes)
+            .arg(config.servos);
+    const int last = int(config.id) + config.servos - 1;
+    if (last > fw::sts::kMaxServoId)
+        return QStringLiteral("servo id: %1 servos from id %2 would end at id %3, beyond %4.")
+            .arg(config.servos)
+            .arg(config.id)
+            .arg(last)
+            .arg(fw::sts::kMaxServoId);
+    return {};
+}
+
+ServoBusHost::ServoBusHost(const Config &config, QObject *parent)
+    : QObject(parent), m_config(config)
+{
+    // A config validate() refuses gets the servos it can have: the caller was told.
+    const int count =
+        std::clamp(config.servos, 1, std::min(kMaxAxes, fw::sts::kMaxServoId - int(config.id) + 1));
+    for (int k = 0; k < count; ++k) {
+        m_plants.push_back(std::make_unique<ServoPlant>(config.tauLimit));
+        EmulatedSts3032::Config servo;
+        servo.id = std::uint8_t(config.id + k);
+        servo.centerTick = config.centerTick;
+        servo.tauLimit = config.tauLimit;
+        servo.noise = config.noise;
+        servo.seed = config.seed + std::uint64_t(k);
+        m_servos.push_back(std::make_unique<EmulatedSts3032>(*m_plants.back(), servo));
+        m_hands.push_back(k == 0 ? config.hand : config.otherHands[std::size_t(k - 1)]);
+        m_torque.push_back(torqueEnabled(k));
+    }
 }
 
 ServoBusHost::~ServoBusHost()
@@ -30,9 +55,9 @@ ServoBusHost::~ServoBusHost()
     stop();
 }
 
-bool ServoBusHost::torqueEnabled() const
+bool ServoBusHost::torqueEnabled(int k) const
 {
-    return m_servo->reg(fw::sts::kRegTorqueEnable) != 0;
+    return servo(k).reg(fw::sts::kRegTorqueEnable) != 0;
 }
 
 QString ServoBusHost::start()
@@ -82,8 +107,10 @@ void ServoBusHost::advanceToNow()
     const int steps = std::max(1, int(std::ceil(dt * ServoPlant::kMinSubStepRate)));
     const double h = dt / steps;
     for (int i = 0; i < steps; ++i) {
-        const double tauOp = m_config.hand.torque(m_time, m_plant->theta(), m_plant->omega());
-        m_plant->step(h, tauOp);
+        for (std::size_t k = 0; k < m_plants.size(); ++k) {
+            ServoPlant &plant = *m_plants[k];
+            plant.step(h, m_hands[k].torque(m_time, plant.theta(), plant.omega()));
+        }
         m_time += h;
     }
 }
@@ -96,7 +123,9 @@ void ServoBusHost::serviceBus()
     for (;;) {
         const ssize_t n = ::read(m_pty.master(), buffer, sizeof buffer);
         if (n > 0) {
-            m_servo->receive(std::span<const std::uint8_t>(buffer, std::size_t(n)));
+            // Every servo hears the bus; only the one addressed answers (broadcasts: none).
+            for (const auto &servo : m_servos)
+                servo->receive(std::span<const std::uint8_t>(buffer, std::size_t(n)));
             continue;
         }
         if (n < 0 && errno == EINTR)
@@ -107,16 +136,20 @@ void ServoBusHost::serviceBus()
     }
     // A servo answers at once or never: what the pty does not take now is dropped (the
     // master discards its input before each request anyway).
-    while (m_servo->pendingOutput() > 0) {
-        const std::size_t size = m_servo->takeOutput(buffer);
-        ssize_t n = 0;
-        do {
-            n = ::write(m_pty.master(), buffer, size);
-        } while (n < 0 && errno == EINTR);
+    for (const auto &servo : m_servos) {
+        while (servo->pendingOutput() > 0) {
+            const std::size_t size = servo->takeOutput(buffer);
+            ssize_t n = 0;
+            do {
+                n = ::write(m_pty.master(), buffer, size);
+            } while (n < 0 && errno == EINTR);
+        }
     }
-    if (const bool torque = torqueEnabled(); torque != m_torque) {
-        m_torque = torque;
-        Q_EMIT torqueEnableChanged(torque);
+    for (int k = 0; k < servos(); ++k) {
+        if (const bool torque = torqueEnabled(k); torque != m_torque[std::size_t(k)]) {
+            m_torque[std::size_t(k)] = torque;
+            Q_EMIT torqueEnableChanged(k, torque);
+        }
     }
 }
 
