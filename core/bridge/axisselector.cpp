@@ -33,7 +33,7 @@ bool AxisSelector::update(double pRef, bool inDeadZone)
     return true;
 }
 
-AxisSelector::SlotPose AxisSelector::pose(double pRef) const
+SlotPose AxisSelector::pose(double pRef) const
 {
     SlotPose pose = m_held;
     pose[std::size_t(m_axis.slot())] += pRef - m_anchor;

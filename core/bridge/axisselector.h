@@ -13,12 +13,13 @@
 
 namespace hatpic::bridge {
 
+//! Knob 1's pose on each of the six twist places (Component::slot()): what it gives the axis it
+//! drives, and holds on the axes it drove before [m or rad].
+using SlotPose = std::array<double, 6>;
+
 class AxisSelector
 {
 public:
-    //! The pose knob 1 gives each of the six twist places (Component::slot()) [m or rad].
-    using SlotPose = std::array<double, 6>;
-
     //! Knob 1 drives `axis`, nothing chosen yet.
     explicit AxisSelector(Component axis = {});
 

@@ -3,6 +3,7 @@
 // DDS side only copies it. The rate they go out at is teleop/ratelimiter.h's.
 #pragma once
 
+#include "axisselector.h"
 #include "profile/bridgesettings.h"
 
 #include "ros/messages.h"
@@ -42,11 +43,6 @@ struct ReferenceMessages
 //! knobAxes (parseKnobAxes(); settings validate() accepts).
 using KnobComponents = std::array<Component, kMaxAxes>;
 KnobComponents knobComponents(const BridgeSettings &settings, Component axis);
-
-//! Knob 1's pose on each of the six twist places (Component::slot()): what it gives the axis it
-//! drives and holds on the axes it drove before (AxisSelector::pose(), ros.md § Choosing the
-//! knob's axis) [m or rad].
-using SlotPose = std::array<double, 6>;
 
 //! The messages for `count` knobs, stamped `wallSeconds` (Unix time of the sample), each
 //! knob's references on its `axes`; a knob whose axis an earlier knob has goes in the joints

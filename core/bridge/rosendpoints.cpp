@@ -139,15 +139,15 @@ std::string RosEndpoints::create()
     const auto axisHandler = [this](const ros::Message &message) {
         m_handlers.axis(axisRequest(message));
     };
-    const std::tuple<std::string Topics::*, ros::MessageType, ros::MessageHandler, bool> in[] = {
-        {&Topics::wrench, ros::MessageType::WrenchStamped, handler, bool(m_handlers.wrench)},
-        {&Topics::wrenchUnstamped, ros::MessageType::Wrench, handler, bool(m_handlers.wrench)},
-        {&Topics::enable, ros::MessageType::Bool, enableHandler, bool(m_handlers.enable)},
-        {&Topics::axis, ros::MessageType::String, axisHandler, bool(m_handlers.axis)},
-        {&Topics::axisIndex, ros::MessageType::UInt8, axisHandler, bool(m_handlers.axis)}};
-    for (const auto &[topic, type, onMessage, handled] : in) {
+    const std::tuple<std::string Topics::*, ros::MessageType, ros::MessageHandler> in[] = {
+        {&Topics::wrench, ros::MessageType::WrenchStamped, handler},
+        {&Topics::wrenchUnstamped, ros::MessageType::Wrench, handler},
+        {&Topics::enable, ros::MessageType::Bool, enableHandler},
+        {&Topics::axis, ros::MessageType::String, axisHandler},
+        {&Topics::axisIndex, ros::MessageType::UInt8, axisHandler}};
+    for (const auto &[topic, type, onMessage] : in) {
         const std::string name = resolved(m_settings, topic);
-        if (name.empty() || !handled)
+        if (name.empty())
             continue;
         auto subscription = m_node->subscribe(name, type, ros::Qos::matchAny(), onMessage, &error);
         if (!subscription)

@@ -59,7 +59,7 @@ public:
     };
     //! Called on a middleware thread, once per message on either axis topic.
     using AxisHandler = std::function<void(const AxisRequest &)>;
-    //! What the subscriptions call; an empty one is not called.
+    //! What the subscriptions call; each must be set.
     struct Handlers
     {
         WrenchHandler wrench;

@@ -16,7 +16,7 @@ namespace {
 
 const Component kLinearX{false, 0}, kLinearY{false, 1}, kAngularZ{true, 2};
 
-bool near(const AxisSelector::SlotPose &a, const AxisSelector::SlotPose &b)
+bool near(const SlotPose &a, const SlotPose &b)
 {
     for (std::size_t i = 0; i < a.size(); ++i) {
         if (std::abs(a[i] - b[i]) > 1e-12)
@@ -36,10 +36,10 @@ private Q_SLOTS:
         AxisSelector s(kLinearX);
         QCOMPARE(s.axis(), kLinearX);
         QVERIFY(!s.chosen());
-        QCOMPARE(s.pose(0.3), (AxisSelector::SlotPose{0.3, 0, 0, 0, 0, 0}));
+        QCOMPARE(s.pose(0.3), (SlotPose{0.3, 0, 0, 0, 0, 0}));
         s.setDefault(kAngularZ); // the reference mode's: at once, as before
         QCOMPARE(s.axis(), kAngularZ);
-        QCOMPARE(s.pose(0.3), (AxisSelector::SlotPose{0, 0, 0, 0, 0, 0.3}));
+        QCOMPARE(s.pose(0.3), (SlotPose{0, 0, 0, 0, 0, 0.3}));
     }
 
     void aRequestWaitsForTheDeadZone()
@@ -67,7 +67,7 @@ private Q_SLOTS:
         QCOMPARE(s.pose(0.4)[0], 0.4);
         s.request(kLinearY);
         QVERIFY(s.update(0.4, true));
-        QCOMPARE(s.pose(0.4), (AxisSelector::SlotPose{0.4, 0, 0, 0, 0, 0}));
+        QCOMPARE(s.pose(0.4), (SlotPose{0.4, 0, 0, 0, 0, 0}));
         QVERIFY(near(s.pose(0.7), {0.4, 0.3, 0, 0, 0, 0}));
         s.request(kLinearX);
         QVERIFY(s.update(0.7, true));

@@ -204,12 +204,7 @@ private Q_SLOTS:
     {
         double tauExt = 0, theta = 0; // outlive the client that writes them
         DeviceClient knob;
-        HandInput hand;
-        hand.kind = HandInput::Kind::Pushes;
-        hand.amplitude = 0.1;
-        hand.pushes = 1000;
-        hand.pushTime = 0.8;
-        hand.releaseTime = 0.8;
+        const HandInput hand = *HandInput::parse(u"pushes:0.1:1000:0.8:0.8"_s); // 0.8 s on, 0.8 off
         QVERIFY(connectKnob(knob, hand, tauExt, &theta));
         BridgeSettings settings;
         settings.domainId = kDomain;

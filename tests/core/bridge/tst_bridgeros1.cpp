@@ -283,12 +283,7 @@ private Q_SLOTS:
     void anAxisChosenOverRos1()
     {
         m_bridge.stop();
-        HandInput hand;
-        hand.kind = HandInput::Kind::Pushes;
-        hand.amplitude = 0.1;
-        hand.pushes = 1000;
-        hand.pushTime = 0.8;
-        hand.releaseTime = 0.8;
+        const HandInput hand = *HandInput::parse(u"pushes:0.1:1000:0.8:0.8"_s); // 0.8 s on, 0.8 off
         SimulatedDevice::Config config;
         config.hand = hand;
         DeviceClient knob;

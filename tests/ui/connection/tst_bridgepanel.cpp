@@ -258,12 +258,9 @@ private Q_SLOTS:
         QCOMPARE(engaged->text(), u"Released"_s);
         expectTauExt(0);
         QTest::qWait(100);
-        m_peer->take();
-        m_peer->clear();
-        QTest::qWait(200);
-        m_peer->take();
-        QVERIFY(!m_peer->twists.empty());
-        for (const auto &t : m_peer->twists)
+        const auto &twists = twistsOver(200);
+        QVERIFY(!twists.empty());
+        for (const auto &t : twists)
             QCOMPARE(t.a[0], 0.0);
         engaged->click();
         QCOMPARE(engaged->text(), u"Engaged"_s);
@@ -285,12 +282,9 @@ private Q_SLOTS:
         QCOMPARE(axis->currentText(), u"linear.y"_s);
         QTest::qWait(300);
         QCOMPARE(axis->currentText(), u"linear.y"_s);
-        m_peer->take();
-        m_peer->clear();
-        QTest::qWait(200);
-        m_peer->take();
-        QVERIFY(!m_peer->twists.empty());
-        for (const auto &t : m_peer->twists)
+        const auto &twists = twistsOver(200);
+        QVERIFY(!twists.empty());
+        for (const auto &t : twists)
             QVERIFY(t.a[0] != 0 && t.a[1] == 0); // still x: the knob never rested
         QTest::keyClick(axis, Qt::Key_Up);
         QTRY_COMPARE(label(u"bridge_axis_state"_s),
@@ -359,6 +353,15 @@ private:
         return widget;
     }
     QString label(const QString &name) { return find<QLabel>(name)->text(); }
+    //! The twists the test node receives in the next `ms` (what came before is dropped).
+    const std::vector<hatpic::test::VectorsGot> &twistsOver(int ms)
+    {
+        m_peer->take();
+        m_peer->clear();
+        QTest::qWait(ms);
+        m_peer->take();
+        return m_peer->twists;
+    }
 
     //! Wrenches at 50 Hz; stamped `stampAge` seconds before they are sent (0: no stamp).
     void startRobot(double value, double stampAge = 0)
