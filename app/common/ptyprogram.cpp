@@ -189,8 +189,8 @@ std::optional<quint64> PtyProgram::seedValue() const
 
 bool PtyProgram::readServoId(std::uint8_t &id) const
 {
-    return assign(
-        wholeNumber(optionValue(SharedOption::ServoId), 0, fw::sts::kMaxServoId, "servo id"), id);
+    return assign(wholeNumber(optionValue(SharedOption::ServoId), 0, fw::sts::kMaxId, "servo id"),
+                  id);
 }
 
 bool PtyProgram::readCenterTick(std::int32_t &tick) const

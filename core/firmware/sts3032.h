@@ -15,10 +15,9 @@ namespace hatpic::fw {
 namespace sts {
 
 // ---- packets (servo.md § 1) ----
-inline constexpr std::uint8_t kHeaderByte = 0xFF;    //!< a packet starts with two of these
-inline constexpr std::uint8_t kBroadcastId = 0xFE;   //!< every servo obeys, none answers
-inline constexpr int kMaxServoId = kBroadcastId - 1; //!< highest id a servo can have (253)
-inline constexpr std::uint8_t kMaxId = 0xFD;         //!< highest single-servo id
+inline constexpr std::uint8_t kHeaderByte = 0xFF;  //!< a packet starts with two of these
+inline constexpr std::uint8_t kBroadcastId = 0xFE; //!< every servo obeys, none answers
+inline constexpr std::uint8_t kMaxId = 0xFD;       //!< highest single-servo id
 
 inline constexpr std::uint8_t kPing = 0x01;
 inline constexpr std::uint8_t kRead = 0x02;     //!< params: addr, count

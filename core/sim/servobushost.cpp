@@ -21,21 +21,20 @@ QString ServoBusHost::validate(const Config &config)
             .arg(kMaxAxes)
             .arg(config.servos);
     const int last = int(config.id) + config.servos - 1;
-    if (last > fw::sts::kMaxServoId)
+    if (last > int(fw::sts::kMaxId))
         return QStringLiteral("servo id: %1 servos from id %2 would end at id %3, beyond %4.")
             .arg(config.servos)
             .arg(config.id)
             .arg(last)
-            .arg(fw::sts::kMaxServoId);
+            .arg(int(fw::sts::kMaxId));
     return {};
 }
 
-ServoBusHost::ServoBusHost(const Config &config, QObject *parent)
-    : QObject(parent), m_config(config)
+ServoBusHost::ServoBusHost(const Config &config, QObject *parent) : QObject(parent)
 {
     // A config validate() refuses gets the servos it can have: the caller was told.
     const int count =
-        std::clamp(config.servos, 1, std::min(kMaxAxes, fw::sts::kMaxServoId - int(config.id) + 1));
+        std::clamp(config.servos, 1, std::min(kMaxAxes, int(fw::sts::kMaxId) - int(config.id) + 1));
     for (int k = 0; k < count; ++k) {
         m_plants.push_back(std::make_unique<ServoPlant>(config.tauLimit));
         EmulatedSts3032::Config servo;

@@ -84,7 +84,6 @@ private:
     void advanceToNow();
     void serviceBus();
 
-    Config m_config;
     std::vector<std::unique_ptr<ServoPlant>> m_plants;
     std::vector<std::unique_ptr<EmulatedSts3032>> m_servos;
     std::vector<HandInput> m_hands;
