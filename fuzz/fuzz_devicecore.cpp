@@ -30,8 +30,8 @@ namespace {
 class FlakyStore : public fw::ParamStore
 {
 public:
-    bool load(fw::StoredSettings &) override { return false; }
-    bool save(const fw::StoredSettings &) override { return !failing; }
+    bool load(std::uint8_t, fw::StoredSettings &) override { return false; }
+    bool save(std::uint8_t, const fw::StoredSettings &) override { return !failing; }
     bool failing = false;
 };
 

@@ -39,6 +39,7 @@ constexpr SharedOptionSpec kSharedOptions[] = {
     {SharedOption::Rate, "rate", "Control rate [Hz] (default 1000).", "HZ", "1000"},
     {SharedOption::Seed, "seed", nullptr, "N", "1"},
     {SharedOption::ServoId, "servo-id", nullptr, "N", "1"},
+    {SharedOption::Servos, "servos", nullptr, "N", "1"},
     {SharedOption::CenterTick, "center-tick", nullptr, "N", "1000"},
     {SharedOption::State, "state", "Profile file that SAVE_PARAMS writes and power-up reads.",
      "FILE", nullptr},
@@ -191,6 +192,24 @@ bool PtyProgram::readServoId(std::uint8_t &id) const
 {
     return assign(wholeNumber(optionValue(SharedOption::ServoId), 0, fw::sts::kMaxId, "servo id"),
                   id);
+}
+
+bool PtyProgram::readServos(std::uint8_t firstId, int &servos) const
+{
+    const auto count = wholeNumber(optionValue(SharedOption::Servos), 1, kMaxAxes, "servo count");
+    if (!count)
+        return false;
+    const int last = int(firstId) + int(*count) - 1;
+    if (last > int(fw::sts::kMaxId)) {
+        printError(QStringLiteral("servo id: %1 servos from id %2 would end at id %3, beyond %4.")
+                       .arg(*count)
+                       .arg(firstId)
+                       .arg(last)
+                       .arg(int(fw::sts::kMaxId)));
+        return false;
+    }
+    servos = int(*count);
+    return true;
 }
 
 bool PtyProgram::readCenterTick(std::int32_t &tick) const

@@ -42,7 +42,7 @@ private:
 };
 
 //! The options that more than one pty program takes (see kSharedOptions in ptyprogram.cpp).
-enum class SharedOption { Hand, Rate, Seed, ServoId, CenterTick, State, Faults, Link };
+enum class SharedOption { Hand, Rate, Seed, ServoId, Servos, CenterTick, State, Faults, Link };
 
 //! One pty program's command line and start-up. Add the options in --help order, parse(),
 //! read them; every reader prints its one sentence ("PROGRAM: …" on stderr) and returns false
@@ -90,6 +90,8 @@ public:
         return assign(seedValue(), seed);
     }
     bool readServoId(std::uint8_t &id) const;
+    //! --servos: 1…kMaxAxes servos, ids `firstId`, +1, … all within the bus's 0…253.
+    bool readServos(std::uint8_t firstId, int &servos) const;
     bool readCenterTick(std::int32_t &tick) const;
     //! Refuses an empty name and an existing pipe, device or folder, which would block open()
     //! (or fail late) before the signal handling runs.

@@ -40,7 +40,8 @@ bool readBusOptions(const PtyProgram &program, const BusOptions &options,
     // Each of the three says what is wrong with it.
     const auto baud =
         program.wholeNumber(program.value(options.baud), kMinBaud, kMaxBaud, "baud rate");
-    const bool idOk = program.readServoId(config.servoId);
+    const bool idOk =
+        program.readServoId(config.servoId) && program.readServos(config.servoId, config.servos);
     const bool centerOk = program.readCenterTick(config.centerTick);
     if (!baud || !idOk || !centerOk)
         return false;
@@ -83,7 +84,9 @@ int main(int argc, char *argv[])
                                       "port and serves protocol v2 on a pseudo-terminal."));
     const auto servo = program.add("servo", "Serial device of the servo bus (required).", "PATH");
     const auto baud = program.add("servo-baud", "Bus baud rate (default 1000000).", "N", "1000000");
-    program.add(SharedOption::ServoId, "Servo id, 0…253 (default 1).");
+    program.add(SharedOption::ServoId, "Servo id, 0…253 (default 1; knob 1's with --servos).");
+    program.add(SharedOption::Servos, "Knobs: servos on the bus, 1 to 4, with ids ID, ID + 1, … "
+                                      "(default 1; 4: the IMU branch's board).");
     program.add(SharedOption::CenterTick, "Servo tick of θ = 0, 0…4095 (default 1000).");
     const auto timeout =
         program.add("servo-timeout", "Bus reply timeout [ms] (default 5).", "MS", "5");
@@ -108,10 +111,16 @@ int main(int argc, char *argv[])
         return PtyProgram::kExitFailure;
     for (const QString &warning : host.warnings())
         program.printError(warning);
+    const QString ids = config.servos == 1
+                            ? QStringLiteral("servo id %1").arg(config.servoId)
+                            : QStringLiteral("%1 servos, ids %2–%3")
+                                  .arg(config.servos)
+                                  .arg(config.servoId)
+                                  .arg(config.servoId + config.servos - 1);
     std::fprintf(stderr,
-                 "hatpic-fw-host: servo id %d on %s at %u baud, center tick %d, timeout %u µs; "
+                 "hatpic-fw-host: %s on %s at %u baud, center tick %d, timeout %u µs; "
                  "%g Hz control\n",
-                 int(config.servoId), qPrintable(config.servoPath), config.servoBaud,
+                 qPrintable(ids), qPrintable(config.servoPath), config.servoBaud,
                  int(config.centerTick), config.servoTimeoutUs, config.rateHz);
 
     auto printFaults = [&host, &config] {

@@ -24,10 +24,8 @@ int main(int argc, char *argv[])
                        QStringLiteral("Emulated STS3032 servo (bus of servo.md) on a "
                                       "pseudo-terminal."));
     program.add(SharedOption::Hand);
-    const auto servos = program.add("servos",
-                                    "Servos on the bus, 1 to 4, with ids ID, ID + 1, … (default "
-                                    "1; 4: the IMU branch's board).",
-                                    "N", "1");
+    program.add(SharedOption::Servos, "Servos on the bus, 1 to 4, with ids ID, ID + 1, … "
+                                      "(default 1; 4: the IMU branch's board).");
     const PtyProgram::OtherHandOptions otherHands = program.addOtherHands("--servos 2 or more");
     program.add(SharedOption::Seed, "Seed of the load-reading noise.");
     program.add(SharedOption::ServoId, "Servo id on the bus (the first's), 0…253 (default 1).");
@@ -39,17 +37,9 @@ int main(int argc, char *argv[])
     config.noise = SimulatedDevice::kProgramNoise;
     if (!program.parse() || !program.readHand(config.hand) ||
         !program.readOtherHands(otherHands, config.otherHands) || !program.readSeed(config.seed) ||
-        !program.readServoId(config.id) || !program.readCenterTick(config.centerTick) ||
-        !program.readLink())
+        !program.readServoId(config.id) || !program.readServos(config.id, config.servos) ||
+        !program.readCenterTick(config.centerTick) || !program.readLink())
         return PtyProgram::kExitBadOptions;
-    const auto count = program.wholeNumber(program.value(servos), 1, kMaxAxes, "servo count");
-    if (!count)
-        return PtyProgram::kExitBadOptions;
-    config.servos = int(*count);
-    if (const QString problem = ServoBusHost::validate(config); !problem.isEmpty()) {
-        program.printError(problem);
-        return PtyProgram::kExitBadOptions;
-    }
 
     ServoBusHost host(config);
     const Serving serving = program.serve(host); // after the host, which it must not outlive

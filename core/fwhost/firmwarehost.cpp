@@ -9,6 +9,7 @@
 #include <QSocketNotifier>
 #include <QTimer>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <ctime>
@@ -71,8 +72,8 @@ FirmwareHost::~FirmwareHost()
 
 QString FirmwareHost::servoStartFailure(fw::StsBusError error) const
 {
-    const QString servo =
-        QStringLiteral("The servo (id %1) on %2").arg(m_config.servoId).arg(m_config.servoPath);
+    const int id = m_config.servoId + std::max(0, m_core->unstartedAxis());
+    const QString servo = QStringLiteral("The servo (id %1) on %2").arg(id).arg(m_config.servoPath);
     const QString baud = QString::number(m_config.servoBaud) + u" baud";
     switch (error) {
     case fw::StsBusError::Timeout:
@@ -89,8 +90,7 @@ QString FirmwareHost::servoStartFailure(fw::StsBusError error) const
         return servo + u" does not answer at " + baud +
                u", but a servo with another id does (see --servo-id).";
     case fw::StsBusError::Rejected:
-        return servo + u": the request could not be sent (id " + QString::number(m_config.servoId) +
-               u").";
+        return servo + u": the request could not be sent (id " + QString::number(id) + u").";
     case fw::StsBusError::None:
         break;
     }
@@ -110,15 +110,21 @@ QString FirmwareHost::start()
         return error;
 
     m_bus = std::make_unique<fw::StsBus>(*m_servoPort);
-    fw::StsActuator<double>::Config actuator;
-    actuator.id = m_config.servoId;
-    actuator.centerTick = m_config.centerTick;
-    actuator.tauLimit = m_config.tauLimit;
-    actuator.timeoutUs = m_config.servoTimeoutUs;
-    m_actuator = std::make_unique<fw::StsActuator<double>>(*m_bus, actuator);
-    const std::array<std::uint8_t, 2> torqueOff{fw::sts::kRegTorqueEnable, 0};
-    m_torqueOffSize =
-        fw::sts::encodePacket(m_config.servoId, fw::sts::kWrite, torqueOff, m_torqueOff);
+    m_actuators.clear();
+    std::array<fw::Actuator<double> *, kMaxAxes> actuators{};
+    const int servos = std::clamp(m_config.servos, 1, kMaxAxes);
+    for (int k = 0; k < servos; ++k) {
+        fw::StsActuator<double>::Config actuator;
+        actuator.id = std::uint8_t(m_config.servoId + k);
+        actuator.centerTick = m_config.centerTick;
+        actuator.tauLimit = m_config.tauLimit;
+        actuator.timeoutUs = m_config.servoTimeoutUs;
+        m_actuators.push_back(std::make_unique<fw::StsActuator<double>>(*m_bus, actuator));
+        actuators[std::size_t(k)] = m_actuators.back().get();
+        const std::array<std::uint8_t, 2> torqueOff{fw::sts::kRegTorqueEnable, 0};
+        TorqueOff &off = m_torqueOff[std::size_t(k)];
+        off.size = fw::sts::encodePacket(actuator.id, fw::sts::kWrite, torqueOff, off.bytes);
+    }
     m_clock = std::make_unique<MonotonicClock>();
     if (!m_config.stateFile.isEmpty())
         m_store = std::make_unique<ProfileParamStore>(
@@ -135,8 +141,9 @@ QString FirmwareHost::start()
     core.deviceId = kDeviceId;
     core.firmware = kFirmwareName;
     core.linkLimitHz = 0; // a pty has no baud rate
-    m_core = std::make_unique<fw::DeviceCore<double>>(core, *m_hostPort, *m_actuator, *m_clock,
-                                                      m_store.get());
+    m_core = std::make_unique<fw::DeviceCore<double>>(
+        core, *m_hostPort, std::span(actuators.data(), std::size_t(servos)), *m_clock,
+        m_store.get());
     bool started = false;
     for (int attempt = 0, pauseMs = kServoStartPauseMs; attempt < kServoStartAttempts;
          ++attempt, pauseMs *= 2) {
@@ -190,7 +197,8 @@ void FirmwareHost::stop()
     m_stopping.store(true);
     m_thread.join();
     // The control context is gone: the bus is ours now. Torque off, whatever state it is in.
-    m_actuator->disable();
+    for (const auto &actuator : m_actuators)
+        actuator->disable();
     delete m_notifier;
     m_notifier = nullptr;
     delete m_timer;
@@ -206,13 +214,18 @@ void FirmwareHost::emergencyStop() noexcept
     const timespec millisecond{0, 1000000};
     for (int i = 0; i < kEmergencyWaitMs && m_controlRunning.load(); ++i)
         ::nanosleep(&millisecond, nullptr);
-    if (m_servoPort && m_torqueOffSize > 0) {
-        // Twice, 2 ms apart: a packet a dying thread left half-written swallows the first.
-        const std::span<const std::uint8_t> packet(m_torqueOff.data(), m_torqueOffSize);
-        m_servoPort->write(packet);
+    if (m_servoPort) {
+        // Each servo's, twice, 2 ms apart: a packet a dying thread left half-written swallows
+        // the first.
         const timespec gap{0, 2000000};
-        ::nanosleep(&gap, nullptr);
-        m_servoPort->write(packet);
+        for (int round = 0; round < 2; ++round) {
+            if (round > 0)
+                ::nanosleep(&gap, nullptr);
+            for (const TorqueOff &off : m_torqueOff) {
+                if (off.size > 0)
+                    m_servoPort->write({off.bytes.data(), off.size});
+            }
+        }
     }
     m_pty.removeLinkNow();
 }
@@ -269,7 +282,9 @@ void FirmwareHost::controlLoop()
         s.windowLate += late;
         s.totalLate += late;
         s.bus = m_bus->stats();
-        s.faulted = m_core->controller().faulted();
+        s.faulted = false;
+        for (int k = 0; k < m_core->axes(); ++k)
+            s.faulted = s.faulted || m_core->controller(k).faulted();
         previousStart = start;
     }
     m_controlRunning.store(false);

@@ -12,6 +12,7 @@
 #include "fwhost/periodhistogram.h"
 #include "link/faultinjector.h"
 #include "link/pseudoterminal.h"
+#include "model/axes.h"
 
 #include <QObject>
 #include <QString>
@@ -23,6 +24,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 class QSocketNotifier;
 class QTimer;
@@ -59,7 +61,10 @@ public:
     {
         QString servoPath;                                     //!< serial device of the bus
         std::uint32_t servoBaud = 1000000;                     //!< [bit/s]
-        std::uint8_t servoId = 1;                              //!< 0…253
+        std::uint8_t servoId = 1;                              //!< 0…253 (knob 1's)
+        //! Knobs: servos with ids servoId … servoId + servos − 1 on the one bus (1…kMaxAxes;
+        //! 4: the IMU branch's board), each run by its own controller.
+        int servos = 1;
         std::int32_t centerTick = 1000;                        //!< tick of θ = 0 [tick]
         double rateHz = 1000;                                  //!< control rate [Hz]
         std::uint32_t servoTimeoutUs = kDefaultServoTimeoutUs; //!< bus reply timeout [µs]
@@ -82,7 +87,7 @@ public:
         std::uint64_t late = 0;      //!< cycles more than a period late (schedule skipped)
         std::uint32_t busErrors = 0; //!< failed transactions in the window
         fw::StsBusStats bus;         //!< counters since start
-        bool faulted = false;        //!< 100 bus errors in a row: torque is off
+        bool faulted = false;        //!< 100 bus errors in a row on a servo: its torque is off
         double rateHz() const { return seconds > 0 ? double(cycles) / seconds : 0.0; }
     };
 
@@ -127,7 +132,7 @@ private:
     PseudoTerminal m_pty;
     std::unique_ptr<SerialServoPort> m_servoPort;
     std::unique_ptr<fw::StsBus> m_bus;
-    std::unique_ptr<fw::StsActuator<double>> m_actuator;
+    std::vector<std::unique_ptr<fw::StsActuator<double>>> m_actuators; //!< knob 1 first
     std::unique_ptr<MonotonicClock> m_clock;
     std::unique_ptr<ProfileParamStore> m_store;
     std::unique_ptr<FdHostPort> m_hostPort;
@@ -136,9 +141,13 @@ private:
     QTimer *m_timer = nullptr;
     QStringList m_warnings;
 
-    //! The WRITE that switches the torque off, encoded at start for emergencyStop().
-    std::array<std::uint8_t, fw::sts::kMaxPacketBytes> m_torqueOff{};
-    std::size_t m_torqueOffSize = 0;
+    //! The WRITEs that switch each servo's torque off, encoded at start for emergencyStop().
+    struct TorqueOff
+    {
+        std::array<std::uint8_t, fw::sts::kMaxPacketBytes> bytes{};
+        std::size_t size = 0;
+    };
+    std::array<TorqueOff, kMaxAxes> m_torqueOff{};
 
     std::thread m_thread;
     std::atomic<bool> m_stopping{false};

@@ -2,6 +2,7 @@
 
 #include "profile/profile.h"
 
+#include <QDir>
 #include <QFileInfo>
 
 namespace hatpic {
@@ -50,15 +51,27 @@ ProfileParamStore::ProfileParamStore(const QString &path, const QString &owner, 
     : m_path(path), m_owner(owner), m_tauLimit(tauLimit)
 {}
 
-bool ProfileParamStore::load(fw::StoredSettings &out)
+QString ProfileParamStore::knobPath(const QString &path, int axis)
+{
+    if (axis == 0)
+        return path;
+    const QFileInfo file(path);
+    const QString knob = QStringLiteral(".knob%1").arg(axis + 1);
+    if (file.suffix().isEmpty())
+        return path + knob;
+    return file.dir().filePath(file.completeBaseName() + knob + u'.' + file.suffix());
+}
+
+bool ProfileParamStore::load(std::uint8_t axis, fw::StoredSettings &out)
 {
     m_warning.clear();
-    if (!QFileInfo::exists(m_path))
+    const QString path = knobPath(m_path, axis);
+    if (!QFileInfo::exists(path))
         return false;
-    const ProfileReadResult read = readProfile(m_path);
+    const ProfileReadResult read = readProfile(path);
     if (!read.ok()) {
         m_warning = QStringLiteral("State file %1 ignored: %2")
-                        .arg(m_path, read.errors.join(QStringLiteral("; ")));
+                        .arg(path, read.errors.join(QStringLiteral("; ")));
         return false;
     }
     out.params = read.profile->device;
@@ -78,27 +91,30 @@ QString ProfileParamStore::refusal(const ProfileReadResult &read) const
     return {};
 }
 
-bool ProfileParamStore::save(const fw::StoredSettings &settings)
+bool ProfileParamStore::save(std::uint8_t axis, const fw::StoredSettings &settings)
 {
     m_failure.clear();
+    const QString path = knobPath(m_path, axis);
     Profile profile;
-    if (QFileInfo::exists(m_path)) {
+    if (QFileInfo::exists(path)) {
         // Read again at each save: what the user changed in the file meanwhile is kept too.
-        const ProfileReadResult read = readProfile(m_path);
+        const ProfileReadResult read = readProfile(path);
         if (const QString why = refusal(read); !why.isEmpty()) {
-            m_failure = QStringLiteral("not overwriting %1: %2").arg(m_path, why).toUtf8();
+            m_failure = QStringLiteral("not overwriting %1: %2").arg(path, why).toUtf8();
             return false;
         }
         profile = merged(*read.profile, settings, m_tauLimit);
     } else {
         profile.name = m_owner + QStringLiteral(" state");
+        if (axis > 0)
+            profile.name += QStringLiteral(", knob %1").arg(axis + 1);
         profile.notes = QStringLiteral("Parameters saved by %1 (SAVE_PARAMS).").arg(m_owner);
         profile.device = tidyDeviceParams(settings.params);
         profile.effects = tidyEffectParams(settings.effects);
         profile.passivity = tidyPassivityParams(settings.passivity);
         profile.host.tau_limit = shortestFloatDecimal(m_tauLimit);
     }
-    const QString error = writeProfile(profile, m_path);
+    const QString error = writeProfile(profile, path);
     m_failure = error.toUtf8();
     return error.isEmpty();
 }

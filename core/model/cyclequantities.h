@@ -30,12 +30,12 @@ struct CycleQuantity
     constexpr bool optional() const { return capability != 0; }
 };
 
-//! Calls `visit(quantity, &R::member...)` for each quantity, in TELEMETRY's order: for each
-//! record type R, the member of the quantity's name.
-template<typename... R, typename Visit> constexpr void forEachCycleQuantity(Visit &&visit)
+//! Calls `visit(quantity, &R::member...)` for each quantity of one knob, every quantity of the
+//! cycle but its time, in TELEMETRY's order: what a device with several knobs sends again for
+//! each further knob (v2::KnobTelemetry, protocol.md § 2).
+template<typename... R, typename Visit> constexpr void forEachKnobQuantity(Visit &&visit)
 {
     using Q = CycleQuantity;
-    visit(Q{"t_us", "µs", "the cycle's time on the device clock, wraps at 2^32"}, &R::t_us...);
     visit(Q{"theta", "rad", "knob angle, absolute"}, &R::theta...);
     visit(Q{"omega", "rad/s", "knob rate"}, &R::omega...);
     visit(Q{"tau", "N·m", "interaction torque of eq. (1); the operator's torque is -tau"},
@@ -49,6 +49,15 @@ template<typename... R, typename Visit> constexpr void forEachCycleQuantity(Visi
           &R::tau_pc...);
     visit(Q{"pc_reserve", "J", "passivity controller's energy reserve R", v2::kCapabilityPassivity},
           &R::pc_reserve...);
+}
+
+//! Calls `visit(quantity, &R::member...)` for each quantity, in TELEMETRY's order: for each
+//! record type R, the member of the quantity's name.
+template<typename... R, typename Visit> constexpr void forEachCycleQuantity(Visit &&visit)
+{
+    visit(CycleQuantity{"t_us", "µs", "the cycle's time on the device clock, wraps at 2^32"},
+          &R::t_us...);
+    forEachKnobQuantity<R...>(visit);
 }
 
 //! How many quantities forEachCycleQuantity() visits.

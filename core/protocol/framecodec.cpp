@@ -33,6 +33,8 @@ public:
             text(field.view(), F::capacity());
         } else if constexpr (std::is_same_v<F, Reserved>) {
             put(std::uint8_t(0));
+        } else if constexpr (FieldStruct<F>) {
+            F::fields(field, *this);
         } else if constexpr (FieldBlock<F>) {
             // Doubles travel as binary32: rounded to the nearest float, out-of-range values
             // become ±Inf and NaN stays NaN (the receiver's validation rejects both).
@@ -97,6 +99,8 @@ public:
             field.assign(t.substr(0, t.find('\0')));
         } else if constexpr (std::is_same_v<F, Reserved>) {
             ++m_pos;
+        } else if constexpr (FieldStruct<F>) {
+            F::fields(field, *this);
         } else if constexpr (FieldBlock<F>) {
             for (int i = 0; i < F::kFieldCount; ++i) {
                 float value = 0;

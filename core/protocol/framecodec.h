@@ -42,6 +42,17 @@ concept WireMessage = requires
 {
     T::kType;
 };
+//! A visitor that takes any field: what FieldStruct tries fields() with.
+struct AnyField
+{
+    template<typename F> constexpr void operator()(F &&) const {}
+};
+//! A group of fields inside a message (KnobTelemetry): its own fields(), in wire order.
+template<typename F>
+concept FieldStruct = !WireMessage<F> && requires(F &m, AnyField &v)
+{
+    F::fields(m, v);
+};
 
 //! Bytes of a field whose length does not depend on its value.
 template<typename F> constexpr std::size_t fixedFieldBytes()
@@ -52,7 +63,15 @@ template<typename F> constexpr std::size_t fixedFieldBytes()
         return 4 * std::size_t(F::kFieldCount);
     else if constexpr (kIsTextField<F>)
         return F::capacity();
-    else {
+    else if constexpr (FieldStruct<F>) {
+        std::size_t bytes = 0;
+        F m{};
+        auto add = [&bytes](const auto &field) {
+            bytes += fixedFieldBytes<std::remove_cvref_t<decltype(field)>>();
+        };
+        F::fields(m, add);
+        return bytes;
+    } else {
         static_assert(std::is_integral_v<F> || std::is_enum_v<F> || std::is_same_v<F, float>,
                       "a field's wire form: see messages.h");
         return sizeof(F);
@@ -103,27 +122,38 @@ constexpr std::size_t kTelemetryBytes = payloadBounds<Telemetry>().min; //!< wit
 constexpr std::size_t kTelemetryFxBytes = kTelemetryBytes + 4; //!< with τ_fx (effects.md § 3)
 //! With τ_fx, τ_pc and R (the passivity capability, passivity.md) [bytes].
 constexpr std::size_t kTelemetryPcBytes = kTelemetryFxBytes + 8;
-//! A TELEMETRY frame's length on the wire (COBS adds at most one byte here, plus the
-//! delimiter): 31 bytes, 35 with τ_fx, 43 with τ_pc and R too [bytes].
-constexpr std::size_t telemetryWireBytes(bool withEffects, bool withPassivity = false)
+//! TELEMETRY of a device with `axes` knobs (kCapabilityAxes; 2…4): 37 bytes, then 33 per
+//! further knob [bytes].
+constexpr std::size_t telemetryBytes(int axes)
 {
-    const std::size_t payload = withPassivity ? kTelemetryPcBytes
-                                : withEffects ? kTelemetryFxBytes
-                                              : kTelemetryBytes;
+    return kTelemetryPcBytes + std::size_t(axes - 1) * fixedFieldBytes<KnobTelemetry>();
+}
+//! A TELEMETRY frame's length on the wire (COBS adds at most one byte here, plus the
+//! delimiter): 31 bytes, 35 with τ_fx, 43 with τ_pc and R too, and 33 more for each further
+//! knob of a device with several (with both capabilities) [bytes].
+constexpr std::size_t telemetryWireBytes(bool withEffects, bool withPassivity = false,
+                                         int axes = 1)
+{
+    const std::size_t payload = axes > 1        ? telemetryBytes(axes)
+                                : withPassivity ? kTelemetryPcBytes
+                                : withEffects   ? kTelemetryFxBytes
+                                                : kTelemetryBytes;
     return cobsMaxEncodedSize(kPacketOverhead + payload) + 1;
 }
 //! Largest frame on the wire: COBS of the largest packet plus the delimiter [bytes].
 constexpr std::size_t kMaxWireFrameBytes = cobsMaxEncodedSize(kPacketOverhead + kMaxPayload) + 1;
 // The descriptions against protocol.md § 3 and effects.md § 3.
-static_assert(payloadBounds<Params>().min == 28 && payloadBounds<Params>().max == 28);
-static_assert(payloadBounds<HelloReply>().min == 28 && payloadBounds<HelloReply>().max == 28);
+static_assert(payloadBounds<Params>().min == 28);
+static_assert(payloadBounds<HelloReply>().min == 28);
+static_assert(fixedFieldBytes<KnobTelemetry>() == 33);
+static_assert(telemetryBytes(4) == 136 && telemetryWireBytes(true, true, 4) == 142);
 static_assert(payloadBounds<Ack>().min == 4 && payloadBounds<Ack>().max == 4);
-static_assert(payloadBounds<Vibrate>().min == 12 && payloadBounds<Vibrate>().max == 12);
+static_assert(payloadBounds<Vibrate>().min == 12);
 static_assert(kTelemetryBytes == 25 && payloadBounds<Telemetry>().max == kMaxPayload);
 static_assert(payloadBounds<Log>().min == 1 && payloadBounds<Log>().max == kMaxPayload);
 static_assert(telemetryWireBytes(false) == 31 && telemetryWireBytes(true) == 35);
 static_assert(telemetryWireBytes(true, true) == 43);
-static_assert(payloadBounds<SetPassivity>().min == 8 && payloadBounds<SetPassivity>().max == 8);
+static_assert(payloadBounds<SetPassivity>().min == 8);
 
 //! A buffer that holds any one frame.
 using FrameBuffer = std::array<std::uint8_t, kMaxWireFrameBytes>;

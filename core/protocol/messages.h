@@ -4,6 +4,7 @@
 // Plain C++20: no Qt, no OS calls, no allocation (text fields are fixed arrays).
 #pragma once
 
+#include "model/axes.h"
 #include "model/capabilities.h"
 #include "model/cyclequantities.h"
 #include "model/effects.h"
@@ -51,6 +52,8 @@ enum class MessageType : std::uint8_t {
 constexpr std::uint8_t kProtocolVersion = 2;
 constexpr std::size_t kMaxPayload = 240;   //!< largest payload of any frame [bytes]
 constexpr std::uint8_t kNoField = 0xFF;    //!< ACK `field` when no field applies
+//! ACK `field` of OUT_OF_RANGE when the command's `axis` names no knob of the device.
+constexpr std::uint8_t kAxisField = 0xFE;
 constexpr std::size_t kFirmwareBytes = 16; //!< HELLO_REPLY's firmware name [bytes]
 
 enum class AckStatus : std::uint8_t {
@@ -133,6 +136,7 @@ private:
 //   DeviceParams, EffectParams                         their fields in wire order, each an f32
 //   FixedText<N>                                       N bytes, NUL-padded; read up to a NUL
 //   Reserved                                           one byte: 0 when sent, ignored when read
+//   a struct with fields()                             its fields in their order (KnobTelemetry)
 //   std::optional<T> (last; several may follow each other, each sent only after all before it)
 //                                                      T when present; a receiver accepts a
 //                                                      longer payload (up to kMaxPayload) and
@@ -150,6 +154,15 @@ template<typename Text> struct Rest
 };
 template<typename Text> Rest(Text &) -> Rest<Text>;
 
+//! The knob a per-knob command or reply is about (kCapabilityAxes): 0 for knob 1 … axes − 1.
+//! Absent on the wire means knob 1, so a single-knob host and device never send it.
+using AxisIndex = std::optional<std::uint8_t>;
+//! The knob index `axis` names (0 when absent).
+constexpr int knobIndex(const AxisIndex &axis)
+{
+    return axis.value_or(0);
+}
+
 // ---- host → device ----
 struct Hello
 {
@@ -161,6 +174,8 @@ struct GetParams
 {
     static constexpr MessageType kType = MessageType::GetParams;
     static constexpr std::string_view kName = "GET_PARAMS";
+    AxisIndex axis{};
+    static constexpr void fields(auto &m, auto &v) { v(m.axis); }
     friend bool operator==(const GetParams &, const GetParams &) = default;
 };
 struct SetParams
@@ -168,7 +183,12 @@ struct SetParams
     static constexpr MessageType kType = MessageType::SetParams;
     static constexpr std::string_view kName = "SET_PARAMS";
     DeviceParams params; //!< travels as 7 × f32
-    static constexpr void fields(auto &m, auto &v) { v(m.params); }
+    AxisIndex axis{};
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.params);
+        v(m.axis);
+    }
     friend bool operator==(const SetParams &, const SetParams &) = default;
 };
 struct SetStream
@@ -183,8 +203,16 @@ struct SetFeedback
 {
     static constexpr MessageType kType = MessageType::SetFeedback;
     static constexpr std::string_view kName = "SET_FEEDBACK";
-    float tauExt = 0; //!< external feedback torque [N·m]
-    static constexpr void fields(auto &m, auto &v) { v(m.tauExt); }
+    float tauExt = 0; //!< external feedback torque [N·m] (knob 1)
+    //! τ_ext of knobs 2, 3, 4 (kCapabilityAxes) [N·m]; a knob whose value is absent keeps the
+    //! one it had (and its watchdog runs on).
+    std::array<std::optional<float>, kMaxAxes - 1> more{};
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.tauExt);
+        for (auto &tau : m.more)
+            v(tau);
+    }
     friend bool operator==(const SetFeedback &, const SetFeedback &) = default;
 };
 struct SaveParams
@@ -205,6 +233,8 @@ struct Zero
 {
     static constexpr MessageType kType = MessageType::Zero;
     static constexpr std::string_view kName = "ZERO";
+    AxisIndex axis{};
+    static constexpr void fields(auto &m, auto &v) { v(m.axis); }
     friend bool operator==(const Zero &, const Zero &) = default;
 };
 struct SetEffects
@@ -212,7 +242,12 @@ struct SetEffects
     static constexpr MessageType kType = MessageType::SetEffects;
     static constexpr std::string_view kName = "SET_EFFECTS";
     EffectParams effects; //!< travels as 7 × f32
-    static constexpr void fields(auto &m, auto &v) { v(m.effects); }
+    AxisIndex axis{};
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.effects);
+        v(m.axis);
+    }
     friend bool operator==(const SetEffects &, const SetEffects &) = default;
 };
 struct SetPassivity
@@ -220,19 +255,28 @@ struct SetPassivity
     static constexpr MessageType kType = MessageType::SetPassivity;
     static constexpr std::string_view kName = "SET_PASSIVITY";
     PassivityParams passivity; //!< travels as 2 × f32
-    static constexpr void fields(auto &m, auto &v) { v(m.passivity); }
+    AxisIndex axis{};
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.passivity);
+        v(m.axis);
+    }
     friend bool operator==(const SetPassivity &, const SetPassivity &) = default;
 };
 struct GetPassivity
 {
     static constexpr MessageType kType = MessageType::GetPassivity;
     static constexpr std::string_view kName = "GET_PASSIVITY";
+    AxisIndex axis{};
+    static constexpr void fields(auto &m, auto &v) { v(m.axis); }
     friend bool operator==(const GetPassivity &, const GetPassivity &) = default;
 };
 struct GetEffects
 {
     static constexpr MessageType kType = MessageType::GetEffects;
     static constexpr std::string_view kName = "GET_EFFECTS";
+    AxisIndex axis{};
+    static constexpr void fields(auto &m, auto &v) { v(m.axis); }
     friend bool operator==(const GetEffects &, const GetEffects &) = default;
 };
 struct Vibrate
@@ -242,11 +286,13 @@ struct Vibrate
     float amplitude = 0; //!< a [N·m]; 0 stops a running cue
     float frequency = 0; //!< f [Hz]
     float duration = 0;  //!< d [s]
+    AxisIndex axis{};
     static constexpr void fields(auto &m, auto &v)
     {
         v(m.amplitude);
         v(m.frequency);
         v(m.duration);
+        v(m.axis);
     }
     friend bool operator==(const Vibrate &, const Vibrate &) = default;
 };
@@ -262,6 +308,8 @@ struct HelloReply
     std::uint32_t deviceId = 0;
     float tauLimit = 0;                 //!< actuator torque limit [N·m]
     FixedText<kFirmwareBytes> firmware; //!< NUL-padded on the wire
+    //! Knobs on the device, 2…kMaxAxes; sent with kCapabilityAxes only (absent: one knob).
+    std::optional<std::uint8_t> axes{};
     static constexpr void fields(auto &m, auto &v)
     {
         v(m.protocolVersion);
@@ -270,6 +318,7 @@ struct HelloReply
         v(m.deviceId);
         v(m.tauLimit);
         v(m.firmware);
+        v(m.axes);
     }
     friend bool operator==(const HelloReply &, const HelloReply &) = default;
 };
@@ -278,7 +327,12 @@ struct Params
     static constexpr MessageType kType = MessageType::Params;
     static constexpr std::string_view kName = "PARAMS";
     DeviceParams params; //!< travels as 7 × f32
-    static constexpr void fields(auto &m, auto &v) { v(m.params); }
+    AxisIndex axis{}; //!< the request's, when it named one
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.params);
+        v(m.axis);
+    }
     friend bool operator==(const Params &, const Params &) = default;
 };
 struct Effects
@@ -286,7 +340,12 @@ struct Effects
     static constexpr MessageType kType = MessageType::Effects;
     static constexpr std::string_view kName = "EFFECTS";
     EffectParams effects; //!< travels as 7 × f32
-    static constexpr void fields(auto &m, auto &v) { v(m.effects); }
+    AxisIndex axis{}; //!< the request's, when it named one
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.effects);
+        v(m.axis);
+    }
     friend bool operator==(const Effects &, const Effects &) = default;
 };
 struct Passivity
@@ -294,7 +353,12 @@ struct Passivity
     static constexpr MessageType kType = MessageType::Passivity;
     static constexpr std::string_view kName = "PASSIVITY";
     PassivityParams passivity; //!< travels as 2 × f32
-    static constexpr void fields(auto &m, auto &v) { v(m.passivity); }
+    AxisIndex axis{}; //!< the request's, when it named one
+    static constexpr void fields(auto &m, auto &v)
+    {
+        v(m.passivity);
+        v(m.axis);
+    }
     friend bool operator==(const Passivity &, const Passivity &) = default;
 };
 struct Ack
@@ -321,6 +385,28 @@ struct Pong
     static constexpr void fields(auto &m, auto &v) { v(m.token); }
     friend bool operator==(const Pong &, const Pong &) = default;
 };
+//! One further knob's quantities in TELEMETRY: every quantity of the cycle but t_us, in their
+//! order, each an f32 but the flags (33 bytes). All of them: a device with several knobs has
+//! the effects and passivity capabilities.
+struct KnobTelemetry
+{
+    float theta = 0;
+    float omega = 0;
+    float tau = 0;
+    float tau_rec = 0;
+    float tau_ext = 0;
+    std::uint8_t flags = 0;
+    float tau_fx = 0;
+    float tau_pc = 0;
+    float pc_reserve = 0;
+    static constexpr void fields(auto &m, auto &v)
+    {
+        forEachKnobQuantity<KnobTelemetry>([&](const CycleQuantity &, auto member) {
+            v(m.*member);
+        });
+    }
+    friend bool operator==(const KnobTelemetry &, const KnobTelemetry &) = default;
+};
 struct Telemetry
 {
     static constexpr MessageType kType = MessageType::Telemetry;
@@ -340,10 +426,14 @@ struct Telemetry
     //! τ_fx (a 37-byte TELEMETRY).
     std::optional<float> tau_pc;
     std::optional<float> pc_reserve;
-    //! The cycle's quantities in their order (model/cyclequantities.h).
+    //! Knobs 2 … axes of a device with kCapabilityAxes, after R (136 bytes with four knobs).
+    std::array<std::optional<KnobTelemetry>, kMaxAxes - 1> more{};
+    //! The cycle's quantities in their order (model/cyclequantities.h), then the further knobs.
     static constexpr void fields(auto &m, auto &v)
     {
         forEachCycleQuantity<Telemetry>([&](const CycleQuantity &, auto member) { v(m.*member); });
+        for (auto &knob : m.more)
+            v(knob);
     }
     friend bool operator==(const Telemetry &, const Telemetry &) = default;
 };

@@ -70,7 +70,33 @@ Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostU
     const double fx = telemetry.tau_fx ? s.tau_fx : 0.0;
     s.tau_total = std::clamp(s.tau_rec + fx + s.tau_ext, -m_tauLimit, m_tauLimit);
     addReference(s);
+    if (telemetry.more[0]) {
+        // A device with several knobs (kCapabilityAxes): each further knob as it rendered it.
+        auto board = std::make_shared<BoardSample>();
+        for (std::size_t k = 0; k < telemetry.more.size() && telemetry.more[k]; ++k) {
+            const v2::KnobTelemetry &knob = *telemetry.more[k];
+            AxisSample &axis = board->more[k];
+            axis.theta = knob.theta;
+            axis.omega = knob.omega;
+            axis.tau = knob.tau;
+            axis.tau_rec = knob.tau_rec;
+            axis.tau_ext = knob.tau_ext;
+            axis.tau_total =
+                std::clamp(double(knob.tau_rec) + knob.tau_fx + knob.tau_ext, -m_tauLimit,
+                           m_tauLimit);
+            addReference(k, axis);
+            board->axes = int(k) + 2;
+        }
+        s.board = std::move(board);
+    }
     return s;
+}
+
+void SampleBuilder::addReference(std::size_t k, AxisSample &axis)
+{
+    const auto reference = m_moreReferences[k].update(m_referenceUs, m_referenceShape, axis.theta);
+    axis.v_ref = reference.v_ref;
+    axis.p_ref = reference.p_ref;
 }
 
 Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conversion &conversion,
@@ -115,10 +141,7 @@ Sample SampleBuilder::fromLegacy(const legacy::Frame &frame, const legacy::Conve
             axis.tau_rec = recenteringTorque(m_stiffness, axis.theta);
             axis.tau_ext = tauExt[k + 1];
             axis.tau_total = std::clamp(axis.tau_rec + axis.tau_ext, -m_tauLimit, m_tauLimit);
-            const auto reference =
-                m_moreReferences[k].update(m_referenceUs, m_referenceShape, axis.theta);
-            axis.v_ref = reference.v_ref;
-            axis.p_ref = reference.p_ref;
+            addReference(k, axis);
         }
         board->roll = legacy::TiltConversion::rollFromField(frame.tilt->roll);
         board->pitch = legacy::TiltConversion::pitchFromField(frame.tilt->pitch);

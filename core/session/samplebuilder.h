@@ -70,6 +70,8 @@ private:
     //! Advances the session clock for a sample stamped `deviceUs` (device or host clock).
     void advanceClock(quint32 deviceUs, qint64 hostUs);
     void addReference(Sample &sample);
+    //! v_ref and p_ref of further knob k + 2 (board->more[k]), from its own generator.
+    void addReference(std::size_t k, AxisSample &axis);
 
     DeviceParams m_device;
     HostParams m_host;

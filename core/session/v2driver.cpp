@@ -5,6 +5,7 @@
 
 #include <QLoggingCategory>
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -27,6 +28,9 @@ V2Driver::V2Driver(const v2::HelloReply &reply, const ConnectOptions &options, q
     m_info.firmware = printableDeviceText(v2::toQString(reply.firmware));
     m_info.simulated = options.link && options.link->simulated();
     m_info.capabilities = reply.capabilities;
+    // Several knobs only with the capability that carries them (docs/protocol.md § 2).
+    if ((reply.capabilities & v2::kCapabilityAxes) != 0 && reply.axes)
+        m_info.axes = quint8(std::clamp<int>(*reply.axes, 1, kMaxAxes));
     if (reply.protocolVersion != v2::kProtocolVersion) {
         qCWarning(lcV2) << "device reports protocol version" << reply.protocolVersion
                         << "; this host speaks" << v2::kProtocolVersion;
@@ -79,6 +83,21 @@ std::optional<Received> V2Driver::event(const v2::Frame &frame) const
                         said.finite = said.finite && std::isfinite(value);
                     }
                 });
+                // Knob blocks only of the knobs the device announced, each wholly finite.
+                for (std::size_t k = 0; k < said.telemetry.more.size(); ++k) {
+                    std::optional<v2::KnobTelemetry> &knob = said.telemetry.more[k];
+                    if (int(k) + 1 >= m_info.axes) {
+                        knob.reset();
+                        continue;
+                    }
+                    if (!knob)
+                        continue;
+                    forEachKnobQuantity<v2::KnobTelemetry>([&](const CycleQuantity &, auto member) {
+                        if constexpr (std::is_floating_point_v<
+                                          std::remove_cvref_t<decltype((*knob).*member)>>)
+                            said.finite = said.finite && std::isfinite((*knob).*member);
+                    });
+                }
                 return said;
             } else if constexpr (std::is_same_v<T, v2::Ack>) {
                 return message;
@@ -103,8 +122,11 @@ std::optional<Received> V2Driver::event(const v2::Frame &frame) const
 
 void V2Driver::sendFeedback(const AxisTorques &tauExt)
 {
-    // Protocol v2 carries one knob.
-    m_write(v2::encodeFrame(m_feedbackSeq++, v2::SetFeedback{static_cast<float>(tauExt[0])}));
+    // One frame for every knob: knob 1's τ_ext, then the further knobs' (kCapabilityAxes).
+    v2::SetFeedback feedback{static_cast<float>(tauExt[0])};
+    for (std::size_t k = 1; k < std::min<std::size_t>(m_info.axes, tauExt.size()); ++k)
+        feedback.more[k - 1] = static_cast<float>(tauExt[k]);
+    m_write(v2::encodeFrame(m_feedbackSeq++, feedback));
 }
 
 bool V2Driver::sendPing(quint32 token)

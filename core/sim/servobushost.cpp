@@ -14,25 +14,9 @@
 
 namespace hatpic {
 
-QString ServoBusHost::validate(const Config &config)
-{
-    if (config.servos < 1 || config.servos > kMaxAxes)
-        return QStringLiteral("servos: must be a whole number from 1 to %1, got %2.")
-            .arg(kMaxAxes)
-            .arg(config.servos);
-    const int last = int(config.id) + config.servos - 1;
-    if (last > int(fw::sts::kMaxId))
-        return QStringLiteral("servo id: %1 servos from id %2 would end at id %3, beyond %4.")
-            .arg(config.servos)
-            .arg(config.id)
-            .arg(last)
-            .arg(int(fw::sts::kMaxId));
-    return {};
-}
-
 ServoBusHost::ServoBusHost(const Config &config, QObject *parent) : QObject(parent)
 {
-    // A config validate() refuses gets the servos it can have: the caller was told.
+    // A config with more servos than ids gets the servos it can have (the program refuses it).
     const int count =
         std::clamp(config.servos, 1, std::min(kMaxAxes, int(fw::sts::kMaxId) - int(config.id) + 1));
     for (int k = 0; k < count; ++k) {

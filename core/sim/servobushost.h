@@ -45,13 +45,11 @@ public:
         double noise = 0;               //!< std-dev of the load reading's noise [N·m]
         std::uint64_t seed = 1;         //!< noise seed (servo k's: seed + k)
         HandInput hand;                 //!< the operator's hand on the first servo's knob
-        //! Servos on the bus, 1 … kMaxAxes, with ids id … id + servos − 1 (validate()).
+        //! Servos on the bus, 1 … kMaxAxes, with ids id … id + servos − 1 (the programs check
+        //! both: PtyProgram::readServos).
         int servos = 1;
         std::array<HandInput, kMaxAxes - 1> otherHands{}; //!< on servos 2 … (idle by default)
     };
-    //! Empty when `config` can be served, else one sentence: "servos: must be …", "servo id:
-    //! …" (the last id must be a servo's, at most 253).
-    static QString validate(const Config &config);
 
     explicit ServoBusHost(const Config &config, QObject *parent = nullptr);
     ~ServoBusHost() override; //!< stop()

@@ -1,8 +1,8 @@
 // A test image for scripts/check-firmware, never flashed: it wires the device core exactly as
-// firmware/src/main.cpp does (DeviceCore<float> over StsActuator over StsBus, the settings blob,
-// the host link's TxQueue) but with stub ports, so that linking it for a bare-metal ARM target
-// proves that everything the firmware reaches resolves without host-only symbols, and lets the
-// script look for the heap.
+// firmware/src/main.cpp does (DeviceCore<float> over StsActuators over StsBus, four of them as
+// with HATPIC_AXES=4, the settings blob, the host link's TxQueue) but with stub ports, so that
+// linking it for a bare-metal ARM target proves that everything the firmware reaches resolves
+// without host-only symbols, and lets the script look for the heap.
 #include "settingsblob.h"
 #include "txqueue.h"
 
@@ -11,6 +11,7 @@
 #include "firmware/stsbus.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -57,12 +58,14 @@ public:
 class StubStore final : public fw::ParamStore
 {
 public:
-    bool load(fw::StoredSettings &out) override
+    bool load(std::uint8_t axis, fw::StoredSettings &out) override
     {
-        return m_saved && esp32::decodeSettingsBlob(m_blob, out);
+        return axis == 0 && m_saved && esp32::decodeSettingsBlob(m_blob, out);
     }
-    bool save(const fw::StoredSettings &settings) override
+    bool save(std::uint8_t axis, const fw::StoredSettings &settings) override
     {
+        if (axis != 0)
+            return true; // knob 1's blob is the round trip checked here
         m_blob = esp32::encodeSettingsBlob(settings);
         m_saved = true;
         return true;
@@ -82,10 +85,12 @@ int runImage()
     StubClock clock;
     StubStore store;
     fw::StsBus bus(servo);
-    fw::StsActuator<float> actuator(bus, {});
-    fw::DeviceCore<float> core({}, host, actuator, clock, &store);
+    // Four knobs, as the IMU branch's board (HATPIC_AXES=4): ids 1…4 on the one bus.
+    fw::StsActuator<float> knob1(bus, {1}), knob2(bus, {2}), knob3(bus, {3}), knob4(bus, {4});
+    const std::array<fw::Actuator<float> *, 4> knobs{&knob1, &knob2, &knob3, &knob4};
+    fw::DeviceCore<float> core({}, host, knobs, clock, &store);
 
-    store.save(fw::StoredSettings{});
+    store.save(0, fw::StoredSettings{});
     core.start(clock.micros());
     for (int i = 0; i < g_cycles; ++i) {
         core.controlCycle(clock.micros());

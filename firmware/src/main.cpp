@@ -4,8 +4,9 @@
 // Who owns what:
 // - setup() (Arduino's loopTask) opens the ports, loads the parameters and starts the servo,
 //   retrying every second; then it starts the two tasks and loopTask deletes itself.
-// - control task, core 1, high priority: DeviceCore::controlCycle() every 1 ms. Owns Serial2
-//   (the servo bus), the StsBus and the actuator. Subscribed to the task watchdog.
+// - control task, core 1, high priority: DeviceCore::controlCycle() every 1 ms (2 ms with three
+//   or four knobs). Owns Serial2 (the servo bus), the StsBus and the actuators. Subscribed to
+//   the task watchdog.
 // - link task, core 0: DeviceCore::serviceHost() about every 1 ms, then moves queued output
 //   into the UART (UsbHostPort::flush()). Owns Serial (the host link) and the NVS store
 //   (SAVE_PARAMS).
@@ -29,6 +30,13 @@
 #include <charconv>
 #include <cstdint>
 #include <string_view>
+#include <utility>
+
+// Knobs on the board: servos with ids 1 … HATPIC_AXES on the one bus (1: the single-knob
+// HATPIC; 4: the IMU branch's board). Set in platformio.ini (env esp32dev-4axes).
+#ifndef HATPIC_AXES
+#define HATPIC_AXES 1
+#endif
 
 #if __cplusplus != 202002L
 #error "the firmware is C++20: see build_flags/build_unflags in firmware/platformio.ini"
@@ -42,8 +50,13 @@ namespace {
 
 using namespace hatpic;
 
-constexpr double kControlRateHz = 1000; //!< one cycle per FreeRTOS tick [Hz]
-constexpr TickType_t kControlPeriodTicks = 1;
+constexpr int kAxes = HATPIC_AXES;
+static_assert(kAxes >= 1 && kAxes <= kMaxAxes, "HATPIC_AXES: 1 to 4 knobs");
+//! Ticks between cycles: each knob costs a READ and a WRITE on the 1 Mbaud bus, about 0.35 ms
+//! with the servos' replies (docs/firmware.md § Several servos on one bus), so three or four
+//! knobs run every other tick.
+constexpr TickType_t kControlPeriodTicks = kAxes <= 2 ? 1 : 2;
+constexpr double kControlRateHz = 1000.0 / kControlPeriodTicks; //!< [Hz]
 constexpr BaseType_t kControlCore = 1;
 constexpr BaseType_t kLinkCore = 0;          //!< with the Wi-Fi/BT stacks, were they used
 constexpr UBaseType_t kControlPriority = 20; //!< above everything on core 1 but ESP-IDF's IPC (24)
@@ -58,16 +71,16 @@ constexpr std::string_view kFirmwareName = "hatpic-esp32 1.0"; //!< ≤ 16 bytes
 static_assert(kFirmwareName.size() <= v2::kFirmwareBytes);
 static_assert(kControlRateHz >= fw::DeviceCore<float>::kMinControlRate);
 
-//! TELEMETRY frames per second the USB link carries: 35 bytes a frame (with τ_fx: the device
-//! has the effects capability), 10 bits a byte.
+//! TELEMETRY frames per second the USB link carries: 43 bytes a frame with one knob (the
+//! device has the effects and passivity capabilities), 33 more per further knob, 10 bits a byte.
 constexpr std::uint16_t kLinkLimitHz = static_cast<std::uint16_t>(
     esp32::UsbHostPort::kBaud /
-    (10 * v2::telemetryWireBytes(/*withEffects=*/true, /*withPassivity=*/true)));
+    (10 * v2::telemetryWireBytes(/*withEffects=*/true, /*withPassivity=*/true, kAxes)));
 
-fw::StsActuator<float>::Config actuatorConfig()
+fw::StsActuator<float>::Config actuatorConfig(std::uint8_t id)
 {
     fw::StsActuator<float>::Config config;
-    config.id = 1;
+    config.id = id;
     config.centerTick = fw::sts::kDefaultCenterTick; // 1000: docs/firmware.md "First start"
     config.tauLimit = static_cast<float>(fw::sts::kDefaultTauLimit);
     return config;
@@ -88,6 +101,23 @@ fw::DeviceCore<float>::Config coreConfig()
     return config;
 }
 
+//! Knob k's actuator is servo id k + 1.
+template<std::size_t... K>
+std::array<fw::StsActuator<float>, sizeof...(K)> makeActuators(fw::StsBus &bus,
+                                                                std::index_sequence<K...>)
+{
+    return {fw::StsActuator<float>(bus, actuatorConfig(std::uint8_t(K + 1)))...};
+}
+
+template<std::size_t N>
+std::array<fw::Actuator<float> *, N> pointersTo(std::array<fw::StsActuator<float>, N> &actuators)
+{
+    std::array<fw::Actuator<float> *, N> pointers{};
+    for (std::size_t k = 0; k < N; ++k)
+        pointers[k] = &actuators[k];
+    return pointers;
+}
+
 //! Everything the firmware is made of, built once in setup() (static storage, no heap).
 struct Board
 {
@@ -95,9 +125,11 @@ struct Board
     esp32::UsbHostPort host{Serial};
     esp32::UartServoPort servo{Serial2};
     fw::StsBus bus{servo};
-    fw::StsActuator<float> actuator{bus, actuatorConfig()};
+    std::array<fw::StsActuator<float>, kAxes> actuators =
+        makeActuators(bus, std::make_index_sequence<kAxes>{});
+    std::array<fw::Actuator<float> *, kAxes> knobs = pointersTo(actuators);
     esp32::NvsParamStore store;
-    fw::DeviceCore<float> core{coreConfig(), host, actuator, clock, &store};
+    fw::DeviceCore<float> core{coreConfig(), host, knobs, clock, &store};
     std::uint8_t bootLogSeq = 0; //!< seq of setup()'s own LOG frames
 };
 
@@ -112,19 +144,33 @@ void bootLog(Board &board, std::string_view text)
     board.host.drain(kBootLogDrainMs);
 }
 
+//! A LOG's text put together without allocating.
+class LogText
+{
+public:
+    void append(std::string_view part)
+    {
+        for (char c : part)
+            if (m_size < m_text.size())
+                m_text[m_size++] = c;
+    }
+    void append(char c) { append(std::string_view(&c, 1)); }
+    std::string_view view() const { return {m_text.data(), m_size}; }
+
+private:
+    std::array<char, 128> m_text{};
+    std::size_t m_size = 0;
+};
+
 //! "servo ready: model 0x…, parameters …" without allocating.
 void logReady(Board &board)
 {
-    std::array<char, 96> text{};
-    std::size_t size = 0;
-    const auto append = [&](std::string_view part) {
-        for (char c : part)
-            if (size < text.size())
-                text[size++] = c;
-    };
-    append("servo ready: model 0x");
+    LogText text;
+    const auto append = [&](std::string_view part) { text.append(part); };
+    append(kAxes == 1 ? "servo ready: model 0x" : "servos ready: model 0x");
     std::array<char, 8> hex{};
-    const auto end = std::to_chars(hex.begin(), hex.end(), board.actuator.modelNumber(), 16).ptr;
+    const auto end =
+        std::to_chars(hex.begin(), hex.end(), board.actuators[0].modelNumber(), 16).ptr;
     append({hex.data(), static_cast<std::size_t>(end - hex.data())});
     using PowerUp = fw::DeviceCore<float>::PowerUp;
     switch (board.core.powerUpSource()) {
@@ -137,7 +183,7 @@ void logReady(Board &board)
                                                 : ", default parameters");
         break;
     }
-    bootLog(board, {text.data(), size});
+    bootLog(board, text.view());
 }
 
 void configureWatchdog()
@@ -185,8 +231,12 @@ void setup()
     board.servo.begin();
     // The device core reports LOG only for bus faults; a servo missing at boot is reported here.
     while (!board.core.start(board.clock.micros())) {
-        bootLog(board, "servo id 1 does not answer (Serial2, RX 16, TX 17, 1 Mbaud): check its "
-                       "power; retrying every second");
+        LogText text;
+        text.append("servo id ");
+        text.append(char('1' + (board.core.unstartedAxis() > 0 ? board.core.unstartedAxis() : 0)));
+        text.append(" does not answer (Serial2, RX 16, TX 17, 1 Mbaud): check its power; "
+                    "retrying every second");
+        bootLog(board, text.view());
         delay(kBootRetryMs);
     }
     logReady(board);

@@ -2,16 +2,27 @@
 
 #include "settingsblob.h"
 
+#include "model/axes.h"
+
 #include <Preferences.h>
 #include <esp_err.h>
 #include <nvs.h>
 
+#include <array>
 #include <string_view>
 
 namespace hatpic::esp32 {
 
-bool NvsParamStore::load(fw::StoredSettings &out)
+const char *NvsParamStore::key(std::uint8_t axis)
 {
+    static constexpr std::array<const char *, kMaxAxes> kKeys = {kKey, "settings2", "settings3",
+                                                                 "settings4"};
+    return axis < kKeys.size() ? kKeys[axis] : kKey;
+}
+
+bool NvsParamStore::load(std::uint8_t axis, fw::StoredSettings &out)
+{
+    const char *const kKey = key(axis);
     Preferences prefs;
     if (!prefs.begin(kNamespace, /*readOnly=*/true))
         return false; // the namespace does not exist yet
@@ -24,8 +35,9 @@ bool NvsParamStore::load(fw::StoredSettings &out)
     return read && decodeSettingsBlob(std::span<const std::uint8_t>(blob).first(length), out);
 }
 
-bool NvsParamStore::save(const fw::StoredSettings &settings)
+bool NvsParamStore::save(std::uint8_t axis, const fw::StoredSettings &settings)
 {
+    const char *const kKey = key(axis);
     const SettingsBlob blob = encodeSettingsBlob(settings);
     const char *step = "nvs_open";
     nvs_handle_t handle = 0;

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace hatpic::esp32 {
 
@@ -17,14 +18,17 @@ class NvsParamStore final : public fw::ParamStore
 {
 public:
     static constexpr const char *kNamespace = "hatpic";
-    static constexpr const char *kKey = "settings";
+    static constexpr const char *kKey = "settings"; //!< knob 1's blob
+    //! Knob `axis`'s key: kKey for knob 1, "settings2" … "settings4" for the further knobs of
+    //! a board with several (each blob the same layout, settingsblob.h).
+    static const char *key(std::uint8_t axis);
 
     //! False when nothing was saved (first boot, erased NVS), or the blob is of another size or
     //! version or fails its CRC: the device core then uses the spec defaults.
-    bool load(fw::StoredSettings &out) override;
+    bool load(std::uint8_t axis, fw::StoredSettings &out) override;
     //! nvs_open, nvs_set_blob, nvs_commit (what Preferences::putBytes does), so that a failure
     //! can name its step and ESP-IDF's error (failure()).
-    bool save(const fw::StoredSettings &settings) override;
+    bool save(std::uint8_t axis, const fw::StoredSettings &settings) override;
     std::string_view failure() const override { return {m_failure.data(), m_failureSize}; }
 
 private:

@@ -13,6 +13,17 @@ namespace hatpic::test {
 
 constexpr int kStartTimeoutMs = 5000;
 
+#if defined(HATPIC_FW_HOST_PATH) && defined(HATPIC_SERVO_SIM_PATH)
+inline QString hatpicFwHost()
+{
+    return QStringLiteral(HATPIC_FW_HOST_PATH);
+}
+inline QString hatpicServoSim()
+{
+    return QStringLiteral(HATPIC_SERVO_SIM_PATH);
+}
+#endif
+
 //! hatpic-fw-host's --servo-timeout for tests that are not about timing: on a loaded machine
 //! hatpic-servo-sim may answer later than the default 5 ms, and a servo that misses a reply at
 //! start ends hatpic-fw-host.
