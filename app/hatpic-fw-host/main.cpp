@@ -111,12 +111,11 @@ int main(int argc, char *argv[])
         return PtyProgram::kExitFailure;
     for (const QString &warning : host.warnings())
         program.printError(warning);
-    const QString ids = config.servos == 1
-                            ? QStringLiteral("servo id %1").arg(config.servoId)
-                            : QStringLiteral("%1 servos, ids %2–%3")
-                                  .arg(config.servos)
-                                  .arg(config.servoId)
-                                  .arg(config.servoId + config.servos - 1);
+    const QString ids = config.servos == 1 ? QStringLiteral("servo id %1").arg(config.servoId)
+                                           : QStringLiteral("%1 servos, ids %2–%3")
+                                                 .arg(config.servos)
+                                                 .arg(config.servoId)
+                                                 .arg(config.servoId + config.servos - 1);
     std::fprintf(stderr,
                  "hatpic-fw-host: %s on %s at %u baud, center tick %d, timeout %u µs; "
                  "%g Hz control\n",

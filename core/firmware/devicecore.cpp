@@ -30,8 +30,8 @@ DeviceCore<T>::DeviceCore(const Config &config, HostPort &host,
 }
 
 template<typename T>
-DeviceCore<T>::DeviceCore(const Config &config, HostPort &host, Actuator<T> &actuator,
-                          Clock &clock, ParamStore *store)
+DeviceCore<T>::DeviceCore(const Config &config, HostPort &host, Actuator<T> &actuator, Clock &clock,
+                          ParamStore *store)
     : DeviceCore(config, host, std::array<Actuator<T> *, 1>{&actuator}, clock, store)
 {}
 

@@ -99,10 +99,7 @@ public:
     //! The effect block last accepted (in force from the next cycle).
     const EffectParams &effects(int axis = 0) const { return m_knobs[index(axis)].effects; }
     //! The passivity block last accepted (in force from the next cycle).
-    const PassivityParams &passivity(int axis = 0) const
-    {
-        return m_knobs[index(axis)].passivity;
-    }
+    const PassivityParams &passivity(int axis = 0) const { return m_knobs[index(axis)].passivity; }
     std::uint16_t streamRate() const { return m_streamHz; } //!< in force after SET_STREAM [Hz]
     std::uint16_t maxStreamHz() const { return m_maxStreamHz; }
     //! Telemetry frames lost because the host port or the queue to it was full (seq gaps).

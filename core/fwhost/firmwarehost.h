@@ -59,9 +59,9 @@ public:
 
     struct Config
     {
-        QString servoPath;                                     //!< serial device of the bus
-        std::uint32_t servoBaud = 1000000;                     //!< [bit/s]
-        std::uint8_t servoId = 1;                              //!< 0…253 (knob 1's)
+        QString servoPath;                 //!< serial device of the bus
+        std::uint32_t servoBaud = 1000000; //!< [bit/s]
+        std::uint8_t servoId = 1;          //!< 0…253 (knob 1's)
         //! Knobs: servos with ids servoId … servoId + servos − 1 on the one bus (1…kMaxAxes;
         //! 4: the IMU branch's board), each run by its own controller.
         int servos = 1;

@@ -49,7 +49,7 @@ struct AnyField
 };
 //! A group of fields inside a message (KnobTelemetry): its own fields(), in wire order.
 template<typename F>
-concept FieldStruct = !WireMessage<F> && requires(F &m, AnyField &v)
+concept FieldStruct = !WireMessage<F> && requires(F & m, AnyField &v)
 {
     F::fields(m, v);
 };
@@ -131,8 +131,7 @@ constexpr std::size_t telemetryBytes(int axes)
 //! A TELEMETRY frame's length on the wire (COBS adds at most one byte here, plus the
 //! delimiter): 31 bytes, 35 with τ_fx, 43 with τ_pc and R too, and 33 more for each further
 //! knob of a device with several (with both capabilities) [bytes].
-constexpr std::size_t telemetryWireBytes(bool withEffects, bool withPassivity = false,
-                                         int axes = 1)
+constexpr std::size_t telemetryWireBytes(bool withEffects, bool withPassivity = false, int axes = 1)
 {
     const std::size_t payload = axes > 1        ? telemetryBytes(axes)
                                 : withPassivity ? kTelemetryPcBytes

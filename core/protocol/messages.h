@@ -50,8 +50,8 @@ enum class MessageType : std::uint8_t {
 };
 
 constexpr std::uint8_t kProtocolVersion = 2;
-constexpr std::size_t kMaxPayload = 240;   //!< largest payload of any frame [bytes]
-constexpr std::uint8_t kNoField = 0xFF;    //!< ACK `field` when no field applies
+constexpr std::size_t kMaxPayload = 240; //!< largest payload of any frame [bytes]
+constexpr std::uint8_t kNoField = 0xFF;  //!< ACK `field` when no field applies
 //! ACK `field` of OUT_OF_RANGE when the command's `axis` names no knob of the device.
 constexpr std::uint8_t kAxisField = 0xFE;
 constexpr std::size_t kFirmwareBytes = 16; //!< HELLO_REPLY's firmware name [bytes]
@@ -204,8 +204,8 @@ struct SetFeedback
     static constexpr MessageType kType = MessageType::SetFeedback;
     static constexpr std::string_view kName = "SET_FEEDBACK";
     float tauExt = 0; //!< external feedback torque [N·m] (knob 1)
-    //! τ_ext of knobs 2, 3, 4 (kCapabilityAxes) [N·m]; a knob whose value is absent keeps the
-    //! one it had (and its watchdog runs on).
+    //! τ_ext of knobs 2, 3, 4 (kCapabilityAxes) [N·m]. Sent in order, so only the last ones
+    //! can be absent; a knob without a value keeps the one it had (and its watchdog runs on).
     std::array<std::optional<float>, kMaxAxes - 1> more{};
     static constexpr void fields(auto &m, auto &v)
     {
@@ -327,7 +327,7 @@ struct Params
     static constexpr MessageType kType = MessageType::Params;
     static constexpr std::string_view kName = "PARAMS";
     DeviceParams params; //!< travels as 7 × f32
-    AxisIndex axis{}; //!< the request's, when it named one
+    AxisIndex axis{};    //!< the request's, when it named one
     static constexpr void fields(auto &m, auto &v)
     {
         v(m.params);
@@ -340,7 +340,7 @@ struct Effects
     static constexpr MessageType kType = MessageType::Effects;
     static constexpr std::string_view kName = "EFFECTS";
     EffectParams effects; //!< travels as 7 × f32
-    AxisIndex axis{}; //!< the request's, when it named one
+    AxisIndex axis{};     //!< the request's, when it named one
     static constexpr void fields(auto &m, auto &v)
     {
         v(m.effects);
@@ -353,7 +353,7 @@ struct Passivity
     static constexpr MessageType kType = MessageType::Passivity;
     static constexpr std::string_view kName = "PASSIVITY";
     PassivityParams passivity; //!< travels as 2 × f32
-    AxisIndex axis{}; //!< the request's, when it named one
+    AxisIndex axis{};          //!< the request's, when it named one
     static constexpr void fields(auto &m, auto &v)
     {
         v(m.passivity);
@@ -401,9 +401,8 @@ struct KnobTelemetry
     float pc_reserve = 0;
     static constexpr void fields(auto &m, auto &v)
     {
-        forEachKnobQuantity<KnobTelemetry>([&](const CycleQuantity &, auto member) {
-            v(m.*member);
-        });
+        forEachKnobQuantity<KnobTelemetry>(
+            [&](const CycleQuantity &, auto member) { v(m.*member); });
     }
     friend bool operator==(const KnobTelemetry &, const KnobTelemetry &) = default;
 };

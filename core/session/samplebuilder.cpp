@@ -81,9 +81,8 @@ Sample SampleBuilder::fromTelemetry(const v2::Telemetry &telemetry, qint64 hostU
             axis.tau = knob.tau;
             axis.tau_rec = knob.tau_rec;
             axis.tau_ext = knob.tau_ext;
-            axis.tau_total =
-                std::clamp(double(knob.tau_rec) + knob.tau_fx + knob.tau_ext, -m_tauLimit,
-                           m_tauLimit);
+            axis.tau_total = std::clamp(double(knob.tau_rec) + knob.tau_fx + knob.tau_ext,
+                                        -m_tauLimit, m_tauLimit);
             addReference(k, axis);
             board->axes = int(k) + 2;
         }

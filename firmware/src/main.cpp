@@ -104,7 +104,7 @@ fw::DeviceCore<float>::Config coreConfig()
 //! Knob k's actuator is servo id k + 1.
 template<std::size_t... K>
 std::array<fw::StsActuator<float>, sizeof...(K)> makeActuators(fw::StsBus &bus,
-                                                                std::index_sequence<K...>)
+                                                               std::index_sequence<K...>)
 {
     return {fw::StsActuator<float>(bus, actuatorConfig(std::uint8_t(K + 1)))...};
 }

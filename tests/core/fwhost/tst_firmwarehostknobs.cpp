@@ -165,7 +165,8 @@ void TestFirmwareHostKnobs::everyKnobIsSavedAndRecorded()
     DeviceParams stiff = asDevice(DeviceParams{});
     stiff.K_max = 0.5;
     {
-        PtyProgram host(hatpicFwHost(), fourServos(servo.path()) + QStringList{u"--state"_s, state});
+        PtyProgram host(hatpicFwHost(),
+                        fourServos(servo.path()) + QStringList{u"--state"_s, state});
         QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
         V2Client client(host.path());
         QVERIFY(client.open());
@@ -174,8 +175,8 @@ void TestFirmwareHostKnobs::everyKnobIsSavedAndRecorded()
         QTRY_VERIFY_WITH_TIMEOUT(client.ack(save).has_value(), kTimeoutMs);
         QCOMPARE(client.ack(set)->status, v2::AckStatus::Ok);
         QCOMPARE(client.ack(save)->status, v2::AckStatus::Ok);
-        for (const char *file : {"state.json", "state.knob2.json", "state.knob3.json",
-                                 "state.knob4.json"})
+        for (const char *file :
+             {"state.json", "state.knob2.json", "state.knob3.json", "state.knob4.json"})
             QVERIFY2(QFileInfo::exists(dir.filePath(QString::fromLatin1(file))), file);
         QVERIFY(host.terminate());
         QCOMPARE(host.process().exitCode(), 0);
@@ -200,8 +201,8 @@ void TestFirmwareHostKnobs::everyKnobIsSavedAndRecorded()
 
     const QString csv = dir.filePath(u"four.csv"_s);
     QProcess stream;
-    stream.start(QStringLiteral(HATPICCTL_PATH), {u"stream"_s, u"--port"_s, host.path(),
-                                                  u"--duration"_s, u"1"_s, u"--csv"_s, csv});
+    stream.start(QStringLiteral(HATPICCTL_PATH),
+                 {u"stream"_s, u"--port"_s, host.path(), u"--duration"_s, u"1"_s, u"--csv"_s, csv});
     QVERIFY(stream.waitForFinished(15000));
     QVERIFY2(stream.exitCode() == 0, qPrintable(QString::fromUtf8(stream.readAllStandardError())));
     QFile file(csv);

@@ -203,6 +203,46 @@ private Q_SLOTS:
         HelloReply capable;
         capable.capabilities = kCapabilityEffects;
         QTest::newRow("HELLO_REPLY with effects") << 27 << Message(capable) << 28;
+        // Several knobs (docs/protocol.md § 2): every addition a trailing optional field.
+        HelloReply four;
+        four.capabilities = kCapabilityEffects | kCapabilityPassivity | kCapabilityAxes;
+        four.axes = 4;
+        QTest::newRow("HELLO_REPLY with four knobs") << 32 << Message(four) << 29;
+        QTest::newRow("SET_PARAMS knob 3")
+            << 33 << Message(SetParams{asFloats(DeviceParams{}), 2}) << 29;
+        QTest::newRow("GET_PARAMS knob 2") << 34 << Message(GetParams{1}) << 1;
+        QTest::newRow("PARAMS knob 2") << 35 << Message(Params{asFloats(DeviceParams{}), 1}) << 29;
+        QTest::newRow("ZERO knob 4") << 36 << Message(Zero{3}) << 1;
+        QTest::newRow("SET_EFFECTS knob 2") << 37 << Message(SetEffects{fx, 1}) << 29;
+        QTest::newRow("GET_EFFECTS knob 2") << 38 << Message(GetEffects{1}) << 1;
+        QTest::newRow("EFFECTS knob 2") << 39 << Message(Effects{fx, 1}) << 29;
+        QTest::newRow("VIBRATE knob 3") << 40 << Message(Vibrate{0.1f, 80.0f, 0.25f, 2}) << 13;
+        QTest::newRow("SET_PASSIVITY knob 2") << 41 << Message(SetPassivity{pc, 1}) << 9;
+        QTest::newRow("GET_PASSIVITY knob 2") << 42 << Message(GetPassivity{1}) << 1;
+        QTest::newRow("PASSIVITY knob 2") << 43 << Message(Passivity{pc, 1}) << 9;
+        SetFeedback every{0.01f};
+        every.more = {-0.02f, 0.0f, 0.03f};
+        QTest::newRow("SET_FEEDBACK four knobs") << 44 << Message(every) << 16;
+        SetFeedback two{0.01f};
+        two.more[0] = 0.02f;
+        QTest::newRow("SET_FEEDBACK two knobs") << 45 << Message(two) << 8;
+        Telemetry knobs = t;
+        for (std::size_t k = 0; k < knobs.more.size(); ++k) {
+            KnobTelemetry knob;
+            knob.theta = 0.1f * float(k + 2);
+            knob.omega = -0.5f;
+            knob.tau = 0.002f;
+            knob.tau_rec = -0.01f;
+            knob.tau_ext = 0.02f;
+            knob.flags = kFlagNotch | kFlagFeedbackStale;
+            knob.tau_fx = 0.001f;
+            knob.tau_pc = -0.004f;
+            knob.pc_reserve = 0.01f;
+            knobs.more[k] = knob;
+        }
+        QTest::newRow("TELEMETRY four knobs") << 46 << Message(knobs) << 136;
+        knobs.more[2].reset();
+        QTest::newRow("TELEMETRY three knobs") << 47 << Message(knobs) << 103;
         QTest::newRow("LOG one byte") << 18 << Message(Log{fixedText<kMaxPayload>(u"x"_s)}) << 1;
         QTest::newRow("LOG 240 bytes")
             << 19 << Message(Log{fixedText<kMaxPayload>(QString(240, u'L'))}) << 240;
