@@ -101,12 +101,18 @@ std::optional<Received> V2Driver::event(const v2::Frame &frame) const
                 return said;
             } else if constexpr (std::is_same_v<T, v2::Ack>) {
                 return message;
-            } else if constexpr (std::is_same_v<T, v2::Params>) {
-                return DeviceTuning{message.params, std::nullopt, std::nullopt};
-            } else if constexpr (std::is_same_v<T, v2::Effects>) {
-                return DeviceTuning{std::nullopt, message.effects, std::nullopt};
-            } else if constexpr (std::is_same_v<T, v2::Passivity>) {
-                return DeviceTuning{std::nullopt, std::nullopt, message.passivity};
+            } else if constexpr (std::is_same_v<T, v2::Params> || std::is_same_v<T, v2::Effects> ||
+                                 std::is_same_v<T, v2::Passivity>) {
+                // PARAMS, EFFECTS, PASSIVITY: the session's tuning is knob 1's; a block that
+                // names another knob answers someone else's request and is not ours.
+                if (v2::knobIndex(message.axis) != 0)
+                    return std::nullopt;
+                if constexpr (std::is_same_v<T, v2::Params>)
+                    return DeviceTuning{message.params, std::nullopt, std::nullopt};
+                else if constexpr (std::is_same_v<T, v2::Effects>)
+                    return DeviceTuning{std::nullopt, message.effects, std::nullopt};
+                else
+                    return DeviceTuning{std::nullopt, std::nullopt, message.passivity};
             } else if constexpr (std::is_same_v<T, v2::Pong>) {
                 return received::Pong{message.token};
             } else if constexpr (std::is_same_v<T, v2::Log>) {
