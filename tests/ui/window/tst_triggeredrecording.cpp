@@ -108,7 +108,9 @@ void TestTriggeredRecording::pushTriggerWithSpanAndLength()
              qPrintable(trigger.text));
     const double before = trigger.t_s - rec.samples.constFirst().t_s;
     const double after = rec.samples.constLast().t_s - trigger.t_s;
-    QVERIFY2(before > 0.2 && before <= 0.3 + 1e-9, qPrintable(QString::number(before)));
+    // The span ends at the trigger; the event is written on the first sample after it, which a
+    // loaded machine may deliver a frame or two late (1 kHz: a few ms).
+    QVERIFY2(before > 0.2 && before <= 0.3 + 0.005, qPrintable(QString::number(before)));
     QVERIFY2(after > 0.4 && after <= 0.5 + 1e-9, qPrintable(QString::number(after)));
 }
 
