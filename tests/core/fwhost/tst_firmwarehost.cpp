@@ -27,15 +27,6 @@ constexpr int kSettleMs = 1500;          //!< from a change to the window [ms]
 constexpr int kWindowMs = 500;           //!< window the rest point is averaged over [ms]
 constexpr int kTimeoutMs = 5000;
 
-QString fwHost()
-{
-    return QStringLiteral(HATPIC_FW_HOST_PATH);
-}
-QString servoSim()
-{
-    return QStringLiteral(HATPIC_SERVO_SIM_PATH);
-}
-
 DeviceParams asDevice(DeviceParams p) // the device keeps 7 × f32
 {
     for (int i = 0; i < DeviceParams::kFieldCount; ++i)
@@ -119,9 +110,10 @@ private Q_SLOTS:
 
 void TestFirmwareHost::closedLoopThroughPtys()
 {
-    PtyProgram servo(servoSim(), {u"--hand"_s, u"const:0.02"_s});
+    PtyProgram servo(hatpicServoSim(), {u"--hand"_s, u"const:0.02"_s});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
+    PtyProgram host(hatpicFwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     V2Client client(host.path());
     QVERIFY2(client.open(), qPrintable(client.errorString()));
@@ -191,12 +183,12 @@ void TestFirmwareHost::savedParamsSurviveRestart()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString state = dir.filePath(u"state.json"_s);
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
     DeviceParams stiff = asDevice(DeviceParams{});
     stiff.K_max = 0.5;
     {
-        PtyProgram host(fwHost(),
+        PtyProgram host(hatpicFwHost(),
                         QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
                             patientBus());
         QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
@@ -211,7 +203,7 @@ void TestFirmwareHost::savedParamsSurviveRestart()
         QVERIFY(host.terminate());
         QCOMPARE(host.process().exitCode(), 0);
     }
-    PtyProgram host(fwHost(),
+    PtyProgram host(hatpicFwHost(),
                     QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
                         patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
@@ -227,7 +219,7 @@ void TestFirmwareHost::savedParamsSurviveRestart()
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
     file.write("{ not json");
     file.close();
-    PtyProgram broken(fwHost(),
+    PtyProgram broken(hatpicFwHost(),
                       QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
                           patientBus());
     QVERIFY2(!broken.path().isEmpty(), qPrintable(broken.errors()));
@@ -241,9 +233,10 @@ void TestFirmwareHost::savedParamsSurviveRestart()
 
 void TestFirmwareHost::hatpicctlInfo()
 {
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
+    PtyProgram host(hatpicFwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QProcess ctl;
     ctl.start(QStringLiteral(HATPICCTL_PATH), {u"info"_s, u"--port"_s, host.path()});
@@ -256,12 +249,13 @@ void TestFirmwareHost::hatpicctlInfo()
 
 void TestFirmwareHost::faultsAreInjectedAndCounted()
 {
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), QStringList{u"--servo"_s, servo.path(), u"--quiet"_s, u"--faults"_s,
-                                          u"drop=0.05,corrupt=0.02,dup=0.02,hdrop=0.2"_s,
-                                          u"--seed"_s, u"3"_s} +
-                                  patientBus());
+    PtyProgram host(hatpicFwHost(),
+                    QStringList{u"--servo"_s, servo.path(), u"--quiet"_s, u"--faults"_s,
+                                u"drop=0.05,corrupt=0.02,dup=0.02,hdrop=0.2"_s, u"--seed"_s,
+                                u"3"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     // A lost SET_PARAMS (or its lost ACK) is retried: the push succeeds all the same. The
     // push is six wire steps (parameters, effects, passivity, each read back), each of four
@@ -314,9 +308,9 @@ void TestFirmwareHost::sigtermDisablesTorque()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString link = dir.filePath(u"hatpic"_s);
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(),
+    PtyProgram host(hatpicFwHost(),
                     QStringList{u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s} +
                         patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
@@ -361,11 +355,11 @@ void TestFirmwareHost::everyEndingSignalDisablesTorque()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString link = dir.filePath(u"hatpic"_s);
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
     // No core file from the faults sent on purpose.
     PtyProgram host(u"/bin/sh"_s,
-                    QStringList{u"-c"_s, u"ulimit -c 0; exec \"$0\" \"$@\""_s, fwHost(),
+                    QStringList{u"-c"_s, u"ulimit -c 0; exec \"$0\" \"$@\""_s, hatpicFwHost(),
                                 u"--servo"_s, servo.path(), u"--link"_s, link, u"--quiet"_s} +
                         patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
@@ -389,7 +383,7 @@ void TestFirmwareHost::silentServoFails()
     PseudoTerminal nobody; // a "serial port" with no servo behind it
     QCOMPARE(nobody.open(), QString());
     QProcess host;
-    host.start(fwHost(), {u"--servo"_s, nobody.slavePath()});
+    host.start(hatpicFwHost(), {u"--servo"_s, nobody.slavePath()});
     QVERIFY(host.waitForFinished(kTimeoutMs));
     QCOMPARE(host.exitCode(), 1);
     QVERIFY(host.readAllStandardOutput().isEmpty());
@@ -419,11 +413,11 @@ qint64 writeCalls(qint64 pid)
 // program comes up (issue 27: one unanswered ping ended it).
 void TestFirmwareHost::servoAnsweringLateAtStartIsWaitedFor()
 {
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
     const auto servoPid = pid_t(servo.process().processId());
     QCOMPARE(::kill(servoPid, SIGSTOP), 0);
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    PtyProgram host(hatpicFwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
     QVERIFY(host.process().waitForStarted(kTimeoutMs));
     const qint64 hostPid = host.process().processId();
     // Its first write is the ping (nothing is printed before the servo is up).
@@ -455,7 +449,7 @@ void TestFirmwareHost::wronglyAnsweringServoFails()
         }
     });
     QProcess host;
-    host.start(fwHost(), {u"--servo"_s, bus.slavePath(), u"--servo-timeout"_s, u"100"_s});
+    host.start(hatpicFwHost(), {u"--servo"_s, bus.slavePath(), u"--servo-timeout"_s, u"100"_s});
     QTRY_VERIFY_WITH_TIMEOUT(host.state() == QProcess::NotRunning, kTimeoutMs);
     QCOMPARE(host.exitCode(), 1);
     const QString error = QString::fromUtf8(host.readAllStandardError()).trimmed();
@@ -469,9 +463,9 @@ void TestFirmwareHost::wronglyAnsweringServoFails()
 // experiment with the reason instead of printing figures (issue 21).
 void TestFirmwareHost::experimentFailsWhenTheTorqueGoesOff()
 {
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
+    PtyProgram host(hatpicFwHost(), {u"--servo"_s, servo.path(), u"--quiet"_s});
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     QProcess ctl;
     ctl.start(QStringLiteral(HATPICCTL_PATH),
@@ -499,32 +493,33 @@ void TestFirmwareHost::badOptions_data()
     QTest::addColumn<QString>("program");
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<QString>("says");
-    QTest::newRow("fw-host without --servo") << fwHost() << QStringList{} << u"--servo"_s;
+    QTest::newRow("fw-host without --servo") << hatpicFwHost() << QStringList{} << u"--servo"_s;
     QTest::newRow("fw-host rate 0")
-        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--rate"_s, u"0"_s} << u"control rate"_s;
+        << hatpicFwHost() << QStringList{u"--servo"_s, u"x"_s, u"--rate"_s, u"0"_s}
+        << u"control rate"_s;
     // Below 10 Hz a cycle's τ_ext would stay in force past the 200 ms feedback watchdog.
     QTest::newRow("fw-host rate 2")
-        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--rate"_s, u"2"_s}
+        << hatpicFwHost() << QStringList{u"--servo"_s, u"x"_s, u"--rate"_s, u"2"_s}
         << u"from 10 to 20000 (a period of at most half the 200 ms feedback watchdog)"_s;
     QTest::newRow("fw-host id 254")
-        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-id"_s, u"254"_s}
+        << hatpicFwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-id"_s, u"254"_s}
         << u"servo id"_s;
     QTest::newRow("fw-host timeout")
-        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-timeout"_s, u"0"_s}
+        << hatpicFwHost() << QStringList{u"--servo"_s, u"x"_s, u"--servo-timeout"_s, u"0"_s}
         << u"timeout"_s;
-    QTest::newRow("fw-host unknown") << fwHost() << QStringList{u"--bogus"_s} << u"bogus"_s;
+    QTest::newRow("fw-host unknown") << hatpicFwHost() << QStringList{u"--bogus"_s} << u"bogus"_s;
     QTest::newRow("fw-host faults")
-        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--faults"_s, u"drop=2"_s}
+        << hatpicFwHost() << QStringList{u"--servo"_s, u"x"_s, u"--faults"_s, u"drop=2"_s}
         << u"drop is a probability from 0 to 1, got \"2\""_s;
     QTest::newRow("servo-sim hand")
-        << servoSim() << QStringList{u"--hand"_s, u"push"_s} << u"push"_s;
+        << hatpicServoSim() << QStringList{u"--hand"_s, u"push"_s} << u"push"_s;
     QTest::newRow("servo-sim center")
-        << servoSim() << QStringList{u"--center-tick"_s, u"4096"_s} << u"center tick"_s;
+        << hatpicServoSim() << QStringList{u"--center-tick"_s, u"4096"_s} << u"center tick"_s;
     // A folder as the state file is refused before anything opens it, as hatpic-sim does
     // (a pipe would block open()).
     static QTemporaryDir dir;
     QTest::newRow("fw-host state is a folder")
-        << fwHost() << QStringList{u"--servo"_s, u"x"_s, u"--state"_s, dir.path()}
+        << hatpicFwHost() << QStringList{u"--servo"_s, u"x"_s, u"--state"_s, dir.path()}
         << u"not a regular file"_s;
 }
 

@@ -4,6 +4,7 @@
 // feedback; SAVE_PARAMS keeps every knob's block; the session records every knob.
 #include "fwhosttest.h"
 
+#include "model/params.h"
 #include "model/stiffness.h"
 
 #include <QFile>
@@ -60,13 +61,6 @@ double restPoint(const DeviceParams &p, double push)
     return 0.5 * (lo + hi);
 }
 
-DeviceParams asDevice(DeviceParams p) // the device keeps 7 × f32
-{
-    for (int i = 0; i < DeviceParams::kFieldCount; ++i)
-        p.setField(i, double(float(p.field(i))));
-    return p;
-}
-
 } // namespace
 
 class TestFirmwareHostKnobs : public QObject
@@ -97,7 +91,7 @@ void TestFirmwareHostKnobs::fourKnobsEachTheirOwn()
     QCOMPARE(hello.axes, std::optional<std::uint8_t>(4));
 
     client.send(v2::SetStream{1000});
-    const DeviceParams defaults = asDevice(DeviceParams{});
+    const DeviceParams defaults = roundedToFloat(DeviceParams{});
     // The servo reads each hand on its load grid (0.44 mN·m): 0.02 N·m reads 45 quanta.
     const double push = std::round(0.02 / 0.44e-3) * 0.44e-3;
     std::array<double, 4> rest = settledThetas(client);
@@ -117,7 +111,7 @@ void TestFirmwareHostKnobs::fourKnobsEachTheirOwn()
     QCOMPARE(client.ack(set)->status, v2::AckStatus::Ok);
     rest = settledThetas(client);
     qInfo("knob 2 with K_max 0.5: %.5f rad (model %.5f)", rest[1], restPoint(stiff, -push));
-    QVERIFY2(std::abs(rest[1] - restPoint(asDevice(stiff), -push)) < 2 * kTick,
+    QVERIFY2(std::abs(rest[1] - restPoint(roundedToFloat(stiff), -push)) < 2 * kTick,
              qPrintable(QString::number(rest[1])));
     QVERIFY2(std::abs(rest[0] - restPoint(defaults, push)) < 2 * kTick,
              qPrintable(QString::number(rest[0])));
@@ -126,7 +120,7 @@ void TestFirmwareHostKnobs::fourKnobsEachTheirOwn()
     client.send(v2::GetParams{1});
     client.send(v2::GetParams{});
     QTRY_COMPARE_WITH_TIMEOUT(client.all<v2::Params>().size(), 2, kTimeoutMs);
-    QCOMPARE(client.all<v2::Params>().at(0).params, asDevice(stiff));
+    QCOMPARE(client.all<v2::Params>().at(0).params, roundedToFloat(stiff));
     QCOMPARE(client.all<v2::Params>().at(0).axis, std::optional<std::uint8_t>(1));
     QCOMPARE(client.all<v2::Params>().at(1).params, defaults);
     QCOMPARE(client.all<v2::Params>().at(1).axis, std::nullopt);
@@ -162,7 +156,7 @@ void TestFirmwareHostKnobs::everyKnobIsSavedAndRecorded()
     const QString state = dir.filePath(u"state.json"_s);
     PtyProgram servo(hatpicServoSim(), {u"--servos"_s, u"4"_s, u"--hand-3"_s, u"const:0.02"_s});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    DeviceParams stiff = asDevice(DeviceParams{});
+    DeviceParams stiff = roundedToFloat(DeviceParams{});
     stiff.K_max = 0.5;
     {
         PtyProgram host(hatpicFwHost(),

@@ -19,15 +19,6 @@ namespace {
 
 constexpr int kTimeoutMs = 5000;
 
-QString fwHost()
-{
-    return QStringLiteral(HATPIC_FW_HOST_PATH);
-}
-QString servoSim()
-{
-    return QStringLiteral(HATPIC_SERVO_SIM_PATH);
-}
-
 //! hatpicctl ARGUMENTS; its exit code, stderr on failure in `error`.
 int hatpicctl(const QStringList &arguments, QString &error)
 {
@@ -73,9 +64,9 @@ void TestFirmwareHostState::profileKeepsWhatSaveDoesNotOwn()
     QCOMPARE(writeProfile(knob, file), QString());
     const QByteArray before = readAll(file);
 
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(),
+    PtyProgram host(hatpicFwHost(),
                     QStringList{u"--servo"_s, servo.path(), u"--state"_s, file, u"--quiet"_s} +
                         patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
@@ -105,13 +96,14 @@ void TestFirmwareHostState::fileSizeLimitFailsTheSaveNotTheProgram()
     QVERIFY(dir.isValid());
     const QString state = dir.filePath(u"state.json"_s);
     const QString link = dir.filePath(u"hatpic"_s);
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
     // ulimit -f 0: any write to a file passes the limit (SIGXFSZ kills by default).
-    PtyProgram host(u"/bin/sh"_s, QStringList{u"-c"_s, u"ulimit -f 0; exec \"$0\" \"$@\""_s,
-                                              fwHost(), u"--servo"_s, servo.path(), u"--state"_s,
-                                              state, u"--link"_s, link, u"--quiet"_s} +
-                                      patientBus());
+    PtyProgram host(u"/bin/sh"_s,
+                    QStringList{u"-c"_s, u"ulimit -f 0; exec \"$0\" \"$@\""_s, hatpicFwHost(),
+                                u"--servo"_s, servo.path(), u"--state"_s, state, u"--link"_s, link,
+                                u"--quiet"_s} +
+                        patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     V2Client client(link);
     QVERIFY2(client.open(), qPrintable(client.errorString()));
@@ -138,9 +130,9 @@ void TestFirmwareHostState::saveFailureSaysWhy()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString state = dir.filePath(u"gone/state.json"_s);
-    PtyProgram servo(servoSim(), {});
+    PtyProgram servo(hatpicServoSim(), {});
     QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
-    PtyProgram host(fwHost(),
+    PtyProgram host(hatpicFwHost(),
                     QStringList{u"--servo"_s, servo.path(), u"--state"_s, state, u"--quiet"_s} +
                         patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
