@@ -24,6 +24,7 @@
 #include <QProcess>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <memory>
@@ -480,14 +481,14 @@ void TestTeleopLoop::passivityControllerHoldsDelayedContact_data()
     QTest::addColumn<double>("delay");
     QTest::addColumn<bool>("controllerOn");
     QTest::addColumn<double>("seconds");
-    // On: settled within the run (docs/teleop.md's table: well under 10 s after contact).
-    // Off: still swinging at its end.
-    QTest::newRow("150 ms, controller on") << 2 << 0.15 << true << 16.0;
+    // On: at rest within `seconds` of contact (passivity.md: 20 s; docs/teleop.md's table:
+    // well under 10 s). Off: still swinging `seconds` after the start.
+    QTest::newRow("150 ms, controller on") << 2 << 0.15 << true << 14.0;
     QTest::newRow("150 ms, controller off") << 2 << 0.15 << false << 10.0;
     QTest::newRow("300 ms, controller on") << 2 << 0.3 << true << 20.0;
     QTest::newRow("300 ms, controller off") << 2 << 0.3 << false << 10.0;
 #ifdef HATPIC_HAVE_ROS1_TESTS
-    QTest::newRow("ROS 1, 200 ms, controller on") << 1 << 0.2 << true << 18.0;
+    QTest::newRow("ROS 1, 200 ms, controller on") << 1 << 0.2 << true << 16.0;
 #endif
 }
 
@@ -507,20 +508,56 @@ void TestTeleopLoop::passivityControllerHoldsDelayedContact()
     const QString why = startLoop(loop, version, u"const:%1"_s.arg(kHand),
                                   {u"--delay"_s, QString::number(delay)}, !controllerOn);
     QVERIFY2(why.isEmpty(), qPrintable(why));
-    pause(seconds);
+    double contact = 0; // the first τ_ext ≠ 0 to arrive [s, monotonic()]
+    if (controllerOn) {
+        const double started = monotonic();
+        while (monotonic() - started < 10) {
+            const auto tau = loop.watcher.points(&Watcher::m_tau);
+            const auto touched = std::find_if(tau.begin(), tau.end(),
+                                              [](const Watcher::Point &p) { return p.value != 0; });
+            if (touched != tau.end()) {
+                contact = touched->t;
+                break;
+            }
+            pause(0.05);
+        }
+        QVERIFY2(contact > 0, "the knob never reached the wall");
+        pause(contact + seconds - monotonic());
+    } else {
+        pause(seconds);
+    }
     const double now = monotonic();
     const Stats theta = statsOf(loop.watcher.window(&Watcher::m_theta, now - 2, now));
     const Stats tau = statsOf(loop.watcher.window(&Watcher::m_tau, now - 2, now));
     const Stats x = statsOf(loop.watcher.window(&Watcher::m_x, now - 2, now));
-    const QString report = describe("theta", theta) + u"; "_s + describe("tau_ext", tau) + u"; "_s +
-                           describe("x", x) + u"\nrobot "_s +
-                           QString::fromUtf8(loop.robot->output());
+    QString report = describe("theta", theta) + u"; "_s + describe("tau_ext", tau) + u"; "_s +
+                     describe("x", x) + u"\nrobot "_s + QString::fromUtf8(loop.robot->output());
     QVERIFY2(theta.n > 50 && tau.n > 20 && x.n > 50, qPrintable(report));
     if (controllerOn) {
-        // passivity.md's rest: θ 0.0625 ± 0.004 rad and still, τ_ext −0.025 ± 0.003 N·m,
-        // x 0.05625 ± 0.002 m.
+        // passivity.md's rest, within `seconds` of contact: θ 0.0625 ± 0.004 rad with a
+        // peak-to-peak of at most 0.003 rad over 2 s (one encoder count). The first 2-s window
+        // that holds it is when the loop came to rest.
+        const std::vector<Watcher::Point> thetas = loop.watcher.points(&Watcher::m_theta);
+        double restedAt = 0;
+        for (auto end = thetas.begin(); end != thetas.end() && !restedAt; ++end) {
+            if (end->t < contact + 2)
+                continue;
+            std::vector<double> window;
+            for (auto p = thetas.begin(); p <= end; ++p) {
+                if (p->t >= end->t - 2)
+                    window.push_back(p->value);
+            }
+            const Stats w = statsOf(window);
+            if (w.n > 50 && w.spread() <= 0.003 + 1e-9 && std::abs(w.mean - rest->theta) < 0.004)
+                restedAt = end->t;
+        }
+        report += u"\ncame to rest %1 s after contact"_s.arg(restedAt ? restedAt - contact : -1);
+        QVERIFY2(restedAt > 0, qPrintable(report));
+        // And stays there to the end: τ_ext −0.025 ± 0.003 N·m, x 0.05625 ± 0.002 m, θ at its
+        // rest. Still, not swinging: a moment of a busy CPU (the test runs beside others) may
+        // add a count to the encoder's dither, as settlesAtTheEquilibrium allows.
         QVERIFY2(std::abs(theta.mean - rest->theta) < 0.004, qPrintable(report));
-        QVERIFY2(theta.spread() <= 0.003 + 1e-9, qPrintable(report));
+        QVERIFY2(theta.spread() <= 2.5 * kEncoderStep, qPrintable(report));
         QVERIFY2(std::abs(tau.mean - rest->tauExt) < 0.003, qPrintable(report));
         QVERIFY2(std::abs(x.mean - rest->robotPosition) < 0.002, qPrintable(report));
     } else {
