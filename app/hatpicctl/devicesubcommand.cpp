@@ -1,7 +1,10 @@
 #include "devicesubcommand.h"
 
 #include "common/exitcodes.h"
+#include "console.h"
 #include "devicerunner.h"
+
+#include "model/axes.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -53,6 +56,35 @@ int DeviceSubcommand::run(const QCommandLineParser &parser)
 void DeviceSubcommand::addJsonOption(QCommandLineParser &parser)
 {
     parser.addOption({u"json"_s, u"Print a profile (JSON)."_s});
+}
+
+void DeviceSubcommand::addKnobOption(QCommandLineParser &parser)
+{
+    parser.addOption({u"knob"_s,
+                      u"The knob, 1 … %1, of a device with several (default 1)."_s.arg(kMaxAxes),
+                      u"N"_s});
+}
+
+int DeviceSubcommand::readKnob(const QCommandLineParser &parser, Knob &knob)
+{
+    knob = 0;
+    if (!parser.isSet(u"knob"_s))
+        return ExitSuccess;
+    const QString text = parser.value(u"knob"_s);
+    bool ok = false;
+    const int number = text.trimmed().toInt(&ok);
+    if (!ok || number < 1 || number > kMaxAxes) {
+        printError(u"--knob " +
+                   unreadNumber(u"a whole number from 1 to %1"_s.arg(kMaxAxes), text, true));
+        return ExitBadUsage;
+    }
+    knob = Knob(number - 1);
+    return ExitSuccess;
+}
+
+QString DeviceSubcommand::ofKnob(Knob knob)
+{
+    return knob ? u" of knob %1"_s.arg(int(knob) + 1) : QString();
 }
 
 } // namespace hatpic::cli

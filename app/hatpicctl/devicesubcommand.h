@@ -28,6 +28,13 @@ protected:
 
     //! --json, "Print a profile (JSON).": get, set and zero.
     static void addJsonOption(QCommandLineParser &parser);
+    //! --knob N: get, set, zero and vibrate, on a device with several knobs.
+    static void addKnobOption(QCommandLineParser &parser);
+    //! Reads --knob into m_knob (absent: knob 1); bad usage (4, with one sentence) when it is
+    //! not a knob's number. The device's own count is checked once it answered.
+    static int readKnob(const QCommandLineParser &parser, Knob &knob);
+    //! " of knob N" for knob 2 and on, else nothing: the sentences of a command for one knob.
+    static QString ofKnob(Knob knob);
 };
 
 } // namespace hatpic::cli

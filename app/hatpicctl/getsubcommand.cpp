@@ -22,7 +22,7 @@ public:
         : DeviceSubcommand(
               {.name = u"get"_s,
                .summary = u"Print the device's current parameters (text or JSON)."_s,
-               .synopsis = u"get --port PORT [--json]"_s,
+               .synopsis = u"get --port PORT [--knob N] [--json]"_s,
                .description =
                    u"Reads the parameters with GET_PARAMS. The text form has one line per\n"
                    "parameter: name, value, unit, meaning. --json prints a complete profile\n"
@@ -33,16 +33,26 @@ public:
                    "more lines, and the profile's device.effects. A device with the passivity\n"
                    "capability is asked for its passivity controller (GET_PASSIVITY): two more\n"
                    "lines (pc_damping_max, pc_reserve_max), and the profile's device.passivity.\n"
-                   "The profile carries every block the device has, defaults included."_s})
+                   "The profile carries every block the device has, defaults included.\n"
+                   "A device with several knobs keeps a tuning per knob: --knob N reads knob N's."_s})
     {}
 
 protected:
-    void addCommandOptions(QCommandLineParser &parser) override { addJsonOption(parser); }
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        addKnobOption(parser);
+        addJsonOption(parser);
+    }
+
+    int prepare(const QCommandLineParser &parser, DeviceOptions &) override
+    {
+        return readKnob(parser, m_knob);
+    }
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         Outcome result;
-        if (const int code = runner.runCommand(request::Read{}, &result); code)
+        if (const int code = runner.runCommand(request::Read{m_knob}, &result); code)
             return code;
         if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
@@ -50,8 +60,9 @@ protected:
         // (nor as a table that looks fine): it is refused with what is wrong, block by block.
         const DeviceTuning &tuning = result.received;
         const DeviceInfo info = runner.client().deviceInfo();
-        const auto refuse = [](const QString &what, const QString &problem) {
-            printError(u"The device reported " + what + u" that are not valid: " + problem + u'.');
+        const auto refuse = [this](const QString &what, const QString &problem) {
+            printError(u"The device reported " + what + ofKnob(m_knob) + u" that are not valid: " +
+                       problem + u'.');
             return ExitNoDevice;
         };
         if (const QString p = problemText(validate(tuning.params.value_or(DeviceParams{})));
@@ -69,6 +80,9 @@ protected:
         writeOut(tuningOutput(tuning, info, parser.isSet(u"json"_s)));
         return ExitSuccess;
     }
+
+private:
+    Knob m_knob = 0;
 };
 
 } // namespace

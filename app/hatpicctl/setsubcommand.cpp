@@ -107,7 +107,8 @@ public:
         : DeviceSubcommand(
               {.name = u"set"_s,
                .summary = u"Push parameters from a profile or as NAME=VALUE."_s,
-               .synopsis = u"set --port PORT (--profile FILE | --set NAME=VALUE …) [--json]"_s,
+               .synopsis =
+                   u"set --port PORT (--profile FILE | --set NAME=VALUE …) [--knob N] [--json]"_s,
                .description =
                    u"Sends SET_PARAMS and waits for the device's ACK, then prints the\n"
                    "parameters read back (as 'get' does). With --set alone, the device's current\n"
@@ -121,6 +122,8 @@ public:
                    "(their defaults when it has none) are sent whole. A device without the\n"
                    "capability refuses named fields (exit 2); a profile's non-default effects\n"
                    "are then not sent either, and its passivity block is left out with a note.\n"
+                   "A device with several knobs keeps a tuning per knob: --knob N tunes knob N\n"
+                   "alone (its blocks are read first, and --set starts from them).\n"
                    "Names: "_s +
                    namesOf(kDeviceFields) + u"\nEffects: " + namesOf(kEffectFields) +
                    u"\nPassivity: " + namesOf(kPassivityFields)})
@@ -132,11 +135,14 @@ protected:
         parser.addOption({u"profile"_s, u"Profile whose device parameters are sent."_s, u"FILE"_s});
         parser.addOption({u"set"_s, u"Set one parameter, e.g. K_max=0.5 (SI units). Repeatable."_s,
                           u"NAME=VALUE"_s});
+        addKnobOption(parser);
         addJsonOption(parser);
     }
 
     int prepare(const QCommandLineParser &parser, DeviceOptions &) override
     {
+        if (const int code = readKnob(parser, m_knob); code)
+            return code;
         m_assignments.clear();
         for (const QString &text : parser.values(u"set"_s)) {
             const auto assignment = parseAssignment(text);
@@ -192,7 +198,7 @@ protected:
                 none.effects = EffectParams{};
             else
                 none.passivity = PassivityParams{};
-            if (const int code = runner.runCommand(request::Push{none}, &refused); code)
+            if (const int code = runner.runCommand(request::Push{none, m_knob}, &refused); code)
                 return code;
             return DeviceRunner::reportOutcome(refused);
         }
@@ -202,10 +208,12 @@ protected:
                       "firmware does not announce the capability), so the "
                       "profile's device.passivity is not sent."_s);
 
-        DeviceTuning held; // what --set starts from without a profile: the device's own
-        if (!m_profile) {
+        // What --set starts from without a profile: the device's own. The session follows
+        // knob 1's tuning; another knob's is read here (which also checks the device has it).
+        DeviceTuning held;
+        if (!m_profile || m_knob) {
             Outcome read;
-            if (const int code = runner.runCommand(request::Read{}, &read); code)
+            if (const int code = runner.runCommand(request::Read{m_knob}, &read); code)
                 return code;
             if (const int code = DeviceRunner::reportOutcome(read); code)
                 return code;
@@ -239,10 +247,10 @@ protected:
         }
 
         // Shown as `get` shows it: the read-back of the push, else what was read before.
-        DeviceTuning shown = runner.client().deviceTuning();
+        DeviceTuning shown = m_knob ? held : runner.client().deviceTuning();
         if (tuning.params || tuning.effects || tuning.passivity) {
             Outcome result;
-            const int code = runner.runCommand(request::Push{tuning}, &result);
+            const int code = runner.runCommand(request::Push{tuning, m_knob}, &result);
             if (code) {
                 // The link went after part of the push: say what it had changed.
                 if (const QString applied = SessionWording::appliedBeforeFailure(result);
@@ -371,6 +379,7 @@ private:
 
     std::optional<Profile> m_profile;
     std::vector<Assignment> m_assignments;
+    Knob m_knob = 0;
 };
 
 } // namespace

@@ -23,28 +23,42 @@ public:
         : DeviceSubcommand(
               {.name = u"zero"_s,
                .summary = u"Make the current knob angle the center (theta0)."_s,
-               .synopsis = u"zero --port PORT [--json]"_s,
+               .synopsis = u"zero --port PORT [--knob N] [--json]"_s,
                .description =
                    u"Sends ZERO, then prints the parameters read back (as 'get' does), whose\n"
-                   "theta0 is the new center. Not saved across power-up until 'save'."_s})
+                   "theta0 is the new center. Not saved across power-up until 'save'.\n"
+                   "On a device with several knobs, --knob N zeroes knob N alone."_s})
     {}
 
 protected:
-    void addCommandOptions(QCommandLineParser &parser) override { addJsonOption(parser); }
+    void addCommandOptions(QCommandLineParser &parser) override
+    {
+        addKnobOption(parser);
+        addJsonOption(parser);
+    }
+
+    int prepare(const QCommandLineParser &parser, DeviceOptions &) override
+    {
+        return readKnob(parser, m_knob);
+    }
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         Outcome result;
-        if (const int code = runner.runCommand(request::Zero{}, &result); code)
+        if (const int code = runner.runCommand(request::Zero{m_knob}, &result); code)
             return code;
         if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
         const DeviceParams params = result.received.params.value_or(DeviceParams{});
-        printNote(u"The center is now theta0 = " + compactNumberText(params.theta0) + u" rad.");
+        printNote(u"The center" + ofKnob(m_knob) + u" is now theta0 = " +
+                  compactNumberText(params.theta0) + u" rad.");
         writeOut(tuningOutput(DeviceTuning{params, std::nullopt}, runner.client().deviceInfo(),
                               parser.isSet(u"json"_s)));
         return ExitSuccess;
     }
+
+private:
+    Knob m_knob = 0;
 };
 
 } // namespace

@@ -13,43 +13,58 @@ namespace hatpic {
 
 namespace {
 
+// GCC 12 at -O3 warns that the byte of a disengaged optional<uint8_t> (the knob's `axis`) "may
+// be used uninitialized" when the message is copied into its variant: a false positive (the
+// copy of a trivially copyable optional copies its bytes; nothing reads the value).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 //! The frame of `cmd`'s step in flight.
 QByteArray encode(const Command &cmd)
 {
     const DeviceTuning *tuning = cmd.pushed();
+    // Knob 1 goes without the field, so a single-knob device's frames are as they always were.
+    const Knob knob = cmd.knob();
+    const v2::AxisIndex axis = knob ? v2::AxisIndex(knob) : std::nullopt;
     switch (cmd.stepKind()) {
     case CommandKind::Hello:
         // Led by a delimiter, as in detection: junk already on the line cannot spoil it.
         return QByteArray(1, '\0') + v2::encodeFrame(cmd.seq, v2::Hello{});
     case CommandKind::GetParams:
-        return v2::encodeFrame(cmd.seq, v2::GetParams{});
+        return v2::encodeFrame(cmd.seq, v2::GetParams{axis});
     case CommandKind::SetParams:
-        return v2::encodeFrame(cmd.seq, v2::SetParams{*tuning->params});
+        return v2::encodeFrame(cmd.seq, v2::SetParams{*tuning->params, axis});
     case CommandKind::SetStream:
         return v2::encodeFrame(cmd.seq,
                                v2::SetStream{std::get<request::Stream>(*cmd.request).rateHz});
     case CommandKind::Zero:
-        return v2::encodeFrame(cmd.seq, v2::Zero{});
+        return v2::encodeFrame(cmd.seq, v2::Zero{axis});
     case CommandKind::SaveParams:
         return v2::encodeFrame(cmd.seq, v2::SaveParams{});
     case CommandKind::SetEffects:
-        return v2::encodeFrame(cmd.seq, v2::SetEffects{*tuning->effects});
+        return v2::encodeFrame(cmd.seq, v2::SetEffects{*tuning->effects, axis});
     case CommandKind::GetEffects:
-        return v2::encodeFrame(cmd.seq, v2::GetEffects{});
+        return v2::encodeFrame(cmd.seq, v2::GetEffects{axis});
     case CommandKind::SetPassivity:
-        return v2::encodeFrame(cmd.seq, v2::SetPassivity{*tuning->passivity});
+        return v2::encodeFrame(cmd.seq, v2::SetPassivity{*tuning->passivity, axis});
     case CommandKind::GetPassivity:
-        return v2::encodeFrame(cmd.seq, v2::GetPassivity{});
+        return v2::encodeFrame(cmd.seq, v2::GetPassivity{axis});
     case CommandKind::Vibrate: {
         const Vibration &v = std::get<request::Vibrate>(*cmd.request).vibration;
         return v2::encodeFrame(cmd.seq, v2::Vibrate{static_cast<float>(v.amplitude),
                                                     static_cast<float>(v.frequency),
-                                                    static_cast<float>(v.duration)});
+                                                    static_cast<float>(v.duration), axis});
     }
     default: // not a command
         return {};
     }
 }
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 //! True for the steps that change what the device holds (a read-back follows them).
 bool changes(CommandKind step)
@@ -76,6 +91,11 @@ int fieldCount(CommandKind kind)
 }
 
 } // namespace
+
+Knob Command::knob() const
+{
+    return request ? knobOf(*request) : 0;
+}
 
 const DeviceTuning *Command::pushed() const
 {
@@ -229,10 +249,10 @@ void CommandQueue::onAck(const v2::Ack &ack)
     nextStep();
 }
 
-void CommandQueue::onTuning(const DeviceTuning &told)
+void CommandQueue::onTuning(const DeviceTuning &told, Knob knob)
 {
-    if (!m_inflight)
-        return;
+    if (!m_inflight || knob != m_inflight->knob())
+        return; // not the answer to the step in flight (another host's, or a stale one)
     Command &cmd = *m_inflight;
     const CommandKind step = cmd.stepKind();
     // ZERO changes θ0 by design: its read-back is the new value, not a comparison; a read

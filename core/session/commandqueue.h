@@ -43,6 +43,8 @@ struct Command
     QByteArray wire;
 
     CommandKind stepKind() const { return steps.at(step); }
+    //! The knob the request is about (knobOf()); 0 for detection's HELLO.
+    Knob knob() const;
     //! The push's tuning (float32-rounded), or null.
     const DeviceTuning *pushed() const;
 };
@@ -75,9 +77,9 @@ public:
 
     //! An ACK arrived: finishes, reads back or ignores (late answers) the command in flight.
     void onAck(const v2::Ack &ack);
-    //! A PARAMS or EFFECTS arrived (`told` has the part it carried): answers the GET_PARAMS or
-    //! GET_EFFECTS step in flight.
-    void onTuning(const DeviceTuning &told);
+    //! A PARAMS, EFFECTS or PASSIVITY of `knob` arrived (`told` has the part it carried):
+    //! answers the GET_PARAMS, GET_EFFECTS or GET_PASSIVITY step in flight for that knob.
+    void onTuning(const DeviceTuning &told, Knob knob = 0);
     //! HELLO_REPLY arrived: a HELLO in flight is answered (detection handles the reply).
     void onHelloReply();
     //! Finishes every command (in flight and queued) as cut short, for `why`.

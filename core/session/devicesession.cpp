@@ -196,10 +196,12 @@ void DeviceSession::dispatch(const std::vector<Received> &events)
                                f.frame, *f.conversion, f.tauExt, m_clock.nsecsElapsed() / 1000));
                        },
                        [this](const v2::Ack &ack) { m_queue.onAck(ack); },
-                       [this](const DeviceTuning &told) {
-                           applyPendingChange(); // streaming off: no telemetry carried the change
-                           m_samples.tuningReceived(told);
-                           m_queue.onTuning(told);
+                       [this](const received::Tuning &tuning) {
+                           if (tuning.knob == 0) {   // the session's: knob 1's
+                               applyPendingChange(); // streaming off: no telemetry carried it
+                               m_samples.tuningReceived(tuning.told);
+                           }
+                           m_queue.onTuning(tuning.told, tuning.knob);
                        },
                        [this](const received::Pong &pong) { m_ping.onPong(pong.token); },
                        [this](const received::Text &text) { m_deviceText.feed(text.line); },
@@ -211,6 +213,8 @@ void DeviceSession::dispatch(const std::vector<Received> &events)
 void DeviceSession::onAcknowledged(const Command &command)
 {
     const DeviceTuning *sent = command.pushed();
+    if (command.knob() != 0 && command.stepKind() != CommandKind::SetStream)
+        return; // another knob's tuning changed: the session's (knob 1's) did not
     switch (command.stepKind()) {
     case CommandKind::SetParams:
         m_pendingChange = {CommandKind::SetParams, {sent->params, {}, {}}};
@@ -421,6 +425,9 @@ std::optional<Outcome::Result> DeviceSession::refusal(const Request &request,
         if (const auto why = m_driver ? m_driver->refusal(step) : std::nullopt)
             return outcome::Unsupported{step, *why};
     }
+    if (const Knob knob = knobOf(request); m_driver && !steps.empty() && knob >= m_info.axes)
+        return outcome::Unsupported{steps.front(), outcome::Unsupported::Why::NoSuchKnob, knob,
+                                    m_info.axes};
     std::vector<Violation> violations;
     if (const auto *push = std::get_if<request::Push>(&request); push && m_validate) {
         const DeviceTuning &tuning = push->tuning;

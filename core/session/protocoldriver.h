@@ -43,6 +43,12 @@ struct LegacyFrame
     const legacy::Conversion *conversion = nullptr;
     AxisTorques tauExt{};
 };
+//! A PARAMS, EFFECTS or PASSIVITY: the part of `knob`'s tuning it carried.
+struct Tuning
+{
+    DeviceTuning told;
+    Knob knob = 0;
+};
 struct Pong
 {
     quint32 token = 0;
@@ -54,9 +60,8 @@ struct Text
 };
 } // namespace received
 
-//! One event of a received frame. A PARAMS, EFFECTS or PASSIVITY is the DeviceTuning with the
-//! part it carried.
-using Received = std::variant<received::Telemetry, received::LegacyFrame, v2::Ack, DeviceTuning,
+//! One event of a received frame.
+using Received = std::variant<received::Telemetry, received::LegacyFrame, v2::Ack, received::Tuning,
                               received::Pong, received::Text>;
 
 //! Where a driver's frames go out (the session's link).

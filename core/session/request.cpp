@@ -47,6 +47,18 @@ std::vector<CommandKind> wireSteps(const Request &request, const DeviceInfo &dev
         request);
 }
 
+Knob knobOf(const Request &request)
+{
+    return std::visit(
+        [](const auto &r) -> Knob {
+            if constexpr (requires { r.knob; })
+                return r.knob;
+            else
+                return 0;
+        },
+        request);
+}
+
 const outcome::Stopped *Outcome::stopped() const
 {
     return std::visit(

@@ -11,6 +11,8 @@
 #include <QMetaType>
 #include <QStringList>
 
+#include <cstdint>
+
 #include <functional>
 #include <optional>
 #include <variant>
@@ -36,6 +38,11 @@ constexpr bool isPassivityCommand(CommandKind kind)
 //! The wire name: "SET_PARAMS", … (messages.h's kName).
 QString commandName(CommandKind kind);
 
+//! The knob a request is about: 0 for knob 1 … DeviceInfo::axes − 1. A device with several
+//! knobs (v2's kCapabilityAxes) keeps a tuning per knob; knob 1's is the session's (samples,
+//! recordings, the window), the others' travel only in their requests' outcomes.
+using Knob = std::uint8_t;
+
 namespace request {
 //! Each part the tuning has sent, then read back: SET_PARAMS, GET_PARAMS, SET_EFFECTS,
 //! GET_EFFECTS, SET_PASSIVITY, GET_PASSIVITY, in that order. The session validates it and
@@ -43,13 +50,18 @@ namespace request {
 struct Push
 {
     DeviceTuning tuning;
+    Knob knob = 0;
 };
 //! The device's tuning: GET_PARAMS, and GET_EFFECTS and GET_PASSIVITY on a device that has them.
 struct Read
-{};
+{
+    Knob knob = 0;
+};
 //! ZERO (θ0 := the current angle), then GET_PARAMS for the new θ0.
 struct Zero
-{};
+{
+    Knob knob = 0;
+};
 //! SAVE_PARAMS: the device keeps its tuning across power cycles.
 struct Save
 {};
@@ -62,11 +74,15 @@ struct Stream
 struct Vibrate
 {
     Vibration vibration;
+    Knob knob = 0;
 };
 } // namespace request
 
 using Request = std::variant<request::Push, request::Read, request::Zero, request::Save,
                              request::Stream, request::Vibrate>;
+
+//! The knob `request` is about; 0 for those about the whole device (SAVE_PARAMS, SET_STREAM).
+Knob knobOf(const Request &request);
 
 //! The wire steps of `request` on `device`, in order (see each request).
 std::vector<CommandKind> wireSteps(const Request &request, const DeviceInfo &device);
@@ -126,9 +142,12 @@ struct Unsupported
         NoEffects,             //!< the legacy firmware cannot render effects
         NoEffectsCapability,   //!< a v2 device without the effects capability bit
         NoPassivityCapability, //!< a device without the passivity capability bit
+        NoSuchKnob,            //!< the request names a knob past the device's last
     };
     CommandKind step = CommandKind::GetParams;
     Why why = Why::NoParameters;
+    Knob knob = 0;   //!< NoSuchKnob: the knob named
+    quint8 axes = 1; //!< NoSuchKnob: the device's knobs
 };
 //! Not sent: the host's validation refused it.
 struct Invalid

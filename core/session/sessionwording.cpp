@@ -148,6 +148,12 @@ QString SessionWording::unsupported(const outcome::Unsupported &u)
         return tr("%1 is not available: the device runs the published firmware (legacy "
                   "protocol), which streams at its own fixed rate of about 5 Hz.")
             .arg(name);
+    case Why::NoSuchKnob:
+        if (u.axes == 1)
+            return tr("%1 is not available for knob %2: the device has one knob.")
+                .arg(name, number(int(u.knob) + 1));
+        return tr("%1 is not available for knob %2: the device has %3 knobs.")
+            .arg(name, number(int(u.knob) + 1), number(u.axes));
     case Why::NoParameters:
         break;
     }

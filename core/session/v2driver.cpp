@@ -103,16 +103,19 @@ std::optional<Received> V2Driver::event(const v2::Frame &frame) const
                 return message;
             } else if constexpr (std::is_same_v<T, v2::Params> || std::is_same_v<T, v2::Effects> ||
                                  std::is_same_v<T, v2::Passivity>) {
-                // PARAMS, EFFECTS, PASSIVITY: the session's tuning is knob 1's; a block that
-                // names another knob answers someone else's request and is not ours.
-                if (v2::knobIndex(message.axis) != 0)
+                // PARAMS, EFFECTS, PASSIVITY, of the knob they name; one the device did not
+                // announce is nobody's.
+                const int knob = v2::knobIndex(message.axis);
+                if (knob >= m_info.axes)
                     return std::nullopt;
+                received::Tuning tuning{{}, Knob(knob)};
                 if constexpr (std::is_same_v<T, v2::Params>)
-                    return DeviceTuning{message.params, std::nullopt, std::nullopt};
+                    tuning.told.params = message.params;
                 else if constexpr (std::is_same_v<T, v2::Effects>)
-                    return DeviceTuning{std::nullopt, message.effects, std::nullopt};
+                    tuning.told.effects = message.effects;
                 else
-                    return DeviceTuning{std::nullopt, std::nullopt, message.passivity};
+                    tuning.told.passivity = message.passivity;
+                return tuning;
             } else if constexpr (std::is_same_v<T, v2::Pong>) {
                 return received::Pong{message.token};
             } else if constexpr (std::is_same_v<T, v2::Log>) {

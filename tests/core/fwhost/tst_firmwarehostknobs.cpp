@@ -9,6 +9,8 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -50,6 +52,32 @@ std::array<double, 4> settledThetas(V2Client &client)
     return sum;
 }
 
+//! What a hatpicctl run said.
+struct CtlRun
+{
+    int exitCode = -1;
+    QString out, err;
+};
+
+CtlRun hatpicctl(const QStringList &arguments)
+{
+    QProcess ctl;
+    ctl.start(QStringLiteral(HATPICCTL_PATH), arguments);
+    CtlRun run;
+    if (!ctl.waitForFinished(15000))
+        return run;
+    run.exitCode = ctl.exitCode();
+    run.out = QString::fromUtf8(ctl.readAllStandardOutput());
+    run.err = QString::fromUtf8(ctl.readAllStandardError());
+    return run;
+}
+
+//! The device block of the profile hatpicctl printed with --json.
+QJsonObject deviceBlock(const CtlRun &run)
+{
+    return QJsonDocument::fromJson(run.out.toUtf8()).object().value(u"device"_s).toObject();
+}
+
 //! The θ where the model holds a hand torque `push` [rad] (bisection over ±1 rad).
 double restPoint(const DeviceParams &p, double push)
 {
@@ -70,6 +98,7 @@ class TestFirmwareHostKnobs : public QObject
 private Q_SLOTS:
     void fourKnobsEachTheirOwn();
     void everyKnobIsSavedAndRecorded();
+    void hatpicctlTunesOneKnob();
     void idsPastTheBusAreRefused();
 };
 
@@ -213,6 +242,75 @@ void TestFirmwareHostKnobs::everyKnobIsSavedAndRecorded()
     const QList<QByteArray> row = lines.at(lines.size() / 2).split(',');
     const double theta = row.at(theta3).toDouble();
     QVERIFY2(std::abs(theta - 0.0396) < 3 * kTick, row.at(theta3).constData());
+}
+
+void TestFirmwareHostKnobs::hatpicctlTunesOneKnob()
+{
+    // Knob 2 pushed by a hand; the others left alone.
+    PtyProgram servo(hatpicServoSim(), {u"--servos"_s, u"4"_s, u"--hand-2"_s, u"const:0.02"_s});
+    QVERIFY2(!servo.path().isEmpty(), qPrintable(servo.errors()));
+    PtyProgram host(hatpicFwHost(), fourServos(servo.path()));
+    QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
+    const QStringList port{u"--port"_s, host.path()};
+    const double defaultKmax = DeviceParams{}.K_max; // printed as its shortest decimal
+
+    // set --knob 2 changes knob 2's block alone, and says what knob 2 now holds.
+    const CtlRun set =
+        hatpicctl(QStringList{u"set"_s, u"--knob"_s, u"2"_s, u"--set"_s, u"K_max=0.5"_s, u"--set"_s,
+                              u"detent_strength=0.04"_s, u"--json"_s} +
+                  port);
+    QVERIFY2(set.exitCode == 0, qPrintable(set.err));
+    QVERIFY2(set.err.contains(u"The device accepted the parameters."_s), qPrintable(set.err));
+    QCOMPARE(deviceBlock(set).value(u"K_max"_s).toDouble(), 0.5);
+    const CtlRun knob2 = hatpicctl(QStringList{u"get"_s, u"--knob"_s, u"2"_s, u"--json"_s} + port);
+    QVERIFY2(knob2.exitCode == 0, qPrintable(knob2.err));
+    QCOMPARE(deviceBlock(knob2).value(u"K_max"_s).toDouble(), 0.5);
+    QCOMPARE(float(deviceBlock(knob2)
+                       .value(u"effects"_s)
+                       .toObject()
+                       .value(u"detent_strength"_s)
+                       .toDouble()),
+             0.04f);
+    for (const char *other : {"1", "3", "4"}) {
+        const CtlRun get = hatpicctl(
+            QStringList{u"get"_s, u"--knob"_s, QString::fromLatin1(other), u"--json"_s} + port);
+        QVERIFY2(get.exitCode == 0, qPrintable(get.err));
+        QCOMPARE(deviceBlock(get).value(u"K_max"_s).toDouble(), defaultKmax);
+    }
+    const CtlRun plain = hatpicctl(QStringList{u"get"_s, u"--json"_s} + port); // knob 1
+    QCOMPARE(deviceBlock(plain).value(u"K_max"_s).toDouble(), defaultKmax);
+
+    // zero --knob 2 moves knob 2's centre to where its hand holds it, and no other's.
+    const CtlRun zero = hatpicctl(QStringList{u"zero"_s, u"--knob"_s, u"2"_s, u"--json"_s} + port);
+    QVERIFY2(zero.exitCode == 0, qPrintable(zero.err));
+    QVERIFY2(zero.err.contains(u"The center of knob 2 is now theta0 = "_s), qPrintable(zero.err));
+    DeviceParams stiff = roundedToFloat(DeviceParams{});
+    stiff.K_max = 0.5;
+    const double theta0 = deviceBlock(zero).value(u"theta0"_s).toDouble();
+    QVERIFY2(std::abs(theta0 - restPoint(stiff, 0.02)) < 4 * kTick, qPrintable(zero.out));
+    const CtlRun third = hatpicctl(QStringList{u"get"_s, u"--knob"_s, u"3"_s, u"--json"_s} + port);
+    QCOMPARE(deviceBlock(third).value(u"theta0"_s).toDouble(), 0.0);
+
+    const CtlRun cue =
+        hatpicctl(QStringList{u"vibrate"_s, u"--knob"_s, u"4"_s, u"--amplitude"_s, u"0.05"_s,
+                              u"--frequency"_s, u"20"_s, u"--duration"_s, u"0.1"_s} +
+                  port);
+    QVERIFY2(cue.exitCode == 0, qPrintable(cue.err));
+    QVERIFY2(cue.err.contains(u"Knob 4 plays the cue"_s), qPrintable(cue.err));
+
+    // Not a knob number: bad usage before any port is opened.
+    const CtlRun fifth = hatpicctl(QStringList{u"get"_s, u"--knob"_s, u"5"_s} + port);
+    QCOMPARE(fifth.exitCode, 4);
+    QVERIFY2(fifth.err.contains(u"--knob is out of range: it must be a whole number from 1 to 4, "
+                                "got '5'."_s),
+             qPrintable(fifth.err));
+    // A knob the device does not have: refused with the device's count, nothing sent.
+    const CtlRun single = hatpicctl(
+        {u"set"_s, u"--port"_s, u"sim"_s, u"--knob"_s, u"2"_s, u"--set"_s, u"K_max=0.5"_s});
+    QCOMPARE(single.exitCode, 2);
+    QVERIFY2(
+        single.err.contains(u"GET_PARAMS is not available for knob 2: the device has one knob."_s),
+        qPrintable(single.err));
 }
 
 void TestFirmwareHostKnobs::idsPastTheBusAreRefused()

@@ -135,6 +135,7 @@ private Q_SLOTS:
     void retriesResendTheSameBytesThenTimeOut();
     void lateAnswerToARetryIsIgnored();
     void setParamsIsReadBack();
+    void aKnobsStepsNameItAndOnlyItsReplyAnswers();
     void readBackThatDiffersIsReported();
     void zeroReadBackCarriesTheNewTheta0();
     void unansweredReadBackStillSucceeds();
@@ -224,6 +225,58 @@ void TestCommandQueue::setParamsIsReadBack()
     QVERIFY(r.pushed() && r.pushed()->params && !r.pushed()->effects);
     QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
     QCOMPARE(r.received.params.value(), p);
+}
+
+void TestCommandQueue::aKnobsStepsNameItAndOnlyItsReplyAnswers()
+{
+    Harness h;
+    DeviceInfo fourKnobs = kFullDevice;
+    fourKnobs.axes = 4;
+    DeviceParams p;
+    p.K_max = 0.6;
+    EffectParams e;
+    e.detent_strength = 0.04;
+    h.enqueue(5, request::Push{{p, e}, 2}, fourKnobs); // knob 3
+    QCOMPARE(std::get<v2::SetParams>(h.link.last().message).axis, v2::AxisIndex(2));
+    h.ack(h.lastSeq());
+    QCOMPARE(std::get<v2::GetParams>(h.link.last().message).axis, v2::AxisIndex(2));
+    // Knob 1's PARAMS (another host's read, or telemetry's owner) does not answer knob 3's.
+    DeviceParams other;
+    h.queue.onTuning({other, std::nullopt}, 0);
+    h.queue.onTuning({other, std::nullopt}, 1);
+    QVERIFY(std::holds_alternative<v2::GetParams>(h.link.last().message));
+    h.queue.onTuning({p, std::nullopt}, 2);
+    QCOMPARE(std::get<v2::SetEffects>(h.link.last().message).axis, v2::AxisIndex(2));
+    h.ack(h.lastSeq());
+    QCOMPARE(std::get<v2::GetEffects>(h.link.last().message).axis, v2::AxisIndex(2));
+    h.queue.onTuning({std::nullopt, e}, 2);
+    QCOMPARE(h.finished.size(), 1);
+    const Outcome r = h.finished[0].outcome;
+    QVERIFY(r.ok());
+    QCOMPARE(knobOf(r.request), Knob(2));
+    QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
+    QCOMPARE(r.received.params.value(), p);
+
+    // Knob 1's steps go without the field: a single-knob device's frames are unchanged.
+    h.enqueue(6, request::Zero{}, fourKnobs);
+    QCOMPARE(std::get<v2::Zero>(h.link.last().message).axis, v2::AxisIndex());
+    QCOMPARE(h.link.writes.constLast(), v2::encodeFrame(h.lastSeq(), v2::Zero{}));
+    // And every per-knob step carries it.
+    h.ack(h.lastSeq());
+    h.queue.onTuning({p, std::nullopt});
+    h.enqueue(7, request::Vibrate{{0.05, 20, 0.2}, 3}, fourKnobs);
+    QCOMPARE(std::get<v2::Vibrate>(h.link.last().message).axis, v2::AxisIndex(3));
+    h.ack(h.lastSeq());
+    h.enqueue(8, request::Read{1}, fourKnobs);
+    QCOMPARE(std::get<v2::GetParams>(h.link.last().message).axis, v2::AxisIndex(1));
+    h.queue.onTuning({p, std::nullopt}, 1);
+    QCOMPARE(std::get<v2::GetEffects>(h.link.last().message).axis, v2::AxisIndex(1));
+    h.queue.onTuning({std::nullopt, e}, 1);
+    QCOMPARE(std::get<v2::GetPassivity>(h.link.last().message).axis, v2::AxisIndex(1));
+    h.queue.onTuning({std::nullopt, std::nullopt, PassivityParams{}}, 1);
+    QCOMPARE(h.finished.size(), 4);
+    QVERIFY(h.finished[3].outcome.ok());
+    QCOMPARE(h.finished[3].id, quint64(8));
 }
 
 void TestCommandQueue::readBackThatDiffersIsReported()
