@@ -48,13 +48,24 @@ ChatterWatch::ChatterWatch(ParameterEditor *editor) : QObject(editor), m_editor(
 
 void ChatterWatch::addSamples(const SampleBatch &batch)
 {
+    // The knob tuned, against its own tuning: knob 1 is the sample, knob k its board's block.
+    const int knob = m_editor->knob();
     const std::optional<DeviceParams> params = m_editor->deviceTuning().params;
-    if (params != m_params) {
+    if (params != m_params || knob != m_knob) {
         m_params = params;
+        m_knob = knob;
         m_detector.setParams(params);
     }
-    for (const Sample &s : batch)
-        m_detector.add(s);
+    for (const Sample &s : batch) {
+        if (knob == 0) {
+            m_detector.add(s);
+        } else if (s.board && knob < s.board->axes) {
+            Sample other;
+            other.t_s = s.t_s;
+            other.theta = s.board->more[std::size_t(knob - 1)].theta;
+            m_detector.add(other);
+        }
+    }
     m_editor->derivedFiguresView()->setChatter(m_detector.frequency(),
                                                params ? params->K_max * params->Q_dz : 0.0);
 }

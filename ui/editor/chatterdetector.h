@@ -51,6 +51,7 @@ private:
     ParameterEditor *m_editor;
     ChatterDetector m_detector;
     std::optional<DeviceParams> m_params;
+    int m_knob = 0; //!< the knob watched: the editor's (0 for knob 1)
 };
 
 } // namespace hatpic

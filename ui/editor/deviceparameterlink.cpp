@@ -7,13 +7,25 @@
 
 namespace hatpic {
 
+namespace {
+
+//! "knob 2: " before what a command changed on knob 2 and on; nothing for knob 1.
+QString knobPrefix(Knob knob)
+{
+    return knob ? DeviceParameterLink::tr("knob %1: ").arg(int(knob) + 1) : QString();
+}
+
+} // namespace
+
 DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *editor,
                                          QObject *parent)
     : QObject(parent), m_client(client), m_editor(editor)
 {
     connect(m_editor, &ParameterEditor::pushRequested, this, &DeviceParameterLink::onPushRequested);
-    connect(m_editor, &ParameterEditor::vibrateRequested, this,
-            [this](const Vibration &v) { send(request::Vibrate{v}); });
+    connect(m_editor, &ParameterEditor::vibrateRequested, this, [this](const Vibration &v) {
+        send(request::Vibrate{v, m_knob});
+    });
+    connect(m_editor, &ParameterEditor::knobSelected, this, &DeviceParameterLink::selectKnob);
     connect(m_editor, &ParameterEditor::readRequested, this, &DeviceParameterLink::readFromDevice);
     connect(m_editor->model(), &TuningModel::editedChanged, this, [this](TuningChange change) {
         if (change.host)
@@ -22,8 +34,8 @@ DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *
     connect(m_client, &DeviceClient::stateChanged, this,
             [this](SessionState state) { onStateChanged(state); });
     connect(m_client, &DeviceClient::deviceInfoChanged, this, &DeviceParameterLink::onDeviceInfo);
-    connect(m_client, &DeviceClient::deviceTuningChanged, m_editor->model(),
-            &TuningModel::setDevice);
+    connect(m_client, &DeviceClient::deviceTuningChanged, this,
+            &DeviceParameterLink::onSessionTuning);
     onStateChanged(m_client->state());
 }
 
@@ -43,20 +55,40 @@ void DeviceParameterLink::send(const Request &request)
 
 void DeviceParameterLink::onPushRequested(const DeviceTuning &tuning)
 {
-    m_client->request(request::Push{tuning},
-                      {this, [this, before = m_client->deviceTuning()](const Outcome &outcome) {
+    m_client->request(request::Push{tuning, m_knob},
+                      {this, [this, before = m_editor->deviceTuning()](const Outcome &outcome) {
                            finishPush(before, outcome);
                        }});
 }
 
 void DeviceParameterLink::readFromDevice()
 {
-    send(request::Read{});
+    send(request::Read{m_knob});
 }
 
 void DeviceParameterLink::zero()
 {
-    send(request::Zero{});
+    send(request::Zero{m_knob});
+}
+
+void DeviceParameterLink::selectKnob(int knob)
+{
+    if (knob == m_knob || knob < 0 || knob >= m_knobs)
+        return;
+    m_knob = Knob(knob);
+    // The model compares with the chosen knob's tuning: knob 1's is the session's; another's
+    // is unknown until read. The last push and its read-back were the other knob's.
+    m_editor->setDeviceTuning({});
+    if (m_knob == 0)
+        m_editor->setDeviceTuning(m_client->deviceTuning());
+    else
+        readFromDevice();
+}
+
+void DeviceParameterLink::onSessionTuning(const DeviceTuning &tuning)
+{
+    if (m_knob == 0)
+        m_editor->setDeviceTuning(tuning);
 }
 
 void DeviceParameterLink::saveInDevice()
@@ -69,8 +101,12 @@ void DeviceParameterLink::onStateChanged(SessionState state)
     const bool connected = state == SessionState::Connected;
     m_editor->setCanPush(connected && m_client->deviceInfo().canSetParams(),
                          connected ? tr("the legacy protocol cannot carry parameters") : QString());
-    if (state == SessionState::Disconnected)
+    if (state == SessionState::Disconnected) {
         m_editor->setDeviceTuning({});
+        m_knobs = 1;
+        m_knob = 0;
+        m_editor->setKnobs(1);
+    }
     refreshEffectsAvailability();
 }
 
@@ -78,6 +114,13 @@ void DeviceParameterLink::onDeviceInfo(const DeviceInfo &info)
 {
     if (info.protocol == WireProtocol::V2) // a legacy device reports no limit
         m_editor->setTauLimit(shortestFloatDecimal(info.tauLimit));
+    // Only a device that takes tuning has a tuning per knob (the IMU branch's has none).
+    const quint8 knobs = info.canSetParams() ? info.axes : 1;
+    if (knobs != m_knobs) {
+        m_knobs = knobs;
+        m_editor->setKnobs(knobs);
+        selectKnob(0);
+    }
     refreshEffectsAvailability();
 }
 
@@ -108,9 +151,11 @@ void DeviceParameterLink::finishPush(const DeviceTuning &before, const Outcome &
         // What changed is what the device held against what travelled (float32, bounds kept
         // by the session's one rounding), never the editor's doubles: the walls' ±π travel as
         // the float just inside π, which the device already held.
-        const QString change = describeTuningChange(before, *outcome.pushed());
-        m_lastMessage = change.isEmpty() ? tr("Pushed (no change).") : tr("Pushed: %1").arg(change);
-        if (!change.isEmpty())
+        const QString change =
+            knobPrefix(knobOf(outcome.request)) + describeTuningChange(before, *outcome.pushed());
+        const bool changed = change.size() > knobPrefix(knobOf(outcome.request)).size();
+        m_lastMessage = changed ? tr("Pushed: %1").arg(change) : tr("Pushed (no change).");
+        if (changed)
             Q_EMIT deviceChanged(change);
     } else {
         m_lastMessage = tr("Push failed: %1").arg(SessionWording::commandFailure(outcome));
@@ -131,11 +176,17 @@ void DeviceParameterLink::finishCommand(const Outcome &outcome)
                        [](const auto &) { return QString(); }, // the link sends nothing else
                    },
                    outcome.request);
+    const Knob knob = knobOf(outcome.request);
+    const QString named = knob ? tr("%1 (knob %2)").arg(what).arg(int(knob) + 1) : what;
     m_lastMessage = outcome.ok()
-                        ? tr("%1: done.").arg(what)
-                        : tr("%1 failed: %2").arg(what, SessionWording::commandFailure(outcome));
+                        ? tr("%1: done.").arg(named)
+                        : tr("%1 failed: %2").arg(named, SessionWording::commandFailure(outcome));
+    // Another knob's tuning follows its own reads (knob 1's follows the session's); one read
+    // for a knob no longer chosen is not the model's.
+    if (outcome.ok() && knob != 0 && knob == m_knob && outcome.received != DeviceTuning{})
+        m_editor->setDeviceTuning(m_editor->deviceTuning().updatedBy(outcome.received));
     if (outcome.ok() && std::holds_alternative<request::Zero>(outcome.request))
-        Q_EMIT deviceChanged(tr("ZERO: θ0 := current angle"));
+        Q_EMIT deviceChanged(knobPrefix(knob) + tr("ZERO: θ0 := current angle"));
     Q_EMIT commandFinished(m_lastMessage);
 }
 

@@ -4,6 +4,9 @@
 // hands the device's answers and read-backs back to the editor (which shows the sync state),
 // keeps the editor's host parameters in the session, and words the outcome of every parameter
 // command (push, read, ZERO, save in the device) for the status bar and the event markers.
+// On a device with several knobs it carries them for the knob the editor's selector names:
+// knob 1's tuning is the session's (it follows every change), another knob's is read when it
+// is chosen and follows its own commands' read-backs.
 #pragma once
 
 #include "model/params.h"
@@ -31,6 +34,9 @@ public:
     void zero();           //!< ZERO: θ0 := the current angle, then a read-back
     void saveInDevice();   //!< SAVE_PARAMS: the device restores them at power-up
 
+    //! The knob tuned: 0 for knob 1.
+    Knob knob() const { return m_knob; }
+
     //! The outcome of the last parameter command ("Pushed: K_max 0.4 → 0.6", "Read: done.").
     QString lastMessage() const { return m_lastMessage; }
 
@@ -44,6 +50,9 @@ Q_SIGNALS:
 private:
     void onStateChanged(SessionState state);
     void onDeviceInfo(const DeviceInfo &info);
+    void selectKnob(int knob);
+    //! The session's tuning (knob 1's) changed: the model's while knob 1 is tuned.
+    void onSessionTuning(const DeviceTuning &tuning);
     void refreshEffectsAvailability();
     void onPushRequested(const DeviceTuning &tuning);
     //! `before`: the device's tuning when the push was sent.
@@ -55,6 +64,8 @@ private:
     DeviceClient *m_client;
     ParameterEditor *m_editor;
     QString m_lastMessage;
+    Knob m_knob = 0;
+    quint8 m_knobs = 1; //!< the connected device's, for the selector
 };
 
 } // namespace hatpic

@@ -121,9 +121,20 @@ void ParameterEditor::buildUi()
     connect(m_syncBar, &SyncBar::livePushToggled, this, &ParameterEditor::setLivePush);
     connect(m_syncBar, &SyncBar::angleInDegreesToggled, this, &ParameterEditor::setAngleInDegrees);
     connect(m_syncBar, &SyncBar::showProblemRequested, this, &ParameterEditor::showFirstProblem);
+    connect(m_syncBar, &SyncBar::knobSelected, this, &ParameterEditor::knobSelected);
     layout->addWidget(m_syncBar);
     layout->addWidget(derivedBox);
     layout->addWidget(m_scroll, 1);
+}
+
+void ParameterEditor::setKnobs(int count)
+{
+    m_syncBar->setKnobs(count);
+}
+
+int ParameterEditor::knob() const
+{
+    return m_syncBar->knob();
 }
 
 void ParameterEditor::showFirstProblem()

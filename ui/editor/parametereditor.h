@@ -68,6 +68,11 @@ public:
     //! False while disconnected or for a legacy device; `reason` replaces "not connected".
     void setCanPush(bool deviceAcceptsParams, const QString &reason = {});
     bool canPush() const { return m_model->canPush(); }
+    //! The connected device's knobs: two or more show the selector of the knob tuned (its
+    //! tuning is then the device's that the model compares with). A new count selects knob 1.
+    void setKnobs(int count);
+    //! The knob tuned: 0 for knob 1.
+    int knob() const;
     //! The connected device's actuator limit: sets tau_limit as an undoable edit when it differs.
     void setTauLimit(double tauLimit);
 
@@ -112,6 +117,8 @@ Q_SIGNALS:
     //! The vibration test's Vibrate or Stop (already valid).
     void vibrateRequested(const hatpic::Vibration &vibration);
     void readRequested();
+    //! The user chose another knob to tune (0 for knob 1).
+    void knobSelected(int knob);
     void validityChanged(bool valid);
     void angleInDegreesChanged(bool degrees);
 

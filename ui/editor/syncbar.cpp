@@ -5,11 +5,14 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace hatpic {
 
@@ -85,6 +88,18 @@ SyncBar::SyncBar(QUndoStack *undo, QAction *read, QAction *revert, QAction *push
     grid->addWidget(m_problem, 1, 0, 1, 2);
 
     auto *options = new QHBoxLayout;
+    // A device with several knobs keeps a tuning per knob: the one edited, pushed and read.
+    m_knobLabel = new QLabel(tr("Tune knob"), this);
+    m_knobBox = new QComboBox(this);
+    m_knobBox->setObjectName(u"combo_knob"_s);
+    m_knobBox->setToolTip(tr("The knob whose tuning Push, Read, ZERO and the vibration test "
+                             "reach; the others keep theirs"));
+    m_knobLabel->setBuddy(m_knobBox);
+    connect(m_knobBox, &QComboBox::activated, this, &SyncBar::knobSelected);
+    options->addWidget(m_knobLabel);
+    options->addWidget(m_knobBox);
+    options->addSpacing(8);
+    setKnobs(1);
     m_liveCheck = new QCheckBox(tr("Live push while editing"), this);
     m_liveCheck->setObjectName(u"check_live_push"_s);
     m_liveCheck->setToolTip(tr("Push every change as you drag or type (at most 10 pushes per "
@@ -137,6 +152,21 @@ void SyncBar::setLivePush(bool on)
 {
     const QSignalBlocker block(m_liveCheck);
     m_liveCheck->setChecked(on);
+}
+
+void SyncBar::setKnobs(int count)
+{
+    const QSignalBlocker block(m_knobBox);
+    m_knobBox->clear();
+    for (int k = 1; k <= count; ++k)
+        m_knobBox->addItem(tr("Knob %1").arg(k));
+    m_knobLabel->setVisible(count > 1);
+    m_knobBox->setVisible(count > 1);
+}
+
+int SyncBar::knob() const
+{
+    return std::max(0, m_knobBox->currentIndex());
 }
 
 void SyncBar::setAngleInDegrees(bool on)

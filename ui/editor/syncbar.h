@@ -8,6 +8,7 @@
 
 class QAction;
 class QCheckBox;
+class QComboBox;
 class QLabel;
 class QUndoStack;
 
@@ -28,17 +29,25 @@ public:
     //! Show a switch without emitting its signal.
     void setLivePush(bool on);
     void setAngleInDegrees(bool on);
+    //! The device's knobs: a selector of the one tuned (knob 1 … `count`), shown for two or
+    //! more. A new count selects knob 1 without emitting knobSelected.
+    void setKnobs(int count);
+    //! The knob tuned: 0 for knob 1.
+    int knob() const;
 
 Q_SIGNALS:
     void livePushToggled(bool on);
     void angleInDegreesToggled(bool on);
     void showProblemRequested(); //!< the problem line's "Show": bring its field into sight
+    void knobSelected(int knob); //!< the user chose another knob to tune (0 for knob 1)
 
 private:
     QLabel *m_label = nullptr;
     QLabel *m_problem = nullptr;
     QCheckBox *m_liveCheck = nullptr;
     QCheckBox *m_degreesCheck = nullptr;
+    QLabel *m_knobLabel = nullptr;
+    QComboBox *m_knobBox = nullptr;
 };
 
 } // namespace hatpic
