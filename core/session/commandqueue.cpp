@@ -1,5 +1,6 @@
 #include "commandqueue.h"
 
+#include "model/overloaded.h"
 #include "protocol/v2codec.h"
 
 #include <QLoggingCategory>
@@ -13,81 +14,20 @@ namespace hatpic {
 
 namespace {
 
-// GCC 12 at -O3 warns that the byte of a disengaged optional<uint8_t> (the knob's `axis`) "may
-// be used uninitialized" when the message is copied into its variant: a false positive (the
-// copy of a trivially copyable optional copies its bytes; nothing reads the value).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-
 //! The frame of `cmd`'s step in flight.
 QByteArray encode(const Command &cmd)
 {
-    const DeviceTuning *tuning = cmd.pushed();
-    // Knob 1 goes without the field, so a single-knob device's frames are as they always were.
-    const Knob knob = cmd.knob();
-    const v2::AxisIndex axis = knob ? v2::AxisIndex(knob) : std::nullopt;
-    switch (cmd.stepKind()) {
-    case CommandKind::Hello:
-        // Led by a delimiter, as in detection: junk already on the line cannot spoil it.
-        return QByteArray(1, '\0') + v2::encodeFrame(cmd.seq, v2::Hello{});
-    case CommandKind::GetParams:
-        return v2::encodeFrame(cmd.seq, v2::GetParams{axis});
-    case CommandKind::SetParams:
-        return v2::encodeFrame(cmd.seq, v2::SetParams{*tuning->params, axis});
-    case CommandKind::SetStream:
-        return v2::encodeFrame(cmd.seq,
-                               v2::SetStream{std::get<request::Stream>(*cmd.request).rateHz});
-    case CommandKind::Zero:
-        return v2::encodeFrame(cmd.seq, v2::Zero{axis});
-    case CommandKind::SaveParams:
-        return v2::encodeFrame(cmd.seq, v2::SaveParams{});
-    case CommandKind::SetEffects:
-        return v2::encodeFrame(cmd.seq, v2::SetEffects{*tuning->effects, axis});
-    case CommandKind::GetEffects:
-        return v2::encodeFrame(cmd.seq, v2::GetEffects{axis});
-    case CommandKind::SetPassivity:
-        return v2::encodeFrame(cmd.seq, v2::SetPassivity{*tuning->passivity, axis});
-    case CommandKind::GetPassivity:
-        return v2::encodeFrame(cmd.seq, v2::GetPassivity{axis});
-    case CommandKind::Vibrate: {
-        const Vibration &v = std::get<request::Vibrate>(*cmd.request).vibration;
-        return v2::encodeFrame(cmd.seq, v2::Vibrate{static_cast<float>(v.amplitude),
-                                                    static_cast<float>(v.frequency),
-                                                    static_cast<float>(v.duration), axis});
-    }
-    default: // not a command
-        return {};
-    }
+    const WireStep &step = cmd.steps.at(cmd.step);
+    // HELLO is led by a delimiter, as in detection: junk already on the line cannot spoil it.
+    const QByteArray lead = step.kind() == CommandKind::Hello ? QByteArray(1, '\0') : QByteArray();
+    return lead + v2::encodeFrame(cmd.seq, step.message);
 }
-
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 
 //! True for the steps that change what the device holds (a read-back follows them).
 bool changes(CommandKind step)
 {
     return step == CommandKind::SetParams || step == CommandKind::SetEffects ||
            step == CommandKind::SetPassivity || step == CommandKind::Zero;
-}
-
-//! Fields of the block a step carries: an ACK's `field` beyond them names nothing.
-int fieldCount(CommandKind kind)
-{
-    switch (kind) {
-    case CommandKind::SetParams:
-        return DeviceParams::kFieldCount;
-    case CommandKind::SetEffects:
-        return EffectParams::kFieldCount;
-    case CommandKind::SetPassivity:
-        return PassivityParams::kFieldCount;
-    case CommandKind::Vibrate:
-        return 3; // a, f, d
-    default:
-        return 0;
-    }
 }
 
 } // namespace
@@ -111,28 +51,24 @@ Outcome CommandQueue::outcomeOf(const Command &cmd, Outcome::Result result)
 outcome::Stopped CommandQueue::stoppedAt(const Command &cmd)
 {
     outcome::Stopped stop{cmd.stepKind(), {}};
-    const DeviceTuning *sent = cmd.pushed();
-    if (!sent)
-        return stop;
     // Each SET before the step in flight was acknowledged: its part is in force, as read back
-    // where that came, else as sent.
-    const auto take = [&](const auto &part, const auto &readBack, auto &out) {
-        out = readBack ? readBack : part;
-    };
+    // where that came, else as its message carried it.
+    const DeviceTuning &back = cmd.received;
+    DeviceTuning &applied = stop.applied;
     for (std::size_t i = 0; i < cmd.step; ++i) {
-        switch (cmd.steps[i]) {
-        case CommandKind::SetParams:
-            take(sent->params, cmd.received.params, stop.applied.params);
-            break;
-        case CommandKind::SetEffects:
-            take(sent->effects, cmd.received.effects, stop.applied.effects);
-            break;
-        case CommandKind::SetPassivity:
-            take(sent->passivity, cmd.received.passivity, stop.applied.passivity);
-            break;
-        default:
-            break;
-        }
+        std::visit(Overloaded{
+                       [&](const v2::SetParams &m) {
+                           applied.params = back.params ? back.params : m.params;
+                       },
+                       [&](const v2::SetEffects &m) {
+                           applied.effects = back.effects ? back.effects : m.effects;
+                       },
+                       [&](const v2::SetPassivity &m) {
+                           applied.passivity = back.passivity ? back.passivity : m.passivity;
+                       },
+                       [](const auto &) {},
+                   },
+                   cmd.steps[i].message);
     }
     return stop;
 }
@@ -165,7 +101,7 @@ void CommandQueue::enqueue(Command command)
 void CommandQueue::enqueueHello()
 {
     Command hello;
-    hello.steps = {CommandKind::Hello};
+    hello.steps = {WireStep{v2::Hello{}}};
     enqueue(std::move(hello));
 }
 
@@ -209,7 +145,7 @@ void CommandQueue::onTimeout()
         Q_EMIT helloUnanswered();
         return;
     }
-    if (cmd.step > 0 && changes(cmd.steps[cmd.step - 1])) {
+    if (cmd.step > 0 && changes(cmd.steps[cmd.step - 1].kind())) {
         // The device acknowledged the change; only its read-back went unanswered.
         cmd.readBackUnanswered = true;
         nextStep();
@@ -239,9 +175,11 @@ void CommandQueue::onAck(const v2::Ack &ack)
     m_timer.stop();
 
     if (ack.status != v2::AckStatus::Ok) {
-        const bool named = ack.field != v2::kNoField && ack.field < fieldCount(step);
-        finishInflight(
-            outcome::Refused{stoppedAt(*m_inflight), ack.status, named ? int(ack.field) : -1});
+        // A field past the step's block (0xFE: a knob the device lacks) names nothing.
+        outcome::Refused refused{stoppedAt(*m_inflight), ack.status, int(ack.field)};
+        if (ack.field == v2::kNoField || refused.fieldName().empty())
+            refused.field = -1;
+        finishInflight(std::move(refused));
         return;
     }
     if (step != CommandKind::SaveParams)
@@ -284,7 +222,8 @@ void CommandQueue::nextStep()
         return;
     }
     using outcome::ReadBack;
-    const bool changed = std::any_of(cmd.steps.begin(), cmd.steps.end(), changes);
+    const bool changed = std::any_of(cmd.steps.begin(), cmd.steps.end(),
+                                     [](const WireStep &s) { return changes(s.kind()); });
     finishInflight(outcome::Done{!changed                 ? ReadBack::None
                                  : cmd.readBackUnanswered ? ReadBack::Unanswered
                                  : cmd.readBackDiffers    ? ReadBack::Differs

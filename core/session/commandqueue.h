@@ -24,13 +24,13 @@ namespace hatpic {
 struct Command
 {
     Command() = default;
-    Command(std::optional<Request> request, std::vector<CommandKind> steps, OutcomeHandler then)
+    Command(std::optional<Request> request, std::vector<WireStep> steps, OutcomeHandler then)
         : request(std::move(request)), steps(std::move(steps)), then(std::move(then))
     {}
 
     //! What was asked; none for detection's HELLO, which ends in helloUnanswered() or nothing.
     std::optional<Request> request;
-    std::vector<CommandKind> steps; //!< the wire steps, in order (wireSteps())
+    std::vector<WireStep> steps; //!< the wire steps, in order (wireSteps())
     OutcomeHandler then; //!< hears the outcome; empty: the session's own (the connect sequence)
 
     // Set by the queue as the command goes.
@@ -42,7 +42,9 @@ struct Command
     int retries = 0;
     QByteArray wire;
 
-    CommandKind stepKind() const { return steps.at(step); }
+    CommandKind stepKind() const { return steps.at(step).kind(); }
+    //! The message of the step in flight, which carries what it applies.
+    const v2::Message &stepMessage() const { return steps.at(step).message; }
     //! The knob the request is about (knobOf()); 0 for detection's HELLO.
     Knob knob() const;
     //! The push's tuning (float32-rounded), or null.

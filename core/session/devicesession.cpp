@@ -212,31 +212,33 @@ void DeviceSession::dispatch(const std::vector<Received> &events)
 
 void DeviceSession::onAcknowledged(const Command &command)
 {
-    const DeviceTuning *sent = command.pushed();
-    if (command.knob() != 0 && command.stepKind() != CommandKind::SetStream)
-        return; // another knob's tuning changed: the session's (knob 1's) did not
-    switch (command.stepKind()) {
-    case CommandKind::SetParams:
-        m_pendingChange = {CommandKind::SetParams, {sent->params, {}, {}}};
-        return;
-    case CommandKind::SetEffects:
-        m_pendingChange = {CommandKind::SetEffects, {{}, sent->effects, {}}};
-        return;
-    case CommandKind::SetPassivity:
-        m_pendingChange = {CommandKind::SetPassivity, {{}, {}, sent->passivity}};
-        return;
-    case CommandKind::Zero:
-        m_pendingChange = {CommandKind::Zero, {}};
-        return;
-    case CommandKind::SetStream:
-        m_statistics.restartSeq(); // a new stream: no gap to count against the old
-        if (const auto *stream =
-                command.request ? std::get_if<request::Stream>(&*command.request) : nullptr)
-            m_options.streamRateHz = stream->rateHz; // a reconnect asks for the same rate
-        return;
-    default:
-        return;
-    }
+    // Another knob's tuning changed: the session's (knob 1's) did not.
+    const bool sessionsKnob = command.knob() == 0;
+    // The acknowledged step's message carries what it applied.
+    std::visit(Overloaded{
+                   [&](const v2::SetParams &set) {
+                       if (sessionsKnob)
+                           m_pendingChange = {CommandKind::SetParams, {set.params, {}, {}}};
+                   },
+                   [&](const v2::SetEffects &set) {
+                       if (sessionsKnob)
+                           m_pendingChange = {CommandKind::SetEffects, {{}, set.effects, {}}};
+                   },
+                   [&](const v2::SetPassivity &set) {
+                       if (sessionsKnob)
+                           m_pendingChange = {CommandKind::SetPassivity, {{}, {}, set.passivity}};
+                   },
+                   [&](const v2::Zero &) {
+                       if (sessionsKnob)
+                           m_pendingChange = {CommandKind::Zero, {}};
+                   },
+                   [&](const v2::SetStream &set) {
+                       m_statistics.restartSeq(); // a new stream: no gap to count against the old
+                       m_options.streamRateHz = set.rateHz; // a reconnect asks for the same rate
+                   },
+                   [](const auto &) {},
+               },
+               command.stepMessage());
 }
 
 void DeviceSession::applyPendingChange()
@@ -394,8 +396,8 @@ void DeviceSession::request(Request request, OutcomeHandler then)
         if (tuning.passivity && !m_info.hasPassivity() && (tuning.params || tuning.effects))
             tuning.passivity.reset();
     }
-    const std::vector<CommandKind> steps = wireSteps(request, m_info);
-    if (std::optional<Outcome::Result> refused = refusal(request, steps)) {
+    const std::vector<CommandKind> kinds = stepKinds(wireSteps(request, m_info));
+    if (std::optional<Outcome::Result> refused = refusal(request, kinds)) {
         if (then)
             then(Outcome{std::move(request), std::move(*refused), {}});
         return;
@@ -409,12 +411,14 @@ void DeviceSession::request(Request request, OutcomeHandler then)
         if (tuning.passivity)
             tuning.passivity = roundedForWire(*tuning.passivity);
     }
-    if (steps.empty()) { // a push of nothing
+    if (kinds.empty()) { // a push of nothing
         if (then)
             then(Outcome{std::move(request), outcome::Done{}, {}});
         return;
     }
-    m_queue.enqueue(Command{std::move(request), steps, std::move(then)});
+    // The steps' messages carry the tuning as rounded.
+    std::vector<WireStep> steps = wireSteps(request, m_info);
+    m_queue.enqueue(Command{std::move(request), std::move(steps), std::move(then)});
 }
 
 std::optional<Outcome::Result> DeviceSession::refusal(const Request &request,

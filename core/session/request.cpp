@@ -1,6 +1,10 @@
 #include "request.h"
 
 #include "model/overloaded.h"
+#include "model/params.h"
+#include "model/passivity.h"
+
+#include <iterator>
 
 namespace hatpic {
 
@@ -9,42 +13,73 @@ QString commandName(CommandKind kind)
     return QString::fromLatin1(v2::messageName(kind));
 }
 
-std::vector<CommandKind> wireSteps(const Request &request, const DeviceInfo &device)
+// GCC 12 at -O3 warns that the byte of a disengaged optional<uint8_t> (a knob's `axis`) "may be
+// used uninitialized" when a message is copied into its variant: a false positive (the copy of
+// a trivially copyable optional copies its bytes; nothing reads the value).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+std::vector<WireStep> wireSteps(const Request &request, const DeviceInfo &device)
 {
-    return std::visit(
-        Overloaded{
-            [](const request::Push &push) {
-                // Each part sent, then read back (push_back: GCC 12 at -O3 warns of a false
-                // overflow in an insert of an initializer list here).
-                std::vector<CommandKind> steps;
-                const auto sendAndRead = [&steps](CommandKind set, CommandKind get) {
-                    steps.push_back(set);
-                    steps.push_back(get);
-                };
-                if (push.tuning.params)
-                    sendAndRead(CommandKind::SetParams, CommandKind::GetParams);
-                if (push.tuning.effects)
-                    sendAndRead(CommandKind::SetEffects, CommandKind::GetEffects);
-                if (push.tuning.passivity)
-                    sendAndRead(CommandKind::SetPassivity, CommandKind::GetPassivity);
-                return steps;
-            },
-            [&device](const request::Read &) {
-                std::vector<CommandKind> steps{CommandKind::GetParams};
-                if (device.hasEffects())
-                    steps.push_back(CommandKind::GetEffects);
-                if (device.hasPassivity())
-                    steps.push_back(CommandKind::GetPassivity);
-                return steps;
-            },
-            [](const request::Zero &) {
-                return std::vector{CommandKind::Zero, CommandKind::GetParams};
-            },
-            [](const request::Save &) { return std::vector{CommandKind::SaveParams}; },
-            [](const request::Stream &) { return std::vector{CommandKind::SetStream}; },
-            [](const request::Vibrate &) { return std::vector{CommandKind::Vibrate}; },
-        },
-        request);
+    // Knob 1 goes without the byte, so a single-knob device's frames are as they always were.
+    const Knob knob = knobOf(request);
+    const v2::AxisIndex axis = knob ? v2::AxisIndex(knob) : std::nullopt;
+    std::vector<WireStep> steps;
+    const auto add = [&steps](v2::Message message) { steps.push_back({std::move(message)}); };
+    std::visit(Overloaded{
+                   [&](const request::Push &push) {
+                       // Each part sent, then read back.
+                       const DeviceTuning &t = push.tuning;
+                       if (t.params) {
+                           add(v2::SetParams{*t.params, axis});
+                           add(v2::GetParams{axis});
+                       }
+                       if (t.effects) {
+                           add(v2::SetEffects{*t.effects, axis});
+                           add(v2::GetEffects{axis});
+                       }
+                       if (t.passivity) {
+                           add(v2::SetPassivity{*t.passivity, axis});
+                           add(v2::GetPassivity{axis});
+                       }
+                   },
+                   [&](const request::Read &) {
+                       add(v2::GetParams{axis});
+                       if (device.hasEffects())
+                           add(v2::GetEffects{axis});
+                       if (device.hasPassivity())
+                           add(v2::GetPassivity{axis});
+                   },
+                   [&](const request::Zero &) {
+                       add(v2::Zero{axis});
+                       add(v2::GetParams{axis});
+                   },
+                   [&](const request::Save &) { add(v2::SaveParams{}); },
+                   [&](const request::Stream &stream) { add(v2::SetStream{stream.rateHz}); },
+                   [&](const request::Vibrate &cue) {
+                       const Vibration &v = cue.vibration;
+                       add(v2::Vibrate{static_cast<float>(v.amplitude),
+                                       static_cast<float>(v.frequency),
+                                       static_cast<float>(v.duration), axis});
+                   },
+               },
+               request);
+    return steps;
+}
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+std::vector<CommandKind> stepKinds(const std::vector<WireStep> &steps)
+{
+    std::vector<CommandKind> kinds;
+    kinds.reserve(steps.size());
+    for (const WireStep &step : steps)
+        kinds.push_back(step.kind());
+    return kinds;
 }
 
 Knob knobOf(const Request &request)
@@ -57,6 +92,26 @@ Knob knobOf(const Request &request)
                 return 0;
         },
         request);
+}
+
+std::string_view outcome::Refused::fieldName() const
+{
+    if (field < 0)
+        return {};
+    switch (step) {
+    case CommandKind::SetParams:
+        return deviceFieldName(field);
+    case CommandKind::SetEffects:
+        return effectFieldName(field);
+    case CommandKind::SetPassivity:
+        return passivityFieldName(field);
+    case CommandKind::Vibrate: {
+        constexpr std::string_view kCue[] = {"amplitude", "frequency", "duration"};
+        return field < int(std::size(kCue)) ? kCue[field] : std::string_view();
+    }
+    default:
+        return {};
+    }
 }
 
 const outcome::Stopped *Outcome::stopped() const

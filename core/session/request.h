@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <optional>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -84,8 +85,21 @@ using Request = std::variant<request::Push, request::Read, request::Zero, reques
 //! The knob `request` is about; 0 for those about the whole device (SAVE_PARAMS, SET_STREAM).
 Knob knobOf(const Request &request);
 
-//! The wire steps of `request` on `device`, in order (see each request).
-std::vector<CommandKind> wireSteps(const Request &request, const DeviceInfo &device);
+//! One step on the wire: the message it sends, carrying the part of its request it applies
+//! (SET_PARAMS the pushed parameters, VIBRATE the cue, SET_STREAM the rate) and, on a device
+//! with several knobs, the knob's `axis` byte (none for knob 1).
+struct WireStep
+{
+    v2::Message message;
+
+    CommandKind kind() const { return static_cast<CommandKind>(v2::messageType(message)); }
+    friend bool operator==(const WireStep &, const WireStep &) = default;
+};
+
+//! The wire steps of `request` on `device`, in order (see each request), each with its message.
+std::vector<WireStep> wireSteps(const Request &request, const DeviceInfo &device);
+//! The kind of each step, in order.
+std::vector<CommandKind> stepKinds(const std::vector<WireStep> &steps);
 
 namespace outcome {
 //! What a read-back said of the changes a request made.
@@ -113,6 +127,10 @@ struct Refused : Stopped
 {
     v2::AckStatus status = v2::AckStatus::Ok;
     int field = -1; //!< the index in the step's block the device named; -1: none
+
+    //! That field's name in its block ("K_max", "wall_stiffness", "pc_damping_max", the cue's
+    //! "frequency"); empty when the device named none.
+    std::string_view fieldName() const;
 };
 //! `step` went unanswered after every resend.
 struct TimedOut : Stopped

@@ -112,18 +112,19 @@ QString SessionWording::rejection(const outcome::Refused &r)
     const QString status = v2::ackStatusName(r.status);
     if (r.field < 0)
         return tr("The device rejected %1: %2.").arg(commandName(r.step), status);
+    const QString name = QString::fromLatin1(r.fieldName());
     if (r.step == CommandKind::SetEffects) {
         return tr("The device rejected %1 (field %2): %3; its effects are unchanged.")
-            .arg(QString::fromLatin1(effectFieldName(r.field)), number(r.field), status);
+            .arg(name, number(r.field), status);
     }
     if (r.step == CommandKind::SetPassivity) {
         return tr("The device rejected %1 (field %2): %3; its passivity controller is unchanged.")
-            .arg(QString::fromLatin1(passivityFieldName(r.field)), number(r.field), status);
+            .arg(name, number(r.field), status);
     }
     if (r.step == CommandKind::Vibrate)
         return tr("The device rejected VIBRATE (field %1): %2.").arg(number(r.field), status);
     return tr("The device rejected %1 (field %2): %3; its parameters are unchanged.")
-        .arg(QString::fromLatin1(deviceFieldName(r.field)), number(r.field), status);
+        .arg(name, number(r.field), status);
 }
 
 // Cause, then consequence: the same shape for every step a device cannot carry.
@@ -255,9 +256,7 @@ QString SessionWording::commandFailureBrief(const Outcome &o)
                 const bool effects = isEffectCommand(r.step);
                 const bool passivity = isPassivityCommand(r.step);
                 QString reason = v2::ackStatusName(r.status);
-                const QString name = QString::fromLatin1(effects     ? effectFieldName(r.field)
-                                                         : passivity ? passivityFieldName(r.field)
-                                                                     : deviceFieldName(r.field));
+                const QString name = QString::fromLatin1(r.fieldName());
                 if (!name.isEmpty() && !reason.contains(name))
                     reason += u" (" + name + u')';
                 if (passivity)

@@ -195,10 +195,7 @@ bool TuningModel::pushFinished(const Outcome &outcome)
     } else {
         if (const auto *refused = std::get_if<outcome::Refused>(&outcome.result)) {
             m_failure = SyncState::Rejected;
-            const std::string_view field =
-                isEffectCommand(refused->step)      ? effectFieldName(refused->field)
-                : isPassivityCommand(refused->step) ? passivityFieldName(refused->field)
-                                                    : deviceFieldName(refused->field);
+            const std::string_view field = refused->fieldName();
             m_rejectedField = QString::fromLatin1(field.data(), qsizetype(field.size()));
         } else {
             m_failure = std::holds_alternative<outcome::TimedOut>(outcome.result)

@@ -135,6 +135,7 @@ private Q_SLOTS:
     void retriesResendTheSameBytesThenTimeOut();
     void lateAnswerToARetryIsIgnored();
     void setParamsIsReadBack();
+    void eachStepCarriesWhatItApplies();
     void aKnobsStepsNameItAndOnlyItsReplyAnswers();
     void readBackThatDiffersIsReported();
     void zeroReadBackCarriesTheNewTheta0();
@@ -225,6 +226,39 @@ void TestCommandQueue::setParamsIsReadBack()
     QVERIFY(r.pushed() && r.pushed()->params && !r.pushed()->effects);
     QCOMPARE(readBackOf(r), std::optional(outcome::ReadBack::Matches));
     QCOMPARE(r.received.params.value(), p);
+}
+
+void TestCommandQueue::eachStepCarriesWhatItApplies()
+{
+    // wireSteps(): the messages themselves, each with its part of the request.
+    DeviceParams p;
+    p.K_max = 0.6;
+    EffectParams e;
+    e.wall_stiffness = 2;
+    PassivityParams pc;
+    pc.pc_damping_max = 0.3;
+    QCOMPARE(wireSteps(request::Push{{p, e, pc}}, kFullDevice),
+             (std::vector<WireStep>{{v2::SetParams{p}},
+                                    {v2::GetParams{}},
+                                    {v2::SetEffects{e}},
+                                    {v2::GetEffects{}},
+                                    {v2::SetPassivity{pc}},
+                                    {v2::GetPassivity{}}}));
+    QCOMPARE(wireSteps(request::Read{}, kEffectsDevice),
+             (std::vector<WireStep>{{v2::GetParams{}}, {v2::GetEffects{}}}));
+    QCOMPARE(wireSteps(request::Zero{1}, kPlainDevice),
+             (std::vector<WireStep>{{v2::Zero{1}}, {v2::GetParams{1}}}));
+    QCOMPARE(wireSteps(request::Stream{250}, kPlainDevice),
+             (std::vector<WireStep>{{v2::SetStream{250}}}));
+    QCOMPARE(wireSteps(request::Vibrate{{0.1, 80, 0.5}}, kEffectsDevice),
+             (std::vector<WireStep>{{v2::Vibrate{0.1f, 80.f, 0.5f}}}));
+    QCOMPARE(stepKinds(wireSteps(request::Save{}, kPlainDevice)),
+             std::vector{CommandKind::SaveParams});
+    // The queue sends each step's message as it is.
+    Harness h;
+    h.enqueue(20, request::Vibrate{{0.1, 80, 0.5}, 2}, kEffectsDevice);
+    QCOMPARE(h.link.writes.constLast(),
+             v2::encodeFrame(h.lastSeq(), v2::Vibrate{0.1f, 80.f, 0.5f, 2}));
 }
 
 void TestCommandQueue::aKnobsStepsNameItAndOnlyItsReplyAnswers()
@@ -499,20 +533,27 @@ void TestCommandQueue::vibrateFinishesOnItsAck()
 
 void TestCommandQueue::effectRejectionsNameTheirField()
 {
-    // A field the block has is named; one beyond it (VIBRATE has three) names nothing.
-    for (const auto &[request, step, field, named] :
-         {std::tuple{Request{request::Push{{std::nullopt, EffectParams{}}}},
-                     CommandKind::SetEffects, quint8(6), 6},
-          std::tuple{Request{request::Vibrate{}}, CommandKind::Vibrate, quint8(1), 1},
-          std::tuple{Request{request::Vibrate{}}, CommandKind::Vibrate, quint8(5), -1}}) {
+    // A field the block has is named, by index and name; one beyond it (VIBRATE has three,
+    // 0xFE is a knob the device lacks) names nothing.
+    const Request params{request::Push{{DeviceParams{}, std::nullopt}}};
+    const Request effects{request::Push{{std::nullopt, EffectParams{}}}};
+    const Request passivity{request::Push{{std::nullopt, std::nullopt, PassivityParams{}}}};
+    for (const auto &[request, step, field, named, name] :
+         {std::tuple{params, CommandKind::SetParams, quint8(3), 3, "K_max"},
+          std::tuple{params, CommandKind::SetParams, v2::kAxisField, -1, ""},
+          std::tuple{effects, CommandKind::SetEffects, quint8(6), 6, "wall_damping"},
+          std::tuple{passivity, CommandKind::SetPassivity, quint8(0), 0, "pc_damping_max"},
+          std::tuple{Request{request::Vibrate{}}, CommandKind::Vibrate, quint8(1), 1, "frequency"},
+          std::tuple{Request{request::Vibrate{}}, CommandKind::Vibrate, quint8(5), -1, ""}}) {
         Harness h;
-        h.enqueue(14, request, kEffectsDevice);
+        h.enqueue(14, request, kFullDevice);
         h.ack(h.lastSeq(), v2::AckStatus::OutOfRange, field);
         const Outcome r = h.finished.value(0).outcome;
         const auto *refused = std::get_if<outcome::Refused>(&r.result);
         QVERIFY(refused);
         QCOMPARE(refused->step, step);
         QCOMPARE(refused->field, named);
+        QCOMPARE(refused->fieldName(), std::string_view(name));
         QVERIFY(h.acknowledged.isEmpty());
     }
 }

@@ -111,7 +111,7 @@ void TestSessionEffects::effectsOverPty()
     QVERIFY(pushed.pushed());
     QVERIFY(!pushed.pushed()->params && !pushed.pushed()->passivity);
     QVERIFY(sameOnWire(pushed.pushed()->effects.value(), fx));
-    QVERIFY((wireSteps(pushed.request, client.deviceInfo()) ==
+    QVERIFY((stepKinds(wireSteps(pushed.request, client.deviceInfo())) ==
              std::vector{CommandKind::SetEffects, CommandKind::GetEffects}));
     QCOMPARE(std::get<outcome::Done>(pushed.result).readBack, outcome::ReadBack::Matches);
     QVERIFY(sameOnWire(pushed.received.effects.value(), fx));
@@ -122,7 +122,8 @@ void TestSessionEffects::effectsOverPty()
     QVERIFY2(read.ok(), qPrintable(failure(read)));
     // The tuning: parameters and effects.
     QVERIFY(std::holds_alternative<request::Read>(read.request));
-    const std::vector<CommandKind> readSteps = wireSteps(read.request, client.deviceInfo());
+    const std::vector<CommandKind> readSteps =
+        stepKinds(wireSteps(read.request, client.deviceInfo()));
     QVERIFY(readSteps.size() >= 2);
     QCOMPARE(readSteps.at(0), CommandKind::GetParams);
     QCOMPARE(readSteps.at(1), CommandKind::GetEffects);
