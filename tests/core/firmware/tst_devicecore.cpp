@@ -3,6 +3,7 @@
 // the double build (the simulator's). Protocol semantics are covered through the simulator,
 // which runs this same core (tst_simulateddevice, tst_simulateddevicelink).
 #include "devicecoretest.h"
+#include "hostframes.h"
 
 #include "firmware/devicecore.h"
 #include "firmware/stsactuator.h"
@@ -62,12 +63,7 @@ template<typename T> struct Rig
         c.firmware = "test";
         return c;
     }
-    void send(std::uint8_t seq, const v2::Message &m)
-    {
-        v2::FrameBuffer b;
-        const std::size_t n = v2::encodeFrame(seq, m, b);
-        host.toDevice.push(std::span(b).first(n));
-    }
+    void send(std::uint8_t seq, const v2::Message &m) { sendToDevice(host, seq, m); }
     //! Runs one cycle 1 ms after the previous one, and the link context after it.
     const fw::CycleRecord<T> &cycle()
     {
@@ -76,14 +72,7 @@ template<typename T> struct Rig
         core.serviceHost();
         return r;
     }
-    QList<v2::Frame> received()
-    {
-        std::array<std::uint8_t, 4096> bytes;
-        QList<v2::Frame> frames;
-        for (std::size_t n; (n = host.toHost.pop(bytes)) > 0;)
-            decoder.feed(QByteArrayView(bytes.data(), qsizetype(n)), frames);
-        return frames;
-    }
+    QList<v2::Frame> received() { return framesFromDevice(host, decoder); }
 
     CannedServo servo;
     FixedHostPort host;

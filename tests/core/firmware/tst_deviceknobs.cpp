@@ -2,6 +2,7 @@
 // fault, a block or a feedback value of one knob is seen to reach that knob alone; every knob
 // in one TELEMETRY frame. The same core on real ptys: tests/core/fwhost/tst_firmwarehostknobs.
 #include "devicecoretest.h"
+#include "hostframes.h"
 
 #include "firmware/devicecore.h"
 #include "firmware/stsactuator.h"
@@ -43,25 +44,14 @@ struct FourKnobs
         c.firmware = "knobs";
         return c;
     }
-    void send(std::uint8_t seq, const v2::Message &m)
-    {
-        v2::FrameBuffer b;
-        host.toDevice.push(std::span(b).first(v2::encodeFrame(seq, m, b)));
-    }
+    void send(std::uint8_t seq, const v2::Message &m) { sendToDevice(host, seq, m); }
     void cycle()
     {
         clock.now += 1000;
         core.controlCycle(clock.now);
         core.serviceHost();
     }
-    QList<v2::Frame> received()
-    {
-        std::array<std::uint8_t, 4096> bytes;
-        QList<v2::Frame> frames;
-        for (std::size_t n; (n = host.toHost.pop(bytes)) > 0;)
-            decoder.feed(QByteArrayView(bytes.data(), qsizetype(n)), frames);
-        return frames;
-    }
+    QList<v2::Frame> received() { return framesFromDevice(host, decoder); }
 
     std::array<Knob, 4> knobs;
     FixedHostPort host;
