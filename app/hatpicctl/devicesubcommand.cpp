@@ -26,12 +26,17 @@ SubcommandText withPortHelp(SubcommandText text)
 
 } // namespace
 
-DeviceSubcommand::DeviceSubcommand(SubcommandText text) : Subcommand(withPortHelp(std::move(text)))
+DeviceSubcommand::DeviceSubcommand(SubcommandText text, Knobs knobs)
+    : Subcommand(withPortHelp(std::move(text))), m_knobs(knobs)
 {}
 
 void DeviceSubcommand::addOptions(QCommandLineParser &parser)
 {
     addDeviceOptions(parser);
+    if (m_knobs == Knobs::One)
+        parser.addOption(
+            {u"knob"_s, u"The knob, 1 … %1, of a device with several (default 1)."_s.arg(kMaxAxes),
+             u"N"_s});
     addCommandOptions(parser);
 }
 
@@ -45,6 +50,8 @@ int DeviceSubcommand::run(const QCommandLineParser &parser)
     auto options = deviceOptions(parser);
     if (!options)
         return ExitBadUsage;
+    if (const int code = readKnob(parser); code != ExitSuccess)
+        return code;
     if (const int code = prepare(parser, *options); code != ExitSuccess)
         return code;
     DeviceRunner runner(*options);
@@ -58,17 +65,10 @@ void DeviceSubcommand::addJsonOption(QCommandLineParser &parser)
     parser.addOption({u"json"_s, u"Print a profile (JSON)."_s});
 }
 
-void DeviceSubcommand::addKnobOption(QCommandLineParser &parser)
+int DeviceSubcommand::readKnob(const QCommandLineParser &parser)
 {
-    parser.addOption({u"knob"_s,
-                      u"The knob, 1 … %1, of a device with several (default 1)."_s.arg(kMaxAxes),
-                      u"N"_s});
-}
-
-int DeviceSubcommand::readKnob(const QCommandLineParser &parser, Knob &knob)
-{
-    knob = 0;
-    if (!parser.isSet(u"knob"_s))
+    m_knob = 0;
+    if (m_knobs == Knobs::None || !parser.isSet(u"knob"_s))
         return ExitSuccess;
     const QString text = parser.value(u"knob"_s);
     bool ok = false;
@@ -78,13 +78,13 @@ int DeviceSubcommand::readKnob(const QCommandLineParser &parser, Knob &knob)
                    unreadNumber(u"a whole number from 1 to %1"_s.arg(kMaxAxes), text, true));
         return ExitBadUsage;
     }
-    knob = Knob(number - 1);
+    m_knob = Knob(number - 1);
     return ExitSuccess;
 }
 
-QString DeviceSubcommand::ofKnob(Knob knob)
+QString DeviceSubcommand::ofKnob() const
 {
-    return knob ? u" of knob %1"_s.arg(int(knob) + 1) : QString();
+    return m_knob ? u" of knob %1"_s.arg(int(m_knob) + 1) : QString();
 }
 
 } // namespace hatpic::cli

@@ -11,8 +11,11 @@ class DeviceRunner;
 class DeviceSubcommand : public Subcommand
 {
 public:
+    //! Whether the subcommand reaches one knob of several (--knob N: get, set, zero, vibrate).
+    enum class Knobs { None, One };
+
     //! The description gets the paragraph on --port every device subcommand ends with.
-    explicit DeviceSubcommand(SubcommandText text);
+    explicit DeviceSubcommand(SubcommandText text, Knobs knobs = Knobs::None);
 
     void addOptions(QCommandLineParser &parser) final;
     int run(const QCommandLineParser &parser) final;
@@ -28,13 +31,18 @@ protected:
 
     //! --json, "Print a profile (JSON).": get, set and zero.
     static void addJsonOption(QCommandLineParser &parser);
-    //! --knob N: get, set, zero and vibrate, on a device with several knobs.
-    static void addKnobOption(QCommandLineParser &parser);
-    //! Reads --knob into m_knob (absent: knob 1); bad usage (4, with one sentence) when it is
-    //! not a knob's number. The device's own count is checked once it answered.
-    static int readKnob(const QCommandLineParser &parser, Knob &knob);
+    //! The knob --knob named (Knobs::One; 0 for knob 1, also when absent), read before
+    //! prepare(). The device's own count is checked once it answered.
+    Knob knob() const { return m_knob; }
     //! " of knob N" for knob 2 and on, else nothing: the sentences of a command for one knob.
-    static QString ofKnob(Knob knob);
+    QString ofKnob() const;
+
+private:
+    //! Reads --knob into m_knob; bad usage (4, with one sentence) when it is not a knob's number.
+    int readKnob(const QCommandLineParser &parser);
+
+    Knobs m_knobs;
+    Knob m_knob = 0;
 };
 
 } // namespace hatpic::cli

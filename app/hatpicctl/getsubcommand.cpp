@@ -34,25 +34,17 @@ public:
                    "capability is asked for its passivity controller (GET_PASSIVITY): two more\n"
                    "lines (pc_damping_max, pc_reserve_max), and the profile's device.passivity.\n"
                    "The profile carries every block the device has, defaults included.\n"
-                   "A device with several knobs keeps a tuning per knob: --knob N reads knob N's."_s})
+                   "A device with several knobs keeps a tuning per knob: --knob N reads knob N's."_s},
+              Knobs::One)
     {}
 
 protected:
-    void addCommandOptions(QCommandLineParser &parser) override
-    {
-        addKnobOption(parser);
-        addJsonOption(parser);
-    }
-
-    int prepare(const QCommandLineParser &parser, DeviceOptions &) override
-    {
-        return readKnob(parser, m_knob);
-    }
+    void addCommandOptions(QCommandLineParser &parser) override { addJsonOption(parser); }
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         Outcome result;
-        if (const int code = runner.runCommand(request::Read{m_knob}, &result); code)
+        if (const int code = runner.runCommand(request::Read{knob()}, &result); code)
             return code;
         if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
@@ -61,7 +53,7 @@ protected:
         const DeviceTuning &tuning = result.received;
         const DeviceInfo info = runner.client().deviceInfo();
         const auto refuse = [this](const QString &what, const QString &problem) {
-            printError(u"The device reported " + what + ofKnob(m_knob) + u" that are not valid: " +
+            printError(u"The device reported " + what + ofKnob() + u" that are not valid: " +
                        problem + u'.');
             return ExitNoDevice;
         };
@@ -80,9 +72,6 @@ protected:
         writeOut(tuningOutput(tuning, info, parser.isSet(u"json"_s)));
         return ExitSuccess;
     }
-
-private:
-    Knob m_knob = 0;
 };
 
 } // namespace

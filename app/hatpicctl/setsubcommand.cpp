@@ -126,7 +126,8 @@ public:
                    "alone (its blocks are read first, and --set starts from them).\n"
                    "Names: "_s +
                    namesOf(kDeviceFields) + u"\nEffects: " + namesOf(kEffectFields) +
-                   u"\nPassivity: " + namesOf(kPassivityFields)})
+                   u"\nPassivity: " + namesOf(kPassivityFields)},
+              Knobs::One)
     {}
 
 protected:
@@ -135,14 +136,11 @@ protected:
         parser.addOption({u"profile"_s, u"Profile whose device parameters are sent."_s, u"FILE"_s});
         parser.addOption({u"set"_s, u"Set one parameter, e.g. K_max=0.5 (SI units). Repeatable."_s,
                           u"NAME=VALUE"_s});
-        addKnobOption(parser);
         addJsonOption(parser);
     }
 
     int prepare(const QCommandLineParser &parser, DeviceOptions &) override
     {
-        if (const int code = readKnob(parser, m_knob); code)
-            return code;
         m_assignments.clear();
         for (const QString &text : parser.values(u"set"_s)) {
             const auto assignment = parseAssignment(text);
@@ -198,7 +196,7 @@ protected:
                 none.effects = EffectParams{};
             else
                 none.passivity = PassivityParams{};
-            if (const int code = runner.runCommand(request::Push{none, m_knob}, &refused); code)
+            if (const int code = runner.runCommand(request::Push{none, knob()}, &refused); code)
                 return code;
             return DeviceRunner::reportOutcome(refused);
         }
@@ -211,9 +209,9 @@ protected:
         // What --set starts from without a profile: the device's own. The session follows
         // knob 1's tuning; another knob's is read here (which also checks the device has it).
         DeviceTuning held;
-        if (!m_profile || m_knob) {
+        if (!m_profile || knob()) {
             Outcome read;
-            if (const int code = runner.runCommand(request::Read{m_knob}, &read); code)
+            if (const int code = runner.runCommand(request::Read{knob()}, &read); code)
                 return code;
             if (const int code = DeviceRunner::reportOutcome(read); code)
                 return code;
@@ -247,10 +245,10 @@ protected:
         }
 
         // Shown as `get` shows it: the read-back of the push, else what was read before.
-        DeviceTuning shown = m_knob ? held : runner.client().deviceTuning();
+        DeviceTuning shown = knob() ? held : runner.client().deviceTuning();
         if (tuning.params || tuning.effects || tuning.passivity) {
             Outcome result;
-            const int code = runner.runCommand(request::Push{tuning, m_knob}, &result);
+            const int code = runner.runCommand(request::Push{tuning, knob()}, &result);
             if (code) {
                 // The link went after part of the push: say what it had changed.
                 if (const QString applied = SessionWording::appliedBeforeFailure(result);
@@ -379,7 +377,6 @@ private:
 
     std::optional<Profile> m_profile;
     std::vector<Assignment> m_assignments;
-    Knob m_knob = 0;
 };
 
 } // namespace

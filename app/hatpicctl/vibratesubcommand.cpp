@@ -39,7 +39,8 @@ public:
                    "replaces the running one. Fire and forget: the command returns once the\n"
                    "device has acknowledged, not when the cue ends. The published firmware and\n"
                    "devices without the effects capability cannot vibrate (exit 2). On a\n"
-                   "device with several knobs, --knob N plays it on knob N alone."_s})
+                   "device with several knobs, --knob N plays it on knob N alone."_s},
+              Knobs::One)
     {}
 
 protected:
@@ -48,13 +49,10 @@ protected:
         parser.addOption({u"amplitude"_s, u"Amplitude a in N·m (required)."_s, u"NM"_s});
         parser.addOption({u"frequency"_s, u"Frequency f in Hz (required)."_s, u"HZ"_s});
         parser.addOption({u"duration"_s, u"Duration d in s (required)."_s, u"S"_s});
-        addKnobOption(parser);
     }
 
     int prepare(const QCommandLineParser &parser, DeviceOptions &) override
     {
-        if (const int code = readKnob(parser, m_knob); code)
-            return code;
         const std::array options3 = {std::pair{u"amplitude"_s, &m_cue.amplitude},
                                      std::pair{u"frequency"_s, &m_cue.frequency},
                                      std::pair{u"duration"_s, &m_cue.duration}};
@@ -89,11 +87,11 @@ protected:
     {
         Outcome result;
         const Vibration cue = m_cue;
-        if (const int code = runner.runCommand(request::Vibrate{cue, m_knob}, &result); code)
+        if (const int code = runner.runCommand(request::Vibrate{cue, knob()}, &result); code)
             return code;
         if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
-        printNote((m_knob ? u"Knob %1 plays the cue: "_s.arg(int(m_knob) + 1)
+        printNote((knob() ? u"Knob %1 plays the cue: "_s.arg(int(knob()) + 1)
                           : u"The device plays the cue: "_s) +
                   compactNumberText(cue.amplitude) + u" N·m at " +
                   compactNumberText(cue.frequency) + u" Hz for " + compactNumberText(cue.duration) +
@@ -103,7 +101,6 @@ protected:
 
 private:
     Vibration m_cue;
-    Knob m_knob = 0;
 };
 
 } // namespace

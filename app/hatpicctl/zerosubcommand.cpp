@@ -27,38 +27,27 @@ public:
                .description =
                    u"Sends ZERO, then prints the parameters read back (as 'get' does), whose\n"
                    "theta0 is the new center. Not saved across power-up until 'save'.\n"
-                   "On a device with several knobs, --knob N zeroes knob N alone."_s})
+                   "On a device with several knobs, --knob N zeroes knob N alone."_s},
+              Knobs::One)
     {}
 
 protected:
-    void addCommandOptions(QCommandLineParser &parser) override
-    {
-        addKnobOption(parser);
-        addJsonOption(parser);
-    }
-
-    int prepare(const QCommandLineParser &parser, DeviceOptions &) override
-    {
-        return readKnob(parser, m_knob);
-    }
+    void addCommandOptions(QCommandLineParser &parser) override { addJsonOption(parser); }
 
     int runConnected(DeviceRunner &runner, const QCommandLineParser &parser) override
     {
         Outcome result;
-        if (const int code = runner.runCommand(request::Zero{m_knob}, &result); code)
+        if (const int code = runner.runCommand(request::Zero{knob()}, &result); code)
             return code;
         if (const int code = DeviceRunner::reportOutcome(result); code)
             return code;
         const DeviceParams params = result.received.params.value_or(DeviceParams{});
-        printNote(u"The center" + ofKnob(m_knob) + u" is now theta0 = " +
+        printNote(u"The center" + ofKnob() + u" is now theta0 = " +
                   compactNumberText(params.theta0) + u" rad.");
         writeOut(tuningOutput(DeviceTuning{params, std::nullopt}, runner.client().deviceInfo(),
                               parser.isSet(u"json"_s)));
         return ExitSuccess;
     }
-
-private:
-    Knob m_knob = 0;
 };
 
 } // namespace

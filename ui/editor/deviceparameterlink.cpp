@@ -151,12 +151,14 @@ void DeviceParameterLink::finishPush(const DeviceTuning &before, const Outcome &
         // What changed is what the device held against what travelled (float32, bounds kept
         // by the session's one rounding), never the editor's doubles: the walls' ±π travel as
         // the float just inside π, which the device already held.
-        const QString change =
-            knobPrefix(knobOf(outcome.request)) + describeTuningChange(before, *outcome.pushed());
-        const bool changed = change.size() > knobPrefix(knobOf(outcome.request)).size();
-        m_lastMessage = changed ? tr("Pushed: %1").arg(change) : tr("Pushed (no change).");
-        if (changed)
-            Q_EMIT deviceChanged(change);
+        const QString change = describeTuningChange(before, *outcome.pushed());
+        if (change.isEmpty()) {
+            m_lastMessage = tr("Pushed (no change).");
+        } else {
+            const QString what = knobPrefix(knobOf(outcome.request)) + change;
+            m_lastMessage = tr("Pushed: %1").arg(what);
+            Q_EMIT deviceChanged(what);
+        }
     } else {
         m_lastMessage = tr("Push failed: %1").arg(SessionWording::commandFailure(outcome));
     }

@@ -26,6 +26,16 @@ struct Rig
     DeviceClient client;
     ParameterEditor editor;
     DeviceParameterLink link{&client, &editor};
+
+    //! Connects to the device on `port` as the window does (the link prepares the options).
+    void connectTo(const QString &port)
+    {
+        ConnectOptions options;
+        options.port = port;
+        options.autoReconnect = false;
+        link.prepare(options);
+        client.connectDevice(options);
+    }
 };
 
 QComboBox *knobBox(ParameterEditor &editor)
@@ -61,11 +71,7 @@ void TestKnobTuning::eachKnobIsTunedOnItsOwn()
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
 
     Rig rig;
-    ConnectOptions options;
-    options.port = host.path();
-    options.autoReconnect = false;
-    rig.link.prepare(options);
-    rig.client.connectDevice(options);
+    rig.connectTo(host.path());
     QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kTimeoutMs);
     QCOMPARE(rig.client.deviceInfo().axes, quint8(2));
     QComboBox *box = knobBox(rig.editor);
@@ -126,10 +132,7 @@ void TestKnobTuning::aSingleKnobHasNoSelector()
                     QStringList{u"--servo"_s, servo.path(), u"--quiet"_s} + patientBus());
     QVERIFY2(!host.path().isEmpty(), qPrintable(host.errors()));
     Rig rig;
-    ConnectOptions options;
-    options.port = host.path();
-    options.autoReconnect = false;
-    rig.client.connectDevice(options);
+    rig.connectTo(host.path());
     QTRY_COMPARE_WITH_TIMEOUT(rig.editor.syncState(), SyncState::InSync, kTimeoutMs);
     QCOMPARE(rig.client.deviceInfo().axes, quint8(1));
     QVERIFY(knobBox(rig.editor)->isHidden());
