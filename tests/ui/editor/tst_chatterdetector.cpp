@@ -8,6 +8,7 @@
 #include "sim/offlinesimulation.h"
 #include "simulator/simulatorpanel.h"
 
+#include <QComboBox>
 #include <QLabel>
 #include <QTest>
 
@@ -57,6 +58,7 @@ private Q_SLOTS:
     void slowCrossingsAreNotChatter();
     void noDeadZoneNothingToWatch();
     void warningInTheDerivedFigures();
+    void watchesTheTunedKnob();
 };
 
 void TestChatterDetector::oldNotchyChattersUnderTheGentleHand()
@@ -153,6 +155,42 @@ void TestChatterDetector::warningInTheDerivedFigures()
         rest.append(at(i / 1000.0, 0.0));
     watch.addSamples(rest);
     QVERIFY(!figures->isShowingChatter());
+}
+
+void TestChatterDetector::watchesTheTunedKnob()
+{
+    // A device with two knobs: knob 1 still, knob 2 buzzing at its dead zone's edge.
+    ParameterEditor editor;
+    DeviceParams device;
+    device.K_max = 1.5;
+    device.Q_dz = 0.04;
+    editor.setDeviceTuning({device, std::nullopt});
+    editor.setKnobs(2);
+    ChatterWatch watch(&editor);
+    DerivedFiguresView *figures = editor.derivedFiguresView();
+    const auto batch = [](int from, int to) {
+        SampleBatch out;
+        for (int i = from; i <= to; ++i) {
+            const double t = i / 1000.0;
+            Sample s = at(t, 0.0);
+            auto board = std::make_shared<BoardSample>();
+            board->axes = 2;
+            board->more[0].theta = 0.04 + 0.002 * std::sin(2 * 3.14159265358979 * 14 * t);
+            s.board = std::move(board);
+            out.append(s);
+        }
+        return out;
+    };
+    watch.addSamples(batch(0, 1500)); // knob 1 tuned: it is still
+    QVERIFY(!figures->isShowingChatter());
+
+    auto *box = editor.findChild<QComboBox *>(u"combo_knob"_s);
+    QVERIFY(box);
+    box->setCurrentIndex(1);
+    Q_EMIT box->activated(1);
+    QCOMPARE(editor.knob(), 1);
+    watch.addSamples(batch(1501, 3000)); // knob 2 tuned: its θ buzzes
+    QVERIFY(figures->isShowingChatter());
 }
 
 QTEST_MAIN(TestChatterDetector)
