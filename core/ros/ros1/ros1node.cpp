@@ -66,7 +66,10 @@ private:
 class Ros1Node final : public Node
 {
 public:
-    explicit Ros1Node(Runtime &runtime) : m_runtime(runtime) {}
+    explicit Ros1Node(Runtime &runtime) : m_runtime(runtime) { m_runtime.attach(); }
+    ~Ros1Node() override { m_runtime.detach(); }
+    Ros1Node(const Ros1Node &) = delete;
+    Ros1Node &operator=(const Ros1Node &) = delete;
 
     std::unique_ptr<Publisher> advertise(const std::string &topic, MessageType type, const Qos &qos,
                                          std::string *error) override

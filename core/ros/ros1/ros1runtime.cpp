@@ -200,6 +200,21 @@ void Runtime::remove(const std::shared_ptr<SubscriptionSlot> &slot)
     }
 }
 
+void Runtime::attach()
+{
+    const std::lock_guard lock(m_mutex);
+    if (m_users++ == 0) {
+        m_checkNow = true; // what became of the master meanwhile is checked at once
+        m_wake.notify_all();
+    }
+}
+
+void Runtime::detach()
+{
+    const std::lock_guard lock(m_mutex);
+    --m_users;
+}
+
 void Runtime::atExit()
 {
     if (g_runtime)
@@ -238,8 +253,11 @@ void Runtime::run()
 {
     std::unique_lock lock(m_mutex);
     while (!m_stopping) {
+        const bool check =
+            m_users > 0 && (m_checkNow || std::chrono::steady_clock::now() >= m_nextCheck);
+        m_checkNow = false;
         lock.unlock();
-        if (std::chrono::steady_clock::now() >= m_nextCheck) {
+        if (check) {
             checkMaster();
             m_nextCheck = std::chrono::steady_clock::now() + kCheckInterval;
         }
@@ -247,11 +265,16 @@ void Runtime::run()
             createPending();
         dropRetired();
         lock.lock();
-        m_wake.wait_until(lock, m_nextCheck, [this] {
+        const auto woken = [this] {
             const bool pending = !m_newPublishers.empty() || !m_newSubscriptions.empty();
-            return m_stopping || (pending && m_state == State::Connected) ||
-                   !m_retiredPublishers.empty() || !m_retiredSubscribers.empty();
-        });
+            return m_stopping || (m_checkNow && m_users > 0) ||
+                   (pending && m_state == State::Connected) || !m_retiredPublishers.empty() ||
+                   !m_retiredSubscribers.empty();
+        };
+        if (m_users > 0)
+            m_wake.wait_until(lock, m_nextCheck, woken);
+        else
+            m_wake.wait(lock, woken); // no master to watch for no one
     }
 }
 

@@ -99,6 +99,12 @@ public:
     void remove(const std::shared_ptr<PublisherSlot> &slot);
     void remove(const std::shared_ptr<SubscriptionSlot> &slot);
 
+    //! A Node on this runtime opens (attach) and closes (detach). With none open the runtime's
+    //! thread stops watching the master: it has no one to tell, and the process may be exiting,
+    //! when rosconsole's objects can already be gone. The first attach checks at once.
+    void attach();
+    void detach();
+
 private:
     Runtime(std::string name, std::string nameSpace);
     static void atExit();
@@ -129,6 +135,8 @@ private:
     mutable std::mutex m_mutex; //!< guards what follows
     std::condition_variable m_wake;
     bool m_stopping = false;
+    int m_users = 0;         //!< Nodes open on this runtime
+    bool m_checkNow = false; //!< the first Node opened: check the master at once
     std::vector<std::shared_ptr<PublisherSlot>> m_publishers;
     std::vector<std::shared_ptr<SubscriptionSlot>> m_subscriptions;
     std::vector<std::shared_ptr<PublisherSlot>> m_newPublishers;

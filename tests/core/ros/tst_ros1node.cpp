@@ -465,6 +465,23 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(lastName(), u"again"_s, 30000);
     }
 
+    // With no Node open the runtime watches no master (no one to tell, and at the process's
+    // exit rosconsole may already be gone); the next Node to open hears what happened at once.
+    void aClosedNodeWatchesNoMaster()
+    {
+        const QString lost = u"Lost the ROS 1 master at "_s + m_core.uri();
+        const int before = m_log.count(lost);
+        m_node.reset();
+        m_core.stop();
+        QTest::qWait(2500); // two checks' time
+        QCOMPARE(m_log.count(lost), before);
+
+        std::string error;
+        m_node = Node::open({RosVersion::Ros1, "hatpic_bridge"}, &error);
+        QVERIFY2(m_node, error.c_str());
+        QTRY_COMPARE_WITH_TIMEOUT(m_log.count(lost), before + 1, 2000);
+    }
+
 private:
     bool startPeer()
     {
