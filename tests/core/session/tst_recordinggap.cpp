@@ -283,7 +283,7 @@ void TestRecordingGap::unreadParametersResumeAfterAWait()
     QVERIFY(h.recording.last().waiting);
     const double tLost = h.lastT();
     QTRY_VERIFY_WITH_TIMEOUT(h.noticed(SessionNotice::Kind::RecordingResumed),
-                             kConnectTimeoutMs + 1000 * int(SamplePipeline::kResumeWait_s));
+                             kConnectTimeoutMs + 1000 * int(RecordingController::kResumeWait_s));
     QTRY_VERIFY_WITH_TIMEOUT(h.recording.last().samples > 0 && !h.recording.last().waiting,
                              kConnectTimeoutMs);
     const double tResumed = h.lastT();
@@ -303,7 +303,7 @@ void TestRecordingGap::unreadParametersResumeAfterAWait()
     const auto firstSampleAfter = std::find_if(h.samples.cbegin(), h.samples.cend(),
                                                [&](const Sample &s) { return s.t_s > tLost; });
     QVERIFY(firstSampleAfter != h.samples.cend());
-    QVERIFY(firstRowAfter - firstSampleAfter->t_s >= SamplePipeline::kResumeWait_s);
+    QVERIFY(firstRowAfter - firstSampleAfter->t_s >= RecordingController::kResumeWait_s);
 }
 
 void TestRecordingGap::noReconnectClosesTheRecording()

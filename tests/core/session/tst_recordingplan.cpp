@@ -1,6 +1,7 @@
 // The sample pipeline carries out a RecordingPlan: armed until θ crosses or a push takes
 // effect, the pre-trigger span from the recent samples, a fixed length that closes the file
-// itself (whole and readable), calling off an armed recording, and the recent samples' bound.
+// itself (whole and readable), calling off an armed recording, and the recent samples' bound;
+// the recording controller's one state through all of it (idle, armed, open, waiting).
 #include "session/samplepipeline.h"
 #include "telemetry/recordingreader.h"
 
@@ -44,6 +45,7 @@ private Q_SLOTS:
     void nowWithLengthClosesItself();
     void cancelArmed();
     void recentSamplesAreBounded();
+    void oneStateAtATime();
 
 private:
     QString path(const char *name) const { return m_dir.filePath(QLatin1String(name)); }
@@ -177,6 +179,57 @@ void TestRecordingPlan::recentSamplesAreBounded()
     QCOMPARE(read.recording->events.size(), 1);
     QCOMPARE(read.recording->events[0].t_s, 15.001);
     QCOMPARE(read.recording->events[0].text, QStringLiteral("trigger: start"));
+}
+
+// The controller is in one of its four states, each with its own facts, and says which.
+void TestRecordingPlan::oneStateAtATime()
+{
+    using namespace recording;
+    SamplePipeline pipeline;
+    const RecordingController &rec = pipeline.recording();
+    QVERIFY(std::holds_alternative<Idle>(rec.state()));
+    pushRange(pipeline, 0, 100);
+
+    RecordingPlan plan;
+    plan.start = RecordingPlan::Start::Threshold;
+    plan.level = 0.2;
+    plan.duration_s = 1.0;
+    DeviceInfo device;
+    device.deviceId = 7;
+    pipeline.startRecording(path("states.csv"), QStringLiteral("test"), device, plan);
+    const auto *armed = std::get_if<Armed>(&rec.state());
+    QVERIFY(armed);
+    QCOMPARE(armed->trigger.plan().level, 0.2);
+    QCOMPARE(armed->device.deviceId, 7u);
+
+    pushRange(pipeline, 101, 300); // crosses 0.2 at 0.2 s: open until 1.2 s
+    const auto *open = std::get_if<Open>(&rec.state());
+    QVERIFY(open);
+    QCOMPARE(open->stopAt, std::optional(1.2));
+    QCOMPARE(open->device.deviceId, 7u);
+
+    // The link goes while the session reconnects: it waits, with what held at the loss.
+    DeviceParams held;
+    held.K_max = 0.45;
+    pipeline.tuningReceived({held, std::nullopt, std::nullopt});
+    pipeline.connectionEnded({}, true);
+    const auto *waiting = std::get_if<Waiting>(&rec.state());
+    QVERIFY(waiting);
+    QVERIFY(!waiting->reconnected);
+    QCOMPARE(waiting->held.params->K_max, 0.45);
+    QCOMPARE(waiting->open.stopAt, std::optional(1.2)); // what resumes
+
+    // The same device is back and tells its parameters: open again, its length kept.
+    pipeline.connectionStarted(device);
+    QVERIFY(std::holds_alternative<Waiting>(rec.state())); // its parameters not told yet
+    QVERIFY(std::get<Waiting>(rec.state()).reconnected);
+    pipeline.tuningReceived({held, std::nullopt, std::nullopt});
+    open = std::get_if<Open>(&rec.state());
+    QVERIFY(open);
+    QCOMPARE(open->stopAt, std::optional(1.2));
+
+    pipeline.stopRecording();
+    QVERIFY(std::holds_alternative<Idle>(rec.state()));
 }
 
 QTEST_GUILESS_MAIN(TestRecordingPlan)
