@@ -1,16 +1,18 @@
 #include "blindtest/blindrunner.h"
 
-#include "editor/parametereditor.h"
 #include "profiles/profilecontroller.h"
-
-#include <QAction>
+#include "tuning/tuningmodel.h"
 
 namespace hatpic {
 
-BlindRunner::BlindRunner(ProfileController *profiles, ParameterEditor *editor, QObject *parent)
-    : QObject(parent), m_profiles(profiles), m_editor(editor)
+BlindRunner::BlindRunner(ProfileController *profiles, TuningModel *model, QObject *parent)
+    : QObject(parent), m_profiles(profiles), m_model(model)
 {
-    connect(m_editor->model(), &TuningModel::syncChanged, this, &BlindRunner::onSync);
+    // A push whose read-back went unanswered comes in sync with a later read.
+    connect(m_model, &TuningModel::syncChanged, this, [this] {
+        if (m_readBackLate)
+            onPushed();
+    });
 }
 
 BlindRunner::~BlindRunner() = default;
@@ -29,7 +31,7 @@ QString BlindRunner::readiness() const
 {
     if (!m_profiles->isSlotUsed(0) || !m_profiles->isSlotUsed(1))
         return tr("Load two profiles first: switch A/B (Ctrl+B) to start B, then change it.");
-    if (!m_editor->canPush())
+    if (!m_model->canPush())
         return tr("Connect to a device that takes parameters first.");
     for (int slot : {0, 1}) {
         const Profile p = m_profiles->slotProfile(slot);
@@ -83,24 +85,25 @@ void BlindRunner::present(int interval)
 {
     m_interval = interval;
     const BlindTrial *trial = m_study->current();
-    // Switched first (which shows the slot as edited), then Preparing: onSync waits for the
-    // answer to this push only.
+    // Switched first (which shows the slot as edited), then Preparing: this push's outcome
+    // decides.
     m_profiles->activateSlot(trial->order[std::size_t(interval - 1)], false);
     setPhase(Phase::Preparing);
-    if (!m_editor->pushAction()->isEnabled()) {
-        stop(tr("Cannot push: %1").arg(m_editor->syncText()));
-        return;
-    }
-    m_editor->pushAction()->trigger(); // the answer arrives through onSync
+    m_readBackLate = false;
+    if (!m_model->push([this](const Outcome &) { onPushed(); }))
+        stop(tr("Cannot push: %1").arg(m_model->syncText()));
 }
 
-void BlindRunner::onSync()
+void BlindRunner::onPushed()
 {
     if (m_phase != Phase::Preparing)
         return;
-    switch (m_editor->syncState()) {
+    m_readBackLate = false;
+    switch (m_model->syncState()) {
     case SyncState::Pushing:
+        return;
     case SyncState::AwaitingReadback:
+        m_readBackLate = true;
         return;
     case SyncState::InSync:
         if (m_interval == 1) {
@@ -112,7 +115,7 @@ void BlindRunner::onSync()
         }
         return;
     default:
-        stop(tr("The device did not take the parameters: %1").arg(m_editor->syncText()));
+        stop(tr("The device did not take the parameters: %1").arg(m_model->syncText()));
         return;
     }
 }
@@ -158,7 +161,7 @@ void BlindRunner::stop(const QString &error)
 
 void BlindRunner::end()
 {
-    // The editor shows the slot it showed before; the device keeps the last one presented.
+    // The window shows the slot it showed before; the device keeps the last one presented.
     m_profiles->activateSlot(m_slotBefore, false);
     Q_EMIT runningChanged(false);
 }

@@ -1,8 +1,8 @@
 // Runs a blind A/B study on the device: for each trial it activates the slot of interval 1,
-// pushes it through the editor's normal Push and waits for the ACK and the matching read-back
-// (the editor's "in sync") before the interval starts; Space (next()) does the same for
-// interval 2, then the participant's answer (1 or 2) is recorded and the trials file rewritten
-// (atomically) before the next trial. No widgets: BlindDialog shows what it says.
+// pushes it (TuningModel::push, as the editor's Push does) and waits for the ACK and the
+// matching read-back (the model's "in sync") before the interval starts; Space (next()) does the
+// same for interval 2, then the participant's answer (1 or 2) is recorded and the trials file
+// rewritten (atomically) before the next trial. No widgets: BlindDialog shows what it says.
 #pragma once
 
 #include "study/blindstudy.h"
@@ -14,8 +14,8 @@
 
 namespace hatpic {
 
-class ParameterEditor;
 class ProfileController;
+class TuningModel;
 
 class BlindRunner : public QObject
 {
@@ -31,7 +31,8 @@ public:
     };
     Q_ENUM(Phase)
 
-    BlindRunner(ProfileController *profiles, ParameterEditor *editor, QObject *parent = nullptr);
+    //! Neither is owned: the window's profiles and tuning.
+    BlindRunner(ProfileController *profiles, TuningModel *model, QObject *parent = nullptr);
     ~BlindRunner() override;
 
     //! Why a study cannot start now ("" when it can): both slots loaded and valid, a device
@@ -65,13 +66,15 @@ Q_SIGNALS:
 
 private:
     void present(int interval);
-    void onSync();
+    //! The push of the interval's slot ended (or its late read-back came): in sync or not.
+    void onPushed();
     void setPhase(Phase phase);
     void stop(const QString &error);
     void end();
 
     ProfileController *m_profiles;
-    ParameterEditor *m_editor;
+    TuningModel *m_model;
+    bool m_readBackLate = false; //!< the push was taken, its read-back unanswered: a read will do
     std::unique_ptr<BlindStudy> m_study;
     QString m_path;
     QString m_error;

@@ -17,19 +17,19 @@ QString knobPrefix(Knob knob)
 
 } // namespace
 
-DeviceParameterLink::DeviceParameterLink(DeviceClient *client, ParameterEditor *editor,
-                                         QObject *parent)
-    : QObject(parent), m_client(client), m_editor(editor)
+DeviceParameterLink::DeviceParameterLink(DeviceClient *client, TuningModel *model,
+                                         ParameterEditor *editor, QObject *parent)
+    : QObject(parent), m_client(client), m_model(model), m_editor(editor)
 {
-    connect(m_editor, &ParameterEditor::pushRequested, this, &DeviceParameterLink::onPushRequested);
+    connect(m_model, &TuningModel::pushRequested, this, &DeviceParameterLink::onPushRequested);
     connect(m_editor, &ParameterEditor::vibrateRequested, this, [this](const Vibration &v) {
         send(request::Vibrate{v, m_knob});
     });
     connect(m_editor, &ParameterEditor::knobSelected, this, &DeviceParameterLink::selectKnob);
     connect(m_editor, &ParameterEditor::readRequested, this, &DeviceParameterLink::readFromDevice);
-    connect(m_editor->model(), &TuningModel::editedChanged, this, [this](TuningChange change) {
+    connect(m_model, &TuningModel::editedChanged, this, [this](TuningChange change) {
         if (change.host)
-            m_client->setHostParams(m_editor->hostParams());
+            m_client->setHostParams(m_model->edited().host);
     });
     connect(m_client, &DeviceClient::stateChanged, this,
             [this](SessionState state) { onStateChanged(state); });
@@ -43,9 +43,10 @@ void DeviceParameterLink::prepare(ConnectOptions &options)
 {
     // The published firmware does not report its torque limit: the editor's tau_limit (the
     // profile's) scales the legacy feedback and stays what it is.
-    if (m_editor->hostParams().tau_limit > 0)
-        options.legacy.tauLimit = m_editor->hostParams().tau_limit;
-    m_client->setHostParams(m_editor->hostParams());
+    const HostParams &host = m_model->edited().host;
+    if (host.tau_limit > 0)
+        options.legacy.tauLimit = host.tau_limit;
+    m_client->setHostParams(host);
 }
 
 void DeviceParameterLink::send(const Request &request)
@@ -56,7 +57,7 @@ void DeviceParameterLink::send(const Request &request)
 void DeviceParameterLink::onPushRequested(const DeviceTuning &tuning)
 {
     m_client->request(request::Push{tuning, m_knob},
-                      {this, [this, before = m_editor->deviceTuning()](const Outcome &outcome) {
+                      {this, [this, before = m_model->device()](const Outcome &outcome) {
                            finishPush(before, outcome);
                        }});
 }
@@ -78,9 +79,9 @@ void DeviceParameterLink::selectKnob(int knob)
     m_knob = Knob(knob);
     // The model compares with the chosen knob's tuning: knob 1's is the session's; another's
     // is unknown until read. The last push and its read-back were the other knob's.
-    m_editor->setDeviceTuning({});
+    m_model->setDevice({});
     if (m_knob == 0)
-        m_editor->setDeviceTuning(m_client->deviceTuning());
+        m_model->setDevice(m_client->deviceTuning());
     else
         readFromDevice();
 }
@@ -88,7 +89,7 @@ void DeviceParameterLink::selectKnob(int knob)
 void DeviceParameterLink::onSessionTuning(const DeviceTuning &tuning)
 {
     if (m_knob == 0)
-        m_editor->setDeviceTuning(tuning);
+        m_model->setDevice(tuning);
 }
 
 void DeviceParameterLink::saveInDevice()
@@ -102,7 +103,7 @@ void DeviceParameterLink::onStateChanged(SessionState state)
     m_editor->setCanPush(connected && m_client->deviceInfo().canSetParams(),
                          connected ? tr("the legacy protocol cannot carry parameters") : QString());
     if (state == SessionState::Disconnected) {
-        m_editor->setDeviceTuning({});
+        m_model->setDevice({});
         m_knobs = 1;
         m_knob = 0;
         m_editor->setKnobs(1);
@@ -146,7 +147,7 @@ void DeviceParameterLink::refreshEffectsAvailability()
 
 void DeviceParameterLink::finishPush(const DeviceTuning &before, const Outcome &outcome)
 {
-    m_editor->model()->pushFinished(outcome);
+    m_model->pushFinished(outcome);
     if (outcome.ok()) {
         // What changed is what the device held against what travelled (float32, bounds kept
         // by the session's one rounding), never the editor's doubles: the walls' ±π travel as
@@ -186,7 +187,7 @@ void DeviceParameterLink::finishCommand(const Outcome &outcome)
     // Another knob's tuning follows its own reads (knob 1's follows the session's); one read
     // for a knob no longer chosen is not the model's.
     if (outcome.ok() && knob != 0 && knob == m_knob && outcome.received != DeviceTuning{})
-        m_editor->setDeviceTuning(m_editor->deviceTuning().updatedBy(outcome.received));
+        m_model->setDevice(m_model->device().updatedBy(outcome.received));
     if (outcome.ok() && std::holds_alternative<request::Zero>(outcome.request))
         Q_EMIT deviceChanged(knobPrefix(knob) + tr("ZERO: θ0 := current angle"));
     Q_EMIT commandFinished(m_lastMessage);

@@ -18,13 +18,18 @@ namespace hatpic {
 
 class DeviceClient;
 class ParameterEditor;
+class TuningModel;
 
 class DeviceParameterLink : public QObject
 {
     Q_OBJECT
 public:
-    //! Neither is owned; both must outlive the link (the window owns all three).
-    DeviceParameterLink(DeviceClient *client, ParameterEditor *editor, QObject *parent = nullptr);
+    //! None is owned; all must outlive the link (the window owns them all). It carries the
+    //! model's pushes (TuningModel::pushRequested) and keeps the model's device tuning; the
+    //! editor's reads, vibration tests and knob choice, and tells the editor what the device
+    //! takes.
+    DeviceParameterLink(DeviceClient *client, TuningModel *model, ParameterEditor *editor,
+                        QObject *parent = nullptr);
 
     //! Before a connection: the editor's host parameters go to the session, and its tau_limit
     //! scales the feedback of a legacy device (which does not report its limit).
@@ -62,6 +67,7 @@ private:
     void finishCommand(const Outcome &outcome);
 
     DeviceClient *m_client;
+    TuningModel *m_model;
     ParameterEditor *m_editor;
     QString m_lastMessage;
     Knob m_knob = 0;

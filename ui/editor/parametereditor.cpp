@@ -23,20 +23,14 @@ namespace hatpic {
 
 using namespace Qt::StringLiterals;
 
-ParameterEditor::ParameterEditor(QWidget *parent)
-    : QWidget(parent), m_controlRate(servo::kControlRateHz)
+ParameterEditor::ParameterEditor(TuningModel *model, QUndoStack *undo, QWidget *parent)
+    : QWidget(parent), m_model(model), m_controlRate(servo::kControlRateHz), m_undo(undo)
 {
-    m_model = new TuningModel(this);
-    m_undo = new QUndoStack(this);
-    const auto mayPush = [this] { return m_valid && m_model->canPush() && !m_model->isPushing(); };
-    m_live = new LivePush(mayPush, this);
-    connect(m_live, &LivePush::pushDue, this, &ParameterEditor::startPush);
+    m_live = new LivePush([this] { return m_model->mayPush(); }, this);
+    connect(m_live, &LivePush::pushDue, this, [this] { m_model->push(); });
 
     m_actions = new EditorActions(this, m_undo);
-    connect(m_actions->push, &QAction::triggered, this, [this, mayPush] {
-        if (mayPush())
-            startPush();
-    });
+    connect(m_actions->push, &QAction::triggered, this, [this] { m_model->push(); });
     connect(m_actions->read, &QAction::triggered, this, &ParameterEditor::readRequested);
     connect(m_actions->revert, &QAction::triggered, this, &ParameterEditor::revert);
 
@@ -49,6 +43,11 @@ ParameterEditor::ParameterEditor(QWidget *parent)
             m_live->edited();
     });
     connect(m_model, &TuningModel::deviceChanged, this, &ParameterEditor::refresh);
+    // Whoever pushed (Push, a live push, A/B, the blind test): the interval counts from now.
+    connect(m_model, &TuningModel::pushRequested, this, [this] {
+        m_live->pushStarted();
+        refresh();
+    });
     connect(m_model, &TuningModel::pushEnded, this, [this] {
         refresh(); // shows or clears the field the device named
         m_live->retry();
@@ -227,14 +226,6 @@ void ParameterEditor::setTauLimit(double tauLimit)
               tr("Use the device's torque limit (%1 N·m)").arg(QString::number(tauLimit, 'g', 6)));
 }
 
-void ParameterEditor::startPush()
-{
-    const DeviceTuning send = m_model->startPush();
-    m_live->pushStarted();
-    refresh();
-    Q_EMIT pushRequested(send);
-}
-
 void ParameterEditor::setLivePush(bool enabled)
 {
     m_live->setEnabled(enabled);
@@ -275,15 +266,7 @@ void ParameterEditor::revalidate()
     QHash<QString, QStringList> perField;
     QStringList all;
     QStringList fields;
-    const Tuning &t = tuning();
-    std::vector<Violation> violations = validate(t.device);
-    for (Violation &v : validate(t.host))
-        violations.push_back(std::move(v));
-    for (Violation &v : validate(t.effects, t.host.tau_limit))
-        violations.push_back(std::move(v));
-    for (Violation &v : validate(t.passivity))
-        violations.push_back(std::move(v));
-    for (const Violation &v : violations) {
+    for (const Violation &v : m_model->violations()) {
         const QString text = QString::fromStdString(v.message());
         perField[QString::fromStdString(v.field)] << text;
         all << text;

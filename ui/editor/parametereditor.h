@@ -3,8 +3,10 @@
 // markers against the device, push/read with a visible sync state, optional rate-limited live
 // push, the derived figures, and the effects' warnings and vibration test.
 // "Push" means sending to the device, only; edits go onto the undo stack (recordEdit).
-// It does not talk to the device itself: DeviceParameterLink carries its pushes and reads to
-// the DeviceClient and brings back the answers and read-backs.
+// It edits the window's TuningModel on the window's undo stack (both given, neither owned) and
+// pushes through the model (TuningModel::push), as profiles and the blind test do. It does not
+// talk to the device itself: DeviceParameterLink carries the model's pushes and the editor's
+// reads to the DeviceClient and brings back the answers and read-backs.
 #pragma once
 
 #include "editor/editoractions.h"
@@ -36,11 +38,11 @@ public:
 
     static constexpr int kDefaultLivePushIntervalMs = LivePush::kDefaultIntervalMs;
 
-    explicit ParameterEditor(QWidget *parent = nullptr);
+    //! `model` and `undo` are the window's: they must outlive the editor.
+    ParameterEditor(TuningModel *model, QUndoStack *undo, QWidget *parent = nullptr);
     ~ParameterEditor() override;
 
-    //! The tuning edited here, the device's and the sync state: what the window's views
-    //! observe (the editor's undo stack is its only writer of edited()).
+    //! The tuning edited here, the device's and the sync state (the window's).
     TuningModel *model() const { return m_model; }
     const Tuning &tuning() const { return m_model->edited(); }
     DeviceParams params() const { return tuning().device; }
@@ -81,7 +83,7 @@ public:
     //! parameters first, then effects.
     QStringList problems() const { return m_problems; }
 
-    QUndoStack *undoStack() const { return m_undo; }
+    QUndoStack *undoStack() const { return m_undo; } //!< the window's, given
 
     QAction *pushAction() const { return m_actions->push; }     //!< Ctrl+Return
     QAction *readAction() const { return m_actions->read; }     //!< "Read from device"
@@ -109,11 +111,6 @@ public:
     QList<QAction *> keyboardActions() const;
 
 Q_SIGNALS:
-    //! Push or a live-push tick: the parameters, and the effects when the device renders
-    //! effects and its read-back differs from them (absent: not sent).
-    //! Its outcome goes to the model (TuningModel::pushFinished; DeviceParameterLink hands it
-    //! over).
-    void pushRequested(const hatpic::DeviceTuning &tuning);
     //! The vibration test's Vibrate or Stop (already valid).
     void vibrateRequested(const hatpic::Vibration &vibration);
     void readRequested();
@@ -128,7 +125,6 @@ private:
     //! The change as an undo step of the model (merged within one gesture).
     void recordEdit(const Tuning &tuning, const QString &text, const QString &field);
     void revert();
-    void startPush();
     //! The model changed: everything shown follows it.
     void refresh();
     void revalidate();
@@ -137,7 +133,7 @@ private:
     //! Scrolls `field` into view and puts the cursor in it, its text selected.
     void goTo(ParameterField *field);
 
-    TuningModel *m_model = nullptr;
+    TuningModel *m_model;
     double m_controlRate; //!< [Hz]
     bool m_valid = true;
     QStringList m_problems;
@@ -147,7 +143,7 @@ private:
     bool m_degrees = false;
     quint64 m_gesture = 0; //!< edits merge into one undo step only within one gesture
 
-    QUndoStack *m_undo = nullptr;
+    QUndoStack *m_undo;
     EditorActions *m_actions = nullptr;
     ParameterForm *m_form = nullptr;
     SyncBar *m_syncBar = nullptr;

@@ -1,4 +1,4 @@
-// Editing a profile's notes as an undo step on the editor's stack, so Ctrl+Z takes back typing
+// Editing a profile's notes as an undo step on the window's stack, so Ctrl+Z takes back typing
 // in the notes like any parameter edit. Consecutive typing merges into one step.
 #pragma once
 

@@ -1,8 +1,8 @@
 #include "profiles/profilecontroller.h"
 
-#include "editor/parametereditor.h"
 #include "profiles/abswitchcommand.h"
 #include "profiles/noteseditcommand.h"
+#include "tuning/tuningmodel.h"
 
 #include <algorithm>
 
@@ -31,9 +31,9 @@ QString settingsKey(const char16_t *key)
 
 } // namespace
 
-ProfileController::ProfileController(ParameterEditor *editor, QWidget *dialogParent,
+ProfileController::ProfileController(TuningModel *model, QUndoStack *undo, QWidget *dialogParent,
                                      QObject *parent)
-    : QObject(parent), m_editor(editor), m_dialogParent(dialogParent)
+    : QObject(parent), m_model(model), m_undo(undo), m_dialogParent(dialogParent)
 {
     // Enter (the default button) cancels: neither the file is overwritten nor the edits lost
     // by a key pressed without reading the question.
@@ -43,11 +43,11 @@ ProfileController::ProfileController(ParameterEditor *editor, QWidget *dialogPar
                                      QMessageBox::Cancel);
     };
 
-    // Slot A starts as the editor's current values, untitled and unmodified.
+    // Slot A starts as the tuning edited now, untitled and unmodified.
     Slot &a = m_slots[0];
     a.saved.name = kUntitled;
-    a.saved.device = editor->params();
-    a.saved.host = editor->hostParams();
+    a.saved.device = model->edited().device;
+    a.saved.host = model->edited().host;
     a.working = a.saved;
     a.used = true;
 
@@ -94,7 +94,7 @@ ProfileController::ProfileController(ParameterEditor *editor, QWidget *dialogPar
     rebuildRecentMenu();
     rebuildPresetsMenu();
 
-    connect(m_editor->model(), &TuningModel::editedChanged, this, &ProfileController::updateTitle);
+    connect(m_model, &TuningModel::editedChanged, this, &ProfileController::updateTitle);
     updateTitle();
 }
 
@@ -111,10 +111,11 @@ Profile ProfileController::currentProfile(int slot) const
     p.name = m_slots[slot].saved.name;
     if (slot == m_active) {
         p.notes = m_notes;
-        p.device = m_editor->params();
-        p.host = m_editor->hostParams();
-        p.effects = m_editor->effects();
-        p.passivity = m_editor->passivity();
+        const Tuning &edited = m_model->edited();
+        p.device = edited.device;
+        p.host = edited.host;
+        p.effects = edited.effects;
+        p.passivity = edited.passivity;
         p.bridge = m_bridge;
     }
     return p;
@@ -199,8 +200,8 @@ void ProfileController::load(const Profile &profile, const QString &path, const 
     Slot &slot = m_slots[m_active];
     slot.saved = profile;
     slot.path = path;
-    m_editor->setTuning({profile.device, profile.host, profile.effects, profile.passivity},
-                        undoText);
+    m_model->edit(*m_undo, {profile.device, profile.host, profile.effects, profile.passivity},
+                  undoText);
     m_bridge = profile.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
     m_notes = profile.notes;
@@ -211,7 +212,7 @@ void ProfileController::load(const Profile &profile, const QString &path, const 
 void ProfileController::setNotes(const QString &notes)
 {
     if (notes != m_notes)
-        m_editor->undoStack()->push(new NotesEditCommand(this, m_notes, notes));
+        m_undo->push(new NotesEditCommand(this, m_notes, notes));
 }
 
 void ProfileController::applyNotes(const QString &notes)
@@ -398,7 +399,7 @@ void ProfileController::toggleSlot()
         Q_EMIT statusMessage(tr("Slot %1 starts as a copy of %2: edit it, then switch with Ctrl+B")
                                  .arg(slotName(to), slotName(m_active)));
     }
-    m_editor->undoStack()->push(new AbSwitchCommand(this, m_active, to));
+    m_undo->push(new AbSwitchCommand(this, m_active, to));
 }
 
 bool ProfileController::isSlotUsed(int slot) const
@@ -415,7 +416,7 @@ void ProfileController::activateSlot(int slot, bool pushOnSwitch)
     m_active = slot;
     const Slot &to = m_slots[slot];
     // Not an undo step: the A/B switch is one of its own (AbSwitchCommand).
-    m_editor->model()->setEdited(
+    m_model->setEdited(
         {to.working.device, to.working.host, to.working.effects, to.working.passivity});
     m_bridge = to.working.bridge;
     Q_EMIT bridgeSettingsLoaded(m_bridge);
@@ -425,11 +426,9 @@ void ProfileController::activateSlot(int slot, bool pushOnSwitch)
     Q_EMIT activeSlotChanged(slot);
     Q_EMIT statusMessage(tr("Slot %1: %2").arg(slotName(slot), profileName()));
     if (pushOnSwitch && m_pushOnSwitchAction->isChecked()) {
-        if (m_editor->pushAction()->isEnabled())
-            m_editor->pushAction()->trigger();
-        else
+        if (!m_model->push())
             Q_EMIT statusMessage(
-                tr("Slot %1 not pushed on switch: %2").arg(slotName(slot), m_editor->syncText()));
+                tr("Slot %1 not pushed on switch: %2").arg(slotName(slot), m_model->syncText()));
     }
 }
 

@@ -1,5 +1,5 @@
-// Profile files for the editor: Open, Save, Save As, recent files, built-in presets, and two
-// slots (A/B) to compare tunings with one key. Owns no widgets except its menus.
+// Profile files for the window's tuning: Open, Save, Save As, recent files, built-in presets,
+// and two slots (A/B) to compare tunings with one key. Owns no widgets except its menus.
 #pragma once
 
 #include "profile/profile.h"
@@ -14,11 +14,12 @@
 
 class QAction;
 class QMenu;
+class QUndoStack;
 class QWidget;
 
 namespace hatpic {
 
-class ParameterEditor;
+class TuningModel;
 
 class ProfileController : public QObject
 {
@@ -35,7 +36,11 @@ public:
     //! Answers "save changes to X?" with Save, Discard or Cancel. Replaceable for tests.
     using Question = std::function<QMessageBox::StandardButton(const QString &text)>;
 
-    ProfileController(ParameterEditor *editor, QWidget *dialogParent, QObject *parent = nullptr);
+    //! `model` and `undo` are the window's (its tuning and its one undo history) and must
+    //! outlive the controller: the active slot is the model's edited tuning, a load or a switch
+    //! an undo step on `undo`.
+    ProfileController(TuningModel *model, QUndoStack *undo, QWidget *dialogParent,
+                      QObject *parent = nullptr);
     ~ProfileController() override;
 
     QAction *openAction() const { return m_openAction; }     //!< Ctrl+O
@@ -43,7 +48,7 @@ public:
     QAction *saveAsAction() const { return m_saveAsAction; } //!< Ctrl+Shift+S
     QAction *abToggleAction() const { return m_abAction; }   //!< Ctrl+B
     //! Checkable, remembered: switching slots (Ctrl+B, or undo past a switch) also pushes the
-    //! slot that becomes active, through the editor's Push, when Push is possible.
+    //! slot that becomes active (TuningModel::push), when a push is possible.
     QAction *pushOnSwitchAction() const { return m_pushOnSwitchAction; }
     QMenu *recentMenu() const { return m_recentMenu.get(); }
     QMenu *presetsMenu() const { return m_presetsMenu.get(); }
@@ -83,7 +88,8 @@ public:
     void activateSlot(int slot, bool pushOnSwitch = true);
     //! Whether `slot` holds a profile (B does after the first switch).
     bool isSlotUsed(int slot) const;
-    //! A slot's profile as it is now (the active slot's from the editor), unsaved changes in.
+    //! A slot's profile as it is now (the active slot's is the model's edited tuning), unsaved
+    //! changes in.
     Profile slotProfile(int slot) const { return currentProfile(slot); }
 
     //! The active slot's notes (the profile's "notes"), as edited.
@@ -117,7 +123,7 @@ private:
     struct Slot
     {
         Profile saved;   //!< as last opened/saved (or the preset); the '*' compares against it
-        Profile working; //!< the values while the slot is not in the editor
+        Profile working; //!< the values while the slot is not the active one
         QString path;    //!< empty: never saved
         bool used = false;
     };
@@ -132,7 +138,8 @@ private:
     void rebuildPresetsMenu();
     void updateTitle();
 
-    ParameterEditor *m_editor;
+    TuningModel *m_model;
+    QUndoStack *m_undo;
     QWidget *m_dialogParent;
     std::array<Slot, kSlotCount> m_slots;
     int m_active = 0;

@@ -14,7 +14,7 @@ ProfileNotesEdit::ProfileNotesEdit(ProfileController *profiles, QWidget *parent)
     setPlaceholderText(tr("Notes on this profile: what it is for, what it feels like…"));
     setToolTip(tr("The profile's notes, saved in its file. Undo (Ctrl+Z) takes back typing here "
                   "like any parameter edit."));
-    // One undo history for the window: the notes' typing is on the editor's stack.
+    // One undo history for the window: the notes' typing is on the window's stack.
     setUndoRedoEnabled(false);
     setTabChangesFocus(true);
     showNotes(profiles->notes());

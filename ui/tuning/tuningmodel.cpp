@@ -4,6 +4,9 @@
 
 #include <QUndoStack>
 
+#include <iterator>
+#include <utility>
+
 namespace hatpic {
 
 namespace {
@@ -160,6 +163,34 @@ std::optional<Tuning> TuningModel::revertedToDevice() const
     return t;
 }
 
+std::vector<Violation> TuningModel::violations() const
+{
+    std::vector<Violation> all = validate(m_edited.device);
+    const auto append = [&all](std::vector<Violation> more) {
+        all.insert(all.end(), std::make_move_iterator(more.begin()),
+                   std::make_move_iterator(more.end()));
+    };
+    append(validate(m_edited.host));
+    append(validate(m_edited.effects, m_edited.host.tau_limit));
+    append(validate(m_edited.passivity));
+    return all;
+}
+
+bool TuningModel::mayPush() const
+{
+    return m_canPush && !m_pushing && violations().empty();
+}
+
+bool TuningModel::push(std::function<void(const Outcome &)> done)
+{
+    if (!mayPush())
+        return false;
+    const DeviceTuning send = startPush();
+    m_pushDone = std::move(done);
+    Q_EMIT pushRequested(send);
+    return true;
+}
+
 DeviceTuning TuningModel::startPush()
 {
     // A block goes along while the device has it and its read-back is not the edited one.
@@ -179,6 +210,16 @@ DeviceTuning TuningModel::startPush()
 }
 
 bool TuningModel::pushFinished(const Outcome &outcome)
+{
+    // The caller hears the outcome after the model took it, even of a push a disconnect dropped.
+    const auto done = std::exchange(m_pushDone, nullptr);
+    const bool taken = take(outcome);
+    if (done)
+        done(outcome);
+    return taken;
+}
+
+bool TuningModel::take(const Outcome &outcome)
 {
     if (!m_pushing)
         return false;

@@ -2,9 +2,11 @@
 // read or read back), what it takes (pushes at all, the effect block, the passivity block), the
 // push in flight and how the last one ended. The sync state, the editor's "device differs"
 // markers, the stiffness view's edited curves, the stability map and the reference model all
-// read it and follow its signals; none keeps a copy. No widgets: the editor changes it through
-// edit() (an undo step), A/B through setEdited(), DeviceParameterLink through setDevice() and the
-// push calls.
+// read it and follow its signals; none keeps a copy. No widgets: the window owns it (and the
+// undo stack its edits go on) and hands it to whoever reads or changes it: the editor changes it
+// through edit() (an undo step), profiles and A/B through edit() and setEdited(), anyone pushes
+// through push() and gets the outcome back, and DeviceParameterLink carries the push to the
+// device (pushRequested → pushFinished) and keeps setDevice() true.
 //
 // Comparisons with the device are made "as the device holds it": the edited tuning rounded
 // once, here (editedOnWire()), the way the wire carries it.
@@ -17,7 +19,9 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <optional>
+#include <vector>
 
 class QUndoStack;
 
@@ -79,9 +83,17 @@ public:
     bool passivityTracked() const { return m_passivityTracked; }
 
     // ---- pushing ----
-    //! Starts a push of the edited tuning and returns what to send: the parameters, and each
-    //! block the device has whose read-back is not the edited one yet.
-    DeviceTuning startPush();
+    //! Every rule the edited tuning breaks (model.md § 1, effects.md, passivity.md), parameters
+    //! first: none, and it may be pushed.
+    std::vector<Violation> violations() const;
+    //! Whether a push may start now: the edited tuning is valid, a device takes it, and no push
+    //! is in flight.
+    bool mayPush() const;
+    //! Pushes the edited tuning when mayPush() (false, nothing sent, when not): pushRequested
+    //! carries what to send to the device's link, which hands the answer to pushFinished();
+    //! `done` then gets that outcome, with the model already updated by it (syncState() says
+    //! whether the device is in sync). A push dropped by a disconnect still gets its outcome.
+    bool push(std::function<void(const Outcome &)> done = {});
     //! The push's outcome, which carries the device's read-back. Returns false when no push
     //! was in flight (a late answer), which changes nothing.
     bool pushFinished(const Outcome &outcome);
@@ -107,12 +119,19 @@ public:
 Q_SIGNALS:
     void editedChanged(hatpic::TuningChange change);
     void deviceChanged(const hatpic::DeviceTuning &device);
+    //! A push started (push()): the parameters, and each block the device has whose read-back
+    //! is not the edited one yet. The device's link sends it and answers with pushFinished().
+    void pushRequested(const hatpic::DeviceTuning &send);
     //! The sync state or its wording changed.
     void syncChanged(hatpic::SyncState state, const QString &text);
     //! The push in flight ended (pushFinished took its outcome): the editor may push again.
     void pushEnded();
 
 private:
+    //! Starts a push of the edited tuning and returns what to send.
+    DeviceTuning startPush();
+    //! pushFinished() without telling the caller.
+    bool take(const Outcome &outcome);
     template<typename Block>
     void setTracked(bool &flag, std::optional<Block> &deviceBlock, bool tracked);
     //! `tuning` without the blocks the device does not have.
@@ -128,8 +147,9 @@ private:
     QString m_cannotPushReason;
     bool m_effectsTracked = false;
     bool m_passivityTracked = false;
-    std::optional<DeviceTuning> m_pushing; //!< the edited tuning of the push in flight
-    std::optional<DeviceTuning> m_pushed;  //!< …of the last push the device took
+    std::optional<DeviceTuning> m_pushing;           //!< the edited tuning of the push in flight
+    std::optional<DeviceTuning> m_pushed;            //!< …of the last push the device took
+    std::function<void(const Outcome &)> m_pushDone; //!< push()'s caller, until the outcome
     //! The last push's failure (or its unanswered read-back), until an edit or a read-back
     std::optional<SyncState> m_failure;
     QString m_failureText;

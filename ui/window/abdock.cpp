@@ -51,8 +51,8 @@ QString suggestedTrialsFile()
 } // namespace
 
 QList<QDockWidget *> addAbDocks(QMainWindow *window, ProfileController *profiles,
-                                ParameterEditor *editor, StiffnessView *stiffness,
-                                QDockWidget *tabWith)
+                                TuningModel *tuning, ParameterEditor *editor,
+                                StiffnessView *stiffness, QDockWidget *tabWith)
 {
     auto *panel = new AbComparePanel(profiles, window);
     panel->setObjectName(u"abComparePanel"_s);
@@ -75,7 +75,7 @@ QList<QDockWidget *> addAbDocks(QMainWindow *window, ProfileController *profiles
     QObject::connect(editor, &ParameterEditor::angleInDegreesChanged, panel,
                      &AbComparePanel::setAngleInDegrees);
 
-    auto *runner = new BlindRunner(profiles, editor, window);
+    auto *runner = new BlindRunner(profiles, tuning, window);
     runner->setObjectName(u"blindRunner"_s);
     auto *dialog = new BlindDialog(runner, window);
     QObject::connect(panel, &AbComparePanel::blindTestRequested, dialog, [dialog] {

@@ -13,11 +13,12 @@ namespace hatpic {
 class ParameterEditor;
 class ProfileController;
 class StiffnessView;
+class TuningModel;
 
 //! Adds the docks "abDock" (panel "abComparePanel") and "notesDock" (editor "profileNotes"),
 //! tabbed behind `tabWith` and hidden, and the blind test ("blindRunner", "blindDialog").
 QList<QDockWidget *> addAbDocks(QMainWindow *window, ProfileController *profiles,
-                                ParameterEditor *editor, StiffnessView *stiffness,
-                                QDockWidget *tabWith);
+                                TuningModel *tuning, ParameterEditor *editor,
+                                StiffnessView *stiffness, QDockWidget *tabWith);
 
 } // namespace hatpic

@@ -1,8 +1,8 @@
 #include "window/bridgedock.h"
 
 #include "connection/bridgepanel.h"
-#include "editor/parametereditor.h"
 #include "profiles/profilecontroller.h"
+#include "tuning/tuningmodel.h"
 
 #include <QDockWidget>
 #include <QMainWindow>
@@ -10,7 +10,7 @@
 namespace hatpic {
 
 QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileController *profiles,
-                           ParameterEditor *editor, QDockWidget *tabWith)
+                           TuningModel *tuning, QDockWidget *tabWith)
 {
     auto *panel = new BridgePanel(*client, window);
     panel->setObjectName(QStringLiteral("bridgePanel"));
@@ -28,9 +28,9 @@ QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileCon
                      &ProfileController::setBridgeSettings);
     QObject::connect(profiles, &ProfileController::bridgeSettingsLoaded, panel,
                      &BridgePanel::setSettings);
-    panel->setReferenceMode(editor->hostParams().mode);
-    QObject::connect(editor->model(), &TuningModel::editedChanged, panel,
-                     [panel, editor] { panel->setReferenceMode(editor->hostParams().mode); });
+    panel->setReferenceMode(tuning->edited().host.mode);
+    QObject::connect(tuning, &TuningModel::editedChanged, panel,
+                     [panel, tuning] { panel->setReferenceMode(tuning->edited().host.mode); });
     return dock;
 }
 

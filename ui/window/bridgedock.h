@@ -8,11 +8,11 @@ class QMainWindow;
 namespace hatpic {
 
 class DeviceClient;
-class ParameterEditor;
 class ProfileController;
+class TuningModel;
 
 //! Adds the dock "bridgeDock" (its panel "bridgePanel") to `window`, tabbed behind `tabWith`.
 QDockWidget *addBridgeDock(QMainWindow *window, DeviceClient *client, ProfileController *profiles,
-                           ParameterEditor *editor, QDockWidget *tabWith);
+                           TuningModel *tuning, QDockWidget *tabWith);
 
 } // namespace hatpic

@@ -21,6 +21,7 @@
 #include "sim/simulatedjoystick.h"
 #include "simulator/simulatorpanel.h"
 #include "stiffness/stiffnessview.h"
+#include "tuning/tuningmodel.h"
 #include "window/focusreveal.h"
 #include "window/statusline.h"
 #include "window/theme.h"
@@ -39,6 +40,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -72,6 +74,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
                                     .plots = m_plots,
                                     .plotActions = m_plotActions,
                                     .profiles = m_profiles,
+                                    .tuning = m_tuning,
                                     .editor = m_editor,
                                     .stiffness = m_stiffness,
                                     .simPanel = m_simPanel,
@@ -118,17 +121,21 @@ void MainWindow::createParts()
     m_statusLine = new StatusLine(statusBar());
     m_stats = new LinkStatsWidget(this);
 
-    m_editor = named(new ParameterEditor(this), "parameterEditor");
-    m_paramLink = named(new DeviceParameterLink(m_client, m_editor, this), "parameterLink");
-    m_stiffness = named(new StiffnessView(*m_editor->model(), this), "stiffnessView");
-    m_profiles = named(new ProfileController(m_editor, this, this), "profileController");
+    // The window's one tuning and its one undo history, handed to all who read or change them.
+    m_tuning = named(new TuningModel(this), "tuningModel");
+    m_undo = named(new QUndoStack(this), "undoStack");
+    m_editor = named(new ParameterEditor(m_tuning, m_undo, this), "parameterEditor");
+    m_paramLink =
+        named(new DeviceParameterLink(m_client, m_tuning, m_editor, this), "parameterLink");
+    m_stiffness = named(new StiffnessView(*m_tuning, this), "stiffnessView");
+    m_profiles = named(new ProfileController(m_tuning, m_undo, this, this), "profileController");
     m_simPanel = named(new SimulatorPanel(this), "simulatorPanel");
     m_simulator = std::make_shared<SimulatedJoystick>();
     m_connection->addSource(tr("Simulated HATPIC"), QString::fromUtf16(kSimPortName), m_simulator);
     for (QWidget *readout :
          {static_cast<QWidget *>(m_simPanel->statusLabel()), static_cast<QWidget *>(m_stats)})
         m_statusLine->readouts()->layout()->addWidget(readout);
-    m_feed->setLiveHostParams(m_editor->hostParams());
+    m_feed->setLiveHostParams(m_tuning->edited().host);
     m_plotActions = new PlotActions(m_plots, this);
 }
 
@@ -186,7 +193,7 @@ void MainWindow::connectParts()
     connect(m_client, &DeviceClient::samplesReady, new ChatterWatch(m_editor),
             &ChatterWatch::addSamples); // warns in the derived figures
     connect(m_client, &DeviceClient::deviceTuningChanged, m_feed, &PlotFeed::setLiveDeviceTuning);
-    connect(m_editor->model(), &TuningModel::editedChanged, m_feed, [this](TuningChange change) {
+    connect(m_tuning, &TuningModel::editedChanged, m_feed, [this](TuningChange change) {
         if (change.host)
             m_feed->setLiveHostParams(m_editor->hostParams());
     });

@@ -18,6 +18,7 @@
 class QAction;
 
 class QDockWidget;
+class QUndoStack;
 
 namespace hatpic {
 
@@ -39,6 +40,7 @@ class SimulatedJoystick;
 class SimulatorPanel;
 class StatusLine;
 class StiffnessView;
+class TuningModel;
 class WindowActions;
 class WindowMenus;
 
@@ -119,6 +121,8 @@ private:
     StatusLine *m_statusLine = nullptr;
     RecordingControls *m_recording = nullptr;
     ReplayBar *m_replayBar = nullptr;
+    TuningModel *m_tuning = nullptr; //!< the one tuning: edited, the device's, the sync state
+    QUndoStack *m_undo = nullptr;    //!< the one undo history: edits, loads, A/B, notes
     ParameterEditor *m_editor = nullptr;
     StiffnessView *m_stiffness = nullptr;
     ProfileController *m_profiles = nullptr;

@@ -1,6 +1,5 @@
 #include "window/measuredocks.h"
 
-#include "editor/parametereditor.h"
 #include "plots/plotactions.h"
 #include "plots/plotexport.h"
 #include "plots/plotpanel.h"
@@ -8,6 +7,7 @@
 #include "plots/xyview.h"
 #include "profiles/profilecontroller.h"
 #include "stiffness/stiffnessview.h"
+#include "tuning/tuningmodel.h"
 
 #include <QDockWidget>
 #include <QMainWindow>
@@ -16,7 +16,7 @@
 namespace hatpic {
 
 MeasureDocks addMeasureDocks(QMainWindow *window, PlotPanel *plots, PlotActions *plotActions,
-                             ProfileController *profiles, ParameterEditor *editor,
+                             ProfileController *profiles, TuningModel *tuning,
                              StiffnessView *stiffness, QMenu *view, QDockWidget *tabWith)
 {
     auto dock = [&](const QString &title, const QString &name, QWidget *widget) {
@@ -51,11 +51,11 @@ MeasureDocks addMeasureDocks(QMainWindow *window, PlotPanel *plots, PlotActions 
 
     stiffness->followTrail(plots);
     // Pictures are noted with the profile and the parameters of what the plots show (the
-    // device's, or the recording's in replay; the editor's when there are none).
-    plotActions->setCaptionSource([plots, profiles, editor] {
+    // device's, or the recording's in replay; the edited ones when there are none).
+    plotActions->setCaptionSource([plots, profiles, tuning] {
         const std::optional<DeviceParams> shown = plots->deviceParams();
-        return plotCaption(profiles->profileName(), shown ? shown : editor->params(),
-                           editor->hostParams());
+        return plotCaption(profiles->profileName(), shown ? shown : tuning->edited().device,
+                           tuning->edited().host);
     });
     return docks;
 }

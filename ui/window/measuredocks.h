@@ -9,11 +9,11 @@ class QMenu;
 
 namespace hatpic {
 
-class ParameterEditor;
 class PlotActions;
 class PlotPanel;
 class ProfileController;
 class StiffnessView;
+class TuningModel;
 
 struct MeasureDocks
 {
@@ -23,7 +23,7 @@ struct MeasureDocks
 
 //! Adds the docks to `window` at the bottom, tabbed behind `tabWith`, their toggles to `view`.
 MeasureDocks addMeasureDocks(QMainWindow *window, PlotPanel *plots, PlotActions *plotActions,
-                             ProfileController *profiles, ParameterEditor *editor,
+                             ProfileController *profiles, TuningModel *tuning,
                              StiffnessView *stiffness, QMenu *view, QDockWidget *tabWith);
 
 } // namespace hatpic

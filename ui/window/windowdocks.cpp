@@ -92,7 +92,7 @@ WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts)
     window->setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea); // the hand's: plots only
     // The robot bridge is opened from View → Bridge, beside the device log: never in front of
     // the hand, which must stay in sight with the stiffness view.
-    docks.bridge = addBridgeDock(window, parts.client, parts.profiles, parts.editor, docks.log);
+    docks.bridge = addBridgeDock(window, parts.client, parts.profiles, parts.tuning, docks.log);
     docks.bridge->hide();
     // Tuning experiments (docs/experiments.md): View → Experiments, beside the device log.
     QDockWidget *experiments = addExperimentsDock(window, parts, docks.log);
@@ -105,9 +105,9 @@ WindowDocks addWindowDocks(QMainWindow *window, const WindowDockParts &parts)
     parts.view->addAction(experiments->toggleViewAction());
     // A/B comparison and the profile's notes, opened from the View menu, beside the log.
     for (QDockWidget *dock :
-         addAbDocks(window, parts.profiles, parts.editor, parts.stiffness, docks.log))
+         addAbDocks(window, parts.profiles, parts.tuning, parts.editor, parts.stiffness, docks.log))
         parts.view->addAction(dock->toggleViewAction());
-    addMeasureDocks(window, parts.plots, parts.plotActions, parts.profiles, parts.editor,
+    addMeasureDocks(window, parts.plots, parts.plotActions, parts.profiles, parts.tuning,
                     parts.stiffness, parts.view, docks.log);
     // Keys for the panels under the plots (issue 27: none had one).
     const std::pair<const char *, QKeyCombination> keys[] = {

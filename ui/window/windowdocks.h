@@ -22,6 +22,7 @@ class ProfileController;
 class SimulatedJoystick;
 class SimulatorPanel;
 class StiffnessView;
+class TuningModel;
 
 //! What the docks hold or are wired to, and the menu that gets their toggles.
 struct WindowDockParts
@@ -30,6 +31,7 @@ struct WindowDockParts
     PlotPanel *plots = nullptr;
     PlotActions *plotActions = nullptr;
     ProfileController *profiles = nullptr;
+    TuningModel *tuning = nullptr; //!< the window's
     ParameterEditor *editor = nullptr;
     StiffnessView *stiffness = nullptr;
     SimulatorPanel *simPanel = nullptr;

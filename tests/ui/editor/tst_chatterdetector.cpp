@@ -4,6 +4,7 @@
 #include "editor/chatterdetector.h"
 #include "editor/derivedfiguresview.h"
 #include "editor/parametereditor.h"
+#include "editorrig.h"
 #include "profile/profile.h"
 #include "sim/offlinesimulation.h"
 #include "simulator/simulatorpanel.h"
@@ -13,6 +14,7 @@
 #include <QTest>
 
 using namespace hatpic;
+using hatpic::test::EditorRig;
 using namespace Qt::StringLiterals;
 
 namespace {
@@ -130,7 +132,8 @@ void TestChatterDetector::noDeadZoneNothingToWatch()
 
 void TestChatterDetector::warningInTheDerivedFigures()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     DeviceParams device;
     device.K_max = 1.5;
     device.Q_dz = 0.04;
@@ -160,7 +163,8 @@ void TestChatterDetector::warningInTheDerivedFigures()
 void TestChatterDetector::watchesTheTunedKnob()
 {
     // A device with two knobs: knob 1 still, knob 2 buzzing at its dead zone's edge.
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     DeviceParams device;
     device.K_max = 1.5;
     device.Q_dz = 0.04;

@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+#include <QUndoStack>
 
 using namespace hatpic;
 
@@ -34,8 +35,10 @@ ConnectOptions simOptions(WireProtocol protocol)
 struct Rig
 {
     DeviceClient client;
-    ParameterEditor editor;
-    DeviceParameterLink link{&client, &editor};
+    TuningModel model;
+    QUndoStack undo;
+    ParameterEditor editor{&model, &undo};
+    DeviceParameterLink link{&client, &model, &editor};
 
     //! The editor's tau_limit, as a profile would set it.
     void setTauLimit(double tauLimit)
@@ -143,7 +146,7 @@ void TestDeviceParameterLink::effectsArePushedWithTheParameters()
 
     QSignalSpy finished(&rig.link, &DeviceParameterLink::commandFinished);
     QSignalSpy changed(&rig.link, &DeviceParameterLink::deviceChanged);
-    QSignalSpy pushes(&rig.editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(&rig.model, &TuningModel::pushRequested);
     Tuning t = rig.editor.tuning();
     t.device.K_max = 0.5;
     t.effects.detent_strength = 0.05;
@@ -263,7 +266,7 @@ void TestDeviceParameterLink::passivityControllerIsPushedAndKeptInSync()
     QVERIFY(!beta->differsFromDevice());
 
     QSignalSpy finished(&rig.link, &DeviceParameterLink::commandFinished);
-    QSignalSpy pushes(&rig.editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(&rig.model, &TuningModel::pushRequested);
     // Typed into the field as a user does: one undoable edit, marked against the device.
     beta->spinBox()->setFocus();
     beta->spinBox()->selectAll();

@@ -6,6 +6,7 @@
 #include "editor/parametereditor.h"
 #include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
+#include "editorrig.h"
 #include "model/paramtable.h"
 #include "pushresult.h"
 
@@ -23,6 +24,7 @@
 #include <numbers>
 
 using namespace hatpic;
+using hatpic::test::EditorRig;
 using namespace Qt::StringLiterals;
 
 namespace {
@@ -104,7 +106,8 @@ void TestEffectsEditor::initTestCase()
 
 void TestEffectsEditor::fieldsShowUnitsAndDefaults()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     QCOMPARE(editor.effects(), EffectParams{});
     QVERIFY(editor.findChild<QGroupBox *>(u"group_effects"_s));
     const EffectParams defaults;
@@ -128,7 +131,8 @@ void TestEffectsEditor::fieldsShowUnitsAndDefaults()
 
 void TestEffectsEditor::editIsOneUndoStep()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     QSignalSpy edited(editor.model(), &TuningModel::editedChanged);
     spin(editor, u"detent_strength"_s)->setValue(0.05);
     spin(editor, u"detent_range"_s)->setValue(0.8);
@@ -162,7 +166,8 @@ void TestEffectsEditor::editIsOneUndoStep()
 
 void TestEffectsEditor::strengthAboveTauLimitBlocksPush()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     connectWithEffects(editor);
     spin(editor, u"detent_strength"_s)->setValue(0.5); // tau_limit is 0.44
     QVERIFY(!editor.isValid());
@@ -180,11 +185,12 @@ void TestEffectsEditor::strengthAboveTauLimitBlocksPush()
 
 void TestEffectsEditor::pushCarriesEffectsOnlyToADeviceThatRendersThem()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.setDeviceTuning({asFloat(editor.params()), std::nullopt});
     QCOMPARE(editor.syncState(), SyncState::InSync); // no effects to keep in sync
-    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(editor.model(), &TuningModel::pushRequested);
     spin(editor, u"wall_stiffness"_s)->setValue(2.0);
     QCOMPARE(editor.syncState(), SyncState::InSync); // a v2 device without effects
     editor.pushAction()->trigger();
@@ -239,7 +245,8 @@ void TestEffectsEditor::pushCarriesEffectsOnlyToADeviceThatRendersThem()
 // from the device, the refused effect still does.
 void TestEffectsEditor::refusedEffectsAfterAcceptedParametersSayWhatIsInForce()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     connectWithEffects(editor);
     spin(editor, u"K_max"_s)->setValue(0.6);
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
@@ -258,7 +265,8 @@ void TestEffectsEditor::refusedEffectsAfterAcceptedParametersSayWhatIsInForce()
 
 void TestEffectsEditor::rejectionNamesTheEffectField()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     connectWithEffects(editor);
     spin(editor, u"wall_stiffness"_s)->setValue(4.0);
     editor.pushAction()->trigger();
@@ -295,7 +303,8 @@ void TestEffectsEditor::warnings()
     QFETCH(double, wallStiffness);
     QFETCH(double, detentStrength);
     QFETCH(QStringList, expected);
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     Tuning t = editor.tuning();
     t.effects.wall_min = -0.5;
     t.effects.wall_max = 0.5;
@@ -321,7 +330,8 @@ void TestEffectsEditor::warnings()
 
 void TestEffectsEditor::anglesFollowTheDegreesSwitch()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     spin(editor, u"wall_max"_s)->setValue(0.5);
     editor.setAngleInDegrees(true);
     QCOMPARE(editor.effects().wall_max, 0.5); // SI inside
@@ -331,7 +341,8 @@ void TestEffectsEditor::anglesFollowTheDegreesSwitch()
 
 void TestEffectsEditor::vibrationTestChecksItsFields()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     EffectsSection *fx = editor.effectsSection();
     QCOMPARE(fx->vibration(), EffectsSection::kDefaultVibration);
     QVERIFY(!fx->vibrateButton()->isEnabled()); // no device
@@ -353,7 +364,8 @@ void TestEffectsEditor::vibrationTestChecksItsFields()
     QCOMPARE(vibrate.at(1).at(0).value<Vibration>().amplitude, 0.0);
     // Typed values are remembered for the next start.
     fx->vibrationFields()[0]->spinBox()->setValue(0.07);
-    ParameterEditor next;
+    EditorRig nextRig;
+    ParameterEditor &next = nextRig.editor;
     QCOMPARE(next.effectsSection()->vibration().amplitude, 0.07);
 }
 
@@ -361,7 +373,8 @@ void TestEffectsEditor::vibrationTestChecksItsFields()
 // 0.44 is within a limit of 0.44f = 0.4399999976158142, and the next float above is not.
 void TestEffectsEditor::torqueLimitIsTheDevicesFloat()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     connectWithEffects(editor);
     editor.setTauLimit(double(0.44f));
     spin(editor, u"detent_strength"_s)->setValue(0.44);
@@ -378,7 +391,8 @@ void TestEffectsEditor::frequencyBeyondHalfTheRateIsRefused()
 {
     // Issue 21: 600 Hz typed on a 1 kHz device used to become 500 without a word (and 500
     // breaks f < 500 as well).
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.show();
     editor.setEffectsAvailable(true, QString(), 1000);
     EffectsSection *fx = editor.effectsSection();
@@ -407,7 +421,8 @@ void TestEffectsEditor::sectionDoesNotWidenTheEditor()
 {
     // The editor dock is narrow (about 420 px at 1400×900): the Effects group, its warnings
     // and its vibration test must fit in the width the parameter groups need anyway.
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     Tuning t = editor.tuning();
     t.effects.wall_min = -0.5;
     t.effects.wall_max = 0.5;

@@ -12,6 +12,7 @@
 #include <QComboBox>
 #include <QSignalSpy>
 #include <QTest>
+#include <QUndoStack>
 
 using namespace hatpic;
 using namespace hatpic::test;
@@ -24,8 +25,10 @@ constexpr int kTimeoutMs = 15000; //!< generous: the machine is shared
 struct Rig
 {
     DeviceClient client;
-    ParameterEditor editor;
-    DeviceParameterLink link{&client, &editor};
+    TuningModel model;
+    QUndoStack undo;
+    ParameterEditor editor{&model, &undo};
+    DeviceParameterLink link{&client, &model, &editor};
 
     //! Connects to the device on `port` as the window does (the link prepares the options).
     void connectTo(const QString &port)

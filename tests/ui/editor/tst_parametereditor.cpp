@@ -7,6 +7,7 @@
 #include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
 #include "editorparts.h"
+#include "editorrig.h"
 #include "model/derived.h"
 
 #include <QAction>
@@ -52,7 +53,8 @@ private Q_SLOTS:
 
 void TestParameterEditor::defaultsShown()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     const DeviceParams defaults;
     QCOMPARE(editor.params(), defaults);
     QCOMPARE(editor.hostParams(), HostParams{});
@@ -102,7 +104,9 @@ void TestParameterEditor::invalidValueBlocksPush()
     // The field that owns the broken rule (cross-field rules belong to K_min and Q_dz).
     const QString owner = rule.section(u':', 0, 0);
 
-    ParameterEditor editor;
+    EditorRig editorRig;
+
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     QVERIFY(editor.pushAction()->isEnabled());
     QSignalSpy validity(&editor, &ParameterEditor::validityChanged);
@@ -124,7 +128,7 @@ void TestParameterEditor::invalidValueBlocksPush()
     QVERIFY(!editor.derivedFiguresView()->isShowingSaturation());
 
     // Triggering the disabled action does not push.
-    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(editor.model(), &TuningModel::pushRequested);
     editor.pushAction()->trigger();
     QCOMPARE(pushes.count(), 0);
 
@@ -138,7 +142,8 @@ void TestParameterEditor::invalidValueBlocksPush()
 
 void TestParameterEditor::nanCannotBeTyped()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     ScientificSpinBox *box = spin(editor, u"K_max"_s);
     for (QString text : {u"nan"_s, u"inf"_s, u"1e999"_s, u"abc"_s}) {
         int pos = 0;
@@ -176,7 +181,9 @@ void TestParameterEditor::outOfRangeTypingClampsVisibly()
     QFETCH(QString, typed);
     QFETCH(QString, words);
 
-    ParameterEditor editor;
+    EditorRig editorRig;
+
+    ParameterEditor &editor = editorRig.editor;
     ScientificSpinBox *box = spin(editor, key);
     box->selectAll();
     QTest::keyClicks(box, typed);
@@ -213,7 +220,8 @@ void typeInto(ParameterEditor &editor, const QString &key, const QString &text)
 
 void TestParameterEditor::lettersAreRefusedOutLoud()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.show();
     ScientificSpinBox *box = spin(editor, u"K_max"_s);
     box->setFocus();
@@ -256,7 +264,8 @@ void TestParameterEditor::exclusiveBoundRefusesTheEntry()
     QFETCH(QString, key);
     QFETCH(QString, typed);
     QFETCH(QString, note);
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.show();
     const Tuning before = editor.tuning();
     typeInto(editor, key, typed);
@@ -269,7 +278,8 @@ void TestParameterEditor::exclusiveBoundRefusesTheEntry()
 
 void TestParameterEditor::clampNoteGoesWithRevertAndUndo()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.show();
     editor.setCanPush(true);
     DeviceParams device;
@@ -295,7 +305,8 @@ void TestParameterEditor::clampNoteGoesWithRevertAndUndo()
 void TestParameterEditor::reasonForNoPushSitsBesidePush()
 {
     // A short panel: the broken rule's own field is far below the fold.
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.resize(520, 420);
     editor.show();
@@ -352,7 +363,9 @@ void TestParameterEditor::derivedFiguresWarn()
     QFETCH(bool, saturates);
     QFETCH(bool, rings);
 
-    ParameterEditor editor;
+    EditorRig editorRig;
+
+    ParameterEditor &editor = editorRig.editor;
     spin(editor, key)->setValue(value);
     const DerivedFigures expected = deriveFigures(editor.params(), editor.hostParams());
     const DerivedFigures &shown = editor.derivedFiguresView()->figures();
@@ -381,7 +394,8 @@ void TestParameterEditor::warningsNeverCutTheFigures()
 {
     // Issue 27: with all three warnings up, the figures above them were squeezed and cut.
     QFETCH(QSize, size);
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.resize(size);
     spin(editor, u"K_max"_s)->setValue(5.0); // saturates and rings
     editor.derivedFiguresView()->setChatter(12.0, 0.5);
@@ -422,7 +436,8 @@ void TestParameterEditor::warningsNeverCutTheFigures()
 
 void TestParameterEditor::degreesChangeOnlyTheDisplay()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     DeviceParams d;
     d.theta0 = 0.5;
     editor.setParams(d, HostParams{}, u"set"_s);
@@ -441,7 +456,8 @@ void TestParameterEditor::degreesChangeOnlyTheDisplay()
 
 void TestParameterEditor::hostFieldsEdit()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     QSignalSpy host(editor.model(), &TuningModel::editedChanged);
     auto *mode = editor.findChild<QComboBox *>(u"combo_mode"_s);
     mode->setCurrentIndex(mode->findData(int(ReferenceMode::Rotation)));
@@ -461,7 +477,8 @@ void TestParameterEditor::hostFieldsEdit()
 
 void TestParameterEditor::tauLimitFromDevice()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setTauLimit(HostParams{}.tau_limit);
     QCOMPARE(editor.undoStack()->count(), 0); // same value: no edit
     editor.setTauLimit(0.3);
@@ -472,7 +489,8 @@ void TestParameterEditor::tauLimitFromDevice()
 
 void TestParameterEditor::relativeStepsForSmallValues()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     ScientificSpinBox *box = spin(editor, u"D_adm"_s);
     box->stepBy(1);
     QCOMPARE(editor.params().D_adm, 1.1e-4);

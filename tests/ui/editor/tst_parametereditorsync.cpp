@@ -6,6 +6,7 @@
 #include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
 #include "editorparts.h"
+#include "editorrig.h"
 #include "pushresult.h"
 
 #include <QAction>
@@ -71,9 +72,10 @@ private Q_SLOTS:
 
 void TestParameterEditorSync::pushEmitsExactValues()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
-    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(editor.model(), &TuningModel::pushRequested);
     spin(editor, u"K_max"_s)->setValue(0.55);
     spin(editor, u"D_adm"_s)->setValue(2.5e-5);
     spin(editor, u"theta0"_s)->setValue(-0.125);
@@ -95,12 +97,13 @@ void TestParameterEditorSync::pushEmitsExactValues()
 
 void TestParameterEditorSync::ctrlReturnPushes()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.show();
     editor.activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(&editor));
-    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(editor.model(), &TuningModel::pushRequested);
     spin(editor, u"K_max"_s)->setFocus();
     QTest::keyClick(spin(editor, u"K_max"_s), Qt::Key_Return, Qt::ControlModifier);
     QCOMPARE(pushes.count(), 1);
@@ -117,7 +120,8 @@ void TestParameterEditorSync::inSyncAfterAckAndReadback_data()
 void TestParameterEditorSync::inSyncAfterAckAndReadback()
 {
     QFETCH(bool, readBackUnanswered);
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     QCOMPARE(editor.syncState(), SyncState::InSync);
@@ -126,7 +130,7 @@ void TestParameterEditorSync::inSyncAfterAckAndReadback()
     spin(editor, u"N"_s)->setValue(0.3);
     QCOMPARE(editor.syncState(), SyncState::Edited);
     QCOMPARE(editor.syncText(), u"edited — not pushed"_s);
-    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(editor.model(), &TuningModel::pushRequested);
     editor.pushAction()->trigger();
     QCOMPARE(pushes.count(), 1);
     const DeviceParams echo = asFloat(editor.params());
@@ -150,7 +154,8 @@ void TestParameterEditorSync::inSyncAfterAckAndReadback()
 
 void TestParameterEditorSync::mismatchingReadbackIsNotInSync()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(0.8);
@@ -170,7 +175,8 @@ void TestParameterEditorSync::mismatchingReadbackIsNotInSync()
 
 void TestParameterEditorSync::rejectionShowsReasonAndKeepsValues()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(3.0);
@@ -196,7 +202,8 @@ void TestParameterEditorSync::rejectionShowsReasonAndKeepsValues()
 
 void TestParameterEditorSync::timeoutShown()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.setDeviceTuning({DeviceParams{}, std::nullopt});
     spin(editor, u"K_max"_s)->setValue(0.6);
@@ -217,7 +224,8 @@ void TestParameterEditorSync::timeoutShown()
 
 void TestParameterEditorSync::undoRedoRestoresValues()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     QSignalSpy edited(editor.model(), &TuningModel::editedChanged);
     spin(editor, u"K_max"_s)->setValue(0.5);
     spin(editor, u"K_min"_s)->setValue(0.2);
@@ -242,7 +250,8 @@ void TestParameterEditorSync::undoRedoRestoresValues()
 
 void TestParameterEditorSync::editsOfOneGestureMerge()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     ScientificSpinBox *box = spin(editor, u"K_max"_s);
     box->setFocus();
     // Arrow steps while the field has focus are one gesture.
@@ -269,7 +278,8 @@ void TestParameterEditorSync::editsOfOneGestureMerge()
 
 void TestParameterEditorSync::sliderDragIsOneUndoStep()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     QSlider *slider = editor.field(u"K_max"_s)->slider();
     slider->setSliderDown(true);
     for (int pos : {100, 150, 200, 260})
@@ -290,7 +300,8 @@ void TestParameterEditorSync::sliderDragIsOneUndoStep()
 
 void TestParameterEditorSync::setParamsIsOneUndoStep()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     DeviceParams d;
     d.K_max = 1.5;
     d.Q_dz = 0.04;
@@ -311,7 +322,8 @@ void TestParameterEditorSync::setParamsIsOneUndoStep()
 
 void TestParameterEditorSync::diffMarkersFollowDevice()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     QLabel *marker = label(editor, u"diff_K_max"_s);
     QVERIFY(marker->isHidden());
 
@@ -337,7 +349,8 @@ void TestParameterEditorSync::diffMarkersFollowDevice()
 
 void TestParameterEditorSync::revertLoadsDeviceValues()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     DeviceParams device;
     device.K_max = static_cast<float>(0.8); // as it comes off the wire
@@ -359,11 +372,12 @@ void TestParameterEditorSync::revertLoadsDeviceValues()
 
 void TestParameterEditorSync::livePushOneInFlightLastValueSent()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     editor.setLivePushInterval(20);
     editor.setLivePush(true);
-    QSignalSpy pushes(&editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(editor.model(), &TuningModel::pushRequested);
 
     for (int i = 1; i <= 30; ++i)
         spin(editor, u"K_max"_s)->setValue(0.4 + 0.01 * i);
@@ -390,7 +404,8 @@ void TestParameterEditorSync::livePushOneInFlightLastValueSent()
 
 void TestParameterEditorSync::livePushRateLimited()
 {
-    ParameterEditor editor;
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
     editor.setCanPush(true);
     const int interval = 40;
     editor.setLivePushInterval(interval);
@@ -402,7 +417,7 @@ void TestParameterEditorSync::livePushRateLimited()
     bool overlapped = false;
     bool inFlight = false;
     double lastPushed = 0;
-    connect(&editor, &ParameterEditor::pushRequested, &editor, [&](const DeviceTuning &t) {
+    connect(editor.model(), &TuningModel::pushRequested, &editor, [&](const DeviceTuning &t) {
         overlapped = overlapped || inFlight;
         inFlight = true;
         lastPushed = t.params->K_max;

@@ -3,6 +3,7 @@
 #include "editor/parametereditor.h"
 #include "editor/parameterfield.h"
 #include "editor/scientificspinbox.h"
+#include "editorrig.h"
 #include "profile/profile.h"
 #include "profiles/profilecontroller.h"
 #include "testfiles.h"
@@ -20,6 +21,7 @@
 #include <QUndoStack>
 
 using namespace hatpic;
+using hatpic::test::EditorRig;
 using namespace Qt::StringLiterals;
 using hatpic::test::readAll;
 using hatpic::test::writeFile;
@@ -91,8 +93,9 @@ void TestProfileController::saveOpenRoundTrip()
     const QString path = m_dir->filePath(u"mytuning.json"_s);
     DeviceParams saved;
     {
-        ParameterEditor editor;
-        ProfileController controller(&editor, nullptr);
+        EditorRig editorRig;
+        ParameterEditor &editor = editorRig.editor;
+        ProfileController controller(editor.model(), editor.undoStack(), nullptr);
         setValue(editor, u"K_max"_s, 0.55);
         setValue(editor, u"D_adm"_s, 3.3e-5);
         DeviceParams d = editor.params();
@@ -110,8 +113,9 @@ void TestProfileController::saveOpenRoundTrip()
         QCOMPARE(controller.filePath(), path);
         saved = editor.params();
     }
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QString error;
     QVERIFY2(controller.openFile(path, &error), qPrintable(error));
     QCOMPARE(editor.params(), saved); // identical doubles
@@ -132,8 +136,9 @@ void TestProfileController::bridgeSettingsSavedAndLoaded()
     s.feedback.gain = 0.3;
     s.topics.wrench = "/arm/wrench";
     {
-        ParameterEditor editor;
-        ProfileController controller(&editor, nullptr);
+        EditorRig editorRig;
+        ParameterEditor &editor = editorRig.editor;
+        ProfileController controller(editor.model(), editor.undoStack(), nullptr);
         QVERIFY(!controller.isModified());
         bridge::BridgeSettings withDomain = s;
         withDomain.domainId = 9; // no part of a profile, like the ROS version
@@ -151,8 +156,10 @@ void TestProfileController::bridgeSettingsSavedAndLoaded()
     QVERIFY(read.ok());
     QVERIFY(read.profile->bridge == s);
 
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QSignalSpy loaded(&controller, &ProfileController::bridgeSettingsLoaded);
     QVERIFY(controller.openFile(path));
     QCOMPARE(loaded.size(), 1);
@@ -203,8 +210,10 @@ void TestProfileController::refusedFileChangesNothing()
     QVERIFY(!expected.ok());
     QVERIFY(!expected.errors.isEmpty());
 
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     setValue(editor, u"K_max"_s, 0.7);
     const DeviceParams before = editor.params();
     const int undoCount = editor.undoStack()->count();
@@ -230,8 +239,9 @@ void TestProfileController::refusedFileChangesNothing()
 
 void TestProfileController::invalidSetIsNotSaved()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     setValue(editor, u"K_min"_s, 0.9); // above K_max
     const QString path = m_dir->filePath(u"invalid.json"_s);
     QString error;
@@ -243,8 +253,9 @@ void TestProfileController::invalidSetIsNotSaved()
 
 void TestProfileController::modifiedMarkerInTitle()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QSignalSpy titles(&controller, &ProfileController::titleChanged);
     QCOMPARE(controller.windowTitle(), u"Untitled [A] — HATPIC Tuner"_s);
 
@@ -271,8 +282,9 @@ void TestProfileController::modifiedMarkerInTitle()
 
 void TestProfileController::abSwitch()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QVERIFY(controller.loadPreset(u"Soft"_s));
     const DeviceParams soft = preset(u"Soft"_s)->device;
     QCOMPARE(controller.abToggleAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_B));
@@ -315,8 +327,9 @@ void TestProfileController::abSwitch()
 
 void TestProfileController::abSwitchUndo()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     setValue(editor, u"K_max"_s, 0.6);
     controller.toggleSlot();
     setValue(editor, u"K_max"_s, 0.8);
@@ -335,8 +348,9 @@ void TestProfileController::abSwitchUndo()
 
 void TestProfileController::presetsMenuLoadsPreset()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QStringList names;
     for (QAction *a : controller.presetsMenu()->actions())
         names << a->data().toString();
@@ -379,8 +393,9 @@ void TestProfileController::presetsMenuLoadsPreset()
 
 void TestProfileController::recentFiles()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QStringList paths;
     for (int i = 0; i < 10; ++i) {
         paths << m_dir->filePath(u"p%1.json"_s.arg(i));
@@ -399,7 +414,7 @@ void TestProfileController::recentFiles()
     QVERIFY(controller.openFile(paths[4]));
     QCOMPARE(controller.recentFiles().first(), paths[4]);
     QCOMPARE(controller.recentFiles().size(), ProfileController::kMaxRecentFiles);
-    ProfileController another(&editor, nullptr);
+    ProfileController another(editor.model(), editor.undoStack(), nullptr);
     QCOMPARE(another.recentFiles(), controller.recentFiles());
 
     // The menu entry opens the file.
@@ -445,8 +460,10 @@ void TestProfileController::maybeSaveAsks()
     QFETCH(int, questions);
     QFETCH(bool, savedToFile);
 
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     const QString path = m_dir->filePath(u"kept.json"_s);
     QVERIFY(controller.saveTo(path));
     QStringList asked;
@@ -472,8 +489,9 @@ void TestProfileController::maybeSaveAsks()
 // saying why; it names it.
 void TestProfileController::quitPromptNamesABridgeSetting()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QVERIFY(controller.saveTo(m_dir->filePath(u"bridged.json"_s)));
     bridge::BridgeSettings settings = controller.bridgeSettings();
     settings.feedback.gain *= 2;
@@ -496,8 +514,9 @@ void TestProfileController::enterInThePromptOverwritesNothing()
     // The real question, answered with Enter by someone who did not read it: the safe answer.
     QWidget window;
     window.show();
-    ParameterEditor editor;
-    ProfileController controller(&editor, &window);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), &window);
     const QString path = m_dir->filePath(u"kept.json"_s);
     QVERIFY(controller.saveTo(path));
     const QByteArray before = readAll(path);
@@ -523,8 +542,9 @@ void TestProfileController::enterInThePromptOverwritesNothing()
 
 void TestProfileController::effectsTravelWithTheProfile()
 {
-    ParameterEditor editor;
-    ProfileController controller(&editor, nullptr);
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    ProfileController controller(editor.model(), editor.undoStack(), nullptr);
     QVERIFY(controller.loadPreset(u"Detents"_s));
     const Profile detents = *preset(u"Detents"_s);
     QVERIFY(detents.effects.detent_strength > 0);

@@ -2,7 +2,8 @@
 // and the pushes' outcomes; comparisons are made as the device holds the values (float32);
 // a push sends each block the device has and does not hold yet; a refusal names its field, a
 // push that failed part-way leaves what it applied in force; signals come once per change;
-// edits are undo steps that merge within one field's gesture.
+// edits are undo steps that merge within one field's gesture; push() goes only when it may and
+// hands its caller the outcome, after the model took it.
 #include "tuning/tuningmodel.h"
 
 #include <QSignalSpy>
@@ -23,6 +24,20 @@ DeviceParams asDeviceHolds(const DeviceParams &params)
 Outcome done(const DeviceTuning &sent, const DeviceTuning &received)
 {
     return {request::Push{sent}, outcome::Done{outcome::ReadBack::Matches}, received};
+}
+
+//! Pushes as every caller does (TuningModel::push) and returns what the model asked the link to
+//! send.
+DeviceTuning startPush(TuningModel &model)
+{
+    DeviceTuning sent;
+    const auto connection = QObject::connect(&model, &TuningModel::pushRequested,
+                                             [&sent](const DeviceTuning &send) { sent = send; });
+    const bool started = model.push();
+    QObject::disconnect(connection);
+    if (!started)
+        qFatal("startPush: the model refused to push");
+    return sent;
 }
 
 Tuning editedWith(const TuningModel &model, double kMax)
@@ -79,7 +94,7 @@ private Q_SLOTS:
         QCOMPARE(model.syncState(), SyncState::InSync);
         model.setEffectsTracked(true);
         QCOMPARE(model.syncState(), SyncState::NotRead); // its effects not read yet
-        DeviceTuning sent = model.startPush();
+        DeviceTuning sent = startPush(model);
         QVERIFY(sent.params && sent.effects && !sent.passivity);
         QCOMPARE(model.syncState(), SyncState::Pushing);
         // The device reads back what it holds: each value as the wire carries it.
@@ -90,7 +105,7 @@ private Q_SLOTS:
 
         // Only what differs goes: the effects are the device's already.
         model.setEdited(editedWith(model, 0.7));
-        sent = model.startPush();
+        sent = startPush(model);
         QVERIFY(sent.params && !sent.effects);
         QCOMPARE(sent.params->K_max, 0.7);
     }
@@ -101,7 +116,7 @@ private Q_SLOTS:
         model.setCanPush(true);
         model.setDevice({DeviceParams{}, std::nullopt, std::nullopt});
         model.setEdited(editedWith(model, 0.9));
-        const DeviceTuning sent = model.startPush();
+        const DeviceTuning sent = startPush(model);
         outcome::Refused refused;
         refused.step = CommandKind::SetParams;
         refused.status = v2::AckStatus::OutOfRange;
@@ -124,7 +139,7 @@ private Q_SLOTS:
         Tuning t = editedWith(model, 0.8);
         t.effects.detent_strength = 0.05;
         model.setEdited(t);
-        const DeviceTuning sent = model.startPush();
+        const DeviceTuning sent = startPush(model);
         QVERIFY(sent.params && sent.effects);
         outcome::TimedOut timedOut;
         timedOut.step = CommandKind::SetEffects;
@@ -136,6 +151,55 @@ private Q_SLOTS:
         QCOMPARE(model.device().params->K_max, 0.8);            // in force
         QCOMPARE(model.device().effects->detent_strength, 0.0); // not
         QVERIFY(model.differsFromDevice());
+    }
+
+    void aPushTellsItsCallerTheOutcome()
+    {
+        TuningModel model;
+        std::vector<SyncState> heard;
+        const auto listen = [&model, &heard](const Outcome &) {
+            heard.push_back(model.syncState());
+        };
+        QSignalSpy requested(&model, &TuningModel::pushRequested);
+        QVERIFY(!model.mayPush()); // nothing takes it
+        QVERIFY(!model.push(listen));
+        model.setCanPush(true);
+        model.setDevice({DeviceParams{}, std::nullopt, std::nullopt});
+
+        // An invalid tuning is not pushed, and says why.
+        Tuning broken = model.edited();
+        broken.device.K_min = broken.device.K_max + 1;
+        model.setEdited(broken);
+        QVERIFY(!model.violations().empty());
+        QCOMPARE(model.violations().front().field, std::string("K_min"));
+        QVERIFY(!model.push(listen));
+        QCOMPARE(requested.count(), 0);
+
+        // A valid one goes once; a second push waits for the first.
+        model.setEdited(editedWith(model, 0.6));
+        Tuning valid = model.edited();
+        valid.device.K_min = DeviceParams{}.K_min;
+        model.setEdited(valid);
+        QVERIFY(model.push(listen));
+        QCOMPARE(requested.count(), 1);
+        QVERIFY(!model.push(listen));
+        QCOMPARE(requested.count(), 1);
+        const auto sent = requested.at(0).at(0).value<DeviceTuning>();
+        QCOMPARE(sent.params->K_max, 0.6);
+        QVERIFY(heard.empty());
+        // The caller hears once, with the model already in sync.
+        QVERIFY(model.pushFinished(done(sent, {asDeviceHolds(*sent.params), std::nullopt})));
+        QCOMPARE(heard, std::vector{SyncState::InSync});
+        QVERIFY(!model.pushFinished(done(sent, {}))); // late: nobody hears again
+        QCOMPARE(heard.size(), std::size_t(1));
+
+        // A push a disconnect dropped still tells its caller its outcome.
+        model.setEdited(editedWith(model, 0.7));
+        QVERIFY(model.push(listen));
+        model.setCanPush(false);
+        QVERIFY(!model.pushFinished(
+            {request::Push{sent}, outcome::Cut{{}, outcome::Cut::Why::ConnectionLost}, {}}));
+        QCOMPARE(heard, (std::vector{SyncState::InSync, SyncState::NotConnected}));
     }
 
     void signalsComeOncePerChange()

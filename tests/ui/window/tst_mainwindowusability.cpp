@@ -72,7 +72,7 @@ void TestMainWindowUsability::wheelScrollsParametersAndEditsNothing()
     ParameterEditor *editor = find<ParameterEditor>("parameterEditor");
     QTRY_COMPARE_WITH_TIMEOUT(editor->syncState(), SyncState::InSync, kConnectMs);
     editor->setLivePush(true);
-    QSignalSpy pushes(editor, &ParameterEditor::pushRequested);
+    QSignalSpy pushes(editor->model(), &TuningModel::pushRequested);
     const Tuning before = editor->tuning();
     const int undoSteps = editor->undoStack()->count();
 
