@@ -11,6 +11,16 @@ void ChatterDetector::setParams(const std::optional<DeviceParams> &params)
 {
     m_theta0 = params ? params->theta0 : 0.0;
     m_qdz = params ? params->Q_dz : 0.0;
+    restart();
+}
+
+bool ChatterDetector::watchesEdgeOf(const std::optional<DeviceParams> &params) const
+{
+    return m_theta0 == (params ? params->theta0 : 0.0) && m_qdz == (params ? params->Q_dz : 0.0);
+}
+
+void ChatterDetector::restart()
+{
     m_outside.reset();
     m_crossings.clear();
 }
@@ -20,10 +30,8 @@ void ChatterDetector::add(const Sample &sample)
     if (!(m_qdz > 0) || !std::isfinite(sample.theta) || !std::isfinite(sample.t_s))
         return;
     // Time going back is another session: start again.
-    if (m_outside && sample.t_s < m_last) {
-        m_outside.reset();
-        m_crossings.clear();
-    }
+    if (m_outside && sample.t_s < m_last)
+        restart();
     const bool outside = std::abs(sample.theta - m_theta0) >= m_qdz;
     if (m_outside && *m_outside != outside)
         m_crossings.push_back(sample.t_s);
@@ -44,18 +52,23 @@ std::optional<double> ChatterDetector::frequency() const
     return double(n - 1) / 2.0 / span;
 }
 
-ChatterWatch::ChatterWatch(ParameterEditor *editor) : QObject(editor), m_editor(editor) {}
+ChatterWatch::ChatterWatch(ParameterEditor *editor) : QObject(editor), m_editor(editor)
+{
+    // The knob tuned, against its own tuning: the model's device tuning is that knob's. A
+    // change that moves no edge (K_max, a read-back of the same) keeps what was counted.
+    connect(editor->model(), &TuningModel::deviceChanged, this, [this] {
+        if (const auto &params = m_editor->deviceTuning().params; !m_detector.watchesEdgeOf(params))
+            m_detector.setParams(params);
+    });
+    connect(editor, &ParameterEditor::knobSelected, this,
+            [this] { m_detector.setParams(m_editor->deviceTuning().params); }); // another θ
+    m_detector.setParams(m_editor->deviceTuning().params);
+}
 
 void ChatterWatch::addSamples(const SampleBatch &batch)
 {
-    // The knob tuned, against its own tuning: knob 1 is the sample, knob k its board's block.
+    // Knob 1 is the sample, knob k its board's block.
     const int knob = m_editor->knob();
-    const std::optional<DeviceParams> params = m_editor->deviceTuning().params;
-    if (params != m_params || knob != m_knob) {
-        m_params = params;
-        m_knob = knob;
-        m_detector.setParams(params);
-    }
     for (const Sample &s : batch) {
         if (knob == 0) {
             m_detector.add(s);
@@ -66,6 +79,7 @@ void ChatterWatch::addSamples(const SampleBatch &batch)
             m_detector.add(other);
         }
     }
+    const std::optional<DeviceParams> &params = m_editor->deviceTuning().params;
     m_editor->derivedFiguresView()->setChatter(m_detector.frequency(),
                                                params ? params->K_max * params->Q_dz : 0.0);
 }

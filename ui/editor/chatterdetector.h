@@ -4,8 +4,9 @@
 // torque flipping by the whole jump each time: a buzz. How fast depends on the servo's loop
 // and on the hand, which the tuner cannot know, so it counts the crossings instead.
 //
-// ChatterWatch feeds the live samples of a device to a detector and shows what it finds in
-// the editor's derived figures.
+// ChatterWatch feeds the live samples of the knob the editor tunes to a detector, against that
+// knob's tuning as the window's TuningModel holds it (no copy), and shows what it finds in the
+// editor's derived figures.
 #pragma once
 
 #include "model/params.h"
@@ -27,12 +28,17 @@ public:
     static constexpr int kMinCrossings = 16; //!< 8 back-and-forths a second is chatter
 
     //! The edge to watch: ±Q_dz around θ0; nullopt or Q_dz = 0 (no jump) watches nothing.
+    //! Counting starts again.
     void setParams(const std::optional<DeviceParams> &params);
+    //! Whether `params` put the edge where it is watched now.
+    bool watchesEdgeOf(const std::optional<DeviceParams> &params) const;
     void add(const Sample &sample);
     //! Back-and-forths per second at the edge over the last window [Hz] while they are chatter.
     std::optional<double> frequency() const;
 
 private:
+    void restart(); //!< forgets the crossings counted
+
     double m_theta0 = 0;
     double m_qdz = 0;
     std::optional<bool> m_outside;  //!< the last sample's side of the edge
@@ -50,8 +56,6 @@ public:
 private:
     ParameterEditor *m_editor;
     ChatterDetector m_detector;
-    std::optional<DeviceParams> m_params;
-    int m_knob = 0; //!< the knob watched: the editor's (0 for knob 1)
 };
 
 } // namespace hatpic

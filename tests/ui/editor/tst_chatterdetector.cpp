@@ -61,6 +61,7 @@ private Q_SLOTS:
     void noDeadZoneNothingToWatch();
     void warningInTheDerivedFigures();
     void watchesTheTunedKnob();
+    void aChangeThatMovesNoEdgeKeepsCounting();
 };
 
 void TestChatterDetector::oldNotchyChattersUnderTheGentleHand()
@@ -195,6 +196,39 @@ void TestChatterDetector::watchesTheTunedKnob()
     QCOMPARE(editor.knob(), 1);
     watch.addSamples(batch(1501, 3000)); // knob 2 tuned: its θ buzzes
     QVERIFY(figures->isShowingChatter());
+}
+
+void TestChatterDetector::aChangeThatMovesNoEdgeKeepsCounting()
+{
+    EditorRig editorRig;
+    ParameterEditor &editor = editorRig.editor;
+    DeviceParams device;
+    device.K_max = 1.5;
+    device.Q_dz = 0.04;
+    editor.setDeviceTuning({device, std::nullopt});
+    ChatterWatch watch(&editor);
+    const auto buzz = [](int from, int to) {
+        SampleBatch out;
+        for (int i = from; i <= to; ++i) {
+            const double t = i / 1000.0;
+            out.append(at(t, 0.04 + 0.002 * std::sin(2 * 3.14159265358979 * 14 * t)));
+        }
+        return out;
+    };
+    DerivedFiguresView *figures = editor.derivedFiguresView();
+    watch.addSamples(buzz(0, 900));
+    QVERIFY(figures->isShowingChatter());
+    // A push of K_max moves no edge: the buzz goes on being counted (0.1 s more would not be
+    // chatter on its own).
+    device.K_max = 1.2;
+    editor.setDeviceTuning({device, std::nullopt});
+    watch.addSamples(buzz(901, 1000));
+    QVERIFY(figures->isShowingChatter());
+    // A new θ0 moves the edge: counting starts again.
+    device.theta0 = 0.5;
+    editor.setDeviceTuning({device, std::nullopt});
+    watch.addSamples(buzz(1001, 1100));
+    QVERIFY(!figures->isShowingChatter());
 }
 
 QTEST_MAIN(TestChatterDetector)
