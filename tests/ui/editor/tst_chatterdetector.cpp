@@ -48,6 +48,31 @@ Sample at(double t, double theta)
     return s;
 }
 
+//! The device of the watch's tests: a dead zone of ±0.04 rad whose edge jumps by
+//! K_max·Q_dz = 0.06 N·m.
+DeviceParams buzzedDevice()
+{
+    DeviceParams device;
+    device.K_max = 1.5;
+    device.Q_dz = 0.04;
+    return device;
+}
+
+//! A knob held at that edge, buzzing across it at 14 Hz, at `t` [s].
+double buzzingTheta(double t)
+{
+    return 0.04 + 0.002 * std::sin(2 * 3.14159265358979 * 14 * t);
+}
+
+//! The buzzing knob from `fromMs` to `toMs`, one sample a millisecond.
+SampleBatch buzz(int fromMs, int toMs)
+{
+    SampleBatch out;
+    for (int i = fromMs; i <= toMs; ++i)
+        out.append(at(i / 1000.0, buzzingTheta(i / 1000.0)));
+    return out;
+}
+
 } // namespace
 
 class TestChatterDetector : public QObject
@@ -135,19 +160,11 @@ void TestChatterDetector::warningInTheDerivedFigures()
 {
     EditorRig editorRig;
     ParameterEditor &editor = editorRig.editor;
-    DeviceParams device;
-    device.K_max = 1.5;
-    device.Q_dz = 0.04;
-    editor.setDeviceTuning({device, std::nullopt});
+    editor.setDeviceTuning({buzzedDevice(), std::nullopt});
     ChatterWatch watch(&editor);
     DerivedFiguresView *figures = editor.derivedFiguresView();
     QVERIFY(!figures->isShowingChatter());
-    SampleBatch buzz;
-    for (int i = 0; i <= 1500; ++i) {
-        const double t = i / 1000.0;
-        buzz.append(at(t, 0.04 + 0.002 * std::sin(2 * 3.14159265358979 * 14 * t)));
-    }
-    watch.addSamples(buzz);
+    watch.addSamples(buzz(0, 1500));
     QVERIFY(figures->isShowingChatter());
     const QString text = figures->findChild<QLabel *>(u"warning_chatter"_s)->text();
     QVERIFY2(text.contains(u"K_max·Q_dz = 0.06 N·m"_s), qPrintable(text));
@@ -166,10 +183,7 @@ void TestChatterDetector::watchesTheTunedKnob()
     // A device with two knobs: knob 1 still, knob 2 buzzing at its dead zone's edge.
     EditorRig editorRig;
     ParameterEditor &editor = editorRig.editor;
-    DeviceParams device;
-    device.K_max = 1.5;
-    device.Q_dz = 0.04;
-    editor.setDeviceTuning({device, std::nullopt});
+    editor.setDeviceTuning({buzzedDevice(), std::nullopt});
     editor.setKnobs(2);
     ChatterWatch watch(&editor);
     DerivedFiguresView *figures = editor.derivedFiguresView();
@@ -180,7 +194,7 @@ void TestChatterDetector::watchesTheTunedKnob()
             Sample s = at(t, 0.0);
             auto board = std::make_shared<BoardSample>();
             board->axes = 2;
-            board->more[0].theta = 0.04 + 0.002 * std::sin(2 * 3.14159265358979 * 14 * t);
+            board->more[0].theta = buzzingTheta(t);
             s.board = std::move(board);
             out.append(s);
         }
@@ -202,19 +216,9 @@ void TestChatterDetector::aChangeThatMovesNoEdgeKeepsCounting()
 {
     EditorRig editorRig;
     ParameterEditor &editor = editorRig.editor;
-    DeviceParams device;
-    device.K_max = 1.5;
-    device.Q_dz = 0.04;
+    DeviceParams device = buzzedDevice();
     editor.setDeviceTuning({device, std::nullopt});
     ChatterWatch watch(&editor);
-    const auto buzz = [](int from, int to) {
-        SampleBatch out;
-        for (int i = from; i <= to; ++i) {
-            const double t = i / 1000.0;
-            out.append(at(t, 0.04 + 0.002 * std::sin(2 * 3.14159265358979 * 14 * t)));
-        }
-        return out;
-    };
     DerivedFiguresView *figures = editor.derivedFiguresView();
     watch.addSamples(buzz(0, 900));
     QVERIFY(figures->isShowingChatter());
